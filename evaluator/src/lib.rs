@@ -1,0 +1,1 @@
+//! Constant folding with RAPID semantics.

@@ -1,0 +1,1 @@
+//! End-to-end and corpus tests live in `tests/tests/`.
