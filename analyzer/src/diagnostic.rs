@@ -1,0 +1,165 @@
+//! Diagnostics and the rules that produce them.
+//!
+//! Every diagnostic belongs to a [`Rule`]: a stable code (`E001`, never
+//! reused), a kebab-case name, a default severity and documentation in three
+//! parts (what it checks, why it matters, an example). Rules are declared with
+//! [`declare_rule!`], one per file under `rules/`, and listed once in
+//! [`crate::rules::RULES`]; `docs/diagnostics.md` is generated from that list.
+
+use std::ops::Range;
+
+/// How bad a finding is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Severity {
+    /// A hint that something could be written better.
+    Hint,
+    /// Worth knowing, not a defect (e.g. an unconfigured signal).
+    Info,
+    /// Probably a mistake, but the controller accepts it.
+    Warning,
+    /// The controller would reject the module, or the code cannot work.
+    Error,
+}
+
+impl Severity {
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Severity::Hint => "hint",
+            Severity::Info => "info",
+            Severity::Warning => "warning",
+            Severity::Error => "error",
+        }
+    }
+
+    /// Parses `error`, `warning`, `info` or `hint` (any case).
+    pub fn parse(s: &str) -> Option<Severity> {
+        [Severity::Error, Severity::Warning, Severity::Info, Severity::Hint]
+            .into_iter()
+            .find(|sev| sev.as_str().eq_ignore_ascii_case(s))
+    }
+}
+
+/// What a rule is: its identity and its documentation.
+#[derive(Debug)]
+pub struct Rule {
+    /// Stable code, such as `E001`. Codes are never reused.
+    pub code: &'static str,
+    /// Stable kebab-case name, such as `syntax-error`.
+    pub name: &'static str,
+    /// The severity unless configuration says otherwise.
+    pub severity: Severity,
+    /// One line: what the rule reports.
+    pub summary: &'static str,
+    /// Markdown: what it checks, why it matters, an example.
+    pub doc: &'static str,
+}
+
+impl PartialEq for Rule {
+    fn eq(&self, other: &Rule) -> bool {
+        self.code == other.code
+    }
+}
+
+impl Eq for Rule {}
+
+/// Declares a rule as a `static` [`Rule`] whose documentation is its doc
+/// comment, so the code and the reference page cannot drift apart.
+#[macro_export]
+macro_rules! declare_rule {
+    (
+        $(#[doc = $doc:literal])+
+        $vis:vis static $ident:ident = ($code:literal, $name:literal, $severity:ident);
+    ) => {
+        $(#[doc = $doc])+
+        $vis static $ident: $crate::diagnostic::Rule = $crate::diagnostic::Rule {
+            code: $code,
+            name: $name,
+            severity: $crate::diagnostic::Severity::$severity,
+            summary: $crate::diagnostic::first_line(concat!($($doc, "\n"),+)),
+            doc: concat!($($doc, "\n"),+),
+        };
+    };
+}
+
+/// The first non-empty line of a doc comment, trimmed (usable in consts).
+pub const fn first_line(doc: &'static str) -> &'static str {
+    let bytes = doc.as_bytes();
+    let mut start = 0;
+    while start < bytes.len() && (bytes[start] == b' ' || bytes[start] == b'\n') {
+        start += 1;
+    }
+    let mut end = start;
+    while end < bytes.len() && bytes[end] != b'\n' {
+        end += 1;
+    }
+    match doc.split_at_checked(end) {
+        Some((head, _)) => match head.split_at_checked(start) {
+            Some((_, line)) => line,
+            None => "",
+        },
+        None => "",
+    }
+}
+
+/// Another place that explains a diagnostic (e.g. the declaration it clashes
+/// with), in the same file or another.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Related {
+    /// The file, as the caller named it to the analyzer; `None` for the same
+    /// file as the diagnostic.
+    pub file: Option<String>,
+    pub range: Range<usize>,
+    pub message: String,
+}
+
+/// A text edit that fixes a diagnostic.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Edit {
+    pub range: Range<usize>,
+    pub replacement: String,
+}
+
+/// A fix: a title for menus and the edits, all in the diagnostic's file.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Fix {
+    pub title: String,
+    pub edits: Vec<Edit>,
+    /// Safe fixes keep the program's meaning and may be applied without
+    /// review (`rapid check --fix`).
+    pub safe: bool,
+}
+
+/// One finding in one file. Ranges are byte offsets into the decoded text.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Diagnostic {
+    pub rule: &'static Rule,
+    pub severity: Severity,
+    pub range: Range<usize>,
+    pub message: String,
+    pub related: Vec<Related>,
+    pub fix: Option<Fix>,
+}
+
+impl Diagnostic {
+    /// A diagnostic of `rule` at its default severity.
+    pub fn new(rule: &'static Rule, range: Range<usize>, message: impl Into<String>) -> Diagnostic {
+        Diagnostic {
+            rule,
+            severity: rule.severity,
+            range,
+            message: message.into(),
+            related: Vec::new(),
+            fix: None,
+        }
+    }
+
+    pub fn with_related(mut self, related: Related) -> Diagnostic {
+        self.related.push(related);
+        self
+    }
+
+    pub fn with_fix(mut self, fix: Fix) -> Diagnostic {
+        self.fix = Some(fix);
+        self
+    }
+}

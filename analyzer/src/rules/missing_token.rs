@@ -1,0 +1,20 @@
+crate::declare_rule! {
+    /// A token that must be there is missing, such as `;` or `ENDIF`.
+    ///
+    /// ### What it checks
+    /// The code around the place is well formed except for one missing
+    /// token; the parser assumed it and went on. Typical cases are a missing
+    /// `;` at the end of a statement, a missing `)` of a call, or an
+    /// `ENDIF`, `ENDFOR` or `ENDPROC` that was never written.
+    ///
+    /// ### Why
+    /// The controller refuses to load a module with a syntax error.
+    ///
+    /// ### Example
+    /// ```rapid
+    /// PROC main()
+    ///     MoveL p10, v100, fine, tool0    ! missing `;`
+    /// ENDPROC
+    /// ```
+    pub static RULE = ("E002", "missing-token", Error);
+}

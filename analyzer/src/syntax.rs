@@ -1,0 +1,181 @@
+//! Parsing, and the syntax diagnostics of a tree.
+//!
+//! Parsing never fails: tree-sitter always returns a tree, with `ERROR` nodes
+//! around text it could not fit and zero-width `MISSING` nodes where it
+//! assumed a token. [`syntax_diagnostics`] turns those into diagnostics that
+//! say what was expected and what was found.
+
+use std::ops::Range;
+
+use tree_sitter::{Language, Node, Parser, Tree};
+
+use crate::diagnostic::Diagnostic;
+use crate::rules::{missing_token, syntax_error};
+
+/// The RAPID language of the tree-sitter grammar.
+pub fn language() -> Language {
+    tree_sitter_rapid::LANGUAGE.into()
+}
+
+/// A parser for RAPID.
+pub fn parser() -> Parser {
+    let mut parser = Parser::new();
+    // The grammar is compiled into this crate against the same tree-sitter
+    // ABI, so this cannot fail; a tree-less parser would return no tree, which
+    // `parse` below reports as an empty tree anyway.
+    let _ = parser.set_language(&language());
+    parser
+}
+
+/// Parses `text`, reusing `old` (already edited with `Tree::edit`) when given.
+///
+/// Returns `None` only if tree-sitter was cancelled, which we never ask it to.
+pub fn parse(parser: &mut Parser, text: &str, old: Option<&Tree>) -> Option<Tree> {
+    parser.parse(text, old)
+}
+
+/// The syntax diagnostics of `tree`, in source order: one per `ERROR` node
+/// (not looking inside it) and one per `MISSING` node.
+pub fn syntax_diagnostics(tree: &Tree, text: &str) -> Vec<Diagnostic> {
+    let mut out = Vec::new();
+    let root = tree.root_node();
+    if !root.has_error() {
+        return out;
+    }
+    let language = tree.language();
+    let mut cursor = root.walk();
+    let mut descend = true;
+    loop {
+        let node = cursor.node();
+        if descend && node.is_error() {
+            out.push(error_diagnostic(node, text, &language));
+            descend = false;
+        } else if descend && node.is_missing() {
+            out.push(missing_diagnostic(node, &language));
+            descend = false;
+        }
+        if descend && node.has_error() && cursor.goto_first_child() {
+            continue;
+        }
+        descend = true;
+        loop {
+            if cursor.goto_next_sibling() {
+                break;
+            }
+            if !cursor.goto_parent() {
+                return out;
+            }
+        }
+        // Siblings without errors are skipped cheaply by `has_error` above.
+    }
+}
+
+fn missing_diagnostic(node: Node<'_>, language: &Language) -> Diagnostic {
+    let what = describe_symbol(language, node.kind_id(), node.kind());
+    let at = node.start_byte();
+    Diagnostic::new(&missing_token::RULE, at..at, format!("missing {what}"))
+}
+
+fn error_diagnostic(node: Node<'_>, text: &str, language: &Language) -> Diagnostic {
+    let found_leaf = first_leaf(node);
+    let found = match found_leaf {
+        Some(leaf) if leaf.end_byte() > leaf.start_byte() => {
+            format!("`{}`", snippet(text, leaf.byte_range()))
+        }
+        _ => "the end of the file".to_owned(),
+    };
+    let range = if node.start_position().row == node.end_position().row {
+        node.byte_range()
+    } else {
+        found_leaf.map_or(node.start_byte()..node.start_byte(), |l| l.byte_range())
+    };
+    let message = match expected_before(node, language) {
+        Some(expected) => format!("expected {expected}, found {found}"),
+        None => format!("unexpected {found}"),
+    };
+    Diagnostic::new(&syntax_error::RULE, range, message)
+}
+
+/// What the grammar would have accepted where `error` starts, from the parse
+/// state after the token before it.
+fn expected_before(error: Node<'_>, language: &Language) -> Option<String> {
+    let prev = previous_leaf(error)?;
+    let state = prev.next_parse_state();
+    let mut names: Vec<String> = language
+        .lookahead_iterator(state)?
+        .filter(|&id| language.node_kind_is_visible(id) && id != 0)
+        .filter_map(|id| {
+            let kind = language.node_kind_for_id(id)?;
+            (kind != "ERROR" && kind != "comment").then(|| describe_symbol(language, id, kind))
+        })
+        .collect();
+    names.sort();
+    names.dedup();
+    if names.is_empty() {
+        return None;
+    }
+    if let Some(semi) = names.iter().find(|n| *n == "`;`") {
+        return Some(semi.clone());
+    }
+    const MOST: usize = 6;
+    Some(match names.len() {
+        1 => names.remove(0),
+        n if n <= MOST => {
+            let last = names.pop().unwrap_or_default();
+            format!("{} or {last}", names.join(", "))
+        }
+        n => format!("{} or one of {} other tokens", names[..MOST].join(", "), n - MOST),
+    })
+}
+
+/// A person's name for a grammar symbol: keywords and punctuation quoted as
+/// written in RAPID, named tokens described.
+fn describe_symbol(language: &Language, id: u16, kind: &str) -> String {
+    if !language.node_kind_is_named(id) {
+        if kind.bytes().all(|b| b.is_ascii_alphabetic()) {
+            return format!("`{}`", kind.to_ascii_uppercase());
+        }
+        return format!("`{kind}`");
+    }
+    match kind {
+        "identifier" => "a name".to_owned(),
+        k if k.contains("num") && k.contains("literal") => "a number".to_owned(),
+        k if k.contains("string") => "a string".to_owned(),
+        k if k.contains("placeholder") => "a placeholder".to_owned(),
+        k => format!("`{}`", k.replace('_', " ")),
+    }
+}
+
+fn first_leaf(node: Node<'_>) -> Option<Node<'_>> {
+    let mut node = node.child(0)?;
+    while let Some(child) = node.child(0) {
+        node = child;
+    }
+    Some(node)
+}
+
+fn previous_leaf(node: Node<'_>) -> Option<Node<'_>> {
+    let mut at = node;
+    let prev = loop {
+        if let Some(prev) = at.prev_sibling() {
+            break prev;
+        }
+        at = at.parent()?;
+    };
+    let mut leaf = prev;
+    while let Some(last) = leaf.child(leaf.child_count().checked_sub(1)?) {
+        leaf = last;
+    }
+    Some(leaf)
+}
+
+/// At most 40 characters of `range`, on one line.
+fn snippet(text: &str, range: Range<usize>) -> String {
+    let s = text.get(range).unwrap_or_default();
+    let line = s.lines().next().unwrap_or_default();
+    let mut out: String = line.chars().take(40).collect();
+    if out.len() < s.len() {
+        out.push('…');
+    }
+    out
+}
