@@ -1,1 +1,41 @@
-fn main() {}
+//! `rapid`: the language server, CI linter, evaluator and formatter for ABB
+//! RAPID.
+
+mod check;
+mod source;
+
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+
+/// Language tooling for ABB RAPID: check programs offline the way the
+/// controller does.
+#[derive(Debug, Parser)]
+#[command(name = "rapid", version, about, propagate_version = true)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// Check RAPID files and folders and report every problem found.
+    Check(check::CheckArgs),
+}
+
+fn main() -> ExitCode {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => {
+            let _ = e.print();
+            return if e.use_stderr() {
+                ExitCode::from(2)
+            } else {
+                ExitCode::SUCCESS
+            };
+        }
+    };
+    match cli.command {
+        Command::Check(args) => check::run(args),
+    }
+}

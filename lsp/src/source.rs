@@ -1,0 +1,64 @@
+//! Reading RAPID files from disk, as `rapid check`, `rapid fmt` and the
+//! language server all need: bytes to text with the analyzer's decoder.
+
+use std::path::{Path, PathBuf};
+
+use rapid_analyzer::text::{Decoded, Encoding, LineIndex, decode};
+
+/// A RAPID file read and decoded.
+#[derive(Debug)]
+pub struct SourceFile {
+    pub path: PathBuf,
+    pub text: String,
+    #[allow(dead_code, reason = "read by the formatter, which writes files back in their encoding")]
+    pub encoding: Encoding,
+    pub lines: LineIndex,
+}
+
+/// Why a file was not read as RAPID text.
+#[derive(Debug)]
+pub enum Unreadable {
+    /// The file could not be read (missing, no permission, a broken link...).
+    Io(std::io::Error),
+    /// An encrypted module: loadable by a controller, readable by nobody.
+    Encrypted,
+    /// Not a text file.
+    Binary,
+}
+
+impl std::fmt::Display for Unreadable {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Unreadable::Io(e) => write!(f, "cannot read it: {e}"),
+            Unreadable::Encrypted => {
+                f.write_str("skipped: an encrypted module (its content cannot be checked)")
+            }
+            Unreadable::Binary => f.write_str("skipped: a binary file, not RAPID text"),
+        }
+    }
+}
+
+impl SourceFile {
+    pub fn read(path: &Path) -> Result<SourceFile, Unreadable> {
+        let bytes = std::fs::read(path).map_err(Unreadable::Io)?;
+        SourceFile::from_bytes(path.to_owned(), &bytes)
+    }
+
+    pub fn from_bytes(path: PathBuf, bytes: &[u8]) -> Result<SourceFile, Unreadable> {
+        match decode(bytes) {
+            Decoded::Text { text, encoding } => Ok(SourceFile {
+                lines: LineIndex::new(&text),
+                path,
+                text,
+                encoding,
+            }),
+            Decoded::Encrypted => Err(Unreadable::Encrypted),
+            Decoded::Binary => Err(Unreadable::Binary),
+        }
+    }
+
+    /// 1-based line and character column of a byte offset.
+    pub fn human(&self, offset: usize) -> (usize, usize) {
+        self.lines.human(offset, &self.text)
+    }
+}
