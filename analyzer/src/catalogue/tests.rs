@@ -1,0 +1,288 @@
+use super::*;
+
+/// The 80 function chapters of the RAPID reference manual part 2, in manual order.
+const MANUAL_FUNCTIONS: &[&str] = &[
+    "Abs",
+    "ACos",
+    "AOutput",
+    "ASin",
+    "ATan",
+    "ATan2",
+    "ByteToStr",
+    "CalcJointT",
+    "CalcRobT",
+    "CalcRotAxisFrame",
+    "CDate",
+    "CJointT",
+    "ClkRead",
+    "Cos",
+    "CPos",
+    "CRobT",
+    "CSpeedOverride",
+    "CTime",
+    "CTool",
+    "CWObj",
+    "DefAccFrame",
+    "DefDFrame",
+    "DefFrame",
+    "Dim",
+    "Distance",
+    "DotProd",
+    "DOutput",
+    "EulerZYX",
+    "Exp",
+    "FileTime",
+    "GetNextMechUnit",
+    "GetNextSym",
+    "GetTaskName",
+    "GetTime",
+    "GOutput",
+    "IsMechUnitActive",
+    "IsPers",
+    "IsSysId",
+    "IsVar",
+    "MaxRobSpeed",
+    "MirPos",
+    "ModTime",
+    "NOrient",
+    "NumToStr",
+    "Offs",
+    "OpMode",
+    "OrientZYX",
+    "ORobT",
+    "PoseInv",
+    "PoseMult",
+    "PoseVect",
+    "Pow",
+    "Present",
+    "ReadBin",
+    "ReadMotor",
+    "ReadNum",
+    "ReadStr",
+    "ReadStrBin",
+    "RelTool",
+    "RobOS",
+    "Round",
+    "RunMode",
+    "Sin",
+    "Sqrt",
+    "StrFind",
+    "StrLen",
+    "StrMap",
+    "StrMatch",
+    "StrMemb",
+    "StrOrder",
+    "StrPart",
+    "StrToByte",
+    "StrToVal",
+    "Tan",
+    "TestAndSet",
+    "TestDI",
+    "TestSignRead",
+    "Trunc",
+    "ValToStr",
+    "VectMagn",
+];
+
+/// The data type chapters of the manual (signalxx split into its six types).
+const MANUAL_DATATYPES: &[&str] = &[
+    "aiotrigg",
+    "bool",
+    "byte",
+    "clock",
+    "confdata",
+    "dionum",
+    "errdomain",
+    "errnum",
+    "errtype",
+    "extjoint",
+    "intnum",
+    "iodev",
+    "jointtarget",
+    "loaddata",
+    "loadsession",
+    "mecunit",
+    "motsetdata",
+    "num",
+    "o_jointtarget",
+    "o_robtarget",
+    "opnum",
+    "orient",
+    "pos",
+    "pose",
+    "progdisp",
+    "robjoint",
+    "robtarget",
+    "shapedata",
+    "signalai",
+    "signalao",
+    "signaldi",
+    "signaldo",
+    "signalgi",
+    "signalgo",
+    "speeddata",
+    "stoppointdata",
+    "string",
+    "symnum",
+    "taskid",
+    "testsignal",
+    "tooldata",
+    "tpnum",
+    "triggdata",
+    "trapdata",
+    "tunetype",
+    "wobjdata",
+    "wzstationary",
+    "wztemporary",
+    "zonedata",
+];
+
+#[test]
+fn sources_parse() {
+    let cat = Catalogue::load();
+    assert!(cat.is_ok(), "{:?}", cat.err());
+    assert!(!catalogue().functions.is_empty());
+}
+
+#[test]
+fn catalogue_is_consistent() {
+    assert_eq!(catalogue().check(), Vec::<String>::new());
+}
+
+#[test]
+fn check_reports_broken_entries() {
+    // A catalogue with deliberate mistakes: the checker must find each one.
+    let mut cat = Catalogue::load().unwrap_or_default();
+    let mut bad = cat.functions[0].clone();
+    bad.name = "ABS".into(); // duplicate name, other case
+    bad.params.push(Param {
+        name: "X".into(),
+        ty: "nosuchtype".into(),
+        mode: Some(Mode::In),
+        optional: true,
+        switch: false,
+        array: 0,
+        alt_group: Some(9),
+    });
+    bad.alt_groups.push(AltGroup {
+        id: 9,
+        required: false,
+    });
+    cat.functions.push(bad);
+    cat.data.push(Datum {
+        name: "zz".into(),
+        ty: "nosuchtype".into(),
+        kind: DatumKind::Const,
+        value: None,
+        source: Source::Other,
+        section: None,
+        summary: String::new(),
+        note: None,
+    });
+    let problems = cat.check().join("\n");
+    assert!(problems.contains("`ABS`: name already used"), "{problems}");
+    assert!(problems.contains("unknown type `nosuchtype`"), "{problems}");
+    assert!(
+        problems.contains("group 9 has fewer than 2 members"),
+        "{problems}"
+    );
+    assert!(problems.contains("datum zz: unknown type"), "{problems}");
+}
+
+#[test]
+fn manual_functions_are_exactly_the_manuals() {
+    let cat = catalogue();
+    let manual: Vec<&str> = cat
+        .functions
+        .iter()
+        .filter(|f| f.source == Source::Manual)
+        .map(|f| f.name.as_str())
+        .collect();
+    assert_eq!(manual, MANUAL_FUNCTIONS);
+    assert_eq!(manual.len(), 80);
+    for f in cat.functions.iter().filter(|f| f.source == Source::Manual) {
+        assert!(f.section.is_some(), "{} lacks a section", f.name);
+    }
+}
+
+#[test]
+fn manual_datatypes_are_present() {
+    let cat = catalogue();
+    for name in MANUAL_DATATYPES {
+        let t = cat.datatype(name);
+        assert!(t.is_some_and(|t| t.source == Source::Manual), "{name}");
+    }
+}
+
+#[test]
+fn lookups_ignore_case() {
+    let cat = catalogue();
+    assert_eq!(
+        cat.function("strpart").map(|f| f.name.as_str()),
+        Some("StrPart")
+    );
+    assert_eq!(cat.routine("ROUND").map(|f| f.name.as_str()), Some("Round"));
+    assert_eq!(
+        cat.datatype("ROBTARGET").map(|t| t.name.as_str()),
+        Some("robtarget")
+    );
+    assert_eq!(
+        cat.datum("V100").and_then(|d| d.value.as_deref()),
+        Some("[100,500,5000,1000]")
+    );
+    assert_eq!(cat.resolve_alias("errnum"), "num");
+    assert_eq!(cat.resolve_alias("wzstationary"), "wztemporary");
+    assert!(cat.function("NoSuchFunction").is_none());
+}
+
+#[test]
+fn manual_function_signatures() {
+    let text: String = catalogue()
+        .functions
+        .iter()
+        .filter(|f| f.source == Source::Manual)
+        .map(|f| {
+            format!(
+                "{}{}\n",
+                f.signature(),
+                if f.pure { "  [pure]" } else { "" }
+            )
+        })
+        .collect();
+    insta::assert_snapshot!(text);
+}
+
+#[test]
+fn manual_datatype_shapes() {
+    let text: String = catalogue()
+        .datatypes
+        .iter()
+        .filter(|t| t.source == Source::Manual)
+        .map(|t| format!("{}\n", t.signature()))
+        .collect();
+    insta::assert_snapshot!(text);
+}
+
+#[test]
+fn option_routines_are_not_catalogued() {
+    let list = option_routines();
+    assert!(list.is_ok(), "{:?}", list.err());
+    let cat = catalogue();
+    let mut seen = std::collections::HashSet::new();
+    for r in list.unwrap_or_default() {
+        assert!(
+            cat.routine(&r.name).is_none(),
+            "{} is both catalogued and an option routine",
+            r.name
+        );
+        assert!(
+            seen.insert(r.name.to_lowercase()),
+            "{} listed twice",
+            r.name
+        );
+        assert!(!r.package.is_empty() && !r.reason.is_empty(), "{}", r.name);
+    }
+}
+
+// FIXME(issue 3): once `rapid_evaluator::FUNCTIONS` exists, check that every pure function
+// of the catalogue has an evaluator implementation.
