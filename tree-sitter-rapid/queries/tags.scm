@@ -1,0 +1,30 @@
+; Symbols for code navigation in ABB RAPID.
+
+(module
+  name: (identifier) @name) @definition.module
+
+(procedure_declaration
+  name: (identifier) @name) @definition.function
+
+(function_declaration
+  name: (identifier) @name) @definition.function
+
+(trap_declaration
+  name: (identifier) @name) @definition.function
+
+(record_declaration
+  name: (identifier) @name) @definition.type
+
+(alias_declaration
+  name: (identifier) @name) @definition.type
+
+(data_declaration
+  name: (identifier) @name) @definition.constant
+
+(procedure_call
+  name: (identifier) @name) @reference.call
+
+(function_call
+  name: (identifier) @name) @reference.call
+
+(type_identifier) @name @reference.type
