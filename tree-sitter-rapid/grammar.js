@@ -10,13 +10,17 @@
 /// <reference types="tree-sitter-cli/dsl" />
 // @ts-check
 
+// RAPID's operator priority, lowest first. NOT shares the lowest level with
+// OR and XOR (as in ABB's priority table; real code relies on it:
+// `NOT s = "x"` means `NOT (s = "x")`), so its operand extends over AND,
+// comparisons and arithmetic. Unary + and - bind tighter than anything.
 const PREC = {
-  or: 1, // OR XOR
+  or: 1, // OR XOR, and prefix NOT
   and: 2, // AND
   compare: 3, // = <> < > <= >=
   additive: 4, // binary + -
   multiplicative: 5, // * / DIV MOD
-  unary: 6, // unary + - NOT
+  unary: 6, // unary + -
   postfix: 7, // a.b  a{i}  f(x)
 };
 
@@ -516,10 +520,16 @@ module.exports = grammar({
       ))));
     },
 
-    unary_expression: $ => prec(PREC.unary, seq(
-      field('operator', choice('+', '-', kw('NOT'))),
-      field('operand', $._expression),
-    )),
+    unary_expression: $ => choice(
+      prec(PREC.unary, seq(
+        field('operator', choice('+', '-')),
+        field('operand', $._expression),
+      )),
+      prec.left(PREC.or, seq(
+        field('operator', kw('NOT')),
+        field('operand', $._expression),
+      )),
+    ),
 
     parenthesized_expression: $ => seq('(', field('expression', $._expression), ')'),
 
