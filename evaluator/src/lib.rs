@@ -1,1 +1,121 @@
-//! Constant folding with RAPID semantics.
+//! Constant folding with the semantics of ABB RAPID.
+//!
+//! The evaluator computes what the robot controller would compute for an
+//! expression built only from constants: literals, `CONST` data (followed
+//! across modules through an [`Env`]), predefined data, operators and the
+//! pure functions of the RAPID manual (`Sqrt(2) * Sin(30)`,
+//! `OrientZYX(90, 0, 0)`, `Offs(pHome, 0, 0, 100)`).
+//!
+//! It knows nothing of syntax: the analyzer lowers tree-sitter nodes to the
+//! small [`Expr`] form. Results are typed [`Value`]s, whose `Display` is what
+//! RAPID's `ValToStr` prints, or an [`EvalError`] whose [`ErrorCode`] names
+//! the controller's run-time error (`ERR_DIVZERO`) or says why the value is
+//! not known at edit time (a `VAR`/`PERS`, an unknown name).
+//!
+//! RAPID semantics, not Rust's:
+//! - `num` is single precision: every num result is rounded to `f32`
+//!   (computed in `f64` first, as the controller's libraries do); `dnum` is
+//!   `f64`. Integers up to 8388608 are exact; `DIV`/`MOD` need integers.
+//! - Strings are ISO 8859-1 and at most 80 characters (`ERR_STRTOOLNG`).
+//! - Angles are degrees; orientations are quaternions `[q1, q2, q3, q4]`
+//!   (scalar first), checked (`ERR_ILLQUAT`) and normalised before use.
+//!
+//! Evaluation never panics and always terminates: nesting depth and the
+//! amount of work are bounded ([`Options`]), and cyclic constants are
+//! reported ([`ErrorCode::Cycle`]).
+//!
+//! ```
+//! use rapid_evaluator::{Arg, BinOp, EmptyEnv, Expr, eval};
+//! let call = |name: &str, args: Vec<Expr>| Expr::Call {
+//!     name: name.into(),
+//!     args: args.into_iter().map(Arg::positional).collect(),
+//! };
+//! let e = Expr::Binary(
+//!     BinOp::Mul,
+//!     Box::new(call("Sqrt", vec![Expr::Num("2".into())])),
+//!     Box::new(call("Sin", vec![Expr::Num("30".into())])),
+//! );
+//! assert_eq!(eval(&e, &EmptyEnv).unwrap().to_string(), "0.707107");
+//! ```
+
+mod env;
+mod error;
+mod eval;
+mod expr;
+mod functions;
+mod geometry;
+mod literal;
+mod literal_value;
+mod types;
+mod value;
+
+pub use env::{
+    EmptyEnv, Env, Lookup, MapEnv, STR_DIGIT, STR_LOWER, STR_UPPER, STR_WHITE, VarKind, predefined,
+};
+pub use error::{ErrorCode, EvalError};
+pub use expr::{Arg, BinOp, Expr, Type, UnOp};
+pub use functions::FUNCTIONS;
+pub use geometry::euler_zyx_deg;
+pub use literal::{MAX_STRING_LEN, parse_num_literal, parse_string_literal};
+pub use types::{builtin_record_layout, is_builtin_num_alias};
+pub use value::{Value, format_dnum, format_num, quote_string};
+
+/// Limits and switches for an evaluation.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Options {
+    /// Use the initial value of `VAR`/`PERS` data instead of failing with
+    /// [`ErrorCode::NotConstant`]. The names used are reported in
+    /// [`Evaluation::initial_values_used`] so the result can be labelled
+    /// ("initial value").
+    pub allow_initial_values: bool,
+    /// Maximum nesting of expressions, counting through constant
+    /// definitions ([`ErrorCode::TooDeep`] beyond).
+    pub max_depth: u32,
+    /// Maximum units of work ([`ErrorCode::TooComplex`] beyond).
+    pub max_steps: u64,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options {
+            allow_initial_values: false,
+            max_depth: 128,
+            max_steps: 100_000,
+        }
+    }
+}
+
+/// A successful evaluation.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Evaluation {
+    /// The value.
+    pub value: Value,
+    /// Names of `VAR`/`PERS` data whose initial value went into the result
+    /// (only with [`Options::allow_initial_values`]); empty when the value
+    /// is truly constant.
+    pub initial_values_used: Vec<String>,
+}
+
+/// Evaluates `expr` with default [`Options`]; aggregates without context
+/// become arrays.
+pub fn eval(expr: &Expr, env: &dyn Env) -> Result<Value, EvalError> {
+    eval_as(expr, None, env)
+}
+
+/// Evaluates `expr` as a value of `expected` type (the declared type of the
+/// data it initialises, the parameter type it is passed to): aggregates
+/// become records or arrays of that type, num widens to dnum, and other
+/// mismatches are [`ErrorCode::TypeMismatch`].
+pub fn eval_as(expr: &Expr, expected: Option<&Type>, env: &dyn Env) -> Result<Value, EvalError> {
+    eval_with(expr, expected, env, &Options::default()).map(|e| e.value)
+}
+
+/// Evaluates with explicit [`Options`].
+pub fn eval_with(
+    expr: &Expr,
+    expected: Option<&Type>,
+    env: &dyn Env,
+    options: &Options,
+) -> Result<Evaluation, EvalError> {
+    eval::run(expr, expected, env, options)
+}

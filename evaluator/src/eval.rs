@@ -1,0 +1,740 @@
+//! The evaluator core: names, aggregates, operators, typing.
+
+use std::collections::HashMap;
+
+use crate::env::{Env, Lookup, VarKind, predefined};
+use crate::error::{ErrorCode, EvalError, err};
+use crate::expr::{BinOp, Expr, Type, UnOp};
+use crate::literal::{MAX_STRING_LEN, parse_num_literal, parse_string_literal};
+use crate::types::{builtin_record_layout, is_builtin_num_alias};
+use crate::value::Value;
+use crate::{Evaluation, Options};
+
+/// Largest integer `num` holds exactly; the limit for `DIV`/`MOD` on num.
+pub(crate) const NUM_INT_MAX: f64 = 8_388_608.0;
+/// Largest integer `dnum` holds exactly; the limit for `DIV`/`MOD` on dnum.
+pub(crate) const DNUM_INT_MAX: f64 = 4_503_599_627_370_496.0;
+
+/// How a type name resolves.
+#[derive(Debug, Clone)]
+pub(crate) enum Kind {
+    Num,
+    Dnum,
+    Bool,
+    Str,
+    Record(String, Vec<(String, Type)>),
+    Array(Type),
+    /// A type the evaluator knows nothing about; values pass unchecked.
+    Opaque,
+}
+
+pub(crate) struct Ctx {
+    steps: u64,
+    max_steps: u64,
+    depth: u32,
+    max_depth: u32,
+    allow_initial: bool,
+    pub(crate) initial_used: Vec<String>,
+    in_progress: Vec<(usize, String)>,
+    cache: HashMap<(usize, String), Value>,
+}
+
+fn scope_id(env: &dyn Env) -> usize {
+    (env as *const dyn Env).cast::<()>() as usize
+}
+
+pub(crate) fn run(
+    expr: &Expr,
+    expected: Option<&Type>,
+    env: &dyn Env,
+    opts: &Options,
+) -> Result<Evaluation, EvalError> {
+    let mut ctx = Ctx {
+        steps: 0,
+        max_steps: opts.max_steps,
+        depth: 0,
+        max_depth: opts.max_depth,
+        allow_initial: opts.allow_initial_values,
+        initial_used: Vec::new(),
+        in_progress: Vec::new(),
+        cache: HashMap::new(),
+    };
+    let value = ctx.eval(expr, expected, env)?;
+    Ok(Evaluation {
+        value,
+        initial_values_used: ctx.initial_used,
+    })
+}
+
+pub(crate) fn num_result(x: f64) -> Result<Value, EvalError> {
+    if !x.is_finite() || x.abs() > f64::from(f32::MAX) {
+        return err(
+            ErrorCode::NumLimit,
+            "the result is outside the range of num",
+        );
+    }
+    Ok(Value::Num(x as f32))
+}
+
+pub(crate) fn dnum_result(x: f64) -> Result<Value, EvalError> {
+    if !x.is_finite() {
+        return err(
+            ErrorCode::NumLimit,
+            "the result is outside the range of dnum",
+        );
+    }
+    Ok(Value::Dnum(x))
+}
+
+pub(crate) fn check_len(s: String) -> Result<Value, EvalError> {
+    let n = s.chars().count();
+    if n > MAX_STRING_LEN {
+        return err(
+            ErrorCode::StrTooLong,
+            format!("the string would be {n} characters long; the limit is {MAX_STRING_LEN}"),
+        );
+    }
+    Ok(Value::Str(s))
+}
+
+fn describe(v: &Value) -> String {
+    match v.type_name() {
+        Some(t) => t.to_string(),
+        None => "an aggregate".to_string(),
+    }
+}
+
+impl Ctx {
+    /// Counts `n` units of work against the budget.
+    pub(crate) fn step(&mut self, n: u64) -> Result<(), EvalError> {
+        self.steps = self.steps.saturating_add(n);
+        if self.steps > self.max_steps {
+            return err(
+                ErrorCode::TooComplex,
+                "the expression is too large to evaluate",
+            );
+        }
+        Ok(())
+    }
+
+    /// Resolves a type name (through aliases) to what the evaluator needs.
+    pub(crate) fn kind(&self, ty: &Type, env: &dyn Env) -> Kind {
+        if !ty.dims.is_empty() {
+            return Kind::Array(ty.element());
+        }
+        let mut name = ty.name.clone();
+        for _ in 0..16 {
+            let lower = name.to_ascii_lowercase();
+            match lower.as_str() {
+                "num" => return Kind::Num,
+                "dnum" => return Kind::Dnum,
+                "bool" => return Kind::Bool,
+                "string" => return Kind::Str,
+                _ => {}
+            }
+            if is_builtin_num_alias(&lower) {
+                return Kind::Num;
+            }
+            if let Some(layout) = builtin_record_layout(&lower) {
+                return Kind::Record(
+                    lower,
+                    layout
+                        .iter()
+                        .map(|(n, t)| ((*n).to_string(), Type::named(*t)))
+                        .collect(),
+                );
+            }
+            if let Some(layout) = env.record_layout(&name) {
+                return Kind::Record(name, layout);
+            }
+            match env.alias_of(&name) {
+                Some(t) if !t.dims.is_empty() => return Kind::Array(t.element()),
+                Some(t) => name = t.name,
+                None => return Kind::Opaque,
+            }
+        }
+        Kind::Opaque
+    }
+
+    pub(crate) fn eval(
+        &mut self,
+        expr: &Expr,
+        expected: Option<&Type>,
+        env: &dyn Env,
+    ) -> Result<Value, EvalError> {
+        self.step(1)?;
+        if self.depth >= self.max_depth {
+            return err(
+                ErrorCode::TooDeep,
+                "the expression or its chain of constants is nested too deeply",
+            );
+        }
+        self.depth += 1;
+        let r = self.eval_inner(expr, expected, env);
+        self.depth -= 1;
+        let v = r?;
+        match expected {
+            Some(t) => self.coerce(v, t, env),
+            None => Ok(v),
+        }
+    }
+
+    fn eval_inner(
+        &mut self,
+        expr: &Expr,
+        expected: Option<&Type>,
+        env: &dyn Env,
+    ) -> Result<Value, EvalError> {
+        match expr {
+            Expr::Num(text) => {
+                let x = parse_num_literal(text)?;
+                let want_dnum = matches!(expected.map(|t| self.kind(t, env)), Some(Kind::Dnum));
+                let want_num = matches!(expected.map(|t| self.kind(t, env)), Some(Kind::Num));
+                if want_dnum {
+                    dnum_result(x)
+                } else if !want_num && f64::from(x as f32) != x && x.fract() == 0.0 {
+                    // An integer literal num cannot hold exactly: dnum.
+                    dnum_result(x)
+                } else {
+                    num_result(x)
+                }
+            }
+            Expr::Str(text) => Ok(Value::Str(parse_string_literal(text)?)),
+            Expr::Bool(b) => Ok(Value::Bool(*b)),
+            Expr::Name(name) => self.name(name, env),
+            Expr::Aggregate(items) => self.aggregate(items, expected, env),
+            Expr::Unary(op, operand) => {
+                let v = self.eval(operand, expected, env)?;
+                unary(*op, v)
+            }
+            Expr::Binary(op, l, r) => self.binary(*op, l, r, expected, env),
+            Expr::Call { name, args } => crate::functions::call(self, name, args, env),
+            Expr::Component(base, field) => {
+                let v = self.eval(base, None, env)?;
+                match v {
+                    Value::Record { ty, mut fields } => {
+                        match fields
+                            .iter()
+                            .position(|(n, _)| n.eq_ignore_ascii_case(field))
+                        {
+                            Some(i) => Ok(fields.swap_remove(i).1),
+                            None => err(
+                                ErrorCode::TypeMismatch,
+                                format!("{ty} has no component `{field}`"),
+                            ),
+                        }
+                    }
+                    other => err(
+                        ErrorCode::TypeMismatch,
+                        format!("{} has no components", describe(&other)),
+                    ),
+                }
+            }
+            Expr::Index(base, indices) => {
+                let mut v = self.eval(base, None, env)?;
+                if indices.is_empty() {
+                    return err(ErrorCode::BadArguments, "an index is missing");
+                }
+                for ix in indices {
+                    let i = self.eval(ix, Some(&Type::named("num")), env)?;
+                    let i = i.as_f64().unwrap_or(f64::NAN);
+                    if i.fract() != 0.0 {
+                        return err(ErrorCode::NotIntVal, "an array index must be an integer");
+                    }
+                    v = match v {
+                        Value::Array(mut items) => {
+                            let n = items.len();
+                            if i < 1.0 || i > n as f64 {
+                                return err(
+                                    ErrorCode::OutOfBnd,
+                                    format!("index {i} is outside the array bounds 1..{n}"),
+                                );
+                            }
+                            items.swap_remove(i as usize - 1)
+                        }
+                        other => {
+                            return err(
+                                ErrorCode::TypeMismatch,
+                                format!("{} is not an array", describe(&other)),
+                            );
+                        }
+                    };
+                }
+                Ok(v)
+            }
+            Expr::Unknown => err(ErrorCode::Unsupported, "the expression cannot be evaluated"),
+        }
+    }
+
+    fn name(&mut self, name: &str, env: &dyn Env) -> Result<Value, EvalError> {
+        match env.lookup(name) {
+            Lookup::Constant { expr, ty, scope } => {
+                let scope = scope.unwrap_or(env);
+                self.with_definition(name, &expr, &ty, scope)
+            }
+            Lookup::Known { value } => Ok(value),
+            Lookup::Variable {
+                kind,
+                ty,
+                initial,
+                scope,
+            } => {
+                let what = match kind {
+                    VarKind::Var => "variable (VAR)",
+                    VarKind::Pers => "persistent (PERS)",
+                };
+                match initial {
+                    Some(init) if self.allow_initial => {
+                        let scope = scope.unwrap_or(env);
+                        let v = self.with_definition(name, &init, &ty, scope)?;
+                        if !self
+                            .initial_used
+                            .iter()
+                            .any(|n| n.eq_ignore_ascii_case(name))
+                        {
+                            self.initial_used.push(name.to_string());
+                        }
+                        Ok(v)
+                    }
+                    _ => err(
+                        ErrorCode::NotConstant,
+                        format!("`{name}` is a {what}; its value is known only at run time"),
+                    ),
+                }
+            }
+            Lookup::Unknown => match predefined(name) {
+                Some(v) => Ok(v),
+                None => err(ErrorCode::UnknownName, format!("`{name}` is not known")),
+            },
+        }
+    }
+
+    fn with_definition(
+        &mut self,
+        name: &str,
+        expr: &Expr,
+        ty: &Type,
+        scope: &dyn Env,
+    ) -> Result<Value, EvalError> {
+        let key = (scope_id(scope), name.to_lowercase());
+        if let Some(v) = self.cache.get(&key) {
+            return Ok(v.clone());
+        }
+        if self.in_progress.contains(&key) {
+            return err(
+                ErrorCode::Cycle,
+                format!("the definition of `{name}` refers to itself"),
+            );
+        }
+        self.in_progress.push(key.clone());
+        let r = self.eval(expr, Some(ty), scope);
+        self.in_progress.pop();
+        let v = r?;
+        self.cache.insert(key, v.clone());
+        Ok(v)
+    }
+
+    fn aggregate(
+        &mut self,
+        items: &[Expr],
+        expected: Option<&Type>,
+        env: &dyn Env,
+    ) -> Result<Value, EvalError> {
+        let kind = expected.map(|t| self.kind(t, env));
+        match kind {
+            Some(Kind::Array(elem)) => {
+                let want = expected.and_then(|t| t.dims.first().copied()).unwrap_or(0);
+                if want != 0 && items.len() != want {
+                    return err(
+                        ErrorCode::TypeMismatch,
+                        format!(
+                            "the aggregate has {} elements; the array has {want}",
+                            items.len()
+                        ),
+                    );
+                }
+                let mut out = Vec::with_capacity(items.len().min(1024));
+                for it in items {
+                    out.push(self.eval(it, Some(&elem), env)?);
+                }
+                Ok(Value::Array(out))
+            }
+            Some(Kind::Record(ty, layout)) => {
+                if items.len() != layout.len() {
+                    return err(
+                        ErrorCode::TypeMismatch,
+                        format!(
+                            "{ty} has {} components; the aggregate has {}",
+                            layout.len(),
+                            items.len()
+                        ),
+                    );
+                }
+                let mut fields = Vec::with_capacity(layout.len());
+                for (it, (fname, fty)) in items.iter().zip(layout) {
+                    let v = self.eval(it, Some(&fty), env)?;
+                    fields.push((fname, v));
+                }
+                Ok(Value::Record { ty, fields })
+            }
+            Some(Kind::Num | Kind::Dnum | Kind::Bool | Kind::Str) => err(
+                ErrorCode::TypeMismatch,
+                format!(
+                    "an aggregate cannot be a {}",
+                    expected.map(|t| t.name.as_str()).unwrap_or("")
+                ),
+            ),
+            Some(Kind::Opaque) | None => {
+                let mut out = Vec::with_capacity(items.len().min(1024));
+                for it in items {
+                    out.push(self.eval(it, None, env)?);
+                }
+                Ok(Value::Array(out))
+            }
+        }
+    }
+
+    /// Makes `v` a value of type `ty`: types untyped aggregates, widens num
+    /// to dnum, and checks the rest.
+    pub(crate) fn coerce(
+        &mut self,
+        v: Value,
+        ty: &Type,
+        env: &dyn Env,
+    ) -> Result<Value, EvalError> {
+        let kind = self.kind(ty, env);
+        let mismatch = |v: &Value| {
+            err(
+                ErrorCode::TypeMismatch,
+                format!("expected {ty}, found {}", describe(v)),
+            )
+        };
+        match (kind, v) {
+            (Kind::Num, Value::Num(x)) => Ok(Value::Num(x)),
+            (Kind::Num, Value::Dnum(x)) => num_result(x),
+            (Kind::Dnum, Value::Num(x)) => Ok(Value::Dnum(f64::from(x))),
+            (Kind::Dnum, Value::Dnum(x)) => Ok(Value::Dnum(x)),
+            (Kind::Bool, Value::Bool(b)) => Ok(Value::Bool(b)),
+            (Kind::Str, Value::Str(s)) => Ok(Value::Str(s)),
+            (Kind::Record(name, layout), Value::Record { ty: vty, fields }) => {
+                if vty.eq_ignore_ascii_case(&name) {
+                    Ok(Value::Record { ty: vty, fields })
+                } else if layout.len() == fields.len()
+                    && layout
+                        .iter()
+                        .zip(&fields)
+                        .all(|((a, _), (b, _))| a.eq_ignore_ascii_case(b))
+                {
+                    // Same layout under another name (robtarget / o_robtarget).
+                    Ok(Value::Record { ty: name, fields })
+                } else {
+                    mismatch(&Value::Record { ty: vty, fields })
+                }
+            }
+            (Kind::Record(name, layout), Value::Array(items)) => {
+                if items.len() != layout.len() {
+                    return mismatch(&Value::Array(items));
+                }
+                let mut fields = Vec::with_capacity(items.len());
+                for (v, (fname, fty)) in items.into_iter().zip(layout) {
+                    self.step(1)?;
+                    fields.push((fname, self.coerce(v, &fty, env)?));
+                }
+                Ok(Value::Record { ty: name, fields })
+            }
+            (Kind::Array(elem), Value::Array(items)) => {
+                if let Some(&n) = ty.dims.first()
+                    && n != 0
+                    && n != items.len()
+                {
+                    return err(
+                        ErrorCode::TypeMismatch,
+                        format!("expected {ty}, found an array of {}", items.len()),
+                    );
+                }
+                let mut out = Vec::with_capacity(items.len());
+                for v in items {
+                    self.step(1)?;
+                    out.push(self.coerce(v, &elem, env)?);
+                }
+                Ok(Value::Array(out))
+            }
+            (Kind::Opaque, v) => Ok(v),
+            (_, v) => mismatch(&v),
+        }
+    }
+
+    fn binary(
+        &mut self,
+        op: BinOp,
+        l: &Expr,
+        r: &Expr,
+        expected: Option<&Type>,
+        env: &dyn Env,
+    ) -> Result<Value, EvalError> {
+        // Operands of + and - have the type of the result; this lets
+        // `[1,2,3] + p` and dnum literals work.
+        let hint = match op {
+            BinOp::Add | BinOp::Sub => expected,
+            _ => None,
+        };
+        let hint = hint.filter(|t| !matches!(self.kind(t, env), Kind::Bool | Kind::Opaque));
+        let a = self.eval(l, hint, env)?;
+        let b = self.eval(r, hint, env)?;
+        let (a, b) = self.unify(a, b, env)?;
+        binary(op, a, b)
+    }
+
+    /// Gives an untyped aggregate the record type of the other operand.
+    fn unify(&mut self, a: Value, b: Value, env: &dyn Env) -> Result<(Value, Value), EvalError> {
+        match (&a, &b) {
+            (Value::Record { ty, .. }, Value::Array(_)) => {
+                let t = Type::named(ty.clone());
+                let b = self.coerce(b, &t, env)?;
+                Ok((a, b))
+            }
+            (Value::Array(_), Value::Record { ty, .. }) => {
+                let t = Type::named(ty.clone());
+                let a = self.coerce(a, &t, env)?;
+                Ok((a, b))
+            }
+            _ => Ok((a, b)),
+        }
+    }
+}
+
+pub(crate) fn unary(op: UnOp, v: Value) -> Result<Value, EvalError> {
+    match (op, v) {
+        (UnOp::Neg, Value::Num(x)) => Ok(Value::Num(-x)),
+        (UnOp::Neg, Value::Dnum(x)) => Ok(Value::Dnum(-x)),
+        (UnOp::Plus, v @ (Value::Num(_) | Value::Dnum(_))) => Ok(v),
+        (UnOp::Neg, v) if is_record(&v, "pos") => map_pos(&v, |x| -x),
+        (UnOp::Plus, v) if is_record(&v, "pos") => Ok(v),
+        (UnOp::Not, Value::Bool(b)) => Ok(Value::Bool(!b)),
+        (op, v) => err(
+            ErrorCode::TypeMismatch,
+            format!(
+                "the operator {} cannot be applied to {}",
+                match op {
+                    UnOp::Neg => "-",
+                    UnOp::Plus => "+",
+                    UnOp::Not => "NOT",
+                },
+                describe(&v)
+            ),
+        ),
+    }
+}
+
+pub(crate) fn is_record(v: &Value, name: &str) -> bool {
+    matches!(v, Value::Record { ty, .. } if ty.eq_ignore_ascii_case(name))
+}
+
+fn map_pos(v: &Value, f: impl Fn(f32) -> f32) -> Result<Value, EvalError> {
+    let p = pos_of(v)?;
+    Ok(Value::pos(f(p[0]), f(p[1]), f(p[2])))
+}
+
+/// The x, y, z of a pos value.
+pub(crate) fn pos_of(v: &Value) -> Result<[f32; 3], EvalError> {
+    let get = |n: &str| match v.field(n) {
+        Some(Value::Num(x)) => Ok(*x),
+        _ => err(
+            ErrorCode::TypeMismatch,
+            format!("expected pos, found {}", describe(v)),
+        ),
+    };
+    Ok([get("x")?, get("y")?, get("z")?])
+}
+
+/// The q1..q4 of an orient value.
+pub(crate) fn orient_of(v: &Value) -> Result<[f32; 4], EvalError> {
+    let get = |n: &str| match v.field(n) {
+        Some(Value::Num(x)) => Ok(*x),
+        _ => err(
+            ErrorCode::TypeMismatch,
+            format!("expected orient, found {}", describe(v)),
+        ),
+    };
+    Ok([get("q1")?, get("q2")?, get("q3")?, get("q4")?])
+}
+
+fn int_operand(x: f64, limit: f64) -> Result<f64, EvalError> {
+    if x.fract() != 0.0 {
+        return err(ErrorCode::NotIntVal, "DIV and MOD need integer operands");
+    }
+    if x.abs() > limit {
+        return err(
+            ErrorCode::MaxIntVal,
+            "the operand is too large for an integer operation",
+        );
+    }
+    Ok(x)
+}
+
+pub(crate) fn values_equal(a: &Value, b: &Value) -> Result<bool, EvalError> {
+    match (a, b) {
+        (Value::Num(_) | Value::Dnum(_), Value::Num(_) | Value::Dnum(_)) => {
+            Ok(a.as_f64() == b.as_f64())
+        }
+        (Value::Bool(x), Value::Bool(y)) => Ok(x == y),
+        (Value::Str(x), Value::Str(y)) => Ok(x == y),
+        (Value::Record { ty: t1, fields: f1 }, Value::Record { ty: t2, fields: f2 }) => {
+            if !t1.eq_ignore_ascii_case(t2) || f1.len() != f2.len() {
+                return err(
+                    ErrorCode::TypeMismatch,
+                    format!("cannot compare {t1} with {t2}"),
+                );
+            }
+            for ((_, x), (_, y)) in f1.iter().zip(f2) {
+                if !values_equal(x, y)? {
+                    return Ok(false);
+                }
+            }
+            Ok(true)
+        }
+        (Value::Array(x), Value::Array(y)) => {
+            if x.len() != y.len() {
+                return err(
+                    ErrorCode::TypeMismatch,
+                    "cannot compare aggregates of different sizes",
+                );
+            }
+            for (x, y) in x.iter().zip(y) {
+                if !values_equal(x, y)? {
+                    return Ok(false);
+                }
+            }
+            Ok(true)
+        }
+        _ => err(
+            ErrorCode::TypeMismatch,
+            format!("cannot compare {} with {}", describe(a), describe(b)),
+        ),
+    }
+}
+
+pub(crate) fn binary(op: BinOp, a: Value, b: Value) -> Result<Value, EvalError> {
+    use Value::{Bool, Dnum, Num, Str};
+    let mismatch = |a: &Value, b: &Value| {
+        err(
+            ErrorCode::TypeMismatch,
+            format!(
+                "the operator {} cannot be applied to {} and {}",
+                op.as_str(),
+                describe(a),
+                describe(b)
+            ),
+        )
+    };
+    let is_num = |v: &Value| matches!(v, Num(_) | Dnum(_));
+    let any_dnum = matches!(a, Dnum(_)) || matches!(b, Dnum(_));
+    match op {
+        BinOp::Eq => return Ok(Bool(values_equal(&a, &b)?)),
+        BinOp::Ne => return Ok(Bool(!values_equal(&a, &b)?)),
+        BinOp::And | BinOp::Or | BinOp::Xor => {
+            return match (&a, &b) {
+                (Bool(x), Bool(y)) => Ok(Bool(match op {
+                    BinOp::And => *x && *y,
+                    BinOp::Or => *x || *y,
+                    _ => x ^ y,
+                })),
+                _ => mismatch(&a, &b),
+            };
+        }
+        _ => {}
+    }
+    if is_num(&a) && is_num(&b) {
+        let x = a.as_f64().unwrap_or(0.0);
+        let y = b.as_f64().unwrap_or(0.0);
+        let wrap = |r: f64| {
+            if any_dnum {
+                dnum_result(r)
+            } else {
+                num_result(r)
+            }
+        };
+        return match op {
+            BinOp::Add => wrap(x + y),
+            BinOp::Sub => wrap(x - y),
+            BinOp::Mul => wrap(x * y),
+            BinOp::Div => {
+                if y == 0.0 {
+                    err(ErrorCode::DivZero, "division by zero")
+                } else {
+                    wrap(x / y)
+                }
+            }
+            BinOp::IntDiv | BinOp::Mod => {
+                let limit = if any_dnum { DNUM_INT_MAX } else { NUM_INT_MAX };
+                let x = int_operand(x, limit)?;
+                let y = int_operand(y, limit)?;
+                if y == 0.0 {
+                    return err(ErrorCode::DivZero, "division by zero");
+                }
+                let q = (x / y).trunc();
+                wrap(if op == BinOp::IntDiv { q } else { x - q * y })
+            }
+            BinOp::Lt => Ok(Bool(x < y)),
+            BinOp::Le => Ok(Bool(x <= y)),
+            BinOp::Gt => Ok(Bool(x > y)),
+            BinOp::Ge => Ok(Bool(x >= y)),
+            _ => mismatch(&a, &b),
+        };
+    }
+    match (op, &a, &b) {
+        (BinOp::Add, Str(x), Str(y)) => {
+            let mut s = String::with_capacity(x.len() + y.len());
+            s.push_str(x);
+            s.push_str(y);
+            check_len(s)
+        }
+        (BinOp::Add | BinOp::Sub, _, _) if is_record(&a, "pos") && is_record(&b, "pos") => {
+            let p = pos_of(&a)?;
+            let q = pos_of(&b)?;
+            let f = |i: usize| {
+                let (x, y) = (f64::from(p[i]), f64::from(q[i]));
+                num_result(if op == BinOp::Add { x + y } else { x - y })
+            };
+            pos_value([f(0)?, f(1)?, f(2)?])
+        }
+        (BinOp::Mul, _, _) if is_record(&a, "pos") && is_num(&b) => {
+            scale_pos(&a, b.as_f64().unwrap_or(0.0))
+        }
+        (BinOp::Mul, _, _) if is_num(&a) && is_record(&b, "pos") => {
+            scale_pos(&b, a.as_f64().unwrap_or(0.0))
+        }
+        (BinOp::Mul, _, _) if is_record(&a, "pos") && is_record(&b, "pos") => {
+            let p = pos_of(&a)?.map(f64::from);
+            let q = pos_of(&b)?.map(f64::from);
+            pos_value([
+                num_result(p[1] * q[2] - p[2] * q[1])?,
+                num_result(p[2] * q[0] - p[0] * q[2])?,
+                num_result(p[0] * q[1] - p[1] * q[0])?,
+            ])
+        }
+        (BinOp::Mul, _, _) if is_record(&a, "orient") && is_record(&b, "orient") => {
+            let p = crate::geometry::unit_quat(orient_of(&a)?)?;
+            let q = crate::geometry::unit_quat(orient_of(&b)?)?;
+            crate::geometry::orient_value(&(p * q), false)
+        }
+        _ => mismatch(&a, &b),
+    }
+}
+
+fn scale_pos(p: &Value, k: f64) -> Result<Value, EvalError> {
+    let p = pos_of(p)?.map(f64::from);
+    pos_value([
+        num_result(p[0] * k)?,
+        num_result(p[1] * k)?,
+        num_result(p[2] * k)?,
+    ])
+}
+
+fn pos_value(c: [Value; 3]) -> Result<Value, EvalError> {
+    let f = |v: &Value| match v {
+        Value::Num(x) => *x,
+        _ => 0.0,
+    };
+    Ok(Value::pos(f(&c[0]), f(&c[1]), f(&c[2])))
+}
