@@ -281,7 +281,7 @@ module.exports = grammar({
     // {*} {*,*}
     parameter_dimensions: $ => seq(
       '{',
-      sep1(choice('*', $.placeholder), ','),
+      sep1(field('dimension', choice('*', $.placeholder)), ','),
       '}',
     ),
 
@@ -328,7 +328,7 @@ module.exports = grammar({
       field('condition', $._expression),
       kw('THEN'),
       repeat(field('body', $._statement)),
-      repeat(field('alternative', $.elseif_clause)),
+      repeat(field('alternative', choice($.elseif_clause, alias($._elseif_placeholder, $.placeholder)))),
       optional(field('alternative', $.else_clause)),
       kw('ENDIF'),
     ),
@@ -389,7 +389,7 @@ module.exports = grammar({
     test_statement: $ => seq(
       kw('TEST'),
       field('value', $._expression),
-      repeat(field('case', $.test_case)),
+      repeat(field('case', choice($.test_case, alias($._case_placeholder, $.placeholder)))),
       optional(field('default', $.default_case)),
       kw('ENDTEST'),
     ),
@@ -572,6 +572,11 @@ module.exports = grammar({
 
     // FlexPendant placeholders: <SMT> <EXP> <ARG> <VAR> <ID> <DDN> ...
     placeholder: _ => token(prec(1, /<[A-Z]{2,4}>/)),
+
+    // where a CASE or ELSEIF clause can stand, these two are clauses, not
+    // statements of the clause before
+    _case_placeholder: _ => token(prec(2, '<CSE>')),
+    _elseif_placeholder: _ => token(prec(2, '<EIT>')),
 
     number: _ => token(choice(
       /0[xX][0-9A-Fa-f]+/,
