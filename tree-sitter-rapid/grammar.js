@@ -127,8 +127,11 @@ module.exports = grammar({
     header_entry: $ => seq(
       field('key', $.identifier),
       ':',
-      field('value', choice($.number, $.identifier)),
+      field('value', $.header_value),
     ),
+
+    // `1`, `1.0.3`, `ENGLISH`: whatever stands after the colon
+    header_value: _ => /[^\s%!]+/,
 
     module_attributes: $ => seq(
       '(',

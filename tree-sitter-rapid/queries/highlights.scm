@@ -143,8 +143,9 @@
 ; ---------------------------------------------------------------- names
 
 (header_entry
-  key: (identifier) @attribute
-  value: (identifier)? @constant)
+  key: (identifier) @attribute)
+
+(header_value) @constant
 
 (module
   name: (identifier) @module)

@@ -10,6 +10,9 @@
 
 (trap_declaration) @local.scope
 
+; the loop variable of a FOR exists only inside the loop
+(for_statement) @local.scope
+
 (procedure_declaration
   name: (identifier) @local.definition.function)
 

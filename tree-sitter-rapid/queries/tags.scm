@@ -19,7 +19,12 @@
   name: (identifier) @name) @definition.type
 
 (data_declaration
+  storage: "const"
   name: (identifier) @name) @definition.constant
+
+(data_declaration
+  storage: ["var" "pers"]
+  name: (identifier) @name) @definition.variable
 
 (procedure_call
   name: (identifier) @name) @reference.call
