@@ -100,9 +100,10 @@ module.exports = grammar({
   conflicts: $ => [],
 
   rules: {
+    // text after an ENDMODULE that is not a module is `trailing_text`
     source_file: $ => optional(seq(
-      repeat1($.module),
-      optional($.trailing_text),
+      $.module,
+      repeat(choice($.module, $.trailing_text)),
     )),
 
     // ------------------------------------------------------------------

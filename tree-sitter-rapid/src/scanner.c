@@ -1,9 +1,9 @@
 // External scanner for the RAPID grammar.
 //
-// It recognises one token, `trailing_text`: whatever follows the last
-// ENDMODULE of a file when it is not another module, a module header
-// (`%%%`) or a comment. Real controller files sometimes carry junk there;
-// it must not turn into parse errors.
+// It recognises one token, `trailing_text`: text after an ENDMODULE that
+// is not a comment, up to the end of the file or to the next line that
+// starts a module (`MODULE` or a `%%%` header). Real controller files
+// sometimes carry junk there; it must not turn into parse errors.
 
 #include "tree_sitter/parser.h"
 
@@ -36,6 +36,53 @@ static bool is_ident_char(int32_t c) {
          c == '_';
 }
 
+static bool is_newline(int32_t c) { return c == '\n' || c == '\r'; }
+
+static void skip_blanks(TSLexer *lexer) {
+  while (lexer->lookahead == ' ' || lexer->lookahead == '\t') {
+    lexer->advance(lexer, false);
+  }
+}
+
+// Consumes what looks like the start of a module: a `%%%` header, or a
+// line `MODULE name` followed by nothing but attributes or a comment.
+// Returns true when it is one; what was consumed otherwise is ordinary
+// text (prose such as "Module written by ..." is not a module).
+static bool starts_module(TSLexer *lexer) {
+  if (lexer->lookahead == '%') {
+    unsigned n = 0;
+    while (lexer->lookahead == '%' && n < 3) {
+      lexer->advance(lexer, false);
+      n++;
+    }
+    return n == 3;
+  }
+  const char *word = "module";
+  unsigned i = 0;
+  while (word[i] != 0 && !lexer->eof(lexer) && towlower(lexer->lookahead) == (wint_t)word[i]) {
+    lexer->advance(lexer, false);
+    i++;
+  }
+  if (i == 0 || word[i] != 0 || (lexer->lookahead != ' ' && lexer->lookahead != '\t')) {
+    return false;
+  }
+  skip_blanks(lexer);
+  if (lexer->lookahead == '<') {
+    lexer->advance(lexer, false); // a placeholder name such as <ID>
+  }
+  unsigned name = 0;
+  while (is_ident_char(lexer->lookahead) || lexer->lookahead == '>') {
+    lexer->advance(lexer, false);
+    name++;
+  }
+  if (name == 0) {
+    return false;
+  }
+  skip_blanks(lexer);
+  int32_t c = lexer->lookahead;
+  return lexer->eof(lexer) || is_newline(c) || c == '(' || c == '!';
+}
+
 bool tree_sitter_rapid_external_scanner_scan(void *payload, TSLexer *lexer,
                                              const bool *valid_symbols) {
   (void)payload;
@@ -46,37 +93,29 @@ bool tree_sitter_rapid_external_scanner_scan(void *payload, TSLexer *lexer,
   while (iswspace(lexer->lookahead) || lexer->lookahead == 0xFEFF) {
     lexer->advance(lexer, true);
   }
-  if (lexer->eof(lexer)) {
-    return false;
+  if (lexer->eof(lexer) || lexer->lookahead == '!') {
+    return false; // the end, or a comment the ordinary lexer takes
   }
-  int32_t c = lexer->lookahead;
-  if (c == '!') {
-    return false; // a comment: the ordinary lexer takes it
+  if (starts_module(lexer)) {
+    return false; // another module
   }
-  if (c == '%') {
-    unsigned n = 0;
-    while (lexer->lookahead == '%' && n < 3) {
+  // Text up to the end of the file or to a line that starts a module.
+  for (;;) {
+    while (!lexer->eof(lexer) && !is_newline(lexer->lookahead)) {
       lexer->advance(lexer, false);
-      n++;
     }
-    if (n == 3) {
-      return false; // the header of another module
+    lexer->mark_end(lexer);
+    if (lexer->eof(lexer)) {
+      break;
     }
-  } else if (c == 'm' || c == 'M') {
-    const char *word = "module";
-    unsigned i = 0;
-    while (word[i] != 0 && towlower(lexer->lookahead) == (wint_t)word[i]) {
+    while (is_newline(lexer->lookahead)) {
       lexer->advance(lexer, false);
-      i++;
     }
-    if (word[i] == 0 && !is_ident_char(lexer->lookahead)) {
-      return false; // another module
+    skip_blanks(lexer);
+    if (lexer->eof(lexer) || starts_module(lexer)) {
+      break;
     }
   }
-  while (!lexer->eof(lexer)) {
-    lexer->advance(lexer, false);
-  }
-  lexer->mark_end(lexer);
   lexer->result_symbol = TRAILING_TEXT;
   return true;
 }
