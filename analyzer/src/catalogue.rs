@@ -467,9 +467,9 @@ impl Routine {
     /// `FUNC num Round(num Val, \num Dec)` or
     /// `PROC MoveL(\switch Conc, robtarget ToPoint, ..., \num V | \num T, ...)`.
     ///
-    /// Optional parameters carry `\`; mutually exclusive alternatives are joined by ` | `
-    /// (a group of which one member must be given is written without `\`); arrays get
-    /// `{*}`; modes other than IN are written before the type.
+    /// Optional parameters carry `\` (as the caller writes them); mutually exclusive
+    /// alternatives are joined by ` | ` (whether one of them is required is in
+    /// [`Routine::alt_groups`]); arrays get `{*}`; modes other than IN precede the type.
     pub fn signature(&self) -> String {
         let mut out = String::new();
         match &self.returns {
@@ -491,11 +491,7 @@ impl Routine {
             }
             first = false;
             prev_group = p.alt_group;
-            let required_alt = p
-                .alt_group
-                .and_then(|id| self.alt_groups.iter().find(|g| g.id == id))
-                .is_some_and(|g| g.required);
-            if p.optional && !required_alt {
+            if p.optional {
                 out.push('\\');
             }
             if let Some(mode) = p.mode
