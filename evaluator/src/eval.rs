@@ -192,8 +192,8 @@ impl Ctx {
                 let want_num = matches!(expected.map(|t| self.kind(t, env)), Some(Kind::Num));
                 if want_dnum {
                     dnum_result(x)
-                } else if !want_num && f64::from(x as f32) != x && x.fract() == 0.0 {
-                    // An integer literal num cannot hold exactly: dnum.
+                } else if !want_num && x > f64::from(f32::MAX) {
+                    // Too large for num and no context asks for num: dnum.
                     dnum_result(x)
                 } else {
                     num_result(x)
@@ -475,10 +475,16 @@ impl Ctx {
         // Operands of + and - have the type of the result; this lets
         // `[1,2,3] + p` and dnum literals work.
         let hint = match op {
-            BinOp::Add | BinOp::Sub => expected,
+            BinOp::Add | BinOp::Sub => {
+                expected.filter(|t| !matches!(self.kind(t, env), Kind::Bool | Kind::Opaque))
+            }
+            // dnum context reaches the literals of a product or quotient,
+            // so that `CONST dnum d := 1/3;` is computed in double.
+            BinOp::Mul | BinOp::Div | BinOp::IntDiv | BinOp::Mod => {
+                expected.filter(|t| matches!(self.kind(t, env), Kind::Dnum))
+            }
             _ => None,
         };
-        let hint = hint.filter(|t| !matches!(self.kind(t, env), Kind::Bool | Kind::Opaque));
         let a = self.eval(l, hint, env)?;
         let b = self.eval(r, hint, env)?;
         let (a, b) = self.unify(a, b, env)?;
