@@ -204,7 +204,8 @@ pub const STR_WHITE: &str = " ";
 
 /// Values of data predefined by the system that the evaluator knows itself:
 /// `pi`, `EOF_BIN`, `EOF_NUM`, the `STR_*` character sets, the `opnum`
-/// constants (`LT` .. `GT`) and the disk names. Case-insensitive.
+/// constants (`LT` .. `GT`), the `opcalc` constants (`OpAdd` .. `OpMod`,
+/// numbered 1 to 5 here) and the disk names. Case-insensitive.
 pub fn predefined(name: &str) -> Option<Value> {
     let lower = name.to_ascii_lowercase();
     Some(match lower.as_str() {
@@ -223,6 +224,11 @@ pub fn predefined(name: &str) -> Option<Value> {
         "noteq" => Value::Num(4.0),
         "gteq" => Value::Num(5.0),
         "gt" => Value::Num(6.0),
+        "opadd" => Value::Num(1.0),
+        "opsub" => Value::Num(2.0),
+        "opmult" => Value::Num(3.0),
+        "opdiv" => Value::Num(4.0),
+        "opmod" => Value::Num(5.0),
         "diskhome" | "ram1disk" => Value::Str("HOME:".into()),
         "disktemp" => Value::Str("TEMP:".into()),
         "flp1" => Value::Str("flp1:".into()),

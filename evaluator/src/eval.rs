@@ -135,6 +135,9 @@ impl Ctx {
             if is_builtin_num_alias(&lower) {
                 return Kind::Num;
             }
+            if lower == "stringdig" {
+                return Kind::Str;
+            }
             if let Some(layout) = builtin_record_layout(&lower) {
                 return Kind::Record(
                     lower,

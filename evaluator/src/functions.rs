@@ -18,6 +18,13 @@ pub const FUNCTIONS: &[&str] = &[
     "ASin",
     "ATan",
     "ATan2",
+    "BitAnd",
+    "BitCheck",
+    "BitLSh",
+    "BitNeg",
+    "BitOr",
+    "BitRSh",
+    "BitXOr",
     "ByteToStr",
     "Cos",
     "DecToHex",
@@ -27,6 +34,7 @@ pub const FUNCTIONS: &[&str] = &[
     "Dim",
     "Distance",
     "DnumToNum",
+    "DnumToStr",
     "DotProd",
     "EulerZYX",
     "Exp",
@@ -43,8 +51,11 @@ pub const FUNCTIONS: &[&str] = &[
     "Pow",
     "RelTool",
     "Round",
+    "RoundDnum",
     "Sin",
     "Sqrt",
+    "SqrtDnum",
+    "StrDigCalc",
     "StrDigCmp",
     "StrFind",
     "StrLen",
@@ -57,6 +68,7 @@ pub const FUNCTIONS: &[&str] = &[
     "StrToVal",
     "Tan",
     "Trunc",
+    "TruncDnum",
     "ValToStr",
     "VectMagn",
 ];
@@ -226,16 +238,34 @@ fn signature(lower: &str) -> Option<&'static [P]> {
     static DIM: [P; 2] = [req("ArrPar", "any"), req("DimNo", "num")];
     static NUMTODNUM: [P; 1] = [req("Value", "num")];
     static DNUMTONUM: [P; 2] = [req("Value", "dnum"), sw("Integer", 0)];
-    static ABSDNUM: [P; 1] = [req("Input", "dnum")];
+    static DNUM_VALUE: [P; 1] = [req("Value", "dnum")];
+    static ROUNDDNUM: [P; 2] = [req("Val", "dnum"), opt("Dec", "num")];
+    static DNUMTOSTR: [P; 3] = [req("Val", "dnum"), req("Dec", "num"), sw("Exp", 0)];
+    static BIT2: [P; 2] = [req("BitData1", "byte"), req("BitData2", "byte")];
+    static BIT1: [P; 1] = [req("BitData1", "byte")];
+    static BITSHIFT: [P; 2] = [req("BitData", "byte"), req("ShiftSteps", "num")];
+    static BITCHECK: [P; 2] = [req("BitData", "byte"), req("BitPos", "num")];
+    static STRDIGCALC: [P; 3] = [
+        req("StrDig1", "string"),
+        req("Operation", "opcalc"),
+        req("StrDig2", "string"),
+    ];
     static ONE_STR: [P; 1] = [req("Str", "string")];
     static STRDIGCMP: [P; 3] = [
-        req("StrData1", "string"),
+        req("StrDig1", "string"),
         req("Relation", "opnum"),
-        req("StrData2", "string"),
+        req("StrDig2", "string"),
     ];
     Some(match lower {
         "abs" => &ONE_NUM_INPUT,
-        "absdnum" => &ABSDNUM,
+        "absdnum" | "sqrtdnum" => &DNUM_VALUE,
+        "rounddnum" | "truncdnum" => &ROUNDDNUM,
+        "dnumtostr" => &DNUMTOSTR,
+        "bitand" | "bitor" | "bitxor" => &BIT2,
+        "bitneg" => &BIT1,
+        "bitlsh" | "bitrsh" => &BITSHIFT,
+        "bitcheck" => &BITCHECK,
+        "strdigcalc" => &STRDIGCALC,
         "acos" | "asin" | "atan" | "sqrt" => &ONE_VALUE,
         "cos" | "sin" | "tan" => &ANGLE,
         "atan2" => &ATAN2,
@@ -443,7 +473,101 @@ pub(crate) fn call(
     let a = bind(ctx, name, params, args, env)?;
     match lower.as_str() {
         "abs" => num_result(a.num("Input")?.abs()),
-        "absdnum" => dnum_result(a.num("Input")?.abs()),
+        "absdnum" => dnum_result(a.num("Value")?.abs()),
+        "sqrtdnum" => {
+            let x = a.num("Value")?;
+            if x < 0.0 {
+                return err(ErrorCode::ArgValErr, "SqrtDnum: the argument is negative");
+            }
+            dnum_result(x.sqrt())
+        }
+        "rounddnum" | "truncdnum" => {
+            let dec = decimals(&a, "Dec", a.opt_num("Dec")?.unwrap_or(0.0))?;
+            let x = a.num("Val")?;
+            dnum_result(if lower == "rounddnum" {
+                round_dec(x, dec)
+            } else {
+                trunc_dec(x, dec)
+            })
+        }
+        "bitand" | "bitor" | "bitxor" => {
+            let x = byte_arg(&a, "BitData1")?;
+            let y = byte_arg(&a, "BitData2")?;
+            Ok(Value::Num(f32::from(match lower.as_str() {
+                "bitand" => x & y,
+                "bitor" => x | y,
+                _ => x ^ y,
+            })))
+        }
+        "bitneg" => Ok(Value::Num(f32::from(!byte_arg(&a, "BitData1")?))),
+        "bitlsh" | "bitrsh" => {
+            let x = byte_arg(&a, "BitData")?;
+            let n = a.num("ShiftSteps")?;
+            if n.fract() != 0.0 || !(0.0..=8.0).contains(&n) {
+                return err(
+                    ErrorCode::ArgValErr,
+                    format!("{name}: ShiftSteps must be a whole number from 0 to 8"),
+                );
+            }
+            let v = u32::from(x);
+            let r = if lower == "bitlsh" {
+                v << n as u32
+            } else {
+                v >> n as u32
+            };
+            Ok(Value::Num((r & 0xff) as f32))
+        }
+        "bitcheck" => {
+            let x = byte_arg(&a, "BitData")?;
+            let p = a.num("BitPos")?;
+            if p.fract() != 0.0 || !(1.0..=8.0).contains(&p) {
+                return err(
+                    ErrorCode::ArgValErr,
+                    "BitCheck: BitPos must be a whole number from 1 to 8",
+                );
+            }
+            Ok(Value::Bool(x & (1 << (p as u32 - 1)) != 0))
+        }
+        "dnumtostr" => {
+            let dec = decimals(&a, "Dec", a.num("Dec")?)?;
+            let x = a.num("Val")?;
+            let s = if a.sw("Exp") {
+                exp_format(x, dec)
+            } else {
+                format!("{:.*}", dec as usize, round_dec(x, dec))
+            };
+            check_len(s)
+        }
+        "strdigcalc" => {
+            let n1 = dig_value(name, a.str("StrDig1")?)?;
+            let n2 = dig_value(name, a.str("StrDig2")?)?;
+            let op = a.num("Operation")?;
+            let op = if op.fract() == 0.0 { op as i64 } else { 0 };
+            let r = match op {
+                1 => n1.checked_add(n2),
+                2 => n1.checked_sub(n2),
+                3 => n1.checked_mul(n2),
+                4 | 5 if n2 == 0 => {
+                    return err(ErrorCode::DivZero, "StrDigCalc: division by zero");
+                }
+                4 => Some(n1 / n2),
+                5 => Some(n1 % n2),
+                _ => {
+                    return err(
+                        ErrorCode::ArgValErr,
+                        "StrDigCalc: the operation must be OpAdd, OpSub, OpMult, OpDiv or OpMod",
+                    );
+                }
+            };
+            match r {
+                Some(v) if v <= 4_294_967_295 => Ok(Value::Str(v.to_string())),
+                _ => err(
+                    ErrorCode::MaxIntVal,
+                    "StrDigCalc: the result is outside 0 to 4294967295",
+                ),
+            }
+        }
+
         "acos" | "asin" => {
             let x = a.num("Value")?;
             if !(-1.0..=1.0).contains(&x) {
@@ -586,14 +710,7 @@ pub(crate) fn call(
             ))
         }
         "bytetostr" => {
-            let b = a.num("BitData")?;
-            if b.fract() != 0.0 || !(0.0..=255.0).contains(&b) {
-                return err(
-                    ErrorCode::ArgValErr,
-                    format!("ByteToStr: {} is not a byte (0 to 255)", format_g(b, 6)),
-                );
-            }
-            let b = b as u8;
+            let b = byte_arg(&a, "BitData")?;
             Ok(Value::Str(if a.sw("Hex") {
                 format!("{b:02X}")
             } else if a.sw("Okt") {
@@ -859,8 +976,8 @@ pub(crate) fn call(
             }
         }
         "strdigcmp" => {
-            let n1 = dig_value(a.str("StrData1")?)?;
-            let n2 = dig_value(a.str("StrData2")?)?;
+            let n1 = dig_value(name, a.str("StrDig1")?)?;
+            let n2 = dig_value(name, a.str("StrDig2")?)?;
             let rel = a.num("Relation")?;
             let rel = if rel.fract() == 0.0 { rel as i64 } else { 0 };
             Ok(Value::Bool(match rel {
@@ -906,20 +1023,35 @@ fn dec_u64(s: &str) -> Option<u64> {
     s.parse().ok()
 }
 
-fn dig_value(s: &str) -> Result<u64, EvalError> {
+/// A `stringdig` argument: decimal digits only, at most 4294967295.
+fn dig_value(func: &str, s: &str) -> Result<u64, EvalError> {
     if s.is_empty() || !s.chars().all(|c| c.is_ascii_digit()) {
         return err(
             ErrorCode::NotIntVal,
-            "StrDigCmp: the strings must hold only decimal digits",
+            format!("{func}: the strings must hold only decimal digits"),
         );
     }
-    match s.parse::<u64>() {
-        Ok(v) if v <= 4_294_967_295 => Ok(v),
+    let significant = s.trim_start_matches('0');
+    match significant.parse::<u64>() {
+        Ok(v) if significant.len() <= 10 && v <= 4_294_967_295 => Ok(v),
+        _ if significant.is_empty() => Ok(0),
         _ => err(
             ErrorCode::MaxIntVal,
-            "StrDigCmp: the value is larger than 4294967295",
+            format!("{func}: the value is larger than 4294967295"),
         ),
     }
+}
+
+/// A `byte` argument: a whole number from 0 to 255.
+fn byte_arg(a: &Args<'_>, name: &str) -> Result<u8, EvalError> {
+    let b = a.num(name)?;
+    if b.fract() != 0.0 || !(0.0..=255.0).contains(&b) {
+        return err(
+            ErrorCode::ArgValErr,
+            format!("{}: {} is not a byte (0 to 255)", a.func, format_g(b, 6)),
+        );
+    }
+    Ok(b as u8)
 }
 
 /// Parses 1..=`max_len` digits of `radix`.
