@@ -96,6 +96,9 @@ pub struct Param {
     pub array: u8,
     /// Mutually exclusive alternatives (`|`) share a group id.
     pub alt_group: Option<u32>,
+    /// Not in the RobotWare-OS 4.0 manual: added by a later RobotWare version (only
+    /// marked on entries whose `source` is the manual).
+    pub later: bool,
 }
 
 /// A group of mutually exclusive parameters.

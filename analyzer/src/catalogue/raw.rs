@@ -53,6 +53,8 @@ struct RawParam {
     #[serde(default)]
     array: u8,
     alt: Option<u32>,
+    #[serde(default)]
+    later: bool,
 }
 
 impl RawRoutine {
@@ -99,6 +101,7 @@ impl RawRoutine {
                 switch: p.switch,
                 array: p.array,
                 alt_group: p.alt,
+                later: p.later,
             })
             .collect();
         Ok(Routine {

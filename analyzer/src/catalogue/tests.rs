@@ -163,6 +163,7 @@ fn check_reports_broken_entries() {
         switch: false,
         array: 0,
         alt_group: Some(9),
+        later: false,
     });
     bad.alt_groups.push(AltGroup {
         id: 9,
