@@ -285,5 +285,27 @@ fn option_routines_are_not_catalogued() {
     }
 }
 
-// FIXME(issue 3): once `rapid_evaluator::FUNCTIONS` exists, check that every pure function
-// of the catalogue has an evaluator implementation.
+#[test]
+fn pure_functions_have_an_evaluator_implementation() {
+    let implemented: std::collections::HashSet<String> = rapid_evaluator::FUNCTIONS
+        .iter()
+        .map(|f| f.to_lowercase())
+        .collect();
+    let missing: Vec<&str> = catalogue()
+        .functions
+        .iter()
+        .filter(|f| f.pure && !implemented.contains(&f.name.to_lowercase()))
+        .map(|f| f.name.as_str())
+        .collect();
+    assert_eq!(
+        missing,
+        Vec::<&str>::new(),
+        "pure functions the evaluator lacks"
+    );
+    for name in rapid_evaluator::FUNCTIONS {
+        assert!(
+            catalogue().function(name).is_some(),
+            "evaluator function {name} is not catalogued"
+        );
+    }
+}
