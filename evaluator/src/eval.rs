@@ -212,63 +212,70 @@ impl Ctx {
             }
             Expr::Binary(op, l, r) => self.binary(*op, l, r, expected, env),
             Expr::Call { name, args } => crate::functions::call(self, name, args, env),
-            Expr::Component(base, field) => {
-                let v = self.eval(base, None, env)?;
-                match v {
-                    Value::Record { ty, mut fields } => {
-                        match fields
-                            .iter()
-                            .position(|(n, _)| n.eq_ignore_ascii_case(field))
-                        {
-                            Some(i) => Ok(fields.swap_remove(i).1),
-                            None => err(
-                                ErrorCode::TypeMismatch,
-                                format!("{ty} has no component `{field}`"),
-                            ),
-                        }
-                    }
-                    other => err(
-                        ErrorCode::TypeMismatch,
-                        format!("{} has no components", describe(&other)),
-                    ),
-                }
-            }
-            Expr::Index(base, indices) => {
-                let mut v = self.eval(base, None, env)?;
-                if indices.is_empty() {
-                    return err(ErrorCode::BadArguments, "an index is missing");
-                }
-                for ix in indices {
-                    let i = self.eval(ix, Some(&Type::named("num")), env)?;
-                    let i = i.as_f64().unwrap_or(f64::NAN);
-                    if i.fract() != 0.0 {
-                        return err(ErrorCode::NotIntVal, "an array index must be an integer");
-                    }
-                    v = match v {
-                        Value::Array(mut items) => {
-                            let n = items.len();
-                            if i < 1.0 || i > n as f64 {
-                                return err(
-                                    ErrorCode::OutOfBnd,
-                                    format!("index {i} is outside the array bounds 1..{n}"),
-                                );
-                            }
-                            items.swap_remove(i as usize - 1)
-                        }
-                        other => {
-                            return err(
-                                ErrorCode::TypeMismatch,
-                                format!("{} is not an array", describe(&other)),
-                            );
-                        }
-                    };
-                }
-                Ok(v)
-            }
+            Expr::Component(base, field) => self.component(base, field, env),
+            Expr::Index(base, indices) => self.index(base, indices, env),
             Expr::Unknown => err(ErrorCode::Unsupported, "the expression cannot be evaluated"),
         }
     }
 
+    #[inline(never)]
+    fn component(&mut self, base: &Expr, field: &str, env: &dyn Env) -> Result<Value, EvalError> {
+        let v = self.eval(base, None, env)?;
+        match v {
+            Value::Record { ty, mut fields } => {
+                match fields
+                    .iter()
+                    .position(|(n, _)| n.eq_ignore_ascii_case(field))
+                {
+                    Some(i) => Ok(fields.swap_remove(i).1),
+                    None => err(
+                        ErrorCode::TypeMismatch,
+                        format!("{ty} has no component `{field}`"),
+                    ),
+                }
+            }
+            other => err(
+                ErrorCode::TypeMismatch,
+                format!("{} has no components", describe(&other)),
+            ),
+        }
+    }
+
+    #[inline(never)]
+    fn index(&mut self, base: &Expr, indices: &[Expr], env: &dyn Env) -> Result<Value, EvalError> {
+        let mut v = self.eval(base, None, env)?;
+        if indices.is_empty() {
+            return err(ErrorCode::BadArguments, "an index is missing");
+        }
+        for ix in indices {
+            let i = self.eval(ix, Some(&Type::named("num")), env)?;
+            let i = i.as_f64().unwrap_or(f64::NAN);
+            if i.fract() != 0.0 {
+                return err(ErrorCode::NotIntVal, "an array index must be an integer");
+            }
+            v = match v {
+                Value::Array(mut items) => {
+                    let n = items.len();
+                    if i < 1.0 || i > n as f64 {
+                        return err(
+                            ErrorCode::OutOfBnd,
+                            format!("index {i} is outside the array bounds 1..{n}"),
+                        );
+                    }
+                    items.swap_remove(i as usize - 1)
+                }
+                other => {
+                    return err(
+                        ErrorCode::TypeMismatch,
+                        format!("{} is not an array", describe(&other)),
+                    );
+                }
+            };
+        }
+        Ok(v)
+    }
+
+    #[inline(never)]
     fn name(&mut self, name: &str, env: &dyn Env) -> Result<Value, EvalError> {
         match env.lookup(name) {
             Lookup::Constant { expr, ty, scope } => {
@@ -312,6 +319,7 @@ impl Ctx {
         }
     }
 
+    #[inline(never)]
     fn with_definition(
         &mut self,
         name: &str,
@@ -337,6 +345,7 @@ impl Ctx {
         Ok(v)
     }
 
+    #[inline(never)]
     fn aggregate(
         &mut self,
         items: &[Expr],
@@ -399,6 +408,7 @@ impl Ctx {
 
     /// Makes `v` a value of type `ty`: types untyped aggregates, widens num
     /// to dnum, and checks the rest.
+    #[inline(never)]
     pub(crate) fn coerce(
         &mut self,
         v: Value,
@@ -467,6 +477,7 @@ impl Ctx {
         }
     }
 
+    #[inline(never)]
     fn binary(
         &mut self,
         op: BinOp,

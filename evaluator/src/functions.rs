@@ -457,6 +457,7 @@ fn bind<'a>(
     })
 }
 
+#[inline(never)]
 pub(crate) fn call(
     ctx: &mut Ctx,
     name: &str,
