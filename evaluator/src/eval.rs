@@ -177,6 +177,8 @@ impl Ctx {
         self.depth -= 1;
         let v = r?;
         match expected {
+            // An aggregate is built for the expected type already.
+            Some(_) if matches!(expr, Expr::Aggregate(_)) => Ok(v),
             Some(t) => self.coerce(v, t, env),
             None => Ok(v),
         }
@@ -191,8 +193,9 @@ impl Ctx {
         match expr {
             Expr::Num(text) => {
                 let x = parse_num_literal(text)?;
-                let want_dnum = matches!(expected.map(|t| self.kind(t, env)), Some(Kind::Dnum));
-                let want_num = matches!(expected.map(|t| self.kind(t, env)), Some(Kind::Num));
+                let kind = expected.map(|t| self.kind(t, env));
+                let want_dnum = matches!(kind, Some(Kind::Dnum));
+                let want_num = matches!(kind, Some(Kind::Num));
                 if want_dnum {
                     dnum_result(x)
                 } else if !want_num && x > f64::from(f32::MAX) {

@@ -101,6 +101,18 @@ impl Value {
         }
     }
 
+    /// For an `orient`, or a record with a `rot` component (`pose`,
+    /// `robtarget`), the Euler ZYX angles `[z, y, x]` in degrees, as
+    /// [`crate::euler_zyx_deg`] computes them; for hovers.
+    pub fn euler_zyx(&self) -> Option<[f64; 3]> {
+        let q = self.field("rot").unwrap_or(self);
+        let mut c = [0.0; 4];
+        for (slot, name) in c.iter_mut().zip(["q1", "q2", "q3", "q4"]) {
+            *slot = q.field(name)?.as_f64()?;
+        }
+        Some(crate::geometry::euler_zyx_deg(c))
+    }
+
     /// The text of a string value (without quotes).
     pub fn as_str(&self) -> Option<&str> {
         match self {

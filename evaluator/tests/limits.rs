@@ -263,6 +263,13 @@ fn euler_helper_and_literal_parsers() {
         "{e:?}"
     );
     assert_eq!(rapid_evaluator::euler_zyx_deg([0.0; 4]), [0.0; 3]);
+    let pose = Value::pose([1.0, 2.0, 3.0], [0.5, 0.5, 0.5, 0.5]);
+    let e = pose.euler_zyx().expect("a pose has a rotation");
+    assert!(
+        e.iter().zip(want).all(|(a, b)| (a - b).abs() < 1e-6),
+        "{e:?}"
+    );
+    assert_eq!(Value::Num(1.0).euler_zyx(), None);
     // unnormalised input is normalised first
     let e = rapid_evaluator::euler_zyx_deg([2.0, 0.0, 0.0, 2.0]);
     assert!(
