@@ -199,8 +199,9 @@ pub const STR_UPPER: &str = "ABCDEFGHIJKLMNOPQRSTUVWXYZ\u{c0}\u{c1}\u{c2}\u{c3}\
 /// `STR_LOWER`: lower-case letters of ISO 8859-1, in the same order as
 /// [`STR_UPPER`], followed by `ß` and `ÿ`, which have no upper-case form.
 pub const STR_LOWER: &str = "abcdefghijklmnopqrstuvwxyz\u{e0}\u{e1}\u{e2}\u{e3}\u{e4}\u{e5}\u{e6}\u{e7}\u{e8}\u{e9}\u{ea}\u{eb}\u{ec}\u{ed}\u{ee}\u{ef}\u{f0}\u{f1}\u{f2}\u{f3}\u{f4}\u{f5}\u{f6}\u{f8}\u{f9}\u{fa}\u{fb}\u{fc}\u{fd}\u{fe}\u{df}\u{ff}";
-/// `STR_WHITE`: the blank character.
-pub const STR_WHITE: &str = " ";
+/// `STR_WHITE`: the blank characters: space, tab, line feed, vertical tab,
+/// form feed and carriage return.
+pub const STR_WHITE: &str = " \t\n\u{b}\u{c}\r";
 
 /// Values of data predefined by the system that the evaluator knows itself:
 /// `pi`, `EOF_BIN`, `EOF_NUM`, the `STR_*` character sets, the `opnum`

@@ -20,6 +20,33 @@
 //! - Angles are degrees; orientations are quaternions `[q1, q2, q3, q4]`
 //!   (scalar first), checked (`ERR_ILLQUAT`) and normalised before use.
 //!
+//! Where the manual leaves a choice open, the evaluator decides as follows:
+//! - `pos * pos` is the cross product and `orient * orient` composes the
+//!   rotations (quaternion product); `pose * pose` and `pos / num` are not
+//!   operators (use `PoseMult`).
+//! - `DIV` truncates towards zero and `MOD` takes the sign of the dividend;
+//!   both need integer operands (`ERR_NOTINTVAL`) within the exact integer
+//!   range (`ERR_MAXINTVAL`: 8388608 for num, 2^52 for dnum).
+//! - A numeric literal is a `num` unless the context asks for `dnum` (an
+//!   expected type of dnum reaches the literals of `+ - * / DIV MOD`) or it is
+//!   beyond the range of num.
+//! - Where the manual only says "a run-time error", the code is
+//!   `ERR_ARGVALERR` for arguments outside a function's domain (`Sqrt(-1)`,
+//!   `ACos(2)`, `Pow(-8, 0.5)`, a bad `StrToByte` string, a bad number of
+//!   decimals), `ERR_OUTOFBND` for string positions outside the string, and
+//!   `ERR_NUM_LIMIT` for results beyond the range of num.
+//! - `Round`, `Trunc` and `NumToStr` act on the shortest decimal that reads
+//!   back as the given num (0.7, not 0.699999988), rounding half away from
+//!   zero.
+//! - Orientations computed from angles or frames (`OrientZYX`, `MirPos`,
+//!   `DefFrame`, `DefDFrame`, `DefAccFrame`) have q1 >= 0, as the manual's
+//!   matrix-to-quaternion formula gives; products (`PoseMult`, `PoseInv`,
+//!   `RelTool` with a rotation, `orient * orient`) keep the sign of the
+//!   quaternion product. `NOrient` leaves an already normalised orientation
+//!   (error at most 0.00001) unchanged.
+//! - Strings print quoted (`ValToStr("ab")` is `"ab"` with the quotes);
+//!   `ByteToStr(7\Char)` is the three characters `\07`.
+//!
 //! Evaluation never panics and always terminates: nesting depth and the
 //! amount of work are bounded ([`Options`]), and cyclic constants are
 //! reported ([`ErrorCode::Cycle`]).
