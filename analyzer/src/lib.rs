@@ -3,6 +3,7 @@
 //! ranges out; no IO, no protocol types, no async; never panics on any input.
 
 pub mod diagnostic;
+pub mod format;
 pub mod rules;
 pub mod syntax;
 pub mod text;
