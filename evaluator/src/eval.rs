@@ -6,7 +6,7 @@ use crate::env::{Env, Lookup, VarKind, predefined};
 use crate::error::{ErrorCode, EvalError, err};
 use crate::expr::{BinOp, Expr, Type, UnOp};
 use crate::literal::{MAX_STRING_LEN, parse_num_literal, parse_string_literal};
-use crate::types::{builtin_record_layout, is_builtin_num_alias};
+use crate::types::{builtin_record_layout, is_builtin_num_alias, is_builtin_string_alias};
 use crate::value::Value;
 use crate::{Evaluation, Options};
 
@@ -135,7 +135,7 @@ impl Ctx {
             if is_builtin_num_alias(&lower) {
                 return Kind::Num;
             }
-            if lower == "stringdig" {
+            if is_builtin_string_alias(&lower) {
                 return Kind::Str;
             }
             if let Some(layout) = builtin_record_layout(&lower) {

@@ -84,7 +84,8 @@ pub use expr::{Arg, BinOp, Expr, Type, UnOp};
 pub use functions::FUNCTIONS;
 pub use geometry::euler_zyx_deg;
 pub use literal::{MAX_STRING_LEN, parse_num_literal, parse_string_literal};
-pub use types::{builtin_record_layout, is_builtin_num_alias};
+pub use literal_value::parse_data_literal;
+pub use types::{builtin_record_layout, is_builtin_num_alias, is_builtin_string_alias};
 pub use value::{Value, format_dnum, format_num, quote_string};
 
 /// Limits and switches for an evaluation.

@@ -1,16 +1,38 @@
-//! Reading literal data from a string, for `StrToVal`: numbers (with an
-//! optional sign), strings, `TRUE`/`FALSE` and aggregates of those.
+//! Reading literal data from text: numbers (with an optional sign),
+//! strings, `TRUE`/`FALSE`, aggregates of those and, where allowed, names.
 
 use crate::expr::{Expr, UnOp};
 
 const MAX_NESTING: u32 = 32;
 
-/// Parses the whole of `text` as literal data; `None` if it is not.
+/// Parses the whole of `text` as literal data (no names), the format
+/// `StrToVal` accepts; `None` if it is not.
 pub(crate) fn parse(text: &str) -> Option<Expr> {
+    parse_with(text, false)
+}
+
+/// Reads a data value written as RAPID literal data, such as the value of
+/// predefined data in a catalogue: `[100,500,5000,1000]`, `"HOME:"`,
+/// `-1`, `[inpos,TRUE,[20,20,0,20],0,0,"",0,0]`. Numbers may carry a sign;
+/// names (other than `TRUE`/`FALSE`) become [`Expr::Name`]. `None` if the
+/// text is anything else (operators, calls, unbalanced brackets).
+///
+/// ```
+/// use rapid_evaluator::{EmptyEnv, Type, eval_as, parse_data_literal};
+/// let e = parse_data_literal("[100, 500, 5000, 1000]").unwrap();
+/// let v = eval_as(&e, Some(&Type::named("speeddata")), &EmptyEnv).unwrap();
+/// assert_eq!(v.to_string(), "[100,500,5000,1000]");
+/// ```
+pub fn parse_data_literal(text: &str) -> Option<Expr> {
+    parse_with(text, true)
+}
+
+fn parse_with(text: &str, names: bool) -> Option<Expr> {
     let mut p = Parser {
         s: text.as_bytes(),
         text,
         i: 0,
+        names,
     };
     let e = p.value(0)?;
     p.ws();
@@ -21,6 +43,7 @@ struct Parser<'a> {
     s: &'a [u8],
     text: &'a str,
     i: usize,
+    names: bool,
 }
 
 impl Parser<'_> {
@@ -97,6 +120,8 @@ impl Parser<'_> {
                     Some(Expr::Bool(true))
                 } else if word.eq_ignore_ascii_case("FALSE") {
                     Some(Expr::Bool(false))
+                } else if self.names {
+                    Some(Expr::Name(word.to_string()))
                 } else {
                     None
                 }

@@ -73,6 +73,22 @@ pub fn builtin_record_layout(name: &str) -> Option<&'static [(&'static str, &'st
             ("oframe", "pose"),
         ],
         "progdisp" => &[("pdisp", "pose"), ("eoffs", "extjoint")],
+        "inposdata" => &[
+            ("position", "num"),
+            ("speed", "num"),
+            ("mintime", "num"),
+            ("maxtime", "num"),
+        ],
+        "stoppointdata" => &[
+            ("type", "stoppoint"),
+            ("progsynch", "bool"),
+            ("inpos", "inposdata"),
+            ("stoptime", "num"),
+            ("followtime", "num"),
+            ("signal", "string"),
+            ("relation", "opnum"),
+            ("checkvalue", "num"),
+        ],
         _ => return None,
     })
 }
@@ -101,6 +117,22 @@ pub fn is_builtin_num_alias(name: &str) -> bool {
         "event_type",
         "handler_type",
         "iounit_state",
+        "testsignal",
+        "identno",
+        "btnres",
+        "buttondata",
+        "icondata",
+        "uishownum",
+        "socketstatus",
+        "inttypes",
+        "egmstate",
+        "egmframetype",
+        "egmstopmode",
     ];
     ALIASES.iter().any(|a| a.eq_ignore_ascii_case(name))
+}
+
+/// Built-in alias types of `string` (case-insensitive).
+pub fn is_builtin_string_alias(name: &str) -> bool {
+    name.eq_ignore_ascii_case("stringdig") || name.eq_ignore_ascii_case("errstr")
 }

@@ -357,3 +357,39 @@ fn hover_expressions_take_microseconds() {
     // build takes a few microseconds.
     assert!(per.as_micros() < 500, "{per:?} per evaluation");
 }
+
+#[test]
+fn catalogue_values_read_as_data_literals() {
+    use rapid_evaluator::parse_data_literal;
+    let mut env = MapEnv::new();
+    env.known("inpos", Value::Num(1.0));
+    let rows = [
+        ("[100,500,5000,1000]", "speeddata", "[100,500,5000,1000]"),
+        (
+            "[TRUE,[[0,0,0],[1,0,0,0]],[0.001,[0,0,0.001],[1,0,0,0],0,0,0]]",
+            "tooldata",
+            "[TRUE,[[0,0,0],[1,0,0,0]],[0.001,[0,0,0.001],[1,0,0,0],0,0,0]]",
+        ),
+        (
+            "[inpos,TRUE,[20,20,0,20],0,0,\"\",0,0]",
+            "stoppointdata",
+            "[1,TRUE,[20,20,0,20],0,0,\"\",0,0]",
+        ),
+        (
+            "\" \\09\\0A\\0B\\0C\\0D\"",
+            "string",
+            "\" \\09\\0A\\0B\\0C\\0D\"",
+        ),
+        ("-1", "num", "-1"),
+        ("9.998E36", "num", "9.998E+36"),
+        ("3.1415926", "num", "3.14159"),
+    ];
+    for (text, ty, want) in rows {
+        let e = parse_data_literal(text).unwrap_or_else(|| panic!("{text} reads"));
+        let v = eval_as(&e, Some(&Type::named(ty)), &env).unwrap_or_else(|e| panic!("{text}: {e}"));
+        assert_eq!(v.to_string(), want, "{text}");
+    }
+    for bad in ["", "[1,2", "1+2", "Abs(1)", "[1,,2]", "[]", "\"open"] {
+        assert_eq!(parse_data_literal(bad), None, "{bad}");
+    }
+}
