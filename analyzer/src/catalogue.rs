@@ -153,6 +153,8 @@ pub struct Component {
     pub name: String,
     #[serde(rename = "type")]
     pub ty: String,
+    /// Not in the RobotWare-OS 4.0 manual: added by a later RobotWare version.
+    pub later: bool,
 }
 
 /// A built-in data type.

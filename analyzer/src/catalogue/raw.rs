@@ -125,7 +125,8 @@ pub(super) struct RawDataType {
     name: String,
     kind: TypeKind,
     alias_of: Option<String>,
-    /// Each component written "name type".
+    /// Each component written "name type", or "name type later" for a component that
+    /// later RobotWare versions added.
     #[serde(default)]
     components: Vec<String>,
     value_class: Option<ValueClass>,
@@ -142,16 +143,17 @@ impl RawDataType {
         let mut components = Vec::with_capacity(self.components.len());
         for c in &self.components {
             let mut parts = c.split_whitespace();
-            match (parts.next(), parts.next(), parts.next()) {
-                (Some(name), Some(ty), None) => {
+            match (parts.next(), parts.next(), parts.next(), parts.next()) {
+                (Some(name), Some(ty), later @ (None | Some("later")), None) => {
                     components.push(Component {
                         name: name.to_string(),
                         ty: ty.to_string(),
+                        later: later.is_some(),
                     });
                 }
                 _ => {
                     return Err(format!(
-                        "type {}: component `{c}` is not `name type`",
+                        "type {}: component `{c}` is not `name type` or `name type later`",
                         self.name
                     ));
                 }

@@ -309,3 +309,85 @@ fn pure_functions_have_an_evaluator_implementation() {
         );
     }
 }
+
+/// Splits a RAPID aggregate `[a, [b, c], "d"]` into its top-level elements; `None` when
+/// `text` is not an aggregate.
+fn aggregate_elements(text: &str) -> Option<Vec<&str>> {
+    let inner = text.trim().strip_prefix('[')?.strip_suffix(']')?;
+    let (mut depth, mut in_string, mut start) = (0i32, false, 0usize);
+    let mut out = Vec::new();
+    for (i, c) in inner.char_indices() {
+        match c {
+            '"' => in_string = !in_string,
+            '[' if !in_string => depth += 1,
+            ']' if !in_string => depth -= 1,
+            ',' if !in_string && depth == 0 => {
+                out.push(inner[start..i].trim());
+                start = i + 1;
+            }
+            _ => {}
+        }
+    }
+    out.push(inner[start..].trim());
+    Some(out)
+}
+
+/// Whether `value` (RAPID literal text) fits data type `ty` of the catalogue.
+fn value_fits(cat: &Catalogue, ty: &str, value: &str) -> Result<(), String> {
+    let ty = cat.resolve_alias(ty);
+    let Some(t) = cat.datatype(ty) else {
+        return Err(format!("unknown type {ty}"));
+    };
+    match t.kind {
+        TypeKind::Record => {
+            let elems =
+                aggregate_elements(value).ok_or(format!("{value} is not an aggregate for {ty}"))?;
+            if elems.len() != t.components.len() {
+                return Err(format!(
+                    "{value}: {} elements for {ty} with {} components",
+                    elems.len(),
+                    t.components.len()
+                ));
+            }
+            for (e, c) in elems.iter().zip(&t.components) {
+                value_fits(cat, &c.ty, e).map_err(|m| format!("{ty}.{}: {m}", c.name))?;
+            }
+            Ok(())
+        }
+        _ => {
+            let ok = match ty {
+                "num" | "dnum" => {
+                    value.parse::<f64>().is_ok()
+                        || cat
+                            .datum(value)
+                            .is_some_and(|d| cat.resolve_alias(&d.ty) == "num")
+                }
+                "bool" => value == "TRUE" || value == "FALSE",
+                "string" => value.starts_with('"') && value.ends_with('"') && value.len() >= 2,
+                _ => false,
+            };
+            if ok {
+                Ok(())
+            } else {
+                Err(format!("`{value}` is not a {ty} literal"))
+            }
+        }
+    }
+}
+
+#[test]
+fn predefined_values_match_their_types() {
+    let cat = catalogue();
+    let mut problems = Vec::new();
+    for d in &cat.data {
+        if let Some(v) = &d.value
+            && let Err(m) = value_fits(cat, &d.ty, v)
+        {
+            problems.push(format!("{}: {m}", d.name));
+        }
+    }
+    assert_eq!(problems, Vec::<String>::new());
+    // The checker itself must reject a wrong value.
+    assert!(value_fits(cat, "speeddata", "[100,500,5000]").is_err());
+    assert!(value_fits(cat, "zonedata", "[FALSE,1,1,1,0.1,1,TRUE]").is_err());
+}
