@@ -2,6 +2,8 @@
 //! RAPID.
 
 mod check;
+mod config;
+mod fmt;
 mod source;
 
 use std::process::ExitCode;
@@ -21,6 +23,8 @@ struct Cli {
 enum Command {
     /// Check RAPID files and folders and report every problem found.
     Check(check::CheckArgs),
+    /// Rewrite RAPID files in the canonical layout.
+    Fmt(fmt::FmtArgs),
 }
 
 fn main() -> ExitCode {
@@ -37,5 +41,6 @@ fn main() -> ExitCode {
     };
     match cli.command {
         Command::Check(args) => check::run(args),
+        Command::Fmt(args) => fmt::run(args),
     }
 }
