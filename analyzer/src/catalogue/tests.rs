@@ -391,3 +391,28 @@ fn predefined_values_match_their_types() {
     assert!(value_fits(cat, "speeddata", "[100,500,5000]").is_err());
     assert!(value_fits(cat, "zonedata", "[FALSE,1,1,1,0.1,1,TRUE]").is_err());
 }
+
+#[test]
+fn every_entry_is_documented() {
+    let cat = catalogue();
+    let mut missing = Vec::new();
+    for r in cat.functions.iter().chain(&cat.instructions) {
+        if r.summary.trim().is_empty() || r.summary.contains('\n') || r.doc.trim().is_empty() {
+            missing.push(r.name.as_str());
+        }
+        if r.source == Source::Manual && r.section.is_none() {
+            missing.push(r.name.as_str());
+        }
+    }
+    for t in &cat.datatypes {
+        if t.summary.trim().is_empty() || t.summary.contains('\n') || t.doc.trim().is_empty() {
+            missing.push(t.name.as_str());
+        }
+    }
+    for d in &cat.data {
+        if d.summary.trim().is_empty() {
+            missing.push(d.name.as_str());
+        }
+    }
+    assert_eq!(missing, Vec::<&str>::new());
+}
