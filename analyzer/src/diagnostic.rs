@@ -33,9 +33,14 @@ impl Severity {
 
     /// Parses `error`, `warning`, `info` or `hint` (any case).
     pub fn parse(s: &str) -> Option<Severity> {
-        [Severity::Error, Severity::Warning, Severity::Info, Severity::Hint]
-            .into_iter()
-            .find(|sev| sev.as_str().eq_ignore_ascii_case(s))
+        [
+            Severity::Error,
+            Severity::Warning,
+            Severity::Info,
+            Severity::Hint,
+        ]
+        .into_iter()
+        .find(|sev| sev.as_str().eq_ignore_ascii_case(s))
     }
 }
 

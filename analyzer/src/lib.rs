@@ -2,9 +2,16 @@
 //! checking and diagnostics. A plain library: text in, plain results with byte
 //! ranges out; no IO, no protocol types, no async; never panics on any input.
 
+pub mod catalogue;
+pub mod check;
 pub mod diagnostic;
 pub mod format;
+pub mod items;
+pub mod names;
 pub mod rules;
 pub mod syntax;
+mod syntax_util;
+pub mod task;
 pub mod text;
-pub mod catalogue;
+pub mod ty;
+pub mod workspace;

@@ -124,7 +124,11 @@ fn expected_before(error: Node<'_>, language: &Language) -> Option<String> {
             let last = names.pop().unwrap_or_default();
             format!("{} or {last}", names.join(", "))
         }
-        n => format!("{} or one of {} other tokens", names[..MOST].join(", "), n - MOST),
+        n => format!(
+            "{} or one of {} other tokens",
+            names[..MOST].join(", "),
+            n - MOST
+        ),
     })
 }
 

@@ -10,7 +10,10 @@ use rapid_analyzer::text::{Decoded, Encoding, LineIndex, decode};
 pub struct SourceFile {
     pub path: PathBuf,
     pub text: String,
-    #[allow(dead_code, reason = "read by the formatter, which writes files back in their encoding")]
+    #[allow(
+        dead_code,
+        reason = "read by the formatter, which writes files back in their encoding"
+    )]
     pub encoding: Encoding,
     pub lines: LineIndex,
 }

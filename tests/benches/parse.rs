@@ -31,7 +31,11 @@ fn corpus() -> Option<&'static Corpus> {
                 })
                 .collect();
             let total = bytes.iter().map(Vec::len).sum();
-            Some(Corpus { bytes, texts, total })
+            Some(Corpus {
+                bytes,
+                texts,
+                total,
+            })
         })
         .as_ref()
 }
@@ -48,11 +52,13 @@ fn raw_tree_sitter(bencher: Bencher<'_, '_>) {
     if parser.set_language(&language).is_err() {
         return;
     }
-    bencher.counter(BytesCount::new(corpus.total)).bench_local(|| {
-        for text in &corpus.texts {
-            divan::black_box(parser.parse(text, None));
-        }
-    });
+    bencher
+        .counter(BytesCount::new(corpus.total))
+        .bench_local(|| {
+            for text in &corpus.texts {
+                divan::black_box(parser.parse(text, None));
+            }
+        });
 }
 
 /// Our wrapper: decode the bytes, parse, and collect syntax diagnostics.
@@ -62,13 +68,15 @@ fn rapid_syntax(bencher: Bencher<'_, '_>) {
         return;
     };
     let mut parser = rapid_analyzer::syntax::parser();
-    bencher.counter(BytesCount::new(corpus.total)).bench_local(|| {
-        for bytes in &corpus.bytes {
-            if let Decoded::Text { text, .. } = decode(bytes) {
-                if let Some(tree) = rapid_analyzer::syntax::parse(&mut parser, &text, None) {
-                    divan::black_box(rapid_analyzer::syntax::syntax_diagnostics(&tree, &text));
+    bencher
+        .counter(BytesCount::new(corpus.total))
+        .bench_local(|| {
+            for bytes in &corpus.bytes {
+                if let Decoded::Text { text, .. } = decode(bytes) {
+                    if let Some(tree) = rapid_analyzer::syntax::parse(&mut parser, &text, None) {
+                        divan::black_box(rapid_analyzer::syntax::syntax_diagnostics(&tree, &text));
+                    }
                 }
             }
-        }
-    });
+        });
 }

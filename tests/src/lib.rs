@@ -34,11 +34,13 @@ pub fn corpus_files() -> Option<Vec<(PathBuf, Vec<u8>)>> {
             } else if path
                 .file_name()
                 .is_some_and(|n| rapid_analyzer::text::is_rapid_file_name(&n.to_string_lossy()))
+                && let Ok(bytes) = std::fs::read(&path)
             {
-                if let Ok(bytes) = std::fs::read(&path) {
-                    let rel = path.strip_prefix(&dir).map(Path::to_path_buf).unwrap_or(path);
-                    out.push((rel, bytes));
-                }
+                let rel = path
+                    .strip_prefix(&dir)
+                    .map(Path::to_path_buf)
+                    .unwrap_or(path);
+                out.push((rel, bytes));
             }
         }
     }

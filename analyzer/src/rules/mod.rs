@@ -4,11 +4,102 @@
 
 use crate::diagnostic::Rule;
 
+pub mod aggregate_arity;
+pub mod ambiguous_global;
+pub mod argument_count;
+pub mod argument_mode;
+pub mod array_argument;
+pub mod assign_to_constant;
+pub mod call_kind_mismatch;
+pub mod condition_not_bool;
+pub mod conditional_argument;
+pub mod conflicting_alternatives;
+pub mod connect_target;
+pub mod declaration_after_statement;
+pub mod duplicate_argument;
+pub mod duplicate_declaration;
+pub mod equals_for_assignment;
+pub mod float_equality;
+pub mod goto_into_block;
+pub mod handler_only_statement;
+pub mod incomplete_code;
+pub mod index_count;
+pub mod invalid_operands;
+pub mod local_not_visible;
+pub mod missing_alternative;
+pub mod missing_initializer;
+pub mod missing_return;
 pub mod missing_token;
+pub mod name_too_long;
+pub mod non_numeric_index;
+pub mod not_a_routine;
+pub mod option_routine;
+pub mod return_value;
+pub mod shadowed_name;
+pub mod string_too_long;
+pub mod switch_argument;
 pub mod syntax_error;
+pub mod too_many_dimensions;
+pub mod type_mismatch;
+pub mod unconfigured_signal;
+pub mod unknown_argument;
+pub mod unknown_component;
+pub mod unknown_label;
+pub mod unreachable_code;
+pub mod unresolved_name;
+pub mod unused_data;
+pub mod unused_parameter;
+pub mod unused_routine;
 
 /// Every rule, in code order.
-pub static RULES: &[&Rule] = &[&syntax_error::RULE, &missing_token::RULE];
+pub static RULES: &[&Rule] = &[
+    &syntax_error::RULE,
+    &missing_token::RULE,
+    &equals_for_assignment::RULE,
+    &unknown_label::RULE,
+    &unknown_component::RULE,
+    &duplicate_declaration::RULE,
+    &ambiguous_global::RULE,
+    &local_not_visible::RULE,
+    &type_mismatch::RULE,
+    &non_numeric_index::RULE,
+    &aggregate_arity::RULE,
+    &invalid_operands::RULE,
+    &condition_not_bool::RULE,
+    &index_count::RULE,
+    &call_kind_mismatch::RULE,
+    &not_a_routine::RULE,
+    &argument_count::RULE,
+    &unknown_argument::RULE,
+    &switch_argument::RULE,
+    &conflicting_alternatives::RULE,
+    &missing_alternative::RULE,
+    &duplicate_argument::RULE,
+    &argument_mode::RULE,
+    &array_argument::RULE,
+    &conditional_argument::RULE,
+    &assign_to_constant::RULE,
+    &missing_initializer::RULE,
+    &return_value::RULE,
+    &missing_return::RULE,
+    &handler_only_statement::RULE,
+    &goto_into_block::RULE,
+    &connect_target::RULE,
+    &declaration_after_statement::RULE,
+    &too_many_dimensions::RULE,
+    &name_too_long::RULE,
+    &string_too_long::RULE,
+    &incomplete_code::RULE,
+    &option_routine::RULE,
+    &unconfigured_signal::RULE,
+    &unresolved_name::RULE,
+    &unused_data::RULE,
+    &unused_parameter::RULE,
+    &unused_routine::RULE,
+    &unreachable_code::RULE,
+    &shadowed_name::RULE,
+    &float_equality::RULE,
+];
 
 /// The rule with this code or name (any case).
 pub fn find(code_or_name: &str) -> Option<&'static Rule> {

@@ -9,6 +9,8 @@ use rapid_analyzer::text::is_rapid_file_name;
 pub struct Discovery {
     /// RAPID files, sorted, without duplicates.
     pub files: Vec<PathBuf>,
+    /// I/O configuration files (`EIO.cfg`), sorted.
+    pub configs: Vec<PathBuf>,
     /// Paths that could not be walked, with the reason.
     pub errors: Vec<(PathBuf, String)>,
 }
@@ -41,16 +43,23 @@ pub fn discover(paths: &[PathBuf]) -> Discovery {
             match entry {
                 Ok(entry) => {
                     let is_file = entry.file_type().is_some_and(|t| t.is_file());
-                    if is_file && is_rapid_file_name(&entry.file_name().to_string_lossy()) {
+                    let name = entry.file_name().to_string_lossy();
+                    if is_file && is_rapid_file_name(&name) {
                         out.files.push(entry.into_path());
+                    } else if is_file && name.eq_ignore_ascii_case("eio.cfg") {
+                        out.configs.push(entry.into_path());
                     }
                 }
-                Err(e) => out.errors.push((error_path(&e).unwrap_or(root).to_owned(), e.to_string())),
+                Err(e) => out
+                    .errors
+                    .push((error_path(&e).unwrap_or(root).to_owned(), e.to_string())),
             }
         }
     }
     out.files.sort();
     out.files.dedup();
+    out.configs.sort();
+    out.configs.dedup();
     out
 }
 

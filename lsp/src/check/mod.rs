@@ -7,7 +7,11 @@ use std::io::Write;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
+use std::collections::HashMap;
+
 use rapid_analyzer::diagnostic::{Diagnostic, Severity};
+use rapid_analyzer::task::Unit;
+use rapid_analyzer::workspace::{Workspace, diagnostics_of};
 use rayon::prelude::*;
 
 use crate::source::{SourceFile, Unreadable};
@@ -59,7 +63,7 @@ pub fn run(args: CheckArgs) -> ExitCode {
         let _ = writeln!(stderr, "rapid: {}: {why}", path.display());
         usage_error = true;
     }
-    let outcomes = check_files(&found.files);
+    let outcomes = check_files(&found.files, &found.configs);
     let mut checked = Vec::with_capacity(outcomes.len());
     for outcome in outcomes {
         match outcome {
@@ -79,11 +83,11 @@ pub fn run(args: CheckArgs) -> ExitCode {
         Format::Concise => output::concise(&mut out, &checked),
         Format::Json => output::json(&mut out, &checked),
     };
-    if let Err(e) = written.and_then(|()| out.flush()) {
-        if e.kind() != std::io::ErrorKind::BrokenPipe {
-            let _ = writeln!(stderr, "rapid: cannot write the report: {e}");
-            return ExitCode::from(2);
-        }
+    if let Err(e) = written.and_then(|()| out.flush())
+        && e.kind() != std::io::ErrorKind::BrokenPipe
+    {
+        let _ = writeln!(stderr, "rapid: cannot write the report: {e}");
+        return ExitCode::from(2);
     }
     let errors = checked
         .iter()
@@ -99,20 +103,52 @@ pub fn run(args: CheckArgs) -> ExitCode {
 }
 
 /// Reads and checks every file, in parallel, keeping the order of `files`.
-pub fn check_files(files: &[PathBuf]) -> Vec<Outcome> {
-    files
+/// Files are grouped into tasks as the analyzer does; `configs` are the I/O
+/// configuration files whose signals the tasks below them may use.
+pub fn check_files(files: &[PathBuf], configs: &[PathBuf]) -> Vec<Outcome> {
+    let read: Vec<Result<SourceFile, Unreadable>> =
+        files.par_iter().map(|p| SourceFile::read(p)).collect();
+    let units: Vec<Option<Unit>> = read
         .par_iter()
-        .map_init(rapid_analyzer::syntax::parser, |parser, path| {
-            match SourceFile::read(path) {
-                Ok(file) => {
-                    let diagnostics = match rapid_analyzer::syntax::parse(parser, &file.text, None) {
-                        Some(tree) => rapid_analyzer::syntax::syntax_diagnostics(&tree, &file.text),
-                        None => Vec::new(),
-                    };
-                    Outcome::Checked(Checked { file, diagnostics })
-                }
-                Err(why) => Outcome::Skipped(path.clone(), why),
+        .map(|r| {
+            r.as_ref()
+                .ok()
+                .map(|f| Unit::new(unit_path(&f.path), f.text.clone(), None))
+        })
+        .collect();
+    let mut workspace = Workspace::new();
+    for path in configs {
+        if let Ok(bytes) = std::fs::read(path) {
+            let text = String::from_utf8_lossy(&bytes);
+            workspace.set_config(&unit_path(path), &text);
+        }
+    }
+    for unit in units.into_iter().flatten() {
+        workspace.set_unit(unit);
+    }
+    let tasks = workspace.tasks();
+    let mut by_path: HashMap<String, Vec<Diagnostic>> = tasks
+        .par_iter()
+        .flat_map_iter(|task| {
+            task.units
+                .iter()
+                .map(|u| (u.path.clone(), diagnostics_of(task, u)))
+                .collect::<Vec<_>>()
+        })
+        .collect();
+    read.into_iter()
+        .zip(files)
+        .map(|(r, path)| match r {
+            Ok(file) => {
+                let diagnostics = by_path.remove(&unit_path(&file.path)).unwrap_or_default();
+                Outcome::Checked(Checked { file, diagnostics })
             }
+            Err(why) => Outcome::Skipped(path.clone(), why),
         })
         .collect()
+}
+
+/// The path of a file as the analyzer sees it (it groups tasks by it).
+fn unit_path(path: &std::path::Path) -> String {
+    path.to_string_lossy().into_owned()
 }

@@ -81,7 +81,12 @@ pub fn human(out: &mut impl Write, checked: &[Checked]) -> io::Result<()> {
     if hints > 0 {
         parts.push(plural(hints, "hint"));
     }
-    writeln!(out, "Checked {}: {}.", plural(files, "file"), parts.join(", "))
+    writeln!(
+        out,
+        "Checked {}: {}.",
+        plural(files, "file"),
+        parts.join(", ")
+    )
 }
 
 /// One diagnostic with the source lines it covers (at most a few), so a
@@ -99,7 +104,11 @@ fn render_one(renderer: &Renderer, c: &Checked, d: &Diagnostic) -> String {
     let end = file.lines.line_range(last, &file.text).end;
     let source = file.text.get(start..end).unwrap_or_default();
     let span_start = d.range.start.saturating_sub(start).min(source.len());
-    let span_end = d.range.end.saturating_sub(start).clamp(span_start, source.len());
+    let span_end = d
+        .range
+        .end
+        .saturating_sub(start)
+        .clamp(span_start, source.len());
     let level = match d.severity {
         Severity::Error => Level::ERROR,
         Severity::Warning => Level::WARNING,

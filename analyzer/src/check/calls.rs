@@ -1,0 +1,516 @@
+//! Calls of procedures and functions, checked against the routine's
+//! signature: argument count, names, switches, `|` alternatives, modes,
+//! arrays and types.
+
+use std::collections::HashMap;
+use std::ops::Range;
+
+use tree_sitter::Node;
+
+use super::{Cx, Place, RoutineSym, exprs};
+use crate::catalogue::Mode;
+use crate::items::RoutineKind;
+use crate::names::same;
+use crate::rules;
+use crate::syntax_util::{field, fields, has_token};
+use crate::ty::Ty;
+
+/// A parameter, whether of a built-in or a user routine.
+#[derive(Clone, Debug)]
+struct SigParam {
+    name: String,
+    ty: Ty,
+    mode: Mode,
+    optional: bool,
+    switch: bool,
+    alt_group: Option<u32>,
+}
+
+/// A routine's signature, whether built in or declared.
+#[derive(Clone, Debug)]
+struct Sig {
+    name: String,
+    params: Vec<SigParam>,
+    required_groups: Vec<u32>,
+    returns: Option<Ty>,
+    kind: RoutineKind,
+}
+
+fn signature(sym: RoutineSym<'_>) -> Sig {
+    match sym {
+        RoutineSym::Builtin(r, is_function) => Sig {
+            name: r.name.clone(),
+            params: r
+                .params
+                .iter()
+                .map(|p| SigParam {
+                    name: p.name.clone(),
+                    ty: if p.switch {
+                        Ty::named("switch")
+                    } else if p.ty.eq_ignore_ascii_case(crate::catalogue::ANYTYPE) {
+                        Ty::Any
+                    } else {
+                        Ty::named(&p.ty)
+                    }
+                    .array(p.array),
+                    mode: p.mode.unwrap_or(Mode::In),
+                    optional: p.optional,
+                    switch: p.switch,
+                    alt_group: p.alt_group,
+                })
+                .collect(),
+            required_groups: r
+                .alt_groups
+                .iter()
+                .filter(|g| g.required)
+                .map(|g| g.id)
+                .collect(),
+            returns: r.returns.as_deref().map(|t| {
+                if t.eq_ignore_ascii_case(crate::catalogue::ANYTYPE) {
+                    Ty::Unknown
+                } else {
+                    Ty::named(t)
+                }
+            }),
+            kind: if is_function {
+                RoutineKind::Func
+            } else {
+                RoutineKind::Proc
+            },
+        },
+        RoutineSym::User(d, _) => Sig {
+            name: d.name.clone(),
+            params: d
+                .params
+                .iter()
+                .map(|p| SigParam {
+                    name: p.name.clone(),
+                    ty: p
+                        .ty
+                        .as_ref()
+                        .map_or(Ty::Unknown, |t| Ty::named(&t.name))
+                        .array(p.dims),
+                    mode: p.mode,
+                    optional: p.optional,
+                    switch: p.switch,
+                    alt_group: p.alt_group,
+                })
+                .collect(),
+            required_groups: Vec::new(),
+            returns: d.returns.as_ref().map(|t| Ty::named(&t.name)),
+            kind: d.kind,
+        },
+    }
+}
+
+/// A procedure call statement.
+pub(super) fn procedure_call<'t>(cx: &mut Cx<'t>, node: Node<'t>) {
+    let Some(name_node) = field(node, "name") else {
+        return;
+    };
+    let args = field(node, "arguments");
+    if name_node.kind() == "late_binding" {
+        if let Some(e) = field(name_node, "expression") {
+            exprs::check_expected(cx, e, &Ty::string(), "a late-bound procedure name");
+        }
+        check_args_unknown(cx, args);
+        return;
+    }
+    let name = cx.node_text(name_node);
+    match cx.resolve_routine(name, false) {
+        Some(sym) => {
+            let sig = signature(sym);
+            match sig.kind {
+                RoutineKind::Func => cx.report(
+                    &rules::call_kind_mismatch::RULE,
+                    name_node.byte_range(),
+                    format!(
+                        "`{}` is a function: use its result, e.g. x := {}(...);",
+                        sig.name, sig.name
+                    ),
+                ),
+                RoutineKind::Trap => cx.report(
+                    &rules::call_kind_mismatch::RULE,
+                    name_node.byte_range(),
+                    format!(
+                        "`{}` is a TRAP: it is run by an interrupt (CONNECT), not called",
+                        sig.name
+                    ),
+                ),
+                RoutineKind::Proc => {}
+            }
+            check_args(cx, &sig, args, name_node.byte_range());
+        }
+        None => {
+            not_a_routine(cx, name, name_node.byte_range());
+            check_args_unknown(cx, args);
+        }
+    }
+}
+
+/// A function call in an expression; returns the result type.
+pub(super) fn function_call<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Ty {
+    let Some(name_node) = field(node, "name") else {
+        return Ty::Unknown;
+    };
+    let args = field(node, "arguments");
+    let name = cx.node_text(name_node);
+    match cx.resolve_routine(name, true) {
+        Some(sym) => {
+            let sig = signature(sym);
+            if sig.kind != RoutineKind::Func {
+                cx.report(
+                    &rules::call_kind_mismatch::RULE,
+                    name_node.byte_range(),
+                    format!(
+                        "`{}` is {}, not a function: it has no value",
+                        sig.name,
+                        if sig.kind == RoutineKind::Trap {
+                            "a TRAP"
+                        } else {
+                            "a procedure"
+                        }
+                    ),
+                );
+            }
+            check_args(cx, &sig, args, name_node.byte_range());
+            sig.returns.unwrap_or(Ty::Unknown)
+        }
+        None => {
+            not_a_routine(cx, name, name_node.byte_range());
+            check_args_unknown(cx, args);
+            Ty::Unknown
+        }
+    }
+}
+
+fn not_a_routine(cx: &mut Cx<'_>, name: &str, range: Range<usize>) {
+    if cx.resolve_data(name).is_some() {
+        cx.report(
+            &rules::not_a_routine::RULE,
+            range,
+            format!("`{name}` is data, not a routine"),
+        );
+    } else if cx.type_exists(name) {
+        cx.report(
+            &rules::not_a_routine::RULE,
+            range,
+            format!("`{name}` is a data type, not a routine"),
+        );
+    } else {
+        cx.unresolved(name, range, "routine");
+    }
+}
+
+/// Arguments of a call whose signature is unknown: check their expressions.
+fn check_args_unknown<'t>(cx: &mut Cx<'t>, args: Option<Node<'t>>) {
+    let Some(args) = args else {
+        return;
+    };
+    for arg in fields(args, "argument") {
+        if let Some(v) = field(arg, "value")
+            && v.kind() != "star"
+        {
+            exprs::place_or_value(cx, v);
+        }
+        if let Some(c) = field(arg, "conditional") {
+            conditional(cx, c);
+        }
+    }
+}
+
+fn conditional<'t>(cx: &mut Cx<'t>, c: Node<'t>) {
+    let name = cx.node_text(c);
+    if c.kind() != "identifier" || cx.optional_param(name).is_none() {
+        cx.report(
+            &rules::conditional_argument::RULE,
+            c.byte_range(),
+            format!(
+                "`?{name}` passes on an optional parameter of this routine, and `{name}` is not one"
+            ),
+        );
+    }
+    if c.kind() == "identifier" {
+        let _ = cx.resolve_data(name);
+    }
+}
+
+fn check_args<'t>(cx: &mut Cx<'t>, sig: &Sig, args: Option<Node<'t>>, call: Range<usize>) {
+    let required: Vec<usize> = sig
+        .params
+        .iter()
+        .enumerate()
+        .filter(|(_, p)| !p.optional && p.alt_group.is_none())
+        .map(|(i, _)| i)
+        .collect();
+    let mut next_required = 0;
+    let mut given: HashMap<usize, Range<usize>> = HashMap::new();
+    let mut given_groups: HashMap<u32, usize> = HashMap::new();
+    let args = args.map(|a| fields(a, "argument")).unwrap_or_default();
+    for arg in args {
+        let value = field(arg, "value");
+        let cond = field(arg, "conditional");
+        let optional_form = has_token(arg, "\\");
+        let index = match field(arg, "name") {
+            None => {
+                // Positional: the next required parameter.
+                let Some(&i) = required.get(next_required) else {
+                    cx.report(
+                        &rules::argument_count::RULE,
+                        arg.byte_range(),
+                        format!(
+                            "too many arguments: `{}` takes {} without the optional ones",
+                            sig.name,
+                            required.len()
+                        ),
+                    );
+                    if let Some(v) = value
+                        && v.kind() != "star"
+                    {
+                        exprs::place_or_value(cx, v);
+                    }
+                    continue;
+                };
+                next_required += 1;
+                i
+            }
+            Some(n) => {
+                let name = cx.node_text(n);
+                let Some(i) = sig.params.iter().position(|p| same(&p.name, name)) else {
+                    let known: Vec<String> = sig
+                        .params
+                        .iter()
+                        .filter(|p| p.optional || p.alt_group.is_some())
+                        .map(|p| format!("\\{}", p.name))
+                        .collect();
+                    let hint = if known.is_empty() {
+                        "it has no optional parameters".to_owned()
+                    } else {
+                        format!("its optional parameters are {}", known.join(" "))
+                    };
+                    cx.report(
+                        &rules::unknown_argument::RULE,
+                        n.byte_range(),
+                        format!("`{}` has no parameter `{name}`; {hint}", sig.name),
+                    );
+                    if let Some(v) = value
+                        && v.kind() != "star"
+                    {
+                        exprs::place_or_value(cx, v);
+                    }
+                    if let Some(c) = cond {
+                        conditional(cx, c);
+                    }
+                    continue;
+                };
+                if let Some(pos) = required.iter().position(|&r| r == i) {
+                    next_required = next_required.max(pos + 1);
+                }
+                i
+            }
+        };
+        let Some(p) = sig.params.get(index) else {
+            continue;
+        };
+        if let Some(prev) = given.insert(index, arg.byte_range()) {
+            let d = crate::diagnostic::Diagnostic::new(
+                &rules::duplicate_argument::RULE,
+                arg.byte_range(),
+                format!("`{}` is given twice", p.name),
+            )
+            .with_related(crate::diagnostic::Related {
+                file: None,
+                range: prev,
+                message: "first given here".into(),
+            });
+            cx.report_with(d);
+        }
+        if let Some(g) = p.alt_group {
+            match given_groups.get(&g) {
+                Some(&other) if other != index => {
+                    let members: Vec<String> = sig
+                        .params
+                        .iter()
+                        .filter(|q| q.alt_group == Some(g))
+                        .map(|q| format!("\\{}", q.name))
+                        .collect();
+                    let other_name = sig
+                        .params
+                        .get(other)
+                        .map(|q| q.name.as_str())
+                        .unwrap_or_default();
+                    cx.report(
+                        &rules::conflicting_alternatives::RULE,
+                        arg.byte_range(),
+                        format!(
+                            "\\{} and \\{other_name} exclude each other: give one of {}",
+                            p.name,
+                            members.join(" | ")
+                        ),
+                    );
+                }
+                _ => {
+                    given_groups.insert(g, index);
+                }
+            }
+        }
+        if let Some(c) = cond {
+            conditional(cx, c);
+            continue;
+        }
+        match value {
+            Some(v) if p.switch => {
+                cx.report(
+                    &rules::switch_argument::RULE,
+                    arg.byte_range(),
+                    format!("\\{} is a switch and takes no value", p.name),
+                );
+                exprs::place_or_value(cx, v);
+            }
+            Some(v) => check_value(cx, p, v),
+            None if p.switch => {}
+            None if optional_form => cx.report(
+                &rules::switch_argument::RULE,
+                arg.byte_range(),
+                format!("\\{} needs a value: \\{}:=...", p.name, p.name),
+            ),
+            None => {}
+        }
+    }
+    let missing: Vec<&SigParam> = required[next_required.min(required.len())..]
+        .iter()
+        .filter(|i| !given.contains_key(i))
+        .filter_map(|&i| sig.params.get(i))
+        .chain(
+            required[..next_required.min(required.len())]
+                .iter()
+                .filter(|i| !given.contains_key(i))
+                .filter_map(|&i| sig.params.get(i)),
+        )
+        .collect();
+    if !missing.is_empty() {
+        let list: Vec<String> = missing
+            .iter()
+            .map(|p| format!("{} ({})", p.name, p.ty))
+            .collect();
+        cx.report(
+            &rules::argument_count::RULE,
+            call.clone(),
+            format!(
+                "`{}` is missing {} argument{}: {}",
+                sig.name,
+                if missing.len() == 1 { "an" } else { "required" },
+                if missing.len() == 1 { "" } else { "s" },
+                list.join(", ")
+            ),
+        );
+    }
+    for g in &sig.required_groups {
+        if !given_groups.contains_key(g) {
+            let members: Vec<String> = sig
+                .params
+                .iter()
+                .filter(|q| q.alt_group == Some(*g))
+                .map(|q| format!("\\{}", q.name))
+                .collect();
+            cx.report(
+                &rules::missing_alternative::RULE,
+                call.clone(),
+                format!("`{}` needs one of {}", sig.name, members.join(" | ")),
+            );
+        }
+    }
+}
+
+fn check_value<'t>(cx: &mut Cx<'t>, p: &SigParam, v: Node<'t>) {
+    if v.kind() == "star" {
+        return;
+    }
+    let (actual, place) = match p.mode {
+        Mode::In => {
+            if v.kind() == "aggregate" {
+                exprs::check_expected(cx, v, &p.ty, &format!("the argument {}", p.name));
+                return;
+            }
+            (exprs::expr(cx, v, Some(&p.ty)), Place::Value)
+        }
+        _ => exprs::reference(cx, v, &p.ty),
+    };
+    let mode_ok = match p.mode {
+        Mode::In | Mode::Ref => true,
+        // Real programs pass persistents to VAR parameters of built-ins
+        // (e.g. a PERS btnres as \\Result), and controllers accept them.
+        Mode::Var => matches!(
+            place,
+            Place::Var | Place::Pers | Place::Unknown | Place::Param(_)
+        ),
+        Mode::Pers => matches!(
+            place,
+            Place::Pers | Place::Unknown | Place::Param(Mode::Pers | Mode::InOut)
+        ),
+        Mode::InOut => matches!(
+            place,
+            Place::Var | Place::Pers | Place::Unknown | Place::Param(_)
+        ),
+    };
+    if !mode_ok {
+        let wanted = match p.mode {
+            Mode::Var => "a variable",
+            Mode::Pers => "a persistent",
+            _ => "a variable or a persistent",
+        };
+        cx.report(
+            &rules::argument_mode::RULE,
+            v.byte_range(),
+            format!(
+                "{} is a {} parameter and needs {wanted}, found {}",
+                p.name,
+                p.mode.keyword(),
+                place.describe()
+            ),
+        );
+        return;
+    }
+    if actual.is_unknown() || matches!(p.ty, Ty::Unknown) {
+        return;
+    }
+    if let Ty::Any = p.ty.element() {
+        if p.ty.dims() > 0 && actual.dims() == 0 {
+            cx.report(
+                &rules::array_argument::RULE,
+                v.byte_range(),
+                format!(
+                    "{} needs an array, found {}",
+                    p.name,
+                    exprs::a_type(&actual)
+                ),
+            );
+        }
+        return;
+    }
+    if p.ty.dims() != actual.dims() {
+        cx.report(
+            &rules::array_argument::RULE,
+            v.byte_range(),
+            format!(
+                "{} needs {}, found {}",
+                p.name,
+                exprs::a_type(&p.ty),
+                exprs::a_type(&actual)
+            ),
+        );
+        return;
+    }
+    if !cx.types.assignable(&p.ty, &actual) {
+        cx.report(
+            &rules::type_mismatch::RULE,
+            v.byte_range(),
+            format!(
+                "the argument {} should be {}, found {}",
+                p.name,
+                exprs::a_type(&p.ty),
+                exprs::a_type(&actual)
+            ),
+        );
+    }
+}

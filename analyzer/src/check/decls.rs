@@ -1,0 +1,494 @@
+//! Declarations: modules, data, routines and their scopes; the checks that
+//! look at the whole file (placeholders, long strings, long names).
+
+use std::collections::HashMap;
+use std::ops::Range;
+
+use tree_sitter::Node;
+
+use super::{Cx, RoutineCx, Used, decl_ty, exprs, stmts};
+use crate::diagnostic::Diagnostic;
+use crate::items::{self, DataDecl, Module, RoutineDecl, RoutineKind, Storage};
+use crate::names::fold;
+use crate::rules;
+use crate::syntax_util::{field, fields};
+use crate::task::{Item, ItemRef, module_items};
+use crate::ty::Ty;
+
+const MAX_NAME: usize = 32;
+const MAX_STRING: usize = 80;
+const MAX_DIMS: usize = 3;
+
+/// Placeholders and string lengths, anywhere in the file.
+pub(super) fn check_file_wide(cx: &mut Cx<'_>, root: Node<'_>) {
+    let mut cursor = root.walk();
+    let mut descend = true;
+    loop {
+        let node = cursor.node();
+        if descend {
+            match node.kind() {
+                "placeholder" => {
+                    let p = cx.node_text(node);
+                    cx.report(
+                        &rules::incomplete_code::RULE,
+                        node.byte_range(),
+                        format!("unfilled placeholder {p}: this code is not finished"),
+                    );
+                }
+                "string" => {
+                    let len = string_length(cx, node);
+                    if len > MAX_STRING {
+                        cx.report(
+                            &rules::string_too_long::RULE,
+                            node.byte_range(),
+                            format!("this string has {len} characters; a RAPID string holds at most {MAX_STRING}"),
+                        );
+                    }
+                }
+                _ => {}
+            }
+        }
+        if descend && node.kind() != "string" && cursor.goto_first_child() {
+            continue;
+        }
+        descend = true;
+        loop {
+            if cursor.goto_next_sibling() {
+                break;
+            }
+            if !cursor.goto_parent() {
+                return;
+            }
+        }
+    }
+}
+
+/// The number of characters of a string literal's value (escapes count one).
+fn string_length(cx: &Cx<'_>, node: Node<'_>) -> usize {
+    let mut cursor = node.walk();
+    node.named_children(&mut cursor)
+        .map(|c| match c.kind() {
+            "escape_sequence" => 1,
+            _ => cx.node_text(c).chars().count(),
+        })
+        .sum()
+}
+
+fn check_name_length(cx: &mut Cx<'_>, name: &str, range: Range<usize>) {
+    if name.len() > MAX_NAME {
+        cx.report(
+            &rules::name_too_long::RULE,
+            range,
+            format!(
+                "`{name}` has {} characters; names have at most {MAX_NAME}",
+                name.len()
+            ),
+        );
+    }
+}
+
+pub(super) fn check_module<'t>(cx: &mut Cx<'t>, node: Node<'t>, module: &'t Module) {
+    check_name_length(cx, &module.name, module.name_range.clone());
+    check_duplicates_in_module(cx, module);
+    check_ambiguous_globals(cx, module);
+
+    let data_nodes: HashMap<usize, Node<'t>> = fields(node, "body")
+        .into_iter()
+        .map(|n| (n.start_byte(), n))
+        .collect();
+    for decl in &module.data {
+        if let Some(n) = data_nodes.get(&decl.range.start) {
+            check_data(cx, *n, decl, false);
+        }
+    }
+    for decl in &module.records {
+        check_name_length(cx, &decl.name, decl.name_range.clone());
+        for (name, ty, range) in &decl.components {
+            check_name_length(cx, name, range.clone());
+            if let Some(t) = ty {
+                check_type_name(cx, &t.name, t.range.clone());
+            }
+        }
+    }
+    for decl in &module.aliases {
+        check_name_length(cx, &decl.name, decl.name_range.clone());
+        if let Some(t) = &decl.of {
+            check_type_name(cx, &t.name, t.range.clone());
+        }
+    }
+    for decl in &module.routines {
+        if let Some(n) = data_nodes.get(&decl.range.start) {
+            check_routine(cx, *n, decl);
+        }
+    }
+    check_unused_locals_of_module(cx, module);
+}
+
+fn check_type_name(cx: &mut Cx<'_>, name: &str, range: Range<usize>) {
+    if !cx.type_exists(name) {
+        cx.unresolved(name, range, "data type");
+    }
+}
+
+/// One name space per module: data, routines, records and aliases.
+fn check_duplicates_in_module(cx: &mut Cx<'_>, module: &Module) {
+    let mut all: Vec<(&str, Range<usize>)> = module_items(module)
+        .filter_map(|(name, _, item)| {
+            let r = ItemRef {
+                unit: cx.unit_idx,
+                module: 0,
+                item,
+            };
+            let range = match r.item {
+                Item::Data(i) => module.data.get(i)?.name_range.clone(),
+                Item::Routine(i) => module.routines.get(i)?.name_range.clone(),
+                Item::Record(i) => module.records.get(i)?.name_range.clone(),
+                Item::Alias(i) => module.aliases.get(i)?.name_range.clone(),
+            };
+            Some((name, range))
+        })
+        .collect();
+    all.sort_by_key(|(_, r)| r.start);
+    report_duplicates(cx, all, "in this module");
+}
+
+fn report_duplicates(cx: &mut Cx<'_>, names: Vec<(&str, Range<usize>)>, scope: &str) {
+    let mut first: HashMap<String, Range<usize>> = HashMap::new();
+    for (name, range) in names {
+        match first.get(&fold(name)) {
+            Some(prev) => {
+                let d = Diagnostic::new(
+                    &rules::duplicate_declaration::RULE,
+                    range,
+                    format!("`{name}` is declared twice {scope}"),
+                )
+                .with_related(crate::diagnostic::Related {
+                    file: None,
+                    range: prev.clone(),
+                    message: "first declared here".into(),
+                });
+                cx.report_with(d);
+            }
+            None => {
+                first.insert(fold(name), range);
+            }
+        }
+    }
+}
+
+fn check_ambiguous_globals(cx: &mut Cx<'_>, module: &Module) {
+    let Some(mi) = cx.module.map(|(i, _)| i) else {
+        return;
+    };
+    for (name, local, item) in module_items(module) {
+        if local {
+            continue;
+        }
+        let me = ItemRef {
+            unit: cx.unit_idx,
+            module: mi,
+            item,
+        };
+        let Some(all) = cx.task.globals.get(&fold(name)) else {
+            continue;
+        };
+        let other = all
+            .iter()
+            .copied()
+            .find(|r| (r.unit, r.module) != (me.unit, me.module) && !same_persistent(cx, me, *r));
+        if let Some(other) = other {
+            let other_module = cx
+                .task
+                .module(other)
+                .map(|m| m.name.clone())
+                .unwrap_or_default();
+            let Some((_, range)) = cx.task.item_name(me) else {
+                continue;
+            };
+            let mut d = Diagnostic::new(
+                &rules::ambiguous_global::RULE,
+                range,
+                format!("the global name `{name}` is also declared in module {other_module}"),
+            );
+            if let Some(rel) = cx.related_item(other, format!("also declared in {other_module}")) {
+                d = d.with_related(rel);
+            }
+            if !cx.task.is_backup() {
+                // A plain folder may hold alternative programs that are never
+                // loaded together: the grouping is a guess, so only warn.
+                d.severity = crate::diagnostic::Severity::Warning;
+                d.message
+                    .push_str(" (these modules form one task because they share a folder)");
+            }
+            cx.report_with(d);
+        }
+    }
+}
+
+/// Two `PERS` declarations of one type denote the same persistent object.
+fn same_persistent(cx: &Cx<'_>, a: ItemRef, b: ItemRef) -> bool {
+    match (cx.task.data(a), cx.task.data(b)) {
+        (Some(x), Some(y)) => {
+            x.storage == Storage::Pers && y.storage == Storage::Pers && decl_ty(x) == decl_ty(y)
+        }
+        _ => false,
+    }
+}
+
+/// Checks a data declaration of a module or a routine.
+pub(super) fn check_data<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &DataDecl, in_routine: bool) {
+    check_name_length(cx, &decl.name, decl.name_range.clone());
+    if let Some(t) = &decl.ty {
+        check_type_name(cx, &t.name, t.range.clone());
+    }
+    if decl.dims.len() > MAX_DIMS {
+        cx.report(
+            &rules::too_many_dimensions::RULE,
+            decl.name_range.clone(),
+            format!(
+                "`{}` has {} dimensions; RAPID arrays have at most {MAX_DIMS}",
+                decl.name,
+                decl.dims.len()
+            ),
+        );
+    }
+    if let Some(dims) = field(node, "dimensions") {
+        for d in fields(dims, "dimension") {
+            let ty = exprs::expr(cx, d, Some(&Ty::num()));
+            if !cx.types.is_num_like(&ty) {
+                cx.report(
+                    &rules::type_mismatch::RULE,
+                    d.byte_range(),
+                    format!("an array size must be a num, found {ty}"),
+                );
+            }
+        }
+    }
+    match field(node, "value") {
+        Some(value) => {
+            let sizes = literal_sizes(cx, decl);
+            exprs::check_initial_value(cx, value, &decl_ty(decl), &sizes);
+        }
+        None if decl.storage == Storage::Const => {
+            cx.report(
+                &rules::missing_initializer::RULE,
+                decl.name_range.clone(),
+                format!(
+                    "the constant `{}` needs a value: CONST {} {} := ...;",
+                    decl.name,
+                    decl.ty.as_ref().map_or("<type>", |t| t.name.as_str()),
+                    decl.name
+                ),
+            );
+        }
+        None => {}
+    }
+    let _ = in_routine;
+}
+
+/// The sizes of an array declaration that are written as plain numbers.
+fn literal_sizes(cx: &Cx<'_>, decl: &DataDecl) -> Vec<Option<usize>> {
+    decl.dims
+        .iter()
+        .map(|r| {
+            cx.text
+                .get(r.clone())
+                .unwrap_or_default()
+                .trim()
+                .parse::<usize>()
+                .ok()
+        })
+        .collect()
+}
+
+fn check_routine<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &'t RoutineDecl) {
+    check_name_length(cx, &decl.name, decl.name_range.clone());
+    let mut params = HashMap::new();
+    let mut names: Vec<(&str, Range<usize>)> = Vec::new();
+    for p in &decl.params {
+        check_name_length(cx, &p.name, p.name_range.clone());
+        if let Some(t) = &p.ty
+            && !p.switch
+        {
+            check_type_name(cx, &t.name, t.range.clone());
+        }
+        if usize::from(p.dims) > MAX_DIMS {
+            cx.report(
+                &rules::too_many_dimensions::RULE,
+                p.name_range.clone(),
+                format!(
+                    "`{}` has {} dimensions; RAPID arrays have at most {MAX_DIMS}",
+                    p.name, p.dims
+                ),
+            );
+        }
+        names.push((&p.name, p.name_range.clone()));
+        params.entry(fold(&p.name)).or_insert(p);
+    }
+    if let Some(t) = &decl.returns {
+        check_type_name(cx, &t.name, t.range.clone());
+    }
+    cx.routine = Some(RoutineCx {
+        decl,
+        params,
+        locals: HashMap::new(),
+        for_vars: Vec::new(),
+        labels: HashMap::new(),
+        in_error_handler: false,
+    });
+
+    // Routine data, which must come before the first statement.
+    let body = fields(node, "body");
+    let mut seen_statement = false;
+    let mut statements = Vec::new();
+    let mut local_names: Vec<(String, Range<usize>)> = Vec::new();
+    for item in body {
+        if item.kind() == "data_declaration" {
+            if seen_statement {
+                cx.report(
+                    &rules::declaration_after_statement::RULE,
+                    item.byte_range(),
+                    "routine data must be declared before the routine's first statement",
+                );
+            }
+            if let Some(d) = items::lower_data(item, cx.text) {
+                check_shadowing(cx, &d.name, d.name_range.clone());
+                check_data(cx, item, &d, true);
+                local_names.push((d.name.clone(), d.name_range.clone()));
+                if let Some(r) = &mut cx.routine {
+                    r.locals.entry(fold(&d.name)).or_insert(d);
+                }
+            }
+        } else {
+            seen_statement = true;
+            statements.push(item);
+        }
+    }
+    for p in &decl.params {
+        check_shadowing(cx, &p.name, p.name_range.clone());
+    }
+    names.extend(local_names.iter().map(|(n, r)| (n.as_str(), r.clone())));
+    report_duplicates(cx, names, "in this routine");
+
+    stmts::collect_labels(cx, node);
+    stmts::check_block(cx, &statements);
+    for (handler, in_error) in [("backward", false), ("error", true), ("undo", false)] {
+        if let Some(h) = field(node, handler) {
+            if let Some(r) = &mut cx.routine {
+                r.in_error_handler = in_error;
+            }
+            for e in fields(h, "error") {
+                exprs::check_expected(cx, e, &Ty::named("errnum"), "an error number");
+            }
+            stmts::check_block(cx, &fields(h, "body"));
+        }
+    }
+    if decl.kind == RoutineKind::Func && !stmts::block_terminates(cx, &statements) {
+        cx.report(
+            &rules::missing_return::RULE,
+            decl.name_range.clone(),
+            format!(
+                "the function `{}` can reach its end without RETURN",
+                decl.name
+            ),
+        );
+    }
+    check_unused_in_routine(cx, decl);
+    cx.routine = None;
+}
+
+fn check_shadowing(cx: &mut Cx<'_>, name: &str, range: Range<usize>) {
+    let global = cx.task.globals.get(&fold(name)).and_then(|refs| {
+        refs.iter()
+            .copied()
+            .find(|r| cx.task.data(*r).is_some() || cx.task.routine(*r).is_some())
+    });
+    let what = if let Some(r) = global {
+        let module = cx
+            .task
+            .module(r)
+            .map(|m| m.name.clone())
+            .unwrap_or_default();
+        format!("the global `{name}` of module {module}")
+    } else if cx.cat.datum(name).is_some() {
+        format!("the built-in data `{name}`")
+    } else if cx.cat.routine(name).is_some() {
+        format!("the built-in routine `{name}`")
+    } else {
+        return;
+    };
+    cx.report(
+        &rules::shadowed_name::RULE,
+        range,
+        format!("this declaration hides {what} within the routine"),
+    );
+}
+
+fn check_unused_in_routine(cx: &mut Cx<'_>, decl: &RoutineDecl) {
+    let Some(r) = &cx.routine else {
+        return;
+    };
+    let mut found = Vec::new();
+    for (key, d) in &r.locals {
+        if !cx.used.contains(&Used::RoutineSym(key.clone())) {
+            found.push((
+                &rules::unused_data::RULE,
+                d.name_range.clone(),
+                format!("`{}` is declared but never used", d.name),
+            ));
+        }
+    }
+    for p in &decl.params {
+        if !cx.used.contains(&Used::RoutineSym(fold(&p.name))) {
+            found.push((
+                &rules::unused_parameter::RULE,
+                p.name_range.clone(),
+                format!("the parameter `{}` is never used", p.name),
+            ));
+        }
+    }
+    for (rule, range, message) in found {
+        cx.report(rule, range, message);
+    }
+    // Routine symbols are per routine: forget them for the next one.
+    cx.used.retain(|u| !matches!(u, Used::RoutineSym(_)));
+}
+
+fn check_unused_locals_of_module(cx: &mut Cx<'_>, module: &Module) {
+    let Some(mi) = cx.module.map(|(i, _)| i) else {
+        return;
+    };
+    let mut found = Vec::new();
+    for (name, local, item) in module_items(module) {
+        if !local {
+            continue;
+        }
+        let r = ItemRef {
+            unit: cx.unit_idx,
+            module: mi,
+            item,
+        };
+        if cx.used.contains(&Used::Item(r)) {
+            continue;
+        }
+        let Some((_, range)) = cx.task.item_name(r) else {
+            continue;
+        };
+        match item {
+            Item::Data(_) => found.push((
+                &rules::unused_data::RULE,
+                range,
+                format!("the LOCAL data `{name}` is never used in its module"),
+            )),
+            Item::Routine(_) => found.push((
+                &rules::unused_routine::RULE,
+                range,
+                format!("the LOCAL routine `{name}` is never called in its module"),
+            )),
+            _ => {}
+        }
+    }
+    for (rule, range, message) in found {
+        cx.report(rule, range, message);
+    }
+}

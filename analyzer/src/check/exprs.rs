@@ -1,0 +1,522 @@
+//! Expressions: their types, and the places (data references) that
+//! assignments and reference parameters need.
+
+use tree_sitter::Node;
+
+use super::{Cx, Place, calls};
+use crate::names::fold;
+use crate::rules;
+use crate::syntax_util::{field, fields};
+use crate::ty::Ty;
+
+/// Functions whose results are real numbers, for the float-equality lint.
+const REAL_FUNCTIONS: &[&str] = &[
+    "sqrt", "sin", "cos", "tan", "asin", "acos", "atan", "atan2", "exp", "pow", "distance",
+    "vectmagn", "dotprod",
+];
+
+/// The type of an expression, reporting what is wrong inside it. `expected`
+/// gives aggregates their type and lets unknown signal names be recognised.
+pub(super) fn expr<'t>(cx: &mut Cx<'t>, node: Node<'t>, expected: Option<&Ty>) -> Ty {
+    match node.kind() {
+        "number" => Ty::num(),
+        "string" => Ty::string(),
+        "boolean" => Ty::bool(),
+        "identifier" => identifier(cx, node, expected),
+        "parenthesized_expression" => match field(node, "expression") {
+            Some(e) => expr(cx, e, expected),
+            None => Ty::Unknown,
+        },
+        "unary_expression" => unary(cx, node),
+        "binary_expression" => binary(cx, node),
+        "function_call" => calls::function_call(cx, node),
+        "component_access" => component(cx, node).0,
+        "index_expression" => index(cx, node).0,
+        "aggregate" => {
+            let ty = expected.cloned().unwrap_or(Ty::Unknown);
+            aggregate(cx, node, &ty, &[]);
+            ty
+        }
+        _ => Ty::Unknown,
+    }
+}
+
+fn identifier<'t>(cx: &mut Cx<'t>, node: Node<'t>, expected: Option<&Ty>) -> Ty {
+    let name = cx.node_text(node);
+    match cx.resolve_data(name) {
+        Some(sym) => sym.ty(&cx.types),
+        None => {
+            if let Some(exp) = expected.filter(|e| cx.types.is_signal(e)) {
+                unknown_signal(cx, node, name);
+                return exp.clone();
+            }
+            cx.unresolved(name, node.byte_range(), "data");
+            Ty::Unknown
+        }
+    }
+}
+
+/// A name where a signal is expected that nothing declares: without an I/O
+/// configuration, say once that it cannot be checked.
+fn unknown_signal(cx: &mut Cx<'_>, node: Node<'_>, name: &str) {
+    if cx.task.signals.is_some() {
+        let message =
+            format!("no signal named `{name}` in the I/O configuration, and no data of that name");
+        cx.report(&rules::unresolved_name::RULE, node.byte_range(), message);
+    } else if cx.reported_signals.insert(fold(name)) {
+        cx.report(
+            &rules::unconfigured_signal::RULE,
+            node.byte_range(),
+            format!("`{name}` is taken to be an I/O signal; without the controller's EIO.cfg it cannot be checked"),
+        );
+    }
+}
+
+/// Checks an expression against the type its context expects.
+pub(super) fn check_expected<'t>(cx: &mut Cx<'t>, node: Node<'t>, expected: &Ty, what: &str) {
+    check_sized(cx, node, expected, &[], what);
+}
+
+/// Checks a declaration's initial value; `sizes` are the array's sizes that
+/// are written as numbers, for the aggregate arity check.
+pub(super) fn check_initial_value<'t>(
+    cx: &mut Cx<'t>,
+    node: Node<'t>,
+    expected: &Ty,
+    sizes: &[Option<usize>],
+) {
+    check_sized(cx, node, expected, sizes, "the initial value");
+}
+
+fn check_sized<'t>(
+    cx: &mut Cx<'t>,
+    node: Node<'t>,
+    expected: &Ty,
+    sizes: &[Option<usize>],
+    what: &str,
+) {
+    if node.kind() == "aggregate" {
+        aggregate(cx, node, expected, sizes);
+        return;
+    }
+    let actual = expr(cx, node, Some(expected));
+    if !cx.types.assignable(expected, &actual) {
+        cx.report(
+            &rules::type_mismatch::RULE,
+            node.byte_range(),
+            format!(
+                "{what} should be {}, found {}",
+                a_type(expected),
+                a_type(&actual)
+            ),
+        );
+    }
+}
+
+/// "a num", "an orient", "an array num{*}".
+pub(super) fn a_type(ty: &Ty) -> String {
+    match ty {
+        Ty::Array(..) => format!("an array {ty}"),
+        Ty::Named(n) if n.starts_with(['a', 'e', 'i', 'o', 'u', 'A', 'E', 'I', 'O', 'U']) => {
+            format!("an {n}")
+        }
+        _ => format!("a {ty}"),
+    }
+}
+
+/// An aggregate takes its type from the context: a record fixes its
+/// components, an array its elements.
+fn aggregate<'t>(cx: &mut Cx<'t>, node: Node<'t>, expected: &Ty, sizes: &[Option<usize>]) {
+    let elements = fields(node, "element");
+    match expected {
+        Ty::Array(elem, dims) => {
+            let inner = if *dims > 1 {
+                Ty::Array(elem.clone(), dims - 1)
+            } else {
+                (**elem).clone()
+            };
+            if let Some(Some(size)) = sizes.first()
+                && *size != elements.len()
+            {
+                cx.report(
+                    &rules::aggregate_arity::RULE,
+                    node.byte_range(),
+                    format!(
+                        "the array has {size} elements, this aggregate gives {}",
+                        elements.len()
+                    ),
+                );
+            }
+            let rest = sizes.get(1..).unwrap_or_default();
+            for e in elements {
+                check_sized(cx, e, &inner, rest, "an array element");
+            }
+        }
+        Ty::Named(name) if cx.types.exists(name) => {
+            let Some(components) = cx.types.components(expected) else {
+                cx.report(
+                    &rules::type_mismatch::RULE,
+                    node.byte_range(),
+                    format!(
+                        "an aggregate [...] cannot be {}; it is not a record or an array",
+                        a_type(expected)
+                    ),
+                );
+                for e in elements {
+                    expr(cx, e, None);
+                }
+                return;
+            };
+            if components.len() != elements.len() {
+                let names: Vec<&str> = components.iter().map(|(n, _)| n.as_str()).collect();
+                cx.report(
+                    &rules::aggregate_arity::RULE,
+                    node.byte_range(),
+                    format!(
+                        "{} has {} components ({}), this aggregate gives {}",
+                        expected,
+                        components.len(),
+                        names.join(", "),
+                        elements.len()
+                    ),
+                );
+            }
+            for (e, (name, ty)) in elements.into_iter().zip(
+                components
+                    .iter()
+                    .map(|(n, t)| (n.clone(), t.clone()))
+                    .chain(std::iter::repeat((String::new(), Ty::Unknown))),
+            ) {
+                let what = if name.is_empty() {
+                    "an element".to_owned()
+                } else {
+                    format!("component {name}")
+                };
+                check_sized(cx, e, &ty, &[], &what);
+            }
+        }
+        _ => {
+            for e in elements {
+                expr(cx, e, None);
+            }
+        }
+    }
+}
+
+fn unary<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Ty {
+    let Some(operand) = field(node, "operand") else {
+        return Ty::Unknown;
+    };
+    let op = field(node, "operator")
+        .map(|o| o.kind())
+        .unwrap_or_default();
+    let ty = expr(cx, operand, None);
+    if ty.is_unknown() {
+        return if op == "not" { Ty::bool() } else { Ty::Unknown };
+    }
+    let base = cx.types.base(&ty);
+    let ok = match op {
+        "not" => base.is("bool"),
+        _ => cx.types.is_num_like(&ty) || base.is("pos"),
+    };
+    if !ok {
+        cx.report(
+            &rules::invalid_operands::RULE,
+            node.byte_range(),
+            format!(
+                "`{}` cannot be applied to {}",
+                cx.node_text(field(node, "operator").unwrap_or(node))
+                    .to_ascii_uppercase(),
+                a_type(&ty)
+            ),
+        );
+        return Ty::Unknown;
+    }
+    cx.types.value_type(&ty)
+}
+
+fn binary<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Ty {
+    let (Some(l), Some(r), Some(op_node)) = (
+        field(node, "left"),
+        field(node, "right"),
+        field(node, "operator"),
+    ) else {
+        return Ty::Unknown;
+    };
+    let op = op_node.kind();
+    let is_comparison = matches!(op, "=" | "<>");
+    // A bare unknown name compared with a number is most likely a signal.
+    let lt = operand(cx, l, r, is_comparison);
+    let rt = operand(cx, r, l, is_comparison);
+    let t = &cx.types;
+    let (lb, rb) = (t.base(&lt), t.base(&rt));
+    let unknown = lt.is_unknown() || rt.is_unknown();
+    let num = |x: &Ty| t.is_num_like(x);
+    let dnum = lb.is("dnum") || rb.is("dnum");
+    let numeric = if dnum { Ty::named("dnum") } else { Ty::num() };
+    let result = match op {
+        "or" | "xor" | "and" => (t.is_bool(&lt) && t.is_bool(&rt)).then(Ty::bool),
+        "=" | "<>" => {
+            if lt.dims() > 0 || rt.dims() > 0 {
+                None
+            } else {
+                (unknown || t.assignable(&lt, &rt) || t.assignable(&rt, &lt)).then(Ty::bool)
+            }
+        }
+        "<" | ">" | "<=" | ">=" => (num(&lt) && num(&rt)).then(Ty::bool),
+        "+" if unknown => Some(known_side(&lt, &rt, t)),
+        "+" if num(&lt) && num(&rt) => Some(numeric),
+        "+" if lb.is("string") && rb.is("string") => Some(Ty::string()),
+        "+" | "-" if lb.is("pos") && rb.is("pos") => Some(Ty::named("pos")),
+        "-" if unknown => Some(known_side(&lt, &rt, t)),
+        "-" if num(&lt) && num(&rt) => Some(numeric),
+        "*" if unknown => Some(if lb.is("pos") || rb.is("pos") {
+            Ty::named("pos")
+        } else {
+            known_side(&lt, &rt, t)
+        }),
+        "*" if num(&lt) && num(&rt) => Some(numeric),
+        "*" if (lb.is("pos") && (num(&rt) || rb.is("pos"))) || (num(&lt) && rb.is("pos")) => {
+            Some(Ty::named("pos"))
+        }
+        "*" if lb.is("orient") && rb.is("orient") => Some(Ty::named("orient")),
+        "/" if unknown => Some(known_side(&lt, &rt, t)),
+        "/" if num(&lt) && num(&rt) => Some(numeric),
+        "/" if lb.is("pos") && num(&rt) => Some(Ty::named("pos")),
+        "div" | "mod" => (num(&lt) && num(&rt)).then_some(numeric),
+        _ => None,
+    };
+    match result {
+        Some(ty) => {
+            if is_comparison && num(&lt) && num(&rt) && (is_real(cx, l) || is_real(cx, r)) {
+                cx.report(
+                    &rules::float_equality::RULE,
+                    node.byte_range(),
+                    format!(
+                        "`{}` compares a computed real number exactly; compare the difference with a tolerance instead",
+                        cx.node_text(op_node)
+                    ),
+                );
+            }
+            ty
+        }
+        None => {
+            cx.report(
+                &rules::invalid_operands::RULE,
+                op_node.byte_range(),
+                format!(
+                    "`{}` cannot be applied to {} and {}",
+                    cx.node_text(op_node).to_ascii_uppercase(),
+                    a_type(&lt),
+                    a_type(&rt)
+                ),
+            );
+            if matches!(
+                op,
+                "=" | "<>" | "<" | ">" | "<=" | ">=" | "and" | "or" | "xor"
+            ) {
+                Ty::bool()
+            } else {
+                Ty::Unknown
+            }
+        }
+    }
+}
+
+fn known_side(a: &Ty, b: &Ty, t: &crate::ty::Types<'_>) -> Ty {
+    let pick = if a.is_unknown() { b } else { a };
+    t.value_type(pick)
+}
+
+/// The type of one operand; an unknown bare name compared with a number is
+/// taken for a signal.
+fn operand<'t>(cx: &mut Cx<'t>, node: Node<'t>, other: Node<'t>, comparison: bool) -> Ty {
+    if comparison
+        && node.kind() == "identifier"
+        && matches!(other.kind(), "number" | "identifier")
+        && cx.task.signals.is_none()
+    {
+        let name = cx.node_text(node);
+        if cx.resolve_data(name).is_none()
+            && cx.resolve_routine(name, true).is_none()
+            && cx.local_elsewhere(name).is_none()
+        {
+            let other_is_level = other.kind() == "number"
+                || cx
+                    .cat
+                    .datum(cx.node_text(other))
+                    .is_some_and(|d| d.ty.eq_ignore_ascii_case("dionum"));
+            if other_is_level {
+                unknown_signal(cx, node, name);
+                return Ty::named("signaldi");
+            }
+        }
+    }
+    expr(cx, node, None)
+}
+
+/// Is this expression a computed real number (for the float-equality lint)?
+fn is_real(cx: &Cx<'_>, node: Node<'_>) -> bool {
+    match node.kind() {
+        "number" => cx
+            .node_text(node)
+            .parse::<f64>()
+            .is_ok_and(|v| v.fract() != 0.0),
+        "binary_expression" => {
+            field(node, "operator").is_some_and(|o| o.kind() == "/")
+                || field(node, "left").is_some_and(|l| is_real(cx, l))
+                || field(node, "right").is_some_and(|r| is_real(cx, r))
+        }
+        "parenthesized_expression" | "unary_expression" => {
+            let inner = field(node, "expression").or_else(|| field(node, "operand"));
+            inner.is_some_and(|i| is_real(cx, i))
+        }
+        "function_call" => field(node, "name")
+            .is_some_and(|n| REAL_FUNCTIONS.contains(&fold(cx.node_text(n)).as_str())),
+        _ => false,
+    }
+}
+
+/// `a.b`: the component's type.
+fn component<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> (Ty, Place) {
+    let (Some(obj), Some(comp)) = (field(node, "object"), field(node, "component")) else {
+        return (Ty::Unknown, Place::Unknown);
+    };
+    let (obj_ty, place) = place_or_value(cx, obj);
+    (component_type(cx, &obj_ty, comp), place)
+}
+
+fn component_type(cx: &mut Cx<'_>, obj_ty: &Ty, comp: Node<'_>) -> Ty {
+    if !cx.types.is_known(obj_ty) {
+        return Ty::Unknown;
+    }
+    let name = cx.node_text(comp);
+    if obj_ty.dims() > 0 {
+        cx.report(
+            &rules::unknown_component::RULE,
+            comp.byte_range(),
+            format!("`.{name}` on an array {obj_ty}: index it first"),
+        );
+        return Ty::Unknown;
+    }
+    match cx.types.components(obj_ty) {
+        Some(components) => match components
+            .iter()
+            .find(|(n, _)| n.eq_ignore_ascii_case(name))
+        {
+            Some((_, t)) => t.clone(),
+            None => {
+                let list: Vec<&str> = components.iter().map(|(n, _)| n.as_str()).collect();
+                cx.report(
+                    &rules::unknown_component::RULE,
+                    comp.byte_range(),
+                    format!(
+                        "{obj_ty} has no component `{name}`; its components are {}",
+                        list.join(", ")
+                    ),
+                );
+                Ty::Unknown
+            }
+        },
+        None => {
+            cx.report(
+                &rules::unknown_component::RULE,
+                comp.byte_range(),
+                format!(
+                    "{} is not a record and has no component `{name}`",
+                    a_type(obj_ty)
+                ),
+            );
+            Ty::Unknown
+        }
+    }
+}
+
+/// `a{i, j}`: the element type.
+fn index<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> (Ty, Place) {
+    let Some(obj) = field(node, "object") else {
+        return (Ty::Unknown, Place::Unknown);
+    };
+    let (obj_ty, place) = place_or_value(cx, obj);
+    let indexes = fields(node, "index");
+    for i in &indexes {
+        let ty = expr(cx, *i, Some(&Ty::num()));
+        if !cx.types.is_num_like(&ty) {
+            cx.report(
+                &rules::non_numeric_index::RULE,
+                i.byte_range(),
+                format!("an index must be a num, found {}", a_type(&ty)),
+            );
+        }
+    }
+    if !cx.types.is_known(&obj_ty) {
+        return (Ty::Unknown, place);
+    }
+    let dims = usize::from(obj_ty.dims());
+    if dims == 0 {
+        cx.report(
+            &rules::index_count::RULE,
+            node.byte_range(),
+            format!("{} is not an array and cannot be indexed", a_type(&obj_ty)),
+        );
+        return (Ty::Unknown, place);
+    }
+    if dims != indexes.len() {
+        cx.report(
+            &rules::index_count::RULE,
+            node.byte_range(),
+            format!(
+                "{obj_ty} has {dims} dimension{}, indexed with {}",
+                if dims == 1 { "" } else { "s" },
+                indexes.len()
+            ),
+        );
+    }
+    (obj_ty.element().clone(), place)
+}
+
+/// The type and place of a data reference (a name, a component, an
+/// element); other expressions are values.
+pub(super) fn place_or_value<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> (Ty, Place) {
+    match node.kind() {
+        "identifier" => {
+            let name = cx.node_text(node);
+            match cx.resolve_data(name) {
+                Some(sym) => (sym.ty(&cx.types), Place::of(&sym)),
+                None => {
+                    cx.unresolved(name, node.byte_range(), "data");
+                    (Ty::Unknown, Place::Unknown)
+                }
+            }
+        }
+        "component_access" => component(cx, node),
+        "index_expression" => index(cx, node),
+        "placeholder" => (Ty::Unknown, Place::Unknown),
+        _ => (expr(cx, node, None), Place::Value),
+    }
+}
+
+/// A place that an argument passes by reference; an unknown name where a
+/// signal is expected is taken for the signal.
+pub(super) fn reference<'t>(cx: &mut Cx<'t>, node: Node<'t>, expected: &Ty) -> (Ty, Place) {
+    if node.kind() == "identifier" && cx.types.is_signal(expected) {
+        let name = cx.node_text(node);
+        if cx.resolve_data(name).is_none() {
+            unknown_signal(cx, node, name);
+            return (expected.clone(), Place::Unknown);
+        }
+    }
+    place_or_value(cx, node)
+}
+
+/// Checks a condition of IF, ELSEIF, WHILE or a compact IF.
+pub(super) fn condition<'t>(cx: &mut Cx<'t>, node: Node<'t>) {
+    let ty = expr(cx, node, Some(&Ty::bool()));
+    if !cx.types.is_bool(&ty) {
+        cx.report(
+            &rules::condition_not_bool::RULE,
+            node.byte_range(),
+            format!("a condition must be a bool, found {}", a_type(&ty)),
+        );
+    }
+}

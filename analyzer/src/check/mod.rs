@@ -1,0 +1,456 @@
+//! Checking a unit (one file) against its task: declarations, statements,
+//! expressions and calls. Each finding belongs to a rule of [`crate::rules`].
+//!
+//! The checker walks the tree once per routine. Names resolve through the
+//! routine's scope (parameters, routine data, `FOR` variables), the module,
+//! the task's globals and the built-in catalogue, in that order.
+
+mod calls;
+mod decls;
+mod exprs;
+mod stmts;
+
+use std::collections::{HashMap, HashSet};
+use std::ops::Range;
+
+use tree_sitter::Node;
+
+use crate::catalogue::{Catalogue, Datum, DatumKind, Mode, Routine, catalogue};
+use crate::diagnostic::{Diagnostic, Related, Rule};
+use crate::items::{DataDecl, Module, ParamDecl, RoutineDecl, Storage};
+use crate::names::fold;
+use crate::task::{Item, ItemRef, Task, Unit};
+use crate::ty::{Ty, Types};
+
+/// Checks one unit of a task and returns its diagnostics (without the
+/// syntax diagnostics, which the unit holds), sorted by position.
+pub fn check_unit(task: &Task, unit: usize) -> Vec<Diagnostic> {
+    let Some(u) = task.units.get(unit) else {
+        return Vec::new();
+    };
+    let mut cx = Cx {
+        task,
+        unit: u,
+        unit_idx: unit,
+        text: &u.text,
+        types: task.types(),
+        cat: catalogue(),
+        module: None,
+        routine: None,
+        diags: Vec::new(),
+        used: HashSet::new(),
+        reported_signals: HashSet::new(),
+    };
+    cx.check();
+    cx.diags.sort_by_key(|d| (d.range.start, d.range.end));
+    cx.diags
+}
+
+/// What a data name denotes.
+#[derive(Clone, Debug)]
+pub(crate) enum DataSym<'t> {
+    Param(&'t ParamDecl),
+    Local(DataDecl),
+    Module(
+        &'t DataDecl,
+        #[allow(dead_code, reason = "where the data is declared, for navigation")] ItemRef,
+    ),
+    ForVar,
+    Builtin(&'static Datum),
+    Signal(&'static str),
+}
+
+impl DataSym<'_> {
+    pub(crate) fn ty(&self, types: &Types<'_>) -> Ty {
+        let _ = types;
+        match self {
+            DataSym::Param(p) => {
+                p.ty.as_ref()
+                    .map_or(Ty::Unknown, |t| Ty::named(&t.name))
+                    .array(p.dims)
+            }
+            DataSym::Local(d) => decl_ty(d),
+            DataSym::Module(d, _) => decl_ty(d),
+            DataSym::ForVar => Ty::num(),
+            DataSym::Builtin(d) => Ty::named(&d.ty),
+            DataSym::Signal(ty) => Ty::named(ty),
+        }
+    }
+}
+
+pub(crate) fn decl_ty(d: &DataDecl) -> Ty {
+    let dims = u8::try_from(d.dims.len()).unwrap_or(u8::MAX);
+    d.ty.as_ref()
+        .map_or(Ty::Unknown, |t| Ty::named(&t.name))
+        .array(dims)
+}
+
+/// What a routine name denotes.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum RoutineSym<'t> {
+    User(
+        &'t RoutineDecl,
+        #[allow(dead_code, reason = "where the routine is declared, for navigation")] ItemRef,
+    ),
+    Builtin(&'static Routine, bool),
+}
+
+/// The scope of the routine being checked.
+pub(crate) struct RoutineCx<'t> {
+    pub decl: &'t RoutineDecl,
+    pub params: HashMap<String, &'t ParamDecl>,
+    pub locals: HashMap<String, DataDecl>,
+    pub for_vars: Vec<String>,
+    /// Labels by folded name: the label's range and the statement list that
+    /// holds it (the node id of the list's parent).
+    pub labels: HashMap<String, (Range<usize>, usize)>,
+    pub in_error_handler: bool,
+}
+
+pub(crate) struct Cx<'t> {
+    pub task: &'t Task,
+    pub unit: &'t Unit,
+    pub unit_idx: usize,
+    pub text: &'t str,
+    pub types: Types<'t>,
+    pub cat: &'static Catalogue,
+    pub module: Option<(usize, &'t Module)>,
+    pub routine: Option<RoutineCx<'t>>,
+    pub diags: Vec<Diagnostic>,
+    /// Folded names of routine-scope symbols and module items that were used.
+    pub used: HashSet<Used>,
+    pub reported_signals: HashSet<String>,
+}
+
+/// A use of a declaration, for the unused-symbol lints.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub(crate) enum Used {
+    RoutineSym(String),
+    Item(ItemRef),
+}
+
+impl<'t> Cx<'t> {
+    fn check(&mut self) {
+        let root = self.unit.tree.root_node();
+        decls::check_file_wide(self, root);
+        let mut cursor = root.walk();
+        let modules: Vec<Node<'t>> = root
+            .named_children(&mut cursor)
+            .filter(|n| n.kind() == "module")
+            .collect();
+        let mut mi = 0;
+        for node in modules {
+            // Modules without a name were not lowered; keep the indexes aligned.
+            let Some(module) = self.unit.items.modules.get(mi) else {
+                break;
+            };
+            if module.range != node.byte_range() {
+                continue;
+            }
+            mi += 1;
+            self.module = Some((mi - 1, module));
+            decls::check_module(self, node, module);
+        }
+        self.module = None;
+    }
+
+    pub(crate) fn node_text(&self, node: Node<'_>) -> &'t str {
+        self.text.get(node.byte_range()).unwrap_or_default()
+    }
+
+    pub(crate) fn report(
+        &mut self,
+        rule: &'static Rule,
+        range: Range<usize>,
+        message: impl Into<String>,
+    ) {
+        self.diags.push(Diagnostic::new(rule, range, message));
+    }
+
+    pub(crate) fn report_with(&mut self, d: Diagnostic) {
+        self.diags.push(d);
+    }
+
+    pub(crate) fn related_item(&self, r: ItemRef, message: impl Into<String>) -> Option<Related> {
+        let (_, range) = self.task.item_name(r)?;
+        let file = (r.unit != self.unit_idx)
+            .then(|| self.task.units.get(r.unit).map(|u| u.path.clone()))
+            .flatten();
+        Some(Related {
+            file,
+            range,
+            message: message.into(),
+        })
+    }
+
+    fn module_idx(&self) -> Option<usize> {
+        self.module.map(|(i, _)| i)
+    }
+
+    /// Items visible from the current module under `name`: its own items
+    /// (any scope) first, then the task's globals.
+    pub(crate) fn lookup_items(&self, name: &str) -> Vec<ItemRef> {
+        let key = fold(name);
+        let mine = self.module_idx();
+        let mut own: Vec<ItemRef> = Vec::new();
+        if let Some(locals) = self.task.locals.get(&key) {
+            own.extend(
+                locals
+                    .iter()
+                    .filter(|r| r.unit == self.unit_idx && Some(r.module) == mine),
+            );
+        }
+        if let Some(globals) = self.task.globals.get(&key) {
+            let (here, elsewhere): (Vec<ItemRef>, Vec<ItemRef>) = globals
+                .iter()
+                .partition(|r| r.unit == self.unit_idx && Some(r.module) == mine);
+            own.extend(here);
+            if own.is_empty() {
+                return elsewhere;
+            }
+        }
+        own
+    }
+
+    /// A `LOCAL` declaration of another module under `name`, to explain why
+    /// the name is not visible.
+    pub(crate) fn local_elsewhere(&self, name: &str) -> Option<ItemRef> {
+        let mine = self.module_idx();
+        self.task
+            .locals
+            .get(&fold(name))?
+            .iter()
+            .copied()
+            .find(|r| !(r.unit == self.unit_idx && Some(r.module) == mine))
+    }
+
+    /// Resolves a data name in the current scope. Marks it used.
+    pub(crate) fn resolve_data(&mut self, name: &str) -> Option<DataSym<'t>> {
+        let key = fold(name);
+        if let Some(r) = &self.routine {
+            if r.for_vars.contains(&key) {
+                return Some(DataSym::ForVar);
+            }
+            if let Some(d) = r.locals.get(&key) {
+                let d = d.clone();
+                self.used.insert(Used::RoutineSym(key));
+                return Some(DataSym::Local(d));
+            }
+            if let Some(p) = r.params.get(&key).copied() {
+                self.used.insert(Used::RoutineSym(key));
+                return Some(DataSym::Param(p));
+            }
+        }
+        for r in self.lookup_items(name) {
+            if let Some(d) = self.task.data(r) {
+                self.used.insert(Used::Item(r));
+                return Some(DataSym::Module(d, r));
+            }
+        }
+        if let Some(d) = self.cat.datum(name) {
+            return Some(DataSym::Builtin(d));
+        }
+        if let Some(ty) = self.task.signals.as_ref().and_then(|s| s.get(&key)) {
+            return Some(DataSym::Signal(ty));
+        }
+        None
+    }
+
+    /// Resolves a routine name. Marks it used.
+    pub(crate) fn resolve_routine(
+        &mut self,
+        name: &str,
+        want_function: bool,
+    ) -> Option<RoutineSym<'t>> {
+        for r in self.lookup_items(name) {
+            if let Some(d) = self.task.routine(r) {
+                self.used.insert(Used::Item(r));
+                return Some(RoutineSym::User(d, r));
+            }
+        }
+        let (first, second) = if want_function {
+            (self.cat.function(name), self.cat.instruction(name))
+        } else {
+            (self.cat.instruction(name), self.cat.function(name))
+        };
+        first
+            .map(|r| RoutineSym::Builtin(r, r.returns.is_some()))
+            .or_else(|| second.map(|r| RoutineSym::Builtin(r, r.returns.is_some())))
+    }
+
+    /// Does `name` denote a data type here?
+    pub(crate) fn type_exists(&mut self, name: &str) -> bool {
+        for r in self.lookup_items(name) {
+            if matches!(r.item, Item::Record(_) | Item::Alias(_)) {
+                self.used.insert(Used::Item(r));
+                return true;
+            }
+        }
+        self.types.exists(name)
+    }
+
+    /// Reports a name that resolves to nothing, with the most helpful code.
+    pub(crate) fn unresolved(&mut self, name: &str, range: Range<usize>, what: &str) {
+        if let Some(r) = self.local_elsewhere(name) {
+            let module = self
+                .task
+                .module(r)
+                .map(|m| m.name.clone())
+                .unwrap_or_default();
+            let mut d = Diagnostic::new(
+                &crate::rules::local_not_visible::RULE,
+                range,
+                format!("`{name}` is declared LOCAL in module {module} and cannot be used here"),
+            );
+            if let Some(rel) = self.related_item(r, "declared LOCAL here") {
+                d = d.with_related(rel);
+            }
+            self.report_with(d);
+            return;
+        }
+        if what == "routine"
+            && let Some(o) = option_routine(name)
+        {
+            {
+                let message = format!(
+                    "`{name}` belongs to {}; its arguments are not checked",
+                    o.package
+                );
+                self.report(&crate::rules::option_routine::RULE, range, message);
+                return;
+            }
+        }
+        let mut message = format!("no {what} named `{name}` is declared in this task or built in");
+        if let Some(close) = self.close_match(name) {
+            message.push_str(&format!("; did you mean `{close}`?"));
+        } else if what == "data" && self.task.signals.is_none() {
+            message.push_str(" (if it is an I/O signal, give the controller's EIO.cfg)");
+        }
+        self.report(&crate::rules::unresolved_name::RULE, range, message);
+    }
+
+    /// A visible name within a small edit distance of `name`.
+    fn close_match(&self, name: &str) -> Option<String> {
+        let key = fold(name);
+        let limit = if key.len() <= 4 { 1 } else { 2 };
+        let mut best: Option<(usize, String)> = None;
+        let mut consider = |cand: &str| {
+            let d = edit_distance(&key, &fold(cand));
+            if d > 0 && d <= limit && best.as_ref().is_none_or(|(bd, _)| d < *bd) {
+                best = Some((d, cand.to_owned()));
+            }
+        };
+        if let Some(r) = &self.routine {
+            r.locals.values().for_each(|d| consider(&d.name));
+            r.params.values().for_each(|p| consider(&p.name));
+        }
+        if let Some((_, m)) = self.module {
+            m.data.iter().for_each(|d| consider(&d.name));
+            m.routines.iter().for_each(|d| consider(&d.name));
+        }
+        for refs in self.task.globals.values() {
+            if let Some((n, _)) = refs.first().and_then(|r| self.task.item_name(*r)) {
+                consider(n);
+            }
+        }
+        best.map(|(_, n)| n)
+    }
+
+    /// Is `name` used as an optional parameter of the routine being checked?
+    pub(crate) fn optional_param(&self, name: &str) -> Option<&'t ParamDecl> {
+        let p = self.routine.as_ref()?.params.get(&fold(name)).copied()?;
+        p.optional.then_some(p)
+    }
+}
+
+/// Where a value lives, for the parameter-mode check.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Place {
+    Var,
+    Pers,
+    Const,
+    ForVar,
+    Param(Mode),
+    /// Read-only system data such as `ERRNO`.
+    ReadOnly,
+    /// Not a data reference at all: a literal, a call, an operation.
+    Value,
+    /// Unresolved: say nothing.
+    Unknown,
+}
+
+impl Place {
+    pub(crate) fn of(sym: &DataSym<'_>) -> Place {
+        match sym {
+            DataSym::Param(p) => Place::Param(p.mode),
+            DataSym::Local(DataDecl { storage, .. })
+            | DataSym::Module(DataDecl { storage, .. }, _) => match storage {
+                Storage::Var => Place::Var,
+                Storage::Pers => Place::Pers,
+                Storage::Const => Place::Const,
+            },
+            DataSym::ForVar => Place::ForVar,
+            DataSym::Builtin(d) => match d.kind {
+                DatumKind::Const => Place::Const,
+                DatumKind::Pers => Place::Pers,
+                DatumKind::Var if is_read_only_system_datum(d) => Place::ReadOnly,
+                DatumKind::Var => Place::Var,
+            },
+            DataSym::Signal(_) => Place::Var,
+        }
+    }
+
+    pub(crate) fn describe(self) -> &'static str {
+        match self {
+            Place::Var => "a variable",
+            Place::Pers => "a persistent",
+            Place::Const => "a constant",
+            Place::ForVar => "a FOR loop variable",
+            Place::Param(Mode::In) => "an input parameter",
+            Place::Param(_) => "a reference parameter",
+            Place::ReadOnly => "read-only system data",
+            Place::Value => "a value",
+            Place::Unknown => "unknown",
+        }
+    }
+}
+
+/// System data the program reads but the controller sets.
+pub(crate) fn is_read_only_system_datum(d: &Datum) -> bool {
+    ["ERRNO", "INTNO", "ERRSTR"]
+        .iter()
+        .any(|n| d.name.eq_ignore_ascii_case(n))
+}
+
+/// A routine of an option or vendor package, from the reviewed list.
+pub(crate) fn option_routine(name: &str) -> Option<&'static crate::catalogue::OptionRoutine> {
+    static LIST: std::sync::OnceLock<HashMap<String, crate::catalogue::OptionRoutine>> =
+        std::sync::OnceLock::new();
+    LIST.get_or_init(|| {
+        crate::catalogue::option_routines()
+            .unwrap_or_default()
+            .into_iter()
+            .map(|o| (fold(&o.name), o))
+            .collect()
+    })
+    .get(&fold(name))
+}
+
+/// Levenshtein distance of two short ASCII strings.
+pub(crate) fn edit_distance(a: &str, b: &str) -> usize {
+    let (a, b) = (a.as_bytes(), b.as_bytes());
+    if a.len().abs_diff(b.len()) > 2 {
+        return 3;
+    }
+    let mut prev: Vec<usize> = (0..=b.len()).collect();
+    let mut cur = vec![0; b.len() + 1];
+    for (i, ca) in a.iter().enumerate() {
+        cur[0] = i + 1;
+        for (j, cb) in b.iter().enumerate() {
+            let cost = usize::from(ca != cb);
+            cur[j + 1] = (prev[j] + cost).min(prev[j + 1] + 1).min(cur[j] + 1);
+        }
+        std::mem::swap(&mut prev, &mut cur);
+    }
+    prev[b.len()]
+}

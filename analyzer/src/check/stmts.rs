@@ -1,0 +1,341 @@
+//! Statements: assignments, calls, control flow, labels and jumps, error
+//! handling statements and `CONNECT`.
+
+use tree_sitter::Node;
+
+use super::{Cx, Place, RoutineSym, calls, exprs};
+use crate::items::RoutineKind;
+use crate::names::fold;
+use crate::rules;
+use crate::syntax_util::{field, fields};
+use crate::ty::Ty;
+
+/// Collects the labels of the routine being checked, with the statement
+/// list that holds each.
+pub(super) fn collect_labels(cx: &mut Cx<'_>, routine: Node<'_>) {
+    let mut stack = vec![routine];
+    let mut found = Vec::new();
+    while let Some(node) = stack.pop() {
+        let mut cursor = node.walk();
+        for child in node.named_children(&mut cursor) {
+            if child.kind() == "label" {
+                if let Some(name) = field(child, "name") {
+                    found.push((cx.node_text(name).to_owned(), name.byte_range(), node.id()));
+                }
+            } else if !child.kind().ends_with("expression") && child.kind() != "argument_list" {
+                stack.push(child);
+            }
+        }
+    }
+    found.sort_by_key(|(_, r, _)| r.start);
+    let mut dups = Vec::new();
+    if let Some(r) = &mut cx.routine {
+        for (name, range, list) in found {
+            match r.labels.get(&fold(&name)) {
+                Some((first, _)) => dups.push((name, range, first.clone())),
+                None => {
+                    r.labels.insert(fold(&name), (range, list));
+                }
+            }
+        }
+    }
+    for (name, range, first) in dups {
+        let d = crate::diagnostic::Diagnostic::new(
+            &rules::duplicate_declaration::RULE,
+            range,
+            format!("the label `{name}` is declared twice in this routine"),
+        )
+        .with_related(crate::diagnostic::Related {
+            file: None,
+            range: first,
+            message: "first declared here".into(),
+        });
+        cx.report_with(d);
+    }
+}
+
+/// Checks a statement list, and reports the statements no path reaches.
+pub(super) fn check_block<'t>(cx: &mut Cx<'t>, statements: &[Node<'t>]) {
+    let mut ended_by: Option<&str> = None;
+    for (i, s) in statements.iter().enumerate() {
+        if s.kind() == "label" {
+            ended_by = None;
+        } else if let Some(by) = ended_by.take() {
+            let end = statements
+                .iter()
+                .skip(i)
+                .take_while(|n| n.kind() != "label")
+                .last()
+                .map_or(s.end_byte(), |n| n.end_byte());
+            cx.report(
+                &rules::unreachable_code::RULE,
+                s.start_byte()..end,
+                format!("this code can never run: it follows {by}"),
+            );
+        }
+        check_statement(cx, *s);
+        if ended_by.is_none() {
+            ended_by = leaves_list(*s);
+        }
+    }
+}
+
+/// The keyword of a statement that always leaves its statement list.
+fn leaves_list(s: Node<'_>) -> Option<&'static str> {
+    Some(match s.kind() {
+        "return_statement" => "RETURN",
+        "exit_statement" => "EXIT",
+        "raise_statement" => "RAISE",
+        "goto_statement" => "GOTO",
+        "retry_statement" => "RETRY",
+        "trynext_statement" => "TRYNEXT",
+        _ => return None,
+    })
+}
+
+fn check_statement<'t>(cx: &mut Cx<'t>, s: Node<'t>) {
+    match s.kind() {
+        "assignment" => assignment(cx, s),
+        "procedure_call" => calls::procedure_call(cx, s),
+        "if_statement" => {
+            if let Some(c) = field(s, "condition") {
+                exprs::condition(cx, c);
+            }
+            check_block(cx, &fields(s, "body"));
+            for alt in fields(s, "alternative") {
+                if let Some(c) = field(alt, "condition") {
+                    exprs::condition(cx, c);
+                }
+                check_block(cx, &fields(alt, "body"));
+            }
+        }
+        "compact_if_statement" => {
+            if let Some(c) = field(s, "condition") {
+                exprs::condition(cx, c);
+            }
+            if let Some(b) = field(s, "body") {
+                check_statement(cx, b);
+            }
+        }
+        "for_statement" => for_statement(cx, s),
+        "while_statement" => {
+            if let Some(c) = field(s, "condition") {
+                exprs::condition(cx, c);
+            }
+            check_block(cx, &fields(s, "body"));
+        }
+        "test_statement" => test_statement(cx, s),
+        "goto_statement" => goto(cx, s),
+        "return_statement" => return_statement(cx, s),
+        "raise_statement" => match field(s, "value") {
+            Some(v) => exprs::check_expected(cx, v, &Ty::named("errnum"), "the error number"),
+            None => handler_only(cx, s, "RAISE without an error number"),
+        },
+        "retry_statement" => handler_only(cx, s, "RETRY"),
+        "trynext_statement" => handler_only(cx, s, "TRYNEXT"),
+        "connect_statement" => connect(cx, s),
+        _ => {}
+    }
+}
+
+fn handler_only(cx: &mut Cx<'_>, s: Node<'_>, what: &str) {
+    if !cx.routine.as_ref().is_some_and(|r| r.in_error_handler) {
+        cx.report(
+            &rules::handler_only_statement::RULE,
+            s.byte_range(),
+            format!("{what} is only allowed in an ERROR handler"),
+        );
+    }
+}
+
+fn assignment<'t>(cx: &mut Cx<'t>, s: Node<'t>) {
+    let (Some(left), Some(right)) = (field(s, "left"), field(s, "right")) else {
+        return;
+    };
+    let (ty, place) = exprs::place_or_value(cx, left);
+    if matches!(place, Place::Const | Place::ForVar | Place::ReadOnly) {
+        cx.report(
+            &rules::assign_to_constant::RULE,
+            left.byte_range(),
+            format!("cannot assign to {}", place.describe()),
+        );
+    }
+    exprs::check_expected(cx, right, &ty, "the assigned value");
+}
+
+fn for_statement<'t>(cx: &mut Cx<'t>, s: Node<'t>) {
+    for bound in ["from", "to", "step"] {
+        if let Some(b) = field(s, bound) {
+            exprs::check_expected(
+                cx,
+                b,
+                &Ty::num(),
+                &format!("the FOR {} value", bound.to_ascii_uppercase()),
+            );
+        }
+    }
+    let var = field(s, "variable").map(|v| fold(cx.node_text(v)));
+    if let (Some(r), Some(v)) = (&mut cx.routine, &var) {
+        r.for_vars.push(v.clone());
+    }
+    check_block(cx, &fields(s, "body"));
+    if let (Some(r), Some(_)) = (&mut cx.routine, &var) {
+        r.for_vars.pop();
+    }
+}
+
+fn test_statement<'t>(cx: &mut Cx<'t>, s: Node<'t>) {
+    let ty = field(s, "value").map_or(Ty::Unknown, |v| exprs::expr(cx, v, None));
+    let ty = cx.types.value_type(&ty);
+    for case in fields(s, "case") {
+        for v in fields(case, "value") {
+            exprs::check_expected(cx, v, &ty, "the CASE value");
+        }
+        check_block(cx, &fields(case, "body"));
+    }
+    if let Some(d) = field(s, "default") {
+        check_block(cx, &fields(d, "body"));
+    }
+}
+
+fn goto(cx: &mut Cx<'_>, s: Node<'_>) {
+    let Some(label) = field(s, "label") else {
+        return;
+    };
+    let name = cx.node_text(label);
+    let Some(r) = &cx.routine else {
+        return;
+    };
+    match r.labels.get(&fold(name)) {
+        None => cx.report(
+            &rules::unknown_label::RULE,
+            label.byte_range(),
+            format!("this routine has no label `{name}`"),
+        ),
+        Some((_, list)) => {
+            let list = *list;
+            let mut at = s.parent();
+            let mut reachable = false;
+            while let Some(n) = at {
+                if n.id() == list {
+                    reachable = true;
+                    break;
+                }
+                at = n.parent();
+            }
+            if !reachable {
+                cx.report(
+                    &rules::goto_into_block::RULE,
+                    label.byte_range(),
+                    format!("`{name}` is inside another statement block; GOTO cannot jump into it"),
+                );
+            }
+        }
+    }
+}
+
+fn return_statement<'t>(cx: &mut Cx<'t>, s: Node<'t>) {
+    let Some(r) = &cx.routine else {
+        return;
+    };
+    let kind = r.decl.kind;
+    let returns = r.decl.returns.as_ref().map(|t| Ty::named(&t.name));
+    match (kind, field(s, "value")) {
+        (RoutineKind::Func, None) => cx.report(
+            &rules::return_value::RULE,
+            s.byte_range(),
+            format!(
+                "a function must return a value: RETURN {};",
+                returns
+                    .as_ref()
+                    .map_or("value".to_owned(), |t| format!("<{t}>"))
+            ),
+        ),
+        (RoutineKind::Func, Some(v)) => {
+            let ty = returns.unwrap_or(Ty::Unknown);
+            exprs::check_expected(cx, v, &ty, "the returned value");
+        }
+        (_, Some(v)) => {
+            cx.report(
+                &rules::return_value::RULE,
+                v.byte_range(),
+                format!("a {} returns no value: write RETURN;", kind.keyword()),
+            );
+            exprs::expr(cx, v, None);
+        }
+        (_, None) => {}
+    }
+}
+
+fn connect<'t>(cx: &mut Cx<'t>, s: Node<'t>) {
+    if let Some(target) = field(s, "interrupt") {
+        let (ty, place) = exprs::place_or_value(cx, target);
+        if !ty.is_unknown() && !ty.is("intnum") {
+            cx.report(
+                &rules::connect_target::RULE,
+                target.byte_range(),
+                format!(
+                    "CONNECT needs an intnum variable, found {}",
+                    exprs::a_type(&ty)
+                ),
+            );
+        } else if matches!(
+            place,
+            Place::Const | Place::ForVar | Place::Value | Place::ReadOnly
+        ) {
+            cx.report(
+                &rules::connect_target::RULE,
+                target.byte_range(),
+                format!(
+                    "CONNECT needs an intnum variable, found {}",
+                    place.describe()
+                ),
+            );
+        }
+    }
+    if let Some(trap) = field(s, "trap") {
+        let name = cx.node_text(trap);
+        match cx.resolve_routine(name, false) {
+            Some(RoutineSym::User(d, _)) if d.kind == RoutineKind::Trap => {}
+            Some(_) => cx.report(
+                &rules::connect_target::RULE,
+                trap.byte_range(),
+                format!("`{name}` is not a TRAP routine"),
+            ),
+            None => cx.unresolved(name, trap.byte_range(), "routine"),
+        }
+    }
+}
+
+/// Does every path through this list end in RETURN, RAISE, EXIT or a jump?
+pub(super) fn block_terminates(cx: &Cx<'_>, statements: &[Node<'_>]) -> bool {
+    statements.iter().any(|s| terminates(cx, *s))
+}
+
+fn terminates(cx: &Cx<'_>, s: Node<'_>) -> bool {
+    match s.kind() {
+        "return_statement" | "raise_statement" | "exit_statement" | "goto_statement"
+        | "retry_statement" | "trynext_statement" => true,
+        "if_statement" => {
+            let alts = fields(s, "alternative");
+            alts.iter().any(|a| a.kind() == "else_clause")
+                && block_terminates(cx, &fields(s, "body"))
+                && alts
+                    .iter()
+                    .all(|a| block_terminates(cx, &fields(*a, "body")))
+        }
+        "test_statement" => {
+            field(s, "default").is_some_and(|d| block_terminates(cx, &fields(d, "body")))
+                && fields(s, "case")
+                    .iter()
+                    .all(|c| block_terminates(cx, &fields(*c, "body")))
+        }
+        "while_statement" => field(s, "condition")
+            .is_some_and(|c| c.kind() == "boolean" && cx.node_text(c).eq_ignore_ascii_case("true")),
+        "procedure_call" => field(s, "name").is_some_and(|n| {
+            let name = cx.node_text(n);
+            ["exitcycle"].contains(&fold(name).as_str())
+        }),
+        _ => false,
+    }
+}

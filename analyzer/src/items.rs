@@ -1,0 +1,412 @@
+//! The item tree of a file: its modules and their declarations (data,
+//! routines with their signatures, records, aliases), without routine bodies.
+//!
+//! This is the per-module summary the design asks for: other modules see a
+//! module only through it, and [`FileItems::interface_hash`] ignores
+//! positions, so typing inside a routine body changes nothing that another
+//! module depends on.
+
+use std::hash::{Hash, Hasher};
+use std::ops::Range;
+
+use tree_sitter::{Node, Tree};
+
+use crate::catalogue::Mode;
+use crate::names::fold;
+use crate::syntax_util::{field, fields, has_token, is_placeholder, text_of};
+
+/// The items of one file (a file may hold several modules).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct FileItems {
+    pub modules: Vec<Module>,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Module {
+    pub name: String,
+    pub name_range: Range<usize>,
+    pub range: Range<usize>,
+    pub attributes: ModuleAttributes,
+    pub data: Vec<DataDecl>,
+    pub routines: Vec<RoutineDecl>,
+    pub records: Vec<RecordDecl>,
+    pub aliases: Vec<AliasDecl>,
+}
+
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct ModuleAttributes {
+    pub sysmodule: bool,
+    pub noview: bool,
+    pub nostepin: bool,
+    pub viewonly: bool,
+    pub readonly: bool,
+}
+
+/// Where a declaration is visible.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Scope {
+    /// The whole task (no prefix).
+    Global,
+    /// Only its own module (`LOCAL`).
+    Local,
+    /// A `TASK PERS`: global in the task, not shared with other tasks.
+    Task,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Storage {
+    Var,
+    Pers,
+    Const,
+}
+
+impl Storage {
+    pub fn keyword(self) -> &'static str {
+        match self {
+            Storage::Var => "VAR",
+            Storage::Pers => "PERS",
+            Storage::Const => "CONST",
+        }
+    }
+}
+
+/// A type as written in a declaration.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub struct TypeRef {
+    pub name: String,
+    pub range: Range<usize>,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct DataDecl {
+    pub name: String,
+    pub name_range: Range<usize>,
+    pub range: Range<usize>,
+    pub scope: Scope,
+    pub storage: Storage,
+    pub ty: Option<TypeRef>,
+    /// The dimension expressions (`{3, 4}`), as byte ranges.
+    pub dims: Vec<Range<usize>>,
+    /// The initialiser expression, if any.
+    pub init: Option<Range<usize>>,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum RoutineKind {
+    Proc,
+    Func,
+    Trap,
+}
+
+impl RoutineKind {
+    pub fn keyword(self) -> &'static str {
+        match self {
+            RoutineKind::Proc => "PROC",
+            RoutineKind::Func => "FUNC",
+            RoutineKind::Trap => "TRAP",
+        }
+    }
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct RoutineDecl {
+    pub kind: RoutineKind,
+    pub name: String,
+    pub name_range: Range<usize>,
+    pub range: Range<usize>,
+    pub local: bool,
+    pub returns: Option<TypeRef>,
+    pub params: Vec<ParamDecl>,
+    /// Required members of `|` groups are never required in RAPID: a group
+    /// of optional parameters means "at most one of these".
+    pub alt_groups: u32,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct ParamDecl {
+    pub name: String,
+    pub name_range: Range<usize>,
+    pub ty: Option<TypeRef>,
+    pub mode: Mode,
+    pub optional: bool,
+    /// The parameter's type is `switch`: given as `\Name`, without a value.
+    pub switch: bool,
+    /// Array dimensions (`{*}` is 1).
+    pub dims: u8,
+    pub alt_group: Option<u32>,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct RecordDecl {
+    pub name: String,
+    pub name_range: Range<usize>,
+    pub range: Range<usize>,
+    pub local: bool,
+    pub components: Vec<(String, Option<TypeRef>, Range<usize>)>,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct AliasDecl {
+    pub name: String,
+    pub name_range: Range<usize>,
+    pub range: Range<usize>,
+    pub local: bool,
+    pub of: Option<TypeRef>,
+}
+
+impl FileItems {
+    /// Lowers a parsed file. Placeholders and broken declarations are left
+    /// out; nothing here fails.
+    pub fn lower(tree: &Tree, text: &str) -> FileItems {
+        let root = tree.root_node();
+        let mut cursor = root.walk();
+        let modules = root
+            .named_children(&mut cursor)
+            .filter(|n| n.kind() == "module")
+            .filter_map(|n| lower_module(n, text))
+            .collect();
+        FileItems { modules }
+    }
+
+    /// A hash of everything other modules can see, ignoring positions: equal
+    /// hashes mean other modules need not be checked again.
+    pub fn interface_hash(&self) -> u64 {
+        let mut h = std::hash::DefaultHasher::new();
+        for m in &self.modules {
+            fold(&m.name).hash(&mut h);
+            m.attributes.hash(&mut h);
+            for d in &m.data {
+                (fold(&d.name), d.scope, d.storage, d.dims.len()).hash(&mut h);
+                d.ty.as_ref().map(|t| fold(&t.name)).hash(&mut h);
+            }
+            for r in &m.routines {
+                (fold(&r.name), r.kind, r.local, r.alt_groups).hash(&mut h);
+                r.returns.as_ref().map(|t| fold(&t.name)).hash(&mut h);
+                for p in &r.params {
+                    (
+                        fold(&p.name),
+                        p.mode,
+                        p.optional,
+                        p.switch,
+                        p.dims,
+                        p.alt_group,
+                    )
+                        .hash(&mut h);
+                    p.ty.as_ref().map(|t| fold(&t.name)).hash(&mut h);
+                }
+            }
+            for r in &m.records {
+                (fold(&r.name), r.local).hash(&mut h);
+                for (name, ty, _) in &r.components {
+                    (fold(name), ty.as_ref().map(|t| fold(&t.name))).hash(&mut h);
+                }
+            }
+            for a in &m.aliases {
+                (fold(&a.name), a.local, a.of.as_ref().map(|t| fold(&t.name))).hash(&mut h);
+            }
+        }
+        h.finish()
+    }
+}
+
+fn name_of(node: Node<'_>, text: &str) -> Option<(String, Range<usize>)> {
+    let name = field(node, "name")?;
+    if is_placeholder(name) || name.is_missing() {
+        return None;
+    }
+    Some((text_of(name, text).to_owned(), name.byte_range()))
+}
+
+fn type_of(node: Node<'_>, text: &str) -> Option<TypeRef> {
+    let ty = field(node, "type")?;
+    if is_placeholder(ty) || ty.is_missing() {
+        return None;
+    }
+    Some(TypeRef {
+        name: text_of(ty, text).to_owned(),
+        range: ty.byte_range(),
+    })
+}
+
+fn scope_of(node: Node<'_>) -> Scope {
+    match field(node, "scope").map(|s| s.kind()) {
+        Some("local") => Scope::Local,
+        Some("task") => Scope::Task,
+        _ => Scope::Global,
+    }
+}
+
+fn lower_module(node: Node<'_>, text: &str) -> Option<Module> {
+    let (name, name_range) = name_of(node, text)?;
+    let mut attributes = ModuleAttributes::default();
+    if let Some(attrs) = field(node, "attributes") {
+        for attr in fields(attrs, "attribute") {
+            match text_of(attr, text).to_ascii_uppercase().as_str() {
+                "SYSMODULE" => attributes.sysmodule = true,
+                "NOVIEW" => attributes.noview = true,
+                "NOSTEPIN" => attributes.nostepin = true,
+                "VIEWONLY" => attributes.viewonly = true,
+                "READONLY" => attributes.readonly = true,
+                _ => {}
+            }
+        }
+    }
+    let mut module = Module {
+        name,
+        name_range,
+        range: node.byte_range(),
+        attributes,
+        data: Vec::new(),
+        routines: Vec::new(),
+        records: Vec::new(),
+        aliases: Vec::new(),
+    };
+    for item in fields(node, "body") {
+        match item.kind() {
+            "data_declaration" => module.data.extend(lower_data(item, text)),
+            "procedure_declaration" | "function_declaration" | "trap_declaration" => {
+                module.routines.extend(lower_routine(item, text));
+            }
+            "record_declaration" => module.records.extend(lower_record(item, text)),
+            "alias_declaration" => module.aliases.extend(lower_alias(item, text)),
+            _ => {}
+        }
+    }
+    Some(module)
+}
+
+/// Lowers a data declaration (of a module or of a routine).
+pub fn lower_data(node: Node<'_>, text: &str) -> Option<DataDecl> {
+    let (name, name_range) = name_of(node, text)?;
+    let storage = match field(node, "storage")?.kind() {
+        "var" => Storage::Var,
+        "pers" => Storage::Pers,
+        "const" => Storage::Const,
+        _ => return None,
+    };
+    let dims = field(node, "dimensions")
+        .map(|d| {
+            fields(d, "dimension")
+                .iter()
+                .map(|n| n.byte_range())
+                .collect()
+        })
+        .unwrap_or_default();
+    Some(DataDecl {
+        name,
+        name_range,
+        range: node.byte_range(),
+        scope: scope_of(node),
+        storage,
+        ty: type_of(node, text),
+        dims,
+        init: field(node, "value").map(|v| v.byte_range()),
+    })
+}
+
+fn lower_routine(node: Node<'_>, text: &str) -> Option<RoutineDecl> {
+    let (name, name_range) = name_of(node, text)?;
+    let kind = match node.kind() {
+        "procedure_declaration" => RoutineKind::Proc,
+        "function_declaration" => RoutineKind::Func,
+        _ => RoutineKind::Trap,
+    };
+    let mut params = Vec::new();
+    let mut alt_groups = 0;
+    if let Some(list) = field(node, "parameters") {
+        for p in fields(list, "parameter") {
+            match p.kind() {
+                "parameter" => params.extend(lower_param(p, text, false, None)),
+                "optional_parameter" => {
+                    let alternatives: Vec<_> = fields(p, "alternative")
+                        .into_iter()
+                        .filter(|a| a.kind() == "parameter")
+                        .collect();
+                    let group = (alternatives.len() > 1).then(|| {
+                        alt_groups += 1;
+                        alt_groups
+                    });
+                    for a in alternatives {
+                        params.extend(lower_param(a, text, true, group));
+                    }
+                }
+                _ => {}
+            }
+        }
+    }
+    Some(RoutineDecl {
+        kind,
+        name,
+        name_range,
+        range: node.byte_range(),
+        local: scope_of(node) == Scope::Local,
+        returns: (kind == RoutineKind::Func)
+            .then(|| type_of(node, text))
+            .flatten(),
+        params,
+        alt_groups,
+    })
+}
+
+fn lower_param(
+    node: Node<'_>,
+    text: &str,
+    optional: bool,
+    alt_group: Option<u32>,
+) -> Option<ParamDecl> {
+    let (name, name_range) = name_of(node, text)?;
+    let ty = type_of(node, text);
+    let mode = match field(node, "mode").map(|m| m.kind()) {
+        Some("var") => Mode::Var,
+        Some("pers") => Mode::Pers,
+        Some("inout") => Mode::InOut,
+        _ => Mode::In,
+    };
+    let dims = field(node, "dimensions").map_or(0, |d| {
+        let mut cursor = d.walk();
+        let n = d.children(&mut cursor).filter(|c| c.kind() == "*").count();
+        u8::try_from(n).unwrap_or(u8::MAX)
+    });
+    let switch = ty
+        .as_ref()
+        .is_some_and(|t| t.name.eq_ignore_ascii_case("switch"));
+    Some(ParamDecl {
+        name,
+        name_range,
+        ty,
+        mode,
+        optional,
+        switch,
+        dims,
+        alt_group,
+    })
+}
+
+fn lower_record(node: Node<'_>, text: &str) -> Option<RecordDecl> {
+    let (name, name_range) = name_of(node, text)?;
+    let components = fields(node, "component")
+        .into_iter()
+        .filter_map(|c| {
+            let (n, r) = name_of(c, text)?;
+            Some((n, type_of(c, text), r))
+        })
+        .collect();
+    Some(RecordDecl {
+        name,
+        name_range,
+        range: node.byte_range(),
+        local: has_token(node, "local"),
+        components,
+    })
+}
+
+fn lower_alias(node: Node<'_>, text: &str) -> Option<AliasDecl> {
+    let (name, name_range) = name_of(node, text)?;
+    Some(AliasDecl {
+        name,
+        name_range,
+        range: node.byte_range(),
+        local: has_token(node, "local"),
+        of: type_of(node, text),
+    })
+}

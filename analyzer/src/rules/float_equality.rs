@@ -1,0 +1,19 @@
+crate::declare_rule! {
+    /// `=` or `<>` comparing the result of a floating-point computation.
+    ///
+    /// ### What it checks
+    /// Comparing with `=` or `<>` where an operand is computed with `/`, a
+    /// trigonometric or other real-valued function, or is a literal with a
+    /// fraction. `num` is a single-precision value, so such results are rarely
+    /// exactly equal.
+    ///
+    /// ### Why
+    /// The comparison can be false when the values are equal for every practical
+    /// purpose, so a branch silently never runs.
+    ///
+    /// ### Example
+    /// ```rapid
+    /// IF Sqrt(2) * Sqrt(2) = 2 THEN      ! prefer  Abs(Sqrt(2) * Sqrt(2) - 2) < 0.0001
+    /// ```
+    pub static RULE = ("W206", "float-equality", Warning);
+}

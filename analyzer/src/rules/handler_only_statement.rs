@@ -1,0 +1,18 @@
+crate::declare_rule! {
+    /// `RETRY`, `TRYNEXT` or a `RAISE` without a value outside an `ERROR` handler.
+    ///
+    /// ### What it checks
+    /// These statements continue or pass on the handling of an error, so they only
+    /// make sense inside an `ERROR` handler.
+    ///
+    /// ### Why
+    /// The controller rejects the module.
+    ///
+    /// ### Example
+    /// ```rapid
+    /// PROC main()
+    ///     RETRY;      ! not in an ERROR handler
+    /// ENDPROC
+    /// ```
+    pub static RULE = ("E405", "handler-only-statement", Error);
+}

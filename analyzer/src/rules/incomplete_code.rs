@@ -1,0 +1,20 @@
+crate::declare_rule! {
+    /// An unfilled FlexPendant placeholder such as `<SMT>` or `<EXP>`.
+    ///
+    /// ### What it checks
+    /// The FlexPendant and RobotStudio write placeholders (`<SMT>`, `<EXP>`,
+    /// `<ARG>`, `<VAR>`, `<ID>`, ...) for the parts of a statement still to be
+    /// written. A module with placeholders is incomplete.
+    ///
+    /// ### Why
+    /// The controller loads such a module but stops with an error when execution
+    /// reaches the placeholder.
+    ///
+    /// ### Example
+    /// ```rapid
+    /// PROC main()
+    ///     <SMT>
+    /// ENDPROC
+    /// ```
+    pub static RULE = ("E412", "incomplete-code", Error);
+}

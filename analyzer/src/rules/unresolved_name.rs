@@ -1,0 +1,23 @@
+crate::declare_rule! {
+    /// A name that no module of the task and no built-in declares.
+    ///
+    /// ### What it checks
+    /// A data object, routine or data type that is declared nowhere in the task's
+    /// modules, in the built-in catalogue, or (for signals) in the I/O
+    /// configuration. It may be a typing mistake, or it may be declared in a module
+    /// or a RobotWare option that is not part of the checked files; this is why it
+    /// is a warning of its own and not an error. The message proposes close matches
+    /// when there are any.
+    ///
+    /// ### Why
+    /// A module that uses an undeclared name fails to link when it is loaded on the
+    /// controller.
+    ///
+    /// ### Example
+    /// ```rapid
+    /// PROC main()
+    ///     MoveL pHome, v1000, fine, tGriper;   ! tGripper was meant
+    /// ENDPROC
+    /// ```
+    pub static RULE = ("W101", "unresolved-name", Warning);
+}

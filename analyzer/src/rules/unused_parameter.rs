@@ -1,0 +1,18 @@
+crate::declare_rule! {
+    /// A routine parameter that the routine never uses.
+    ///
+    /// ### What it checks
+    /// A parameter that no statement of its routine reads or writes (an optional
+    /// parameter tested with `Present` counts as used).
+    ///
+    /// ### Why
+    /// Callers pass a value that has no effect, which is often a mistake.
+    ///
+    /// ### Example
+    /// ```rapid
+    /// PROC place(robtarget p, num layer)
+    ///     MoveL p, v100, fine, tool0;    ! layer is unused
+    /// ENDPROC
+    /// ```
+    pub static RULE = ("W202", "unused-parameter", Warning);
+}

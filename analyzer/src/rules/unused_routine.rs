@@ -1,0 +1,18 @@
+crate::declare_rule! {
+    /// A `LOCAL` routine that nothing in its module calls.
+    ///
+    /// ### What it checks
+    /// A routine declared `LOCAL` can only be called from its own module; if
+    /// nothing there calls it (or connects it, for a trap), it is dead code.
+    ///
+    /// ### Why
+    /// Dead code is misleading to read and still has to load.
+    ///
+    /// ### Example
+    /// ```rapid
+    /// LOCAL PROC oldHelper()
+    ///     TPWrite "never called";
+    /// ENDPROC
+    /// ```
+    pub static RULE = ("W203", "unused-routine", Warning);
+}

@@ -1,0 +1,32 @@
+//! Small helpers over tree-sitter nodes, shared by lowering and checking.
+
+use tree_sitter::Node;
+
+/// The source text of a node ("" if the range is not in `text`).
+pub fn text_of<'t>(node: Node<'_>, text: &'t str) -> &'t str {
+    text.get(node.byte_range()).unwrap_or_default()
+}
+
+/// The child in field `name`.
+pub fn field<'a>(node: Node<'a>, name: &str) -> Option<Node<'a>> {
+    node.child_by_field_name(name)
+}
+
+/// Every child in field `name`, in order.
+pub fn fields<'a>(node: Node<'a>, name: &str) -> Vec<Node<'a>> {
+    let mut cursor = node.walk();
+    node.children_by_field_name(name, &mut cursor).collect()
+}
+
+/// Does the node have an anonymous child of this kind (a keyword, which the
+/// grammar shows in lower case whatever the source case)?
+pub fn has_token(node: Node<'_>, kind: &str) -> bool {
+    let mut cursor = node.walk();
+    node.children(&mut cursor)
+        .any(|c| !c.is_named() && c.kind() == kind)
+}
+
+/// Is this node a FlexPendant placeholder such as `<SMT>`?
+pub fn is_placeholder(node: Node<'_>) -> bool {
+    node.kind() == "placeholder"
+}

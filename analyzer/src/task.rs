@@ -1,0 +1,344 @@
+//! A task: the modules that are loaded together on one controller task, and
+//! the index of the names they declare.
+//!
+//! Grouping follows the controller's layout: in a backup,
+//! `.../RAPID/TASKn/{SYSMOD,PROGMOD}/...` is task `TASKn`; elsewhere the
+//! modules of one folder form one task. Tasks never see each other's names.
+
+use std::collections::HashMap;
+use std::sync::Arc;
+
+use tree_sitter::Tree;
+
+use crate::diagnostic::Diagnostic;
+use crate::items::{DataDecl, FileItems, Module, RecordDecl, RoutineDecl, Scope};
+use crate::names::fold;
+use crate::ty::{Types, UserType};
+
+/// One parsed file with its item tree. Immutable once built: an edit makes
+/// a new unit (reusing the old tree for an incremental parse).
+#[derive(Debug)]
+pub struct Unit {
+    /// The file's path as the caller names it (used for task grouping and
+    /// in related locations).
+    pub path: String,
+    pub text: String,
+    pub tree: Tree,
+    pub items: FileItems,
+    pub interface: u64,
+    pub syntax: Vec<Diagnostic>,
+}
+
+impl Unit {
+    /// Parses and lowers `text`; `old` is the previous tree, already edited.
+    pub fn new(path: String, text: String, old: Option<&Tree>) -> Unit {
+        let mut parser = crate::syntax::parser();
+        let tree = crate::syntax::parse(&mut parser, &text, old)
+            .or_else(|| crate::syntax::parse(&mut parser, "", None));
+        Unit::from_tree(path, text, tree)
+    }
+
+    /// Builds a unit from a tree parsed by the caller.
+    pub fn from_tree(path: String, text: String, tree: Option<Tree>) -> Unit {
+        let Some(tree) = tree else {
+            // Only a cancelled parse returns no tree; we never cancel. Keep
+            // the file, empty, rather than fail.
+            let mut parser = crate::syntax::parser();
+            let tree = parser.parse("", None);
+            return Unit::empty(path, text, tree);
+        };
+        let items = FileItems::lower(&tree, &text);
+        let syntax = crate::syntax::syntax_diagnostics(&tree, &text);
+        Unit {
+            interface: items.interface_hash(),
+            path,
+            text,
+            tree,
+            items,
+            syntax,
+        }
+    }
+
+    fn empty(path: String, text: String, tree: Option<Tree>) -> Unit {
+        match tree {
+            Some(tree) => Unit {
+                path,
+                text,
+                tree,
+                items: FileItems::default(),
+                interface: 0,
+                syntax: Vec::new(),
+            },
+            // No tree even for empty text means the grammar could not be
+            // loaded at all, which the grammar's own tests rule out.
+            None => unreachable_tree(path, text),
+        }
+    }
+}
+
+fn unreachable_tree(path: String, _text: String) -> Unit {
+    panic!("tree-sitter returned no tree for an empty text ({path})")
+}
+
+/// The key of the task a file belongs to, from its path.
+pub fn task_key(path: &str) -> String {
+    let normal = path.replace('\\', "/");
+    let parts: Vec<&str> = normal.split('/').collect();
+    for i in (0..parts.len().saturating_sub(1)).rev() {
+        let p = parts[i];
+        if p.len() > 4
+            && p[..4].eq_ignore_ascii_case("task")
+            && p[4..].bytes().all(|b| b.is_ascii_digit())
+            && i > 0
+            && parts[i - 1].eq_ignore_ascii_case("rapid")
+        {
+            return parts[..=i].join("/");
+        }
+    }
+    match normal.rsplit_once('/') {
+        Some((dir, _)) => dir.to_owned(),
+        None => String::new(),
+    }
+}
+
+/// Where a declaration lives: unit (index in the task), module, and item.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct ItemRef {
+    pub unit: usize,
+    pub module: usize,
+    pub item: Item,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Item {
+    Data(usize),
+    Routine(usize),
+    Record(usize),
+    Alias(usize),
+}
+
+/// The modules of one task and the index of their names.
+#[derive(Debug)]
+pub struct Task {
+    pub key: String,
+    pub units: Vec<Arc<Unit>>,
+    /// Global (non-`LOCAL`) declarations of every module, by folded name.
+    pub globals: HashMap<String, Vec<ItemRef>>,
+    /// `LOCAL` declarations, by folded name (to explain why a name is not
+    /// visible from another module).
+    pub locals: HashMap<String, Vec<ItemRef>>,
+    /// Signals configured for this task (`EIO.cfg`): folded name to data
+    /// type (`signaldi`...); `None` when no configuration was given.
+    pub signals: Option<Signals>,
+    /// Combined interface hash of every unit, for cache invalidation.
+    pub interface: u64,
+}
+
+impl Task {
+    pub fn new(key: String, units: Vec<Arc<Unit>>, signals: Option<Signals>) -> Task {
+        let mut globals: HashMap<String, Vec<ItemRef>> = HashMap::new();
+        let mut locals: HashMap<String, Vec<ItemRef>> = HashMap::new();
+        let mut interface: u64 = 0;
+        for (u, unit) in units.iter().enumerate() {
+            interface = interface.rotate_left(7) ^ unit.interface;
+            for (m, module) in unit.items.modules.iter().enumerate() {
+                for (name, local, item) in module_items(module) {
+                    let r = ItemRef {
+                        unit: u,
+                        module: m,
+                        item,
+                    };
+                    let map = if local { &mut locals } else { &mut globals };
+                    map.entry(fold(name)).or_default().push(r);
+                }
+            }
+        }
+        Task {
+            key,
+            units,
+            globals,
+            locals,
+            signals,
+            interface,
+        }
+    }
+
+    /// Is this task a controller backup's `RAPID/TASKn` folder (so its
+    /// modules are certainly loaded together), rather than a plain folder?
+    pub fn is_backup(&self) -> bool {
+        let key = self.key.to_ascii_lowercase();
+        key.contains("rapid/task") || key.starts_with("task")
+    }
+
+    pub fn module(&self, r: ItemRef) -> Option<&Module> {
+        self.units.get(r.unit)?.items.modules.get(r.module)
+    }
+
+    pub fn data(&self, r: ItemRef) -> Option<&DataDecl> {
+        match r.item {
+            Item::Data(i) => self.module(r)?.data.get(i),
+            _ => None,
+        }
+    }
+
+    pub fn routine(&self, r: ItemRef) -> Option<&RoutineDecl> {
+        match r.item {
+            Item::Routine(i) => self.module(r)?.routines.get(i),
+            _ => None,
+        }
+    }
+
+    pub fn record(&self, r: ItemRef) -> Option<&RecordDecl> {
+        match r.item {
+            Item::Record(i) => self.module(r)?.records.get(i),
+            _ => None,
+        }
+    }
+
+    /// The name and name range of an item.
+    pub fn item_name(&self, r: ItemRef) -> Option<(&str, std::ops::Range<usize>)> {
+        let m = self.module(r)?;
+        Some(match r.item {
+            Item::Data(i) => m
+                .data
+                .get(i)
+                .map(|d| (d.name.as_str(), d.name_range.clone()))?,
+            Item::Routine(i) => m
+                .routines
+                .get(i)
+                .map(|d| (d.name.as_str(), d.name_range.clone()))?,
+            Item::Record(i) => m
+                .records
+                .get(i)
+                .map(|d| (d.name.as_str(), d.name_range.clone()))?,
+            Item::Alias(i) => m
+                .aliases
+                .get(i)
+                .map(|d| (d.name.as_str(), d.name_range.clone()))?,
+        })
+    }
+
+    /// The types of the task: every record and alias, global or local (a
+    /// local type used from another module is reported by name resolution).
+    pub fn types(&self) -> Types<'_> {
+        Types::new(self.units.iter().flat_map(|u| {
+            u.items.modules.iter().flat_map(|m| {
+                m.records
+                    .iter()
+                    .map(UserType::Record)
+                    .chain(m.aliases.iter().map(UserType::Alias))
+            })
+        }))
+    }
+}
+
+/// Every declaration of a module: (name, is LOCAL, item).
+pub fn module_items(module: &Module) -> impl Iterator<Item = (&str, bool, Item)> {
+    let data = module
+        .data
+        .iter()
+        .enumerate()
+        .map(|(i, d)| (d.name.as_str(), d.scope == Scope::Local, Item::Data(i)));
+    let routines = module
+        .routines
+        .iter()
+        .enumerate()
+        .map(|(i, r)| (r.name.as_str(), r.local, Item::Routine(i)));
+    let records = module
+        .records
+        .iter()
+        .enumerate()
+        .map(|(i, r)| (r.name.as_str(), r.local, Item::Record(i)));
+    let aliases = module
+        .aliases
+        .iter()
+        .enumerate()
+        .map(|(i, a)| (a.name.as_str(), a.local, Item::Alias(i)));
+    data.chain(routines).chain(records).chain(aliases)
+}
+
+/// Configured I/O signals: folded name to RAPID data type.
+pub type Signals = HashMap<String, &'static str>;
+
+/// The signals declared in an I/O configuration file (`EIO.cfg`): every
+/// entry of a section whose name holds `SIGNAL`, with its `-Name` and
+/// `-SignalType` (DI, DO, AI, AO, GI, GO). Entries may continue over lines
+/// ending in `\`.
+pub fn parse_eio_signals(cfg: &str) -> Signals {
+    let mut out = HashMap::new();
+    let mut in_signals = false;
+    let mut entry = String::new();
+    let flush = |entry: &mut String, out: &mut Signals| {
+        if let Some(name) = option_value(entry, "-Name") {
+            let ty = match option_value(entry, "-SignalType")
+                .map(|t| t.to_ascii_uppercase())
+                .as_deref()
+            {
+                Some("DI") => "signaldi",
+                Some("DO") => "signaldo",
+                Some("AI") => "signalai",
+                Some("AO") => "signalao",
+                Some("GI") => "signalgi",
+                Some("GO") => "signalgo",
+                _ => "signaldi",
+            };
+            out.insert(fold(&name), ty);
+        }
+        entry.clear();
+    };
+    for line in cfg.lines() {
+        let trimmed = line.trim();
+        if trimmed.ends_with(':') && !trimmed.starts_with('-') && !trimmed.contains(' ') {
+            flush(&mut entry, &mut out);
+            in_signals = trimmed.to_ascii_uppercase().contains("SIGNAL");
+            continue;
+        }
+        if !in_signals {
+            continue;
+        }
+        if trimmed.starts_with("-Name") {
+            flush(&mut entry, &mut out);
+        }
+        entry.push(' ');
+        entry.push_str(trimmed.trim_end_matches('\\'));
+    }
+    flush(&mut entry, &mut out);
+    out
+}
+
+/// The value of `-Option "value"` (or `-Option value`) in a config entry.
+fn option_value(entry: &str, option: &str) -> Option<String> {
+    let at = entry.find(&format!("{option} "))?;
+    let rest = entry[at + option.len()..].trim_start();
+    let value = match rest.strip_prefix('"') {
+        Some(q) => q.split('"').next().unwrap_or_default(),
+        None => rest.split_whitespace().next().unwrap_or_default(),
+    };
+    (!value.is_empty()).then(|| value.to_owned())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn tasks_follow_the_backup_layout() {
+        assert_eq!(task_key("b/RAPID/TASK1/PROGMOD/Main.mod"), "b/RAPID/TASK1");
+        assert_eq!(task_key("b/RAPID/TASK2/SYSMOD/user.sys"), "b/RAPID/TASK2");
+        assert_eq!(task_key("proj/src/Main.mod"), "proj/src");
+        assert_eq!(task_key("Main.mod"), "");
+        assert_eq!(
+            task_key(r"c:\b\RAPID\TASK1\PROGMOD\a.mod"),
+            "c:/b/RAPID/TASK1"
+        );
+    }
+
+    #[test]
+    fn signals_come_from_the_signal_section() {
+        let cfg = "EIO:CFG_1.0:6:1::\n#\nEIO_SIGNAL:\n\n  -Name \"diA\" -SignalType \"DI\"\\\n  -Device \"d1\"\n  -Name doB -SignalType \"DO\"\n#\nEIO_CROSS:\n  -Name \"notASignal\"\n";
+        let signals = parse_eio_signals(cfg);
+        assert_eq!(signals.get("dia"), Some(&"signaldi"));
+        assert_eq!(signals.get("dob"), Some(&"signaldo"));
+        assert!(!signals.contains_key("notasignal"));
+    }
+}

@@ -1,0 +1,309 @@
+//! Types as the checker sees them, and the table of every type a task knows:
+//! the catalogue's and the user's `RECORD` and `ALIAS` declarations.
+
+use std::collections::HashMap;
+use std::fmt;
+
+use crate::catalogue::{Catalogue, TypeKind, ValueClass, catalogue};
+use crate::items::{AliasDecl, RecordDecl};
+use crate::names::{fold, same};
+
+/// The type of a value, a data object or a parameter.
+#[derive(Clone, Debug)]
+pub enum Ty {
+    /// Not known (an error was reported already, or the name is unresolved):
+    /// compatible with everything, so one mistake gives one diagnostic.
+    Unknown,
+    /// A built-in routine's `anytype` parameter.
+    Any,
+    /// A named type, as spelt where it was declared.
+    Named(String),
+    /// An array of `dims` dimensions.
+    Array(Box<Ty>, u8),
+}
+
+impl Ty {
+    pub fn named(name: &str) -> Ty {
+        Ty::Named(name.to_owned())
+    }
+
+    pub fn num() -> Ty {
+        Ty::named("num")
+    }
+
+    pub fn bool() -> Ty {
+        Ty::named("bool")
+    }
+
+    pub fn string() -> Ty {
+        Ty::named("string")
+    }
+
+    /// An array of this type, or this type if `dims` is 0.
+    pub fn array(self, dims: u8) -> Ty {
+        match (dims, self) {
+            (0, ty) => ty,
+            (_, Ty::Unknown) => Ty::Unknown,
+            (d, ty) => Ty::Array(Box::new(ty), d),
+        }
+    }
+
+    pub fn is_unknown(&self) -> bool {
+        matches!(self, Ty::Unknown | Ty::Any)
+    }
+
+    /// Is this the named type `name` (no alias resolution)?
+    pub fn is(&self, name: &str) -> bool {
+        matches!(self, Ty::Named(n) if same(n, name))
+    }
+
+    pub fn dims(&self) -> u8 {
+        match self {
+            Ty::Array(_, d) => *d,
+            _ => 0,
+        }
+    }
+
+    /// The element type of an array (the type itself otherwise).
+    pub fn element(&self) -> &Ty {
+        match self {
+            Ty::Array(e, _) => e,
+            t => t,
+        }
+    }
+}
+
+impl PartialEq for Ty {
+    fn eq(&self, other: &Ty) -> bool {
+        match (self, other) {
+            (Ty::Unknown, Ty::Unknown) | (Ty::Any, Ty::Any) => true,
+            (Ty::Named(a), Ty::Named(b)) => same(a, b),
+            (Ty::Array(a, n), Ty::Array(b, m)) => n == m && a == b,
+            _ => false,
+        }
+    }
+}
+
+impl fmt::Display for Ty {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Ty::Unknown => f.write_str("unknown"),
+            Ty::Any => f.write_str("anytype"),
+            Ty::Named(n) => f.write_str(n),
+            Ty::Array(e, d) => {
+                let stars = vec!["*"; usize::from(*d)].join(",");
+                write!(f, "{e}{{{stars}}}")
+            }
+        }
+    }
+}
+
+/// A user-declared type.
+#[derive(Clone, Copy, Debug)]
+pub enum UserType<'a> {
+    Record(&'a RecordDecl),
+    Alias(&'a AliasDecl),
+}
+
+/// Every type a task knows.
+pub struct Types<'a> {
+    user: HashMap<String, UserType<'a>>,
+    catalogue: &'static Catalogue,
+}
+
+/// The semi-value signal types, read as numbers in expressions.
+const SIGNALS: &[&str] = &[
+    "signaldi", "signaldo", "signalgi", "signalgo", "signalai", "signalao",
+];
+
+impl<'a> Types<'a> {
+    pub fn new(user: impl IntoIterator<Item = UserType<'a>>) -> Types<'a> {
+        let mut map = HashMap::new();
+        for t in user {
+            let name = match t {
+                UserType::Record(r) => &r.name,
+                UserType::Alias(a) => &a.name,
+            };
+            map.entry(fold(name)).or_insert(t);
+        }
+        Types {
+            user: map,
+            catalogue: catalogue(),
+        }
+    }
+
+    /// Is there a type of this name?
+    pub fn exists(&self, name: &str) -> bool {
+        self.user.contains_key(&fold(name))
+            || self.catalogue.datatype(name).is_some()
+            || name.eq_ignore_ascii_case("switch")
+    }
+
+    /// Is this a type the task knows (an unresolved type name is reported
+    /// where it is declared, and behaves as unknown everywhere else)?
+    pub fn is_known(&self, ty: &Ty) -> bool {
+        match ty.element() {
+            Ty::Named(n) => self.exists(n),
+            _ => false,
+        }
+    }
+
+    pub fn user(&self, name: &str) -> Option<UserType<'a>> {
+        self.user.get(&fold(name)).copied()
+    }
+
+    /// Follows aliases (user and built-in) to the type they stand for.
+    pub fn base(&self, ty: &Ty) -> Ty {
+        match ty {
+            Ty::Named(name) => {
+                let mut current = name.clone();
+                for _ in 0..16 {
+                    let next = match self.user(&current) {
+                        Some(UserType::Alias(a)) => a.of.as_ref().map(|t| t.name.clone()),
+                        Some(UserType::Record(_)) => None,
+                        None => self
+                            .catalogue
+                            .datatype(&current)
+                            .and_then(|t| t.alias_of.clone()),
+                    };
+                    match next {
+                        Some(n) => current = n,
+                        None => break,
+                    }
+                }
+                Ty::Named(current)
+            }
+            Ty::Array(e, d) => Ty::Array(Box::new(self.base(e)), *d),
+            other => other.clone(),
+        }
+    }
+
+    /// The components of a record type, in order (after alias resolution).
+    pub fn components(&self, ty: &Ty) -> Option<Vec<(String, Ty)>> {
+        let Ty::Named(name) = self.base(ty) else {
+            return None;
+        };
+        if let Some(UserType::Record(r)) = self.user(&name) {
+            return Some(
+                r.components
+                    .iter()
+                    .map(|(n, t, _)| {
+                        (
+                            n.clone(),
+                            t.as_ref().map_or(Ty::Unknown, |t| Ty::named(&t.name)),
+                        )
+                    })
+                    .collect(),
+            );
+        }
+        let t = self.catalogue.datatype(&name)?;
+        (t.kind == TypeKind::Record).then(|| {
+            t.components
+                .iter()
+                .map(|c| (c.name.clone(), Ty::named(&c.ty)))
+                .collect()
+        })
+    }
+
+    /// The type of component `name` of a record type.
+    pub fn component(&self, ty: &Ty, name: &str) -> Option<Ty> {
+        self.components(ty)?
+            .into_iter()
+            .find(|(n, _)| same(n, name))
+            .map(|(_, t)| t)
+    }
+
+    /// Value, semi-value or non-value (user records are value types unless a
+    /// component is not; unknown types count as value types).
+    pub fn value_class(&self, ty: &Ty) -> ValueClass {
+        let Ty::Named(name) = self.base(ty.element()) else {
+            return ValueClass::Value;
+        };
+        if self.user(&name).is_some() {
+            return ValueClass::Value;
+        }
+        self.catalogue
+            .datatype(&name)
+            .and_then(|t| t.value_class)
+            .unwrap_or(ValueClass::Value)
+    }
+
+    fn is_numeric(&self, ty: &Ty) -> bool {
+        let base = self.base(ty);
+        base.is("num") || base.is("dnum")
+    }
+
+    /// Is this a signal type, whose value reads as a number?
+    pub fn is_signal(&self, ty: &Ty) -> bool {
+        let base = self.base(ty);
+        SIGNALS.iter().any(|s| base.is(s))
+    }
+
+    /// The type a value of `ty` has when read in an expression: signals read
+    /// as numbers, everything else as itself.
+    pub fn value_type(&self, ty: &Ty) -> Ty {
+        if self.is_signal(ty) {
+            Ty::num()
+        } else {
+            ty.clone()
+        }
+    }
+
+    pub fn is_num_like(&self, ty: &Ty) -> bool {
+        ty.is_unknown() || self.is_numeric(ty) || self.is_signal(ty)
+    }
+
+    pub fn is_bool(&self, ty: &Ty) -> bool {
+        ty.is_unknown() || self.base(ty).is("bool")
+    }
+
+    /// May a value of type `value` be stored where `target` is expected?
+    /// Aliases are their base type; `num` and `dnum` convert into each other;
+    /// a signal reads as a number.
+    pub fn assignable(&self, target: &Ty, value: &Ty) -> bool {
+        if !self.is_known(target) || !self.is_known(value) {
+            return true;
+        }
+        match (target, value) {
+            (Ty::Array(t, n), Ty::Array(v, m)) => n == m && self.assignable(t, v),
+            (Ty::Array(..), _) | (_, Ty::Array(..)) => false,
+            _ => {
+                let (t, v) = (self.base(target), self.base(value));
+                t == v || (self.is_numeric(&t) && (self.is_numeric(&v) || self.is_signal(&v)))
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn aliases_are_their_base_type() {
+        let types = Types::new([]);
+        assert!(types.assignable(&Ty::named("errnum"), &Ty::num()));
+        assert!(types.assignable(&Ty::num(), &Ty::named("ERRNUM")));
+        assert!(!types.assignable(&Ty::string(), &Ty::num()));
+        assert!(types.assignable(&Ty::named("dnum"), &Ty::num()));
+        assert!(types.assignable(&Ty::num(), &Ty::named("signaldi")));
+        assert!(!types.assignable(&Ty::num().array(1), &Ty::num()));
+    }
+
+    #[test]
+    fn records_have_components() {
+        let types = Types::new([]);
+        let pos = types.components(&Ty::named("pos")).unwrap_or_default();
+        let names: Vec<_> = pos.iter().map(|(n, _)| n.as_str()).collect();
+        assert_eq!(names, ["x", "y", "z"]);
+        assert_eq!(
+            types.component(&Ty::named("robtarget"), "TRANS"),
+            Some(Ty::named("pos"))
+        );
+    }
+
+    #[test]
+    fn array_types_display_as_rapid_writes_parameters() {
+        assert_eq!(Ty::num().array(2).to_string(), "num{*,*}");
+    }
+}
