@@ -72,10 +72,10 @@ fn rapid_syntax(bencher: Bencher<'_, '_>) {
         .counter(BytesCount::new(corpus.total))
         .bench_local(|| {
             for bytes in &corpus.bytes {
-                if let Decoded::Text { text, .. } = decode(bytes) {
-                    if let Some(tree) = rapid_analyzer::syntax::parse(&mut parser, &text, None) {
-                        divan::black_box(rapid_analyzer::syntax::syntax_diagnostics(&tree, &text));
-                    }
+                if let Decoded::Text { text, .. } = decode(bytes)
+                    && let Some(tree) = rapid_analyzer::syntax::parse(&mut parser, &text, None)
+                {
+                    divan::black_box(rapid_analyzer::syntax::syntax_diagnostics(&tree, &text));
                 }
             }
         });
