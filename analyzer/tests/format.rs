@@ -7,7 +7,7 @@
 
 use std::path::{Path, PathBuf};
 
-use rapid_analyzer::format::{FormatOptions, format};
+use rapid_analyzer::format::{FormatOptions, format, verify};
 
 fn options(input: &str) -> FormatOptions {
     let mut options = FormatOptions::default();
@@ -71,6 +71,9 @@ fn fixtures_format_to_their_expected_output() {
                     "{}: not idempotent:\n{again}",
                     input_path.display()
                 ));
+            }
+            if let Err(e) = verify(&input, &got) {
+                failures.push(format!("{}: {e}", input_path.display()));
             }
         }
     }

@@ -62,6 +62,9 @@ pub(super) struct Tok<'t> {
     /// `ERROR`, `CASE`...): a comment just before it belongs to the block
     /// body and is indented one level deeper.
     pub closer: bool,
+    /// A line-starting token that opens a block (`PROC`, `IF`, `ELSE`,
+    /// `TEST`, `CASE`, `ERROR`...): the lines after it are one level deeper.
+    pub opens: bool,
     /// First token of a routine (or module) that follows another one: the two
     /// are separated by exactly one blank line.
     pub unit_start_after_unit: bool,
@@ -86,6 +89,26 @@ const SAME_LEVEL: &[&str] = &[
 /// Node kinds that start a line one level deeper than their parent.
 const DEEPER: &[&str] = &["test_case", "default_case", "record_component"];
 
+/// Node kinds whose first line opens a block of deeper lines.
+const BLOCKS: &[&str] = &[
+    "module",
+    "procedure_declaration",
+    "function_declaration",
+    "trap_declaration",
+    "record_declaration",
+    "if_statement",
+    "elseif_clause",
+    "else_clause",
+    "for_statement",
+    "while_statement",
+    "test_statement",
+    "test_case",
+    "default_case",
+    "error_handler",
+    "backward_handler",
+    "undo_handler",
+];
+
 const ROUTINES: &[&str] = &[
     "procedure_declaration",
     "function_declaration",
@@ -96,6 +119,7 @@ const ROUTINES: &[&str] = &[
 struct Pending {
     line_start: Option<usize>,
     closer: bool,
+    opens: bool,
     no_blank: bool,
     unit_start_after_unit: bool,
     wrap_point: bool,
@@ -123,6 +147,7 @@ pub(super) fn collect<'t>(root: Node<'_>, text: &'t str, indent_width: usize) ->
             "module" => {
                 c.pending = Pending {
                     line_start: Some(0),
+                    opens: true,
                     unit_start_after_unit: previous_module,
                     ..Pending::default()
                 };
@@ -194,10 +219,12 @@ impl<'t> Collector<'t> {
         let child = cursor.node();
         let kind = child.kind();
         let iw = self.indent_width;
+        let opens = BLOCKS.contains(&kind);
         let mut start = |column: usize, closer: bool, no_blank: bool| {
             self.pending.line_start = Some(column);
             self.pending.closer = closer;
             self.pending.no_blank = no_blank;
+            self.pending.opens = opens;
         };
         match parent.kind() {
             "compact_if_statement" => indent,
@@ -211,6 +238,7 @@ impl<'t> Collector<'t> {
             }
             "module" if kind == "module" => {
                 start(indent, false, false);
+                self.pending.opens = true;
                 indent
             }
             _ if !child.is_named() && is_end_keyword(kind) => {
@@ -262,6 +290,7 @@ impl<'t> Collector<'t> {
             class,
             line_start: pending.line_start,
             closer: pending.closer,
+            opens: pending.opens,
             unit_start_after_unit: pending.unit_start_after_unit,
             wrap_point: pending.wrap_point,
             no_blank: pending.no_blank,

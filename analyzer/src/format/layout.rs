@@ -59,6 +59,8 @@ pub(super) fn layout(toks: &[Tok<'_>], text: &str, options: &FormatOptions) -> V
     let mut statement_indent = vec![0; n];
     let mut stmt = 0;
     let mut line_indent = 0;
+    // where a statement would go after the last line-starting token
+    let mut body_level = 0;
     // for each open bracket, the indentation of lines inside it
     let mut stack: Vec<usize> = Vec::new();
     let continuation = |stack: &[usize], stmt: usize, tok: &Tok<'_>| match stack.last() {
@@ -83,7 +85,7 @@ pub(super) fn layout(toks: &[Tok<'_>], text: &str, options: &FormatOptions) -> V
             let indent = match next_code[i].map(|j| &toks[j]) {
                 None => 0,
                 Some(next) => match next.line_start {
-                    Some(column) if next.closer => column + iw,
+                    Some(_) if next.closer => body_level,
                     Some(column) => column,
                     None => continuation(&stack, stmt, next),
                 },
@@ -109,6 +111,7 @@ pub(super) fn layout(toks: &[Tok<'_>], text: &str, options: &FormatOptions) -> V
         };
         if let Some(column) = tok.line_start {
             stmt = column;
+            body_level = if tok.opens { column + iw } else { column };
             stack.clear();
         }
         if let Gap::Line { indent, .. } = gap {

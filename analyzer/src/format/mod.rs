@@ -35,9 +35,10 @@
 //!   one, and a single blank line is kept where the user put one.
 //! - Comments stay where they are: a trailing comment stays at the end of its
 //!   line with the blanks before it kept; a comment on its own line keeps its
-//!   line, indented like the statement after it (or like a statement of the
-//!   block body, when the next line closes or splits the block: `ENDIF`,
-//!   `ELSE`, `CASE`, `ERROR`...). Trailing blanks in comments are removed.
+//!   line, indented like the statement after it or, when the next line
+//!   closes or splits a block (`ENDIF`, `ELSE`, `CASE`, `ERROR`...), like a
+//!   statement of the block body before it (so commented-out code at the end
+//!   of a body stays in the body). Trailing blanks in comments are removed.
 //! - The `%%%` header: `%%%` lines at column 0, each entry on its own line
 //!   indented by two spaces (`  VERSION:1`), as RobotStudio writes it.
 //! - Text after an `ENDMODULE` that is not RAPID (trailing junk, which the
@@ -137,8 +138,10 @@ pub fn format_edits(text: &str, options: &FormatOptions) -> Result<Vec<Edit>, Fo
     Ok(run(text, options)?.edits)
 }
 
-/// The edits of [`format_edits`] that touch the lines of `range` (a byte
-/// range of `text`, extended to whole lines). The whole text must parse.
+/// The edits of [`format_edits`] for the lines of `range` (a byte range of
+/// `text`, extended to whole lines): those that end on these lines, so the
+/// line break and indentation before a line belong to it. The whole text
+/// must parse.
 pub fn format_range(
     text: &str,
     range: Range<usize>,
@@ -152,7 +155,7 @@ pub fn format_range(
     let end = index.line_range(last, text).end;
     Ok(edits
         .into_iter()
-        .filter(|e| e.range.start <= end && e.range.end >= start)
+        .filter(|e| e.range.end >= start && e.range.end <= end)
         .collect())
 }
 
@@ -316,5 +319,114 @@ fn collect_leaves(node: Node<'_>, out: &mut Vec<(Range<usize>, bool, bool)>) {
     let mut cursor = node.walk();
     for child in node.children(&mut cursor) {
         collect_leaves(child, out);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn fmt(text: &str) -> String {
+        format(text, &FormatOptions::default()).expect("formats")
+    }
+
+    fn apply(text: &str, edits: &[Edit]) -> String {
+        let mut out = text.to_owned();
+        for e in edits.iter().rev() {
+            out.replace_range(e.range.clone(), &e.replacement);
+        }
+        out
+    }
+
+    #[test]
+    fn line_endings_are_kept() {
+        let crlf = "MODULE M\r\nVAR num a:=1;\r\nENDMODULE\r\n";
+        assert_eq!(
+            fmt(crlf),
+            "MODULE M\r\n    VAR num a := 1;\r\nENDMODULE\r\n"
+        );
+        let cr = "MODULE M\rVAR num a:=1;\rENDMODULE\r";
+        assert_eq!(fmt(cr), "MODULE M\r    VAR num a := 1;\rENDMODULE\r");
+        let lf = "MODULE M\nPROC p() x:=1; ENDPROC ENDMODULE";
+        assert_eq!(
+            fmt(lf),
+            "MODULE M\n    PROC p()\n        x := 1;\n    ENDPROC\nENDMODULE"
+        );
+    }
+
+    #[test]
+    fn final_line_breaks_collapse_to_one_and_none_stays_none() {
+        assert_eq!(fmt("MODULE M\nENDMODULE\n\n\n"), "MODULE M\nENDMODULE\n");
+        assert_eq!(fmt("MODULE M\nENDMODULE   "), "MODULE M\nENDMODULE");
+        assert_eq!(fmt("\n\n  MODULE M\nENDMODULE"), "MODULE M\nENDMODULE");
+    }
+
+    #[test]
+    fn latin1_text_and_identifier_case_are_untouched() {
+        let text = "MODULE m\n! Größe °C\nvar NUM MyVar;\nENDMODULE\n";
+        assert_eq!(
+            fmt(text),
+            "MODULE m\n    ! Größe °C\n    VAR NUM MyVar;\nENDMODULE\n"
+        );
+    }
+
+    #[test]
+    fn syntax_errors_give_the_first_position() {
+        let err = format(
+            "MODULE M\n  PROC p()\n    x := ;\n  ENDPROC\nENDMODULE\n",
+            &FormatOptions::default(),
+        );
+        let Err(FormatError::Syntax { line, column, .. }) = err else {
+            panic!("a syntax error: {err:?}")
+        };
+        assert_eq!(line, 3);
+        assert!(column > 5, "{column}");
+    }
+
+    #[test]
+    fn edits_rebuild_the_formatted_text() {
+        let text = "MODULE M\nPROC p()\nif a then b:=1; endif\nENDPROC\nENDMODULE\n";
+        let edits = format_edits(text, &FormatOptions::default()).expect("formats");
+        assert_eq!(apply(text, &edits), fmt(text));
+        assert!(edits.windows(2).all(|w| w[0].range.end <= w[1].range.start));
+    }
+
+    #[test]
+    fn range_formatting_touches_only_the_lines_asked_for() {
+        let text = "MODULE M\nPROC p()\nx:=1;\ny:=2;\nENDPROC\nENDMODULE\n";
+        let y = text.find("y:=").expect("y");
+        let edits = format_range(text, y..y + 1, &FormatOptions::default()).expect("formats");
+        assert_eq!(
+            apply(text, &edits),
+            "MODULE M\nPROC p()\nx:=1;\n        y := 2;\nENDPROC\nENDMODULE\n"
+        );
+    }
+
+    #[test]
+    fn formatting_is_idempotent_on_odd_layouts() {
+        for text in [
+            "MODULE M PROC p() MoveL p1,v1,z1,t1; ENDPROC ENDMODULE",
+            "MODULE M\n\tPROC p()\n\t\tx:=[1,\n2,\n[3,\n4]];\n\tENDPROC\nENDMODULE\n",
+            "MODULE M\nPROC p()\n! only a comment\nENDPROC\nENDMODULE",
+            "! file comment\n\n\nMODULE M\nENDMODULE\n! end\n",
+        ] {
+            let once = fmt(text);
+            assert_eq!(fmt(&once), once, "{text:?}");
+            assert_eq!(verify(text, &once), Ok(()));
+        }
+    }
+
+    #[test]
+    fn verify_notices_a_changed_token() {
+        let err = verify("MODULE M\nENDMODULE\n", "MODULE N\nENDMODULE\n");
+        assert!(matches!(err, Err(FormatError::Internal { .. })), "{err:?}");
+    }
+
+    #[test]
+    fn tokens_never_merge() {
+        // names stay apart even where the spacing rules would join them
+        let out = fmt("MODULE M\nPROC p()\nFoo a\\B;\nx:=a.b{1};\nENDPROC\nENDMODULE\n");
+        assert!(out.contains("Foo a\\B;"), "{out}");
+        assert!(out.contains("x := a.b{1};"), "{out}");
     }
 }

@@ -1,0 +1,3 @@
+MODULE NoFinalNewline
+    VAR num a := 1;
+ENDMODULE

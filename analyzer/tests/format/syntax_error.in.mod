@@ -1,0 +1,5 @@
+MODULE Broken
+    PROC main()
+        x := ;
+    ENDPROC
+ENDMODULE

@@ -1,0 +1,1 @@
+ERROR 3:13: syntax error, not formatted: missing a name
