@@ -1,0 +1,193 @@
+//! `rapid fmt` end to end: the built binary on files in a scratch folder.
+
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output, Stdio};
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+const UNFORMATTED: &str = "MODULE M\nVAR num a:=1;\nENDMODULE\n";
+const FORMATTED: &str = "MODULE M\n    VAR num a := 1;\nENDMODULE\n";
+
+/// A fresh empty folder for one test.
+fn scratch(name: &str) -> PathBuf {
+    static N: AtomicUsize = AtomicUsize::new(0);
+    let dir = std::env::temp_dir().join(format!(
+        "rapid-fmt-{}-{}-{name}",
+        std::process::id(),
+        N.fetch_add(1, Ordering::Relaxed)
+    ));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("scratch folder");
+    dir
+}
+
+fn rapid(dir: &Path, args: &[&str], stdin: Option<&[u8]>) -> Output {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_rapid"))
+        .arg("fmt")
+        .args(args)
+        .current_dir(dir)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("the rapid binary runs");
+    let mut input = child.stdin.take().expect("stdin");
+    input
+        .write_all(stdin.unwrap_or_default())
+        .expect("stdin written");
+    drop(input);
+    child.wait_with_output().expect("rapid finishes")
+}
+
+fn text(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).into_owned()
+}
+
+#[test]
+fn rewrites_files_in_place() {
+    let dir = scratch("in-place");
+    std::fs::write(dir.join("a.mod"), UNFORMATTED).expect("written");
+    std::fs::write(dir.join("b.mod"), FORMATTED).expect("written");
+    let out = rapid(&dir, &[], None);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(
+        std::fs::read_to_string(dir.join("a.mod")).expect("read"),
+        FORMATTED
+    );
+    assert_eq!(
+        std::fs::read_to_string(dir.join("b.mod")).expect("read"),
+        FORMATTED
+    );
+    assert_eq!(text(&out.stderr), "1 file reformatted, 1 left unchanged\n");
+}
+
+#[test]
+fn check_lists_files_that_would_change_and_exits_1() {
+    let dir = scratch("check");
+    std::fs::write(dir.join("a.mod"), UNFORMATTED).expect("written");
+    std::fs::write(dir.join("b.mod"), FORMATTED).expect("written");
+    let out = rapid(&dir, &["--check", "."], None);
+    assert_eq!(out.status.code(), Some(1));
+    assert_eq!(
+        text(&out.stdout),
+        format!("{}\n", Path::new(".").join("a.mod").display())
+    );
+    assert_eq!(
+        std::fs::read_to_string(dir.join("a.mod")).expect("read"),
+        UNFORMATTED
+    );
+
+    let out = rapid(&dir, &["--check", "b.mod"], None);
+    assert_eq!(out.status.code(), Some(0));
+    assert_eq!(text(&out.stdout), "");
+}
+
+#[test]
+fn diff_prints_a_unified_diff_and_exits_1() {
+    let dir = scratch("diff");
+    std::fs::write(dir.join("a.mod"), UNFORMATTED).expect("written");
+    let out = rapid(&dir, &["--diff", "a.mod"], None);
+    assert_eq!(out.status.code(), Some(1));
+    assert_eq!(
+        text(&out.stdout),
+        "--- a/a.mod\n+++ b/a.mod\n@@ -1,3 +1,3 @@\n MODULE M\n-VAR num a:=1;\n+    VAR num a := 1;\n ENDMODULE\n"
+    );
+    assert_eq!(
+        std::fs::read_to_string(dir.join("a.mod")).expect("read"),
+        UNFORMATTED
+    );
+}
+
+#[test]
+fn dash_reads_stdin_and_writes_stdout() {
+    let dir = scratch("stdin");
+    let out = rapid(&dir, &["-"], Some(UNFORMATTED.as_bytes()));
+    assert_eq!(out.status.code(), Some(0));
+    assert_eq!(text(&out.stdout), FORMATTED);
+
+    let out = rapid(&dir, &["--check", "-"], Some(UNFORMATTED.as_bytes()));
+    assert_eq!(out.status.code(), Some(1));
+    assert_eq!(text(&out.stdout), "");
+
+    // broken input goes through unchanged, with the error on stderr
+    let broken = b"MODULE M\nPROC p()\nx := ;\nENDPROC\nENDMODULE\n";
+    let out = rapid(&dir, &["-"], Some(broken));
+    assert_eq!(out.status.code(), Some(1));
+    assert_eq!(out.stdout, broken);
+    assert!(
+        text(&out.stderr).starts_with("rapid: <stdin>:3:"),
+        "{}",
+        text(&out.stderr)
+    );
+}
+
+#[test]
+fn encoding_and_line_endings_are_kept() {
+    let dir = scratch("encoding");
+    // Latin-1 ("Größe" with 0xF6 and 0xDF), CRLF, no final line break
+    let latin1 = b"MODULE M\r\n! Gr\xF6\xDFe\r\nVAR num a:=1;\r\nENDMODULE";
+    std::fs::write(dir.join("a.mod"), latin1).expect("written");
+    let out = rapid(&dir, &["a.mod"], None);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(
+        std::fs::read(dir.join("a.mod")).expect("read"),
+        b"MODULE M\r\n    ! Gr\xF6\xDFe\r\n    VAR num a := 1;\r\nENDMODULE"
+    );
+}
+
+#[test]
+fn files_with_syntax_errors_are_left_untouched() {
+    let dir = scratch("syntax");
+    let broken = "MODULE M\nPROC p()\nx := ;\nENDPROC\nENDMODULE\n";
+    std::fs::write(dir.join("broken.mod"), broken).expect("written");
+    std::fs::write(dir.join("fine.mod"), UNFORMATTED).expect("written");
+    let out = rapid(&dir, &["broken.mod", "fine.mod"], None);
+    assert_eq!(out.status.code(), Some(1));
+    let stderr = text(&out.stderr);
+    assert!(stderr.starts_with("rapid: broken.mod:3:"), "{stderr}");
+    assert!(stderr.contains("syntax error, not formatted"), "{stderr}");
+    assert_eq!(
+        std::fs::read_to_string(dir.join("broken.mod")).expect("read"),
+        broken
+    );
+    assert_eq!(
+        std::fs::read_to_string(dir.join("fine.mod")).expect("read"),
+        FORMATTED
+    );
+}
+
+#[test]
+fn rapid_toml_sets_the_layout() {
+    let dir = scratch("config");
+    std::fs::create_dir_all(dir.join("src")).expect("folder");
+    std::fs::write(dir.join("rapid.toml"), "[format]\nindent-width = 2\n").expect("written");
+    std::fs::write(dir.join("src/a.mod"), UNFORMATTED).expect("written");
+    let out = rapid(&dir, &["src"], None);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(
+        std::fs::read_to_string(dir.join("src/a.mod")).expect("read"),
+        "MODULE M\n  VAR num a := 1;\nENDMODULE\n"
+    );
+}
+
+#[test]
+fn a_bad_configuration_exits_2_naming_file_line_and_key() {
+    let dir = scratch("bad-config");
+    std::fs::write(
+        dir.join("custom.toml"),
+        "[format]\nindent-width = 2\ntab-width = 8\n",
+    )
+    .expect("written");
+    std::fs::write(dir.join("a.mod"), UNFORMATTED).expect("written");
+    let out = rapid(&dir, &["--config", "custom.toml", "a.mod"], None);
+    assert_eq!(out.status.code(), Some(2));
+    let stderr = text(&out.stderr);
+    assert!(
+        stderr.starts_with("rapid: custom.toml:3: unknown field `tab-width`"),
+        "{stderr}"
+    );
+    assert_eq!(
+        std::fs::read_to_string(dir.join("a.mod")).expect("read"),
+        UNFORMATTED
+    );
+}
