@@ -1,6 +1,7 @@
 //! `rapid`: the language server, CI linter, evaluator and formatter for ABB
 //! RAPID.
 
+mod builtins;
 mod check;
 mod config;
 mod fmt;
@@ -25,6 +26,9 @@ enum Command {
     Check(check::CheckArgs),
     /// Rewrite RAPID files in the canonical layout.
     Fmt(fmt::FmtArgs),
+    /// Show the built-in catalogue: functions, instructions, data types and
+    /// predefined data.
+    Builtins(builtins::BuiltinsArgs),
 }
 
 fn main() -> ExitCode {
@@ -42,5 +46,6 @@ fn main() -> ExitCode {
     match cli.command {
         Command::Check(args) => check::run(args),
         Command::Fmt(args) => fmt::run(args),
+        Command::Builtins(args) => builtins::run(args),
     }
 }
