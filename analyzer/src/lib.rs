@@ -6,6 +6,7 @@ pub mod catalogue;
 pub mod check;
 pub mod diagnostic;
 pub mod format;
+pub mod ide;
 pub mod items;
 pub mod names;
 pub mod rules;

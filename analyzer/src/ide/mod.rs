@@ -1,0 +1,284 @@
+//! Editor features as plain data with byte ranges: hover, completion,
+//! signature help, navigation, rename, symbols, semantic tokens, folding,
+//! selection ranges, inlay hints and code actions.
+//!
+//! Every function takes a task, the index of a unit in it and a byte offset
+//! (or range), and never panics: offsets past the end, inside comments or in
+//! broken code give empty answers. The language server converts the results
+//! to protocol types and positions.
+
+use std::ops::Range;
+use std::sync::Arc;
+
+use crate::diagnostic::{Diagnostic, Edit};
+use crate::task::{Task, Unit};
+
+/// A place in a file: the name's range and the whole declaration's range.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Location {
+    pub path: String,
+    pub range: Range<usize>,
+    pub full_range: Range<usize>,
+}
+
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct HoverResult {
+    pub range: Range<usize>,
+    pub markdown: String,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum CompletionKind {
+    Keyword,
+    Snippet,
+    Procedure,
+    Function,
+    Trap,
+    Variable,
+    Persistent,
+    Constant,
+    Parameter,
+    Type,
+    Component,
+    OptionalArgument,
+    Module,
+    Label,
+}
+
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct CompletionItem {
+    pub label: String,
+    pub kind: CompletionKind,
+    pub detail: Option<String>,
+    pub insert_text: Option<String>,
+    pub is_snippet: bool,
+    pub sort_text: Option<String>,
+}
+
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SignatureHelp {
+    pub label: String,
+    /// Each parameter's range in `label` and its documentation.
+    pub parameters: Vec<(Range<usize>, Option<String>)>,
+    pub active_parameter: Option<usize>,
+    pub documentation: Option<String>,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum SymbolKind {
+    Module,
+    Procedure,
+    Function,
+    Trap,
+    Variable,
+    Persistent,
+    Constant,
+    Record,
+    Alias,
+    Component,
+}
+
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Symbol {
+    pub name: String,
+    pub kind: SymbolKind,
+    pub range: Range<usize>,
+    pub selection_range: Range<usize>,
+    pub detail: Option<String>,
+    pub children: Vec<Symbol>,
+}
+
+/// Semantic token types, in the order of [`TOKEN_TYPES`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[repr(u32)]
+pub enum TokenType {
+    Keyword = 0,
+    Type,
+    Function,
+    Method,
+    Variable,
+    Parameter,
+    Property,
+    Number,
+    String,
+    Comment,
+    Operator,
+    Label,
+    Namespace,
+    EnumMember,
+    Macro,
+}
+
+/// The LSP names of [`TokenType`], indexed by its value.
+pub const TOKEN_TYPES: &[&str] = &[
+    "keyword",
+    "type",
+    "function",
+    "method",
+    "variable",
+    "parameter",
+    "property",
+    "number",
+    "string",
+    "comment",
+    "operator",
+    "label",
+    "namespace",
+    "enumMember",
+    "macro",
+];
+
+/// Modifier bits: `1 << index` into [`TOKEN_MODIFIERS`].
+pub const MOD_DECLARATION: u32 = 1;
+pub const MOD_READONLY: u32 = 1 << 1;
+pub const MOD_DEFAULT_LIBRARY: u32 = 1 << 2;
+pub const MOD_STATIC: u32 = 1 << 3;
+
+/// The LSP names of the modifier bits.
+pub const TOKEN_MODIFIERS: &[&str] = &["declaration", "readonly", "defaultLibrary", "static"];
+
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SemanticToken {
+    pub range: Range<usize>,
+    pub token_type: u32,
+    pub modifiers: u32,
+}
+
+/// A foldable line range (0-based lines).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct FoldingRange {
+    pub start_line: usize,
+    pub end_line: usize,
+    /// `"comment"`, `"region"` or `None`.
+    pub kind: Option<&'static str>,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum InlayKind {
+    Parameter,
+    Value,
+}
+
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct InlayHint {
+    pub offset: usize,
+    pub label: String,
+    pub kind: InlayKind,
+}
+
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct CodeAction {
+    pub title: String,
+    pub edits: Vec<Edit>,
+    /// Index into the diagnostics given to [`code_actions`].
+    pub diagnostic: Option<usize>,
+    pub preferred: bool,
+}
+
+pub fn completions(task: &Task, unit: usize, offset: usize) -> Vec<CompletionItem> {
+    let _ = (task, unit, offset);
+    Vec::new()
+}
+
+pub fn completion_documentation(label: &str, kind: CompletionKind) -> Option<String> {
+    let _ = (label, kind);
+    None
+}
+
+pub fn hover(task: &Task, unit: usize, offset: usize) -> Option<HoverResult> {
+    let _ = (task, unit, offset);
+    None
+}
+
+pub fn signature_help(task: &Task, unit: usize, offset: usize) -> Option<SignatureHelp> {
+    let _ = (task, unit, offset);
+    None
+}
+
+/// Also used for "go to declaration".
+pub fn definition(task: &Task, unit: usize, offset: usize) -> Vec<Location> {
+    let _ = (task, unit, offset);
+    Vec::new()
+}
+
+pub fn type_definition(task: &Task, unit: usize, offset: usize) -> Vec<Location> {
+    let _ = (task, unit, offset);
+    Vec::new()
+}
+
+pub fn references(
+    task: &Task,
+    unit: usize,
+    offset: usize,
+    include_declaration: bool,
+) -> Vec<Location> {
+    let _ = (task, unit, offset, include_declaration);
+    Vec::new()
+}
+
+/// Uses of the symbol under the cursor in this unit: (range, is a write).
+pub fn document_highlights(task: &Task, unit: usize, offset: usize) -> Vec<(Range<usize>, bool)> {
+    let _ = (task, unit, offset);
+    Vec::new()
+}
+
+pub fn prepare_rename(task: &Task, unit: usize, offset: usize) -> Result<Range<usize>, String> {
+    let _ = (task, unit, offset);
+    Err("nothing to rename here".to_owned())
+}
+
+/// The edits per file path.
+pub fn rename(
+    task: &Task,
+    unit: usize,
+    offset: usize,
+    new_name: &str,
+) -> Result<Vec<(String, Vec<Edit>)>, String> {
+    let _ = (task, unit, offset, new_name);
+    Err("nothing to rename here".to_owned())
+}
+
+pub fn document_symbols(unit: &Unit) -> Vec<Symbol> {
+    let _ = unit;
+    Vec::new()
+}
+
+pub fn workspace_symbols(tasks: &[Arc<Task>], query: &str) -> Vec<(String, Symbol)> {
+    let _ = (tasks, query);
+    Vec::new()
+}
+
+pub fn semantic_tokens(
+    task: &Task,
+    unit: usize,
+    range: Option<Range<usize>>,
+) -> Vec<SemanticToken> {
+    let _ = (task, unit, range);
+    Vec::new()
+}
+
+pub fn folding_ranges(unit: &Unit) -> Vec<FoldingRange> {
+    let _ = unit;
+    Vec::new()
+}
+
+/// For each offset, the ranges around it, innermost first.
+pub fn selection_ranges(unit: &Unit, offsets: &[usize]) -> Vec<Vec<Range<usize>>> {
+    let _ = unit;
+    offsets.iter().map(|_| Vec::new()).collect()
+}
+
+pub fn inlay_hints(task: &Task, unit: usize, range: Range<usize>) -> Vec<InlayHint> {
+    let _ = (task, unit, range);
+    Vec::new()
+}
+
+pub fn code_actions(
+    task: &Task,
+    unit: usize,
+    range: Range<usize>,
+    diagnostics: &[Diagnostic],
+) -> Vec<CodeAction> {
+    let _ = (task, unit, range, diagnostics);
+    Vec::new()
+}
