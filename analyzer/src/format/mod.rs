@@ -128,14 +128,14 @@ impl std::error::Error for FormatError {}
 
 /// Formats a whole text.
 pub fn format(text: &str, options: &FormatOptions) -> Result<String, FormatError> {
-    Ok(run(text, options)?.output)
+    Ok(run(text, options, false)?.output)
 }
 
 /// Formats a whole text, as the smallest edits that turn `text` into
 /// [`format`]'s result: non-overlapping, in order, on the original byte
 /// offsets.
 pub fn format_edits(text: &str, options: &FormatOptions) -> Result<Vec<Edit>, FormatError> {
-    Ok(run(text, options)?.edits)
+    Ok(run(text, options, true)?.edits)
 }
 
 /// The edits of [`format_edits`] for the lines of `range` (a byte range of
@@ -147,7 +147,7 @@ pub fn format_range(
     range: Range<usize>,
     options: &FormatOptions,
 ) -> Result<Vec<Edit>, FormatError> {
-    let edits = run(text, options)?.edits;
+    let edits = run(text, options, true)?.edits;
     let index = LineIndex::new(text);
     let first = index.line_col(range.start).line;
     let last = index.line_col(range.end.max(range.start)).line;
@@ -172,7 +172,7 @@ fn parse(text: &str) -> Option<Tree> {
     PARSER.with(|p| p.borrow_mut().parse(text, None))
 }
 
-fn run(text: &str, options: &FormatOptions) -> Result<Formatted, FormatError> {
+fn run(text: &str, options: &FormatOptions, want_edits: bool) -> Result<Formatted, FormatError> {
     let options = FormatOptions {
         indent_width: options.indent_width.min(16),
         line_width: options.line_width,
@@ -195,7 +195,12 @@ fn run(text: &str, options: &FormatOptions) -> Result<Formatted, FormatError> {
     let line_ending = LineEnding::detect(text).as_str();
 
     let mut output = String::with_capacity(text.len() + text.len() / 8);
-    let mut edits = Vec::new();
+    // no capacity: no edits wanted (see `push_edit`)
+    let mut edits = if want_edits {
+        Vec::with_capacity(toks.len() / 2 + 1)
+    } else {
+        Vec::new()
+    };
     let mut rendered = String::new();
     let mut prev_end = 0;
     for (tok, gap) in toks.iter().zip(&gaps) {
@@ -225,7 +230,7 @@ fn run(text: &str, options: &FormatOptions) -> Result<Formatted, FormatError> {
 }
 
 fn push_edit(edits: &mut Vec<Edit>, text: &str, range: Range<usize>, new: &str) {
-    if text.get(range.clone()) != Some(new) {
+    if edits.capacity() > 0 && text.get(range.clone()) != Some(new) {
         edits.push(Edit {
             range,
             replacement: new.to_owned(),
