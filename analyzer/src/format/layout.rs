@@ -220,11 +220,12 @@ fn gap_width(gap: &Gap, text: &str) -> usize {
 
 /// Breaks lines longer than the line width at the wrap points (after the
 /// commas of a procedure call's arguments), filling each line as far as it
-/// goes. Continuation lines are indented one level deeper than the
+/// goes, when every resulting line then fits; otherwise the line is left
+/// alone. Continuation lines are indented one level deeper than the
 /// statement. A trailing comment does not count towards the width.
 ///
-/// Stable: on formatted text every line either fits or holds a single piece
-/// that cannot be broken, so a second run changes nothing.
+/// Stable: after a run every line with wrap points either fits or has a
+/// piece that fits on no line, so a second run changes nothing.
 fn wrap(
     toks: &[Tok<'_>],
     text: &str,
@@ -260,29 +261,48 @@ fn wrap(
         if total <= max {
             continue;
         }
-        let mut used = indent + width(&toks[line.start].text);
-        let mut k = line.start + 1;
+        // the pieces between wrap points: (first token, width with the gap)
+        let mut chunks: Vec<(usize, usize)> = Vec::new();
+        let mut k = line.start;
         while k < code_end {
-            // the chunk from k to the next wrap point
             let mut chunk_end = k + 1;
             while chunk_end < code_end
                 && !(toks[chunk_end].wrap_point && gaps[chunk_end] == Gap::Space)
             {
                 chunk_end += 1;
             }
-            let chunk: usize = (k..chunk_end).map(|k| piece(toks, gaps, text, k)).sum();
-            let breakable = toks[k].wrap_point && gaps[k] == Gap::Space;
-            if breakable && used + chunk > max {
-                let indent = statement_indent[k] + options.indent_width;
+            let w: usize = (k..chunk_end).map(|k| piece(toks, gaps, text, k)).sum();
+            chunks.push((k, w));
+            k = chunk_end;
+        }
+        // wrap only if every line then fits: a piece too long for any line
+        // (a call with a long robtarget literal) leaves the line as it is
+        let continuation = |k: usize| statement_indent[k] + options.indent_width;
+        let first_fits = chunks
+            .first()
+            .is_some_and(|&(k, w)| indent + w - gap_width(&gaps[k], text) <= max);
+        if !first_fits
+            || chunks
+                .iter()
+                .skip(1)
+                .any(|&(k, w)| continuation(k) + w - 1 > max)
+        {
+            continue;
+        }
+        let mut used = indent;
+        for (n, &(k, w)) in chunks.iter().enumerate() {
+            if n == 0 {
+                used += w - gap_width(&gaps[k], text);
+            } else if used + w > max {
+                let indent = continuation(k);
                 gaps[k] = Gap::Line {
                     blank: false,
                     indent,
                 };
-                used = indent + chunk - 1;
+                used = indent + w - 1;
             } else {
-                used += chunk;
+                used += w;
             }
-            k = chunk_end;
         }
     }
 }

@@ -26,9 +26,11 @@
 //!   a line is longer than [`FormatOptions::line_width`] characters (a
 //!   trailing comment not counted), it is broken after the commas that
 //!   separate the arguments, filling each line as far as it goes, with
-//!   continuation lines one level deeper. Aggregates, declarations and
-//!   expressions are never wrapped: long `robtarget` literals stay on the
-//!   line the user put them on.
+//!   continuation lines one level deeper; but only if every resulting line
+//!   then fits: a call whose first argument alone is too long (a `MoveL`
+//!   with a `robtarget` literal) stays on its line. Aggregates, declarations
+//!   and expressions are never wrapped: long `robtarget` literals stay on
+//!   the line the user put them on.
 //! - Blank lines: exactly one between two routines (a blank line is added
 //!   after the first one's end keyword if there is none, comments between
 //!   them stay with the second); elsewhere runs of blank lines collapse to
