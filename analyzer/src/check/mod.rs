@@ -454,3 +454,86 @@ pub(crate) fn edit_distance(a: &str, b: &str) -> usize {
     }
     prev[b.len()]
 }
+
+/// Name resolution at a position, for the editor features ([`crate::ide`]):
+/// the same scopes as the checker, entered around one offset.
+impl<'t> Cx<'t> {
+    /// A context whose module and routine scopes are those around `offset`
+    /// of unit `unit` (parameters, routine data, and the variables of the
+    /// `FOR` loops that enclose the offset).
+    pub(crate) fn at(task: &'t Task, unit: usize, offset: usize) -> Option<Cx<'t>> {
+        let u: &'t Unit = task.units.get(unit)?;
+        let mut cx = Cx {
+            task,
+            unit: u,
+            unit_idx: unit,
+            text: &u.text,
+            types: task.types(),
+            cat: catalogue(),
+            module: None,
+            routine: None,
+            diags: Vec::new(),
+            used: HashSet::new(),
+            reported_signals: HashSet::new(),
+        };
+        let within = |r: &Range<usize>| r.start <= offset && offset <= r.end;
+        cx.module = u
+            .items
+            .modules
+            .iter()
+            .enumerate()
+            .find(|(_, m)| within(&m.range));
+        let Some((_, module)) = cx.module else {
+            return Some(cx);
+        };
+        let Some(decl) = module.routines.iter().find(|r| within(&r.range)) else {
+            return Some(cx);
+        };
+        let root = u.tree.root_node();
+        let Some(node) = root.named_descendant_for_byte_range(decl.range.start, decl.range.end)
+        else {
+            return Some(cx);
+        };
+        let mut params = HashMap::new();
+        for p in &decl.params {
+            params.entry(fold(&p.name)).or_insert(p);
+        }
+        let mut locals = HashMap::new();
+        for item in crate::syntax_util::fields(node, "body") {
+            if item.kind() == "data_declaration"
+                && let Some(d) = crate::items::lower_data(item, &u.text)
+            {
+                locals.entry(fold(&d.name)).or_insert(d);
+            }
+        }
+        let mut for_vars = Vec::new();
+        let mut at = root.descendant_for_byte_range(offset, offset);
+        while let Some(n) = at {
+            if n.id() == node.id() {
+                break;
+            }
+            if n.kind() == "for_statement"
+                && let Some(v) = n.child_by_field_name("variable")
+            {
+                for_vars.push(fold(cx.node_text(v)));
+            }
+            at = n.parent();
+        }
+        cx.routine = Some(RoutineCx {
+            decl,
+            params,
+            locals,
+            for_vars,
+            labels: HashMap::new(),
+            in_error_handler: false,
+        });
+        Some(cx)
+    }
+
+    /// The type of an expression in this context (its findings dropped).
+    pub(crate) fn type_of_expr(&mut self, node: Node<'t>) -> Ty {
+        let ty = exprs::expr(self, node, None);
+        self.diags.clear();
+        ty
+    }
+}
