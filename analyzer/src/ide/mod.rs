@@ -10,7 +10,20 @@
 use std::ops::Range;
 use std::sync::Arc;
 
+mod context;
+mod hover;
+mod nav;
+mod resolve;
+
+pub use hover::hover;
+pub use nav::{
+    definition, document_highlights, prepare_rename, references, rename, type_definition,
+};
+
 use crate::diagnostic::{Diagnostic, Edit};
+
+#[cfg(test)]
+mod tests;
 use crate::task::{Task, Unit};
 
 /// A place in a file: the name's range and the whole declaration's range.
@@ -185,57 +198,9 @@ pub fn completion_documentation(label: &str, kind: CompletionKind) -> Option<Str
     None
 }
 
-pub fn hover(task: &Task, unit: usize, offset: usize) -> Option<HoverResult> {
-    let _ = (task, unit, offset);
-    None
-}
-
 pub fn signature_help(task: &Task, unit: usize, offset: usize) -> Option<SignatureHelp> {
     let _ = (task, unit, offset);
     None
-}
-
-/// Also used for "go to declaration".
-pub fn definition(task: &Task, unit: usize, offset: usize) -> Vec<Location> {
-    let _ = (task, unit, offset);
-    Vec::new()
-}
-
-pub fn type_definition(task: &Task, unit: usize, offset: usize) -> Vec<Location> {
-    let _ = (task, unit, offset);
-    Vec::new()
-}
-
-pub fn references(
-    task: &Task,
-    unit: usize,
-    offset: usize,
-    include_declaration: bool,
-) -> Vec<Location> {
-    let _ = (task, unit, offset, include_declaration);
-    Vec::new()
-}
-
-/// Uses of the symbol under the cursor in this unit: (range, is a write).
-pub fn document_highlights(task: &Task, unit: usize, offset: usize) -> Vec<(Range<usize>, bool)> {
-    let _ = (task, unit, offset);
-    Vec::new()
-}
-
-pub fn prepare_rename(task: &Task, unit: usize, offset: usize) -> Result<Range<usize>, String> {
-    let _ = (task, unit, offset);
-    Err("nothing to rename here".to_owned())
-}
-
-/// The edits per file path.
-pub fn rename(
-    task: &Task,
-    unit: usize,
-    offset: usize,
-    new_name: &str,
-) -> Result<Vec<(String, Vec<Edit>)>, String> {
-    let _ = (task, unit, offset, new_name);
-    Err("nothing to rename here".to_owned())
 }
 
 pub fn document_symbols(unit: &Unit) -> Vec<Symbol> {

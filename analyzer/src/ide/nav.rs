@@ -1,0 +1,418 @@
+//! Navigation: definition, type definition, references, highlights, rename.
+
+use std::collections::BTreeMap;
+use std::ops::Range;
+
+use super::Location;
+use super::resolve::{Def, name_at, names_spelt, resolve, type_def};
+use crate::check::Cx;
+use crate::diagnostic::Edit;
+use crate::names::{fold, same};
+use crate::task::{Item, Task};
+
+fn location(task: &Task, def: &Def<'_>) -> Option<Location> {
+    let (unit, range, full_range) = def.location(task)?;
+    Some(Location {
+        path: task.units.get(unit)?.path.clone(),
+        range,
+        full_range,
+    })
+}
+
+fn def_at<'t>(task: &'t Task, unit: usize, offset: usize) -> Option<Def<'t>> {
+    let u = task.units.get(unit)?;
+    let node = name_at(&u.tree, offset)?;
+    resolve(task, unit, node)
+}
+
+pub fn definition(task: &Task, unit: usize, offset: usize) -> Vec<Location> {
+    def_at(task, unit, offset)
+        .and_then(|d| location(task, &d))
+        .into_iter()
+        .collect()
+}
+
+pub fn type_definition(task: &Task, unit: usize, offset: usize) -> Vec<Location> {
+    let Some(def) = def_at(task, unit, offset) else {
+        return Vec::new();
+    };
+    let ty = match &def {
+        Def::Item(r) => match r.item {
+            Item::Data(_) => task
+                .data(*r)
+                .and_then(|d| d.ty.as_ref())
+                .map(|t| t.name.clone()),
+            Item::Routine(_) => task
+                .routine(*r)
+                .and_then(|d| d.returns.as_ref())
+                .map(|t| t.name.clone()),
+            Item::Alias(_) | Item::Record(_) => {
+                return location(task, &def).into_iter().collect();
+            }
+        },
+        Def::Param { decl, .. } => decl.ty.as_ref().map(|t| t.name.clone()),
+        Def::Local { decl, .. } => decl.ty.as_ref().map(|t| t.name.clone()),
+        Def::Component(r, i) => task
+            .record(*r)
+            .and_then(|rec| rec.components.get(*i))
+            .and_then(|c| c.1.as_ref())
+            .map(|t| t.name.clone()),
+        Def::BuiltinComponent(t, i) => t.components.get(*i).map(|c| c.ty.clone()),
+        Def::BuiltinDatum(d) => Some(d.ty.clone()),
+        Def::BuiltinRoutine(r) => r.returns.clone(),
+        _ => None,
+    };
+    let Some(ty) = ty else {
+        return Vec::new();
+    };
+    let (def_unit, at) = def
+        .location(task)
+        .map_or((unit, offset), |(u, r, _)| (u, r.start));
+    let Some(mut cx) = Cx::at(task, def_unit, at) else {
+        return Vec::new();
+    };
+    type_def(&mut cx, &ty)
+        .and_then(|d| location(task, &d))
+        .into_iter()
+        .collect()
+}
+
+/// Every use of the declaration in the task (or one unit): unit,
+/// range, and whether it is a write.
+pub(crate) fn uses(
+    task: &Task,
+    def: &Def<'_>,
+    only_unit: Option<usize>,
+) -> Vec<(usize, Range<usize>, bool)> {
+    let key = def.key(task);
+    let name = def.name(task);
+    if name.is_empty() {
+        return Vec::new();
+    }
+    // Routine-scope symbols are seen only inside their routine.
+    let scope: Option<(usize, Range<usize>)> = match def {
+        Def::Param { unit, routine, .. } | Def::Local { unit, routine, .. } => {
+            Some((*unit, routine.range.clone()))
+        }
+        Def::ForVar { unit, range, .. } | Def::Label { unit, range, .. } => {
+            let u = task.units.get(*unit);
+            let routine = u.and_then(|u| {
+                u.items
+                    .modules
+                    .iter()
+                    .flat_map(|m| &m.routines)
+                    .find(|r| r.range.start <= range.start && range.end <= r.range.end)
+            });
+            routine.map(|r| (*unit, r.range.clone()))
+        }
+        _ => None,
+    };
+    let lower = fold(&name);
+    let mut out = Vec::new();
+    for (ui, u) in task.units.iter().enumerate() {
+        if only_unit.is_some_and(|o| o != ui) || scope.as_ref().is_some_and(|(su, _)| *su != ui) {
+            continue;
+        }
+        if !u.text.to_ascii_lowercase().contains(&lower) {
+            continue;
+        }
+        let root = u.tree.root_node();
+        let node = match &scope {
+            Some((_, r)) => root.named_descendant_for_byte_range(r.start, r.end),
+            None => Some(root),
+        };
+        let Some(node) = node else { continue };
+        for n in names_spelt(node, &u.text, &name) {
+            let Some(d) = resolve(task, ui, n) else {
+                continue;
+            };
+            if d.key(task) == key {
+                out.push((ui, n.byte_range(), is_write(n)));
+            }
+        }
+    }
+    out
+}
+
+/// Is this name written here: declared, assigned, a FOR variable?
+fn is_write(node: tree_sitter::Node<'_>) -> bool {
+    let field = super::resolve::field_in_parent(node);
+    let Some(parent) = node.parent() else {
+        return false;
+    };
+    if field == Some("name")
+        && matches!(
+            parent.kind(),
+            "data_declaration" | "parameter" | "record_component"
+        )
+    {
+        return true;
+    }
+    if parent.kind() == "for_statement" && field == Some("variable") {
+        return true;
+    }
+    // The root object of an assignment's left side.
+    let mut n = node;
+    loop {
+        let f = super::resolve::field_in_parent(n);
+        let Some(p) = n.parent() else {
+            return false;
+        };
+        match (p.kind(), f) {
+            ("assignment", Some("left")) => return true,
+            ("component_access" | "index_expression", Some("object")) => n = p,
+            _ => return false,
+        }
+    }
+}
+
+pub fn references(
+    task: &Task,
+    unit: usize,
+    offset: usize,
+    include_declaration: bool,
+) -> Vec<Location> {
+    let Some(def) = def_at(task, unit, offset) else {
+        return Vec::new();
+    };
+    let decl = def.location(task).map(|(u, r, _)| (u, r.start));
+    let mut out: Vec<Location> = uses(task, &def, None)
+        .into_iter()
+        .filter(|(u, r, _)| include_declaration || decl != Some((*u, r.start)))
+        .filter_map(|(u, range, _)| {
+            Some(Location {
+                path: task.units.get(u)?.path.clone(),
+                full_range: range.clone(),
+                range,
+            })
+        })
+        .collect();
+    if include_declaration
+        && let Some(loc) = location(task, &def)
+        && !out
+            .iter()
+            .any(|l| l.path == loc.path && l.range == loc.range)
+    {
+        out.insert(0, loc);
+    }
+    out
+}
+
+pub fn document_highlights(task: &Task, unit: usize, offset: usize) -> Vec<(Range<usize>, bool)> {
+    let Some(def) = def_at(task, unit, offset) else {
+        return Vec::new();
+    };
+    uses(task, &def, Some(unit))
+        .into_iter()
+        .map(|(_, r, w)| (r, w))
+        .collect()
+}
+
+/// Words RAPID reserves, which can never be names.
+pub(crate) const RESERVED: &[&str] = &[
+    "ALIAS",
+    "AND",
+    "BACKWARD",
+    "CASE",
+    "CONNECT",
+    "CONST",
+    "DEFAULT",
+    "DIV",
+    "DO",
+    "ELSE",
+    "ELSEIF",
+    "ENDFOR",
+    "ENDFUNC",
+    "ENDIF",
+    "ENDMODULE",
+    "ENDPROC",
+    "ENDRECORD",
+    "ENDTEST",
+    "ENDTRAP",
+    "ENDWHILE",
+    "ERROR",
+    "EXIT",
+    "FALSE",
+    "FOR",
+    "FROM",
+    "FUNC",
+    "GOTO",
+    "IF",
+    "INOUT",
+    "LOCAL",
+    "MOD",
+    "MODULE",
+    "NOSTEPIN",
+    "NOT",
+    "NOVIEW",
+    "OR",
+    "PERS",
+    "PROC",
+    "RAISE",
+    "READONLY",
+    "RECORD",
+    "RETRY",
+    "RETURN",
+    "STEP",
+    "SYSMODULE",
+    "TEST",
+    "THEN",
+    "TO",
+    "TRAP",
+    "TRUE",
+    "TRYNEXT",
+    "UNDO",
+    "VAR",
+    "VIEWONLY",
+    "WHILE",
+    "WITH",
+    "XOR",
+];
+
+pub(crate) fn is_reserved(name: &str) -> bool {
+    RESERVED.iter().any(|r| same(r, name))
+}
+
+pub fn prepare_rename(task: &Task, unit: usize, offset: usize) -> Result<Range<usize>, String> {
+    let u = task.units.get(unit).ok_or("no such file")?;
+    let Some(node) = name_at(&u.tree, offset) else {
+        return Err("there is no name here to rename".to_owned());
+    };
+    let text = u.text.get(node.byte_range()).unwrap_or_default();
+    if is_reserved(text) {
+        return Err(format!("`{text}` is a reserved word"));
+    }
+    let Some(def) = resolve(task, unit, node) else {
+        return Err(format!("`{text}` is not declared in this task"));
+    };
+    if def.is_builtin() || matches!(def, Def::Signal(..)) {
+        return Err(format!(
+            "`{text}` is built in (or an I/O signal) and cannot be renamed"
+        ));
+    }
+    Ok(node.byte_range())
+}
+
+/// Why `name` is not a valid RAPID identifier, if it is not.
+pub(crate) fn invalid_identifier(name: &str) -> Option<String> {
+    if name.is_empty() {
+        return Some("the new name is empty".to_owned());
+    }
+    if name.len() > 32 {
+        return Some(format!(
+            "`{name}` is {} characters long; RAPID names have at most 32",
+            name.len()
+        ));
+    }
+    let mut chars = name.chars();
+    let first = chars.next().unwrap_or(' ');
+    if !first.is_ascii_alphabetic() {
+        return Some(format!("`{name}` must start with a letter"));
+    }
+    if !name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_') {
+        return Some(format!(
+            "`{name}` may only hold letters, digits and underscores"
+        ));
+    }
+    if is_reserved(name) {
+        return Some(format!("`{name}` is a reserved word"));
+    }
+    None
+}
+
+pub fn rename(
+    task: &Task,
+    unit: usize,
+    offset: usize,
+    new_name: &str,
+) -> Result<Vec<(String, Vec<Edit>)>, String> {
+    prepare_rename(task, unit, offset)?;
+    if let Some(why) = invalid_identifier(new_name) {
+        return Err(why);
+    }
+    let def = def_at(task, unit, offset).ok_or("there is no name here to rename")?;
+    let old = def.name(task);
+    let cat = crate::catalogue::catalogue();
+    if !same(&old, new_name)
+        && (cat.routine(new_name).is_some()
+            || cat.datatype(new_name).is_some()
+            || cat.datum(new_name).is_some())
+    {
+        return Err(format!("`{new_name}` is the name of a built-in"));
+    }
+    let uses = uses(task, &def, None);
+    // A clash: somewhere the symbol is used or declared, the new name
+    // already denotes something else.
+    if !same(&old, new_name) {
+        let mut checked = std::collections::HashSet::new();
+        for (u, range, _) in &uses {
+            let Some(mut cx) = Cx::at(task, *u, range.start) else {
+                continue;
+            };
+            let scope = (
+                *u,
+                cx.module.map(|(i, _)| i),
+                cx.routine.as_ref().map(|r| r.decl.range.start),
+            );
+            if !checked.insert(scope) {
+                continue;
+            }
+            if clashes(&mut cx, new_name) {
+                return Err(format!(
+                    "`{new_name}` is already declared where `{old}` is used"
+                ));
+            }
+        }
+        if let Some((u, r, _)) = def.location(task)
+            && let Some(mut cx) = Cx::at(task, u, r.start)
+            && clashes(&mut cx, new_name)
+        {
+            return Err(format!("`{new_name}` is already declared in this scope"));
+        }
+    }
+    let mut by_path: BTreeMap<usize, Vec<Edit>> = BTreeMap::new();
+    for (u, range, _) in uses {
+        by_path.entry(u).or_default().push(Edit {
+            range,
+            replacement: new_name.to_owned(),
+        });
+    }
+    if let Some((u, r, _)) = def.location(task) {
+        let edits = by_path.entry(u).or_default();
+        if !edits.iter().any(|e| e.range == r) {
+            edits.push(Edit {
+                range: r,
+                replacement: new_name.to_owned(),
+            });
+        }
+    }
+    Ok(by_path
+        .into_iter()
+        .filter_map(|(u, mut edits)| {
+            edits.sort_by_key(|e| e.range.start);
+            Some((task.units.get(u)?.path.clone(), edits))
+        })
+        .collect())
+}
+
+/// Does `name` already denote something in this context (routine data,
+/// parameters, the module's or the task's declarations)?
+fn clashes(cx: &mut Cx<'_>, name: &str) -> bool {
+    let key = fold(name);
+    if let Some(r) = &cx.routine
+        && (r.locals.contains_key(&key) || r.params.contains_key(&key) || r.for_vars.contains(&key))
+    {
+        return true;
+    }
+    if !cx.lookup_items(name).is_empty() {
+        return true;
+    }
+    // Another module's global that this module's new declaration would clash with.
+    cx.task.globals.contains_key(&key)
+        || cx.module.is_some_and(|(_, m)| {
+            m.data.iter().any(|d| same(&d.name, name))
+                || m.routines.iter().any(|d| same(&d.name, name))
+                || m.records.iter().any(|d| same(&d.name, name))
+                || m.aliases.iter().any(|d| same(&d.name, name))
+        })
+}

@@ -1,0 +1,472 @@
+//! What the name at an offset denotes, through the checker's scopes
+//! ([`Cx::at`]), and the walks over names that references and rename need.
+
+use std::ops::Range;
+
+use tree_sitter::{Node, Tree};
+
+use crate::catalogue::{DataType, Datum, Routine, catalogue};
+use crate::check::{Cx, DataSym, RoutineSym};
+use crate::items::{DataDecl, ParamDecl, RoutineDecl};
+use crate::names::{fold, same};
+use crate::task::{Item, ItemRef, Task};
+use crate::ty::{Ty, UserType};
+
+/// A declaration a name resolves to.
+#[derive(Clone, Debug)]
+pub(crate) enum Def<'t> {
+    /// A module's data, routine, record or alias.
+    Item(ItemRef),
+    /// A parameter of `routine`, declared in unit `unit`.
+    Param {
+        unit: usize,
+        decl: &'t ParamDecl,
+        routine: &'t RoutineDecl,
+    },
+    /// Routine data.
+    Local {
+        unit: usize,
+        decl: DataDecl,
+        routine: &'t RoutineDecl,
+    },
+    /// A `FOR` loop variable: its name's range.
+    ForVar {
+        unit: usize,
+        name: String,
+        range: Range<usize>,
+    },
+    /// A label: its name's range.
+    Label {
+        unit: usize,
+        name: String,
+        range: Range<usize>,
+    },
+    /// Component `index` of a user record.
+    Component(ItemRef, usize),
+    /// Component `index` of a built-in record type.
+    BuiltinComponent(&'static DataType, usize),
+    Module {
+        unit: usize,
+        module: usize,
+    },
+    BuiltinRoutine(&'static Routine),
+    /// Parameter `index` of a built-in routine.
+    BuiltinParam(&'static Routine, usize),
+    BuiltinDatum(&'static Datum),
+    BuiltinType(&'static DataType),
+    /// An I/O signal from the configuration, with its type.
+    Signal(String, &'static str),
+}
+
+/// The identity of a declaration, to compare resolutions.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub(crate) enum DefKey {
+    /// Declared in the task: unit and start of the name.
+    At(usize, usize),
+    /// Built in or configured: a kind letter and the folded name.
+    Named(char, String),
+}
+
+impl Def<'_> {
+    /// Where the declaration is: unit, name range, whole declaration.
+    pub(crate) fn location(&self, task: &Task) -> Option<(usize, Range<usize>, Range<usize>)> {
+        match self {
+            Def::Item(r) => {
+                let (_, name) = task.item_name(*r)?;
+                let m = task.module(*r)?;
+                let full = match r.item {
+                    Item::Data(i) => m.data.get(i)?.range.clone(),
+                    Item::Routine(i) => m.routines.get(i)?.range.clone(),
+                    Item::Record(i) => m.records.get(i)?.range.clone(),
+                    Item::Alias(i) => m.aliases.get(i)?.range.clone(),
+                };
+                Some((r.unit, name, full))
+            }
+            Def::Param { unit, decl, .. } => {
+                Some((*unit, decl.name_range.clone(), decl.name_range.clone()))
+            }
+            Def::Local { unit, decl, .. } => {
+                Some((*unit, decl.name_range.clone(), decl.range.clone()))
+            }
+            Def::ForVar { unit, range, .. } | Def::Label { unit, range, .. } => {
+                Some((*unit, range.clone(), range.clone()))
+            }
+            Def::Component(r, i) => {
+                let rec = task.record(*r)?;
+                let (_, _, range) = rec.components.get(*i)?;
+                Some((r.unit, range.clone(), range.clone()))
+            }
+            Def::Module { unit, module } => {
+                let m = task.units.get(*unit)?.items.modules.get(*module)?;
+                Some((*unit, m.name_range.clone(), m.range.clone()))
+            }
+            _ => None,
+        }
+    }
+
+    pub(crate) fn key(&self, task: &Task) -> DefKey {
+        if let Some((unit, range, _)) = self.location(task) {
+            return DefKey::At(unit, range.start);
+        }
+        match self {
+            Def::BuiltinRoutine(r) => DefKey::Named('r', fold(&r.name)),
+            Def::BuiltinParam(r, i) => DefKey::Named('p', format!("{}.{i}", fold(&r.name))),
+            Def::BuiltinDatum(d) => DefKey::Named('d', fold(&d.name)),
+            Def::BuiltinType(t) => DefKey::Named('t', fold(&t.name)),
+            Def::BuiltinComponent(t, i) => DefKey::Named('c', format!("{}.{i}", fold(&t.name))),
+            Def::Signal(n, _) => DefKey::Named('s', fold(n)),
+            _ => DefKey::Named('?', String::new()),
+        }
+    }
+
+    pub(crate) fn is_builtin(&self) -> bool {
+        matches!(
+            self,
+            Def::BuiltinRoutine(_)
+                | Def::BuiltinParam(..)
+                | Def::BuiltinDatum(_)
+                | Def::BuiltinType(_)
+                | Def::BuiltinComponent(..)
+        )
+    }
+
+    /// The declared name.
+    pub(crate) fn name(&self, task: &Task) -> String {
+        match self {
+            Def::Item(r) => task
+                .item_name(*r)
+                .map(|(n, _)| n.to_owned())
+                .unwrap_or_default(),
+            Def::Param { decl, .. } => decl.name.clone(),
+            Def::Local { decl, .. } => decl.name.clone(),
+            Def::ForVar { name, .. } | Def::Label { name, .. } | Def::Signal(name, _) => {
+                name.clone()
+            }
+            Def::Component(r, i) => task
+                .record(*r)
+                .and_then(|rec| rec.components.get(*i))
+                .map(|c| c.0.clone())
+                .unwrap_or_default(),
+            Def::BuiltinComponent(t, i) => t
+                .components
+                .get(*i)
+                .map(|c| c.name.clone())
+                .unwrap_or_default(),
+            Def::Module { unit, module } => task
+                .units
+                .get(*unit)
+                .and_then(|u| u.items.modules.get(*module))
+                .map(|m| m.name.clone())
+                .unwrap_or_default(),
+            Def::BuiltinRoutine(r) => r.name.clone(),
+            Def::BuiltinParam(r, i) => r.params.get(*i).map(|p| p.name.clone()).unwrap_or_default(),
+            Def::BuiltinDatum(d) => d.name.clone(),
+            Def::BuiltinType(t) => t.name.clone(),
+        }
+    }
+}
+
+/// Is this node a name (an identifier of any role)?
+pub(crate) fn is_name(node: Node<'_>) -> bool {
+    matches!(node.kind(), "identifier" | "type_identifier")
+}
+
+/// The name node at `offset`, also when the cursor is just after it.
+pub(crate) fn name_at(tree: &Tree, offset: usize) -> Option<Node<'_>> {
+    let root = tree.root_node();
+    let at = |o: usize| {
+        root.descendant_for_byte_range(o, o)
+            .filter(|n| is_name(*n) && n.start_byte() <= o && o <= n.end_byte())
+    };
+    at(offset).or_else(|| offset.checked_sub(1).and_then(at))
+}
+
+/// The field under which `node` sits in its parent.
+pub(crate) fn field_in_parent<'a>(node: Node<'a>) -> Option<&'a str> {
+    let parent = node.parent()?;
+    let mut cursor = parent.walk();
+    if !cursor.goto_first_child() {
+        return None;
+    }
+    loop {
+        if cursor.node().id() == node.id() {
+            return cursor.field_name();
+        }
+        if !cursor.goto_next_sibling() {
+            return None;
+        }
+    }
+}
+
+/// The call (`procedure_call` or `function_call`) an argument node belongs to.
+pub(crate) fn call_of_argument(arg: Node<'_>) -> Option<Node<'_>> {
+    let list = arg.parent()?;
+    let call = list.parent()?;
+    matches!(call.kind(), "procedure_call" | "function_call").then_some(call)
+}
+
+/// Resolves the routine named by a call node.
+pub(crate) fn call_routine<'t>(cx: &mut Cx<'t>, call: Node<'_>) -> Option<RoutineSym<'t>> {
+    let name = call.child_by_field_name("name")?;
+    if name.kind() != "identifier" {
+        return None;
+    }
+    let text = cx.text.get(name.byte_range())?;
+    cx.resolve_routine(text, call.kind() == "function_call")
+}
+
+/// Resolves the name node `node` of unit `unit`.
+pub(crate) fn resolve<'t>(task: &'t Task, unit: usize, node: Node<'t>) -> Option<Def<'t>> {
+    let mut cx = Cx::at(task, unit, node.start_byte())?;
+    resolve_in(&mut cx, node)
+}
+
+pub(crate) fn resolve_in<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Option<Def<'t>> {
+    let task = cx.task;
+    let unit = cx.unit_idx;
+    let name = cx.text.get(node.byte_range())?.to_owned();
+    let parent = node.parent()?;
+    let field = field_in_parent(node);
+    let routine_sym = |sym: RoutineSym<'t>| match sym {
+        RoutineSym::User(_, r) => Def::Item(r),
+        RoutineSym::Builtin(r, _) => Def::BuiltinRoutine(r),
+    };
+    match (parent.kind(), field) {
+        ("procedure_call" | "function_call", Some("name")) => {
+            return cx
+                .resolve_routine(&name, parent.kind() == "function_call")
+                .map(routine_sym);
+        }
+        ("connect_statement", Some("trap")) => {
+            return cx.resolve_routine(&name, false).map(routine_sym);
+        }
+        ("module", Some("name")) => {
+            let module = cx
+                .unit
+                .items
+                .modules
+                .iter()
+                .position(|m| m.name_range == node.byte_range())?;
+            return Some(Def::Module { unit, module });
+        }
+        ("parameter", Some("name")) => {
+            let routine = cx.routine.as_ref()?.decl;
+            let decl = routine
+                .params
+                .iter()
+                .find(|p| p.name_range == node.byte_range())?;
+            return Some(Def::Param {
+                unit,
+                decl,
+                routine,
+            });
+        }
+        ("data_declaration", Some("name")) => {
+            if let Some(r) = &cx.routine
+                && r.decl.range.start <= parent.start_byte()
+                && parent.end_byte() <= r.decl.range.end
+            {
+                let decl = crate::items::lower_data(parent, cx.text)?;
+                return Some(Def::Local {
+                    unit,
+                    decl,
+                    routine: r.decl,
+                });
+            }
+            return item_declared_at(task, unit, &name, node.byte_range()).map(Def::Item);
+        }
+        (
+            "procedure_declaration"
+            | "function_declaration"
+            | "trap_declaration"
+            | "record_declaration"
+            | "alias_declaration",
+            Some("name"),
+        ) => return item_declared_at(task, unit, &name, node.byte_range()).map(Def::Item),
+        ("record_component", Some("name")) => {
+            let rec = parent.parent()?;
+            let rname = rec.child_by_field_name("name")?;
+            let rname_text = cx.text.get(rname.byte_range())?.to_owned();
+            let r = item_declared_at(task, unit, &rname_text, rname.byte_range())?;
+            let i = task
+                .record(r)?
+                .components
+                .iter()
+                .position(|c| c.2 == node.byte_range())?;
+            return Some(Def::Component(r, i));
+        }
+        ("component_access", Some("component")) => {
+            let obj = parent.child_by_field_name("object")?;
+            let ty = cx.type_of_expr(obj);
+            return component_def(cx, &ty, &name);
+        }
+        ("argument", Some("name")) => {
+            let call = call_of_argument(parent)?;
+            return match call_routine(cx, call)? {
+                RoutineSym::User(decl, r) => {
+                    let p = decl.params.iter().find(|p| same(&p.name, &name))?;
+                    Some(Def::Param {
+                        unit: r.unit,
+                        decl: p,
+                        routine: decl,
+                    })
+                }
+                RoutineSym::Builtin(r, _) => {
+                    let i = r.params.iter().position(|p| same(&p.name, &name))?;
+                    Some(Def::BuiltinParam(r, i))
+                }
+            };
+        }
+        ("label", Some("name")) | ("goto_statement", Some("label")) => {
+            let routine = cx.routine.as_ref()?.decl;
+            let root = cx.unit.tree.root_node();
+            let rnode =
+                root.named_descendant_for_byte_range(routine.range.start, routine.range.end)?;
+            let mut found = None;
+            walk(rnode, &mut |n| {
+                if found.is_none()
+                    && n.kind() == "label"
+                    && let Some(l) = n.child_by_field_name("name")
+                    && cx.text.get(l.byte_range()).is_some_and(|t| same(t, &name))
+                {
+                    found = Some(l.byte_range());
+                }
+            });
+            return found.map(|range| Def::Label { unit, name, range });
+        }
+        ("for_statement", Some("variable")) => {
+            return Some(Def::ForVar {
+                unit,
+                name,
+                range: node.byte_range(),
+            });
+        }
+        _ => {}
+    }
+    if node.kind() == "type_identifier" || field == Some("type") {
+        return type_def(cx, &name);
+    }
+    match cx.resolve_data(&name)? {
+        DataSym::Param(p) => Some(Def::Param {
+            unit,
+            decl: p,
+            routine: cx.routine.as_ref()?.decl,
+        }),
+        DataSym::Local(decl) => Some(Def::Local {
+            unit,
+            decl,
+            routine: cx.routine.as_ref()?.decl,
+        }),
+        DataSym::Module(_, r) => Some(Def::Item(r)),
+        DataSym::ForVar => {
+            let mut at = Some(node);
+            while let Some(n) = at {
+                if n.kind() == "for_statement"
+                    && let Some(v) = n.child_by_field_name("variable")
+                    && cx.text.get(v.byte_range()).is_some_and(|t| same(t, &name))
+                {
+                    return Some(Def::ForVar {
+                        unit,
+                        name: cx.text.get(v.byte_range())?.to_owned(),
+                        range: v.byte_range(),
+                    });
+                }
+                at = n.parent();
+            }
+            None
+        }
+        DataSym::Builtin(d) => Some(Def::BuiltinDatum(d)),
+        DataSym::Signal(ty) => Some(Def::Signal(name, ty)),
+    }
+}
+
+/// A type name: a user record or alias visible here, or a built-in type.
+pub(crate) fn type_def<'t>(cx: &mut Cx<'t>, name: &str) -> Option<Def<'t>> {
+    for r in cx.lookup_items(name) {
+        if matches!(r.item, Item::Record(_) | Item::Alias(_)) {
+            return Some(Def::Item(r));
+        }
+    }
+    catalogue().datatype(name).map(Def::BuiltinType)
+}
+
+/// Component `name` of a value of type `ty`.
+pub(crate) fn component_def<'t>(cx: &mut Cx<'t>, ty: &Ty, name: &str) -> Option<Def<'t>> {
+    let Ty::Named(base) = cx.types.base(ty) else {
+        return None;
+    };
+    if let Some(UserType::Record(_)) = cx.types.user(&base) {
+        let r = cx
+            .lookup_items(&base)
+            .into_iter()
+            .find(|r| matches!(r.item, Item::Record(_)))
+            .or_else(|| any_item(cx.task, &base, |i| matches!(i, Item::Record(_))))?;
+        let i = cx
+            .task
+            .record(r)?
+            .components
+            .iter()
+            .position(|c| same(&c.0, name))?;
+        return Some(Def::Component(r, i));
+    }
+    let t = catalogue().datatype(&base)?;
+    let i = t.components.iter().position(|c| same(&c.name, name))?;
+    Some(Def::BuiltinComponent(t, i))
+}
+
+/// Any declaration of the task under `name` (global or local) of a kind.
+pub(crate) fn any_item(task: &Task, name: &str, kind: impl Fn(Item) -> bool) -> Option<ItemRef> {
+    let key = fold(name);
+    task.globals
+        .get(&key)
+        .into_iter()
+        .chain(task.locals.get(&key))
+        .flatten()
+        .copied()
+        .find(|r| kind(r.item))
+}
+
+/// The module item of unit `unit` whose name is at `range`.
+fn item_declared_at(task: &Task, unit: usize, name: &str, range: Range<usize>) -> Option<ItemRef> {
+    let key = fold(name);
+    task.globals
+        .get(&key)
+        .into_iter()
+        .chain(task.locals.get(&key))
+        .flatten()
+        .copied()
+        .find(|r| r.unit == unit && task.item_name(*r).is_some_and(|(_, n)| n == range))
+}
+
+/// Calls `f` on every node under `node` (pre-order), without recursion.
+pub(crate) fn walk<'a>(node: Node<'a>, f: &mut impl FnMut(Node<'a>)) {
+    let mut cursor = node.walk();
+    loop {
+        f(cursor.node());
+        if cursor.goto_first_child() {
+            continue;
+        }
+        loop {
+            if cursor.node().id() == node.id() {
+                return;
+            }
+            if cursor.goto_next_sibling() {
+                break;
+            }
+            if !cursor.goto_parent() {
+                return;
+            }
+        }
+    }
+}
+
+/// Every name node in `node` spelt `name` (case-insensitive).
+pub(crate) fn names_spelt<'a>(node: Node<'a>, text: &str, name: &str) -> Vec<Node<'a>> {
+    let mut out = Vec::new();
+    walk(node, &mut |n| {
+        if is_name(n) && text.get(n.byte_range()).is_some_and(|t| same(t, name)) {
+            out.push(n);
+        }
+    });
+    out
+}
