@@ -10,15 +10,19 @@
 use std::ops::Range;
 use std::sync::Arc;
 
+mod completion;
 mod context;
 mod hover;
 mod nav;
 mod resolve;
+mod signature;
 
+pub use completion::{completion_documentation, completions};
 pub use hover::hover;
 pub use nav::{
     definition, document_highlights, prepare_rename, references, rename, type_definition,
 };
+pub use signature::signature_help;
 
 use crate::diagnostic::{Diagnostic, Edit};
 
@@ -186,21 +190,6 @@ pub struct CodeAction {
     /// Index into the diagnostics given to [`code_actions`].
     pub diagnostic: Option<usize>,
     pub preferred: bool,
-}
-
-pub fn completions(task: &Task, unit: usize, offset: usize) -> Vec<CompletionItem> {
-    let _ = (task, unit, offset);
-    Vec::new()
-}
-
-pub fn completion_documentation(label: &str, kind: CompletionKind) -> Option<String> {
-    let _ = (label, kind);
-    None
-}
-
-pub fn signature_help(task: &Task, unit: usize, offset: usize) -> Option<SignatureHelp> {
-    let _ = (task, unit, offset);
-    None
 }
 
 pub fn document_symbols(unit: &Unit) -> Vec<Symbol> {

@@ -5,6 +5,8 @@ use std::sync::Arc;
 
 use crate::task::{Task, Unit};
 
+mod completion;
+mod hover;
 mod navigation;
 
 /// The task of a fixture, the index of the unit holding the cursor, and the

@@ -1,0 +1,666 @@
+//! Completion by context: statement start, arguments (expected type first),
+//! optional arguments after `\`, record components after `.`, data types
+//! after VAR/PERS/CONST and in parameter lists; nothing in comments and
+//! strings. The context comes from the text before the cursor, so
+//! half-written code works.
+
+use std::collections::HashSet;
+
+use super::context::{Before, before, call_at, partial, statement_start, words};
+use super::signature::{Sig, active, sig_of};
+use super::{CompletionItem, CompletionKind};
+use crate::catalogue::catalogue;
+use crate::check::{Cx, RoutineSym};
+use crate::items::{RoutineKind, Storage};
+use crate::names::{fold, same};
+use crate::task::{Item, Task};
+use crate::ty::Ty;
+
+/// Snippets: label, body.
+const STATEMENT_SNIPPETS: &[(&str, &str)] = &[
+    ("IF", "IF ${1:condition} THEN\n\t$0\nENDIF"),
+    ("IF ELSE", "IF ${1:condition} THEN\n\t$2\nELSE\n\t$0\nENDIF"),
+    ("FOR", "FOR ${1:i} FROM ${2:1} TO ${3:10} DO\n\t$0\nENDFOR"),
+    ("WHILE", "WHILE ${1:condition} DO\n\t$0\nENDWHILE"),
+    (
+        "TEST",
+        "TEST ${1:value}\nCASE ${2:1}:\n\t$0\nDEFAULT:\n\t\nENDTEST",
+    ),
+];
+
+const ROUTINE_SNIPPETS: &[(&str, &str)] = &[
+    ("PROC", "PROC ${1:name}()\n\t$0\nENDPROC"),
+    (
+        "FUNC",
+        "FUNC ${1:num} ${2:name}()\n\t$0\n\tRETURN ${3:0};\nENDFUNC",
+    ),
+    ("TRAP", "TRAP ${1:name}\n\t$0\nENDTRAP"),
+    (
+        "RECORD",
+        "RECORD ${1:name}\n\t${2:num} ${3:component};\nENDRECORD",
+    ),
+];
+
+const STATEMENT_KEYWORDS: &[&str] = &[
+    "RETURN", "GOTO", "RAISE", "EXIT", "RETRY", "TRYNEXT", "CONNECT", "VAR", "PERS", "CONST",
+    "ELSEIF", "ELSE", "ENDIF", "ENDFOR", "ENDWHILE", "ENDTEST", "CASE", "DEFAULT", "ERROR", "UNDO",
+    "BACKWARD", "ENDPROC", "ENDFUNC", "ENDTRAP",
+];
+
+const MODULE_KEYWORDS: &[&str] = &[
+    "VAR",
+    "PERS",
+    "CONST",
+    "LOCAL",
+    "TASK",
+    "ALIAS",
+    "ENDMODULE",
+];
+
+const EXPRESSION_KEYWORDS: &[&str] = &["TRUE", "FALSE", "NOT", "AND", "OR", "XOR", "DIV", "MOD"];
+
+fn item(label: &str, kind: CompletionKind, detail: Option<String>, sort: &str) -> CompletionItem {
+    CompletionItem {
+        label: label.to_owned(),
+        kind,
+        detail,
+        insert_text: None,
+        is_snippet: false,
+        sort_text: Some(format!("{sort}{}", fold(label))),
+    }
+}
+
+fn snippet(label: &str, body: &str) -> CompletionItem {
+    CompletionItem {
+        label: label.to_owned(),
+        kind: CompletionKind::Snippet,
+        detail: Some(
+            body.lines()
+                .next()
+                .unwrap_or_default()
+                .replace("${1:", "")
+                .replace('}', ""),
+        ),
+        insert_text: Some(body.to_owned()),
+        is_snippet: true,
+        sort_text: Some(format!("3{}", fold(label))),
+    }
+}
+
+pub fn completions(task: &Task, unit: usize, offset: usize) -> Vec<CompletionItem> {
+    let Some(u) = task.units.get(unit) else {
+        return Vec::new();
+    };
+    let bf = before(&u.text, offset);
+    if bf.in_comment || bf.in_string {
+        return Vec::new();
+    }
+    let offset = bf.start + bf.text.len();
+    let Some(mut cx) = Cx::at(task, unit, offset) else {
+        return Vec::new();
+    };
+    let b = &bf.text;
+    let p = partial(b);
+    let prefix = &b[..b.len() - p];
+    match prefix.last() {
+        Some(b'.') => return components(&mut cx, &prefix[..prefix.len() - 1]),
+        Some(b'\\') => return optional_args(&mut cx, &bf),
+        _ => {}
+    }
+    let stmt = statement_start(prefix);
+    let stmt_text = &prefix[stmt..];
+    let w = words(stmt_text);
+    let in_routine = cx.routine.is_some() || in_routine_text(prefix);
+
+    // Declarations: a type after VAR/PERS/CONST, nothing where the name goes.
+    if let Some(i) = w
+        .iter()
+        .position(|w| w == "var" || w == "pers" || w == "const")
+    {
+        let in_header = w.iter().any(|w| w == "proc" || w == "func");
+        if !in_header {
+            return if w.len() == i + 1 {
+                types(&mut cx)
+            } else {
+                Vec::new()
+            };
+        }
+    }
+    // Routine headers: types in the parameter list and after FUNC.
+    if let Some(first) = w
+        .iter()
+        .position(|w| ["proc", "func", "trap"].contains(&w.as_str()))
+    {
+        let last = stmt_text
+            .iter()
+            .rev()
+            .find(|c| !c.is_ascii_whitespace())
+            .copied();
+        let after_mode = w
+            .last()
+            .is_some_and(|l| ["var", "pers", "inout"].contains(&l.as_str()))
+            && matches!(last, Some(c) if c.is_ascii_alphabetic());
+        if matches!(last, Some(b'(' | b',' | b'\\' | b'|')) || after_mode {
+            return types(&mut cx);
+        }
+        if w[first] == "func" && w.len() == first + 1 {
+            return types(&mut cx);
+        }
+        return Vec::new();
+    }
+    if stmt_text.iter().all(u8::is_ascii_whitespace) {
+        return if in_routine {
+            statement_start_items(&mut cx)
+        } else {
+            module_items(&mut cx)
+        };
+    }
+    if let Some(call) = call_at(&bf)
+        && call.name_start < offset - p
+    {
+        let sym = cx.resolve_routine(&call.name, call.is_function);
+        let expected = sym.map(sig_of).and_then(|sig| {
+            let i = active(&sig, &call)?;
+            Some(sig.params.get(i)?.ty.clone())
+        });
+        if call.current.name.is_some() && !call.current.has_value && call.current.optional {
+            return optional_args(&mut cx, &bf);
+        }
+        return expression_items(&mut cx, expected.as_deref());
+    }
+    // After `:=`: the left side's type is expected.
+    let expected = assignment_target(&mut cx, stmt_text);
+    expression_items(&mut cx, expected.as_deref())
+}
+
+/// Without an item tree (broken code), is the text inside a routine?
+fn in_routine_text(b: &[u8]) -> bool {
+    for line in b.split(|c| *c == b'\n').rev() {
+        let w = words(line);
+        let first = match w.first().map(String::as_str) {
+            Some("local") => w.get(1).map(String::as_str),
+            other => other,
+        };
+        match first {
+            Some("proc" | "func" | "trap") => return true,
+            Some("endproc" | "endfunc" | "endtrap" | "module" | "endmodule") => return false,
+            _ => {}
+        }
+    }
+    false
+}
+
+/// The declared type of `x` in `x := ` (a plain name only).
+fn assignment_target(cx: &mut Cx<'_>, stmt: &[u8]) -> Option<String> {
+    let s = String::from_utf8_lossy(stmt);
+    let (left, _) = s.split_once(":=")?;
+    let name = left.trim();
+    if !name.bytes().all(|c| c.is_ascii_alphanumeric() || c == b'_') || name.is_empty() {
+        return None;
+    }
+    match cx.resolve_data(name)?.ty(&cx.types) {
+        Ty::Named(n) => Some(n),
+        _ => None,
+    }
+}
+
+fn statement_start_items(cx: &mut Cx<'_>) -> Vec<CompletionItem> {
+    let mut out = Vec::new();
+    let mut seen = HashSet::new();
+    visible_routines(cx, &mut |name, kind, detail| {
+        if kind == CompletionKind::Procedure && seen.insert(fold(name)) {
+            out.push(item(name, kind, Some(detail), "1"));
+        }
+    });
+    for r in &catalogue().instructions {
+        if seen.insert(fold(&r.name)) {
+            out.push(item(
+                &r.name,
+                CompletionKind::Procedure,
+                Some(r.signature()),
+                "2",
+            ));
+        }
+    }
+    for k in STATEMENT_KEYWORDS {
+        out.push(item(k, CompletionKind::Keyword, None, "4"));
+    }
+    for (label, body) in STATEMENT_SNIPPETS {
+        out.push(snippet(label, body));
+    }
+    // Assignments start with a name: the data in scope.
+    data_items(cx, None, &mut out);
+    out
+}
+
+fn module_items(cx: &mut Cx<'_>) -> Vec<CompletionItem> {
+    let _ = cx;
+    let mut out = Vec::new();
+    for k in MODULE_KEYWORDS {
+        out.push(item(k, CompletionKind::Keyword, None, "1"));
+    }
+    for (label, body) in ROUTINE_SNIPPETS {
+        out.push(snippet(label, body));
+    }
+    out
+}
+
+fn types(cx: &mut Cx<'_>) -> Vec<CompletionItem> {
+    let mut out = Vec::new();
+    let mut seen = HashSet::new();
+    let module = cx.module.map(|(i, _)| i);
+    let mut user = |r: crate::task::ItemRef, local: bool| {
+        if local && !(r.unit == cx.unit_idx && Some(r.module) == module) {
+            return;
+        }
+        if let Some((name, _)) = cx.task.item_name(r)
+            && matches!(r.item, Item::Record(_) | Item::Alias(_))
+            && seen.insert(fold(name))
+        {
+            let detail = match r.item {
+                Item::Record(_) => "RECORD",
+                _ => "ALIAS",
+            };
+            out.push(item(
+                name,
+                CompletionKind::Type,
+                Some(detail.to_owned()),
+                "0",
+            ));
+        }
+    };
+    for refs in cx.task.globals.values() {
+        refs.iter().for_each(|r| user(*r, false));
+    }
+    for refs in cx.task.locals.values() {
+        refs.iter().for_each(|r| user(*r, true));
+    }
+    for t in &catalogue().datatypes {
+        if seen.insert(fold(&t.name)) {
+            out.push(item(
+                &t.name,
+                CompletionKind::Type,
+                Some(t.signature()),
+                "1",
+            ));
+        }
+    }
+    out
+}
+
+/// Routines visible here: (name, kind, detail).
+fn visible_routines(cx: &mut Cx<'_>, f: &mut impl FnMut(&str, CompletionKind, String)) {
+    let module = cx.module.map(|(i, _)| i);
+    let text_of = |r: crate::task::ItemRef| -> Option<(String, CompletionKind, String)> {
+        let d = cx.task.routine(r)?;
+        let u = cx.task.units.get(r.unit)?;
+        let kind = match d.kind {
+            RoutineKind::Proc => CompletionKind::Procedure,
+            RoutineKind::Func => CompletionKind::Function,
+            RoutineKind::Trap => CompletionKind::Trap,
+        };
+        Some((
+            d.name.clone(),
+            kind,
+            super::hover::routine_header(&u.text, d),
+        ))
+    };
+    let mut found = Vec::new();
+    for refs in cx.task.globals.values() {
+        found.extend(refs.iter().filter_map(|r| text_of(*r)));
+    }
+    for refs in cx.task.locals.values() {
+        found.extend(
+            refs.iter()
+                .filter(|r| r.unit == cx.unit_idx && Some(r.module) == module)
+                .filter_map(|r| text_of(*r)),
+        );
+    }
+    for (n, k, d) in found {
+        f(&n, k, d);
+    }
+}
+
+/// Data in scope; those of type `expected` sort first.
+fn data_items(cx: &mut Cx<'_>, expected: Option<&str>, out: &mut Vec<CompletionItem>) {
+    let types = cx.task.types();
+    let matches = |ty: Option<&str>| -> bool {
+        match (expected, ty) {
+            (Some(e), Some(t)) => {
+                same(e, t) || types.base(&Ty::named(e)) == types.base(&Ty::named(t))
+            }
+            _ => false,
+        }
+    };
+    let mut seen = HashSet::new();
+    let mut push =
+        |name: &str, kind: CompletionKind, ty: Option<&str>, detail: String, rank: u8| {
+            if !seen.insert(fold(name)) {
+                return;
+            }
+            let first = if matches(ty) { "0" } else { "5" };
+            out.push(item(name, kind, Some(detail), &format!("{first}{rank}")));
+        };
+    let storage_kind = |s: Storage| match s {
+        Storage::Var => CompletionKind::Variable,
+        Storage::Pers => CompletionKind::Persistent,
+        Storage::Const => CompletionKind::Constant,
+    };
+    if let Some(r) = &cx.routine {
+        for v in &r.for_vars {
+            push(
+                v,
+                CompletionKind::Variable,
+                Some("num"),
+                "num (FOR)".to_owned(),
+                0,
+            );
+        }
+        for p in r.params.values() {
+            let ty = p.ty.as_ref().map(|t| t.name.as_str());
+            push(
+                &p.name,
+                CompletionKind::Parameter,
+                ty,
+                format!("{} {}", ty.unwrap_or("?"), p.name),
+                0,
+            );
+        }
+        for d in r.locals.values() {
+            let ty = d.ty.as_ref().map(|t| t.name.as_str());
+            push(
+                &d.name,
+                storage_kind(d.storage),
+                ty,
+                format!("{} {} {}", d.storage.keyword(), ty.unwrap_or("?"), d.name),
+                0,
+            );
+        }
+    }
+    let module = cx.module.map(|(i, _)| i);
+    let mut refs: Vec<crate::task::ItemRef> = Vec::new();
+    for rs in cx.task.locals.values() {
+        refs.extend(
+            rs.iter()
+                .filter(|r| r.unit == cx.unit_idx && Some(r.module) == module),
+        );
+    }
+    for rs in cx.task.globals.values() {
+        refs.extend(rs.iter());
+    }
+    refs.sort_by_key(|r| (r.unit != cx.unit_idx, r.unit, r.module));
+    for r in refs {
+        if let Some(d) = cx.task.data(r) {
+            let ty = d.ty.as_ref().map(|t| t.name.as_str());
+            let rank = if r.unit == cx.unit_idx { 1 } else { 2 };
+            push(
+                &d.name,
+                storage_kind(d.storage),
+                ty,
+                format!("{} {} {}", d.storage.keyword(), ty.unwrap_or("?"), d.name),
+                rank,
+            );
+        }
+    }
+    if let Some(signals) = &cx.task.signals {
+        let mut sigs: Vec<_> = signals.iter().collect();
+        sigs.sort();
+        for (name, ty) in sigs {
+            push(
+                name,
+                CompletionKind::Variable,
+                Some(ty),
+                format!("{ty} {name}"),
+                3,
+            );
+        }
+    }
+    for d in &catalogue().data {
+        let kind = match d.kind {
+            crate::catalogue::DatumKind::Const => CompletionKind::Constant,
+            crate::catalogue::DatumKind::Pers => CompletionKind::Persistent,
+            crate::catalogue::DatumKind::Var => CompletionKind::Variable,
+        };
+        push(&d.name, kind, Some(&d.ty), d.signature(), 4);
+    }
+}
+
+/// Data and functions for an expression.
+fn expression_items(cx: &mut Cx<'_>, expected: Option<&str>) -> Vec<CompletionItem> {
+    let mut out = Vec::new();
+    data_items(cx, expected, &mut out);
+    let types = cx.task.types();
+    let returns_expected = |ret: Option<&str>| match (expected, ret) {
+        (Some(e), Some(r)) => same(e, r) || types.base(&Ty::named(e)) == types.base(&Ty::named(r)),
+        _ => false,
+    };
+    let mut seen = HashSet::new();
+    let mut user = Vec::new();
+    visible_routines(cx, &mut |name, kind, detail| {
+        if kind == CompletionKind::Function {
+            user.push((name.to_owned(), detail));
+        }
+    });
+    for (name, detail) in user {
+        let ret = lookup_return(cx, &name);
+        let first = if returns_expected(ret.as_deref()) {
+            "1"
+        } else {
+            "6"
+        };
+        if seen.insert(fold(&name)) {
+            out.push(item(
+                &name,
+                CompletionKind::Function,
+                Some(detail),
+                &format!("{first}1"),
+            ));
+        }
+    }
+    for r in &catalogue().functions {
+        if seen.insert(fold(&r.name)) {
+            let first = if returns_expected(r.returns.as_deref()) {
+                "1"
+            } else {
+                "6"
+            };
+            out.push(item(
+                &r.name,
+                CompletionKind::Function,
+                Some(r.signature()),
+                &format!("{first}2"),
+            ));
+        }
+    }
+    for k in EXPRESSION_KEYWORDS {
+        out.push(item(k, CompletionKind::Keyword, None, "7"));
+    }
+    out
+}
+
+fn lookup_return(cx: &mut Cx<'_>, name: &str) -> Option<String> {
+    match cx.resolve_routine(name, true)? {
+        RoutineSym::User(d, _) => d.returns.as_ref().map(|t| t.name.clone()),
+        RoutineSym::Builtin(r, _) => r.returns.clone(),
+    }
+}
+
+/// After `\`: the optional parameters of the call not yet given (nor an
+/// alternative of one given).
+fn optional_args(cx: &mut Cx<'_>, bf: &Before) -> Vec<CompletionItem> {
+    let Some(call) = call_at(bf) else {
+        return Vec::new();
+    };
+    let Some(sym) = cx.resolve_routine(&call.name, call.is_function) else {
+        return Vec::new();
+    };
+    let sig: Sig = sig_of(sym);
+    let given: Vec<&str> = call.done.iter().filter_map(|a| a.name.as_deref()).collect();
+    let given_groups: HashSet<u32> = sig
+        .params
+        .iter()
+        .filter(|p| given.iter().any(|g| same(g, &p.name)))
+        .filter_map(|p| p.alt_group)
+        .collect();
+    let mut out = Vec::new();
+    for (i, p) in sig.params.iter().enumerate() {
+        if !p.optional
+            || given.iter().any(|g| same(g, &p.name))
+            || p.alt_group.is_some_and(|g| given_groups.contains(&g))
+        {
+            continue;
+        }
+        let detail = if p.switch {
+            format!("\\{} (switch)", p.name)
+        } else {
+            format!("\\{} {}", p.ty, p.name)
+        };
+        out.push(CompletionItem {
+            label: p.name.clone(),
+            kind: CompletionKind::OptionalArgument,
+            detail: Some(detail),
+            insert_text: (!p.switch).then(|| format!("{}:=", p.name)),
+            is_snippet: false,
+            sort_text: Some(format!("{i:03}")),
+        });
+    }
+    out
+}
+
+/// After `.`: the components of the object's type. The object is the
+/// chain of names, components and indexes before the dot.
+fn components(cx: &mut Cx<'_>, before_dot: &[u8]) -> Vec<CompletionItem> {
+    // Walk back over `name`, `.name` and `{...}` segments.
+    let mut i = before_dot.len();
+    let mut depth = 0;
+    while i > 0 {
+        let c = before_dot[i - 1];
+        if depth > 0 {
+            match c {
+                b'}' => depth += 1,
+                b'{' => depth -= 1,
+                _ => {}
+            }
+            i -= 1;
+            continue;
+        }
+        match c {
+            b'}' => depth += 1,
+            b'.' | b'_' => {}
+            c if c.is_ascii_alphanumeric() => {}
+            _ => break,
+        }
+        i -= 1;
+    }
+    let chain = String::from_utf8_lossy(&before_dot[i..]).into_owned();
+    let Some(ty) = chain_type(cx, &chain) else {
+        return Vec::new();
+    };
+    if ty.dims() > 0 {
+        return Vec::new();
+    }
+    let Some(comps) = cx.types.components(&ty) else {
+        return Vec::new();
+    };
+    comps
+        .into_iter()
+        .enumerate()
+        .map(|(i, (name, t))| CompletionItem {
+            label: name.clone(),
+            kind: CompletionKind::Component,
+            detail: Some(format!("{t} {name}")),
+            insert_text: None,
+            is_snippet: false,
+            sort_text: Some(format!("{i:03}")),
+        })
+        .collect()
+}
+
+/// The type of `a{i}.b.c`.
+fn chain_type(cx: &mut Cx<'_>, chain: &str) -> Option<Ty> {
+    // Split into segments, dropping index contents.
+    let mut segs: Vec<(String, usize)> = Vec::new(); // name, index count after it
+    let mut cur = String::new();
+    let mut depth = 0;
+    for c in chain.chars() {
+        match c {
+            '{' => {
+                if depth == 0 {
+                    segs.push((std::mem::take(&mut cur), 0));
+                }
+                depth += 1;
+            }
+            '}' => {
+                depth -= 1;
+                if depth == 0
+                    && let Some(last) = segs.last_mut()
+                {
+                    last.1 += 1;
+                }
+            }
+            '.' if depth == 0 => {
+                if !cur.is_empty() {
+                    segs.push((std::mem::take(&mut cur), 0));
+                }
+            }
+            c if depth == 0 => cur.push(c),
+            _ => {}
+        }
+    }
+    if !cur.is_empty() {
+        segs.push((cur, 0));
+    }
+    let mut segs = segs.into_iter().filter(|(n, _)| !n.is_empty());
+    let (first, idx) = segs.next()?;
+    let mut ty = cx.resolve_data(&first)?.ty(&cx.types);
+    if idx > 0 {
+        ty = ty.element().clone();
+    }
+    for (name, idx) in segs {
+        ty = cx.types.component(&ty, &name)?;
+        if idx > 0 {
+            ty = ty.element().clone();
+        }
+    }
+    Some(ty)
+}
+
+/// Documentation of a completion item, looked up when the client asks.
+pub fn completion_documentation(label: &str, kind: CompletionKind) -> Option<String> {
+    let cat = catalogue();
+    let doc = |summary: &str, doc: &str| {
+        let mut s = summary.to_owned();
+        if !doc.is_empty() {
+            s.push_str("\n\n");
+            s.push_str(doc);
+        }
+        s
+    };
+    match kind {
+        CompletionKind::Procedure => cat.instruction(label).map(|r| {
+            format!(
+                "```rapid\n{}\n```\n\n{}",
+                r.signature(),
+                doc(&r.summary, &r.doc)
+            )
+        }),
+        CompletionKind::Function => cat.function(label).map(|r| {
+            format!(
+                "```rapid\n{}\n```\n\n{}",
+                r.signature(),
+                doc(&r.summary, &r.doc)
+            )
+        }),
+        CompletionKind::Type => cat.datatype(label).map(|t| {
+            format!(
+                "```rapid\n{}\n```\n\n{}",
+                t.signature(),
+                doc(&t.summary, &t.doc)
+            )
+        }),
+        CompletionKind::Constant | CompletionKind::Variable | CompletionKind::Persistent => cat
+            .datum(label)
+            .map(|d| format!("```rapid\n{}\n```\n\n{}", d.signature(), d.summary)),
+        _ => None,
+    }
+}

@@ -1,0 +1,165 @@
+use super::fixture;
+use crate::ide::{CompletionKind, completion_documentation, completions, signature_help};
+
+fn labels(src: &str) -> Vec<(String, CompletionKind)> {
+    let (task, unit, offset) = fixture(src);
+    let mut items = completions(&task, unit, offset);
+    items.sort_by(|a, b| a.sort_text.cmp(&b.sort_text).then(a.label.cmp(&b.label)));
+    items.into_iter().map(|i| (i.label, i.kind)).collect()
+}
+
+fn has(items: &[(String, CompletionKind)], label: &str) -> bool {
+    items.iter().any(|(l, _)| l.eq_ignore_ascii_case(label))
+}
+
+const HEAD: &str = "MODULE m\n  RECORD part\n    num weight;\n    pos place;\n  ENDRECORD\n  VAR part parts{3};\n  PERS robtarget pHome := [[0,0,0],[1,0,0,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];\n  CONST speeddata vSlow := [10, 10, 10, 10];\n  PROC Grip(num force)\n  ENDPROC\n";
+
+fn in_proc(body: &str) -> String {
+    format!("{HEAD}  PROC main()\n    VAR num count;\n{body}\n  ENDPROC\nENDMODULE\n")
+}
+
+#[test]
+fn statement_start_offers_instructions_procedures_keywords_and_snippets() {
+    let items = labels(&in_proc("    Mo$0"));
+    for l in [
+        "MoveL", "Grip", "count", "RETURN", "IF", "FOR", "WHILE", "TEST",
+    ] {
+        assert!(has(&items, l), "{l} missing");
+    }
+    let (task, unit, offset) = fixture(&in_proc("    $0"));
+    let all = completions(&task, unit, offset);
+    let for_snippet = all
+        .iter()
+        .find(|i| i.label == "FOR")
+        .unwrap_or_else(|| panic!("no FOR"));
+    assert!(for_snippet.is_snippet);
+    assert!(
+        for_snippet
+            .insert_text
+            .as_deref()
+            .unwrap_or_default()
+            .contains("${1:i}")
+    );
+    // Functions are not statements.
+    assert!(!has(&labels(&in_proc("    $0")), "Abs"));
+}
+
+#[test]
+fn arguments_offer_data_of_the_expected_type_first() {
+    let items = labels(&in_proc("    MoveL $0"));
+    assert_eq!(
+        items.first().map(|i| i.0.as_str()),
+        Some("pHome"),
+        "{:?}",
+        &items[..5]
+    );
+    let items = labels(&in_proc("    MoveL pHome, $0"));
+    assert_eq!(items.first().map(|i| i.0.as_str()), Some("vSlow"));
+    assert!(has(&items, "v1000"), "built-in speeds are offered");
+    let items = labels(&in_proc("    count := Abs($0"));
+    assert!(has(&items, "count") && has(&items, "Sqrt"));
+}
+
+#[test]
+fn after_backslash_the_optional_arguments_left() {
+    let items = labels(&in_proc("    MoveL \\Conc, pHome, vSlow \\$0"));
+    assert!(has(&items, "V") && has(&items, "T") && has(&items, "WObj"));
+    assert!(!has(&items, "Conc"), "already given");
+    assert!(!has(&items, "ToPoint"), "not optional");
+    let items = labels(&in_proc("    MoveL pHome, vSlow \\V:=100, fine \\$0"));
+    assert!(!has(&items, "T"), "an alternative of \\V");
+    assert!(
+        items
+            .iter()
+            .all(|(_, k)| *k == CompletionKind::OptionalArgument)
+    );
+}
+
+#[test]
+fn after_a_dot_the_components() {
+    let items = labels(&in_proc("    parts{1}.$0"));
+    assert_eq!(
+        items,
+        vec![
+            ("weight".into(), CompletionKind::Component),
+            ("place".into(), CompletionKind::Component)
+        ]
+    );
+    let items = labels(&in_proc("    parts{1}.place.$0"));
+    let names: Vec<&str> = items.iter().map(|i| i.0.as_str()).collect();
+    assert_eq!(names, vec!["x", "y", "z"]);
+    let items = labels(&in_proc("    count := pHome.trans.x + pHome.$0"));
+    assert!(has(&items, "rot") && has(&items, "extax"));
+}
+
+#[test]
+fn types_after_storage_keywords_and_in_parameter_lists() {
+    let items = labels(&in_proc("    VAR $0"));
+    assert!(has(&items, "num") && has(&items, "part") && has(&items, "robtarget"));
+    assert!(items.iter().all(|(_, k)| *k == CompletionKind::Type));
+    assert!(
+        labels(&in_proc("    VAR num $0")).is_empty(),
+        "the name is free"
+    );
+    let items = labels(&format!("{HEAD}  PROC p(num a, $0\nENDMODULE\n"));
+    assert!(has(&items, "part"));
+}
+
+#[test]
+fn nothing_in_comments_and_strings() {
+    assert!(labels(&in_proc("    ! MoveL $0")).is_empty());
+    assert!(labels(&in_proc("    TPWrite \"Mo$0")).is_empty());
+}
+
+#[test]
+fn module_level_offers_declarations() {
+    let items = labels("MODULE m\n  $0\nENDMODULE\n");
+    assert!(has(&items, "PROC") && has(&items, "VAR") && !has(&items, "MoveL"));
+}
+
+#[test]
+fn documentation_is_resolved_lazily() {
+    let doc = completion_documentation("MoveL", CompletionKind::Procedure).unwrap_or_default();
+    assert!(doc.contains("PROC MoveL("), "{doc}");
+    assert!(completion_documentation("robtarget", CompletionKind::Type).is_some());
+    assert!(completion_documentation("nothing", CompletionKind::Procedure).is_none());
+}
+
+#[test]
+fn signature_help_marks_the_active_parameter() {
+    let (task, unit, offset) = fixture(&in_proc("    MoveL pHome, $0"));
+    let help = signature_help(&task, unit, offset).unwrap_or_else(|| panic!("no help"));
+    assert!(
+        help.label
+            .starts_with("MoveL [\\Conc] ToPoint [\\ID] Speed [\\V] | [\\T] Zone"),
+        "{}",
+        help.label
+    );
+    let active = help.active_parameter.unwrap_or(99);
+    assert_eq!(&help.label[help.parameters[active].0.clone()], "Speed");
+    let (task, unit, offset) = fixture(&in_proc("    MoveL pHome, vSlow \\T:=$0"));
+    let help = signature_help(&task, unit, offset).unwrap_or_else(|| panic!("no help"));
+    assert_eq!(
+        &help.label[help.parameters[help.active_parameter.unwrap_or(99)]
+            .0
+            .clone()],
+        "[\\T]"
+    );
+    let (task, unit, offset) = fixture(&in_proc("    count := Round(count \\Dec:=1$0"));
+    let help = signature_help(&task, unit, offset).unwrap_or_else(|| panic!("no help"));
+    assert!(help.label.starts_with("Round("), "{}", help.label);
+    let (task, unit, offset) = fixture(&in_proc("    Grip $0"));
+    let help = signature_help(&task, unit, offset).unwrap_or_else(|| panic!("no help"));
+    assert_eq!(help.label, "Grip force");
+    assert_eq!(help.active_parameter, Some(0));
+}
+
+#[test]
+fn completion_never_panics() {
+    let src = in_proc("    MoveL \\Conc, p.x{1, [2, \"a!\"], Abs(\\");
+    let (task, unit, _) = fixture(&src);
+    for offset in 0..src.len() + 3 {
+        let _ = completions(&task, unit, offset);
+        let _ = signature_help(&task, unit, offset);
+    }
+}

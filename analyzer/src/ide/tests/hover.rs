@@ -1,0 +1,78 @@
+use super::fixture;
+use crate::ide::hover;
+
+fn hover_text(src: &str) -> String {
+    let (task, unit, offset) = fixture(src);
+    hover(&task, unit, offset)
+        .map(|h| h.markdown)
+        .unwrap_or_default()
+}
+
+#[test]
+fn builtins_show_signature_and_documentation() {
+    let h = hover_text(
+        "MODULE m\n  PROC main()\n    Mo$0veL p, v100, fine, tool0;\n  ENDPROC\nENDMODULE\n",
+    );
+    assert!(
+        h.contains("PROC MoveL(\\switch Conc, robtarget ToPoint"),
+        "{h}"
+    );
+    assert!(h.contains("Linear move"), "{h}");
+    let h = hover_text("MODULE m\n  VAR robt$0arget p;\nENDMODULE\n");
+    assert!(h.contains("RECORD robtarget"), "{h}");
+    let h = hover_text(
+        "MODULE m\n  PROC main()\n    MoveL p, v1$0000, fine, tool0;\n  ENDPROC\nENDMODULE\n",
+    );
+    assert!(h.contains("speeddata v1000 :="), "{h}");
+}
+
+#[test]
+fn user_symbols_show_declaration_and_doc_comment() {
+    let src = "MODULE m\n  ! The gripper tool.\n  ! Calibrated 2024.\n  PERS tooldata tGripper := [TRUE, [[0, 0, 100], [1, 0, 0, 0]], [1, [0, 0, 1], [1, 0, 0, 0], 0, 0, 0]]; ! main tool\n  PROC main()\n    MoveL p, v100, fine, tGrip$0per;\n  ENDPROC\nENDMODULE\n";
+    let h = hover_text(src);
+    assert!(h.contains("PERS tooldata tGripper := [TRUE,"), "{h}");
+    assert!(
+        h.contains("The gripper tool.  \nCalibrated 2024.  \nmain tool"),
+        "{h}"
+    );
+    let h = hover_text(
+        "MODULE m\n  ! Moves home.\n  PROC goHome(\\switch fast)\n  ENDPROC\n  PROC main()\n    goH$0ome;\n  ENDPROC\nENDMODULE\n",
+    );
+    assert!(h.contains("PROC goHome(\\switch fast)"), "{h}");
+    assert!(h.contains("Moves home."), "{h}");
+    let h = hover_text(
+        "MODULE m\n  PROC p(INOUT num val{*})\n    val$0{1} := 1;\n  ENDPROC\nENDMODULE\n",
+    );
+    assert!(
+        h.contains("INOUT num val{*}") && h.contains("parameter of `p`"),
+        "{h}"
+    );
+}
+
+#[test]
+fn long_declarations_are_shortened() {
+    let long = (0..80)
+        .map(|i| i.to_string())
+        .collect::<Vec<_>>()
+        .join(", ");
+    let h = hover_text(&format!(
+        "MODULE m\n  CONST num tab{{80}} := [{long}];\n  PROC main()\n    TPWrite \"\"\\Num:=ta$0b{{1}};\n  ENDPROC\nENDMODULE\n"
+    ));
+    assert!(h.contains(" ...") && h.len() < 400, "{h}");
+}
+
+#[test]
+fn robtargets_are_decoded() {
+    let src = "MODULE m\n  CONST robtarget p$010 := [[100, -20.5, 300], [0.7071068, 0, 0.7071068, 0], [0, -1, 2, 0], [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]];\nENDMODULE\n";
+    let h = hover_text(src);
+    assert!(h.contains("x = 100, y = -20.5, z = 300"), "{h}");
+    assert!(h.contains("ry = 90°"), "{h}");
+    assert!(h.contains("cf1 = 0, cf4 = -1, cf6 = 2, cfx = 0"), "{h}");
+    assert!(h.contains("a = not used"), "{h}");
+    let literal = "MODULE m\n  PROC main()\n    MoveL [[1, 2, 3], [1, 0, 0, 0], [0, 0, 0, 0], [9E9, 9E9, 9E9, 9E9, 9E9, 5$0]], v100, fine, tool0;\n  ENDPROC\nENDMODULE\n";
+    let h = hover_text(literal);
+    assert!(
+        h.contains("x = 1, y = 2, z = 3") && h.contains("f = 5"),
+        "{h}"
+    );
+}
