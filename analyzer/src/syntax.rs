@@ -10,7 +10,8 @@ use std::ops::Range;
 use tree_sitter::{Language, Node, Parser, Tree};
 
 use crate::diagnostic::Diagnostic;
-use crate::rules::{missing_token, syntax_error};
+use crate::diagnostic::{Edit, Fix};
+use crate::rules::{equals_for_assignment, missing_token, syntax_error};
 
 /// The RAPID language of the tree-sitter grammar.
 pub fn language() -> Language {
@@ -48,7 +49,12 @@ pub fn syntax_diagnostics(tree: &Tree, text: &str) -> Vec<Diagnostic> {
     loop {
         let node = cursor.node();
         if descend && node.is_error() {
-            out.push(error_diagnostic(node, text, &language));
+            let equals = equals_for_assignment(node, text);
+            if equals.is_empty() {
+                out.push(error_diagnostic(node, text, &language));
+            } else {
+                out.extend(equals);
+            }
             descend = false;
         } else if descend && node.is_missing() {
             out.push(missing_diagnostic(node, &language));
@@ -68,6 +74,63 @@ pub fn syntax_diagnostics(tree: &Tree, text: &str) -> Vec<Diagnostic> {
         }
         // Siblings without errors are skipped cheaply by `has_error` above.
     }
+}
+
+/// `=` written for `:=` in an error: either the error starts with `=` right
+/// after a declaration's or a statement's name (`VAR num n = 0;`,
+/// `n = n + 1;`), or it holds a data reference that starts its line followed
+/// by `=` (`a.b = 1;`, `a{1} = 2;`).
+fn equals_for_assignment(error: Node<'_>, text: &str) -> Vec<Diagnostic> {
+    let mut out = Vec::new();
+    let mut cursor = error.walk();
+    let children: Vec<Node<'_>> = error.children(&mut cursor).collect();
+    let is_equals = |n: &Node<'_>| !n.is_named() && n.kind() == "=";
+    if let Some(first) = children.first().filter(|n| is_equals(n))
+        && let Some(prev) = previous_leaf(error)
+        && prev.kind() == "identifier"
+        && let Some(parent) = prev.parent()
+        && (parent.kind() == "data_declaration"
+            || (parent.kind() == "procedure_call" && starts_line(prev, text)))
+    {
+        out.push(equals_diagnostic(first.byte_range()));
+        return out;
+    }
+    for pair in children.windows(2) {
+        let [place, eq] = pair else { continue };
+        if is_equals(eq)
+            && matches!(
+                place.kind(),
+                "identifier" | "component_access" | "index_expression"
+            )
+            && starts_line(*place, text)
+        {
+            out.push(equals_diagnostic(eq.byte_range()));
+        }
+    }
+    out
+}
+
+/// Is this node the first thing on its line?
+fn starts_line(node: Node<'_>, text: &str) -> bool {
+    let before = text.get(..node.start_byte()).unwrap_or_default();
+    let line_start = before.rfind(['\n', '\r']).map_or(0, |i| i + 1);
+    before[line_start..].trim().is_empty()
+}
+
+fn equals_diagnostic(range: Range<usize>) -> Diagnostic {
+    Diagnostic::new(
+        &equals_for_assignment::RULE,
+        range.clone(),
+        "expected `:=` to assign a value, found `=` (the comparison operator)",
+    )
+    .with_fix(Fix {
+        title: "Replace `=` with `:=`".into(),
+        edits: vec![Edit {
+            range,
+            replacement: ":=".into(),
+        }],
+        safe: true,
+    })
 }
 
 fn missing_diagnostic(node: Node<'_>, language: &Language) -> Diagnostic {
@@ -167,7 +230,11 @@ fn previous_leaf(node: Node<'_>) -> Option<Node<'_>> {
         at = at.parent()?;
     };
     let mut leaf = prev;
-    while let Some(last) = leaf.child(leaf.child_count().checked_sub(1)?) {
+    while let Some(last) = leaf
+        .child_count()
+        .checked_sub(1)
+        .and_then(|i| leaf.child(i))
+    {
         leaf = last;
     }
     Some(leaf)

@@ -130,6 +130,9 @@ pub struct Task {
     /// Signals configured for this task (`EIO.cfg`): folded name to data
     /// type (`signaldi`...); `None` when no configuration was given.
     pub signals: Option<Signals>,
+    /// Mechanical units configured for this task (`MOC.cfg`), folded; they
+    /// are `mecunit` data.
+    pub mecunits: std::collections::HashSet<String>,
     /// Combined interface hash of every unit, for cache invalidation.
     pub interface: u64,
 }
@@ -159,6 +162,7 @@ impl Task {
             globals,
             locals,
             signals,
+            mecunits: Default::default(),
             interface,
         }
     }
@@ -259,6 +263,57 @@ pub fn module_items(module: &Module) -> impl Iterator<Item = (&str, bool, Item)>
 
 /// Configured I/O signals: folded name to RAPID data type.
 pub type Signals = HashMap<String, &'static str>;
+
+/// What a controller configuration file declares for RAPID programs.
+#[derive(Clone, Debug, Default)]
+pub struct Config {
+    /// I/O signals (`EIO.cfg`); `None` when the file has no signal section.
+    pub signals: Option<Signals>,
+    /// Mechanical units (`MOC.cfg`, section `MECHANICAL_UNIT`), folded.
+    pub mecunits: Vec<String>,
+}
+
+/// Reads a configuration file: the signals of `EIO.cfg` and the mechanical
+/// units of `MOC.cfg` (whatever the file is called).
+pub fn parse_config(cfg: &str) -> Config {
+    let has_signals = cfg.lines().any(|l| {
+        let t = l.trim();
+        t.ends_with(':') && !t.starts_with('-') && t.to_ascii_uppercase().contains("SIGNAL")
+    });
+    Config {
+        signals: has_signals.then(|| parse_eio_signals(cfg)),
+        mecunits: parse_moc_units(cfg),
+    }
+}
+
+/// The `-name` of every entry of the `MECHANICAL_UNIT:` section, folded.
+fn parse_moc_units(cfg: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut in_units = false;
+    for line in cfg.lines() {
+        let t = line.trim();
+        if t.ends_with(':') && !t.starts_with('-') && !t.contains(' ') {
+            in_units = t.eq_ignore_ascii_case("MECHANICAL_UNIT:");
+            continue;
+        }
+        if in_units {
+            let lower = t.to_ascii_lowercase();
+            let mut rest = lower.as_str();
+            while let Some(at) = rest.find("-name ") {
+                let value = rest[at + 6..].trim_start();
+                let name = match value.strip_prefix('"') {
+                    Some(q) => q.split('"').next().unwrap_or_default(),
+                    None => value.split_whitespace().next().unwrap_or_default(),
+                };
+                if !name.is_empty() {
+                    out.push(name.to_owned());
+                }
+                rest = &rest[at + 6..];
+            }
+        }
+    }
+    out
+}
 
 /// The signals declared in an I/O configuration file (`EIO.cfg`): every
 /// entry of a section whose name holds `SIGNAL`, with its `-Name` and

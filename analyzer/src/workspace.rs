@@ -7,19 +7,25 @@
 //! its task (the declarations other modules see) changes, so typing inside a
 //! routine re-checks only that file.
 
-use std::collections::{BTreeMap, HashMap};
+use std::collections::{BTreeMap, HashMap, HashSet};
 use std::sync::Arc;
 
 use crate::diagnostic::Diagnostic;
-use crate::task::{Signals, Task, Unit, parse_eio_signals, task_key};
+use crate::task::{Config, Signals, Task, Unit, parse_config, task_key};
 
 #[derive(Default)]
 pub struct Workspace {
     units: BTreeMap<String, Arc<Unit>>,
-    /// Signal names of each I/O configuration file, by the file's path.
-    configs: BTreeMap<String, Signals>,
+    /// What each configuration file declares, by the file's path.
+    configs: BTreeMap<String, Config>,
     tasks: HashMap<String, Arc<Task>>,
     checked: HashMap<String, Checked>,
+    /// Program files (`.pgf`): the pgf's path to the folded paths of the
+    /// modules it lists.
+    programs: BTreeMap<String, Vec<String>>,
+    /// Folded module path to the program that lists it (derived from
+    /// `programs`).
+    listed: HashMap<String, String>,
 }
 
 struct Checked {
@@ -33,6 +39,57 @@ impl Workspace {
         Workspace::default()
     }
 
+    /// Adds or replaces a program file (`.pgf`, XML listing the modules of a
+    /// program, `<Module>Main.mod</Module>`, relative to the pgf's folder).
+    /// The listed modules, with the system modules (`.sys`) of the pgf's
+    /// folder that no program lists, form one task named by the pgf's path
+    /// (outside a backup's `RAPID/TASKn`, whose folders fix the tasks).
+    pub fn set_program(&mut self, path: &str, xml: &str) {
+        let modules = parse_program(path, xml);
+        self.programs.insert(path.to_owned(), modules);
+        self.programs_changed();
+    }
+
+    pub fn remove_program(&mut self, path: &str) {
+        if self.programs.remove(path).is_some() {
+            self.programs_changed();
+        }
+    }
+
+    fn programs_changed(&mut self) {
+        self.listed.clear();
+        for (pgf, modules) in &self.programs {
+            for m in modules {
+                self.listed.entry(m.clone()).or_insert_with(|| pgf.clone());
+            }
+        }
+        self.tasks.clear();
+    }
+
+    /// The key of the task a file belongs to: its program's, when a `.pgf`
+    /// lists it, else [`task_key`].
+    pub fn task_key(&self, path: &str) -> String {
+        let key = task_key(path);
+        if self.programs.is_empty() || is_backup_key(&key) {
+            return key;
+        }
+        let folded = normalize(path);
+        if let Some(pgf) = self.listed.get(&folded) {
+            return pgf.clone();
+        }
+        if folded.ends_with(".sys") || folded.ends_with(".sysx") {
+            let dir = folded.rsplit_once('/').map_or("", |(d, _)| d);
+            if let Some(pgf) = self
+                .programs
+                .keys()
+                .find(|p| normalize(p).rsplit_once('/').map_or("", |(d, _)| d) == dir)
+            {
+                return pgf.clone();
+            }
+        }
+        key
+    }
+
     /// Adds or replaces a file, parsing it from scratch.
     pub fn set_file(&mut self, path: &str, text: String) {
         self.set_unit(Unit::new(path.to_owned(), text, None));
@@ -40,23 +97,24 @@ impl Workspace {
 
     /// Adds or replaces a file parsed by the caller (e.g. incrementally).
     pub fn set_unit(&mut self, unit: Unit) {
-        let key = task_key(&unit.path);
+        let key = self.task_key(&unit.path);
         self.tasks.remove(&key);
         self.units.insert(unit.path.clone(), Arc::new(unit));
     }
 
     pub fn remove_file(&mut self, path: &str) {
         if self.units.remove(path).is_some() {
-            self.tasks.remove(&task_key(path));
+            self.tasks.remove(&self.task_key(path));
             self.checked.remove(path);
         }
     }
 
-    /// Adds or replaces an I/O configuration file (`EIO.cfg`). It applies
-    /// to the tasks below its folder (below the backup for `SYSPAR/EIO.cfg`).
+    /// Adds or replaces a controller configuration file: `EIO.cfg` (I/O
+    /// signals) or `MOC.cfg` (mechanical units); other `.cfg` files are read
+    /// for the same sections. It applies to the tasks below its folder (below
+    /// the backup for `SYSPAR/*.cfg`).
     pub fn set_config(&mut self, path: &str, text: &str) {
-        self.configs
-            .insert(path.to_owned(), parse_eio_signals(text));
+        self.configs.insert(path.to_owned(), parse_config(text));
         self.tasks.clear();
     }
 
@@ -76,17 +134,20 @@ impl Workspace {
 
     /// The task a file belongs to (built on demand and cached).
     pub fn task_of(&mut self, path: &str) -> Arc<Task> {
-        let key = task_key(path);
+        let key = self.task_key(path);
         if let Some(t) = self.tasks.get(&key) {
             return t.clone();
         }
         let units: Vec<Arc<Unit>> = self
             .units
             .values()
-            .filter(|u| task_key(&u.path) == key)
+            .filter(|u| self.task_key(&u.path) == key)
             .cloned()
             .collect();
-        let task = Arc::new(Task::new(key.clone(), units, self.signals_for(&key)));
+        let (signals, mecunits) = self.config_for(&key);
+        let mut task = Task::new(key.clone(), units, signals);
+        task.mecunits = mecunits;
+        let task = Arc::new(task);
         self.tasks.insert(key, task.clone());
         task
     }
@@ -96,21 +157,27 @@ impl Workspace {
         let keys: BTreeMap<String, String> = self
             .units
             .keys()
-            .map(|p| (task_key(p), p.clone()))
+            .map(|p| (self.task_key(p), p.clone()))
             .collect();
         keys.values().map(|p| self.task_of(p)).collect()
     }
 
-    fn signals_for(&self, key: &str) -> Option<Signals> {
-        let mut found: Option<Signals> = None;
-        for (path, signals) in &self.configs {
+    /// The configuration that applies to a task: its signals (`None` when
+    /// no configuration declares signals) and its mechanical units.
+    fn config_for(&self, key: &str) -> (Option<Signals>, HashSet<String>) {
+        let mut signals: Option<Signals> = None;
+        let mut mecunits = HashSet::new();
+        for (path, config) in &self.configs {
             if key.starts_with(config_root(path)) {
-                found
-                    .get_or_insert_with(Signals::new)
-                    .extend(signals.iter().map(|(k, v)| (k.clone(), *v)));
+                if let Some(s) = &config.signals {
+                    signals
+                        .get_or_insert_with(Signals::new)
+                        .extend(s.iter().map(|(k, v)| (k.clone(), *v)));
+                }
+                mecunits.extend(config.mecunits.iter().cloned());
             }
         }
-        found
+        (signals, mecunits)
     }
 
     /// The diagnostics of a file: syntax first, then the checks, in source
@@ -148,6 +215,58 @@ pub fn diagnostics_of(task: &Task, unit: &Arc<Unit>) -> Vec<Diagnostic> {
         out.extend(crate::check::check_unit(task, idx));
     }
     out.sort_by_key(|d| (d.range.start, d.range.end));
+    out
+}
+
+/// Is this the key of a backup's `RAPID/TASKn` folder?
+fn is_backup_key(key: &str) -> bool {
+    let lower = key.to_ascii_lowercase();
+    lower.contains("rapid/task")
+}
+
+/// A path with `/` separators, `.` and `..` resolved, folded.
+fn normalize(path: &str) -> String {
+    let mut parts: Vec<&str> = Vec::new();
+    let unified = path.replace('\\', "/");
+    for p in unified.split('/') {
+        match p {
+            "." | "" if !parts.is_empty() => {}
+            ".." if parts.last().is_some_and(|l| *l != "..") => {
+                parts.pop();
+            }
+            _ => parts.push(p),
+        }
+    }
+    parts.join("/").to_ascii_lowercase()
+}
+
+/// The folded paths of the modules a program file lists, resolved against
+/// the program file's folder. Reads `<Module>...</Module>` elements (any
+/// case); anything else in the XML is ignored.
+fn parse_program(path: &str, xml: &str) -> Vec<String> {
+    let dir = path
+        .replace('\\', "/")
+        .rsplit_once('/')
+        .map_or(String::new(), |(d, _)| d.to_owned());
+    let lower = xml.to_ascii_lowercase();
+    let mut out = Vec::new();
+    let mut at = 0;
+    while let Some(open) = lower.get(at..).and_then(|s| s.find("<module>")) {
+        let start = at + open + "<module>".len();
+        let Some(len) = lower.get(start..).and_then(|s| s.find("</module>")) else {
+            break;
+        };
+        let name = xml.get(start..start + len).unwrap_or_default().trim();
+        if !name.is_empty() {
+            let full = if dir.is_empty() {
+                name.to_owned()
+            } else {
+                format!("{dir}/{name}")
+            };
+            out.push(normalize(&full));
+        }
+        at = start + len;
+    }
     out
 }
 

@@ -24,6 +24,9 @@ struct SigParam {
     optional: bool,
     switch: bool,
     alt_group: Option<u32>,
+    /// An array of any type and any number of dimensions (`Dim`'s ArrPar,
+    /// which the catalogue cannot express).
+    any_array: bool,
 }
 
 /// A routine's signature, whether built in or declared.
@@ -57,6 +60,8 @@ fn signature(sym: RoutineSym<'_>) -> Sig {
                     optional: p.optional,
                     switch: p.switch,
                     alt_group: p.alt_group,
+                    any_array: r.name.eq_ignore_ascii_case("Dim")
+                        && p.name.eq_ignore_ascii_case("ArrPar"),
                 })
                 .collect(),
             required_groups: r
@@ -94,6 +99,7 @@ fn signature(sym: RoutineSym<'_>) -> Sig {
                     optional: p.optional,
                     switch: p.switch,
                     alt_group: p.alt_group,
+                    any_array: false,
                 })
                 .collect(),
             required_groups: Vec::new(),
@@ -117,6 +123,13 @@ pub(super) fn procedure_call<'t>(cx: &mut Cx<'t>, node: Node<'t>) {
         return;
     }
     let name = cx.node_text(name_node);
+    if node.has_error() {
+        // The parser could not make sense of the call: checking its
+        // arguments would only repeat the syntax error in other words.
+        let _ = cx.resolve_routine(name, false);
+        check_args_unknown(cx, args);
+        return;
+    }
     match cx.resolve_routine(name, false) {
         Some(sym) => {
             let sig = signature(sym);
@@ -155,6 +168,11 @@ pub(super) fn function_call<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Ty {
     };
     let args = field(node, "arguments");
     let name = cx.node_text(name_node);
+    if node.has_error() {
+        let _ = cx.resolve_routine(name, true);
+        check_args_unknown(cx, args);
+        return Ty::Unknown;
+    }
     match cx.resolve_routine(name, true) {
         Some(sym) => {
             let sig = signature(sym);
@@ -472,6 +490,20 @@ fn check_value<'t>(cx: &mut Cx<'t>, p: &SigParam, v: Node<'t>) {
         return;
     }
     if actual.is_unknown() || matches!(p.ty, Ty::Unknown) {
+        return;
+    }
+    if p.any_array {
+        if actual.dims() == 0 {
+            cx.report(
+                &rules::array_argument::RULE,
+                v.byte_range(),
+                format!(
+                    "{} needs an array, found {}",
+                    p.name,
+                    exprs::a_type(&actual)
+                ),
+            );
+        }
         return;
     }
     if let Ty::Any = p.ty.element() {

@@ -7,7 +7,7 @@ use std::ops::Range;
 use tree_sitter::Node;
 
 use super::{Cx, RoutineCx, Used, decl_ty, exprs, stmts};
-use crate::diagnostic::Diagnostic;
+use crate::diagnostic::{Diagnostic, Edit, Fix};
 use crate::items::{self, DataDecl, Module, RoutineDecl, RoutineKind, Storage};
 use crate::names::fold;
 use crate::rules;
@@ -281,6 +281,27 @@ pub(super) fn check_data<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &DataDecl, i
                 ),
             );
         }
+        // Only system-global persistents may leave out the value: the
+        // controller then takes it from another task's declaration of the
+        // same persistent, or the type's default. TASK and LOCAL persistents
+        // have no other declaration to take it from.
+        None if decl.storage == Storage::Pers && decl.scope != items::Scope::Global => {
+            let kind = if decl.scope == items::Scope::Task {
+                "TASK"
+            } else {
+                "LOCAL"
+            };
+            cx.report(
+                &rules::missing_initializer::RULE,
+                decl.name_range.clone(),
+                format!(
+                    "the {kind} persistent `{}` needs a value: {kind} PERS {} {} := ...;",
+                    decl.name,
+                    decl.ty.as_ref().map_or("<type>", |t| t.name.as_str()),
+                    decl.name
+                ),
+            );
+        }
         None => {}
     }
     let _ = in_routine;
@@ -352,7 +373,7 @@ fn check_routine<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &'t RoutineDecl) {
                 );
             }
             if let Some(d) = items::lower_data(item, cx.text) {
-                check_shadowing(cx, &d.name, d.name_range.clone());
+                check_shadowing(cx, &d.name, d.name_range.clone(), true);
                 check_data(cx, item, &d, true);
                 local_names.push((d.name.clone(), d.name_range.clone()));
                 if let Some(r) = &mut cx.routine {
@@ -365,7 +386,7 @@ fn check_routine<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &'t RoutineDecl) {
         }
     }
     for p in &decl.params {
-        check_shadowing(cx, &p.name, p.name_range.clone());
+        check_shadowing(cx, &p.name, p.name_range.clone(), false);
     }
     names.extend(local_names.iter().map(|(n, r)| (n.as_str(), r.clone())));
     report_duplicates(cx, names, "in this routine");
@@ -384,7 +405,7 @@ fn check_routine<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &'t RoutineDecl) {
         }
     }
     if decl.kind == RoutineKind::Func && !stmts::block_terminates(cx, &statements) {
-        cx.report(
+        let mut d = Diagnostic::new(
             &rules::missing_return::RULE,
             decl.name_range.clone(),
             format!(
@@ -392,24 +413,106 @@ fn check_routine<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &'t RoutineDecl) {
                 decl.name
             ),
         );
+        if let Some(fix) = missing_return_fix(cx, node, decl) {
+            d = d.with_fix(fix);
+        }
+        cx.report_with(d);
     }
     check_unused_in_routine(cx, decl);
     cx.routine = None;
 }
 
-fn check_shadowing(cx: &mut Cx<'_>, name: &str, range: Range<usize>) {
-    let global = cx.task.globals.get(&fold(name)).and_then(|refs| {
-        refs.iter()
-            .copied()
-            .find(|r| cx.task.data(*r).is_some() || cx.task.routine(*r).is_some())
-    });
-    let what = if let Some(r) = global {
+/// A routine's data or parameter that hides a module or task name, or (for
+/// routine data only) a built-in one. Parameters named like a built-in
+/// (`speed`, `tool`...) are common and harmless: the parameter is the
+/// routine's interface, and the built-in is rarely wanted inside.
+/// Inserts `RETURN <default>;` before `ENDFUNC`, for the types that have an
+/// obvious default value. Not safe: the right value is the author's call.
+fn missing_return_fix(cx: &Cx<'_>, node: Node<'_>, decl: &RoutineDecl) -> Option<Fix> {
+    let ty = decl.returns.as_ref()?;
+    let base = cx.types.base(&Ty::named(&ty.name));
+    let value = if cx.types.is_num_like(&base) {
+        "0"
+    } else if base.is("bool") {
+        "FALSE"
+    } else if base.is("string") {
+        "\"\""
+    } else {
+        return None;
+    };
+    let mut cursor = node.walk();
+    let end = node
+        .children(&mut cursor)
+        .find(|c| !c.is_named() && c.kind() == "endfunc")?;
+    let line_start = line_start(cx.text, end.start_byte());
+    let indent = cx.text.get(line_start..end.start_byte())?;
+    if !indent.trim().is_empty() {
+        return None;
+    }
+    Some(Fix {
+        title: format!("Add `RETURN {value};` at the end of `{}`", decl.name),
+        edits: vec![Edit {
+            range: line_start..line_start,
+            replacement: format!("{indent}  RETURN {value};{}", line_break(cx.text)),
+        }],
+        safe: false,
+    })
+}
+
+/// Removes a declaration with its line when it has the line to itself.
+fn remove_declaration_fix(text: &str, range: Range<usize>, name: &str) -> Fix {
+    let start = line_start(text, range.start);
+    let rest = text.get(range.end..).unwrap_or_default();
+    let line_end = rest.find('\n').map_or(text.len(), |i| range.end + i + 1);
+    let alone = text
+        .get(start..range.start)
+        .is_some_and(|b| b.trim().is_empty())
+        && text
+            .get(range.end..line_end)
+            .is_some_and(|a| a.trim().is_empty());
+    let range = if alone { start..line_end } else { range };
+    Fix {
+        title: format!("Remove the declaration of `{name}`"),
+        edits: vec![Edit {
+            range,
+            replacement: String::new(),
+        }],
+        safe: false,
+    }
+}
+
+fn line_start(text: &str, at: usize) -> usize {
+    text.get(..at)
+        .and_then(|b| b.rfind(['\n', '\r']))
+        .map_or(0, |i| i + 1)
+}
+
+fn line_break(text: &str) -> &'static str {
+    if text.contains("\r\n") { "\r\n" } else { "\n" }
+}
+
+fn check_shadowing(cx: &mut Cx<'_>, name: &str, range: Range<usize>, builtins: bool) {
+    let visible = cx
+        .lookup_items(name)
+        .into_iter()
+        .find(|r| cx.task.data(*r).is_some() || cx.task.routine(*r).is_some());
+    let what = if let Some(r) = visible {
         let module = cx
             .task
             .module(r)
             .map(|m| m.name.clone())
             .unwrap_or_default();
-        format!("the global `{name}` of module {module}")
+        let local = cx
+            .task
+            .data(r)
+            .is_some_and(|d| d.scope == items::Scope::Local)
+            || cx.task.routine(r).is_some_and(|d| d.local);
+        format!(
+            "the {} `{name}` of module {module}",
+            if local { "LOCAL" } else { "global" }
+        )
+    } else if !builtins {
+        return;
     } else if cx.cat.datum(name).is_some() {
         format!("the built-in data `{name}`")
     } else if cx.cat.routine(name).is_some() {
@@ -429,12 +532,17 @@ fn check_unused_in_routine(cx: &mut Cx<'_>, decl: &RoutineDecl) {
         return;
     };
     let mut found = Vec::new();
+    let mut fixes = Vec::new();
     for (key, d) in &r.locals {
         if !cx.used.contains(&Used::RoutineSym(key.clone())) {
             found.push((
                 &rules::unused_data::RULE,
                 d.name_range.clone(),
                 format!("`{}` is declared but never used", d.name),
+            ));
+            fixes.push((
+                d.name_range.start,
+                remove_declaration_fix(cx.text, d.range.clone(), &d.name),
             ));
         }
     }
@@ -448,7 +556,11 @@ fn check_unused_in_routine(cx: &mut Cx<'_>, decl: &RoutineDecl) {
         }
     }
     for (rule, range, message) in found {
-        cx.report(rule, range, message);
+        let mut d = Diagnostic::new(rule, range.clone(), message);
+        if let Some((_, fix)) = fixes.iter().find(|(at, _)| *at == range.start) {
+            d = d.with_fix(fix.clone());
+        }
+        cx.report_with(d);
     }
     // Routine symbols are per routine: forget them for the next one.
     cx.used.retain(|u| !matches!(u, Used::RoutineSym(_)));
@@ -459,6 +571,7 @@ fn check_unused_locals_of_module(cx: &mut Cx<'_>, module: &Module) {
         return;
     };
     let mut found = Vec::new();
+    let mut data_found = Vec::new();
     for (name, local, item) in module_items(module) {
         if !local {
             continue;
@@ -475,11 +588,17 @@ fn check_unused_locals_of_module(cx: &mut Cx<'_>, module: &Module) {
             continue;
         };
         match item {
-            Item::Data(_) => found.push((
-                &rules::unused_data::RULE,
-                range,
-                format!("the LOCAL data `{name}` is never used in its module"),
-            )),
+            Item::Data(i) => {
+                let mut d = Diagnostic::new(
+                    &rules::unused_data::RULE,
+                    range,
+                    format!("the LOCAL data `{name}` is never used in its module"),
+                );
+                if let Some(decl) = module.data.get(i) {
+                    d = d.with_fix(remove_declaration_fix(cx.text, decl.range.clone(), name));
+                }
+                data_found.push(d);
+            }
             Item::Routine(_) => found.push((
                 &rules::unused_routine::RULE,
                 range,
@@ -490,5 +609,8 @@ fn check_unused_locals_of_module(cx: &mut Cx<'_>, module: &Module) {
     }
     for (rule, range, message) in found {
         cx.report(rule, range, message);
+    }
+    for d in data_found {
+        cx.report_with(d);
     }
 }

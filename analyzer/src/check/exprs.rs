@@ -46,8 +46,8 @@ fn identifier<'t>(cx: &mut Cx<'t>, node: Node<'t>, expected: Option<&Ty>) -> Ty 
     match cx.resolve_data(name) {
         Some(sym) => sym.ty(&cx.types),
         None => {
-            if let Some(exp) = expected.filter(|e| cx.types.is_signal(e)) {
-                unknown_signal(cx, node, name);
+            if let Some(exp) = expected.filter(|e| is_configured(cx, e)) {
+                unknown_signal(cx, node, name, exp);
                 return exp.clone();
             }
             cx.unresolved(name, node.byte_range(), "data");
@@ -56,18 +56,32 @@ fn identifier<'t>(cx: &mut Cx<'t>, node: Node<'t>, expected: Option<&Ty>) -> Ty 
     }
 }
 
-/// A name where a signal is expected that nothing declares: without an I/O
-/// configuration, say once that it cannot be checked.
-fn unknown_signal(cx: &mut Cx<'_>, node: Node<'_>, name: &str) {
-    if cx.task.signals.is_some() {
-        let message =
-            format!("no signal named `{name}` in the I/O configuration, and no data of that name");
+/// Is a value of this type configured on the controller rather than
+/// declared in RAPID (an I/O signal, a mechanical unit)?
+fn is_configured(cx: &Cx<'_>, ty: &Ty) -> bool {
+    cx.types.is_signal(ty) || cx.types.base(ty).is("mecunit")
+}
+
+/// A name where a signal (or a mechanical unit) is expected that nothing
+/// declares: without the configuration, say once that it cannot be checked.
+fn unknown_signal(cx: &mut Cx<'_>, node: Node<'_>, name: &str, expected: &Ty) {
+    let mecunit = cx.types.base(expected).is("mecunit");
+    let (configured, what, file) = if mecunit {
+        (!cx.task.mecunits.is_empty(), "a mechanical unit", "MOC.cfg")
+    } else {
+        (cx.task.signals.is_some(), "an I/O signal", "EIO.cfg")
+    };
+    if configured {
+        let message = format!(
+            "no {} named `{name}` in the configuration ({file}), and no data of that name",
+            if mecunit { "mechanical unit" } else { "signal" }
+        );
         cx.report(&rules::unresolved_name::RULE, node.byte_range(), message);
     } else if cx.reported_signals.insert(fold(name)) {
         cx.report(
             &rules::unconfigured_signal::RULE,
             node.byte_range(),
-            format!("`{name}` is taken to be an I/O signal; without the controller's EIO.cfg it cannot be checked"),
+            format!("`{name}` is taken to be {what}; without the controller's {file} it cannot be checked"),
         );
     }
 }
@@ -246,8 +260,27 @@ fn binary<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Ty {
     let op = op_node.kind();
     let is_comparison = matches!(op, "=" | "<>");
     // A bare unknown name compared with a number is most likely a signal.
-    let lt = operand(cx, l, r, is_comparison);
-    let rt = operand(cx, r, l, is_comparison);
+    // An aggregate operand takes its type from the other operand when that
+    // is a record (`p + [0, 0, 10]`), and is left unknown otherwise.
+    let (lt, rt) = match (l.kind() == "aggregate", r.kind() == "aggregate") {
+        (true, false) => {
+            let rt = operand(cx, r, l, is_comparison);
+            (aggregate_operand(cx, l, &rt), rt)
+        }
+        (false, true) => {
+            let lt = operand(cx, l, r, is_comparison);
+            let rt = aggregate_operand(cx, r, &lt);
+            (lt, rt)
+        }
+        (true, true) => (
+            aggregate_operand(cx, l, &Ty::Unknown),
+            aggregate_operand(cx, r, &Ty::Unknown),
+        ),
+        (false, false) => (
+            operand(cx, l, r, is_comparison),
+            operand(cx, r, l, is_comparison),
+        ),
+    };
     let t = &cx.types;
     let (lb, rb) = (t.base(&lt), t.base(&rt));
     let unknown = lt.is_unknown() || rt.is_unknown();
@@ -270,17 +303,24 @@ fn binary<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Ty {
         "+" | "-" if lb.is("pos") && rb.is("pos") => Some(Ty::named("pos")),
         "-" if unknown => Some(known_side(&lt, &rt, t)),
         "-" if num(&lt) && num(&rt) => Some(numeric),
+        // num * unknown may be num * pos: say nothing about the result.
         "*" if unknown => Some(if lb.is("pos") || rb.is("pos") {
             Ty::named("pos")
+        } else if lb.is("orient") || rb.is("orient") {
+            Ty::named("orient")
         } else {
-            known_side(&lt, &rt, t)
+            Ty::Unknown
         }),
         "*" if num(&lt) && num(&rt) => Some(numeric),
         "*" if (lb.is("pos") && (num(&rt) || rb.is("pos"))) || (num(&lt) && rb.is("pos")) => {
             Some(Ty::named("pos"))
         }
         "*" if lb.is("orient") && rb.is("orient") => Some(Ty::named("orient")),
-        "/" if unknown => Some(known_side(&lt, &rt, t)),
+        "/" if unknown => Some(if lb.is("pos") {
+            Ty::named("pos")
+        } else {
+            Ty::Unknown
+        }),
         "/" if num(&lt) && num(&rt) => Some(numeric),
         "/" if lb.is("pos") && num(&rt) => Some(Ty::named("pos")),
         "div" | "mod" => (num(&lt) && num(&rt)).then_some(numeric),
@@ -323,6 +363,20 @@ fn binary<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Ty {
     }
 }
 
+/// An aggregate operand, typed as the other operand when that is a record.
+fn aggregate_operand<'t>(cx: &mut Cx<'t>, node: Node<'t>, other: &Ty) -> Ty {
+    let ty = cx.types.value_type(other);
+    if other.dims() == 0 && cx.types.components(&ty).is_some() {
+        aggregate(cx, node, &ty, &[]);
+        ty
+    } else {
+        for e in fields(node, "element") {
+            expr(cx, e, None);
+        }
+        Ty::Unknown
+    }
+}
+
 fn known_side(a: &Ty, b: &Ty, t: &crate::ty::Types<'_>) -> Ty {
     let pick = if a.is_unknown() { b } else { a };
     t.value_type(pick)
@@ -347,7 +401,7 @@ fn operand<'t>(cx: &mut Cx<'t>, node: Node<'t>, other: Node<'t>, comparison: boo
                     .datum(cx.node_text(other))
                     .is_some_and(|d| d.ty.eq_ignore_ascii_case("dionum"));
             if other_is_level {
-                unknown_signal(cx, node, name);
+                unknown_signal(cx, node, name, &Ty::named("signaldi"));
                 return Ty::named("signaldi");
             }
         }
@@ -499,10 +553,10 @@ pub(super) fn place_or_value<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> (Ty, Place)
 /// A place that an argument passes by reference; an unknown name where a
 /// signal is expected is taken for the signal.
 pub(super) fn reference<'t>(cx: &mut Cx<'t>, node: Node<'t>, expected: &Ty) -> (Ty, Place) {
-    if node.kind() == "identifier" && cx.types.is_signal(expected) {
+    if node.kind() == "identifier" && is_configured(cx, expected) {
         let name = cx.node_text(node);
         if cx.resolve_data(name).is_none() {
-            unknown_signal(cx, node, name);
+            unknown_signal(cx, node, name, expected);
             return (expected.clone(), Place::Unknown);
         }
     }

@@ -253,6 +253,9 @@ impl<'t> Cx<'t> {
         if let Some(ty) = self.task.signals.as_ref().and_then(|s| s.get(&key)) {
             return Some(DataSym::Signal(ty));
         }
+        if self.task.mecunits.contains(&key) {
+            return Some(DataSym::Signal("mecunit"));
+        }
         None
     }
 
@@ -532,8 +535,15 @@ impl<'t> Cx<'t> {
 
     /// The type of an expression in this context (its findings dropped).
     pub(crate) fn type_of_expr(&mut self, node: Node<'t>) -> Ty {
+        // Only this expression's findings are dropped: the checker calls
+        // this in the middle of a unit (constant evaluation).
+        let before = self.diags.len();
+        let used = self.used.clone();
+        let signals = self.reported_signals.clone();
         let ty = exprs::expr(self, node, None);
-        self.diags.clear();
+        self.diags.truncate(before);
+        self.used = used;
+        self.reported_signals = signals;
         ty
     }
 }

@@ -1,0 +1,332 @@
+//! Rule fixtures: every file or folder under `tests/fixtures/<rule-name>/`
+//! is analysed with a [`Workspace`], and the diagnostics found must be
+//! exactly those its comments expect.
+//!
+//! A fixture is a `.mod`/`.sys` file (a task of one module), or a folder (a
+//! task of several modules, or a backup with `RAPID/TASKn` folders; `.cfg`
+//! files in it are configuration, `.pgf` files program lists). Expectations
+//! are trailing comments on the offending line:
+//!
+//! ```text
+//! n := "ten";  ! error: [type-mismatch]
+//! x := 1;      ! warning: [unused-data] error: [type-mismatch]
+//! ! ^ error: [type-mismatch]      (applies to the line above)
+//! ```
+//!
+//! Every rule of `RULES` needs a fixture that expects it and a fixture whose
+//! name contains `pass` in its folder that is clean of it.
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::path::{Path, PathBuf};
+
+use rapid_analyzer::diagnostic::{Diagnostic, Severity};
+use rapid_analyzer::rules::RULES;
+use rapid_analyzer::text::LineIndex;
+use rapid_analyzer::workspace::Workspace;
+
+/// (file, 1-based line, severity, rule name)
+type Finding = (String, usize, String, String);
+
+struct Fixture {
+    /// Path relative to the fixtures folder: `rule-name/file.mod` or
+    /// `rule-name/folder`.
+    name: String,
+    /// Files: (workspace path, text).
+    files: Vec<(String, String)>,
+}
+
+fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures")
+}
+
+fn is_module(path: &Path) -> bool {
+    let name = path.file_name().unwrap_or_default().to_string_lossy();
+    rapid_analyzer::text::is_rapid_file_name(&name)
+}
+
+fn read_tree(dir: &Path, base: &Path, out: &mut Vec<(String, String)>) {
+    let mut entries: Vec<PathBuf> = std::fs::read_dir(dir)
+        .expect("a fixture folder")
+        .map(|e| e.expect("an entry").path())
+        .collect();
+    entries.sort();
+    for path in entries {
+        if path.is_dir() {
+            read_tree(&path, base, out);
+        } else {
+            let rel = path
+                .strip_prefix(base)
+                .expect("below the root")
+                .to_string_lossy()
+                .replace('\\', "/");
+            let text = std::fs::read_to_string(&path).expect("UTF-8 fixture");
+            out.push((rel, text));
+        }
+    }
+}
+
+fn fixtures() -> Vec<Fixture> {
+    let base = root();
+    let mut groups: Vec<PathBuf> = std::fs::read_dir(&base)
+        .expect("tests/fixtures")
+        .map(|e| e.expect("an entry").path())
+        .filter(|p| p.is_dir())
+        .collect();
+    groups.sort();
+    let mut out = Vec::new();
+    for group in groups {
+        let mut entries: Vec<PathBuf> = std::fs::read_dir(&group)
+            .expect("a rule folder")
+            .map(|e| e.expect("an entry").path())
+            .collect();
+        entries.sort();
+        for entry in entries {
+            let name = entry
+                .strip_prefix(&base)
+                .expect("below the root")
+                .to_string_lossy()
+                .replace('\\', "/");
+            let mut files = Vec::new();
+            if entry.is_dir() {
+                read_tree(&entry, &base, &mut files);
+            } else if is_module(&entry) {
+                read_tree_file(&entry, &base, &mut files);
+            } else {
+                continue;
+            }
+            out.push(Fixture { name, files });
+        }
+    }
+    out
+}
+
+fn read_tree_file(path: &Path, base: &Path, out: &mut Vec<(String, String)>) {
+    let rel = path
+        .strip_prefix(base)
+        .expect("below the root")
+        .to_string_lossy()
+        .replace('\\', "/");
+    out.push((rel, std::fs::read_to_string(path).expect("UTF-8 fixture")));
+}
+
+/// The expectations written in a file's comments.
+fn expected_in(file: &str, text: &str) -> BTreeSet<Finding> {
+    let mut out = BTreeSet::new();
+    for (i, line) in text.lines().enumerate() {
+        let Some(at) = ["! error:", "! warning:", "! info:", "! hint:", "! ^"]
+            .iter()
+            .filter_map(|m| line.find(m))
+            .min()
+        else {
+            continue;
+        };
+        let mut rest = &line[at + 1..];
+        let mut line_no = i + 1;
+        if let Some(r) = rest.trim_start().strip_prefix('^') {
+            rest = r;
+            line_no -= 1;
+        }
+        let mut severity = String::new();
+        for word in rest.split_whitespace() {
+            if let Some(sev) = word.strip_suffix(':') {
+                assert!(
+                    Severity::parse(sev).is_some(),
+                    "{file}:{}: unknown severity {sev}",
+                    i + 1
+                );
+                severity = sev.to_owned();
+            } else if let Some(rule) = word.strip_prefix('[').and_then(|w| w.strip_suffix(']')) {
+                assert!(
+                    rapid_analyzer::rules::find(rule).is_some_and(|r| r.name == rule),
+                    "{file}:{}: no rule named {rule}",
+                    i + 1
+                );
+                assert!(!severity.is_empty(), "{file}:{}: severity first", i + 1);
+                out.insert((file.to_owned(), line_no, severity.clone(), rule.to_owned()));
+            } else {
+                break;
+            }
+        }
+    }
+    out
+}
+
+/// Runs a fixture: (findings, rendered diagnostics by finding).
+fn run(fixture: &Fixture) -> (BTreeSet<Finding>, BTreeMap<Finding, String>) {
+    let mut ws = Workspace::new();
+    for (path, text) in &fixture.files {
+        let lower = path.to_ascii_lowercase();
+        if lower.ends_with(".cfg") {
+            ws.set_config(path, text);
+        } else if lower.ends_with(".pgf") {
+            ws.set_program(path, text);
+        } else if is_module(Path::new(path)) {
+            ws.set_file(path, text.clone());
+        }
+    }
+    let mut found = BTreeSet::new();
+    let mut rendered = BTreeMap::new();
+    for (path, text) in &fixture.files {
+        if !is_module(Path::new(path)) {
+            continue;
+        }
+        let index = LineIndex::new(text);
+        for d in ws.diagnostics(path).iter() {
+            let (line, _) = index.human(d.range.start, text);
+            let f = (
+                path.clone(),
+                line,
+                d.severity.as_str().to_owned(),
+                d.rule.name.to_owned(),
+            );
+            rendered.insert(f.clone(), render(path, text, &index, d));
+            found.insert(f);
+        }
+    }
+    (found, rendered)
+}
+
+fn render(path: &str, text: &str, index: &LineIndex, d: &Diagnostic) -> String {
+    let (line, col) = index.human(d.range.start, text);
+    let mut s = format!(
+        "{path}:{line}:{col}: {}[{} {}]: {}",
+        d.severity.as_str(),
+        d.rule.code,
+        d.rule.name,
+        d.message
+    );
+    if let Some(fix) = &d.fix {
+        s.push_str(&format!(
+            "\n    fix{}: {}",
+            if fix.safe { " (safe)" } else { "" },
+            fix.title
+        ));
+        for e in &fix.edits {
+            s.push_str(&format!(
+                "\n      {:?} -> {:?}",
+                text.get(e.range.clone()).unwrap_or_default(),
+                e.replacement
+            ));
+        }
+    }
+    for r in &d.related {
+        let (l, c) = index.human(r.range.start, text);
+        s.push_str(&format!(
+            "\n    {}:{l}:{c}: {}",
+            r.file.as_deref().unwrap_or(path),
+            r.message
+        ));
+    }
+    s
+}
+
+#[test]
+fn fixtures_report_exactly_what_they_expect() {
+    let all = fixtures();
+    assert!(all.len() >= RULES.len(), "fixtures are missing");
+    let mut failures = Vec::new();
+    for fixture in &all {
+        let expected: BTreeSet<Finding> = fixture
+            .files
+            .iter()
+            .flat_map(|(p, t)| expected_in(p, t))
+            .collect();
+        let (found, rendered) = run(fixture);
+        if expected != found {
+            let mut msg = format!("== {}", fixture.name);
+            for f in expected.difference(&found) {
+                msg.push_str(&format!(
+                    "\n  missing    {}:{} {}: [{}]",
+                    f.0, f.1, f.2, f.3
+                ));
+            }
+            for f in found.difference(&expected) {
+                msg.push_str(&format!(
+                    "\n  unexpected {}",
+                    rendered.get(f).map_or("", String::as_str)
+                ));
+            }
+            failures.push(msg);
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+#[test]
+fn every_rule_has_a_failing_and_a_passing_fixture() {
+    let all = fixtures();
+    let mut problems = Vec::new();
+    for rule in RULES {
+        let in_folder: Vec<&Fixture> = all
+            .iter()
+            .filter(|f| f.name.split('/').next() == Some(rule.name))
+            .collect();
+        let expects = all.iter().any(|f| {
+            f.files
+                .iter()
+                .any(|(p, t)| expected_in(p, t).iter().any(|e| e.3 == rule.name))
+        });
+        if !expects {
+            problems.push(format!(
+                "{} {}: no fixture expects it",
+                rule.code, rule.name
+            ));
+        }
+        let passes = in_folder.iter().any(|f| {
+            f.name
+                .rsplit('/')
+                .next()
+                .is_some_and(|n| n.contains("pass"))
+                && !f
+                    .files
+                    .iter()
+                    .any(|(p, t)| expected_in(p, t).iter().any(|e| e.3 == rule.name))
+        });
+        if !passes {
+            problems.push(format!(
+                "{} {}: no fixtures/{}/*pass* clean of it",
+                rule.code, rule.name, rule.name
+            ));
+        }
+    }
+    assert!(problems.is_empty(), "{}", problems.join("\n"));
+}
+
+/// Rendered messages of a few fixtures, reviewed like code.
+#[test]
+fn rendered_messages() {
+    let all = fixtures();
+    for name in [
+        "type-mismatch/fail.mod",
+        "argument-count/fail.mod",
+        "equals-for-assignment/fail.mod",
+        "missing-return/fail.mod",
+        "unused-data/fail.mod",
+        "ambiguous-global/fail",
+    ] {
+        let fixture = all
+            .iter()
+            .find(|f| f.name == name)
+            .unwrap_or_else(|| panic!("fixture {name}"));
+        let (_, rendered) = run(fixture);
+        let text: Vec<&str> = rendered.values().map(String::as_str).collect();
+        insta::assert_snapshot!(name.replace(['/', '.'], "_"), text.join("\n"));
+    }
+}
+
+/// `RAPID_FIXTURE=path cargo test --test rules show -- --nocapture` prints
+/// what a fixture reports, for writing expectations.
+#[test]
+fn show() {
+    let Some(want) = std::env::var_os("RAPID_FIXTURE") else {
+        return;
+    };
+    let want = want.to_string_lossy().into_owned();
+    for f in fixtures().iter().filter(|f| f.name.contains(&want)) {
+        let (_, rendered) = run(f);
+        println!("== {}", f.name);
+        for r in rendered.values() {
+            println!("{r}");
+        }
+    }
+}
