@@ -79,3 +79,73 @@ fn fixtures_format_to_their_expected_output() {
     }
     assert!(failures.is_empty(), "{}", failures.join("\n\n"));
 }
+
+/// A small deterministic pseudo-random sequence (no dependency needed).
+struct Lcg(u64);
+
+impl Lcg {
+    fn below(&mut self, n: u64) -> u64 {
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (self.0 >> 33) % n
+    }
+}
+
+/// The output does not depend on the blanks between tokens on a line: every
+/// fixture, with the blanks between its tokens replaced at random (never
+/// before a trailing comment, whose blanks are kept on purpose), formats to
+/// the same text.
+#[test]
+fn blanks_between_tokens_do_not_matter() {
+    let mut rng = Lcg(0x5eed);
+    let mut parser = rapid_analyzer::syntax::parser();
+    for input_path in fixtures() {
+        let input = std::fs::read_to_string(&input_path).expect("readable input");
+        let options = options(&input);
+        let Ok(expected) = format(&input, &options) else {
+            continue;
+        };
+        let tree = rapid_analyzer::syntax::parse(&mut parser, &input, None).expect("a tree");
+        let mut leaves = Vec::new();
+        let mut stack = vec![tree.root_node()];
+        while let Some(node) = stack.pop() {
+            if node.child_count() == 0 || node.kind() == "string" {
+                leaves.push(node);
+            } else {
+                let mut cursor = node.walk();
+                let children: Vec<_> = node.children(&mut cursor).collect();
+                stack.extend(children.into_iter().rev());
+            }
+        }
+        if leaves.iter().any(|l| l.kind() == "trailing_text") {
+            continue;
+        }
+        for round in 0..20 {
+            let mut perturbed = String::new();
+            let mut end = 0;
+            for leaf in &leaves {
+                let gap = &input[end..leaf.start_byte()];
+                if end == 0 || gap.contains(['\n', '\r']) || leaf.kind() == "comment" {
+                    perturbed.push_str(gap);
+                } else {
+                    let n = rng.below(4) as usize + usize::from(!gap.is_empty());
+                    for _ in 0..n {
+                        perturbed.push(if rng.below(3) == 0 { '\t' } else { ' ' });
+                    }
+                }
+                perturbed.push_str(&input[leaf.byte_range()]);
+                end = leaf.end_byte();
+            }
+            perturbed.push_str(&input[end..]);
+            let got = format(&perturbed, &options).expect("the perturbed input formats");
+            assert_eq!(
+                got,
+                expected,
+                "{} (round {round}), input:\n{perturbed}",
+                input_path.display()
+            );
+        }
+    }
+}
