@@ -598,11 +598,10 @@ fn chain_type(cx: &mut Cx<'_>, chain: &str) -> Option<Ty> {
                     last.1 += 1;
                 }
             }
-            '.' if depth == 0 => {
-                if !cur.is_empty() {
-                    segs.push((std::mem::take(&mut cur), 0));
-                }
+            '.' if depth == 0 && !cur.is_empty() => {
+                segs.push((std::mem::take(&mut cur), 0));
             }
+            '.' => {}
             c if depth == 0 => cur.push(c),
             _ => {}
         }

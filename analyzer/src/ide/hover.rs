@@ -19,6 +19,24 @@ pub fn hover(task: &Task, unit: usize, offset: usize) -> Option<HoverResult> {
         let def = resolve(task, unit, node);
         if let Some(def) = def {
             let mut markdown = describe(task, &def)?;
+            let data = matches!(
+                def,
+                Def::Item(crate::task::ItemRef {
+                    item: Item::Data(_),
+                    ..
+                }) | Def::Local { .. }
+                    | Def::BuiltinDatum(_)
+                    | Def::BuiltinComponent(..)
+                    | Def::Component(..)
+            );
+            if data
+                && let Some(v) = super::value::value_at(task, unit, offset)
+                && v.range.start <= node.start_byte()
+                && node.end_byte() <= v.range.end
+            {
+                markdown.push_str("\n\n---\n\n");
+                markdown.push_str(&value_markdown(&v));
+            }
             if let Some(extra) = robtarget_of_def(task, &def) {
                 markdown.push_str("\n\n---\n\n");
                 markdown.push_str(&extra);
@@ -40,11 +58,18 @@ pub fn hover(task: &Task, unit: usize, offset: usize) -> Option<HoverResult> {
         }
         at = n.parent();
     }
-    let agg = outermost?;
-    let text = decode_robtarget(agg, &u.text)?;
+    if let Some(agg) = outermost
+        && let Some(markdown) = decode_robtarget(agg, &u.text)
+    {
+        return Some(HoverResult {
+            range: agg.byte_range(),
+            markdown,
+        });
+    }
+    let v = super::value::value_at(task, unit, offset)?;
     Some(HoverResult {
-        range: agg.byte_range(),
-        markdown: text,
+        markdown: value_markdown(&v),
+        range: v.range,
     })
 }
 
@@ -380,4 +405,27 @@ fn num(v: f64) -> String {
     let r = (v * 1000.0).round() / 1000.0;
     let r = if r == 0.0 { 0.0 } else { r };
     format!("{r}")
+}
+
+/// `= value` of a constant expression, with Euler angles for orientations.
+fn value_markdown(v: &super::value::ConstValue) -> String {
+    let mut out = String::new();
+    if let Some((code, message)) = &v.error {
+        let _ = write!(out, "always fails: `{code}` ({message})");
+        return out;
+    }
+    let _ = write!(out, "`= {}` ({})", shorten(&v.value), v.ty);
+    if v.initial_value_only {
+        out.push_str(" — initial value");
+    }
+    if let Some([z, y, x]) = v.euler_zyx {
+        let _ = write!(
+            out,
+            "\n\nEuler ZYX: rz = {}°, ry = {}°, rx = {}°",
+            num(z),
+            num(y),
+            num(x)
+        );
+    }
+    out
 }

@@ -8,27 +8,36 @@
 //! to protocol types and positions.
 
 use std::ops::Range;
-use std::sync::Arc;
 
+mod actions;
 mod completion;
 mod context;
 mod hover;
+mod inlay;
 mod nav;
 mod resolve;
 mod signature;
+mod structure;
+mod symbols;
+mod tokens;
+mod value;
 
+pub use actions::code_actions;
 pub use completion::{completion_documentation, completions};
 pub use hover::hover;
+pub use inlay::inlay_hints;
 pub use nav::{
     definition, document_highlights, prepare_rename, references, rename, type_definition,
 };
 pub use signature::signature_help;
+pub use structure::{folding_ranges, selection_ranges};
+pub use symbols::{document_symbols, workspace_symbols};
+pub use tokens::semantic_tokens;
 
-use crate::diagnostic::{Diagnostic, Edit};
+use crate::diagnostic::Edit;
 
 #[cfg(test)]
 mod tests;
-use crate::task::{Task, Unit};
 
 /// A place in a file: the name's range and the whole declaration's range.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -190,49 +199,4 @@ pub struct CodeAction {
     /// Index into the diagnostics given to [`code_actions`].
     pub diagnostic: Option<usize>,
     pub preferred: bool,
-}
-
-pub fn document_symbols(unit: &Unit) -> Vec<Symbol> {
-    let _ = unit;
-    Vec::new()
-}
-
-pub fn workspace_symbols(tasks: &[Arc<Task>], query: &str) -> Vec<(String, Symbol)> {
-    let _ = (tasks, query);
-    Vec::new()
-}
-
-pub fn semantic_tokens(
-    task: &Task,
-    unit: usize,
-    range: Option<Range<usize>>,
-) -> Vec<SemanticToken> {
-    let _ = (task, unit, range);
-    Vec::new()
-}
-
-pub fn folding_ranges(unit: &Unit) -> Vec<FoldingRange> {
-    let _ = unit;
-    Vec::new()
-}
-
-/// For each offset, the ranges around it, innermost first.
-pub fn selection_ranges(unit: &Unit, offsets: &[usize]) -> Vec<Vec<Range<usize>>> {
-    let _ = unit;
-    offsets.iter().map(|_| Vec::new()).collect()
-}
-
-pub fn inlay_hints(task: &Task, unit: usize, range: Range<usize>) -> Vec<InlayHint> {
-    let _ = (task, unit, range);
-    Vec::new()
-}
-
-pub fn code_actions(
-    task: &Task,
-    unit: usize,
-    range: Range<usize>,
-    diagnostics: &[Diagnostic],
-) -> Vec<CodeAction> {
-    let _ = (task, unit, range, diagnostics);
-    Vec::new()
 }

@@ -5,9 +5,12 @@ use std::sync::Arc;
 
 use crate::task::{Task, Unit};
 
+mod actions;
 mod completion;
 mod hover;
 mod navigation;
+mod structure;
+mod tokens;
 
 /// The task of a fixture, the index of the unit holding the cursor, and the
 /// cursor's offset.

@@ -1,0 +1,139 @@
+//! Inlay hints: parameter names of positional arguments, and the values of
+//! constants declared with computed initial values.
+
+use std::ops::Range;
+
+use tree_sitter::Node;
+
+use super::resolve::walk;
+use super::signature::sig_of;
+use super::tokens::Scopes;
+use super::{InlayHint, InlayKind};
+use crate::names::same;
+use crate::task::Task;
+
+/// Longest value shown in a hint.
+const MAX_VALUE: usize = 48;
+
+pub fn inlay_hints(task: &Task, unit: usize, range: Range<usize>) -> Vec<InlayHint> {
+    let Some(u) = task.units.get(unit) else {
+        return Vec::new();
+    };
+    let text = &u.text;
+    let mut scopes = Scopes::new(task, unit);
+    let mut out = Vec::new();
+    let root = u.tree.root_node();
+    let mut calls = Vec::new();
+    let mut consts = Vec::new();
+    walk(root, &mut |n: Node<'_>| {
+        if n.end_byte() < range.start || n.start_byte() > range.end {
+            return;
+        }
+        match n.kind() {
+            "procedure_call" | "function_call" => calls.push(n),
+            "data_declaration" => consts.push(n),
+            _ => {}
+        }
+    });
+    for call in calls {
+        let (Some(name), Some(args)) = (
+            call.child_by_field_name("name"),
+            call.child_by_field_name("arguments"),
+        ) else {
+            continue;
+        };
+        let Some(name_text) = text.get(name.byte_range()) else {
+            continue;
+        };
+        let Some(cx) = scopes.at(call.start_byte()) else {
+            continue;
+        };
+        let Some(sym) = cx.resolve_routine(name_text, call.kind() == "function_call") else {
+            continue;
+        };
+        let sig = sig_of(sym);
+        let mut cursor = args.walk();
+        let args: Vec<Node<'_>> = args
+            .children_by_field_name("argument", &mut cursor)
+            .collect();
+        let named: Vec<&str> = args
+            .iter()
+            .filter_map(|a| a.child_by_field_name("name"))
+            .filter_map(|n| text.get(n.byte_range()))
+            .collect();
+        let mut required = sig
+            .params
+            .iter()
+            .filter(|p| !p.optional && !named.iter().any(|n| same(n, &p.name)));
+        if sig.params.iter().filter(|p| !p.optional).count() < 2 {
+            continue;
+        }
+        for a in args {
+            if a.child_by_field_name("name").is_some() || is_optional(a) {
+                continue;
+            }
+            let Some(p) = required.next() else {
+                break;
+            };
+            let Some(value) = a.child_by_field_name("value") else {
+                continue;
+            };
+            let v = text.get(value.byte_range()).unwrap_or_default();
+            if same(v.trim(), &p.name) {
+                continue;
+            }
+            if a.start_byte() >= range.start && a.start_byte() <= range.end {
+                out.push(InlayHint {
+                    offset: a.start_byte(),
+                    label: format!("{}:", p.name),
+                    kind: InlayKind::Parameter,
+                });
+            }
+        }
+    }
+    for decl in consts {
+        if decl.child_by_field_name("storage").map(|s| s.kind()) != Some("const") {
+            continue;
+        }
+        let Some(value) = decl.child_by_field_name("value") else {
+            continue;
+        };
+        if is_literal(value) {
+            continue;
+        }
+        let Some(v) = super::value::value_of_range(task, unit, value.byte_range()) else {
+            continue;
+        };
+        if v.error.is_some() || v.value.is_empty() || v.value.len() > MAX_VALUE {
+            continue;
+        }
+        out.push(InlayHint {
+            offset: value.end_byte(),
+            label: format!("= {}", v.value),
+            kind: InlayKind::Value,
+        });
+    }
+    out.sort_by_key(|h| h.offset);
+    out
+}
+
+fn is_optional(arg: Node<'_>) -> bool {
+    let mut cursor = arg.walk();
+    arg.children(&mut cursor).any(|c| c.kind() == "\\")
+}
+
+/// A literal, or an aggregate of literals: its value reads as its text.
+fn is_literal(n: Node<'_>) -> bool {
+    match n.kind() {
+        "number" | "string" | "boolean" => true,
+        "unary_expression" => n
+            .child_by_field_name("operand")
+            .is_some_and(|o| o.kind() == "number"),
+        "aggregate" => {
+            let mut cursor = n.walk();
+            n.children_by_field_name("element", &mut cursor)
+                .all(is_literal)
+        }
+        _ => false,
+    }
+}

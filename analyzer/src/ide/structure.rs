@@ -1,0 +1,156 @@
+//! Folding ranges and selection ranges, from the tree.
+
+use std::ops::Range;
+
+use tree_sitter::Node;
+
+use super::FoldingRange;
+use super::resolve::walk;
+use crate::task::Unit;
+use crate::text::LineIndex;
+
+const FOLDED: &[&str] = &[
+    "module",
+    "module_header",
+    "record_declaration",
+    "procedure_declaration",
+    "function_declaration",
+    "trap_declaration",
+    "backward_handler",
+    "error_handler",
+    "undo_handler",
+    "if_statement",
+    "elseif_clause",
+    "else_clause",
+    "for_statement",
+    "while_statement",
+    "test_statement",
+    "test_case",
+    "default_case",
+];
+
+pub fn folding_ranges(unit: &Unit) -> Vec<FoldingRange> {
+    let text = &unit.text;
+    let lines = LineIndex::new(text);
+    let line_of = |o: usize| lines.line_col(o).line;
+    let mut out = Vec::new();
+    let mut comments: Option<(usize, usize)> = None;
+    let root = unit.tree.root_node();
+    let flush = |c: &mut Option<(usize, usize)>, out: &mut Vec<FoldingRange>| {
+        if let Some((s, e)) = c.take()
+            && e > s
+        {
+            out.push(FoldingRange {
+                start_line: s,
+                end_line: e,
+                kind: Some("comment"),
+            });
+        }
+    };
+    walk(root, &mut |n: Node<'_>| {
+        let kind = n.kind();
+        if kind == "comment" {
+            let line = line_of(n.start_byte());
+            // Only comments that start their line form a block.
+            let starts_line = text
+                .get(..n.start_byte())
+                .map(|b| b.rsplit('\n').next().unwrap_or_default().trim().is_empty())
+                .unwrap_or(false);
+            match &mut comments {
+                Some((_, e)) if starts_line && *e + 1 == line => *e = line,
+                _ => {
+                    flush(&mut comments, &mut out);
+                    if starts_line {
+                        comments = Some((line, line));
+                    }
+                }
+            }
+            return;
+        }
+        if FOLDED.contains(&kind) {
+            // A module folds from its MODULE line (its `%%%` header folds alone).
+            let from = match kind {
+                "module" => n
+                    .child_by_field_name("name")
+                    .map_or(n.start_byte(), |m| m.start_byte()),
+                _ => n.start_byte(),
+            };
+            let start = line_of(from);
+            let mut end = line_of(n.end_byte().saturating_sub(1).max(n.start_byte()));
+            // Keep the closing line (ENDPROC, ENDIF, ...) visible, except for
+            // clauses and the `%%%` header, which have none of their own.
+            let has_end_line = !matches!(
+                kind,
+                "module_header"
+                    | "elseif_clause"
+                    | "else_clause"
+                    | "test_case"
+                    | "default_case"
+                    | "backward_handler"
+                    | "error_handler"
+                    | "undo_handler"
+            );
+            if has_end_line && end > start {
+                end -= 1;
+            }
+            if end > start {
+                out.push(FoldingRange {
+                    start_line: start,
+                    end_line: end,
+                    kind: (kind == "module_header").then_some("region"),
+                });
+            }
+        }
+    });
+    flush(&mut comments, &mut out);
+    out.sort_by_key(|f| (f.start_line, std::cmp::Reverse(f.end_line)));
+    out.dedup_by_key(|f| (f.start_line, f.end_line));
+    out
+}
+
+/// For each offset, the ranges around it, innermost first: token,
+/// expression, statement, block, routine, module, file.
+pub fn selection_ranges(unit: &Unit, offsets: &[usize]) -> Vec<Vec<Range<usize>>> {
+    let root = unit.tree.root_node();
+    offsets
+        .iter()
+        .map(|&offset| {
+            let offset = offset.min(unit.text.len());
+            let mut out: Vec<Range<usize>> = Vec::new();
+            let push = |r: Range<usize>, out: &mut Vec<Range<usize>>| {
+                if out
+                    .last()
+                    .is_none_or(|l| l != &r && l.start >= r.start && l.end <= r.end)
+                {
+                    out.push(r);
+                }
+            };
+            let mut at = root.descendant_for_byte_range(offset, offset);
+            // Just after a token (where editors put the cursor): that token.
+            if at.is_some_and(|n| !n.is_named() || n.start_byte() == offset)
+                && offset > 0
+                && let Some(left) = root.descendant_for_byte_range(offset - 1, offset - 1)
+                && left.end_byte() == offset
+                && left.is_named()
+            {
+                at = Some(left);
+            }
+            while let Some(n) = at {
+                push(n.byte_range(), &mut out);
+                // A statement in a block: the block's statements together.
+                if let Some(p) = n.parent()
+                    && super::resolve::field_in_parent(n) == Some("body")
+                {
+                    let body = crate::syntax_util::fields(p, "body");
+                    if let (Some(f), Some(l)) = (body.first(), body.last())
+                        && body.len() > 1
+                    {
+                        push(f.start_byte()..l.end_byte(), &mut out);
+                    }
+                }
+                at = n.parent();
+            }
+            out
+        })
+        .collect()
+}

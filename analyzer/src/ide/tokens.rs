@@ -1,0 +1,316 @@
+//! Semantic tokens, consistent with `tree-sitter-rapid/queries/highlights.scm`
+//! and refined by name resolution: a name used as data is a variable, a
+//! persistent (`static`) or a constant (`readonly`); built-ins carry
+//! `defaultLibrary`; predefined constants are enum members.
+
+use std::ops::Range;
+
+use tree_sitter::Node;
+
+use super::resolve::{field_in_parent, is_name};
+use super::{
+    MOD_DECLARATION, MOD_DEFAULT_LIBRARY, MOD_READONLY, MOD_STATIC, SemanticToken, TokenType,
+};
+use crate::catalogue::{DatumKind, catalogue};
+use crate::check::{Cx, DataSym, RoutineSym};
+use crate::items::Storage;
+use crate::names::same;
+use crate::task::{Item, Task};
+
+/// A cache of the scope (module, routine) names are resolved in.
+pub(crate) struct Scopes<'t> {
+    task: &'t Task,
+    unit: usize,
+    /// Routine ranges of the unit, sorted.
+    routines: Vec<Range<usize>>,
+    modules: Vec<Range<usize>>,
+    current: Option<((usize, usize), Cx<'t>)>,
+}
+
+impl<'t> Scopes<'t> {
+    pub(crate) fn new(task: &'t Task, unit: usize) -> Scopes<'t> {
+        let mut routines = Vec::new();
+        let mut modules = Vec::new();
+        if let Some(u) = task.units.get(unit) {
+            for m in &u.items.modules {
+                modules.push(m.range.clone());
+                routines.extend(m.routines.iter().map(|r| r.range.clone()));
+            }
+        }
+        routines.sort_by_key(|r| r.start);
+        Scopes {
+            task,
+            unit,
+            routines,
+            modules,
+            current: None,
+        }
+    }
+
+    /// The context for a name at `offset`.
+    pub(crate) fn at(&mut self, offset: usize) -> Option<&mut Cx<'t>> {
+        let i = self.routines.partition_point(|r| r.start <= offset);
+        let routine = i
+            .checked_sub(1)
+            .and_then(|i| self.routines.get(i))
+            .filter(|r| offset <= r.end)
+            .map_or(usize::MAX, |r| r.start);
+        let module = self
+            .modules
+            .iter()
+            .position(|m| m.start <= offset && offset <= m.end)
+            .unwrap_or(usize::MAX);
+        let key = (module, routine);
+        if self.current.as_ref().is_none_or(|(k, _)| *k != key) {
+            let at = if routine == usize::MAX {
+                offset
+            } else {
+                routine
+            };
+            let cx = Cx::at(self.task, self.unit, at)?;
+            self.current = Some((key, cx));
+        }
+        self.current.as_mut().map(|(_, cx)| cx)
+    }
+}
+
+fn is_keyword(kind: &str) -> bool {
+    kind.bytes().all(|b| b.is_ascii_lowercase()) && !kind.is_empty()
+}
+
+const OPERATORS: &[&str] = &[
+    ":=", "+", "-", "*", "/", "=", "<>", "<", ">", "<=", ">=", "\\", "?", "%",
+];
+
+pub fn semantic_tokens(
+    task: &Task,
+    unit: usize,
+    range: Option<Range<usize>>,
+) -> Vec<SemanticToken> {
+    let Some(u) = task.units.get(unit) else {
+        return Vec::new();
+    };
+    let text = &u.text;
+    let range = range.unwrap_or(0..text.len());
+    let mut scopes = Scopes::new(task, unit);
+    let mut out: Vec<SemanticToken> = Vec::new();
+    let mut emit = |r: Range<usize>, ty: TokenType, modifiers: u32| {
+        // One token per line: clients need not support multi-line tokens.
+        let mut start = r.start;
+        let slice = text.get(r.clone()).unwrap_or_default();
+        for (i, _) in slice.match_indices('\n') {
+            let end = r.start + i;
+            if end > start {
+                out.push(SemanticToken {
+                    range: start..end,
+                    token_type: ty as u32,
+                    modifiers,
+                });
+            }
+            start = end + 1;
+        }
+        if r.end > start {
+            out.push(SemanticToken {
+                range: start..r.end,
+                token_type: ty as u32,
+                modifiers,
+            });
+        }
+    };
+    let root = u.tree.root_node();
+    let mut cursor = root.walk();
+    'outer: loop {
+        let n = cursor.node();
+        let overlaps = n.start_byte() < range.end && range.start < n.end_byte();
+        let mut descend = overlaps;
+        if overlaps {
+            let kind = n.kind();
+            let leaf_like = match kind {
+                "comment" | "trailing_text" => {
+                    emit(n.byte_range(), TokenType::Comment, 0);
+                    true
+                }
+                "number" => {
+                    emit(n.byte_range(), TokenType::Number, 0);
+                    true
+                }
+                "string" => {
+                    emit(n.byte_range(), TokenType::String, 0);
+                    true
+                }
+                "boolean" => {
+                    emit(
+                        n.byte_range(),
+                        TokenType::EnumMember,
+                        MOD_READONLY | MOD_DEFAULT_LIBRARY,
+                    );
+                    true
+                }
+                "placeholder" => {
+                    emit(n.byte_range(), TokenType::Macro, 0);
+                    true
+                }
+                "module_attribute" => {
+                    emit(n.byte_range(), TokenType::Keyword, 0);
+                    true
+                }
+                "header_value" => true,
+                _ if is_name(n) => {
+                    if let Some((ty, m)) = classify(&mut scopes, n, text) {
+                        emit(n.byte_range(), ty, m);
+                    }
+                    true
+                }
+                _ if !n.is_named() && n.child_count() == 0 => {
+                    if is_keyword(kind) {
+                        emit(n.byte_range(), TokenType::Keyword, 0);
+                    } else if OPERATORS.contains(&kind) {
+                        emit(n.byte_range(), TokenType::Operator, 0);
+                    }
+                    true
+                }
+                _ => false,
+            };
+            descend = !leaf_like;
+        }
+        if descend && cursor.goto_first_child() {
+            continue;
+        }
+        loop {
+            if cursor.goto_next_sibling() {
+                continue 'outer;
+            }
+            if !cursor.goto_parent() {
+                break 'outer;
+            }
+        }
+    }
+    out
+}
+
+fn data_mods(storage: Storage) -> u32 {
+    match storage {
+        Storage::Var => 0,
+        Storage::Pers => MOD_STATIC,
+        Storage::Const => MOD_READONLY,
+    }
+}
+
+/// The token of a name.
+fn classify(scopes: &mut Scopes<'_>, n: Node<'_>, text: &str) -> Option<(TokenType, u32)> {
+    let name = text.get(n.byte_range())?;
+    let parent = n.parent()?;
+    let field = field_in_parent(n);
+    let cat = catalogue();
+    let decl = MOD_DECLARATION;
+    Some(match (parent.kind(), field) {
+        ("module", Some("name")) => (TokenType::Namespace, decl),
+        ("header_entry", _) => (TokenType::Property, 0),
+        ("procedure_declaration" | "trap_declaration", Some("name")) => (TokenType::Method, decl),
+        ("function_declaration", Some("name")) => (TokenType::Function, decl),
+        ("record_declaration" | "alias_declaration", Some("name")) => (TokenType::Type, decl),
+        ("record_component", Some("name")) => (TokenType::Property, decl),
+        ("component_access", Some("component")) => (TokenType::Property, 0),
+        ("parameter", Some("name")) => (TokenType::Parameter, decl),
+        ("argument", Some("name")) => (TokenType::Parameter, 0),
+        ("label", Some("name")) => (TokenType::Label, decl),
+        ("goto_statement", Some("label")) => (TokenType::Label, 0),
+        ("for_statement", Some("variable")) => (TokenType::Variable, decl),
+        ("data_declaration", Some("name")) => {
+            let m = match field_of_kind(parent) {
+                Some("pers") => MOD_STATIC,
+                Some("const") => MOD_READONLY,
+                _ => 0,
+            };
+            (TokenType::Variable, decl | m)
+        }
+        ("procedure_call" | "function_call", Some("name"))
+        | ("connect_statement", Some("trap")) => {
+            let cx = scopes.at(n.start_byte())?;
+            match cx.resolve_routine(name, parent.kind() == "function_call") {
+                Some(RoutineSym::User(d, _)) => match d.kind {
+                    crate::items::RoutineKind::Func => (TokenType::Function, 0),
+                    _ => (TokenType::Method, 0),
+                },
+                Some(RoutineSym::Builtin(r, _)) => {
+                    let ty = if r.returns.is_some() {
+                        TokenType::Function
+                    } else {
+                        TokenType::Method
+                    };
+                    (ty, MOD_DEFAULT_LIBRARY)
+                }
+                None if parent.kind() == "function_call" => (TokenType::Function, 0),
+                None => (TokenType::Method, 0),
+            }
+        }
+        _ if n.kind() == "type_identifier" || field == Some("type") => {
+            let cx = scopes.at(n.start_byte())?;
+            let user = cx
+                .lookup_items(name)
+                .iter()
+                .any(|r| matches!(r.item, Item::Record(_) | Item::Alias(_)));
+            if !user && (cat.datatype(name).is_some() || same(name, "switch")) {
+                (TokenType::Type, MOD_DEFAULT_LIBRARY)
+            } else {
+                (TokenType::Type, 0)
+            }
+        }
+        _ => {
+            // A name used as data.
+            if enclosing_for_var(n, name, text) {
+                return Some((TokenType::Variable, 0));
+            }
+            let cx = scopes.at(n.start_byte())?;
+            match cx.resolve_data(name) {
+                Some(DataSym::Param(_)) => (TokenType::Parameter, 0),
+                Some(DataSym::Local(d)) => (TokenType::Variable, data_mods(d.storage)),
+                Some(DataSym::Module(d, _)) => (TokenType::Variable, data_mods(d.storage)),
+                Some(DataSym::ForVar) => (TokenType::Variable, 0),
+                Some(DataSym::Builtin(d)) => match d.kind {
+                    DatumKind::Const => (TokenType::EnumMember, MOD_READONLY | MOD_DEFAULT_LIBRARY),
+                    DatumKind::Pers => (TokenType::Variable, MOD_STATIC | MOD_DEFAULT_LIBRARY),
+                    DatumKind::Var => (TokenType::Variable, MOD_DEFAULT_LIBRARY),
+                },
+                Some(DataSym::Signal(_)) => (TokenType::Variable, MOD_DEFAULT_LIBRARY),
+                None => {
+                    // Perhaps a routine used as a value (a late-binding
+                    // name) or nothing known: plain variable.
+                    (TokenType::Variable, 0)
+                }
+            }
+        }
+    })
+}
+
+/// The storage keyword of a data declaration.
+fn field_of_kind(decl: Node<'_>) -> Option<&'static str> {
+    let s = decl.child_by_field_name("storage")?;
+    match s.kind() {
+        "var" => Some("var"),
+        "pers" => Some("pers"),
+        "const" => Some("const"),
+        _ => None,
+    }
+}
+
+/// Is `name` the variable of a FOR loop around `n`?
+fn enclosing_for_var(n: Node<'_>, name: &str, text: &str) -> bool {
+    let mut at = n.parent();
+    while let Some(p) = at {
+        if p.kind() == "for_statement"
+            && let Some(v) = p.child_by_field_name("variable")
+            && text.get(v.byte_range()).is_some_and(|t| same(t, name))
+        {
+            return true;
+        }
+        if matches!(
+            p.kind(),
+            "procedure_declaration" | "function_declaration" | "trap_declaration"
+        ) {
+            return false;
+        }
+        at = p.parent();
+    }
+    false
+}
