@@ -1,0 +1,172 @@
+-- ABB RAPID for Neovim 0.10 and later: filetype detection, the rapid
+-- language server, and the tree-sitter parser with the project's queries.
+--
+--   require('rapid').setup({
+--     cmd = { 'rapid', 'lsp' },   -- the language server command
+--     lsp = true,                 -- start it for RAPID buffers
+--     highlight = true,           -- vim.treesitter.start() when the parser is built
+--     folds = false,              -- fold with the tree-sitter folds query
+--   })
+local M = {}
+
+local defaults = {
+  cmd = { 'rapid', 'lsp' },
+  lsp = true,
+  highlight = true,
+  folds = false,
+  root_markers = { 'rapid.toml', 'EIO.cfg', 'eio.cfg', '.git' },
+  grammar_dir = nil, -- default: tree-sitter-rapid/ of the repository holding this plugin
+}
+
+M.config = vim.deepcopy(defaults)
+
+local function plugin_root()
+  local source = debug.getinfo(1, 'S').source:sub(2)
+  return vim.fs.dirname(vim.fs.dirname(vim.fs.dirname(vim.fs.normalize(source))))
+end
+
+--- Directory of the plugin (editors/neovim).
+M.root = plugin_root()
+
+local lsp_group = vim.api.nvim_create_augroup('rapid_lsp', { clear = true })
+
+local function setup_lsp()
+  vim.api.nvim_clear_autocmds({ group = lsp_group })
+  local has_enable = vim.lsp.config ~= nil and vim.lsp.enable ~= nil
+  if not M.config.lsp then
+    if has_enable then
+      vim.lsp.enable('rapid', false)
+    end
+    return
+  end
+  if has_enable then
+    -- Neovim 0.11: lsp/rapid.lua on 'runtimepath' holds the defaults.
+    vim.lsp.config('rapid', { cmd = M.config.cmd, root_markers = M.config.root_markers })
+    vim.lsp.enable('rapid')
+    return
+  end
+  -- Neovim 0.10
+  vim.api.nvim_create_autocmd('FileType', {
+    group = lsp_group,
+    pattern = 'rapid',
+    callback = function(args)
+      local name = vim.api.nvim_buf_get_name(args.buf)
+      local root = vim.fs.root(args.buf, M.config.root_markers)
+        or (name ~= '' and vim.fs.dirname(name))
+        or vim.uv.cwd()
+      vim.lsp.start({ name = 'rapid', cmd = M.config.cmd, root_dir = root }, { bufnr = args.buf })
+    end,
+  })
+end
+
+--- True when the tree-sitter parser for RAPID can be loaded.
+function M.has_parser()
+  -- 0.10 throws when the parser is missing, 0.11 returns nil: ask inspect()
+  if not pcall(vim.treesitter.language.add, 'rapid') then
+    return false
+  end
+  return (pcall(vim.treesitter.language.inspect, 'rapid'))
+end
+
+--- Called from ftplugin/rapid.lua for every RAPID buffer.
+function M.attach(bufnr)
+  if M.config.highlight and M.has_parser() then
+    pcall(vim.treesitter.start, bufnr, 'rapid')
+    if M.config.folds then
+      for _, win in ipairs(vim.fn.win_findbuf(bufnr)) do
+        vim.wo[win][0].foldmethod = 'expr'
+        vim.wo[win][0].foldexpr = 'v:lua.vim.treesitter.foldexpr()'
+      end
+    end
+  end
+end
+
+local function parser_abi(parser_c)
+  local f = io.open(parser_c, 'r')
+  if not f then
+    return nil
+  end
+  for _ = 1, 40 do
+    local line = f:read('*l')
+    if not line then
+      break
+    end
+    local abi = line:match('^#define LANGUAGE_VERSION (%d+)')
+    if abi then
+      f:close()
+      return tonumber(abi)
+    end
+  end
+  f:close()
+  return nil
+end
+
+local function run(cmd, cwd)
+  local result = vim.system(cmd, { cwd = cwd, text = true }):wait()
+  if result.code ~= 0 then
+    error(('%s failed (%d): %s'):format(table.concat(cmd, ' '), result.code, result.stderr or ''), 0)
+  end
+end
+
+--- Builds parser/rapid.so of this plugin from the repository's tree-sitter-rapid/
+--- with a C compiler (`cc`, or $CC). Neovim 0.10 loads parsers of ABI 14 at
+--- most: there the grammar is regenerated with `tree-sitter generate --abi 14`
+--- (the tree-sitter CLI must be on PATH).
+---@param grammar_dir string|nil
+---@return string path of the built parser
+function M.build_parser(grammar_dir)
+  grammar_dir = grammar_dir or M.config.grammar_dir or vim.fs.joinpath(M.root, '..', '..', 'tree-sitter-rapid')
+  grammar_dir = vim.fs.normalize(vim.fn.fnamemodify(grammar_dir, ':p'))
+  local src = vim.fs.joinpath(grammar_dir, 'src')
+  if vim.fn.filereadable(vim.fs.joinpath(src, 'parser.c')) == 0 then
+    error('no ' .. vim.fs.joinpath(src, 'parser.c') .. ': set grammar_dir to the tree-sitter-rapid folder', 0)
+  end
+  local abi = parser_abi(vim.fs.joinpath(src, 'parser.c'))
+  local max_abi = vim.treesitter.language_version
+  if abi and max_abi and abi > max_abi then
+    if vim.fn.executable('tree-sitter') == 0 then
+      error(('the parser has ABI %d but this Neovim loads ABI %d at most; install the tree-sitter CLI'
+        .. ' to regenerate it'):format(abi, max_abi), 0)
+    end
+    local tmp = vim.fn.tempname()
+    vim.fn.mkdir(tmp, 'p')
+    run({ 'cp', '-r', vim.fs.joinpath(grammar_dir, 'grammar.js'), tmp })
+    run({ 'tree-sitter', 'generate', '--abi', tostring(max_abi) }, tmp)
+    run({ 'cp', vim.fs.joinpath(src, 'scanner.c'), vim.fs.joinpath(tmp, 'src') })
+    src = vim.fs.joinpath(tmp, 'src')
+  end
+  local out_dir = vim.fs.joinpath(M.root, 'parser')
+  vim.fn.mkdir(out_dir, 'p')
+  local out = vim.fs.joinpath(out_dir, 'rapid.so')
+  local cc = vim.env.CC or 'cc'
+  run({ cc, '-shared', '-fPIC', '-O2', '-I', src, vim.fs.joinpath(src, 'parser.c'),
+    vim.fs.joinpath(src, 'scanner.c'), '-o', out }, src)
+  return out
+end
+
+--- Stops the rapid language server clients and starts them again for the
+--- RAPID buffers.
+function M.restart()
+  local get = vim.lsp.get_clients or vim.lsp.get_active_clients
+  for _, client in ipairs(get({ name = 'rapid' })) do
+    client.stop(client, true)
+  end
+  vim.defer_fn(function()
+    for _, buf in ipairs(vim.api.nvim_list_bufs()) do
+      if vim.api.nvim_buf_is_loaded(buf) and vim.bo[buf].filetype == 'rapid' then
+        vim.api.nvim_exec_autocmds('FileType', { buffer = buf, pattern = 'rapid' })
+      end
+    end
+  end, 300)
+end
+
+--- Applies options (see the defaults at the top of this file).
+---@param opts table|nil
+function M.setup(opts)
+  M.config = vim.tbl_deep_extend('force', vim.deepcopy(defaults), opts or {})
+  require('rapid.filetype').register()
+  vim.treesitter.language.register('rapid', 'rapid')
+  setup_lsp()
+end
+
+return M

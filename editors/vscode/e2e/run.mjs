@@ -1,0 +1,324 @@
+// End-to-end test of the RAPID extension in a real VS Code: code-server serves
+// VS Code on 127.0.0.1, Chromium (playwright-core) drives it. The extension is
+// installed from the .vsix, the workspace is a copy of examples/palletizer with
+// a seeded error, and what the editor shows is compared with what the `rapid`
+// binary itself says (`rapid check --format json`, `rapid builtins NAME`).
+//
+//   node run.mjs --vsix rapid.vsix --rapid /path/to/rapid --out tests/output
+//
+// Prints one line per check and "N passed, N failed" at the end.
+import { spawn, spawnSync } from "node:child_process";
+import * as fs from "node:fs";
+import * as net from "node:net";
+import * as os from "node:os";
+import * as path from "node:path";
+import { fileURLToPath } from "node:url";
+import { chromium } from "playwright-core";
+import { makeWorkspace } from "../../e2e-workspace.mjs";
+
+const here = path.dirname(fileURLToPath(import.meta.url));
+const repo = path.resolve(here, "../../..");
+
+function arg(name, fallback) {
+  const i = process.argv.indexOf(`--${name}`);
+  return i >= 0 ? process.argv[i + 1] : fallback;
+}
+const vsix = path.resolve(arg("vsix", path.join(here, "../rapid.vsix")));
+const rapid = path.resolve(arg("rapid", "rapid"));
+const out = path.resolve(arg("out", path.join(repo, "tests/output")));
+const chromiumPath = arg("chromium", "/usr/bin/chromium");
+const codeServer = path.join(here, "node_modules/code-server/out/node/entry.js");
+const TIMEOUT = Number(process.env.RAPID_E2E_TIMEOUT_MS ?? 60000);
+
+fs.mkdirSync(out, { recursive: true });
+const tmp = fs.mkdtempSync(path.join(os.tmpdir(), "rapid-vscode-e2e-"));
+const log = (...a) => console.log("[e2e]", ...a);
+
+// ------------------------------------------------------------ the workspace
+const ws = path.join(tmp, "workspace");
+const mainFile = makeWorkspace(ws);
+const lines = fs.readFileSync(mainFile, "latin1").split("\n");
+const lineOf = (needle) => {
+  const i = lines.findIndex((l) => l.includes(needle));
+  if (i < 0) throw new Error(`no line with ${needle}`);
+  return i + 1;
+};
+
+// What the rapid binary says about the workspace: the editor must show it.
+const check = spawnSync(rapid, ["check", ws, "--format", "json"], { encoding: "utf8" });
+if (check.error) throw check.error;
+const expected = JSON.parse(check.stdout).filter(
+  (d) => d.severity === "error" && path.basename(d.file) === "MainModule.mod",
+);
+if (expected.length === 0) {
+  throw new Error(`rapid check found no error in the seeded file:\n${check.stdout}${check.stderr}`);
+}
+const builtin = (name) => {
+  const r = spawnSync(rapid, ["builtins", name], { encoding: "utf8" });
+  if (r.status !== 0) throw new Error(`rapid builtins ${name}: ${r.stderr}`);
+  return r.stdout.split("\n")[0].trim();
+};
+const waitTimeSignature = builtin("WaitTime");
+const moveLSignature = builtin("MoveL");
+// the names of the parameters written with a leading backslash
+const moveLOptionals = moveLSignature
+  .replace(/^[^(]*\(|\)[^)]*$/g, "")
+  .split(/[,|]/)
+  .map((p) => p.trim())
+  .filter((p) => p.startsWith("\\"))
+  .map((p) => p.split(/\s+/).pop().replace(/\{.*$/, ""));
+log(`expected: ${expected.map((d) => `${d.code} at ${d.line}:${d.column}`).join(", ")}; MoveL optional arguments ${moveLOptionals.join(" ")}`);
+
+// ------------------------------------------------------------ code-server
+const data = path.join(tmp, "data");
+const extensions = path.join(tmp, "extensions");
+fs.mkdirSync(path.join(data, "User"), { recursive: true });
+fs.writeFileSync(
+  path.join(data, "User/settings.json"),
+  JSON.stringify(
+    {
+      "workbench.startupEditor": "none",
+      "workbench.tips.enabled": false,
+      "workbench.welcomePage.walkthroughs.openOnInstall": false,
+      "security.workspace.trust.enabled": false,
+      "extensions.autoCheckUpdates": false,
+      "extensions.autoUpdate": false,
+      "telemetry.telemetryLevel": "off",
+      "update.mode": "none",
+      "editor.hover.delay": 100,
+      "editor.quickSuggestions": { other: false, comments: false, strings: false },
+      "editor.wordBasedSuggestions": "off",
+      "chat.disableAIFeatures": true,
+      "workbench.secondarySideBar.defaultVisibility": "hidden",
+      "rapid.trace.server": "messages",
+    },
+    null,
+    2,
+  ),
+);
+const env = {
+  ...process.env,
+  PATH: `${path.dirname(rapid)}${path.delimiter}${process.env.PATH}`,
+};
+const csArgs = ["--user-data-dir", data, "--extensions-dir", extensions];
+const install = spawnSync(process.execPath, [codeServer, ...csArgs, "--install-extension", vsix], {
+  encoding: "utf8",
+  env,
+});
+log(`install-extension: ${(install.stdout + install.stderr).trim().split("\n").pop()}`);
+if (install.status !== 0) {
+  throw new Error(`code-server --install-extension failed:\n${install.stdout}${install.stderr}`);
+}
+
+const port = await new Promise((resolve, reject) => {
+  const srv = net.createServer();
+  srv.on("error", reject);
+  srv.listen(0, "127.0.0.1", () => {
+    const p = srv.address().port;
+    srv.close(() => resolve(p));
+  });
+});
+fs.writeFileSync(path.join(tmp, "config.yaml"), "auth: none\ncert: false\n");
+const server = spawn(
+  process.execPath,
+  [
+    codeServer,
+    ...csArgs,
+    "--config", path.join(tmp, "config.yaml"),
+    "--bind-addr", `127.0.0.1:${port}`,
+    "--auth", "none",
+    "--disable-telemetry",
+    "--disable-update-check",
+    "--disable-workspace-trust",
+    "--disable-getting-started-override",
+    ws,
+  ],
+  { env, stdio: ["ignore", "pipe", "pipe"], detached: false },
+);
+const serverLog = fs.createWriteStream(path.join(out, "vscode-code-server.log"));
+server.stdout.pipe(serverLog);
+server.stderr.pipe(serverLog);
+
+let passed = 0;
+let failed = 0;
+const failures = [];
+async function step(name, fn) {
+  try {
+    await fn();
+    passed += 1;
+    console.log(`ok - ${name}`);
+  } catch (err) {
+    failed += 1;
+    failures.push(name);
+    console.log(`FAILED - ${name}: ${err?.message ?? err}`);
+  }
+}
+function assert(cond, message) {
+  if (!cond) throw new Error(message);
+}
+
+let browser;
+let page;
+try {
+  // wait for the server
+  const started = Date.now();
+  for (;;) {
+    try {
+      const res = await fetch(`http://127.0.0.1:${port}/healthz`);
+      if (res.ok) break;
+    } catch {}
+    if (Date.now() - started > TIMEOUT) throw new Error("code-server did not start");
+    await new Promise((r) => setTimeout(r, 250));
+  }
+  browser = await chromium.launchPersistentContext(path.join(tmp, "chromium"), {
+    executablePath: chromiumPath,
+    viewport: { width: 1400, height: 900 },
+    headless: true,
+    args: [
+      "--headless",
+      "--no-sandbox",
+      "--disable-gpu",
+      "--disable-quic",
+      "--no-first-run",
+      "--disable-background-networking",
+      "--disable-component-update",
+      "--disable-sync",
+    ],
+  });
+  page = browser.pages()[0] ?? (await browser.newPage());
+  page.setDefaultTimeout(TIMEOUT);
+  await page.goto(`http://127.0.0.1:${port}/?folder=${encodeURIComponent(ws)}`);
+  await page.waitForSelector(".monaco-workbench");
+  await page.waitForSelector(".part.editor");
+  await page.waitForTimeout(1500);
+
+  const runCommand = async (label) => {
+    await page.keyboard.press("F1");
+    const input = page.locator(".quick-input-widget input");
+    await input.waitFor({ state: "visible" });
+    await input.fill(`>${label}`);
+    await page.waitForTimeout(300);
+    await page.keyboard.press("Enter");
+  };
+  const goTo = async (line, column) => {
+    await page.keyboard.press("Control+G");
+    const input = page.locator(".quick-input-widget input");
+    await input.waitFor({ state: "visible" });
+    await input.fill(`:${line}:${column}`);
+    await page.waitForTimeout(200);
+    await page.keyboard.press("Enter");
+    await page.waitForTimeout(200);
+  };
+  const editorText = () => page.locator(".monaco-editor .view-lines").first();
+  const showHoverAt = async (line, column) => {
+    await page.keyboard.press("Escape");
+    await goTo(line, column);
+    await runCommand("Show or Focus Hover");
+    const hover = page.locator(".monaco-hover:not(.hidden) .monaco-hover-content, .monaco-hover:not(.hidden) .hover-contents").first();
+    await hover.waitFor({ state: "visible" });
+    // the hover may first say "Loading..."
+    const deadline = Date.now() + TIMEOUT;
+    let text = "";
+    while (Date.now() < deadline) {
+      text = (await page.locator(".monaco-hover:not(.hidden)").first().innerText()).trim();
+      if (text && !/^Loading/.test(text)) break;
+      await page.waitForTimeout(200);
+    }
+    return text;
+  };
+
+  // open the seeded module through Quick Open
+  await page.keyboard.press("Control+P");
+  await page.locator(".quick-input-widget input").waitFor({ state: "visible" });
+  await page.locator(".quick-input-widget input").fill("MainModule.mod");
+  await page.waitForSelector(".quick-input-list .monaco-list-row");
+  await page.keyboard.press("Enter");
+  await editorText().waitFor({ state: "visible" });
+  await page.locator(".monaco-editor textarea").first().focus();
+
+  await step("the file is recognised as RAPID", async () => {
+    const mode = page.locator("#status\\.editor\\.mode");
+    await mode.waitFor({ state: "visible" });
+    const text = (await mode.innerText()).trim();
+    assert(text === "ABB RAPID", `language status says ${JSON.stringify(text)}`);
+  });
+
+  await step("TextMate grammar colours the first paint (keywords, types and numbers differ)", async () => {
+    // Monaco gives each colour of the theme a mtkN class: without the
+    // grammar, MODULE, num and 3 would be one plain token colour.
+    const classOf = async (word) =>
+      page.locator(".view-line span span", { hasText: new RegExp(`^${word}$`) }).first().getAttribute("class");
+    const kw = await classOf("MODULE");
+    const type = await classOf("num");
+    const number = await classOf("3");
+    assert(
+      kw && type && number && new Set([kw, type, number]).size === 3,
+      `classes MODULE=${kw} num=${type} 3=${number}`,
+    );
+  });
+
+  await step(`a diagnostic appears for the seeded error (${expected[0].code})`, async () => {
+    await runCommand("View: Focus Problems");
+    const row = page.locator(".markers-panel .monaco-list-row", { hasText: expected[0].code });
+    await row.first().waitFor({ state: "visible", timeout: TIMEOUT });
+    const text = await row.first().innerText();
+    assert(text.includes(expected[0].message.slice(0, 30)), `problem row: ${text}`);
+    assert(text.includes(`[Ln ${expected[0].line}, Col ${expected[0].column}]`), `problem row: ${text}`);
+    await page.locator(".monaco-editor textarea").first().focus();
+  });
+
+  await step("hover over a built-in call shows its signature", async () => {
+    const line = lineOf("WaitTime 0.2;");
+    const text = await showHoverAt(line, lines[line - 1].indexOf("WaitTime") + 3);
+    assert(text.includes(waitTimeSignature), `hover: ${text}\nexpected: ${waitTimeSignature}`);
+  });
+
+  await step("hover over a constant expression shows its value", async () => {
+    const line = lineOf("\\Num:=nSlots");
+    const text = await showHoverAt(line, lines[line - 1].indexOf("nSlots") + 3);
+    assert(/\b24\b/.test(text), `hover: ${text}`);
+  });
+
+  await step("completion after \\ lists the optional arguments", async () => {
+    await page.keyboard.press("Escape");
+    const line = lineOf("WaitTime 0.2;");
+    await goTo(line, lines[line - 1].length + 1);
+    await page.keyboard.press("End");
+    await page.keyboard.press("Enter");
+    await page.keyboard.type("MoveL pPickAbove, v300, fine, tGripper\\", { delay: 20 });
+    const rows = page.locator(".suggest-widget.visible .monaco-list-row");
+    try {
+      await rows.first().waitFor({ state: "visible", timeout: 5000 });
+    } catch {
+      log("no completion popped up on '\\' by itself; asking with Ctrl+Space");
+      await page.keyboard.press("Control+Space");
+      await rows.first().waitFor({ state: "visible" });
+    }
+    await page.waitForTimeout(500);
+    const labels = (await rows.allInnerTexts()).map((t) => t.trim().split(/\s/)[0].replace(/^\\/, ""));
+    const known = labels.filter((l) => moveLOptionals.some((o) => o.toLowerCase() === l.toLowerCase()));
+    assert(known.length >= Math.min(3, moveLOptionals.length), `completion rows: ${labels.join(", ")}`);
+    await page.keyboard.type("WOb", { delay: 20 });
+    await page.waitForTimeout(500);
+    const first = (await rows.first().innerText()).trim();
+    assert(/^\\?WObj\b/.test(first), `after \\WOb the first row is ${first}`);
+    await page.screenshot({ path: path.join(out, "vscode-completion.png") });
+    await page.keyboard.press("Escape");
+  });
+} catch (err) {
+  failed += 1;
+  failures.push(`setup: ${err?.message ?? err}`);
+  console.log(`FAILED - setup: ${err?.stack ?? err}`);
+} finally {
+  if (page) {
+    await page.screenshot({ path: path.join(out, "vscode.png") }).catch(() => {});
+    // the extension's log, for whoever reads a failure
+    const logs = path.join(data, "logs");
+    if (fs.existsSync(logs)) fs.cpSync(logs, path.join(out, "vscode-logs"), { recursive: true });
+  }
+  await browser?.close().catch(() => {});
+  server.kill("SIGTERM");
+}
+console.log(`screenshots and logs: ${out}`);
+console.log(`${passed} passed, ${failed} failed`);
+process.exit(failed === 0 ? 0 : 1);
