@@ -6,14 +6,35 @@
 //! never silently does nothing.
 //!
 //! ```toml
+//! exclude = ["backup_old/**"]     # never checked (globs, relative to this file)
+//! extra-paths = ["../controller"] # modules and EIO.cfg the program uses, not reported
+//!
 //! [format]
 //! indent-width = 4   # spaces per indentation level
 //! line-width = 120   # procedure-call arguments are wrapped past this width
+//!
+//! [lint]
+//! select = ["E", "W101"]      # rules by code, code prefix or name (default: all)
+//! ignore = ["unused-data"]    # taken away from the selection
+//!
+//! [lint.severity]
+//! unused-data = "error"       # error, warning, info or hint
+//!
+//! [[lint.overrides]]          # for some files only (globs, relative to this file)
+//! paths = ["legacy/**"]
+//! ignore = ["W"]
 //! ```
+//!
+//! The same structure deserialises from JSON (the language server's
+//! `initializationOptions`), with the same keys.
 
 use std::path::{Path, PathBuf};
 
+use std::collections::BTreeMap;
+
+use rapid_analyzer::diagnostic::{Rule, Severity};
 use rapid_analyzer::format::FormatOptions;
+use rapid_analyzer::rules::RULES;
 use serde::Deserialize;
 
 /// The name of the configuration file.
@@ -23,8 +44,122 @@ pub const FILE_NAME: &str = "rapid.toml";
 #[derive(Clone, Debug, Default, PartialEq, Eq, Deserialize)]
 #[serde(default, deny_unknown_fields, rename_all = "kebab-case")]
 pub struct Config {
+    /// Globs of files and folders never checked, relative to the
+    /// configuration file's folder.
+    pub exclude: Vec<String>,
+    /// Folders (or files) holding more modules of the program or the
+    /// controller's `EIO.cfg`: they are analysed with the checked files but
+    /// their own diagnostics are not reported. Relative to the configuration
+    /// file's folder.
+    pub extra_paths: Vec<PathBuf>,
     /// `[format]`: the layout `rapid fmt` produces.
     pub format: FormatConfig,
+    /// `[lint]`: which rules `rapid check` reports, and how severely.
+    pub lint: LintConfig,
+}
+
+/// `[lint]`.
+#[derive(Clone, Debug, Default, PartialEq, Eq, Deserialize)]
+#[serde(default, deny_unknown_fields, rename_all = "kebab-case")]
+pub struct LintConfig {
+    /// Rules to report, by code, code prefix (`"E"`, `"W1"`) or name; empty
+    /// means every rule.
+    pub select: Vec<String>,
+    /// Rules not to report (same forms), taken from the selection.
+    pub ignore: Vec<String>,
+    /// Severity by rule code or name: `"error"`, `"warning"`, `"info"` or
+    /// `"hint"`.
+    pub severity: BTreeMap<String, String>,
+    /// Settings for some files only, applied in order after the ones above.
+    pub overrides: Vec<LintOverride>,
+}
+
+/// `[[lint.overrides]]`: `select`, `ignore` and `severity` for the files
+/// matching `paths`.
+#[derive(Clone, Debug, Default, PartialEq, Eq, Deserialize)]
+#[serde(default, deny_unknown_fields, rename_all = "kebab-case")]
+pub struct LintOverride {
+    /// Globs relative to the configuration file's folder.
+    pub paths: Vec<String>,
+    /// Replaces the selection for these files when not empty.
+    pub select: Vec<String>,
+    /// Added to the ignored rules for these files.
+    pub ignore: Vec<String>,
+    /// Added to (and overriding) the severities for these files.
+    pub severity: BTreeMap<String, String>,
+}
+
+/// Does `selector` (a code, a code prefix or a name, any case) pick `rule`?
+pub fn selects(selector: &str, rule: &Rule) -> bool {
+    rule.name.eq_ignore_ascii_case(selector)
+        || rule
+            .code
+            .get(..selector.len())
+            .is_some_and(|prefix| prefix.eq_ignore_ascii_case(selector))
+}
+
+/// Is `selector` a code, code prefix or name of at least one rule?
+pub fn is_known_selector(selector: &str) -> bool {
+    !selector.is_empty() && RULES.iter().any(|r| selects(selector, r))
+}
+
+impl LintConfig {
+    /// Every rule selector and severity of the section (and its overrides)
+    /// that names no rule, or a severity that is not one, with a message.
+    pub fn problems(&self) -> Vec<(String, String)> {
+        let mut out = Vec::new();
+        let check_list = |list: &[String], key: &str, out: &mut Vec<(String, String)>| {
+            for s in list {
+                if !is_known_selector(s) {
+                    out.push((
+                        s.clone(),
+                        format!("`{key}`: no rule has the code or name `{s}`"),
+                    ));
+                }
+            }
+        };
+        let check_severity = |map: &BTreeMap<String, String>, out: &mut Vec<(String, String)>| {
+            for (rule, sev) in map {
+                if !is_known_selector(rule) {
+                    out.push((
+                        rule.clone(),
+                        format!("`severity`: no rule has the code or name `{rule}`"),
+                    ));
+                }
+                if Severity::parse(sev).is_none() {
+                    out.push((
+                        sev.clone(),
+                        format!(
+                            "`severity.{rule}`: `{sev}` is not one of error, warning, info, hint"
+                        ),
+                    ));
+                }
+            }
+        };
+        check_list(&self.select, "select", &mut out);
+        check_list(&self.ignore, "ignore", &mut out);
+        check_severity(&self.severity, &mut out);
+        for o in &self.overrides {
+            if o.paths.is_empty() {
+                out.push((
+                    "[[lint.overrides]]".into(),
+                    "`[[lint.overrides]]` needs `paths`".into(),
+                ));
+            }
+            for glob in &o.paths {
+                if let Err(e) = globset::Glob::new(glob) {
+                    out.push((
+                        glob.clone(),
+                        format!("`paths`: `{glob}` is not a valid glob: {}", e.kind()),
+                    ));
+                }
+            }
+            check_list(&o.select, "select", &mut out);
+            check_list(&o.ignore, "ignore", &mut out);
+            check_severity(&o.severity, &mut out);
+        }
+        out
+    }
 }
 
 /// `[format]`.
@@ -109,6 +244,22 @@ pub fn parse(text: &str, path: &Path) -> Result<Config, ConfigError> {
     if config.format.line_width < 20 {
         return Err(invalid("line-width", "must be at least 20"));
     }
+    for glob in &config.exclude {
+        if let Err(e) = globset::Glob::new(glob) {
+            return Err(ConfigError {
+                path: path.to_owned(),
+                line: value_line(text, glob),
+                message: format!("`exclude`: `{glob}` is not a valid glob: {}", e.kind()),
+            });
+        }
+    }
+    if let Some((value, message)) = config.lint.problems().into_iter().next() {
+        return Err(ConfigError {
+            path: path.to_owned(),
+            line: value_line(text, &value),
+            message,
+        });
+    }
     Ok(config)
 }
 
@@ -119,6 +270,21 @@ fn key_line(text: &str, key: &str) -> Option<usize> {
             l.trim_start()
                 .strip_prefix(key)
                 .is_some_and(|rest| rest.trim_start().starts_with('='))
+        })
+        .map(|i| i + 1)
+}
+
+/// The first line where `value` appears (quoted, or as a bare key), for
+/// messages about a value inside a list or table.
+fn value_line(text: &str, value: &str) -> Option<usize> {
+    let quoted = [format!("\"{value}\""), format!("'{value}'")];
+    text.lines()
+        .position(|l| {
+            quoted.iter().any(|q| l.contains(q.as_str()))
+                || l.trim_start()
+                    .strip_prefix(value)
+                    .is_some_and(|rest| rest.trim_start().starts_with('='))
+                || l.trim() == value
         })
         .map(|i| i + 1)
 }
@@ -145,9 +311,18 @@ pub fn find(start: &Path) -> Option<PathBuf> {
 /// The configuration for a run: the file named explicitly, else the one
 /// found from `first_path`, else the defaults.
 pub fn resolve(explicit: Option<&Path>, first_path: &Path) -> Result<Config, ConfigError> {
+    resolve_with_path(explicit, first_path).map(|(config, _)| config)
+}
+
+/// Like [`resolve`], also giving the file the configuration came from (its
+/// folder is the root that relative globs and paths start from).
+pub fn resolve_with_path(
+    explicit: Option<&Path>,
+    first_path: &Path,
+) -> Result<(Config, Option<PathBuf>), ConfigError> {
     match explicit.map(Path::to_owned).or_else(|| find(first_path)) {
-        Some(path) => load(&path),
-        None => Ok(Config::default()),
+        Some(path) => load(&path).map(|config| (config, Some(path))),
+        None => Ok((Config::default(), None)),
     }
 }
 
@@ -189,6 +364,79 @@ mod tests {
             err.starts_with("rapid.toml:1: unknown field `formatting`"),
             "{err}"
         );
+    }
+
+    #[test]
+    fn lint_settings_are_read() {
+        let config = check(
+            "exclude = [\"old/**\"]\nextra-paths = [\"../ctrl\"]\n[lint]\nselect = [\"E\", \"W101\"]\nignore = [\"unused-data\"]\n\
+             [lint.severity]\nunused-data = \"error\"\n[[lint.overrides]]\npaths = [\"legacy/**\"]\nignore = [\"W\"]\n",
+        )
+        .expect("valid");
+        assert_eq!(config.exclude, ["old/**"]);
+        assert_eq!(config.extra_paths, [PathBuf::from("../ctrl")]);
+        assert_eq!(config.lint.select, ["E", "W101"]);
+        assert_eq!(config.lint.ignore, ["unused-data"]);
+        assert_eq!(config.lint.severity["unused-data"], "error");
+        assert_eq!(config.lint.overrides[0].paths, ["legacy/**"]);
+        assert_eq!(config.lint.overrides[0].ignore, ["W"]);
+    }
+
+    #[test]
+    fn the_same_keys_deserialise_from_json() {
+        let json = r#"{"exclude": ["a/**"], "lint": {"ignore": ["W2"], "severity": {"W201": "error"}}, "format": {"line-width": 100}}"#;
+        let config: Config = serde_json::from_str(json).expect("valid");
+        assert_eq!(config.exclude, ["a/**"]);
+        assert_eq!(config.lint.ignore, ["W2"]);
+        assert_eq!(config.format.line_width, 100);
+        assert!(serde_json::from_str::<Config>(r#"{"lint": {"slect": []}}"#).is_err());
+    }
+
+    #[test]
+    fn unknown_rules_severities_and_globs_are_errors_with_their_line() {
+        let err = check("[lint]\nselect = [\"E\",\n  \"W999\"]\n").expect_err("invalid");
+        assert_eq!(
+            err,
+            "rapid.toml:3: `select`: no rule has the code or name `W999`"
+        );
+        let err = check("[lint]\nignore = [\"unused-dta\"]\n").expect_err("invalid");
+        assert_eq!(
+            err,
+            "rapid.toml:2: `ignore`: no rule has the code or name `unused-dta`"
+        );
+        let err = check("[lint.severity]\nunused-data = \"fatal\"\n").expect_err("invalid");
+        assert_eq!(
+            err,
+            "rapid.toml:2: `severity.unused-data`: `fatal` is not one of error, warning, info, hint"
+        );
+        let err = check("[lint.severity]\nno-such-rule = \"error\"\n").expect_err("invalid");
+        assert_eq!(
+            err,
+            "rapid.toml:2: `severity`: no rule has the code or name `no-such-rule`"
+        );
+        let err = check("exclude = [\"a/[b\"]\n").expect_err("invalid");
+        assert!(
+            err.starts_with("rapid.toml:1: `exclude`: `a/[b` is not a valid glob"),
+            "{err}"
+        );
+        let err =
+            check("[[lint.overrides]]\npaths = [\"x\"]\nignor = [\"W\"]\n").expect_err("invalid");
+        assert!(
+            err.starts_with("rapid.toml:3: unknown field `ignor`"),
+            "{err}"
+        );
+    }
+
+    #[test]
+    fn selectors_match_codes_prefixes_and_names() {
+        let rule = rapid_analyzer::rules::find("unused-data").expect("a rule");
+        assert!(selects("W201", rule));
+        assert!(selects("w2", rule));
+        assert!(selects("W", rule));
+        assert!(selects("UNUSED-DATA", rule));
+        assert!(!selects("E", rule));
+        assert!(!selects("unused", rule));
+        assert!(!selects("W2011", rule));
     }
 
     #[test]

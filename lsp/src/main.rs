@@ -5,6 +5,7 @@ mod builtins;
 mod check;
 mod config;
 mod fmt;
+mod rules_cmd;
 mod source;
 
 use std::process::ExitCode;
@@ -29,6 +30,8 @@ enum Command {
     /// Show the built-in catalogue: functions, instructions, data types and
     /// predefined data.
     Builtins(builtins::BuiltinsArgs),
+    /// List the rules of `rapid check`, or show one with its documentation.
+    Rules(rules_cmd::RulesArgs),
 }
 
 fn main() -> ExitCode {
@@ -47,5 +50,6 @@ fn main() -> ExitCode {
         Command::Check(args) => check::run(args),
         Command::Fmt(args) => fmt::run(args),
         Command::Builtins(args) => builtins::run(args),
+        Command::Rules(args) => rules_cmd::run(args),
     }
 }

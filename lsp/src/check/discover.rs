@@ -1,6 +1,7 @@
 //! Finding the RAPID files under the paths given on the command line.
 
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 use rapid_analyzer::text::is_rapid_file_name;
 
@@ -13,13 +14,26 @@ pub struct Discovery {
     pub configs: Vec<PathBuf>,
     /// Paths that could not be walked, with the reason.
     pub errors: Vec<(PathBuf, String)>,
+    /// Things worth saying that do not stop the run (a folder reached twice
+    /// through a link), with the path.
+    pub warnings: Vec<(PathBuf, String)>,
+}
+
+/// Says whether a path (a folder when the flag is set) is left out.
+pub type Excluder = Arc<dyn Fn(&Path, bool) -> bool + Send + Sync>;
+
+/// [`discover_with`] without excluding anything.
+pub fn discover(paths: &[PathBuf]) -> Discovery {
+    discover_with(paths, Arc::new(|_, _| false))
 }
 
 /// Walks `paths` (folders recursively, honouring `.gitignore`, `.ignore`
 /// and git's global excludes; hidden folders are walked too, since controller
 /// backups have none worth skipping) and collects RAPID files. A file named
-/// explicitly is taken whatever its extension.
-pub fn discover(paths: &[PathBuf]) -> Discovery {
+/// explicitly is taken whatever its extension. `excluded(path, is_folder)`
+/// says what to leave out, named explicitly or not (so a pre-commit hook,
+/// which names files, honours the exclude list too).
+pub fn discover_with(paths: &[PathBuf], excluded: Excluder) -> Discovery {
     let mut out = Discovery::default();
     for root in paths {
         match std::fs::metadata(root) {
@@ -28,16 +42,30 @@ pub fn discover(paths: &[PathBuf]) -> Discovery {
                 continue;
             }
             Ok(meta) if meta.is_file() => {
-                out.files.push(root.clone());
+                if !excluded(root, false) {
+                    let name = root.file_name().unwrap_or_default().to_string_lossy();
+                    if name.eq_ignore_ascii_case("eio.cfg") {
+                        out.configs.push(root.clone());
+                    } else {
+                        out.files.push(root.clone());
+                    }
+                }
                 continue;
             }
             Ok(_) => {}
         }
+        if excluded(root, true) {
+            continue;
+        }
+        let excluded = excluded.clone();
         let walker = ignore::WalkBuilder::new(root)
             .hidden(false)
             .follow_links(true)
             .require_git(false)
-            .filter_entry(|entry| entry.file_name() != ".git")
+            .filter_entry(move |entry| {
+                entry.file_name() != ".git"
+                    && !excluded(entry.path(), entry.file_type().is_some_and(|t| t.is_dir()))
+            })
             .build();
         for entry in walker {
             match entry {
@@ -50,9 +78,27 @@ pub fn discover(paths: &[PathBuf]) -> Discovery {
                         out.configs.push(entry.into_path());
                     }
                 }
-                Err(e) => out
-                    .errors
-                    .push((error_path(&e).unwrap_or(root).to_owned(), e.to_string())),
+                Err(e) => {
+                    let path = error_path(&e).unwrap_or(root).to_owned();
+                    if is_loop(&e) {
+                        out.warnings.push((
+                            path,
+                            "a link leads back to a folder above it; the folder is checked once"
+                                .to_owned(),
+                        ));
+                    } else if is_broken_link(&path) {
+                        // A dangling link matters only if it was meant to be a module.
+                        let name = path.file_name().unwrap_or_default().to_string_lossy();
+                        if is_rapid_file_name(&name) {
+                            out.errors.push((
+                                path,
+                                "a broken symbolic link (its target is missing)".to_owned(),
+                            ));
+                        }
+                    } else {
+                        out.errors.push((path, io_message(&e)));
+                    }
+                }
             }
         }
     }
@@ -61,6 +107,32 @@ pub fn discover(paths: &[PathBuf]) -> Discovery {
     out.configs.sort();
     out.configs.dedup();
     out
+}
+
+fn is_loop(e: &ignore::Error) -> bool {
+    match e {
+        ignore::Error::Loop { .. } => true,
+        ignore::Error::WithPath { err, .. }
+        | ignore::Error::WithDepth { err, .. }
+        | ignore::Error::WithLineNumber { err, .. } => is_loop(err),
+        _ => false,
+    }
+}
+
+fn is_broken_link(path: &Path) -> bool {
+    path.symlink_metadata()
+        .is_ok_and(|m| m.file_type().is_symlink())
+        && path.metadata().is_err()
+}
+
+/// The walker's message without the path it repeats.
+fn io_message(e: &ignore::Error) -> String {
+    match e {
+        ignore::Error::WithPath { err, .. } | ignore::Error::WithDepth { err, .. } => {
+            io_message(err)
+        }
+        other => other.to_string(),
+    }
 }
 
 fn error_path(e: &ignore::Error) -> Option<&Path> {

@@ -1,32 +1,51 @@
 //! `rapid check`: find RAPID files, analyse them, report what is wrong.
+//!
+//! The run: resolve `rapid.toml` and the flags ([`LintSettings`]), find the
+//! files ([`discover`]), read and parse them in parallel, group them into
+//! tasks with the modules and `EIO.cfg` of `extra-paths`, check every task
+//! in parallel, keep what the settings and the inline suppressions select
+//! ([`LintSettings::apply`]), optionally apply the safe fixes and check
+//! again, and print the report in the chosen format.
 
 mod discover;
+mod fix;
 mod output;
+mod settings;
+mod suppress;
 
-use std::io::Write;
-use std::path::PathBuf;
+use std::collections::{BTreeSet, HashMap, HashSet};
+use std::io::{IsTerminal, Write};
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
+use std::sync::Arc;
 
-use std::collections::HashMap;
-
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rapid_analyzer::diagnostic::{Diagnostic, Severity};
-use rapid_analyzer::task::Unit;
+use rapid_analyzer::task::{Unit, task_key};
 use rapid_analyzer::workspace::{Workspace, diagnostics_of};
 use rayon::prelude::*;
 
 use crate::source::{SourceFile, Unreadable};
 
-pub use discover::discover;
+pub use discover::{Discovery, discover, discover_with};
+pub use fix::apply_safe_fixes;
+pub use settings::{LintSettings, Overrides, normalize};
 
 /// Output formats of `rapid check`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum Format {
     /// The source line with the problem underlined, and a summary.
     Human,
-    /// One line per diagnostic: `file:line:column: severity[code] message`.
+    /// One line per diagnostic: `file:line:column: severity[code] message (name)`.
     Concise,
     /// A JSON array of diagnostics.
     Json,
+    /// SARIF 2.1.0, for GitHub code scanning and other SARIF viewers.
+    Sarif,
+    /// GitHub Actions workflow commands: annotations on the changed lines.
+    Github,
+    /// JUnit XML, for CI test reports: a test suite per file.
+    Junit,
 }
 
 #[derive(Debug, clap::Args)]
@@ -36,7 +55,46 @@ pub struct CheckArgs {
     /// How to print the diagnostics.
     #[arg(long, value_enum, default_value_t = Format::Human)]
     pub format: Format,
+    /// The configuration file to use instead of the `rapid.toml` found
+    /// upwards from the first path.
+    #[arg(long, value_name = "FILE")]
+    pub config: Option<PathBuf>,
+    /// Report only these rules (codes, code prefixes or names; replaces
+    /// `select` of rapid.toml).
+    #[arg(long, value_delimiter = ',', value_name = "RULE")]
+    pub select: Vec<String>,
+    /// Do not report these rules (added to `ignore` of rapid.toml).
+    #[arg(long, value_delimiter = ',', value_name = "RULE")]
+    pub ignore: Vec<String>,
+    /// Leave out files and folders matching these globs (added to `exclude`
+    /// of rapid.toml).
+    #[arg(long, value_delimiter = ',', value_name = "GLOB")]
+    pub exclude: Vec<String>,
+    /// More folders holding modules or `EIO.cfg` of the program: analysed
+    /// with the checked files, not reported (added to `extra-paths`).
+    #[arg(long, value_name = "PATH")]
+    pub extra_path: Vec<PathBuf>,
+    /// Print how many diagnostics each rule gave instead of the diagnostics.
+    #[arg(long)]
+    pub statistics: bool,
+    /// Exit with 0 even when errors were found (2 still means a usage,
+    /// configuration or IO problem).
+    #[arg(long, conflicts_with = "error_on_warnings")]
+    pub exit_zero: bool,
+    /// Exit with 1 when warnings were found, not only errors.
+    #[arg(long)]
+    pub error_on_warnings: bool,
+    /// Apply the safe fixes, write the files back, and report what remains.
+    #[arg(long)]
+    pub fix: bool,
+    /// Threads to check with (default: one per core).
+    #[arg(long, value_name = "N")]
+    pub threads: Option<usize>,
 }
+
+/// Files larger than this are not modules a controller would load; they are
+/// skipped with a message rather than parsed.
+pub const MAX_FILE_BYTES: u64 = 64 * 1024 * 1024;
 
 /// A file that was checked, with its diagnostics in source order.
 pub struct Checked {
@@ -44,70 +102,290 @@ pub struct Checked {
     pub diagnostics: Vec<Diagnostic>,
 }
 
+/// Why a file was not checked.
+#[derive(Debug)]
+pub enum Skip {
+    Unreadable(Unreadable),
+    TooLarge(u64),
+}
+
+impl Skip {
+    /// An IO error fails the run (exit 2); an encrypted or binary file does not.
+    pub fn is_error(&self) -> bool {
+        matches!(self, Skip::Unreadable(Unreadable::Io(_)))
+    }
+}
+
+impl std::fmt::Display for Skip {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Skip::Unreadable(why) => why.fmt(f),
+            Skip::TooLarge(bytes) => write!(
+                f,
+                "skipped: {:.1} MB is more than the {} MB a module may have here",
+                *bytes as f64 / 1e6,
+                MAX_FILE_BYTES / (1024 * 1024)
+            ),
+        }
+    }
+}
+
 /// What happened to each file: checked, or skipped with a reason.
 pub enum Outcome {
     Checked(Checked),
-    Skipped(PathBuf, Unreadable),
+    Skipped(PathBuf, Skip),
+}
+
+/// The result of a run, as the formats print it.
+pub struct Report {
+    /// Files checked, in path order, with the diagnostics to report.
+    pub checked: Vec<Checked>,
+    /// Files not checked, with the reason.
+    pub skipped: Vec<(PathBuf, String)>,
+    /// Fixes applied by `--fix`.
+    pub fixed: usize,
 }
 
 pub fn run(args: CheckArgs) -> ExitCode {
+    let mut stderr = anstream::stderr();
+    match run_inner(args, &mut stderr) {
+        Ok(code) => code,
+        Err(message) => {
+            let _ = writeln!(stderr, "rapid: {message}");
+            ExitCode::from(2)
+        }
+    }
+}
+
+fn run_inner(args: CheckArgs, stderr: &mut impl Write) -> Result<ExitCode, String> {
+    if let Some(n) = args.threads {
+        // Fails only if the pool was built already, which it is not here.
+        let _ = rayon::ThreadPoolBuilder::new()
+            .num_threads(n.max(1))
+            .build_global();
+    }
     let paths = if args.paths.is_empty() {
         vec![PathBuf::from(".")]
     } else {
-        args.paths
+        args.paths.clone()
     };
-    let found = discover(&paths);
-    let mut stderr = anstream::stderr();
-    let mut usage_error = false;
+    let (config, config_path) = crate::config::resolve_with_path(args.config.as_deref(), &paths[0])
+        .map_err(|e| e.to_string())?;
+    let root = match config_path.as_deref().and_then(Path::parent) {
+        Some(dir) => normalize(&std::path::absolute(dir).map_err(|e| e.to_string())?),
+        None => normalize(&std::env::current_dir().map_err(|e| e.to_string())?),
+    };
+    let settings = LintSettings::new(
+        &config,
+        root.clone(),
+        &Overrides {
+            select: args.select.clone(),
+            ignore: args.ignore.clone(),
+            exclude: args.exclude.clone(),
+        },
+    )
+    .map_err(|e| e.to_string())?;
+    let settings = Arc::new(settings);
+    let for_walk = settings.clone();
+    let found = discover_with(
+        &paths,
+        Arc::new(move |p: &Path, dir: bool| for_walk.is_excluded(p, dir)),
+    );
+    let mut failed = false;
     for (path, why) in &found.errors {
         let _ = writeln!(stderr, "rapid: {}: {why}", path.display());
-        usage_error = true;
+        failed = true;
     }
-    let outcomes = check_files(&found.files, &found.configs);
-    let mut checked = Vec::with_capacity(outcomes.len());
+    for (path, why) in &found.warnings {
+        let _ = writeln!(stderr, "rapid: {}: {why}", path.display());
+    }
+    let extra_paths: Vec<PathBuf> = config
+        .extra_paths
+        .iter()
+        .map(|p| root.join(p))
+        .chain(args.extra_path.iter().cloned())
+        .collect();
+    let extra = discover(&extra_paths);
+    for (path, why) in &extra.errors {
+        let _ = writeln!(stderr, "rapid: {} (extra path): {why}", path.display());
+        failed = true;
+    }
+    if found.files.is_empty() && found.errors.is_empty() {
+        let _ = writeln!(
+            stderr,
+            "rapid: no RAPID files found in {}",
+            paths
+                .iter()
+                .map(|p| p.display().to_string())
+                .collect::<Vec<_>>()
+                .join(", ")
+        );
+    }
+
+    let progress = progress_bar(found.files.len());
+    let mut outcomes = check_files(&found.files, &found.configs, &extra, &progress);
+    let mut fixed = 0;
+    if args.fix {
+        // A fix can make room for another (or reveal one): a few passes.
+        for _ in 0..4 {
+            let (n, write_failed) = fix_outcomes(&mut outcomes, &settings, stderr);
+            failed |= write_failed;
+            fixed += n;
+            if n == 0 {
+                break;
+            }
+            outcomes = check_files(&found.files, &found.configs, &extra, &progress);
+        }
+    }
+    progress.finish_and_clear();
+
+    let mut report = Report {
+        checked: Vec::with_capacity(outcomes.len()),
+        skipped: Vec::new(),
+        fixed,
+    };
     for outcome in outcomes {
         match outcome {
-            Outcome::Checked(c) => checked.push(c),
+            Outcome::Checked(mut c) => {
+                let diagnostics = std::mem::take(&mut c.diagnostics);
+                c.diagnostics =
+                    settings.apply(&c.file.path, &c.file.text, &c.file.lines, diagnostics);
+                report.checked.push(c);
+            }
             Outcome::Skipped(path, why) => {
-                if matches!(why, Unreadable::Io(_)) {
-                    usage_error = true;
-                }
+                failed |= why.is_error();
                 let _ = writeln!(stderr, "rapid: {}: {why}", path.display());
+                report.skipped.push((path, why.to_string()));
             }
         }
     }
+
     let stdout = std::io::stdout();
     let mut out = anstream::AutoStream::auto(stdout.lock());
-    let written = match args.format {
-        Format::Human => output::human(&mut out, &checked),
-        Format::Concise => output::concise(&mut out, &checked),
-        Format::Json => output::json(&mut out, &checked),
+    let written = if args.statistics {
+        output::statistics(&mut out, &report, args.format == Format::Json)
+    } else {
+        match args.format {
+            Format::Human => output::human(&mut out, &report),
+            Format::Concise => output::concise(&mut out, &report),
+            Format::Json => output::json(&mut out, &report),
+            Format::Sarif => output::sarif(&mut out, &report, &root),
+            Format::Github => output::github(&mut out, &report),
+            Format::Junit => output::junit(&mut out, &report),
+        }
     };
     if let Err(e) = written.and_then(|()| out.flush())
         && e.kind() != std::io::ErrorKind::BrokenPipe
     {
-        let _ = writeln!(stderr, "rapid: cannot write the report: {e}");
-        return ExitCode::from(2);
+        return Err(format!("cannot write the report: {e}"));
     }
-    let errors = checked
+    let worst = report
+        .checked
         .iter()
         .flat_map(|c| &c.diagnostics)
-        .any(|d| d.severity == Severity::Error);
-    if usage_error {
+        .map(|d| d.severity)
+        .max();
+    let threshold = if args.error_on_warnings {
+        Severity::Warning
+    } else {
+        Severity::Error
+    };
+    Ok(if failed {
         ExitCode::from(2)
-    } else if errors {
+    } else if !args.exit_zero && worst.is_some_and(|w| w >= threshold) {
         ExitCode::from(1)
     } else {
         ExitCode::SUCCESS
+    })
+}
+
+/// Applies the safe fixes of the reported diagnostics to each file and
+/// writes it back in its encoding. Returns the fixes applied, and whether
+/// a file could not be written.
+fn fix_outcomes(
+    outcomes: &mut [Outcome],
+    settings: &LintSettings,
+    stderr: &mut impl Write,
+) -> (usize, bool) {
+    let mut total = 0;
+    let mut failed = false;
+    for outcome in outcomes.iter_mut() {
+        let Outcome::Checked(c) = outcome else {
+            continue;
+        };
+        if c.diagnostics.iter().all(|d| d.fix.is_none()) {
+            continue;
+        }
+        let reported = settings.apply(
+            &c.file.path,
+            &c.file.text,
+            &c.file.lines,
+            c.diagnostics.clone(),
+        );
+        let Some((text, n)) = apply_safe_fixes(&c.file.text, &reported) else {
+            continue;
+        };
+        let path = c.file.path.display();
+        match c.file.encoding.encode(&text) {
+            Ok(bytes) => match std::fs::write(&c.file.path, bytes) {
+                Ok(()) => {
+                    total += n;
+                    let s = if n == 1 { "" } else { "s" };
+                    let _ = writeln!(stderr, "rapid: {path}: fixed {n} problem{s}");
+                }
+                Err(e) => {
+                    failed = true;
+                    let _ = writeln!(stderr, "rapid: {path}: cannot write the fixes: {e}");
+                }
+            },
+            Err(at) => {
+                let _ = writeln!(
+                    stderr,
+                    "rapid: {path}: fixes not written: the character at byte {at} cannot be written in {}",
+                    c.file.encoding.name()
+                );
+            }
+        }
     }
+    (total, failed)
+}
+
+/// A progress bar on stderr for long runs on a terminal; hidden in pipes,
+/// files and CI logs.
+fn progress_bar(files: usize) -> ProgressBar {
+    const LONG_RUN: usize = 200;
+    let visible =
+        files >= LONG_RUN && std::io::stderr().is_terminal() && std::env::var_os("CI").is_none();
+    if !visible {
+        return ProgressBar::hidden();
+    }
+    let bar = ProgressBar::with_draw_target(Some(2 * files as u64), ProgressDrawTarget::stderr());
+    if let Ok(style) = ProgressStyle::with_template("{spinner} checking {bar:30} {pos}/{len}") {
+        bar.set_style(style);
+    }
+    bar
 }
 
 /// Reads and checks every file, in parallel, keeping the order of `files`.
 /// Files are grouped into tasks as the analyzer does; `configs` are the I/O
-/// configuration files whose signals the tasks below them may use.
-pub fn check_files(files: &[PathBuf], configs: &[PathBuf]) -> Vec<Outcome> {
-    let read: Vec<Result<SourceFile, Unreadable>> =
-        files.par_iter().map(|p| SourceFile::read(p)).collect();
+/// configuration files whose signals the tasks below them may use. The
+/// modules and configuration of `extra` join the tasks (the tasks they
+/// belong to when those are checked, else every checked task) but are not
+/// reported. Diagnostics are the analyzer's, unfiltered.
+pub fn check_files(
+    files: &[PathBuf],
+    configs: &[PathBuf],
+    extra: &Discovery,
+    progress: &ProgressBar,
+) -> Vec<Outcome> {
+    let read: Vec<Result<SourceFile, Skip>> = files
+        .par_iter()
+        .map(|p| {
+            let result = read_source(p);
+            progress.inc(1);
+            result
+        })
+        .collect();
     let units: Vec<Option<Unit>> = read
         .par_iter()
         .map(|r| {
@@ -123,16 +401,25 @@ pub fn check_files(files: &[PathBuf], configs: &[PathBuf]) -> Vec<Outcome> {
             workspace.set_config(&unit_path(path), &text);
         }
     }
+    let checked_paths: HashSet<String> = units.iter().flatten().map(|u| u.path.clone()).collect();
+    let checked_keys: BTreeSet<String> = checked_paths.iter().map(|p| task_key(p)).collect();
+    add_extra(&mut workspace, extra, &checked_paths, &checked_keys);
     for unit in units.into_iter().flatten() {
         workspace.set_unit(unit);
     }
     let tasks = workspace.tasks();
     let mut by_path: HashMap<String, Vec<Diagnostic>> = tasks
         .par_iter()
+        .filter(|task| checked_keys.contains(&task.key))
         .flat_map_iter(|task| {
             task.units
                 .iter()
-                .map(|u| (u.path.clone(), diagnostics_of(task, u)))
+                .filter(|u| checked_paths.contains(&u.path))
+                .map(|u| {
+                    let d = (u.path.clone(), diagnostics_of(task, u));
+                    progress.inc(1);
+                    d
+                })
                 .collect::<Vec<_>>()
         })
         .collect();
@@ -148,7 +435,69 @@ pub fn check_files(files: &[PathBuf], configs: &[PathBuf]) -> Vec<Outcome> {
         .collect()
 }
 
+fn read_source(path: &Path) -> Result<SourceFile, Skip> {
+    let meta = std::fs::metadata(path).map_err(|e| Skip::Unreadable(Unreadable::Io(e)))?;
+    if meta.is_dir() {
+        let e = std::io::Error::other("a folder, not a file");
+        return Err(Skip::Unreadable(Unreadable::Io(e)));
+    }
+    if meta.len() > MAX_FILE_BYTES {
+        return Err(Skip::TooLarge(meta.len()));
+    }
+    SourceFile::read(path).map_err(Skip::Unreadable)
+}
+
+/// Adds the modules and I/O configuration of the extra paths. A module
+/// whose own task is checked joins it; any other joins every checked task,
+/// under a path of its own inside the task (its diagnostics are not
+/// computed, so the path is never shown).
+fn add_extra(
+    workspace: &mut Workspace,
+    extra: &Discovery,
+    checked_paths: &HashSet<String>,
+    checked_keys: &BTreeSet<String>,
+) {
+    let units: Vec<Unit> = extra
+        .files
+        .par_iter()
+        .filter(|p| !checked_paths.contains(&unit_path(p)))
+        .filter_map(|p| {
+            let file = read_source(p).ok()?;
+            Some(Unit::new(unit_path(&file.path), file.text, None))
+        })
+        .collect();
+    for (i, unit) in units.into_iter().enumerate() {
+        if checked_keys.contains(&task_key(&unit.path)) {
+            workspace.set_unit(unit);
+            continue;
+        }
+        let name = unit
+            .path
+            .rsplit(['/', '\\'])
+            .next()
+            .unwrap_or_default()
+            .to_owned();
+        for key in checked_keys {
+            let path = format!("{key}/extra-{i}-{name}");
+            workspace.set_unit(Unit::from_tree(
+                path,
+                unit.text.clone(),
+                Some(unit.tree.clone()),
+            ));
+        }
+    }
+    for (i, path) in extra.configs.iter().enumerate() {
+        if let Ok(bytes) = std::fs::read(path) {
+            let text = String::from_utf8_lossy(&bytes);
+            for key in checked_keys {
+                // Below `SYSPAR`, a configuration applies to the folder above.
+                workspace.set_config(&format!("{key}/SYSPAR/extra-{i}-EIO.cfg"), &text);
+            }
+        }
+    }
+}
+
 /// The path of a file as the analyzer sees it (it groups tasks by it).
-fn unit_path(path: &std::path::Path) -> String {
+fn unit_path(path: &Path) -> String {
     path.to_string_lossy().into_owned()
 }

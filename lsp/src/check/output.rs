@@ -1,11 +1,16 @@
 //! The report formats of `rapid check`.
 
+use std::collections::BTreeMap;
+use std::fmt::Write as _;
 use std::io::{self, Write};
+use std::path::Path;
 
 use annotate_snippets::{AnnotationKind, Level, Renderer, Snippet};
-use rapid_analyzer::diagnostic::{Diagnostic, Severity};
+use rapid_analyzer::diagnostic::{Diagnostic, Rule, Severity};
+use rapid_analyzer::rules::{RULES, anchor};
+use serde_json::{Value, json};
 
-use super::Checked;
+use super::{Checked, Report, normalize};
 
 /// A diagnostic located for people: 1-based lines, columns in characters,
 /// the end exclusive.
@@ -20,6 +25,8 @@ pub struct Located<'a> {
     pub code: &'static str,
     pub name: &'static str,
     pub message: &'a str,
+    /// Whether `--fix` can fix it.
+    pub fixable: bool,
 }
 
 pub fn locate<'a>(checked: &Checked, d: &'a Diagnostic) -> Located<'a> {
@@ -35,44 +42,89 @@ pub fn locate<'a>(checked: &Checked, d: &'a Diagnostic) -> Located<'a> {
         code: d.rule.code,
         name: d.rule.name,
         message: &d.message,
+        fixable: d.fix.as_ref().is_some_and(|f| f.safe),
     }
 }
 
-pub fn json(out: &mut impl Write, checked: &[Checked]) -> io::Result<()> {
-    let all: Vec<Located<'_>> = checked
+fn all(report: &Report) -> impl Iterator<Item = (&Checked, &Diagnostic)> {
+    report
+        .checked
         .iter()
-        .flat_map(|c| c.diagnostics.iter().map(move |d| locate(c, d)))
-        .collect();
+        .flat_map(|c| c.diagnostics.iter().map(move |d| (c, d)))
+}
+
+/// Where the rule is documented.
+pub fn help_uri(rule: &Rule) -> String {
+    format!(
+        "{}/blob/main/docs/diagnostics.md#{}",
+        env!("CARGO_PKG_REPOSITORY"),
+        anchor(rule)
+    )
+}
+
+pub fn json(out: &mut impl Write, report: &Report) -> io::Result<()> {
+    let all: Vec<Located<'_>> = all(report).map(|(c, d)| locate(c, d)).collect();
     serde_json::to_writer_pretty(&mut *out, &all)?;
     writeln!(out)
 }
 
-pub fn concise(out: &mut impl Write, checked: &[Checked]) -> io::Result<()> {
-    for c in checked {
-        for d in &c.diagnostics {
-            let l = locate(c, d);
-            writeln!(
-                out,
-                "{}:{}:{}: {}[{}] {} ({})",
-                l.file, l.line, l.column, l.severity, l.code, l.message, l.name
-            )?;
-        }
+pub fn concise(out: &mut impl Write, report: &Report) -> io::Result<()> {
+    for (c, d) in all(report) {
+        let l = locate(c, d);
+        writeln!(
+            out,
+            "{}:{}:{}: {}[{}] {} ({})",
+            l.file, l.line, l.column, l.severity, l.code, l.message, l.name
+        )?;
     }
     Ok(())
 }
 
-pub fn human(out: &mut impl Write, checked: &[Checked]) -> io::Result<()> {
-    let renderer = Renderer::styled();
-    let mut counts = [0usize; 4];
-    for c in checked {
-        for d in &c.diagnostics {
-            counts[d.severity as usize] += 1;
-            let rendered = render_one(&renderer, c, d);
-            writeln!(out, "{rendered}\n")?;
+/// Counts per rule, most frequent first.
+pub fn statistics(out: &mut impl Write, report: &Report, as_json: bool) -> io::Result<()> {
+    let mut counts: BTreeMap<&'static str, (usize, &'static Rule, usize)> = BTreeMap::new();
+    for (_, d) in all(report) {
+        let entry = counts.entry(d.rule.code).or_insert((0, d.rule, 0));
+        entry.0 += 1;
+        if d.fix.as_ref().is_some_and(|f| f.safe) {
+            entry.2 += 1;
         }
     }
+    let mut rows: Vec<_> = counts.into_values().collect();
+    rows.sort_by(|a, b| b.0.cmp(&a.0).then(a.1.code.cmp(b.1.code)));
+    if as_json {
+        let rows: Vec<Value> = rows
+            .iter()
+            .map(|(n, rule, fixable)| {
+                json!({"code": rule.code, "name": rule.name, "count": n, "fixable": fixable})
+            })
+            .collect();
+        serde_json::to_writer_pretty(&mut *out, &rows)?;
+        return writeln!(out);
+    }
+    for (n, rule, fixable) in rows {
+        let fix = if fixable > 0 {
+            format!(" ({fixable} fixable)")
+        } else {
+            String::new()
+        };
+        writeln!(out, "{n:>6}  {}  {}{fix}", rule.code, rule.name)?;
+    }
+    Ok(())
+}
+
+pub fn human(out: &mut impl Write, report: &Report) -> io::Result<()> {
+    let renderer = Renderer::styled();
+    let mut counts = [0usize; 4];
+    let mut fixable = 0;
+    for (c, d) in all(report) {
+        counts[d.severity as usize] += 1;
+        fixable += usize::from(d.fix.as_ref().is_some_and(|f| f.safe));
+        let rendered = render_one(&renderer, c, d);
+        writeln!(out, "{rendered}\n")?;
+    }
     let [hints, infos, warnings, errors] = counts;
-    let files = checked.len();
+    let files = report.checked.len();
     let plural = |n: usize, word: &str| format!("{n} {word}{}", if n == 1 { "" } else { "s" });
     let mut parts = vec![plural(errors, "error"), plural(warnings, "warning")];
     if infos > 0 {
@@ -81,12 +133,17 @@ pub fn human(out: &mut impl Write, checked: &[Checked]) -> io::Result<()> {
     if hints > 0 {
         parts.push(plural(hints, "hint"));
     }
-    writeln!(
-        out,
-        "Checked {}: {}.",
-        plural(files, "file"),
-        parts.join(", ")
-    )
+    let mut line = format!("Checked {}: {}.", plural(files, "file"), parts.join(", "));
+    if !report.skipped.is_empty() {
+        let _ = write!(line, " Skipped {}.", plural(report.skipped.len(), "file"));
+    }
+    if report.fixed > 0 {
+        let _ = write!(line, " Fixed {}.", plural(report.fixed, "problem"));
+    }
+    if fixable > 0 {
+        let _ = write!(line, " {fixable} fixable with `--fix`.");
+    }
+    writeln!(out, "{line}")
 }
 
 /// One diagnostic with the source lines it covers (at most a few), so a
@@ -124,4 +181,380 @@ fn render_one(renderer: &Renderer, c: &Checked, d: &Diagnostic) -> String {
             .annotation(AnnotationKind::Primary.span(span_start..span_end)),
     )];
     renderer.render(&report)
+}
+
+/// A path as given on the command line, without a leading `./`.
+fn display_path(path: &Path) -> String {
+    let s = path.display().to_string();
+    match s.strip_prefix("./") {
+        Some(rest) => rest.to_owned(),
+        None => s,
+    }
+}
+
+/// GitHub Actions workflow commands, one annotation per diagnostic.
+pub fn github(out: &mut impl Write, report: &Report) -> io::Result<()> {
+    for (c, d) in all(report) {
+        let l = locate(c, d);
+        let command = match d.severity {
+            Severity::Error => "error",
+            Severity::Warning => "warning",
+            Severity::Info | Severity::Hint => "notice",
+        };
+        writeln!(
+            out,
+            "::{command} file={},line={},col={},endLine={},endColumn={},title={}::{}",
+            escape_property(&display_path(&c.file.path)),
+            l.line,
+            l.column,
+            l.end_line,
+            l.end_column,
+            escape_property(&format!("{} {}", l.code, l.name)),
+            escape_data(&format!("{} [{}]", l.message, l.code)),
+        )?;
+    }
+    for (path, why) in &report.skipped {
+        writeln!(
+            out,
+            "::warning file={},title=rapid check::{}",
+            escape_property(&display_path(path)),
+            escape_data(why)
+        )?;
+    }
+    Ok(())
+}
+
+/// A workflow command's message: `%`, CR and LF escaped.
+pub fn escape_data(s: &str) -> String {
+    s.replace('%', "%25")
+        .replace('\r', "%0D")
+        .replace('\n', "%0A")
+}
+
+/// A workflow command's property value: also `:` and `,`.
+pub fn escape_property(s: &str) -> String {
+    escape_data(s).replace(':', "%3A").replace(',', "%2C")
+}
+
+fn sarif_level(severity: Severity) -> &'static str {
+    match severity {
+        Severity::Error => "error",
+        Severity::Warning => "warning",
+        Severity::Info | Severity::Hint => "note",
+    }
+}
+
+/// The documentation of a rule without the doc comment's leading space.
+fn doc_markdown(rule: &Rule) -> String {
+    let mut out = String::new();
+    for line in rule.doc.lines() {
+        out.push_str(line.strip_prefix(' ').unwrap_or(line));
+        out.push('\n');
+    }
+    out
+}
+
+/// The "What it checks" part of a rule's documentation, as plain text.
+fn what_it_checks(doc: &str) -> String {
+    let mut lines = doc
+        .lines()
+        .map(str::trim)
+        .skip_while(|l| *l != "### What it checks")
+        .skip(1)
+        .take_while(|l| !l.starts_with("###"));
+    let mut text = String::new();
+    for l in lines.by_ref() {
+        if !l.is_empty() {
+            if !text.is_empty() {
+                text.push(' ');
+            }
+            text.push_str(l);
+        }
+    }
+    text
+}
+
+fn sarif_rule(rule: &Rule) -> Value {
+    let full = what_it_checks(rule.doc);
+    json!({
+        "id": rule.code,
+        "name": rule.name,
+        "shortDescription": {"text": rule.summary},
+        "fullDescription": {"text": if full.is_empty() { rule.summary.to_owned() } else { full }},
+        "help": {"text": doc_markdown(rule), "markdown": doc_markdown(rule)},
+        "helpUri": help_uri(rule),
+        "defaultConfiguration": {"level": sarif_level(rule.severity)},
+        "properties": {"tags": [rule.severity.as_str()]},
+    })
+}
+
+/// `path` relative to `root` as a URI reference (percent-encoded, `/`
+/// separators), or an absolute `file://` URI when it is not below `root`.
+pub fn relative_uri(path: &Path, root: &Path) -> (String, bool) {
+    let abs = normalize(&std::path::absolute(path).unwrap_or_else(|_| path.to_owned()));
+    match abs.strip_prefix(root) {
+        Ok(rel) => (encode_uri_path(&rel.to_string_lossy()), true),
+        Err(_) => (
+            format!("file://{}", encode_uri_path(&abs.to_string_lossy())),
+            false,
+        ),
+    }
+}
+
+fn encode_uri_path(path: &str) -> String {
+    let mut out = String::with_capacity(path.len());
+    for b in path.replace('\\', "/").bytes() {
+        match b {
+            b'A'..=b'Z' | b'a'..=b'z' | b'0'..=b'9' | b'-' | b'.' | b'_' | b'~' | b'/' => {
+                out.push(char::from(b));
+            }
+            _ => {
+                let _ = write!(out, "%{b:02X}");
+            }
+        }
+    }
+    out
+}
+
+/// A cheap, stable fingerprint: FNV-1a of the rule, the file and the
+/// trimmed text of the line, so the result survives lines moving.
+fn fingerprint(rule: &str, uri: &str, line_text: &str, nth: usize) -> String {
+    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+    for part in [rule, uri, line_text.trim()] {
+        for b in part.bytes().chain([0]) {
+            h ^= u64::from(b);
+            h = h.wrapping_mul(0x0100_0000_01b3);
+        }
+    }
+    format!("{h:016x}:{nth}")
+}
+
+/// SARIF 2.1.0, as GitHub code scanning reads it: every rule with its
+/// documentation, results with regions relative to `root`.
+pub fn sarif(out: &mut impl Write, report: &Report, root: &Path) -> io::Result<()> {
+    let rules: Vec<Value> = RULES.iter().map(|r| sarif_rule(r)).collect();
+    let mut results = Vec::new();
+    let mut seen: BTreeMap<String, usize> = BTreeMap::new();
+    for (c, d) in all(report) {
+        let l = locate(c, d);
+        let (uri, relative) = relative_uri(&c.file.path, root);
+        let mut artifact = json!({"uri": uri});
+        if relative {
+            artifact["uriBaseId"] = json!("%SRCROOT%");
+        }
+        let line = c.file.lines.line_col(d.range.start).line;
+        let line_text = c
+            .file
+            .text
+            .get(c.file.lines.line_range(line, &c.file.text))
+            .unwrap_or_default();
+        let base = fingerprint(d.rule.code, &uri, line_text, 0);
+        let nth = seen.entry(base.clone()).or_default();
+        let print = fingerprint(d.rule.code, &uri, line_text, *nth);
+        *nth += 1;
+        let mut result = json!({
+            "ruleId": d.rule.code,
+            "level": sarif_level(d.severity),
+            "message": {"text": d.message},
+            "locations": [{
+                "physicalLocation": {
+                    "artifactLocation": artifact,
+                    "region": {
+                        "startLine": l.line,
+                        "startColumn": l.column,
+                        "endLine": l.end_line,
+                        "endColumn": l.end_column,
+                    }
+                }
+            }],
+            "partialFingerprints": {"rapidLineHash/v1": print},
+        });
+        if let Some(index) = RULES.iter().position(|r| r.code == d.rule.code) {
+            result["ruleIndex"] = json!(index);
+        }
+        results.push(result);
+    }
+    let notifications: Vec<Value> = report
+        .skipped
+        .iter()
+        .map(|(path, why)| {
+            let (uri, relative) = relative_uri(path, root);
+            let mut artifact = json!({"uri": uri});
+            if relative {
+                artifact["uriBaseId"] = json!("%SRCROOT%");
+            }
+            json!({
+                "level": "warning",
+                "message": {"text": why},
+                "locations": [{"physicalLocation": {"artifactLocation": artifact}}],
+            })
+        })
+        .collect();
+    let root_uri = format!(
+        "file://{}/",
+        encode_uri_path(root.to_string_lossy().trim_end_matches(['/', '\\']))
+    );
+    let log = json!({
+        "$schema": "https://json.schemastore.org/sarif-2.1.0.json",
+        "version": "2.1.0",
+        "runs": [{
+            "tool": {"driver": {
+                "name": "rapid",
+                "version": env!("CARGO_PKG_VERSION"),
+                "informationUri": env!("CARGO_PKG_REPOSITORY"),
+                "rules": rules,
+            }},
+            "invocations": [{
+                "executionSuccessful": true,
+                "toolExecutionNotifications": notifications,
+            }],
+            "originalUriBaseIds": {"%SRCROOT%": {"uri": root_uri}},
+            "columnKind": "unicodeCodePoints",
+            "results": results,
+        }],
+    });
+    serde_json::to_writer_pretty(&mut *out, &log)?;
+    writeln!(out)
+}
+
+/// Text for XML attributes and content.
+fn xml(s: &str) -> String {
+    let mut out = String::with_capacity(s.len());
+    for c in s.chars() {
+        match c {
+            '&' => out.push_str("&amp;"),
+            '<' => out.push_str("&lt;"),
+            '>' => out.push_str("&gt;"),
+            '"' => out.push_str("&quot;"),
+            '\'' => out.push_str("&apos;"),
+            '\n' => out.push_str("&#10;"),
+            '\r' => out.push_str("&#13;"),
+            '\t' => out.push('\t'),
+            // Not allowed in XML 1.0 at all.
+            c if (c as u32) < 0x20 || c == '\u{FFFE}' || c == '\u{FFFF}' => out.push('\u{FFFD}'),
+            c => out.push(c),
+        }
+    }
+    out
+}
+
+/// JUnit XML: a test suite per file, a test case per diagnostic (failing at
+/// error level) or one passing case for a clean file.
+pub fn junit(out: &mut impl Write, report: &Report) -> io::Result<()> {
+    let tests: usize = report
+        .checked
+        .iter()
+        .map(|c| c.diagnostics.len().max(1))
+        .sum::<usize>()
+        + report.skipped.len();
+    let failures = all(report)
+        .filter(|(_, d)| d.severity == Severity::Error)
+        .count();
+    writeln!(out, r#"<?xml version="1.0" encoding="UTF-8"?>"#)?;
+    writeln!(
+        out,
+        r#"<testsuites name="rapid check" tests="{tests}" failures="{failures}" errors="0">"#
+    )?;
+    for c in &report.checked {
+        let path = xml(&display_path(&c.file.path));
+        let failing = c
+            .diagnostics
+            .iter()
+            .filter(|d| d.severity == Severity::Error)
+            .count();
+        writeln!(
+            out,
+            r#"  <testsuite name="{path}" tests="{}" failures="{failing}" errors="0" skipped="0">"#,
+            c.diagnostics.len().max(1)
+        )?;
+        if c.diagnostics.is_empty() {
+            writeln!(
+                out,
+                r#"    <testcase name="{path}" classname="{path}" file="{path}"/>"#
+            )?;
+        }
+        for d in &c.diagnostics {
+            let l = locate(c, d);
+            let name = xml(&format!("{}:{} {} {}", l.line, l.column, l.code, l.name));
+            write!(
+                out,
+                r#"    <testcase name="{name}" classname="{path}" file="{path}" line="{}">"#,
+                l.line
+            )?;
+            let detail = xml(&format!(
+                "{}:{}:{}: {}[{}] {}",
+                display_path(&c.file.path),
+                l.line,
+                l.column,
+                l.severity,
+                l.code,
+                l.message
+            ));
+            if d.severity == Severity::Error {
+                write!(
+                    out,
+                    r#"<failure message="{}" type="{}">{detail}</failure>"#,
+                    xml(l.message),
+                    l.code
+                )?;
+            } else {
+                write!(out, "<system-out>{detail}</system-out>")?;
+            }
+            writeln!(out, "</testcase>")?;
+        }
+        writeln!(out, "  </testsuite>")?;
+    }
+    for (path, why) in &report.skipped {
+        let path = xml(&display_path(path));
+        writeln!(
+            out,
+            r#"  <testsuite name="{path}" tests="1" failures="0" errors="0" skipped="1">"#
+        )?;
+        writeln!(
+            out,
+            r#"    <testcase name="{path}" classname="{path}" file="{path}"><skipped message="{}"/></testcase>"#,
+            xml(why)
+        )?;
+        writeln!(out, "  </testsuite>")?;
+    }
+    writeln!(out, "</testsuites>")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn workflow_commands_are_escaped() {
+        assert_eq!(escape_data("50% a\r\nb: c, d"), "50%25 a%0D%0Ab: c, d");
+        assert_eq!(escape_property("a:b,c%\n"), "a%3Ab%2Cc%25%0A");
+    }
+
+    #[test]
+    fn uris_are_relative_and_encoded() {
+        let root = Path::new("/proj");
+        assert_eq!(
+            relative_uri(Path::new("/proj/src/my mod#1.mod"), root),
+            ("src/my%20mod%231.mod".to_owned(), true)
+        );
+        assert_eq!(
+            relative_uri(Path::new("/other/a.mod"), root),
+            ("file:///other/a.mod".to_owned(), false)
+        );
+    }
+
+    #[test]
+    fn xml_is_escaped() {
+        assert_eq!(
+            xml("a<b & \"c\"\n\u{1}"),
+            "a&lt;b &amp; &quot;c&quot;&#10;\u{FFFD}"
+        );
+    }
+
+    #[test]
+    fn every_rule_has_a_full_description() {
+        for rule in RULES {
+            assert!(!what_it_checks(rule.doc).is_empty(), "{}", rule.code);
+        }
+    }
 }
