@@ -6,6 +6,7 @@ mod check;
 mod config;
 mod fmt;
 mod rules_cmd;
+mod server;
 mod source;
 
 use std::process::ExitCode;
@@ -32,6 +33,8 @@ enum Command {
     Builtins(builtins::BuiltinsArgs),
     /// List the rules of `rapid check`, or show one with its documentation.
     Rules(rules_cmd::RulesArgs),
+    /// Run the language server (LSP over standard input and output).
+    Lsp(server::LspArgs),
 }
 
 fn main() -> ExitCode {
@@ -51,5 +54,6 @@ fn main() -> ExitCode {
         Command::Fmt(args) => fmt::run(args),
         Command::Builtins(args) => builtins::run(args),
         Command::Rules(args) => rules_cmd::run(args),
+        Command::Lsp(args) => server::run(args),
     }
 }

@@ -1,0 +1,1151 @@
+//! The protocol handlers.
+
+use std::panic::{AssertUnwindSafe, catch_unwind};
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::time::Duration;
+
+use rapid_analyzer::format::FormatOptions;
+use rapid_analyzer::ide;
+use rapid_analyzer::text::{LineIndex, is_rapid_file_name};
+use serde_json::Value;
+use tower_lsp_server::jsonrpc::{Error, ErrorCode, Result};
+use tower_lsp_server::ls_types::request::{
+    GotoDeclarationParams, GotoDeclarationResponse, GotoTypeDefinitionParams,
+    GotoTypeDefinitionResponse,
+};
+use tower_lsp_server::ls_types::*;
+use tower_lsp_server::{Client, LanguageServer};
+
+use super::diagnostics;
+use super::document::{Document, apply_changes};
+use super::position::PosEncoding;
+use super::requests;
+use super::settings::Settings;
+use super::state::{ClientCaps, Shared, Snapshot, State, is_eio_cfg, make_unit, path_of};
+
+/// The extensions of RAPID files, in the letter cases seen in practice, for
+/// file watchers (LSP glob patterns are case-sensitive).
+const WATCH_GLOBS: &[&str] = &[
+    "**/*.{mod,modx,sys,sysx,prg}",
+    "**/*.{MOD,MODX,SYS,SYSX,PRG}",
+    "**/*.{Mod,Modx,Sys,Sysx,Prg}",
+    "**/{EIO,eio,Eio}.{cfg,CFG}",
+];
+
+/// The handle every handler and background job shares.
+#[derive(Clone)]
+pub struct Backend {
+    client: Client,
+    shared: Arc<Shared>,
+    shut_down: Arc<AtomicBool>,
+}
+
+/// A panic's message.
+fn panic_message(payload: &(dyn std::any::Any + Send)) -> String {
+    payload
+        .downcast_ref::<&str>()
+        .map(|s| (*s).to_owned())
+        .or_else(|| payload.downcast_ref::<String>().cloned())
+        .unwrap_or_else(|| "unknown panic".to_owned())
+}
+
+fn internal_error(what: &str) -> Error {
+    Error {
+        code: ErrorCode::InternalError,
+        message: format!("rapid: {what} failed (internal error; see the server log)").into(),
+        data: None,
+    }
+}
+
+fn request_failed(message: String) -> Error {
+    Error {
+        // RequestFailed in LSP 3.17.
+        code: ErrorCode::ServerError(-32803),
+        message: message.into(),
+        data: None,
+    }
+}
+
+impl Backend {
+    pub fn new(client: Client, shut_down: Arc<AtomicBool>) -> Backend {
+        Backend {
+            client,
+            shared: Arc::new(Shared::default()),
+            shut_down,
+        }
+    }
+
+    async fn log(&self, typ: MessageType, message: String) {
+        self.client.log_message(typ, message).await;
+    }
+
+    /// Runs a mutation of the state, catching panics (the state is left as
+    /// it was at the panic, which is always consistent enough to go on).
+    fn mutate<R>(&self, what: &str, f: impl FnOnce(&mut State) -> R) -> Option<R> {
+        let mut state = self.shared.lock();
+        match catch_unwind(AssertUnwindSafe(|| f(&mut state))) {
+            Ok(r) => Some(r),
+            Err(payload) => {
+                eprintln!("rapid lsp: {what} panicked: {}", panic_message(&*payload));
+                None
+            }
+        }
+    }
+
+    /// Runs `f` on a snapshot of `uri`'s file on the blocking pool. A file
+    /// the server does not know gives `Ok(None)`; a panic gives an error.
+    async fn on_snapshot<R: Send + 'static>(
+        &self,
+        uri: &Uri,
+        what: &'static str,
+        f: impl FnOnce(&Snapshot) -> R + Send + 'static,
+    ) -> Result<Option<R>> {
+        let snap = self.mutate(what, |s| s.snapshot(uri)).flatten();
+        let Some(snap) = snap else {
+            return Ok(None);
+        };
+        self.blocking(what, move || f(&snap)).await.map(Some)
+    }
+
+    async fn blocking<R: Send + 'static>(
+        &self,
+        what: &'static str,
+        f: impl FnOnce() -> R + Send + 'static,
+    ) -> Result<R> {
+        match tokio::task::spawn_blocking(f).await {
+            Ok(r) => Ok(r),
+            Err(e) => {
+                let message = if e.is_panic() {
+                    panic_message(&*e.into_panic())
+                } else {
+                    "cancelled".to_owned()
+                };
+                self.log(MessageType::ERROR, format!("{what} failed: {message}"))
+                    .await;
+                Err(internal_error(what))
+            }
+        }
+    }
+
+    // ---- diagnostics ---------------------------------------------------
+
+    /// Schedules a publication of diagnostics for each open document in
+    /// `paths`, after `delay`. A later schedule for the same document
+    /// supersedes this one.
+    fn schedule(&self, paths: Vec<String>, delay: Option<Duration>) {
+        let jobs = self
+            .mutate("scheduling diagnostics", |s| {
+                let delay = delay.unwrap_or(s.settings.delay);
+                let push = !s.caps.pull_diagnostics;
+                paths
+                    .into_iter()
+                    .filter_map(|p| {
+                        let id = s.next_id();
+                        let doc = s.docs.get_mut(&p)?;
+                        doc.generation = id;
+                        push.then_some((p, id, delay))
+                    })
+                    .collect::<Vec<_>>()
+            })
+            .unwrap_or_default();
+        for (path, generation, delay) in jobs {
+            let this = self.clone();
+            tokio::spawn(async move { this.publish(path, generation, delay).await });
+        }
+    }
+
+    /// Every open document, at once.
+    fn republish_all(&self) {
+        let paths = self
+            .mutate("listing documents", |s| s.docs.keys().cloned().collect())
+            .unwrap_or_default();
+        self.schedule(paths, Some(Duration::ZERO));
+        if self.shared.lock().caps.pull_diagnostics && self.shared.lock().caps.diagnostic_refresh {
+            let client = self.client.clone();
+            tokio::spawn(async move { client.workspace_diagnostic_refresh().await });
+        }
+    }
+
+    async fn publish(&self, path: String, generation: u64, delay: Duration) {
+        if !delay.is_zero() {
+            tokio::time::sleep(delay).await;
+        }
+        let current = |s: &State| {
+            s.docs
+                .get(&path)
+                .is_some_and(|d| d.generation == generation)
+        };
+        let snap = self
+            .mutate("publishing diagnostics", |s| {
+                if !current(s) {
+                    return None;
+                }
+                let uri = s.docs.get(&path)?.uri.clone();
+                s.snapshot(&uri)
+            })
+            .flatten();
+        let Some(snap) = snap else {
+            return;
+        };
+        let Ok((snap, raw, converted)) = self
+            .blocking("computing diagnostics", move || {
+                let raw = snap.diagnostics();
+                let converted = convert_diagnostics(&snap, &raw);
+                (snap, raw, converted)
+            })
+            .await
+        else {
+            return;
+        };
+        let _order = self.shared.publish.lock().await;
+        let send = self
+            .mutate("publishing diagnostics", |s| {
+                s.cache_diagnostics(&snap, raw);
+                current(s)
+            })
+            .unwrap_or(false);
+        if send {
+            self.client
+                .publish_diagnostics(snap.uri.clone(), converted, snap.version)
+                .await;
+        }
+    }
+
+    // ---- workspace -----------------------------------------------------
+
+    /// Reads every RAPID file and `EIO.cfg` under the workspace folders and
+    /// the extra paths, reporting progress.
+    async fn index_workspace(&self) {
+        let (roots, progress_supported) = {
+            let s = self.shared.lock();
+            let mut roots = s.roots.clone();
+            roots.extend(s.settings.extra_paths.iter().cloned());
+            (roots, s.caps.work_done_progress)
+        };
+        if roots.is_empty() {
+            return;
+        }
+        let Ok(found) = self
+            .blocking("finding files", move || crate::check::discover(&roots))
+            .await
+        else {
+            return;
+        };
+        let progress = if progress_supported && !found.files.is_empty() {
+            let token = NumberOrString::String("rapid/indexing".to_owned());
+            match self.client.create_work_done_progress(token.clone()).await {
+                Ok(()) => Some(
+                    self.client
+                        .progress(token, "Indexing RAPID files")
+                        .with_message(format!("{} files", found.files.len()))
+                        .with_percentage(0)
+                        .begin()
+                        .await,
+                ),
+                Err(_) => None,
+            }
+        } else {
+            None
+        };
+        let total = found.files.len().max(1);
+        let mut done = 0;
+        let mut problems = Vec::new();
+        for chunk in found.files.chunks(64) {
+            let chunk = chunk.to_vec();
+            let Ok(read) = self
+                .blocking("reading files", move || read_units(&chunk))
+                .await
+            else {
+                continue;
+            };
+            done += read.len();
+            self.mutate("indexing", |s| {
+                for (path, result) in read {
+                    match result {
+                        Ok(unit) => {
+                            if !s.docs.contains_key(&unit.path) {
+                                s.disk
+                                    .insert(path, super::state::mtime(Path::new(&unit.path)));
+                                s.ws.set_unit(unit);
+                            }
+                        }
+                        Err(why) => problems.push(format!("{}: {why}", path.display())),
+                    }
+                }
+            });
+            if let Some(p) = &progress {
+                let pct = u32::try_from(done * 100 / total).unwrap_or(100);
+                p.report_with_message(format!("{done}/{total} files"), pct)
+                    .await;
+            }
+        }
+        self.mutate("indexing", |s| {
+            for cfg in &found.configs {
+                if let Err(why) = s.load_from_disk(cfg) {
+                    problems.push(format!("{}: {why}", cfg.display()));
+                }
+            }
+        });
+        if let Some(p) = progress {
+            p.finish_with_message(format!("{} files indexed", found.files.len()))
+                .await;
+        }
+        for problem in problems {
+            self.log(MessageType::WARNING, problem).await;
+        }
+        self.log(
+            MessageType::INFO,
+            format!("indexed {} RAPID files", found.files.len()),
+        )
+        .await;
+        self.republish_all();
+    }
+
+    async fn register_watchers(&self) {
+        let watchers = WATCH_GLOBS
+            .iter()
+            .map(|g| FileSystemWatcher {
+                glob_pattern: GlobPattern::String((*g).to_owned()),
+                kind: None,
+            })
+            .collect();
+        let options = DidChangeWatchedFilesRegistrationOptions { watchers };
+        let Ok(options) = serde_json::to_value(options) else {
+            return;
+        };
+        let registration = Registration {
+            id: "rapid/watch".to_owned(),
+            method: "workspace/didChangeWatchedFiles".to_owned(),
+            register_options: Some(options),
+        };
+        if let Err(e) = self.client.register_capability(vec![registration]).await {
+            self.log(
+                MessageType::WARNING,
+                format!("cannot watch files: {}", e.message),
+            )
+            .await;
+        }
+    }
+
+    /// For clients that cannot watch files: looks for files changed on
+    /// disk every two seconds.
+    async fn poll_disk(&self) {
+        loop {
+            tokio::time::sleep(Duration::from_secs(2)).await;
+            let known: Vec<(PathBuf, Option<std::time::SystemTime>)> = {
+                let s = self.shared.lock();
+                if s.shutdown {
+                    return;
+                }
+                s.disk.iter().map(|(p, t)| (p.clone(), *t)).collect()
+            };
+            let Ok(changed) = self
+                .blocking("polling files", move || {
+                    known
+                        .into_iter()
+                        .filter(|(p, t)| super::state::mtime(p) != *t)
+                        .map(|(p, _)| p)
+                        .collect::<Vec<_>>()
+                })
+                .await
+            else {
+                continue;
+            };
+            if changed.is_empty() {
+                continue;
+            }
+            self.mutate("reloading files", |s| {
+                for p in &changed {
+                    if p.exists() {
+                        let _ = s.load_from_disk(p);
+                    } else {
+                        s.remove_from_disk(p);
+                    }
+                }
+            });
+            self.republish_all();
+        }
+    }
+
+    fn apply_settings(&self, value: &Value) -> Vec<String> {
+        let (settings, problems) = Settings::from_json(value);
+        self.mutate("applying settings", |s| {
+            s.settings = settings;
+            s.config_generation += 1;
+        });
+        problems
+    }
+
+    fn format_options(&self, uri: &Uri) -> std::result::Result<FormatOptions, String> {
+        let path = PathBuf::from(path_of(uri));
+        let start = if path.is_absolute() {
+            path
+        } else {
+            match self.shared.lock().roots.first() {
+                Some(root) => root.clone(),
+                None => return Ok(FormatOptions::default()),
+            }
+        };
+        match crate::config::find(&start) {
+            Some(file) => crate::config::load(&file)
+                .map(|c| c.format.options())
+                .map_err(|e| e.to_string()),
+            None => Ok(FormatOptions::default()),
+        }
+    }
+}
+
+fn read_units(
+    files: &[PathBuf],
+) -> Vec<(
+    PathBuf,
+    std::result::Result<rapid_analyzer::task::Unit, crate::source::Unreadable>,
+)> {
+    use rayon::prelude::*;
+    files
+        .par_iter()
+        .map(|p| {
+            let unit = crate::source::SourceFile::read(p)
+                .map(|f| make_unit(p.to_string_lossy().into_owned(), f.text, None));
+            (p.clone(), unit)
+        })
+        .collect()
+}
+
+fn convert_diagnostics(
+    snap: &Snapshot,
+    raw: &[rapid_analyzer::diagnostic::Diagnostic],
+) -> Vec<Diagnostic> {
+    let mut out = diagnostics::to_lsp(raw, &snap.map(), &snap.uri, &snap.settings, &|p, r| {
+        snap.location(p, r)
+    });
+    if snap.unit.text.len() > super::state::MAX_ANALYSED_BYTES {
+        out.push(Diagnostic {
+            range: Range::default(),
+            severity: Some(DiagnosticSeverity::INFORMATION),
+            source: Some("rapid".to_owned()),
+            message: format!(
+                "this file is too large to analyse ({} MB; the limit is {} MB)",
+                snap.unit.text.len() / (1024 * 1024),
+                super::state::MAX_ANALYSED_BYTES / (1024 * 1024)
+            ),
+            ..Diagnostic::default()
+        });
+    }
+    out
+}
+
+fn client_caps(params: &InitializeParams) -> ClientCaps {
+    let caps = &params.capabilities;
+    let window = caps.window.as_ref();
+    let workspace = caps.workspace.as_ref();
+    ClientCaps {
+        work_done_progress: window.and_then(|w| w.work_done_progress) == Some(true),
+        watch_files_dynamically: workspace
+            .and_then(|w| w.did_change_watched_files.as_ref())
+            .and_then(|d| d.dynamic_registration)
+            == Some(true),
+        pull_diagnostics: caps
+            .text_document
+            .as_ref()
+            .is_some_and(|t| t.diagnostic.is_some()),
+        diagnostic_refresh: workspace
+            .and_then(|w| w.diagnostics.as_ref())
+            .and_then(|d| d.refresh_support)
+            == Some(true),
+        semantic_tokens_refresh: workspace
+            .and_then(|w| w.semantic_tokens.as_ref())
+            .and_then(|d| d.refresh_support)
+            == Some(true),
+    }
+}
+
+#[allow(
+    deprecated,
+    reason = "root_uri and root_path are still sent by older clients"
+)]
+fn workspace_roots(params: &InitializeParams) -> Vec<PathBuf> {
+    let mut roots: Vec<PathBuf> = params
+        .workspace_folders
+        .iter()
+        .flatten()
+        .filter_map(|f| f.uri.to_file_path().map(|p| p.into_owned()))
+        .collect();
+    if roots.is_empty() {
+        if let Some(p) = params.root_uri.as_ref().and_then(|u| u.to_file_path()) {
+            roots.push(p.into_owned());
+        } else if let Some(p) = &params.root_path {
+            roots.push(PathBuf::from(p));
+        }
+    }
+    roots
+}
+
+fn server_capabilities(encoding: PosEncoding) -> ServerCapabilities {
+    let token_types = ide::TOKEN_TYPES
+        .iter()
+        .map(|t| SemanticTokenType::new(t))
+        .collect();
+    let token_modifiers = ide::TOKEN_MODIFIERS
+        .iter()
+        .map(|t| SemanticTokenModifier::new(t))
+        .collect();
+    ServerCapabilities {
+        position_encoding: Some(encoding.kind()),
+        text_document_sync: Some(TextDocumentSyncCapability::Options(
+            TextDocumentSyncOptions {
+                open_close: Some(true),
+                change: Some(TextDocumentSyncKind::INCREMENTAL),
+                save: Some(TextDocumentSyncSaveOptions::Supported(true)),
+                ..TextDocumentSyncOptions::default()
+            },
+        )),
+        hover_provider: Some(HoverProviderCapability::Simple(true)),
+        completion_provider: Some(CompletionOptions {
+            resolve_provider: Some(true),
+            trigger_characters: Some(vec!["\\".to_owned(), ".".to_owned(), ":".to_owned()]),
+            ..CompletionOptions::default()
+        }),
+        signature_help_provider: Some(SignatureHelpOptions {
+            trigger_characters: Some(vec![
+                "\\".to_owned(),
+                ",".to_owned(),
+                "(".to_owned(),
+                " ".to_owned(),
+            ]),
+            retrigger_characters: None,
+            work_done_progress_options: WorkDoneProgressOptions::default(),
+        }),
+        definition_provider: Some(OneOf::Left(true)),
+        declaration_provider: Some(DeclarationCapability::Simple(true)),
+        type_definition_provider: Some(TypeDefinitionProviderCapability::Simple(true)),
+        references_provider: Some(OneOf::Left(true)),
+        document_highlight_provider: Some(OneOf::Left(true)),
+        rename_provider: Some(OneOf::Right(RenameOptions {
+            prepare_provider: Some(true),
+            work_done_progress_options: WorkDoneProgressOptions::default(),
+        })),
+        document_symbol_provider: Some(OneOf::Left(true)),
+        workspace_symbol_provider: Some(OneOf::Left(true)),
+        semantic_tokens_provider: Some(SemanticTokensServerCapabilities::SemanticTokensOptions(
+            SemanticTokensOptions {
+                legend: SemanticTokensLegend {
+                    token_types,
+                    token_modifiers,
+                },
+                range: Some(true),
+                full: Some(SemanticTokensFullOptions::Delta { delta: Some(true) }),
+                work_done_progress_options: WorkDoneProgressOptions::default(),
+            },
+        )),
+        folding_range_provider: Some(FoldingRangeProviderCapability::Simple(true)),
+        selection_range_provider: Some(SelectionRangeProviderCapability::Simple(true)),
+        inlay_hint_provider: Some(OneOf::Left(true)),
+        code_action_provider: Some(CodeActionProviderCapability::Options(CodeActionOptions {
+            code_action_kinds: Some(vec![CodeActionKind::QUICKFIX, CodeActionKind::REFACTOR]),
+            ..CodeActionOptions::default()
+        })),
+        document_formatting_provider: Some(OneOf::Left(true)),
+        document_range_formatting_provider: Some(OneOf::Left(true)),
+        diagnostic_provider: Some(DiagnosticServerCapabilities::Options(DiagnosticOptions {
+            identifier: Some("rapid".to_owned()),
+            inter_file_dependencies: true,
+            workspace_diagnostics: false,
+            work_done_progress_options: WorkDoneProgressOptions::default(),
+        })),
+        ..ServerCapabilities::default()
+    }
+}
+
+impl LanguageServer for Backend {
+    async fn initialize(&self, params: InitializeParams) -> Result<InitializeResult> {
+        let encoding = PosEncoding::negotiate(
+            params
+                .capabilities
+                .general
+                .as_ref()
+                .and_then(|g| g.position_encodings.as_deref()),
+        );
+        let problems = match &params.initialization_options {
+            Some(options) => self.apply_settings(options),
+            None => Vec::new(),
+        };
+        self.mutate("initializing", |s| {
+            s.encoding = encoding;
+            s.caps = client_caps(&params);
+            s.roots = workspace_roots(&params);
+        });
+        for p in problems {
+            self.log(MessageType::WARNING, format!("initializationOptions: {p}"))
+                .await;
+        }
+        Ok(InitializeResult {
+            capabilities: server_capabilities(encoding),
+            server_info: Some(ServerInfo {
+                name: "rapid".to_owned(),
+                version: Some(env!("CARGO_PKG_VERSION").to_owned()),
+            }),
+            offset_encoding: None,
+        })
+    }
+
+    async fn initialized(&self, _: InitializedParams) {
+        let caps = self.shared.lock().caps;
+        if caps.watch_files_dynamically {
+            self.register_watchers().await;
+        } else {
+            let this = self.clone();
+            tokio::spawn(async move { this.poll_disk().await });
+        }
+        let this = self.clone();
+        tokio::spawn(async move { this.index_workspace().await });
+    }
+
+    async fn shutdown(&self) -> Result<()> {
+        self.shut_down.store(true, Ordering::SeqCst);
+        self.mutate("shutting down", |s| s.shutdown = true);
+        Ok(())
+    }
+
+    async fn did_open(&self, params: DidOpenTextDocumentParams) {
+        let doc = params.text_document;
+        let path = path_of(&doc.uri);
+        if is_eio_cfg(&path) {
+            self.mutate("opening", |s| {
+                s.ws.set_config(&path, &doc.text);
+                s.config_generation += 1;
+            });
+            self.republish_all();
+            return;
+        }
+        let others = self
+            .mutate("opening", |s| {
+                let before = s.ws.unit(&path).map(|u| u.interface);
+                s.ws.set_unit(make_unit(path.clone(), doc.text, None));
+                let unit = s.ws.unit(&path)?.clone();
+                let changed = before != Some(unit.interface);
+                s.docs.insert(
+                    path.clone(),
+                    Document {
+                        uri: doc.uri.clone(),
+                        version: doc.version,
+                        index: Arc::new(LineIndex::new(&unit.text)),
+                        unit,
+                        generation: 0,
+                    },
+                );
+                s.semantic.remove(&path);
+                Some(if changed {
+                    s.open_in_task(&path)
+                } else {
+                    Vec::new()
+                })
+            })
+            .flatten();
+        self.schedule(vec![path], Some(Duration::ZERO));
+        if let Some(others) = others {
+            self.schedule(others, None);
+        }
+    }
+
+    async fn did_change(&self, params: DidChangeTextDocumentParams) {
+        let path = path_of(&params.text_document.uri);
+        let version = params.text_document.version;
+        let outcome = self.mutate("applying a change", |s| {
+            let encoding = s.encoding;
+            let doc = s.docs.get(&path)?;
+            let old_interface = doc.unit.interface;
+            let unit = apply_changes(&doc.unit, &params.content_changes, encoding);
+            let changed = unit.interface != old_interface;
+            s.ws.set_unit(unit);
+            let unit = s.ws.unit(&path)?.clone();
+            let doc = s.docs.get_mut(&path)?;
+            doc.index = Arc::new(LineIndex::new(&unit.text));
+            doc.unit = unit;
+            doc.version = version;
+            Some(if changed {
+                s.open_in_task(&path)
+            } else {
+                Vec::new()
+            })
+        });
+        match outcome {
+            Some(Some(others)) => {
+                self.schedule(vec![path], None);
+                self.schedule(others, None);
+            }
+            Some(None) => {
+                self.log(
+                    MessageType::WARNING,
+                    format!("didChange for a document that is not open: {path}"),
+                )
+                .await;
+            }
+            None => {
+                self.log(
+                    MessageType::ERROR,
+                    format!("applying a change to {path} failed; the document is out of step"),
+                )
+                .await;
+            }
+        }
+    }
+
+    async fn did_save(&self, _: DidSaveTextDocumentParams) {}
+
+    async fn did_close(&self, params: DidCloseTextDocumentParams) {
+        let uri = params.text_document.uri;
+        let path = path_of(&uri);
+        let others = self
+            .mutate("closing", |s| {
+                let doc = s.docs.remove(&path)?;
+                s.semantic.remove(&path);
+                s.diagnostics.remove(&path);
+                let before = doc.unit.interface;
+                // The file goes back to its state on disk.
+                let p = PathBuf::from(&path);
+                let changed = if p.is_file() {
+                    match s.load_from_disk(&p) {
+                        Ok(_) => s.ws.unit(&path).map(|u| u.interface) != Some(before),
+                        Err(_) => true,
+                    }
+                } else {
+                    s.ws.remove_file(&path);
+                    true
+                };
+                Some(if changed {
+                    s.open_in_task(&path)
+                } else {
+                    Vec::new()
+                })
+            })
+            .flatten();
+        let push = !self.shared.lock().caps.pull_diagnostics;
+        if push {
+            self.client.publish_diagnostics(uri, Vec::new(), None).await;
+        }
+        if let Some(others) = others {
+            self.schedule(others, None);
+        }
+    }
+
+    async fn did_change_watched_files(&self, params: DidChangeWatchedFilesParams) {
+        let problems = self
+            .mutate("reloading files", |s| {
+                let mut problems = Vec::new();
+                for change in &params.changes {
+                    let Some(path) = change.uri.to_file_path() else {
+                        continue;
+                    };
+                    let name = path.to_string_lossy();
+                    if !is_rapid_file_name(&name) && !is_eio_cfg(&name) {
+                        continue;
+                    }
+                    if change.typ == FileChangeType::DELETED {
+                        s.remove_from_disk(&path);
+                    } else if let Err(why) = s.load_from_disk(&path) {
+                        problems.push(format!("{}: {why}", path.display()));
+                    }
+                }
+                problems
+            })
+            .unwrap_or_default();
+        for p in problems {
+            self.log(MessageType::WARNING, p).await;
+        }
+        self.republish_all();
+    }
+
+    async fn did_change_configuration(&self, params: DidChangeConfigurationParams) {
+        let (old_extra, problems) = {
+            let old = self.shared.lock().settings.extra_paths.clone();
+            (old, self.apply_settings(&params.settings))
+        };
+        for p in problems {
+            self.log(MessageType::WARNING, format!("settings: {p}"))
+                .await;
+        }
+        if self.shared.lock().settings.extra_paths != old_extra {
+            let this = self.clone();
+            tokio::spawn(async move { this.index_workspace().await });
+        } else {
+            self.republish_all();
+        }
+        if self.shared.lock().caps.semantic_tokens_refresh {
+            let client = self.client.clone();
+            tokio::spawn(async move { client.semantic_tokens_refresh().await });
+        }
+    }
+
+    async fn diagnostic(
+        &self,
+        params: DocumentDiagnosticParams,
+    ) -> Result<DocumentDiagnosticReportResult> {
+        let previous = params.previous_result_id;
+        let computed = self
+            .on_snapshot(&params.text_document.uri, "diagnostics", |snap| {
+                let raw = snap.diagnostics();
+                let converted = convert_diagnostics(snap, &raw);
+                converted
+            })
+            .await?;
+        let items = computed.unwrap_or_default();
+        let result_id = diagnostics::result_id(&items);
+        let report = if previous.as_deref() == Some(result_id.as_str()) {
+            DocumentDiagnosticReport::Unchanged(RelatedUnchangedDocumentDiagnosticReport {
+                related_documents: None,
+                unchanged_document_diagnostic_report: UnchangedDocumentDiagnosticReport {
+                    result_id,
+                },
+            })
+        } else {
+            DocumentDiagnosticReport::Full(RelatedFullDocumentDiagnosticReport {
+                related_documents: None,
+                full_document_diagnostic_report: FullDocumentDiagnosticReport {
+                    result_id: Some(result_id),
+                    items,
+                },
+            })
+        };
+        Ok(DocumentDiagnosticReportResult::Report(report))
+    }
+
+    async fn hover(&self, params: HoverParams) -> Result<Option<Hover>> {
+        let p = params.text_document_position_params;
+        let pos = p.position;
+        Ok(self
+            .on_snapshot(&p.text_document.uri, "hover", move |s| {
+                requests::hover(s, pos)
+            })
+            .await?
+            .flatten())
+    }
+
+    async fn completion(&self, params: CompletionParams) -> Result<Option<CompletionResponse>> {
+        let p = params.text_document_position;
+        let pos = p.position;
+        Ok(self
+            .on_snapshot(&p.text_document.uri, "completion", move |s| {
+                requests::completion(s, pos)
+            })
+            .await?
+            .map(CompletionResponse::Array))
+    }
+
+    async fn completion_resolve(&self, item: CompletionItem) -> Result<CompletionItem> {
+        self.blocking("completion resolve", move || {
+            requests::resolve_completion(item)
+        })
+        .await
+    }
+
+    async fn signature_help(&self, params: SignatureHelpParams) -> Result<Option<SignatureHelp>> {
+        let p = params.text_document_position_params;
+        let pos = p.position;
+        Ok(self
+            .on_snapshot(&p.text_document.uri, "signature help", move |s| {
+                requests::signature_help(s, pos)
+            })
+            .await?
+            .flatten())
+    }
+
+    async fn goto_definition(
+        &self,
+        params: GotoDefinitionParams,
+    ) -> Result<Option<GotoDefinitionResponse>> {
+        let p = params.text_document_position_params;
+        let pos = p.position;
+        Ok(self
+            .on_snapshot(&p.text_document.uri, "definition", move |s| {
+                let found = ide::definition(&s.task, s.unit_idx, s.map().offset(pos));
+                requests::locations(s, found)
+            })
+            .await?
+            .map(GotoDefinitionResponse::Array))
+    }
+
+    async fn goto_declaration(
+        &self,
+        params: GotoDeclarationParams,
+    ) -> Result<Option<GotoDeclarationResponse>> {
+        let p = params.text_document_position_params;
+        let pos = p.position;
+        Ok(self
+            .on_snapshot(&p.text_document.uri, "declaration", move |s| {
+                let found = ide::definition(&s.task, s.unit_idx, s.map().offset(pos));
+                requests::locations(s, found)
+            })
+            .await?
+            .map(GotoDeclarationResponse::Array))
+    }
+
+    async fn goto_type_definition(
+        &self,
+        params: GotoTypeDefinitionParams,
+    ) -> Result<Option<GotoTypeDefinitionResponse>> {
+        let p = params.text_document_position_params;
+        let pos = p.position;
+        Ok(self
+            .on_snapshot(&p.text_document.uri, "type definition", move |s| {
+                let found = ide::type_definition(&s.task, s.unit_idx, s.map().offset(pos));
+                requests::locations(s, found)
+            })
+            .await?
+            .map(GotoTypeDefinitionResponse::Array))
+    }
+
+    async fn references(&self, params: ReferenceParams) -> Result<Option<Vec<Location>>> {
+        let p = params.text_document_position;
+        let pos = p.position;
+        let decl = params.context.include_declaration;
+        self.on_snapshot(&p.text_document.uri, "references", move |s| {
+            let found = ide::references(&s.task, s.unit_idx, s.map().offset(pos), decl);
+            requests::locations(s, found)
+        })
+        .await
+    }
+
+    async fn document_highlight(
+        &self,
+        params: DocumentHighlightParams,
+    ) -> Result<Option<Vec<DocumentHighlight>>> {
+        let p = params.text_document_position_params;
+        let pos = p.position;
+        self.on_snapshot(&p.text_document.uri, "document highlight", move |s| {
+            requests::document_highlights(s, pos)
+        })
+        .await
+    }
+
+    async fn prepare_rename(
+        &self,
+        params: TextDocumentPositionParams,
+    ) -> Result<Option<PrepareRenameResponse>> {
+        let pos = params.position;
+        let answer = self
+            .on_snapshot(&params.text_document.uri, "prepare rename", move |s| {
+                ide::prepare_rename(&s.task, s.unit_idx, s.map().offset(pos))
+                    .map(|r| PrepareRenameResponse::Range(s.map().range(r)))
+            })
+            .await?;
+        match answer {
+            None => Ok(None),
+            Some(Ok(r)) => Ok(Some(r)),
+            Some(Err(why)) => Err(request_failed(why)),
+        }
+    }
+
+    async fn rename(&self, params: RenameParams) -> Result<Option<WorkspaceEdit>> {
+        let p = params.text_document_position;
+        let pos = p.position;
+        let new_name = params.new_name;
+        let answer = self
+            .on_snapshot(&p.text_document.uri, "rename", move |s| {
+                ide::rename(&s.task, s.unit_idx, s.map().offset(pos), &new_name)
+                    .map(|files| requests::workspace_edit(s, files))
+            })
+            .await?;
+        match answer {
+            None => Ok(None),
+            Some(Ok(edit)) => Ok(Some(edit)),
+            Some(Err(why)) => Err(request_failed(why)),
+        }
+    }
+
+    async fn document_symbol(
+        &self,
+        params: DocumentSymbolParams,
+    ) -> Result<Option<DocumentSymbolResponse>> {
+        Ok(self
+            .on_snapshot(&params.text_document.uri, "document symbols", |s| {
+                requests::document_symbols(s)
+            })
+            .await?
+            .map(DocumentSymbolResponse::Nested))
+    }
+
+    async fn symbol(
+        &self,
+        params: WorkspaceSymbolParams,
+    ) -> Result<Option<WorkspaceSymbolResponse>> {
+        let (tasks, encoding, uris) = self
+            .mutate("workspace symbols", |s| {
+                (s.ws.tasks(), s.encoding, s.open_uris())
+            })
+            .ok_or_else(|| internal_error("workspace symbols"))?;
+        let query = params.query;
+        let found = self
+            .blocking("workspace symbols", move || {
+                requests::workspace_symbols(&tasks, &query, encoding, &uris)
+            })
+            .await?;
+        Ok(Some(WorkspaceSymbolResponse::Nested(found)))
+    }
+
+    async fn semantic_tokens_full(
+        &self,
+        params: SemanticTokensParams,
+    ) -> Result<Option<SemanticTokensResult>> {
+        let uri = params.text_document.uri;
+        let Some(data) = self
+            .on_snapshot(&uri, "semantic tokens", |s| {
+                requests::semantic_tokens(s, None)
+            })
+            .await?
+        else {
+            return Ok(None);
+        };
+        let result_id = self.remember_tokens(&uri, &data);
+        Ok(Some(SemanticTokensResult::Tokens(SemanticTokens {
+            result_id: Some(result_id),
+            data,
+        })))
+    }
+
+    async fn semantic_tokens_full_delta(
+        &self,
+        params: SemanticTokensDeltaParams,
+    ) -> Result<Option<SemanticTokensFullDeltaResult>> {
+        let uri = params.text_document.uri;
+        let previous = self
+            .shared
+            .lock()
+            .semantic
+            .get(&path_of(&uri))
+            .filter(|(id, _)| *id == params.previous_result_id)
+            .map(|(_, data)| data.clone());
+        let Some(data) = self
+            .on_snapshot(&uri, "semantic tokens", |s| {
+                requests::semantic_tokens(s, None)
+            })
+            .await?
+        else {
+            return Ok(None);
+        };
+        let flat = requests::tokens_to_flat(&data);
+        let result_id = self.remember_tokens(&uri, &data);
+        Ok(Some(match previous {
+            Some(old) => SemanticTokensFullDeltaResult::TokensDelta(SemanticTokensDelta {
+                result_id: Some(result_id),
+                edits: requests::semantic_delta(&old, &flat).into_iter().collect(),
+            }),
+            None => SemanticTokensFullDeltaResult::Tokens(SemanticTokens {
+                result_id: Some(result_id),
+                data,
+            }),
+        }))
+    }
+
+    async fn semantic_tokens_range(
+        &self,
+        params: SemanticTokensRangeParams,
+    ) -> Result<Option<SemanticTokensRangeResult>> {
+        let range = params.range;
+        Ok(self
+            .on_snapshot(&params.text_document.uri, "semantic tokens", move |s| {
+                let span = s.map().offset_range(range);
+                requests::semantic_tokens(s, Some(span))
+            })
+            .await?
+            .map(|data| {
+                SemanticTokensRangeResult::Tokens(SemanticTokens {
+                    result_id: None,
+                    data,
+                })
+            }))
+    }
+
+    async fn folding_range(&self, params: FoldingRangeParams) -> Result<Option<Vec<FoldingRange>>> {
+        self.on_snapshot(&params.text_document.uri, "folding ranges", |s| {
+            requests::folding_ranges(s)
+        })
+        .await
+    }
+
+    async fn selection_range(
+        &self,
+        params: SelectionRangeParams,
+    ) -> Result<Option<Vec<SelectionRange>>> {
+        let positions = params.positions;
+        self.on_snapshot(&params.text_document.uri, "selection ranges", move |s| {
+            requests::selection_ranges(s, &positions)
+        })
+        .await
+    }
+
+    async fn inlay_hint(&self, params: InlayHintParams) -> Result<Option<Vec<InlayHint>>> {
+        let range = params.range;
+        self.on_snapshot(&params.text_document.uri, "inlay hints", move |s| {
+            requests::inlay_hints(s, range)
+        })
+        .await
+    }
+
+    async fn code_action(&self, params: CodeActionParams) -> Result<Option<CodeActionResponse>> {
+        let range = params.range;
+        self.on_snapshot(&params.text_document.uri, "code actions", move |s| {
+            requests::code_actions(s, range)
+        })
+        .await
+    }
+
+    async fn formatting(&self, params: DocumentFormattingParams) -> Result<Option<Vec<TextEdit>>> {
+        let uri = params.text_document.uri;
+        let options = self.format_options(&uri).map_err(request_failed)?;
+        match self
+            .on_snapshot(&uri, "formatting", move |s| {
+                requests::format(s, None, &options)
+            })
+            .await?
+        {
+            None => Ok(None),
+            Some(Ok(edits)) => Ok(Some(edits)),
+            Some(Err(why)) => Err(request_failed(why)),
+        }
+    }
+
+    async fn range_formatting(
+        &self,
+        params: DocumentRangeFormattingParams,
+    ) -> Result<Option<Vec<TextEdit>>> {
+        let uri = params.text_document.uri;
+        let range = params.range;
+        let options = self.format_options(&uri).map_err(request_failed)?;
+        match self
+            .on_snapshot(&uri, "formatting", move |s| {
+                requests::format(s, Some(range), &options)
+            })
+            .await?
+        {
+            None => Ok(None),
+            Some(Ok(edits)) => Ok(Some(edits)),
+            Some(Err(why)) => Err(request_failed(why)),
+        }
+    }
+}
+
+impl Backend {
+    /// Keeps the tokens sent for a document, for the next delta request.
+    fn remember_tokens(&self, uri: &Uri, data: &[SemanticToken]) -> String {
+        let flat = Arc::new(requests::tokens_to_flat(data));
+        self.mutate("semantic tokens", |s| {
+            let id = s.next_id().to_string();
+            s.semantic.insert(path_of(uri), (id.clone(), flat));
+            id
+        })
+        .unwrap_or_default()
+    }
+}
+
+#[cfg(test)]
+impl Backend {
+    pub async fn test_panic(&self) -> Result<Value> {
+        self.blocking("the test method", || -> Value {
+            panic!("deliberate test panic")
+        })
+        .await
+    }
+}

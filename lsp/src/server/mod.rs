@@ -1,0 +1,127 @@
+//! `rapid lsp`: the language server, over standard input and output.
+//!
+//! The protocol lives here and only here: the analyzer hands out plain data
+//! with byte ranges ([`rapid_analyzer::ide`]); this module converts positions
+//! (UTF-16 or UTF-8 columns), types and JSON.
+//!
+//! - Document notifications (open, change, close, watched files) mutate the
+//!   [`state::State`] in order, under a short synchronous lock, before their
+//!   handler first awaits: the transport starts handlers in arrival order.
+//! - Requests take a [`state::Snapshot`] (an `Arc<Task>` and the unit) under
+//!   the lock and run on the blocking pool; a panic there becomes an error
+//!   answer and a log message, never a dead server.
+//! - Diagnostics are published per file with the document version, after a
+//!   short pause while typing (none for a newly opened file); a publication
+//!   that is no longer the latest for its document is dropped.
+
+mod backend;
+mod diagnostics;
+mod document;
+mod position;
+mod requests;
+mod settings;
+mod state;
+#[cfg(test)]
+mod tests;
+mod transport;
+
+use std::process::ExitCode;
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
+
+use tokio::io::{AsyncRead, AsyncWrite};
+use tower_lsp_server::{LspService, Server};
+
+pub use backend::Backend;
+
+/// Arguments of `rapid lsp`.
+#[derive(Debug, clap::Args)]
+pub struct LspArgs {
+    /// Speak the protocol over standard input and output (the default, and
+    /// the only transport; accepted because editors pass it).
+    #[arg(long)]
+    pub stdio: bool,
+}
+
+pub fn run(_args: LspArgs) -> ExitCode {
+    let runtime = match tokio::runtime::Builder::new_multi_thread()
+        .enable_all()
+        .build()
+    {
+        Ok(rt) => rt,
+        Err(e) => {
+            eprintln!("rapid lsp: cannot start: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    let clean = runtime.block_on(serve(tokio::io::stdin(), tokio::io::stdout()));
+    // Work still running on the blocking pool (indexing, a long request) is
+    // abandoned: the client asked us to exit.
+    runtime.shutdown_background();
+    if clean {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::FAILURE
+    }
+}
+
+/// Serves one client until it sends `exit` or closes the input. Returns
+/// whether the exit was clean (`shutdown` came first), as the protocol
+/// wants the exit code to say.
+pub async fn serve<I, O>(input: I, output: O) -> bool
+where
+    I: AsyncRead + Unpin + Send + 'static,
+    O: AsyncWrite + Unpin + Send + 'static,
+{
+    let shut_down = Arc::new(AtomicBool::new(false));
+    let flag = shut_down.clone();
+    let (service, socket) = LspService::new(move |client| Backend::new(client, flag));
+    run_service(input, output, service, socket).await;
+    shut_down.load(Ordering::SeqCst)
+}
+
+/// Runs the service behind the hardened transport ([`transport`]).
+async fn run_service<I, O>(
+    input: I,
+    output: O,
+    service: LspService<Backend>,
+    socket: tower_lsp_server::ClientSocket,
+) where
+    I: AsyncRead + Unpin + Send + 'static,
+    O: AsyncWrite + Unpin + Send + 'static,
+{
+    let (to_server, server_in) = transport::pipe();
+    let (server_out, from_server) = transport::pipe();
+    let (frames_tx, frames_rx) = tokio::sync::mpsc::unbounded_channel();
+    let reader = tokio::spawn(transport::filter_input(
+        input,
+        to_server.tx,
+        frames_tx.clone(),
+    ));
+    let forwarder = tokio::spawn(transport::forward_frames(from_server, frames_tx));
+    let writer = tokio::spawn(transport::write_output(output, frames_rx));
+    Server::new(server_in, server_out, socket)
+        .serve(service)
+        .await;
+    // The server is done: stop reading, send what is left.
+    reader.abort();
+    let _ = forwarder.await;
+    let _ = writer.await;
+}
+
+/// [`serve`], with a method that panics on the blocking pool, to test that
+/// a panicking handler answers an error and the server goes on.
+#[cfg(test)]
+async fn serve_with_test_methods<I, O>(input: I, output: O) -> bool
+where
+    I: AsyncRead + Unpin + Send + 'static,
+    O: AsyncWrite + Unpin + Send + 'static,
+{
+    let shut_down = Arc::new(AtomicBool::new(false));
+    let flag = shut_down.clone();
+    let (service, socket) = LspService::build(move |client| Backend::new(client, flag))
+        .custom_method("rapid/testPanic", Backend::test_panic)
+        .finish();
+    run_service(input, output, service, socket).await;
+    shut_down.load(Ordering::SeqCst)
+}

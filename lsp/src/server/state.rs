@@ -1,0 +1,283 @@
+//! The server's state: the analysis host, the open documents, settings and
+//! caches, behind one short synchronous lock; and snapshots handed to
+//! requests that run off the main loop.
+
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+use std::sync::{Arc, Mutex, MutexGuard, PoisonError};
+
+use rapid_analyzer::diagnostic::Diagnostic;
+use rapid_analyzer::task::{Task, Unit, task_key};
+use rapid_analyzer::text::LineIndex;
+use rapid_analyzer::workspace::{Workspace, diagnostics_of};
+use tower_lsp_server::ls_types::{Location, Uri};
+
+use super::document::Document;
+use super::position::{LineMap, PosEncoding};
+use super::settings::Settings;
+use crate::source::{SourceFile, Unreadable};
+
+/// Files larger than this are kept as text but not analysed: parsing tens
+/// of megabytes would stall every request behind it, and no RAPID module
+/// is that large.
+pub const MAX_ANALYSED_BYTES: usize = 8 * 1024 * 1024;
+
+/// What the client can do, as far as the server cares.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct ClientCaps {
+    pub work_done_progress: bool,
+    pub watch_files_dynamically: bool,
+    pub pull_diagnostics: bool,
+    pub diagnostic_refresh: bool,
+    pub semantic_tokens_refresh: bool,
+}
+
+#[derive(Default)]
+pub struct State {
+    pub ws: Workspace,
+    /// Open documents by path (the analyzer's name of the file).
+    pub docs: HashMap<String, Document>,
+    pub encoding: PosEncoding,
+    pub settings: Settings,
+    pub caps: ClientCaps,
+    /// Workspace folders.
+    pub roots: Vec<PathBuf>,
+    /// Every change to the settings or the I/O configuration bumps this, so
+    /// cached diagnostics are recomputed.
+    pub config_generation: u64,
+    pub diagnostics: HashMap<String, CachedDiagnostics>,
+    /// The last semantic tokens sent per document, for deltas.
+    pub semantic: HashMap<String, (String, Arc<Vec<u32>>)>,
+    pub next_id: u64,
+    /// RAPID files on disk that are not open, with their modification time,
+    /// for polling when the client cannot watch files.
+    pub disk: HashMap<PathBuf, Option<std::time::SystemTime>>,
+    pub shutdown: bool,
+}
+
+pub struct CachedDiagnostics {
+    unit: Arc<Unit>,
+    interface: u64,
+    config_generation: u64,
+    pub diagnostics: Arc<Vec<Diagnostic>>,
+}
+
+/// The state, shared between the handlers.
+#[derive(Default)]
+pub struct Shared {
+    state: Mutex<State>,
+    /// Held while a publication is checked for staleness and sent, so a
+    /// stale result can never overtake a newer one.
+    pub publish: tokio::sync::Mutex<()>,
+}
+
+impl Shared {
+    /// Locks the state. A panic while it was held poisons nothing that
+    /// matters: the state stays consistent between statements.
+    pub fn lock(&self) -> MutexGuard<'_, State> {
+        self.state.lock().unwrap_or_else(PoisonError::into_inner)
+    }
+}
+
+/// An immutable view of one file and its task, for requests.
+pub struct Snapshot {
+    pub path: String,
+    pub uri: Uri,
+    pub version: Option<i32>,
+    pub task: Arc<Task>,
+    /// Index of the file in `task.units`.
+    pub unit_idx: usize,
+    pub unit: Arc<Unit>,
+    pub index: Arc<LineIndex>,
+    pub encoding: PosEncoding,
+    pub settings: Arc<Settings>,
+    /// URIs of open documents (which may not be `file:` URIs).
+    pub uris: Arc<HashMap<String, Uri>>,
+    pub cached: Option<Arc<Vec<Diagnostic>>>,
+    pub config_generation: u64,
+}
+
+impl Snapshot {
+    pub fn map(&self) -> LineMap<'_> {
+        LineMap::new(&self.unit.text, &self.index, self.encoding)
+    }
+
+    /// The URI of a file of the workspace.
+    pub fn uri_of(&self, path: &str) -> Option<Uri> {
+        uri_of(&self.uris, path)
+    }
+
+    /// An LSP location for a byte range of any unit of the task (or, failing
+    /// that, of a file on disk).
+    pub fn location(&self, path: &str, range: std::ops::Range<usize>) -> Option<Location> {
+        let uri = self.uri_of(path)?;
+        if path == self.path {
+            return Some(Location::new(uri, self.map().range(range)));
+        }
+        let unit = self.task.units.iter().find(|u| u.path == path)?;
+        let index = LineIndex::new(&unit.text);
+        Some(Location::new(
+            uri,
+            LineMap::new(&unit.text, &index, self.encoding).range(range),
+        ))
+    }
+
+    /// The analyzer's diagnostics of the file (cached when possible).
+    pub fn diagnostics(&self) -> Arc<Vec<Diagnostic>> {
+        match &self.cached {
+            Some(d) => d.clone(),
+            None => Arc::new(diagnostics_of(&self.task, &self.unit)),
+        }
+    }
+}
+
+pub fn uri_of(uris: &HashMap<String, Uri>, path: &str) -> Option<Uri> {
+    uris.get(path)
+        .cloned()
+        .or_else(|| Uri::from_file_path(path))
+}
+
+/// The analyzer's name for a document: its file path, or the URI itself
+/// for documents that are not files (`untitled:`).
+pub fn path_of(uri: &Uri) -> String {
+    match uri.to_file_path() {
+        Some(p) => p.to_string_lossy().into_owned(),
+        None => uri.as_str().to_owned(),
+    }
+}
+
+pub fn is_eio_cfg(path: &str) -> bool {
+    Path::new(path)
+        .file_name()
+        .is_some_and(|n| n.eq_ignore_ascii_case("eio.cfg"))
+}
+
+/// Parses a text into a unit, unless it is too large to analyse.
+pub fn make_unit(path: String, text: String, old: Option<&tree_sitter::Tree>) -> Unit {
+    if text.len() > MAX_ANALYSED_BYTES {
+        Unit::from_tree(path, text, None)
+    } else {
+        Unit::new(path, text, old)
+    }
+}
+
+impl State {
+    pub fn next_id(&mut self) -> u64 {
+        self.next_id += 1;
+        self.next_id
+    }
+
+    pub fn open_uris(&self) -> HashMap<String, Uri> {
+        self.docs
+            .iter()
+            .map(|(p, d)| (p.clone(), d.uri.clone()))
+            .collect()
+    }
+
+    /// A snapshot of a file: open, or known from disk.
+    pub fn snapshot(&mut self, uri: &Uri) -> Option<Snapshot> {
+        let path = path_of(uri);
+        let (unit, index, version) = match self.docs.get(&path) {
+            Some(doc) => (doc.unit.clone(), doc.index.clone(), Some(doc.version)),
+            None => {
+                let unit = self.ws.unit(&path)?.clone();
+                let index = Arc::new(LineIndex::new(&unit.text));
+                (unit, index, None)
+            }
+        };
+        let task = self.ws.task_of(&path);
+        let unit_idx = task.units.iter().position(|u| Arc::ptr_eq(u, &unit))?;
+        let cached = self.diagnostics.get(&path).and_then(|c| {
+            (Arc::ptr_eq(&c.unit, &unit)
+                && c.interface == task.interface
+                && c.config_generation == self.config_generation)
+                .then(|| c.diagnostics.clone())
+        });
+        Some(Snapshot {
+            uri: uri.clone(),
+            path,
+            version,
+            task,
+            unit_idx,
+            unit,
+            index,
+            encoding: self.encoding,
+            settings: Arc::new(self.settings.clone()),
+            uris: Arc::new(self.open_uris()),
+            cached,
+            config_generation: self.config_generation,
+        })
+    }
+
+    /// Remembers diagnostics computed on a snapshot.
+    pub fn cache_diagnostics(&mut self, snap: &Snapshot, diagnostics: Arc<Vec<Diagnostic>>) {
+        if self.config_generation != snap.config_generation {
+            return;
+        }
+        self.diagnostics.insert(
+            snap.path.clone(),
+            CachedDiagnostics {
+                unit: snap.unit.clone(),
+                interface: snap.task.interface,
+                config_generation: snap.config_generation,
+                diagnostics,
+            },
+        );
+    }
+
+    /// Open documents of the task of `path`, other than `path`.
+    pub fn open_in_task(&self, path: &str) -> Vec<String> {
+        let key = task_key(path);
+        self.docs
+            .keys()
+            .filter(|p| *p != path && task_key(p) == key)
+            .cloned()
+            .collect()
+    }
+
+    /// Reads a file from disk into the workspace (unless it is open: the
+    /// editor's text wins). Returns whether its interface changed.
+    pub fn load_from_disk(&mut self, path: &Path) -> Result<bool, Unreadable> {
+        let name = path.to_string_lossy().into_owned();
+        if is_eio_cfg(&name) {
+            let bytes = std::fs::read(path).map_err(Unreadable::Io)?;
+            self.ws.set_config(&name, &String::from_utf8_lossy(&bytes));
+            self.config_generation += 1;
+            return Ok(true);
+        }
+        if self.docs.contains_key(&name) {
+            return Ok(false);
+        }
+        let before = self.ws.unit(&name).map(|u| u.interface);
+        self.disk.insert(path.to_owned(), mtime(path));
+        match SourceFile::read(path) {
+            Ok(file) => {
+                let unit = make_unit(name.clone(), file.text, None);
+                let changed = before != Some(unit.interface);
+                self.ws.set_unit(unit);
+                Ok(changed)
+            }
+            Err(why) => {
+                self.ws.remove_file(&name);
+                Err(why)
+            }
+        }
+    }
+
+    /// Forgets a file deleted from disk (unless it is open).
+    pub fn remove_from_disk(&mut self, path: &Path) {
+        let name = path.to_string_lossy().into_owned();
+        self.disk.remove(path);
+        if is_eio_cfg(&name) {
+            self.ws.remove_config(&name);
+            self.config_generation += 1;
+        } else if !self.docs.contains_key(&name) {
+            self.ws.remove_file(&name);
+            self.diagnostics.remove(&name);
+        }
+    }
+}
+
+pub fn mtime(path: &Path) -> Option<std::time::SystemTime> {
+    std::fs::metadata(path).and_then(|m| m.modified()).ok()
+}

@@ -1,0 +1,354 @@
+//! Editor features through the protocol: the `ide` answers, converted.
+//! The answers' content is the `ide` module's business (tested there);
+//! these tests check that each request reaches it with the right offset and
+//! that ranges, locations and kinds come back right.
+
+use serde_json::{Value, json};
+
+use super::{TestClient, doc_pos, pos, temp_dir, write_files};
+
+const LIB: &str = "MODULE Lib\n    RECORD part\n        num weight;\n    ENDRECORD\n\n    ! Moves to the safe position.\n    PROC helper(num speed)\n    ENDPROC\nENDMODULE\n";
+const MAIN: &str = "MODULE Main\n    VAR part box;\n    VAR num count := 0;\n\n    PROC main()\n        helper 100;\n        count := count + 1;\n        box.weight := 2.5;\n        MoveL p10, v100, fine, tool0;\n    ENDPROC\nENDMODULE\n";
+
+async fn setup(name: &str) -> (TestClient, String, String) {
+    let dir = temp_dir(name);
+    write_files(
+        &dir,
+        &[
+            ("Lib.mod", LIB),
+            ("rapid.toml", "[format]\nindent-width = 2\n"),
+        ],
+    );
+    let mut client = TestClient::new(dir.clone(), json!({"diagnosticsDelay": 0})).await;
+    client.indexed().await;
+    let main = client.open(&dir.join("Main.mod"), MAIN);
+    let lib = super::uri(&dir.join("Lib.mod"));
+    (client, main, lib)
+}
+
+fn line_of(location: &Value) -> i64 {
+    location["range"]["start"]["line"].as_i64().unwrap_or(-1)
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn hover_completion_and_signature_help() {
+    let (mut client, main, _) = setup("feat-hover").await;
+    let at = pos(MAIN, "helper 100", 2);
+    let hover = client.call("textDocument/hover", doc_pos(&main, at)).await;
+    let text = hover["contents"]["value"].as_str().unwrap_or_default();
+    assert!(text.contains("helper"), "{hover}");
+    assert_eq!(hover["contents"]["kind"], "markdown");
+    assert_eq!(
+        hover["range"],
+        json!({"start": {"line": 5, "character": 8}, "end": {"line": 5, "character": 14}})
+    );
+
+    // Completion at the start of a statement offers the task's routines.
+    let at = pos(MAIN, "count := count", 0);
+    let items = client
+        .call("textDocument/completion", doc_pos(&main, at))
+        .await;
+    let items = items.as_array().cloned().unwrap_or_default();
+    let helper = items
+        .iter()
+        .find(|i| i["label"] == "helper")
+        .unwrap_or_else(|| panic!("helper offered: {items:?}"));
+    assert_eq!(helper["kind"], 2, "a procedure is a method: {helper}");
+    // Documentation comes on resolve.
+    if let Some(movel) = items.iter().find(|i| i["label"] == "MoveL") {
+        assert!(movel.get("documentation").is_none());
+        let resolved = client.call("completionItem/resolve", movel.clone()).await;
+        assert!(resolved["documentation"]["value"].is_string(), "{resolved}");
+    }
+    // Resolving an item the server never made leaves it as it was.
+    let foreign = json!({"label": "x"});
+    assert_eq!(
+        client.call("completionItem/resolve", foreign.clone()).await,
+        foreign
+    );
+
+    // Signature help inside the arguments of a built-in instruction.
+    let at = pos(MAIN, "v100, fine", 0);
+    let help = client
+        .call("textDocument/signatureHelp", doc_pos(&main, at))
+        .await;
+    if !help.is_null() {
+        let signature = &help["signatures"][0];
+        let label = signature["label"].as_str().unwrap_or_default();
+        assert!(label.contains("MoveL"), "{help}");
+        // Parameter offsets lie within the label.
+        let len = label.encode_utf16().count() as i64;
+        for p in signature["parameters"].as_array().into_iter().flatten() {
+            let [a, b] = [&p["label"][0], &p["label"][1]].map(|v| v.as_i64().unwrap_or(-1));
+            assert!(0 <= a && a <= b && b <= len, "{p}");
+        }
+    }
+    client.shutdown().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn navigation_across_files() {
+    let (mut client, main, lib) = setup("feat-nav").await;
+    let at = pos(MAIN, "helper 100", 1);
+    for method in ["textDocument/definition", "textDocument/declaration"] {
+        let found = client.call(method, doc_pos(&main, at.clone())).await;
+        assert_eq!(found[0]["uri"], lib, "{method}: {found}");
+        assert_eq!(line_of(&found[0]), 6, "{method}: {found}");
+    }
+    // Type definition of a variable of a record type: the record.
+    let at = pos(MAIN, "box.weight", 0);
+    let found = client
+        .call("textDocument/typeDefinition", doc_pos(&main, at))
+        .await;
+    assert_eq!(found[0]["uri"], lib, "{found}");
+    assert_eq!(line_of(&found[0]), 1, "{found}");
+    // References to `count`, with and without the declaration.
+    let at = pos(MAIN, "count := count", 0);
+    let mut params = doc_pos(&main, at.clone());
+    params["context"] = json!({"includeDeclaration": true});
+    let with = client.call("textDocument/references", params.clone()).await;
+    params["context"] = json!({"includeDeclaration": false});
+    let without = client.call("textDocument/references", params).await;
+    let lines = |v: &Value| -> Vec<i64> {
+        let mut l: Vec<i64> = v.as_array().into_iter().flatten().map(line_of).collect();
+        l.sort_unstable();
+        l
+    };
+    assert_eq!(lines(&with), [2, 6, 6], "{with}");
+    assert_eq!(lines(&without), [6, 6], "{without}");
+    // Highlights: the assignment writes, the right-hand side reads.
+    let highlights = client
+        .call("textDocument/documentHighlight", doc_pos(&main, at))
+        .await;
+    let kinds: Vec<(i64, i64)> = highlights
+        .as_array()
+        .into_iter()
+        .flatten()
+        .filter(|h| line_of(h) == 6)
+        .map(|h| {
+            (
+                h["range"]["start"]["character"].as_i64().unwrap_or(-1),
+                h["kind"].as_i64().unwrap_or(0),
+            )
+        })
+        .collect();
+    assert_eq!(kinds, [(8, 3), (17, 2)], "{highlights}");
+    client.shutdown().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn rename_across_files() {
+    let (mut client, main, lib) = setup("feat-rename").await;
+    let at = pos(MAIN, "helper 100", 0);
+    let range = client
+        .call("textDocument/prepareRename", doc_pos(&main, at.clone()))
+        .await;
+    assert_eq!(
+        range,
+        json!({"start": {"line": 5, "character": 8}, "end": {"line": 5, "character": 14}})
+    );
+    let mut params = doc_pos(&main, at);
+    params["newName"] = json!("moveSafe");
+    let edit = client.call("textDocument/rename", params).await;
+    let changes = edit["changes"].as_object().cloned().unwrap_or_default();
+    assert_eq!(changes[&main][0]["newText"], "moveSafe", "{edit}");
+    assert_eq!(line_of(&changes[&lib][0]), 6, "{edit}");
+    // Renaming a keyword is refused with a message.
+    let at = pos(MAIN, "ENDPROC", 1);
+    let response = client
+        .request("textDocument/prepareRename", doc_pos(&main, at))
+        .await;
+    assert!(
+        response["error"]["message"].is_string() || response["result"].is_null(),
+        "{response}"
+    );
+    client.shutdown().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn symbols_folding_selection_and_hints() {
+    let (mut client, main, _) = setup("feat-symbols").await;
+    let doc = json!({"textDocument": {"uri": main}});
+    let symbols = client
+        .call("textDocument/documentSymbol", doc.clone())
+        .await;
+    let module = &symbols[0];
+    assert_eq!(module["name"], "Main", "{symbols}");
+    let children: Vec<&str> = module["children"]
+        .as_array()
+        .into_iter()
+        .flatten()
+        .filter_map(|c| c["name"].as_str())
+        .collect();
+    assert_eq!(children, ["box", "count", "main"], "{symbols}");
+    let found = client
+        .call("workspace/symbol", json!({"query": "helper"}))
+        .await;
+    assert!(
+        found
+            .as_array()
+            .into_iter()
+            .flatten()
+            .any(|s| s["name"] == "helper" && line_of(&s["location"]) == 6),
+        "{found}"
+    );
+    let folds = client.call("textDocument/foldingRange", doc.clone()).await;
+    assert!(
+        folds
+            .as_array()
+            .into_iter()
+            .flatten()
+            .any(|f| f["startLine"] == 4 && f["endLine"].as_i64() >= Some(8)),
+        "the routine folds: {folds}"
+    );
+    let mut params = doc.clone();
+    params["positions"] = json!([pos(MAIN, "weight", 1)]);
+    let selection = client.call("textDocument/selectionRange", params).await;
+    let mut depth = 0;
+    let mut node = &selection[0];
+    let mut previous: Option<(i64, i64)> = None;
+    while node.is_object() {
+        let start = node["range"]["start"]["line"].as_i64().unwrap_or(0) * 1000
+            + node["range"]["start"]["character"].as_i64().unwrap_or(0);
+        let end = node["range"]["end"]["line"].as_i64().unwrap_or(0) * 1000
+            + node["range"]["end"]["character"].as_i64().unwrap_or(0);
+        if let Some((s, e)) = previous {
+            assert!(
+                start <= s && e <= end,
+                "parents contain children: {selection}"
+            );
+        }
+        previous = Some((start, end));
+        node = &node["parent"];
+        depth += 1;
+    }
+    assert!(depth >= 3, "{selection}");
+    let mut params = doc.clone();
+    params["range"] =
+        json!({"start": {"line": 0, "character": 0}, "end": {"line": 11, "character": 0}});
+    let hints = client.call("textDocument/inlayHint", params).await;
+    assert!(hints.is_array(), "{hints}");
+    for h in hints.as_array().into_iter().flatten() {
+        assert!(h["position"]["line"].as_i64() <= Some(10), "{h}");
+    }
+    client.shutdown().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn semantic_tokens_full_delta_and_range() {
+    let (mut client, main, _) = setup("feat-tokens").await;
+    let doc = json!({"textDocument": {"uri": main}});
+    let full = client
+        .call("textDocument/semanticTokens/full", doc.clone())
+        .await;
+    let data = full["data"].as_array().cloned().unwrap_or_default();
+    assert_eq!(data.len() % 5, 0);
+    assert!(!data.is_empty(), "{full}");
+    let first_id = full["resultId"].clone();
+    // Nothing changed: an empty delta.
+    let mut params = doc.clone();
+    params["previousResultId"] = first_id.clone();
+    let delta = client
+        .call("textDocument/semanticTokens/full/delta", params.clone())
+        .await;
+    assert_eq!(delta["edits"], json!([]), "{delta}");
+    // An edit: the delta applied to the old data gives the new full data.
+    client.change(
+        &main,
+        2,
+        json!([{"range": {"start": {"line": 6, "character": 8}, "end": {"line": 6, "character": 8}}, "text": "count := 2;\n        "}]),
+    );
+    params["previousResultId"] = delta["resultId"].clone();
+    let delta = client
+        .call("textDocument/semanticTokens/full/delta", params.clone())
+        .await;
+    let mut applied: Vec<Value> = data.clone();
+    for edit in delta["edits"].as_array().into_iter().flatten() {
+        let start = edit["start"].as_u64().unwrap_or(0) as usize;
+        let count = edit["deleteCount"].as_u64().unwrap_or(0) as usize;
+        let insert = edit["data"].as_array().cloned().unwrap_or_default();
+        applied.splice(start..start + count, insert);
+    }
+    let fresh = client
+        .call("textDocument/semanticTokens/full", doc.clone())
+        .await;
+    assert_eq!(Value::Array(applied), fresh["data"], "{delta}");
+    // An unknown previous result: the full tokens.
+    params["previousResultId"] = json!("stale");
+    let full_again = client
+        .call("textDocument/semanticTokens/full/delta", params)
+        .await;
+    assert_eq!(full_again["data"], fresh["data"]);
+    // A range gives the tokens of those lines only.
+    let mut params = doc.clone();
+    params["range"] =
+        json!({"start": {"line": 5, "character": 0}, "end": {"line": 6, "character": 0}});
+    let range = client
+        .call("textDocument/semanticTokens/range", params)
+        .await;
+    let range_data = range["data"].as_array().cloned().unwrap_or_default();
+    assert!(
+        !range_data.is_empty() && range_data.len() < data.len(),
+        "{range}"
+    );
+    assert_eq!(range_data[0], 5, "first token on line 5: {range}");
+    client.shutdown().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn formatting_follows_rapid_toml() {
+    let (mut client, main, _) = setup("feat-format").await;
+    let options = json!({"tabSize": 8, "insertSpaces": true});
+    let edits = client
+        .call(
+            "textDocument/formatting",
+            json!({"textDocument": {"uri": main}, "options": options}),
+        )
+        .await;
+    let text = apply(MAIN, &edits);
+    assert!(text.contains("\n  VAR part box;\n"), "{text}");
+    assert!(text.contains("\n    helper 100;\n"), "{text}");
+    // Range formatting touches only the lines asked for.
+    let range = json!({"start": {"line": 5, "character": 0}, "end": {"line": 5, "character": 3}});
+    let edits = client
+        .call(
+            "textDocument/rangeFormatting",
+            json!({"textDocument": {"uri": main}, "range": range, "options": options}),
+        )
+        .await;
+    let text = apply(MAIN, &edits);
+    assert!(text.contains("\n    VAR part box;\n"), "{text}");
+    assert!(text.contains("\n    helper 100;\n"), "{text}");
+    assert!(text.contains("\n        count := count + 1;\n"), "{text}");
+    client.shutdown().await;
+}
+
+/// Applies LSP text edits to an ASCII text.
+fn apply(text: &str, edits: &Value) -> String {
+    let lines: Vec<usize> = std::iter::once(0)
+        .chain(text.match_indices('\n').map(|(i, _)| i + 1))
+        .collect();
+    let offset = |p: &Value| -> usize {
+        let line = p["line"].as_u64().unwrap_or(0) as usize;
+        lines.get(line).copied().unwrap_or(text.len())
+            + p["character"].as_u64().unwrap_or(0) as usize
+    };
+    let mut edits: Vec<(usize, usize, String)> = edits
+        .as_array()
+        .into_iter()
+        .flatten()
+        .map(|e| {
+            (
+                offset(&e["range"]["start"]),
+                offset(&e["range"]["end"]),
+                e["newText"].as_str().unwrap_or_default().to_owned(),
+            )
+        })
+        .collect();
+    edits.sort_by_key(|e| std::cmp::Reverse(e.0));
+    let mut out = text.to_owned();
+    for (a, b, new) in edits {
+        out.replace_range(a..b, &new);
+    }
+    out
+}

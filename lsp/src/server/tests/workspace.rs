@@ -1,0 +1,212 @@
+//! The workspace: indexing with progress, watched files, closed files read
+//! from disk, I/O configuration.
+
+use serde_json::{Value, json};
+
+use super::{TestClient, temp_dir, uri, write_files};
+
+const MAIN: &str =
+    "MODULE Main\n  PROC main()\n    helper;\n    SetDO doGrip, 1;\n  ENDPROC\nENDMODULE\n";
+const LIB: &str = "MODULE Lib\n  PROC helper()\n  ENDPROC\nENDMODULE\n";
+const EIO: &str =
+    "EIO:CFG_1.0:6:1::\n#\nEIO_SIGNAL:\n  -Name \"doGrip\" -SignalType \"DO\" -Device \"d652\"\n";
+
+fn codes(params: &Value) -> Vec<String> {
+    params["diagnostics"]
+        .as_array()
+        .expect("diagnostics")
+        .iter()
+        .map(|d| d["code"].as_str().unwrap_or("?").to_owned())
+        .collect()
+}
+
+/// Diagnostics of `uri` until they have the codes `want`.
+async fn until_codes(client: &mut TestClient, uri: &str, want: &[&str]) -> Value {
+    for _ in 0..10 {
+        let params = client.diagnostics_for(uri).await;
+        if codes(&params) == want {
+            return params;
+        }
+    }
+    panic!("diagnostics of {uri} never became {want:?}");
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn the_workspace_is_indexed_with_progress() {
+    let dir = temp_dir("ws-index");
+    write_files(
+        &dir,
+        &[
+            ("Lib.mod", LIB),
+            ("EIO.cfg", EIO),
+            ("Main.mod", MAIN),
+            ("notes.txt", "x"),
+        ],
+    );
+    let mut client = TestClient::new(dir.clone(), json!({"diagnosticsDelay": 0})).await;
+    client.indexed().await;
+    // Progress: created, begun, reported, ended.
+    assert!(
+        client
+            .server_requests
+            .iter()
+            .any(|r| r["method"] == "window/workDoneProgress/create"),
+        "{:?}",
+        client.server_requests
+    );
+    let mut kinds = Vec::new();
+    while let Some(i) = client
+        .received
+        .iter()
+        .position(|m| m["method"] == "$/progress")
+    {
+        let m = client.received.remove(i).expect("present");
+        kinds.push(
+            m["params"]["value"]["kind"]
+                .as_str()
+                .unwrap_or("?")
+                .to_owned(),
+        );
+    }
+    assert_eq!(
+        kinds.first().map(String::as_str),
+        Some("begin"),
+        "{kinds:?}"
+    );
+    assert_eq!(kinds.last().map(String::as_str), Some("end"), "{kinds:?}");
+    assert!(kinds.iter().any(|k| k == "report"), "{kinds:?}");
+    // A watcher for RAPID files and EIO.cfg was registered.
+    let registration = client
+        .server_requests
+        .iter()
+        .find(|r| r["method"] == "client/registerCapability")
+        .expect("registered");
+    insta::assert_json_snapshot!(registration["params"]);
+    // Main, opened, sees Lib's routine and the configured signal from disk.
+    let main = client.open(&dir.join("Main.mod"), MAIN);
+    until_codes(&mut client, &main, &[]).await;
+    // Definition goes to the closed file on disk.
+    let def = client
+        .call(
+            "textDocument/definition",
+            json!({"textDocument": {"uri": main}, "position": {"line": 2, "character": 6}}),
+        )
+        .await;
+    assert_eq!(
+        client.redact(&def)[0]["uri"],
+        "file:///ROOT/Lib.mod",
+        "{def}"
+    );
+    client.shutdown().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn files_changed_outside_the_editor_are_reloaded() {
+    let dir = temp_dir("ws-watch");
+    write_files(&dir, &[("Lib.mod", LIB), ("EIO.cfg", EIO)]);
+    let mut client = TestClient::new(dir.clone(), json!({"diagnosticsDelay": 0})).await;
+    client.indexed().await;
+    let main = client.open(&dir.join("Main.mod"), MAIN);
+    until_codes(&mut client, &main, &[]).await;
+    // Lib renames its routine on disk.
+    write_files(
+        &dir,
+        &[(
+            "Lib.mod",
+            "MODULE Lib\n  PROC helper2()\n  ENDPROC\nENDMODULE\n",
+        )],
+    );
+    client.notify(
+        "workspace/didChangeWatchedFiles",
+        json!({"changes": [{"uri": uri(&dir.join("Lib.mod")), "type": 2}]}),
+    );
+    until_codes(&mut client, &main, &["W101"]).await;
+    // Lib is deleted, and the signal configuration too.
+    std::fs::remove_file(dir.join("Lib.mod")).expect("rm");
+    std::fs::remove_file(dir.join("EIO.cfg")).expect("rm");
+    client.notify(
+        "workspace/didChangeWatchedFiles",
+        json!({"changes": [
+            {"uri": uri(&dir.join("Lib.mod")), "type": 3},
+            {"uri": uri(&dir.join("EIO.cfg")), "type": 3}
+        ]}),
+    );
+    // Without a configuration, unknown signals are unresolved names.
+    let params = client.diagnostics_for(&main).await;
+    assert!(codes(&params).contains(&"W101".to_owned()), "{params}");
+    client.shutdown().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_closed_file_goes_back_to_its_text_on_disk() {
+    let dir = temp_dir("ws-close");
+    write_files(&dir, &[("Lib.mod", LIB), ("EIO.cfg", EIO)]);
+    let mut client = TestClient::new(dir.clone(), json!({"diagnosticsDelay": 0})).await;
+    client.indexed().await;
+    let main = client.open(&dir.join("Main.mod"), MAIN);
+    let lib = client.open(&dir.join("Lib.mod"), LIB);
+    until_codes(&mut client, &main, &[]).await;
+    // An unsaved rename in Lib breaks Main...
+    client.change(
+        &lib,
+        2,
+        json!([{"range": {"start": {"line": 1, "character": 13}, "end": {"line": 1, "character": 13}}, "text": "2"}]),
+    );
+    until_codes(&mut client, &main, &["W101"]).await;
+    // ...until Lib is closed without saving: the disk's text counts again,
+    // and Lib's diagnostics are cleared.
+    client.notify(
+        "textDocument/didClose",
+        json!({"textDocument": {"uri": lib}}),
+    );
+    let cleared = client.diagnostics_for(&lib).await;
+    assert_eq!(cleared["diagnostics"], json!([]));
+    until_codes(&mut client, &main, &[]).await;
+    client.shutdown().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn unreadable_files_are_skipped_with_a_log_message() {
+    let dir = temp_dir("ws-binary");
+    write_files(&dir, &[("Lib.mod", LIB)]);
+    std::fs::write(dir.join("Secret.mod"), b"\xFE\x01\x02encrypted").expect("write");
+    std::fs::write(dir.join("Blob.sys"), b"MODULE\0\0\0").expect("write");
+    std::fs::write(
+        dir.join("Latin.mod"),
+        b"MODULE Latin\n  ! Gr\xF6\xDFe\n  PROC latinProc()\n  ENDPROC\nENDMODULE\n",
+    )
+    .expect("write");
+    let mut client = TestClient::new(dir.clone(), json!({"diagnosticsDelay": 0})).await;
+    client.indexed().await;
+    let logs: Vec<String> = client
+        .received
+        .iter()
+        .filter(|m| m["method"] == "window/logMessage")
+        .filter_map(|m| m["params"]["message"].as_str().map(str::to_owned))
+        .collect();
+    assert!(
+        logs.iter()
+            .any(|l| l.contains("Secret.mod") && l.contains("encrypted")),
+        "{logs:?}"
+    );
+    assert!(
+        logs.iter()
+            .any(|l| l.contains("Blob.sys") && l.contains("binary")),
+        "{logs:?}"
+    );
+    // The Latin-1 file was read: its routine resolves.
+    let main = client.open(
+        &dir.join("Main.mod"),
+        "MODULE Main\n  PROC main()\n    latinProc;\n  ENDPROC\nENDMODULE\n",
+    );
+    until_codes(&mut client, &main, &[]).await;
+    // A request for the encrypted file is answered, with nothing.
+    let hover = client
+        .call(
+            "textDocument/hover",
+            json!({"textDocument": {"uri": uri(&dir.join("Secret.mod"))}, "position": {"line": 0, "character": 0}}),
+        )
+        .await;
+    assert_eq!(hover, Value::Null);
+    client.shutdown().await;
+}
