@@ -5,12 +5,10 @@
 #   bash editors/sync-queries.sh           rewrite the copies
 #   bash editors/sync-queries.sh --check   fail if a copy is stale (CI)
 #
-# Neovim: editors/neovim/queries/rapid/{highlights,folds,indents,locals,injections}.scm.
-# The capture names are already Neovim's (@keyword, @function.call, ...). The
-# one change: Neovim evaluates #match?/#not-match? with Vim regexes, where
-# `(`, `|` and `)` are literal unless the pattern is "very magic", so every
-# such pattern gets a leading \v (the patterns use only what both dialects
-# read alike in very-magic mode: ^ $ ( | ) [...]).
+# Neovim: editors/neovim/queries/rapid/{highlights,folds,indents,locals,injections}.scm,
+# copied with a header: the capture names are already Neovim's (@keyword,
+# @function.call, ...), and Neovim reads the #match? patterns as very-magic
+# Vim regexes, in which ^ $ ( | ) [...] mean what they mean to tree-sitter.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 src="$here/../tree-sitter-rapid/queries"
@@ -24,7 +22,7 @@ esac
 
 derive() { # $1 = query file name
   printf ';; Generated from tree-sitter-rapid/queries/%s by editors/sync-queries.sh: do not edit.\n\n' "$1"
-  sed -E 's/\((#(not-)?match\?) (@[A-Za-z0-9_.]+) "/(\1 \3 "\\\\v/g' "$src/$1"
+  cat "$src/$1"
 }
 
 stale=0

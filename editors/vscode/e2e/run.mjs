@@ -72,10 +72,7 @@ log(`expected: ${expected.map((d) => `${d.code} at ${d.line}:${d.column}`).join(
 // ------------------------------------------------------------ code-server
 const data = path.join(tmp, "data");
 const extensions = path.join(tmp, "extensions");
-fs.mkdirSync(path.join(data, "User"), { recursive: true });
-fs.writeFileSync(
-  path.join(data, "User/settings.json"),
-  JSON.stringify(
+const settings = JSON.stringify(
     {
       "workbench.startupEditor": "none",
       "workbench.tips.enabled": false,
@@ -91,11 +88,19 @@ fs.writeFileSync(
       "chat.disableAIFeatures": true,
       "workbench.secondarySideBar.defaultVisibility": "hidden",
       "rapid.trace.server": "messages",
+      // code-server's extension host takes PATH from a login shell, not from
+      // this process: name the binary (so the PATH lookup is not exercised here).
+      "rapid.server.path": rapid,
     },
     null,
     2,
-  ),
 );
+// code-server is a remote: machine-scoped settings (rapid.server.path) are
+// read from the remote machine's settings, the rest from the user's.
+for (const scope of ["User", "Machine"]) {
+  fs.mkdirSync(path.join(data, scope), { recursive: true });
+  fs.writeFileSync(path.join(data, scope, "settings.json"), settings);
+}
 const env = {
   ...process.env,
   PATH: `${path.dirname(rapid)}${path.delimiter}${process.env.PATH}`,

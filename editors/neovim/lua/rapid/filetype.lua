@@ -3,7 +3,8 @@
 local M = {}
 
 --- True when the buffer looks like a RAPID module: its first non-blank line
---- starts a `%%%` header or is `MODULE name`.
+--- starts a `%%%` header or is `MODULE name`, alone or followed by the
+--- attribute list or a comment (Modula-2's `MODULE name;` is not RAPID).
 ---@param bufnr integer
 ---@return boolean
 function M.is_rapid(bufnr)
@@ -14,7 +15,11 @@ function M.is_rapid(bufnr)
   for _, line in ipairs(lines) do
     line = line:gsub('^\239\187\191', '') -- a UTF-8 byte-order mark
     if line:match('^%s*$') == nil then
-      return line:match('^%s*%%%%%%') ~= nil or line:lower():match('^%s*module%s+[%a_]') ~= nil
+      if line:match('^%s*%%%%%%') then
+        return true
+      end
+      local rest = line:lower():match('^%s*module%s+%a[%w_]*%s*(.*)$')
+      return rest ~= nil and (rest == '' or rest:sub(1, 1) == '(' or rest:sub(1, 1) == '!')
     end
   end
   return false

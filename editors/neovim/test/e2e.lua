@@ -1,0 +1,296 @@
+-- End-to-end test of the RAPID plugin in headless Neovim (run by run.sh).
+-- What Neovim shows is compared with what the rapid binary itself says
+-- (`rapid check --format json`, `rapid builtins NAME`), not with copies.
+-- Prints one line per check and "N passed, N failed"; exits non-zero on failure.
+local TIMEOUT = tonumber(vim.env.RAPID_E2E_TIMEOUT_MS or '30000')
+local rapid_bin = assert(vim.env.RAPID_BIN, 'RAPID_BIN')
+local ws = assert(vim.env.RAPID_WS, 'RAPID_WS')
+local log_path = vim.env.RAPID_NVIM_LOG
+
+local passed, failed = 0, 0
+local log_lines = {}
+
+local function say(line)
+  io.stdout:write(line .. '\n')
+  table.insert(log_lines, line)
+end
+
+local function check(name, fn)
+  local ok, err = xpcall(fn, debug.traceback)
+  if ok then
+    passed = passed + 1
+    say('ok - ' .. name)
+  else
+    failed = failed + 1
+    say('FAILED - ' .. name .. ': ' .. tostring(err))
+  end
+end
+
+local function finish()
+  say(('%d passed, %d failed'):format(passed, failed))
+  if log_path then
+    vim.fn.writefile(log_lines, log_path)
+  end
+  vim.cmd((failed == 0 and passed > 0) and 'qall!' or 'cquit! 1')
+end
+
+local function run(cmd)
+  local r = vim.system(cmd, { text = true }):wait()
+  return r.stdout or '', r.code, r.stderr or ''
+end
+
+local function expect(cond, fmt, ...)
+  if not cond then
+    error(fmt:format(...), 2)
+  end
+end
+
+--- Text of an LSP hover/markup result.
+local function markup_text(contents)
+  if type(contents) == 'string' then
+    return contents
+  end
+  if contents.value then
+    return contents.value
+  end
+  local parts = {}
+  for _, c in ipairs(contents) do
+    table.insert(parts, type(c) == 'string' and c or c.value)
+  end
+  return table.concat(parts, '\n')
+end
+
+-- ------------------------------------------------------------ expectations
+local main_path = ws .. '/MainModule.mod'
+local lines = vim.fn.readfile(main_path)
+local function line_of(needle)
+  for i, l in ipairs(lines) do
+    if l:find(needle, 1, true) then
+      return i - 1, l -- 0-based
+    end
+  end
+  error('no line with ' .. needle)
+end
+
+local check_json = run({ rapid_bin, 'check', ws, '--format', 'json' })
+local expected = {}
+for _, d in ipairs(vim.json.decode(check_json)) do
+  if d.severity == 'error' and vim.fs.basename(d.file) == 'MainModule.mod' then
+    table.insert(expected, d)
+  end
+end
+local function signature(name)
+  local text, code, err = run({ rapid_bin, 'builtins', name })
+  assert(code == 0, 'rapid builtins ' .. name .. ': ' .. err)
+  return vim.split(text, '\n')[1]
+end
+local wait_time_signature = signature('WaitTime')
+local movel_signature = signature('MoveL')
+local movel_optionals = {}
+for param in (movel_signature:match('%((.*)%)') or ''):gmatch('[^,|]+') do
+  param = vim.trim(param)
+  if param:sub(1, 1) == '\\' then
+    local name = param:gsub('{.-}', ''):match('([%a_][%w_]*)%s*$')
+    if name then
+      movel_optionals[name:lower()] = true
+    end
+  end
+end
+
+-- ------------------------------------------------------------ the checks
+check('filetype detection: extensions in any case, content for .mod/.sys/.prg', function()
+  local cases = {
+    { 'a/Main.mod', { 'MODULE Main', 'ENDMODULE' }, 'rapid' },
+    { 'a/MAIN.MOD', { 'MODULE Main', 'ENDMODULE' }, 'rapid' },
+    { 'a/Main.Mod', { '', '  module Main(SYSMODULE)' }, 'rapid' },
+    { 'a/user.sys', { '%%%', '  VERSION:1', '%%%' }, 'rapid' },
+    { 'a/user.SYS', { 'MODULE user(SYSMODULE)' }, 'rapid' },
+    { 'a/x.prg', { 'MODULE x' }, 'rapid' },
+    { 'a/Main.modx', { 'whatever' }, 'rapid' },
+    { 'a/BASE.SYSX', { 'whatever' }, 'rapid' },
+    { 'a/go.mod', { 'module example.com/x', '', 'go 1.22' }, 'gomod' },
+  }
+  -- functions that look at the content need a buffer (with only `contents`
+  -- Neovim hands them none)
+  local function detect(name, content)
+    local b = vim.api.nvim_create_buf(false, true)
+    vim.api.nvim_buf_set_lines(b, 0, -1, false, content)
+    local ft = vim.filetype.match({ buf = b, filename = name })
+    vim.api.nvim_buf_delete(b, { force = true })
+    return ft
+  end
+  for _, c in ipairs(cases) do
+    local ft = detect(c[1], c[2])
+    expect(ft == c[3], '%s: filetype %s, expected %s', c[1], tostring(ft), c[3])
+  end
+  -- other languages' .sys and .mod files are not RAPID
+  for _, c in ipairs({
+    { 'c/config.sys', { 'DEVICE=HIMEM.SYS', 'FILES=40' } },
+    { 'c/CONFIG.SYS', { 'DEVICE=HIMEM.SYS', 'FILES=40' } },
+    { 'm/Lists.mod', { 'MODULE Lists;', 'IMPORT InOut;' } },
+  }) do
+    local ft = detect(c[1], c[2])
+    expect(ft ~= 'rapid' and ft ~= nil, '%s detected as %s', c[1], tostring(ft))
+  end
+end)
+
+vim.cmd('RapidBuildParser')
+
+vim.cmd('edit ' .. vim.fn.fnameescape(main_path))
+local buf = vim.api.nvim_get_current_buf()
+
+check('the seeded module opens as RAPID', function()
+  expect(vim.bo[buf].filetype == 'rapid', 'filetype is %q', vim.bo[buf].filetype)
+  expect(vim.bo[buf].commentstring == '! %s', 'commentstring is %q', vim.bo[buf].commentstring)
+end)
+
+check('tree-sitter highlighting starts with the project queries', function()
+  expect(require('rapid').has_parser(), 'the rapid parser did not load after :RapidBuildParser')
+  expect(vim.treesitter.highlighter.active[buf] ~= nil, 'no active tree-sitter highlighter')
+  vim.treesitter.get_parser(buf, 'rapid'):parse(true)
+  local function captures_at(needle, offset)
+    local row, l = line_of(needle)
+    local col = l:find(needle, 1, true) - 1 + (offset or 0)
+    local names = {}
+    for _, c in ipairs(vim.treesitter.get_captures_at_pos(buf, row, col)) do
+      names[c.capture] = true
+    end
+    return names, row, col
+  end
+  local expectations = {
+    { 'PROC GoHome', 0, 'keyword.function' },
+    { 'GoHome()', 0, 'function' },
+    { 'WaitTime 0.2', 0, 'function.call' },
+    { 'CONST num nRows', 6, 'type.builtin' }, -- the #match? rewritten for Vim regexes
+    { 'CONST num nRows', 10, 'constant' },
+    { 'PlaceBox(num layer', 13, 'variable.parameter' },
+    { 'tGripper\\WObj', 9, 'variable.parameter' },
+    { '"Pallet complete: "', 0, 'string' },
+    { '! Picks boxes', 0, 'comment' },
+  }
+  for _, e in ipairs(expectations) do
+    local names, row, col = captures_at(e[1], e[2])
+    expect(names[e[3]], '@%s expected at %d:%d (%s), found {%s}', e[3], row + 1, col + 1, e[1],
+      table.concat(vim.tbl_keys(names), ', '))
+  end
+  -- and the types of user code are not built-in
+  local names = captures_at('VAR intnum irStop', 4)
+  expect(names['type.builtin'], 'intnum should be @type.builtin')
+end)
+
+check('folds query is valid for this Neovim', function()
+  local q = vim.treesitter.query.get('rapid', 'folds')
+  expect(q ~= nil, 'no folds query')
+  local level = vim.treesitter.foldexpr(line_of('PROC PickBox') + 2)
+  expect(level ~= '0', 'no fold level inside PickBox: %s', level)
+end)
+
+local client
+check('the language server attaches', function()
+  local ok = vim.wait(TIMEOUT, function()
+    local clients = vim.lsp.get_clients({ bufnr = buf, name = 'rapid' })
+    client = clients[1]
+    return client ~= nil and client.initialized
+  end, 50)
+  expect(ok, 'no rapid client attached to the buffer within %d ms', TIMEOUT)
+end)
+
+local function request(method, params)
+  expect(client ~= nil, 'no client')
+  local results, err = vim.lsp.buf_request_sync(buf, method, params, TIMEOUT)
+  expect(results ~= nil, '%s: %s', method, tostring(err))
+  for _, r in pairs(results) do
+    expect(r.error == nil, '%s: %s', method, vim.inspect(r.error))
+    return r.result
+  end
+end
+
+local function position(needle, offset)
+  local row, l = line_of(needle)
+  return {
+    textDocument = { uri = vim.uri_from_bufnr(buf) },
+    position = { line = row, character = l:find(needle, 1, true) - 1 + (offset or 0) },
+  }
+end
+
+check(('a diagnostic appears for the seeded error (%s)'):format(expected[1] and expected[1].code or '?'), function()
+  expect(#expected > 0, 'rapid check found no error in the seeded file')
+  local want = expected[1]
+  local found
+  vim.wait(TIMEOUT, function()
+    for _, d in ipairs(vim.diagnostic.get(buf)) do
+      if d.code == want.code then
+        found = d
+        return true
+      end
+    end
+    return false
+  end, 50)
+  expect(found, 'no %s diagnostic; got %s', want.code, vim.inspect(vim.diagnostic.get(buf)))
+  expect(found.lnum == want.line - 1 and found.col == want.column - 1,
+    'at %d:%d, rapid check says %d:%d', found.lnum + 1, found.col + 1, want.line, want.column)
+  expect(found.severity == vim.diagnostic.severity.ERROR, 'severity %s', tostring(found.severity))
+  expect(found.message:find(want.message, 1, true), 'message %q, rapid check says %q', found.message, want.message)
+end)
+
+check('hover over a built-in call shows its signature', function()
+  local result = request('textDocument/hover', position('WaitTime 0.2', 3))
+  expect(result and result.contents, 'no hover')
+  local text = markup_text(result.contents)
+  expect(text:find(wait_time_signature, 1, true), 'hover %q lacks %q', text, wait_time_signature)
+end)
+
+check('hover over a constant expression shows its value', function()
+  local result = request('textDocument/hover', position('\\Num:=nSlots', 8))
+  expect(result and result.contents, 'no hover')
+  local text = markup_text(result.contents)
+  expect(text:find('%f[%d]24%f[%D]'), 'hover %q does not show the value 24', text)
+end)
+
+check('definition: a routine in the same module, a tool in the other module', function()
+  local function target(needle, offset)
+    local result = request('textDocument/definition', position(needle, offset))
+    expect(result ~= nil, 'no definition for %s', needle)
+    local loc = result.uri and result or result[1]
+    expect(loc ~= nil, 'empty definition for %s', needle)
+    local uri = loc.uri or loc.targetUri
+    local range = loc.range or loc.targetSelectionRange
+    return vim.uri_to_fname(uri), range.start.line
+  end
+  local file, line = target('PickBox;', 2)
+  expect(vim.fs.basename(file) == 'MainModule.mod', 'PickBox defined in %s', file)
+  expect(line == line_of('PROC PickBox'), 'PickBox defined at line %d', line + 1)
+  file, line = target('fine, tGripper;', 8)
+  expect(vim.fs.basename(file) == 'Cell.sys', 'tGripper defined in %s', file)
+  local cell = vim.fn.readfile(ws .. '/Cell.sys')
+  expect(cell[line + 1] and cell[line + 1]:find('tGripper', 1, true), 'line %d of Cell.sys: %s', line + 1,
+    tostring(cell[line + 1]))
+end)
+
+check('completion after \\ lists the optional arguments', function()
+  local row, l = line_of('WaitTime 0.2;')
+  local indent = l:match('^%s*')
+  local text = indent .. 'MoveL pPickAbove, v300, fine, tGripper\\'
+  vim.api.nvim_buf_set_lines(buf, row + 1, row + 1, false, { text })
+  local params = {
+    textDocument = { uri = vim.uri_from_bufnr(buf) },
+    position = { line = row + 1, character = #text },
+    context = { triggerKind = 2, triggerCharacter = '\\' },
+  }
+  local result = request('textDocument/completion', params)
+  local items = result and (result.items or result) or {}
+  local labels, known = {}, 0
+  for _, item in ipairs(items) do
+    local label = item.label:gsub('^\\', ''):match('^[%w_]+') or item.label
+    table.insert(labels, label)
+    if movel_optionals[label:lower()] then
+      known = known + 1
+    end
+  end
+  local total = vim.tbl_count(movel_optionals)
+  expect(known == total, 'completion lists %d of the %d optional arguments of MoveL: %s', known, total,
+    table.concat(labels, ' '))
+  vim.api.nvim_buf_set_lines(buf, row + 1, row + 2, false, {})
+end)
+
+finish()
