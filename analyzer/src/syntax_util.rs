@@ -7,15 +7,39 @@ pub fn text_of<'t>(node: Node<'_>, text: &'t str) -> &'t str {
     text.get(node.byte_range()).unwrap_or_default()
 }
 
+/// The grammar's field id for a field name, resolved once per name (tree-
+/// sitter's own lookup compares the name with every field name per call).
+pub fn field_id(name: &str) -> Option<std::num::NonZeroU16> {
+    static IDS: std::sync::OnceLock<std::collections::HashMap<String, std::num::NonZeroU16>> =
+        std::sync::OnceLock::new();
+    IDS.get_or_init(|| {
+        let language = crate::syntax::language();
+        (1..=language.field_count())
+            .filter_map(|i| {
+                let id = u16::try_from(i).ok()?;
+                Some((
+                    language.field_name_for_id(id)?.to_owned(),
+                    std::num::NonZeroU16::new(id)?,
+                ))
+            })
+            .collect()
+    })
+    .get(name)
+    .copied()
+}
+
 /// The child in field `name`.
 pub fn field<'a>(node: Node<'a>, name: &str) -> Option<Node<'a>> {
-    node.child_by_field_name(name)
+    node.child_by_field_id(field_id(name)?.get())
 }
 
 /// Every child in field `name`, in order.
 pub fn fields<'a>(node: Node<'a>, name: &str) -> Vec<Node<'a>> {
+    let Some(id) = field_id(name) else {
+        return Vec::new();
+    };
     let mut cursor = node.walk();
-    node.children_by_field_name(name, &mut cursor).collect()
+    node.children_by_field_id(id, &mut cursor).collect()
 }
 
 /// Does the node have an anonymous child of this kind (a keyword, which the

@@ -135,6 +135,8 @@ pub struct Task {
     pub mecunits: std::collections::HashSet<String>,
     /// Combined interface hash of every unit, for cache invalidation.
     pub interface: u64,
+    /// Memo of "did you mean" suggestions among the globals, by folded name.
+    pub(crate) close_names: std::sync::Mutex<HashMap<String, Option<(usize, String)>>>,
 }
 
 impl Task {
@@ -164,6 +166,7 @@ impl Task {
             signals,
             mecunits: Default::default(),
             interface,
+            close_names: Default::default(),
         }
     }
 

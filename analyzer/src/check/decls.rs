@@ -21,13 +21,25 @@ const MAX_DIMS: usize = 3;
 
 /// Placeholders and string lengths, anywhere in the file.
 pub(super) fn check_file_wide(cx: &mut Cx<'_>, root: Node<'_>) {
+    if !may_hold_placeholder_or_long_string(cx.text) {
+        return;
+    }
+    static KINDS: std::sync::OnceLock<(u16, u16)> = std::sync::OnceLock::new();
+    let (placeholder, string) = *KINDS.get_or_init(|| {
+        let language = crate::syntax::language();
+        (
+            language.id_for_node_kind("placeholder", true),
+            language.id_for_node_kind("string", true),
+        )
+    });
     let mut cursor = root.walk();
     let mut descend = true;
     loop {
         let node = cursor.node();
+        let kind = node.kind_id();
         if descend {
-            match node.kind() {
-                "placeholder" => {
+            match kind {
+                k if k == placeholder => {
                     let p = cx.node_text(node);
                     cx.report(
                         &rules::incomplete_code::RULE,
@@ -35,7 +47,7 @@ pub(super) fn check_file_wide(cx: &mut Cx<'_>, root: Node<'_>) {
                         format!("unfilled placeholder {p}: this code is not finished"),
                     );
                 }
-                "string" => {
+                k if k == string => {
                     let len = string_length(cx, node);
                     if len > MAX_STRING {
                         cx.report(
@@ -48,7 +60,7 @@ pub(super) fn check_file_wide(cx: &mut Cx<'_>, root: Node<'_>) {
                 _ => {}
             }
         }
-        if descend && node.kind() != "string" && cursor.goto_first_child() {
+        if descend && kind != string && cursor.goto_first_child() {
             continue;
         }
         descend = true;
@@ -61,6 +73,19 @@ pub(super) fn check_file_wide(cx: &mut Cx<'_>, root: Node<'_>) {
             }
         }
     }
+}
+
+/// A cheap look at the text: placeholders need a `<`, and a string longer
+/// than the limit needs a line with that many characters between quotes.
+fn may_hold_placeholder_or_long_string(text: &str) -> bool {
+    text.contains('<')
+        || text.lines().any(|line| {
+            line.len() > MAX_STRING
+                && matches!(
+                    (line.find('"'), line.rfind('"')),
+                    (Some(a), Some(b)) if b - a > MAX_STRING
+                )
+        })
 }
 
 /// The number of characters of a string literal's value (escapes count one).

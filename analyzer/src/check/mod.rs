@@ -351,10 +351,11 @@ impl<'t> Cx<'t> {
             m.data.iter().for_each(|d| consider(&d.name));
             m.routines.iter().for_each(|d| consider(&d.name));
         }
-        for refs in self.task.globals.values() {
-            if let Some((n, _)) = refs.first().and_then(|r| self.task.item_name(*r)) {
-                consider(n);
-            }
+        let global = close_global(self.task, &key, limit);
+        if let Some((d, n)) = global
+            && best.as_ref().is_none_or(|(bd, _)| d < *bd)
+        {
+            best = Some((d, n));
         }
         best.map(|(_, n)| n)
     }
@@ -439,6 +440,34 @@ pub(crate) fn option_routine(name: &str) -> Option<&'static crate::catalogue::Op
     .get(&fold(name))
 }
 
+/// The task's global name closest to `key` within `limit` edits, memoised
+/// per task (the same unresolved name tends to recur in many places).
+fn close_global(task: &Task, key: &str, limit: usize) -> Option<(usize, String)> {
+    let mut memo = task
+        .close_names
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner);
+    if let Some(found) = memo.get(key) {
+        return found.clone();
+    }
+    let mut best: Option<(usize, String)> = None;
+    for (folded, refs) in &task.globals {
+        if folded.len().abs_diff(key.len()) > limit {
+            continue;
+        }
+        let d = edit_distance(key, folded);
+        if d > 0
+            && d <= limit
+            && best.as_ref().is_none_or(|(bd, _)| d < *bd)
+            && let Some((n, _)) = refs.first().and_then(|r| task.item_name(*r))
+        {
+            best = Some((d, n.to_owned()));
+        }
+    }
+    memo.insert(key.to_owned(), best.clone());
+    best
+}
+
 /// Levenshtein distance of two short ASCII strings.
 pub(crate) fn edit_distance(a: &str, b: &str) -> usize {
     let (a, b) = (a.as_bytes(), b.as_bytes());
@@ -502,11 +531,18 @@ impl<'t> Cx<'t> {
             params.entry(fold(&p.name)).or_insert(p);
         }
         let mut locals = HashMap::new();
-        for item in crate::syntax_util::fields(node, "body") {
-            if item.kind() == "data_declaration"
-                && let Some(d) = crate::items::lower_data(item, &u.text)
+        // Routine data comes before the first statement: stop there, so that
+        // entering a long routine costs its declarations, not its statements
+        // (constant evaluation enters the scope once per statement).
+        if let Some(body) = crate::syntax_util::field_id("body") {
+            let mut cursor = node.walk();
+            for item in node
+                .children_by_field_id(body, &mut cursor)
+                .take_while(|n| n.kind() == "data_declaration")
             {
-                locals.entry(fold(&d.name)).or_insert(d);
+                if let Some(d) = crate::items::lower_data(item, &u.text) {
+                    locals.entry(fold(&d.name)).or_insert(d);
+                }
             }
         }
         let mut for_vars = Vec::new();
@@ -516,7 +552,7 @@ impl<'t> Cx<'t> {
                 break;
             }
             if n.kind() == "for_statement"
-                && let Some(v) = n.child_by_field_name("variable")
+                && let Some(v) = crate::syntax_util::field(n, "variable")
             {
                 for_vars.push(fold(cx.node_text(v)));
             }

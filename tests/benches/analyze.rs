@@ -1,0 +1,196 @@
+//! Analysis cost over the corpus: parsing alone against parsing and checking
+//! every task, and the re-check after a one-character edit inside a routine
+//! of the largest file (incremental parse, then only that file's check).
+//!
+//! `cargo bench -p rapid-tests --bench analyze`
+
+use divan::Bencher;
+use rapid_analyzer::task::Unit;
+use rapid_analyzer::text::{Decoded, decode};
+use rapid_analyzer::workspace::{Workspace, diagnostics_of};
+
+fn main() {
+    divan::main();
+}
+
+struct Corpus {
+    /// (path relative to the corpus, text)
+    files: Vec<(String, String)>,
+    /// (path, text) of `.pgf` program files and `.cfg` configuration files.
+    programs: Vec<(String, String)>,
+    configs: Vec<(String, String)>,
+}
+
+fn corpus() -> Option<&'static Corpus> {
+    static CORPUS: std::sync::OnceLock<Option<Corpus>> = std::sync::OnceLock::new();
+    CORPUS
+        .get_or_init(|| {
+            let files = rapid_tests::corpus_files()?
+                .into_iter()
+                .filter_map(|(p, b)| match decode(&b) {
+                    Decoded::Text { text, .. } => {
+                        Some((p.to_string_lossy().replace('\\', "/"), text))
+                    }
+                    _ => None,
+                })
+                .collect();
+            let (programs, configs) = side_files();
+            Some(Corpus {
+                files,
+                programs,
+                configs,
+            })
+        })
+        .as_ref()
+}
+
+/// The corpus's `.pgf` and `.cfg` files.
+fn side_files() -> (Vec<(String, String)>, Vec<(String, String)>) {
+    let (mut programs, mut configs) = (Vec::new(), Vec::new());
+    let Some(dir) = rapid_tests::corpus_dir() else {
+        return (programs, configs);
+    };
+    let mut stack = vec![dir.clone()];
+    while let Some(folder) = stack.pop() {
+        let Ok(entries) = std::fs::read_dir(&folder) else {
+            continue;
+        };
+        for entry in entries.flatten() {
+            let path = entry.path();
+            if path.is_dir() {
+                stack.push(path);
+                continue;
+            }
+            let rel = path
+                .strip_prefix(&dir)
+                .map(|p| p.to_string_lossy().replace('\\', "/"))
+                .unwrap_or_default();
+            let lower = rel.to_ascii_lowercase();
+            let Ok(bytes) = std::fs::read(&path) else {
+                continue;
+            };
+            let text = String::from_utf8_lossy(&bytes).into_owned();
+            if lower.ends_with(".pgf") {
+                programs.push((rel, text));
+            } else if lower.ends_with("eio.cfg") || lower.ends_with("moc.cfg") {
+                configs.push((rel, text));
+            }
+        }
+    }
+    (programs, configs)
+}
+
+fn workspace(corpus: &Corpus) -> Workspace {
+    let mut ws = Workspace::new();
+    for (p, t) in &corpus.configs {
+        ws.set_config(p, t);
+    }
+    for (p, t) in &corpus.programs {
+        ws.set_program(p, t);
+    }
+    for (p, t) in &corpus.files {
+        ws.set_file(p, t.clone());
+    }
+    ws
+}
+
+/// Parsing every file (what analysis is measured against).
+#[divan::bench(sample_count = 10)]
+fn parse_only(bencher: Bencher<'_, '_>) {
+    let Some(corpus) = corpus() else {
+        eprintln!("analyze benchmark skipped: no corpus (set RAPID_CORPUS)");
+        return;
+    };
+    bencher.bench(|| {
+        corpus
+            .files
+            .iter()
+            .map(|(p, t)| Unit::new(p.clone(), t.clone(), None).syntax.len())
+            .sum::<usize>()
+    });
+}
+
+/// Parsing every file, grouping tasks and checking every file.
+#[divan::bench(sample_count = 10)]
+fn parse_and_analyze(bencher: Bencher<'_, '_>) {
+    let Some(corpus) = corpus() else {
+        return;
+    };
+    bencher.bench(|| {
+        let mut ws = workspace(corpus);
+        ws.tasks()
+            .iter()
+            .flat_map(|t| t.units.iter().map(|u| diagnostics_of(t, u).len()))
+            .sum::<usize>()
+    });
+}
+
+/// Checking only (the tasks built and parsed beforehand).
+#[divan::bench(sample_count = 10)]
+fn analyze_only(bencher: Bencher<'_, '_>) {
+    let Some(corpus) = corpus() else {
+        return;
+    };
+    let mut ws = workspace(corpus);
+    let tasks = ws.tasks();
+    bencher.bench(|| {
+        tasks
+            .iter()
+            .flat_map(|t| t.units.iter().map(|u| diagnostics_of(t, u).len()))
+            .sum::<usize>()
+    });
+}
+
+/// A one-character edit inside a routine of the largest file: incremental
+/// reparse, and the workspace re-checks that file only.
+#[divan::bench(sample_count = 50)]
+fn edit_recheck_largest(bencher: Bencher<'_, '_>) {
+    let Some(corpus) = corpus() else {
+        return;
+    };
+    let Some((path, text)) = corpus.files.iter().max_by_key(|(_, t)| t.len()) else {
+        return;
+    };
+    let mut ws = workspace(corpus);
+    for (p, _) in &corpus.files {
+        ws.diagnostics(p);
+    }
+    // Insert a space at the start of the first line inside a routine body.
+    let at = ["PROC ", "FUNC ", "TRAP "]
+        .iter()
+        .filter_map(|k| text.find(k))
+        .min()
+        .and_then(|i| text[i..].find('\n').map(|j| i + j + 1))
+        .unwrap_or(0);
+    let mut edited = text.clone();
+    edited.insert(at, ' ');
+    let versions = [text.clone(), edited];
+    let mut flip = 0usize;
+    bencher.bench_local(|| {
+        flip ^= 1;
+        let (old, new) = (&versions[1 - flip], &versions[flip]);
+        let Some(unit) = ws.unit(path) else {
+            return 0;
+        };
+        let mut tree = unit.tree.clone();
+        let point = |s: &str| tree_sitter::Point {
+            row: s.matches('\n').count(),
+            column: s.len() - s.rfind('\n').map_or(0, |i| i + 1),
+        };
+        let (old_end, new_end) = if new.len() > old.len() {
+            (at, at + 1)
+        } else {
+            (at + 1, at)
+        };
+        tree.edit(&tree_sitter::InputEdit {
+            start_byte: at,
+            old_end_byte: old_end,
+            new_end_byte: new_end,
+            start_position: point(&old[..at]),
+            old_end_position: point(&old[..old_end]),
+            new_end_position: point(&new[..new_end]),
+        });
+        ws.set_unit(Unit::new(path.clone(), new.clone(), Some(&tree)));
+        ws.diagnostics(path).len()
+    });
+}
