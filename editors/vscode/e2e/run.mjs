@@ -272,6 +272,33 @@ try {
     await page.locator(".monaco-editor textarea").first().focus();
   });
 
+  await step("RAPID: Restart Language Server starts a new server", async () => {
+    const starts = () => {
+      let n = 0;
+      const walk = (dir) => {
+        for (const e of fs.readdirSync(dir, { withFileTypes: true })) {
+          const p = path.join(dir, e.name);
+          if (e.isDirectory()) walk(p);
+          else if (e.name.endsWith("RAPID Language Server.log")) {
+            n += (fs.readFileSync(p, "utf8").match(/^Starting /gm) ?? []).length;
+          }
+        }
+      };
+      walk(path.join(data, "logs"));
+      return n;
+    };
+    const before = starts();
+    assert(before >= 1, `the log channel shows ${before} server starts`);
+    await runCommand("RAPID: Restart Language Server");
+    const deadline = Date.now() + TIMEOUT;
+    while (starts() <= before && Date.now() < deadline) await page.waitForTimeout(200);
+    assert(starts() > before, "no new server start in the log channel");
+    // and the new server publishes the diagnostics again
+    const row = page.locator(".markers-panel .monaco-list-row", { hasText: expected[0].code });
+    await row.first().waitFor({ state: "visible", timeout: TIMEOUT });
+    await page.locator(".monaco-editor textarea").first().focus();
+  });
+
   await step("hover over a built-in call shows its signature", async () => {
     const line = lineOf("WaitTime 0.2;");
     const text = await showHoverAt(line, lines[line - 1].indexOf("WaitTime") + 3);
