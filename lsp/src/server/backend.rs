@@ -32,6 +32,7 @@ const WATCH_GLOBS: &[&str] = &[
     "**/*.{MOD,MODX,SYS,SYSX,PRG}",
     "**/*.{Mod,Modx,Sys,Sysx,Prg}",
     "**/{EIO,eio,Eio}.{cfg,CFG}",
+    "**/rapid.toml",
 ];
 
 /// The handle every handler and background job shares.
@@ -218,17 +219,22 @@ impl Backend {
     /// Reads every RAPID file and `EIO.cfg` under the workspace folders and
     /// the extra paths, reporting progress.
     async fn index_workspace(&self) {
-        let (roots, progress_supported) = {
+        let (roots, progress_supported, lint) = {
             let s = self.shared.lock();
             let mut roots = s.roots.clone();
-            roots.extend(s.settings.extra_paths.iter().cloned());
-            (roots, s.caps.work_done_progress)
+            roots.extend(s.settings.extra_paths());
+            (roots, s.caps.work_done_progress, s.settings.lint.clone())
         };
         if roots.is_empty() {
             return;
         }
         let Ok(found) = self
-            .blocking("finding files", move || crate::check::discover(&roots))
+            .blocking("finding files", move || {
+                crate::check::discover_with(
+                    &roots,
+                    Arc::new(move |p: &Path, dir: bool| lint.is_excluded(p, dir)),
+                )
+            })
             .await
         else {
             return;
@@ -369,8 +375,32 @@ impl Backend {
         }
     }
 
-    fn apply_settings(&self, value: &Value) -> Vec<String> {
-        let (settings, problems) = Settings::from_json(value);
+    /// Resolves the settings again: `rapid.toml` from the first workspace
+    /// folder, the client's settings over it (`client`, or the last ones).
+    fn reload_settings(&self, client: Option<&Value>) -> Vec<String> {
+        let (roots, client) = {
+            let mut s = self.shared.lock();
+            if let Some(c) = client {
+                s.client_settings = c.clone();
+            }
+            (s.roots.clone(), s.client_settings.clone())
+        };
+        let root = roots.first().cloned().unwrap_or_default();
+        let mut problems = Vec::new();
+        let file =
+            crate::config::find(&root).and_then(|path| match std::fs::read_to_string(&path) {
+                Ok(text) => Some((path, text)),
+                Err(e) => {
+                    problems.push(format!("{}: {e}", path.display()));
+                    None
+                }
+            });
+        let (settings, more) = Settings::resolve(
+            &client,
+            file.as_ref().map(|(p, t)| (p.as_path(), t.as_str())),
+            &root,
+        );
+        problems.extend(more);
         self.mutate("applying settings", |s| {
             s.settings = settings;
             s.config_generation += 1;
@@ -378,22 +408,8 @@ impl Backend {
         problems
     }
 
-    fn format_options(&self, uri: &Uri) -> std::result::Result<FormatOptions, String> {
-        let path = PathBuf::from(path_of(uri));
-        let start = if path.is_absolute() {
-            path
-        } else {
-            match self.shared.lock().roots.first() {
-                Some(root) => root.clone(),
-                None => return Ok(FormatOptions::default()),
-            }
-        };
-        match crate::config::find(&start) {
-            Some(file) => crate::config::load(&file)
-                .map(|c| c.format.options())
-                .map_err(|e| e.to_string()),
-            None => Ok(FormatOptions::default()),
-        }
+    fn format_options(&self) -> FormatOptions {
+        self.shared.lock().settings.config.format.options()
     }
 }
 
@@ -418,9 +434,19 @@ fn convert_diagnostics(
     snap: &Snapshot,
     raw: &[rapid_analyzer::diagnostic::Diagnostic],
 ) -> Vec<Diagnostic> {
-    let mut out = diagnostics::to_lsp(raw, &snap.map(), &snap.uri, &snap.settings, &|p, r| {
-        snap.location(p, r)
-    });
+    let reported = snap.settings.lint.apply(
+        Path::new(&snap.path),
+        &snap.unit.text,
+        &snap.index,
+        raw.to_vec(),
+    );
+    let mut out = diagnostics::to_lsp(
+        &reported,
+        &snap.map(),
+        &snap.uri,
+        &snap.settings,
+        &|p, r| snap.location(p, r),
+    );
     if snap.unit.text.len() > super::state::MAX_ANALYSED_BYTES {
         out.push(Diagnostic {
             range: Range::default(),
@@ -568,17 +594,15 @@ impl LanguageServer for Backend {
                 .as_ref()
                 .and_then(|g| g.position_encodings.as_deref()),
         );
-        let problems = match &params.initialization_options {
-            Some(options) => self.apply_settings(options),
-            None => Vec::new(),
-        };
         self.mutate("initializing", |s| {
             s.encoding = encoding;
             s.caps = client_caps(&params);
             s.roots = workspace_roots(&params);
         });
+        let options = params.initialization_options.clone().unwrap_or(Value::Null);
+        let problems = self.reload_settings(Some(&options));
         for p in problems {
-            self.log(MessageType::WARNING, format!("initializationOptions: {p}"))
+            self.log(MessageType::WARNING, format!("settings: {p}"))
                 .await;
         }
         Ok(InitializeResult {
@@ -732,6 +756,18 @@ impl LanguageServer for Backend {
     }
 
     async fn did_change_watched_files(&self, params: DidChangeWatchedFilesParams) {
+        let config_changed = params.changes.iter().any(|c| {
+            c.uri
+                .to_file_path()
+                .and_then(|p| p.file_name().map(|n| n == crate::config::FILE_NAME))
+                .unwrap_or(false)
+        });
+        if config_changed {
+            for p in self.reload_settings(None) {
+                self.log(MessageType::WARNING, format!("settings: {p}"))
+                    .await;
+            }
+        }
         let problems = self
             .mutate("reloading files", |s| {
                 let mut problems = Vec::new();
@@ -759,15 +795,13 @@ impl LanguageServer for Backend {
     }
 
     async fn did_change_configuration(&self, params: DidChangeConfigurationParams) {
-        let (old_extra, problems) = {
-            let old = self.shared.lock().settings.extra_paths.clone();
-            (old, self.apply_settings(&params.settings))
-        };
+        let old_extra = self.shared.lock().settings.extra_paths();
+        let problems = self.reload_settings(Some(&params.settings));
         for p in problems {
             self.log(MessageType::WARNING, format!("settings: {p}"))
                 .await;
         }
-        if self.shared.lock().settings.extra_paths != old_extra {
+        if self.shared.lock().settings.extra_paths() != old_extra {
             let this = self.clone();
             tokio::spawn(async move { this.index_workspace().await });
         } else {
@@ -1094,7 +1128,7 @@ impl LanguageServer for Backend {
 
     async fn formatting(&self, params: DocumentFormattingParams) -> Result<Option<Vec<TextEdit>>> {
         let uri = params.text_document.uri;
-        let options = self.format_options(&uri).map_err(request_failed)?;
+        let options = self.format_options();
         match self
             .on_snapshot(&uri, "formatting", move |s| {
                 requests::format(s, None, &options)
@@ -1113,7 +1147,7 @@ impl LanguageServer for Backend {
     ) -> Result<Option<Vec<TextEdit>>> {
         let uri = params.text_document.uri;
         let range = params.range;
-        let options = self.format_options(&uri).map_err(request_failed)?;
+        let options = self.format_options();
         match self
             .on_snapshot(&uri, "formatting", move |s| {
                 requests::format(s, Some(range), &options)

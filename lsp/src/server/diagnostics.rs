@@ -14,7 +14,8 @@ use tower_lsp_server::ls_types::{
 use super::position::LineMap;
 use super::settings::Settings;
 
-/// Converts the diagnostics of one file. `related_location` turns a related
+/// Converts the diagnostics of one file (already filtered by the lint
+/// settings). `related_location` turns a related
 /// location in another file (its path and byte range) into an LSP location.
 pub fn to_lsp(
     diagnostics: &[Diagnostic],
@@ -25,8 +26,7 @@ pub fn to_lsp(
 ) -> Vec<LspDiagnostic> {
     diagnostics
         .iter()
-        .filter_map(|d| {
-            let severity = settings.severity(d.rule.code, d.severity)?;
+        .map(|d| {
             let related: Vec<DiagnosticRelatedInformation> = d
                 .related
                 .iter()
@@ -41,9 +41,9 @@ pub fn to_lsp(
                     })
                 })
                 .collect();
-            Some(LspDiagnostic {
+            LspDiagnostic {
                 range: map.range(d.range.clone()),
-                severity: Some(lsp_severity(severity)),
+                severity: Some(lsp_severity(d.severity)),
                 code: Some(NumberOrString::String(d.rule.code.to_owned())),
                 code_description: docs_href(&settings.docs_url, d.rule)
                     .map(|href| CodeDescription { href }),
@@ -52,7 +52,7 @@ pub fn to_lsp(
                 related_information: (!related.is_empty()).then_some(related),
                 tags: tags(d),
                 data: None,
-            })
+            }
         })
         .collect()
 }

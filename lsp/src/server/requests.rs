@@ -521,12 +521,10 @@ pub fn inlay_hints(snap: &Snapshot, range: lsp::Range) -> Vec<lsp::InlayHint> {
 pub fn code_actions(snap: &Snapshot, range: lsp::Range) -> Vec<CodeActionOrCommand> {
     let map = snap.map();
     let span = map.offset_range(range);
-    let all = snap.diagnostics();
-    let here: Vec<_> = all
-        .iter()
+    let here: Vec<_> = snap
+        .reported_diagnostics()
+        .into_iter()
         .filter(|d| d.range.start <= span.end && span.start <= d.range.end)
-        .filter(|d| snap.settings.severity(d.rule.code, d.severity).is_some())
-        .cloned()
         .collect();
     let converted = |d: &rapid_analyzer::diagnostic::Diagnostic| {
         diagnostics::to_lsp(

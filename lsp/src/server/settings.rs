@@ -1,31 +1,36 @@
-//! The server's settings: `initializationOptions` and
-//! `workspace/didChangeConfiguration`.
+//! The server's settings: `rapid.toml` (found from the first workspace
+//! folder) with `initializationOptions` and `workspace/didChangeConfiguration`
+//! over it.
+//!
+//! The client's settings use the keys of `rapid.toml` (see
+//! [`crate::config`]), as JSON, bare or wrapped in a `"rapid"` object (as
+//! editors send their configuration sections); a key the client gives
+//! replaces the file's (objects are merged key by key). Besides them:
 //!
 //! ```json
 //! {
-//!   "rules": { "W101": "off", "unused-variable": "hint" },
-//!   "extraPaths": ["/opt/robot/shared-modules"],
+//!   "lint": { "ignore": ["W2"], "severity": { "unused-data": "hint" } },
+//!   "extra-paths": ["/opt/robot/shared-modules"],
+//!   "rules": { "W101": "off", "unused-data": "hint" },
 //!   "diagnosticsDelay": 80,
 //!   "docsBaseUrl": "https://example.invalid/rapid/blob/main/docs/diagnostics.md"
 //! }
 //! ```
 //!
-//! The settings may come bare or wrapped in a `"rapid"` object (as editors
-//! send their configuration sections). Unknown keys are ignored and bad
-//! values are reported (as log messages) and skipped, so a typo never stops
-//! the server.
-//!
-//! FIXME(issue 6): `rules` and `extraPaths` are the lint keys of
-//! `rapid.toml`; when `crate::config` grows its `[lint]` section, map these
-//! onto its types here (this is the only place that reads them).
+//! `rules` (rule code or name to `error`, `warning`, `info`, `hint` or
+//! `off`) is a shorthand mapped onto `lint.severity` and `lint.ignore`;
+//! `extraPaths` is accepted for `extra-paths`. `diagnosticsDelay` (ms, 0
+//! for none) and `docsBaseUrl` are the server's own. Bad values are
+//! reported (as log messages) and skipped, so a typo never stops the server.
 
-use std::collections::HashMap;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
 use std::time::Duration;
 
-use rapid_analyzer::diagnostic::Severity;
-use rapid_analyzer::rules;
-use serde_json::Value;
+use serde_json::{Map, Value};
+
+use crate::check::{LintSettings, Overrides};
+use crate::config::Config;
 
 /// Where diagnostics' `codeDescription` links point by default: the
 /// reference page in the repository (`repository` of the workspace's
@@ -35,12 +40,15 @@ pub const DEFAULT_DOCS_URL: &str = "https://example.invalid/rapid/blob/main/docs
 /// Default pause after the last keystroke before diagnostics are published.
 pub const DEFAULT_DELAY: Duration = Duration::from_millis(75);
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug)]
 pub struct Settings {
-    /// Severity overrides by rule code; `None` turns the rule off.
-    pub rules: HashMap<&'static str, Option<Severity>>,
-    /// Further folders whose RAPID files are indexed.
-    pub extra_paths: Vec<PathBuf>,
+    /// The effective configuration.
+    pub config: Config,
+    /// The folder relative paths and globs start from (`rapid.toml`'s, else
+    /// the first workspace folder).
+    pub root: PathBuf,
+    /// Which rules apply, how severely, and which files are excluded.
+    pub lint: Arc<LintSettings>,
     /// Debounce of diagnostics while typing (0: publish at once).
     pub delay: Duration,
     /// The reference page that diagnostic codes link to.
@@ -49,125 +57,240 @@ pub struct Settings {
 
 impl Default for Settings {
     fn default() -> Settings {
-        Settings {
-            rules: HashMap::new(),
-            extra_paths: Vec::new(),
-            delay: DEFAULT_DELAY,
-            docs_url: DEFAULT_DOCS_URL.to_owned(),
-        }
+        Settings::resolve(&Value::Null, None, Path::new("/")).0
     }
 }
 
 impl Settings {
-    /// Reads settings from a JSON value; returns them and the problems met.
-    pub fn from_json(value: &Value) -> (Settings, Vec<String>) {
-        let mut settings = Settings::default();
+    /// The settings from the client's JSON over the configuration file
+    /// (`(path, text)`), relative to `root`; and the problems met.
+    pub fn resolve(
+        client: &Value,
+        file: Option<(&Path, &str)>,
+        root: &Path,
+    ) -> (Settings, Vec<String>) {
         let mut problems = Vec::new();
-        let value = value.get("rapid").unwrap_or(value);
-        let Some(obj) = value.as_object() else {
-            if !value.is_null() {
-                problems.push(format!("settings must be an object, not {value}"));
+        let mut delay = DEFAULT_DELAY;
+        let mut docs_url = DEFAULT_DOCS_URL.to_owned();
+        let mut root = root.to_owned();
+        let mut merged = Value::Object(Map::new());
+        if let Some((path, text)) = file {
+            if let Some(dir) = path.parent() {
+                dir.clone_into(&mut root);
             }
-            return (settings, problems);
+            match crate::config::parse(text, path) {
+                Ok(_) => match toml::from_str::<toml::Value>(text) {
+                    Ok(v) => merged = serde_json::to_value(v).unwrap_or(merged),
+                    Err(e) => problems.push(format!("{}: {e}", path.display())),
+                },
+                Err(e) => problems.push(e.to_string()),
+            }
+        }
+        let client = client.get("rapid").unwrap_or(client);
+        match client {
+            Value::Null => {}
+            Value::Object(obj) => {
+                let mut obj = obj.clone();
+                if let Some(v) = obj.remove("diagnosticsDelay") {
+                    match v.as_u64() {
+                        Some(ms) => delay = Duration::from_millis(ms.min(10_000)),
+                        None => problems.push(format!(
+                            "diagnosticsDelay: expected milliseconds, found {v}"
+                        )),
+                    }
+                }
+                if let Some(v) = obj.remove("docsBaseUrl") {
+                    match v.as_str() {
+                        Some(s) => s.clone_into(&mut docs_url),
+                        None => problems.push(format!("docsBaseUrl: expected a URL, found {v}")),
+                    }
+                }
+                if let Some(v) = obj.remove("extraPaths") {
+                    obj.insert("extra-paths".to_owned(), v);
+                }
+                if let Some(rules) = obj.remove("rules") {
+                    map_rules(&rules, &mut obj, &mut problems);
+                }
+                merge(&mut merged, Value::Object(obj));
+            }
+            other => problems.push(format!("settings must be an object, not {other}")),
+        }
+        let config = match serde_json::from_value::<Config>(merged) {
+            Ok(c) => c,
+            Err(e) => {
+                problems.push(format!("{e}"));
+                Config::default()
+            }
         };
-        if let Some(rules) = obj.get("rules") {
-            match rules.as_object() {
-                Some(map) => {
-                    for (key, level) in map {
-                        let Some(rule) = rules::find(key) else {
-                            problems.push(format!("rules: unknown rule `{key}`"));
-                            continue;
-                        };
-                        match level.as_str().map(parse_level) {
-                            Some(Some(level)) => {
-                                settings.rules.insert(rule.code, level);
-                            }
-                            _ => problems.push(format!(
-                                "rules.{key}: expected \"error\", \"warning\", \"info\", \"hint\" or \"off\", found {level}"
-                            )),
-                        }
-                    }
-                }
-                None => problems.push(format!("rules: expected an object, found {rules}")),
-            }
+        for (key, why) in config.lint.problems() {
+            problems.push(format!("{key}: {why}"));
         }
-        if let Some(paths) = obj.get("extraPaths") {
-            match paths.as_array() {
-                Some(list) => {
-                    for p in list {
-                        match p.as_str() {
-                            Some(s) => settings.extra_paths.push(PathBuf::from(s)),
-                            None => problems.push(format!("extraPaths: not a path: {p}")),
-                        }
-                    }
-                }
-                None => problems.push(format!("extraPaths: expected a list, found {paths}")),
+        let lint = match LintSettings::new(&config, root.clone(), &Overrides::default()) {
+            Ok(l) => l,
+            Err(e) => {
+                problems.push(e.to_string());
+                LintSettings::new(&Config::default(), root.clone(), &Overrides::default())
+                    .unwrap_or_else(|_| unreachable_default())
             }
-        }
-        if let Some(delay) = obj.get("diagnosticsDelay") {
-            match delay.as_u64() {
-                Some(ms) => settings.delay = Duration::from_millis(ms.min(10_000)),
-                None => problems.push(format!(
-                    "diagnosticsDelay: expected milliseconds, found {delay}"
-                )),
-            }
-        }
-        if let Some(url) = obj.get("docsBaseUrl") {
-            match url.as_str() {
-                Some(s) => s.clone_into(&mut settings.docs_url),
-                None => problems.push(format!("docsBaseUrl: expected a URL, found {url}")),
-            }
-        }
-        (settings, problems)
+        };
+        (
+            Settings {
+                config,
+                root,
+                lint: Arc::new(lint),
+                delay,
+                docs_url,
+            },
+            problems,
+        )
     }
 
-    /// The severity of a rule's diagnostic after configuration (`None`: off).
-    pub fn severity(&self, code: &str, default: Severity) -> Option<Severity> {
-        match self.rules.get(code) {
-            Some(level) => *level,
-            None => Some(default),
+    /// Extra folders to index, absolute.
+    pub fn extra_paths(&self) -> Vec<PathBuf> {
+        self.config
+            .extra_paths
+            .iter()
+            .map(|p| self.root.join(p))
+            .collect()
+    }
+}
+
+/// The default settings cannot fail: they have no glob and no selector.
+fn unreachable_default() -> LintSettings {
+    panic!("the default lint settings are valid")
+}
+
+/// `rules: {code-or-name: level}` onto `lint.severity` and `lint.ignore`.
+fn map_rules(rules: &Value, obj: &mut Map<String, Value>, problems: &mut Vec<String>) {
+    let Some(map) = rules.as_object() else {
+        problems.push(format!("rules: expected an object, found {rules}"));
+        return;
+    };
+    let lint = obj
+        .entry("lint")
+        .or_insert_with(|| Value::Object(Map::new()));
+    let Some(lint) = lint.as_object_mut() else {
+        problems.push("lint: expected an object".to_owned());
+        return;
+    };
+    for (key, level) in map {
+        if rapid_analyzer::rules::find(key).is_none() && !crate::config::is_known_selector(key) {
+            problems.push(format!("rules: unknown rule `{key}`"));
+            continue;
+        }
+        match level.as_str() {
+            Some(l) if l.eq_ignore_ascii_case("off") => {
+                let ignore = lint
+                    .entry("ignore")
+                    .or_insert_with(|| Value::Array(Vec::new()));
+                if let Some(list) = ignore.as_array_mut() {
+                    list.push(Value::String(key.clone()));
+                }
+            }
+            Some(l) if rapid_analyzer::diagnostic::Severity::parse(l).is_some() => {
+                let severity = lint
+                    .entry("severity")
+                    .or_insert_with(|| Value::Object(Map::new()));
+                if let Some(m) = severity.as_object_mut() {
+                    m.insert(key.clone(), Value::String(l.to_ascii_lowercase()));
+                }
+            }
+            _ => problems.push(format!(
+                "rules.{key}: expected \"error\", \"warning\", \"info\", \"hint\" or \"off\", found {level}"
+            )),
         }
     }
 }
 
-fn parse_level(s: &str) -> Option<Option<Severity>> {
-    if s.eq_ignore_ascii_case("off") || s.eq_ignore_ascii_case("none") {
-        Some(None)
-    } else {
-        Severity::parse(s).map(Some)
+/// Merges `over` into `base`: objects key by key, anything else replaced.
+fn merge(base: &mut Value, over: Value) {
+    match (base, over) {
+        (Value::Object(b), Value::Object(o)) => {
+            for (k, v) in o {
+                match b.get_mut(&k) {
+                    Some(existing) => merge(existing, v),
+                    None => {
+                        b.insert(k, v);
+                    }
+                }
+            }
+        }
+        (b, o) => *b = o,
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use rapid_analyzer::diagnostic::{Diagnostic, Severity};
+    use rapid_analyzer::rules;
+    use rapid_analyzer::text::LineIndex;
     use serde_json::json;
 
-    #[test]
-    fn rules_by_code_or_name_and_levels() {
-        let (s, problems) = Settings::from_json(&json!({
-            "rapid": {
-                "rules": {"W101": "off", "syntax-error": "warning", "nope": "error", "E001": 3},
-                "extraPaths": ["/x", 1],
-                "diagnosticsDelay": 0
-            }
-        }));
-        assert_eq!(s.rules.get("W101"), Some(&None));
-        assert_eq!(s.severity("E001", Severity::Error), Some(Severity::Warning));
-        assert_eq!(s.severity("E002", Severity::Error), Some(Severity::Error));
-        assert_eq!(s.extra_paths, vec![PathBuf::from("/x")]);
-        assert_eq!(s.delay, Duration::ZERO);
-        assert_eq!(problems.len(), 3, "{problems:?}");
+    /// The severity each rule code gets for a file, after the settings.
+    fn severities(settings: &Settings, codes: &[&str]) -> Vec<Option<Severity>> {
+        codes
+            .iter()
+            .map(|code| {
+                let rule = rules::find(code).expect("rule");
+                let d = Diagnostic::new(rule, 0..1, "x");
+                let text = "x\n";
+                settings
+                    .lint
+                    .apply(
+                        &settings.root.join("A.mod"),
+                        text,
+                        &LineIndex::new(text),
+                        vec![d],
+                    )
+                    .first()
+                    .map(|d| d.severity)
+            })
+            .collect()
     }
 
     #[test]
-    fn null_and_junk_give_defaults() {
-        assert_eq!(
-            Settings::from_json(&Value::Null),
-            (Settings::default(), vec![])
+    fn client_keys_go_over_the_file() {
+        let file = "[lint]\nignore = [\"W201\"]\n[lint.severity]\nW101 = \"error\"\n";
+        let (s, problems) = Settings::resolve(
+            &json!({"rapid": {
+                "lint": {"severity": {"W202": "hint"}},
+                "rules": {"W101": "off", "syntax-error": "warning", "nope": "error", "E001": 3},
+                "extraPaths": ["shared"],
+                "diagnosticsDelay": 0
+            }}),
+            Some((Path::new("/p/rapid.toml"), file)),
+            Path::new("/w"),
         );
-        let (s, problems) = Settings::from_json(&json!("x"));
-        assert_eq!(s, Settings::default());
+        assert_eq!(problems.len(), 2, "{problems:?}");
+        // The client's `lint.ignore` (from `rules`) replaces the file's list.
+        assert_eq!(
+            severities(&s, &["W201", "W101", "W202", "E001", "E002"]),
+            [
+                Some(Severity::Warning),
+                None,
+                Some(Severity::Hint),
+                Some(Severity::Warning),
+                Some(Severity::Error)
+            ]
+        );
+        assert_eq!(s.extra_paths(), vec![PathBuf::from("/p/shared")]);
+        assert_eq!(s.delay, Duration::ZERO);
+    }
+
+    #[test]
+    fn bad_settings_are_reported_and_skipped() {
+        let (s, problems) = Settings::resolve(&json!("x"), None, Path::new("/w"));
         assert_eq!(problems.len(), 1);
+        assert_eq!(s.delay, DEFAULT_DELAY);
+        let (_, problems) =
+            Settings::resolve(&json!({"lint": {"bogus": 1}}), None, Path::new("/w"));
+        assert_eq!(problems.len(), 1, "{problems:?}");
+        let (_, problems) = Settings::resolve(
+            &Value::Null,
+            Some((Path::new("/p/rapid.toml"), "[lint\n")),
+            Path::new("/w"),
+        );
+        assert_eq!(problems.len(), 1, "{problems:?}");
     }
 }

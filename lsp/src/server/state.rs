@@ -39,6 +39,9 @@ pub struct State {
     pub docs: HashMap<String, Document>,
     pub encoding: PosEncoding,
     pub settings: Settings,
+    /// The client's settings as it sent them, to resolve again when
+    /// `rapid.toml` changes.
+    pub client_settings: serde_json::Value,
     pub caps: ClientCaps,
     /// Workspace folders.
     pub roots: Vec<PathBuf>,
@@ -120,6 +123,17 @@ impl Snapshot {
             uri,
             LineMap::new(&unit.text, &index, self.encoding).range(range),
         ))
+    }
+
+    /// The diagnostics to report: the analyzer's, with the lint settings
+    /// (selection, severities, inline suppressions) applied.
+    pub fn reported_diagnostics(&self) -> Vec<Diagnostic> {
+        self.settings.lint.apply(
+            Path::new(&self.path),
+            &self.unit.text,
+            &self.index,
+            self.diagnostics().to_vec(),
+        )
     }
 
     /// The analyzer's diagnostics of the file (cached when possible).
