@@ -160,7 +160,7 @@ pub fn run(args: FmtArgs) -> ExitCode {
 fn describe(name: &str, e: &FormatError) -> String {
     match e {
         FormatError::Syntax { .. } => format!("{name}:{e}"),
-        FormatError::Internal { .. } => format!("{name}: {e}"),
+        FormatError::Internal { .. } | FormatError::Unsupported { .. } => format!("{name}: {e}"),
     }
 }
 

@@ -130,15 +130,29 @@ pub(super) struct Collector<'t> {
     indent_width: usize,
     pub toks: Vec<Tok<'t>>,
     pending: Pending,
+    depth: usize,
+    too_deep: bool,
 }
 
-/// The tokens of a tree without errors.
-pub(super) fn collect<'t>(root: Node<'_>, text: &'t str, indent_width: usize) -> Vec<Tok<'t>> {
+/// How deep the tree may nest: the walk is recursive, and a formatter
+/// thread's stack must hold it (real code nests a few dozen levels; a
+/// generated expression of thousands of terms nests as deep as it is long).
+pub(super) const MAX_DEPTH: usize = 1500;
+
+/// The tokens of a tree without errors; `None` if it nests deeper than
+/// [`MAX_DEPTH`].
+pub(super) fn collect<'t>(
+    root: Node<'_>,
+    text: &'t str,
+    indent_width: usize,
+) -> Option<Vec<Tok<'t>>> {
     let mut c = Collector {
         text,
         indent_width,
         toks: Vec::new(),
         pending: Pending::default(),
+        depth: 0,
+        too_deep: false,
     };
     let mut cursor = root.walk();
     let mut previous_module = false;
@@ -163,7 +177,7 @@ pub(super) fn collect<'t>(root: Node<'_>, text: &'t str, indent_width: usize) ->
             }
         }
     }
-    c.toks
+    (!c.too_deep).then_some(c.toks)
 }
 
 impl<'t> Collector<'t> {
@@ -174,10 +188,15 @@ impl<'t> Collector<'t> {
             self.leaf(node, parent);
             return;
         }
+        if self.depth >= MAX_DEPTH {
+            self.too_deep = true;
+            return;
+        }
         let mut cursor = node.walk();
         if !cursor.goto_first_child() {
             return;
         }
+        self.depth += 1;
         let kind = node.kind();
         let mut index = 0;
         let mut previous_routine = false;
@@ -205,6 +224,7 @@ impl<'t> Collector<'t> {
                 break;
             }
         }
+        self.depth -= 1;
     }
 
     /// Decides whether the child under `cursor` starts a line (setting the

@@ -105,6 +105,9 @@ pub enum FormatError {
     /// The formatter would have changed more than whitespace and keyword
     /// case (a bug in the formatter): nothing is formatted.
     Internal { message: String },
+    /// The text is valid but beyond what the formatter handles (nesting
+    /// deeper than 1500 levels): nothing is formatted.
+    Unsupported { message: String },
 }
 
 impl std::fmt::Display for FormatError {
@@ -122,6 +125,7 @@ impl std::fmt::Display for FormatError {
                     "not formatted, the formatter would change the program: {message}"
                 )
             }
+            FormatError::Unsupported { message } => write!(f, "not formatted: {message}"),
         }
     }
 }
@@ -186,7 +190,11 @@ fn run(text: &str, options: &FormatOptions, want_edits: bool) -> Result<Formatte
     if root.has_error() {
         return Err(syntax_error(&tree, text));
     }
-    let toks = collect::collect(root, text, options.indent_width);
+    let Some(toks) = collect::collect(root, text, options.indent_width) else {
+        return Err(FormatError::Unsupported {
+            message: format!("the code nests deeper than {} levels", collect::MAX_DEPTH),
+        });
+    };
     if toks.is_empty() {
         return Ok(Formatted {
             output: text.to_owned(),
@@ -314,18 +322,28 @@ pub fn verify(original: &str, formatted: &str) -> Result<(), FormatError> {
     Ok(())
 }
 
-/// Leaves in order: range, is it a keyword, is it a comment.
-fn collect_leaves(node: Node<'_>, out: &mut Vec<(Range<usize>, bool, bool)>) {
-    if collect::is_atomic(node) {
-        if !node.byte_range().is_empty() {
+/// Leaves in order: range, is it a keyword, is it a comment. (Iterative:
+/// any depth.)
+fn collect_leaves(root: Node<'_>, out: &mut Vec<(Range<usize>, bool, bool)>) {
+    let mut cursor = root.walk();
+    loop {
+        let node = cursor.node();
+        let atomic = collect::is_atomic(node);
+        if atomic && !node.byte_range().is_empty() {
             let keyword = !node.is_named() && node.kind().bytes().all(|b| b.is_ascii_alphabetic());
             out.push((node.byte_range(), keyword, node.kind() == "comment"));
         }
-        return;
-    }
-    let mut cursor = node.walk();
-    for child in node.children(&mut cursor) {
-        collect_leaves(child, out);
+        if !atomic && cursor.goto_first_child() {
+            continue;
+        }
+        loop {
+            if cursor.goto_next_sibling() {
+                break;
+            }
+            if !cursor.goto_parent() {
+                return;
+            }
+        }
     }
 }
 
@@ -427,6 +445,22 @@ mod tests {
     fn verify_notices_a_changed_token() {
         let err = verify("MODULE M\nENDMODULE\n", "MODULE N\nENDMODULE\n");
         assert!(matches!(err, Err(FormatError::Internal { .. })), "{err:?}");
+    }
+
+    #[test]
+    fn very_deep_nesting_is_refused_not_a_crash() {
+        let depth = 3000;
+        let text = format!(
+            "MODULE M\nPROC p()\nx := {}1{};\nENDPROC\nENDMODULE\n",
+            "(".repeat(depth),
+            ")".repeat(depth)
+        );
+        let err = format(&text, &FormatOptions::default());
+        assert!(
+            matches!(err, Err(FormatError::Unsupported { .. })),
+            "{err:?}"
+        );
+        assert_eq!(verify(&text, &text), Ok(()));
     }
 
     #[test]
