@@ -5,7 +5,7 @@ use std::ops::Range;
 
 use tree_sitter::Node;
 
-use super::resolve::walk;
+use super::resolve::walk_pruned;
 use super::signature::sig_of;
 use super::tokens::Scopes;
 use super::{InlayHint, InlayKind};
@@ -25,15 +25,16 @@ pub fn inlay_hints(task: &Task, unit: usize, range: Range<usize>) -> Vec<InlayHi
     let root = u.tree.root_node();
     let mut calls = Vec::new();
     let mut consts = Vec::new();
-    walk(root, &mut |n: Node<'_>| {
+    walk_pruned(root, &mut |n: Node<'_>| {
         if n.end_byte() < range.start || n.start_byte() > range.end {
-            return;
+            return false;
         }
         match n.kind() {
             "procedure_call" | "function_call" => calls.push(n),
             "data_declaration" => consts.push(n),
             _ => {}
         }
+        true
     });
     for call in calls {
         let (Some(name), Some(args)) = (

@@ -440,10 +440,18 @@ fn item_declared_at(task: &Task, unit: usize, name: &str, range: Range<usize>) -
 
 /// Calls `f` on every node under `node` (pre-order), without recursion.
 pub(crate) fn walk<'a>(node: Node<'a>, f: &mut impl FnMut(Node<'a>)) {
+    walk_pruned(node, &mut |n| {
+        f(n);
+        true
+    });
+}
+
+/// Calls `f` on the nodes under `node` (pre-order); `f` returns whether to
+/// visit the node's children.
+pub(crate) fn walk_pruned<'a>(node: Node<'a>, f: &mut impl FnMut(Node<'a>) -> bool) {
     let mut cursor = node.walk();
     loop {
-        f(cursor.node());
-        if cursor.goto_first_child() {
+        if f(cursor.node()) && cursor.goto_first_child() {
             continue;
         }
         loop {

@@ -5,7 +5,7 @@ use std::ops::Range;
 use tree_sitter::Node;
 
 use super::FoldingRange;
-use super::resolve::walk;
+use super::resolve::walk_pruned;
 use crate::task::Unit;
 use crate::text::LineIndex;
 
@@ -29,6 +29,26 @@ const FOLDED: &[&str] = &[
     "default_case",
 ];
 
+/// Nodes that hold nothing foldable (but may hold comments only at their
+/// ends, which a statement-level walk sees anyway).
+const LEAVES: &[&str] = &[
+    "data_declaration",
+    "procedure_call",
+    "assignment",
+    "return_statement",
+    "raise_statement",
+    "goto_statement",
+    "connect_statement",
+    "label",
+    "binary_expression",
+    "function_call",
+    "argument_list",
+    "number",
+    "string",
+    "identifier",
+    "type_identifier",
+];
+
 pub fn folding_ranges(unit: &Unit) -> Vec<FoldingRange> {
     let text = &unit.text;
     let lines = LineIndex::new(text);
@@ -47,8 +67,11 @@ pub fn folding_ranges(unit: &Unit) -> Vec<FoldingRange> {
             });
         }
     };
-    walk(root, &mut |n: Node<'_>| {
+    walk_pruned(root, &mut |n: Node<'_>| {
         let kind = n.kind();
+        if LEAVES.contains(&kind) {
+            return false;
+        }
         if kind == "comment" {
             let line = line_of(n.start_byte());
             // Only comments that start their line form a block.
@@ -65,7 +88,7 @@ pub fn folding_ranges(unit: &Unit) -> Vec<FoldingRange> {
                     }
                 }
             }
-            return;
+            return false;
         }
         if FOLDED.contains(&kind) {
             // A module folds from its MODULE line (its `%%%` header folds alone).
@@ -101,6 +124,7 @@ pub fn folding_ranges(unit: &Unit) -> Vec<FoldingRange> {
                 });
             }
         }
+        true
     });
     flush(&mut comments, &mut out);
     out.sort_by_key(|f| (f.start_line, std::cmp::Reverse(f.end_line)));

@@ -7,7 +7,7 @@ use std::ops::Range;
 
 use tree_sitter::Node;
 
-use super::resolve::{field_in_parent, is_name};
+use super::resolve::is_name;
 use super::{
     MOD_DECLARATION, MOD_DEFAULT_LIBRARY, MOD_READONLY, MOD_STATIC, SemanticToken, TokenType,
 };
@@ -119,6 +119,9 @@ pub fn semantic_tokens(
     };
     let root = u.tree.root_node();
     let mut cursor = root.walk();
+    // The ancestors of the cursor's node (`Node::parent` walks down from
+    // the root each time; a stack is much cheaper).
+    let mut stack: Vec<Node<'_>> = Vec::new();
     'outer: loop {
         let n = cursor.node();
         let overlaps = n.start_byte() < range.end && range.start < n.end_byte();
@@ -156,7 +159,8 @@ pub fn semantic_tokens(
                 }
                 "header_value" => true,
                 _ if is_name(n) => {
-                    if let Some((ty, m)) = classify(&mut scopes, n, text) {
+                    let field = cursor.field_name();
+                    if let Some((ty, m)) = classify(&mut scopes, n, field, &stack, text) {
                         emit(n.byte_range(), ty, m);
                     }
                     true
@@ -174,6 +178,7 @@ pub fn semantic_tokens(
             descend = !leaf_like;
         }
         if descend && cursor.goto_first_child() {
+            stack.push(n);
             continue;
         }
         loop {
@@ -183,6 +188,7 @@ pub fn semantic_tokens(
             if !cursor.goto_parent() {
                 break 'outer;
             }
+            stack.pop();
         }
     }
     out
@@ -197,10 +203,15 @@ fn data_mods(storage: Storage) -> u32 {
 }
 
 /// The token of a name.
-fn classify(scopes: &mut Scopes<'_>, n: Node<'_>, text: &str) -> Option<(TokenType, u32)> {
+fn classify(
+    scopes: &mut Scopes<'_>,
+    n: Node<'_>,
+    field: Option<&str>,
+    ancestors: &[Node<'_>],
+    text: &str,
+) -> Option<(TokenType, u32)> {
     let name = text.get(n.byte_range())?;
-    let parent = n.parent()?;
-    let field = field_in_parent(n);
+    let parent = *ancestors.last()?;
     let cat = catalogue();
     let decl = MOD_DECLARATION;
     Some(match (parent.kind(), field) {
@@ -258,7 +269,7 @@ fn classify(scopes: &mut Scopes<'_>, n: Node<'_>, text: &str) -> Option<(TokenTy
         }
         _ => {
             // A name used as data.
-            if enclosing_for_var(n, name, text) {
+            if enclosing_for_var(ancestors, name, text) {
                 return Some((TokenType::Variable, 0));
             }
             let cx = scopes.at(n.start_byte())?;
@@ -294,10 +305,10 @@ fn field_of_kind(decl: Node<'_>) -> Option<&'static str> {
     }
 }
 
-/// Is `name` the variable of a FOR loop around `n`?
-fn enclosing_for_var(n: Node<'_>, name: &str, text: &str) -> bool {
-    let mut at = n.parent();
-    while let Some(p) = at {
+/// Is `name` the variable of a FOR loop among `ancestors` (innermost last),
+/// within the routine?
+fn enclosing_for_var(ancestors: &[Node<'_>], name: &str, text: &str) -> bool {
+    for p in ancestors.iter().rev() {
         if p.kind() == "for_statement"
             && let Some(v) = p.child_by_field_name("variable")
             && text.get(v.byte_range()).is_some_and(|t| same(t, name))
@@ -310,7 +321,6 @@ fn enclosing_for_var(n: Node<'_>, name: &str, text: &str) -> bool {
         ) {
             return false;
         }
-        at = p.parent();
     }
     false
 }

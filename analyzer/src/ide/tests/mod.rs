@@ -9,6 +9,7 @@ mod actions;
 mod completion;
 mod hover;
 mod navigation;
+mod robustness;
 mod structure;
 mod tokens;
 
