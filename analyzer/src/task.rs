@@ -26,6 +26,9 @@ pub struct Unit {
     pub tree: Tree,
     pub items: FileItems,
     pub interface: u64,
+    /// A hash of the values of the unit's module data and the sizes of its
+    /// arrays (which constant evaluation reads; the interface leaves them out).
+    pub constants: u64,
     pub syntax: Vec<Diagnostic>,
 }
 
@@ -51,6 +54,7 @@ impl Unit {
         let syntax = crate::syntax::syntax_diagnostics(&tree, &text);
         Unit {
             interface: items.interface_hash(),
+            constants: constants_hash(&items, &text),
             path,
             text,
             tree,
@@ -67,6 +71,7 @@ impl Unit {
                 tree,
                 items: FileItems::default(),
                 interface: 0,
+                constants: 0,
                 syntax: Vec::new(),
             },
             // No tree even for empty text means the grammar could not be
@@ -74,6 +79,27 @@ impl Unit {
             None => unreachable_tree(path, text),
         }
     }
+}
+
+/// Hashes the initial values of `CONST` data and the array sizes of all
+/// module data, as written.
+fn constants_hash(items: &FileItems, text: &str) -> u64 {
+    use std::hash::{Hash, Hasher};
+    let mut h = std::hash::DefaultHasher::new();
+    for m in &items.modules {
+        for d in &m.data {
+            if d.storage == crate::items::Storage::Const
+                && let Some(init) = &d.init
+            {
+                fold(&d.name).hash(&mut h);
+                text.get(init.clone()).hash(&mut h);
+            }
+            for dim in &d.dims {
+                text.get(dim.clone()).hash(&mut h);
+            }
+        }
+    }
+    h.finish()
 }
 
 fn unreachable_tree(path: String, _text: String) -> Unit {
@@ -135,6 +161,8 @@ pub struct Task {
     pub mecunits: std::collections::HashSet<String>,
     /// Combined interface hash of every unit, for cache invalidation.
     pub interface: u64,
+    /// Combined [`Unit::constants`] of every unit.
+    pub constants: u64,
     /// Memo of "did you mean" suggestions among the globals, by folded name.
     pub(crate) close_names: std::sync::Mutex<HashMap<String, Option<(usize, String)>>>,
 }
@@ -144,8 +172,10 @@ impl Task {
         let mut globals: HashMap<String, Vec<ItemRef>> = HashMap::new();
         let mut locals: HashMap<String, Vec<ItemRef>> = HashMap::new();
         let mut interface: u64 = 0;
+        let mut constants: u64 = 0;
         for (u, unit) in units.iter().enumerate() {
             interface = interface.rotate_left(7) ^ unit.interface;
+            constants = constants.rotate_left(7) ^ unit.constants;
             for (m, module) in unit.items.modules.iter().enumerate() {
                 for (name, local, item) in module_items(module) {
                     let r = ItemRef {
@@ -166,6 +196,7 @@ impl Task {
             signals,
             mecunits: Default::default(),
             interface,
+            constants,
             close_names: Default::default(),
         }
     }

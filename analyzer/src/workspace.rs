@@ -10,6 +10,7 @@
 use std::collections::{BTreeMap, HashMap, HashSet};
 use std::sync::Arc;
 
+use crate::check::StmtCache;
 use crate::diagnostic::Diagnostic;
 use crate::task::{Config, Signals, Task, Unit, parse_config, task_key};
 
@@ -32,6 +33,8 @@ struct Checked {
     unit: Arc<Unit>,
     interface: u64,
     diagnostics: Arc<Vec<Diagnostic>>,
+    /// Statement results, for the next check of this file.
+    statements: StmtCache,
 }
 
 impl Workspace {
@@ -194,13 +197,20 @@ impl Workspace {
         {
             return c.diagnostics.clone();
         }
-        let diagnostics = Arc::new(diagnostics_of(&task, &unit));
+        let cache = self
+            .checked
+            .remove(path)
+            .map(|c| c.statements)
+            .unwrap_or_default();
+        let (diagnostics, statements) = diagnostics_cached(&task, &unit, cache);
+        let diagnostics = Arc::new(diagnostics);
         self.checked.insert(
             path.to_owned(),
             Checked {
                 unit,
                 interface: task.interface,
                 diagnostics: diagnostics.clone(),
+                statements,
             },
         );
         diagnostics
@@ -210,12 +220,25 @@ impl Workspace {
 /// The diagnostics of one unit of a task, computed afresh: syntax, then
 /// semantic, sorted by position.
 pub fn diagnostics_of(task: &Task, unit: &Arc<Unit>) -> Vec<Diagnostic> {
+    diagnostics_cached(task, unit, StmtCache::default()).0
+}
+
+/// [`diagnostics_of`], reusing the statement results of an earlier check of
+/// the same file; returns them for the next check.
+pub fn diagnostics_cached(
+    task: &Task,
+    unit: &Arc<Unit>,
+    cache: StmtCache,
+) -> (Vec<Diagnostic>, StmtCache) {
     let mut out = unit.syntax.clone();
+    let mut next = StmtCache::default();
     if let Some(idx) = task.units.iter().position(|u| Arc::ptr_eq(u, unit)) {
-        out.extend(crate::check::check_unit(task, idx));
+        let (found, cache) = crate::check::check_unit_cached(task, idx, cache);
+        out.extend(found);
+        next = cache;
     }
     out.sort_by_key(|d| (d.range.start, d.range.end));
-    out
+    (out, next)
 }
 
 /// Is this the key of a backup's `RAPID/TASKn` folder?
@@ -289,6 +312,33 @@ mod tests {
     fn configuration_applies_below_its_root() {
         assert_eq!(config_root("b/SYSPAR/EIO.cfg"), "b");
         assert_eq!(config_root("proj/EIO.cfg"), "proj");
+    }
+
+    #[test]
+    fn an_edit_in_one_routine_rechecks_only_its_changed_statements() {
+        let mut body = String::new();
+        for i in 0..200 {
+            body.push_str(&format!("    n := n + {i};\n    WaitTime 0.{i};\n"));
+        }
+        let text = format!(
+            "MODULE A\n  VAR num n;\n  PROC main()\n{body}  ENDPROC\n  PROC other()\n    n := 1;\n  ENDPROC\nENDMODULE\n"
+        );
+        let mut ws = Workspace::new();
+        ws.set_file("p/A.mod", text.clone());
+        ws.set_file(
+            "p/B.mod",
+            "MODULE B\n  PROC helper()\n  ENDPROC\nENDMODULE\n".into(),
+        );
+        assert!(ws.diagnostics("p/A.mod").is_empty());
+        let b = ws.diagnostics("p/B.mod");
+        // One character changed in one statement of main.
+        let edited = text.replacen("n := n + 7;", "n := n + 1000;", 1);
+        ws.set_file("p/A.mod", edited);
+        assert!(ws.diagnostics("p/A.mod").is_empty());
+        let cache = &ws.checked["p/A.mod"].statements;
+        assert_eq!(cache.reused(), 400, "every other statement is reused");
+        // The other module's result is not recomputed at all.
+        assert!(Arc::ptr_eq(&b, &ws.diagnostics("p/B.mod")));
     }
 
     #[test]

@@ -330,3 +330,47 @@ fn show() {
         }
     }
 }
+
+/// The statement cache never changes a result: after an edit (a blank line
+/// inserted before each line of a routine in turn), the workspace's cached
+/// re-check equals a fresh check of the edited text.
+#[test]
+fn cached_rechecks_equal_fresh_checks() {
+    let mut compared = 0;
+    for fixture in fixtures() {
+        let mut ws = Workspace::new();
+        for (path, text) in &fixture.files {
+            if path.to_ascii_lowercase().ends_with(".cfg") {
+                ws.set_config(path, text);
+            } else if path.to_ascii_lowercase().ends_with(".pgf") {
+                ws.set_program(path, text);
+            } else if is_module(Path::new(path)) {
+                ws.set_file(path, text.clone());
+            }
+        }
+        for (path, text) in &fixture.files {
+            if !is_module(Path::new(path)) {
+                continue;
+            }
+            ws.diagnostics(path);
+            let starts: Vec<usize> = text
+                .match_indices('\n')
+                .map(|(i, _)| i + 1)
+                .filter(|&i| i < text.len())
+                .collect();
+            for (k, at) in starts.iter().enumerate().step_by(3) {
+                let mut edited = text.clone();
+                edited.insert_str(*at, if k % 2 == 0 { "\n" } else { "  " });
+                ws.set_file(path, edited.clone());
+                let cached = ws.diagnostics(path);
+                let task = ws.task_of(path);
+                let unit = ws.unit(path).expect("the file").clone();
+                let fresh = rapid_analyzer::workspace::diagnostics_of(&task, &unit);
+                assert_eq!(*cached, fresh, "{path} edited at byte {at}");
+                compared += 1;
+            }
+            ws.set_file(path, text.clone());
+        }
+    }
+    assert!(compared > 100, "only {compared} comparisons");
+}

@@ -388,8 +388,10 @@ fn check_routine<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &'t RoutineDecl) {
     let mut seen_statement = false;
     let mut statements = Vec::new();
     let mut local_names: Vec<(String, Range<usize>)> = Vec::new();
+    let mut decl_nodes = Vec::new();
     for item in body {
         if item.kind() == "data_declaration" {
+            decl_nodes.push(item);
             if seen_statement {
                 cx.report(
                     &rules::declaration_after_statement::RULE,
@@ -416,6 +418,18 @@ fn check_routine<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &'t RoutineDecl) {
     names.extend(local_names.iter().map(|(n, r)| (n.as_str(), r.clone())));
     report_duplicates(cx, names, "in this routine");
 
+    // The statement cache's view of the routine: its name and kind (the
+    // parameters are in the task's interface) and the text of its data
+    // declarations, so that white space around statements does not count.
+    cx.routine_fingerprint = {
+        use std::hash::{Hash, Hasher};
+        let mut h = std::hash::DefaultHasher::new();
+        (fold(&decl.name), decl.kind).hash(&mut h);
+        for item in &decl_nodes {
+            cx.node_text(*item).hash(&mut h);
+        }
+        h.finish()
+    };
     stmts::collect_labels(cx, node);
     stmts::check_block(cx, &statements);
     for (handler, in_error) in [("backward", false), ("error", true), ("undo", false)] {

@@ -77,7 +77,8 @@ fn unknown_signal(cx: &mut Cx<'_>, node: Node<'_>, name: &str, expected: &Ty) {
             if mecunit { "mechanical unit" } else { "signal" }
         );
         cx.report(&rules::unresolved_name::RULE, node.byte_range(), message);
-    } else if cx.reported_signals.insert(fold(name)) {
+    } else {
+        // Reported at every use; `check_unit` keeps the first per name.
         cx.report(
             &rules::unconfigured_signal::RULE,
             node.byte_range(),

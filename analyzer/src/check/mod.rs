@@ -25,25 +25,70 @@ use crate::ty::{Ty, Types};
 /// Checks one unit of a task and returns its diagnostics (without the
 /// syntax diagnostics, which the unit holds), sorted by position.
 pub fn check_unit(task: &Task, unit: usize) -> Vec<Diagnostic> {
+    check_unit_cached(task, unit, StmtCache::default()).0
+}
+
+/// [`check_unit`] reusing the results of statements that are unchanged since
+/// the check that produced `cache` (same text, same routine declarations,
+/// same task interface and constants); returns the cache for the next check.
+/// An edit inside one routine re-checks only the statements it changed.
+pub fn check_unit_cached(
+    task: &Task,
+    unit: usize,
+    cache: StmtCache,
+) -> (Vec<Diagnostic>, StmtCache) {
     let Some(u) = task.units.get(unit) else {
-        return Vec::new();
+        return (Vec::new(), StmtCache::default());
     };
-    let mut cx = Cx {
-        task,
-        unit: u,
-        unit_idx: unit,
-        text: &u.text,
-        types: task.types(),
-        cat: catalogue(),
-        module: None,
-        routine: None,
-        diags: Vec::new(),
-        used: HashSet::new(),
-        reported_signals: HashSet::new(),
-    };
+    let mut cx = Cx::new(task, unit, u);
+    cx.cache_old = cache.entries;
+    cx.cache_enabled = true;
     cx.check();
-    cx.diags.sort_by_key(|d| (d.range.start, d.range.end));
-    cx.diags
+    let mut diags = std::mem::take(&mut cx.diags);
+    diags.sort_by_key(|d| (d.range.start, d.range.end));
+    // An unconfigured signal is reported once per name: at its first use.
+    let mut seen = HashSet::new();
+    diags.retain(|d| {
+        !std::ptr::eq(d.rule, &crate::rules::unconfigured_signal::RULE)
+            || seen.insert(d.message.clone())
+    });
+    let cache = StmtCache {
+        entries: std::mem::take(&mut cx.cache_new),
+        reused: cx.cache_reused,
+    };
+    (diags, cache)
+}
+
+/// Results of single statements, by a key of the statement's text and its
+/// context, with diagnostic ranges relative to the statement's start.
+#[derive(Debug, Default)]
+pub struct StmtCache {
+    entries: HashMap<u64, CachedStmt>,
+    /// How many statements the check that made this cache took from the
+    /// previous one.
+    reused: usize,
+}
+
+impl StmtCache {
+    /// How many statement results it holds.
+    pub fn len(&self) -> usize {
+        self.entries.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.entries.is_empty()
+    }
+
+    /// How many statements the check that made this cache did not redo.
+    pub fn reused(&self) -> usize {
+        self.reused
+    }
+}
+
+#[derive(Clone, Debug)]
+pub(crate) struct CachedStmt {
+    diags: Vec<Diagnostic>,
+    used: Vec<Used>,
 }
 
 /// What a data name denotes.
@@ -120,6 +165,15 @@ pub(crate) struct Cx<'t> {
     /// Folded names of routine-scope symbols and module items that were used.
     pub used: HashSet<Used>,
     pub reported_signals: HashSet<String>,
+    /// Statement results of the previous check, and of this one.
+    pub(crate) cache_old: HashMap<u64, CachedStmt>,
+    pub(crate) cache_new: HashMap<u64, CachedStmt>,
+    pub(crate) cache_enabled: bool,
+    pub(crate) cache_reused: usize,
+    /// Uses recorded while a statement is checked, for the cache.
+    pub(crate) recording: Option<Vec<Used>>,
+    /// A hash of the current routine's header and declarations.
+    pub(crate) routine_fingerprint: u64,
 }
 
 /// A use of a declaration, for the unused-symbol lints.
@@ -130,6 +184,133 @@ pub(crate) enum Used {
 }
 
 impl<'t> Cx<'t> {
+    fn new(task: &'t Task, unit_idx: usize, unit: &'t Unit) -> Cx<'t> {
+        Cx {
+            task,
+            unit,
+            unit_idx,
+            text: &unit.text,
+            types: task.types(),
+            cat: catalogue(),
+            module: None,
+            routine: None,
+            diags: Vec::new(),
+            used: HashSet::new(),
+            reported_signals: HashSet::new(),
+            cache_old: HashMap::new(),
+            cache_new: HashMap::new(),
+            cache_enabled: false,
+            cache_reused: 0,
+            recording: None,
+            routine_fingerprint: 0,
+        }
+    }
+
+    /// Marks a declaration used (and records it for the statement cache).
+    pub(crate) fn mark_used(&mut self, u: Used) {
+        if let Some(r) = &mut self.recording {
+            r.push(u.clone());
+        }
+        self.used.insert(u);
+    }
+
+    /// Checks a statement through the cache: a statement whose text and
+    /// context are unchanged gets its previous findings back.
+    pub(crate) fn cached_statement(&mut self, s: Node<'t>, check: impl FnOnce(&mut Cx<'t>)) {
+        if !self.cache_enabled || self.recording.is_some() {
+            check(self);
+            return;
+        }
+        let Some(key) = self.statement_key(s) else {
+            check(self);
+            return;
+        };
+        let start = s.start_byte();
+        let cached = self
+            .cache_old
+            .get(&key)
+            .or_else(|| self.cache_new.get(&key))
+            .cloned();
+        if let Some(c) = cached {
+            for d in &c.diags {
+                let mut d = d.clone();
+                d.range = d.range.start + start..d.range.end + start;
+                for r in &mut d.related {
+                    if r.file.is_none() {
+                        r.range = r.range.start + start..r.range.end + start;
+                    }
+                }
+                if let Some(f) = &mut d.fix {
+                    for e in &mut f.edits {
+                        e.range = e.range.start + start..e.range.end + start;
+                    }
+                }
+                self.diags.push(d);
+            }
+            for u in &c.used {
+                self.used.insert(u.clone());
+            }
+            self.cache_reused += 1;
+            self.cache_new.insert(key, c);
+            return;
+        }
+        let before = self.diags.len();
+        self.recording = Some(Vec::new());
+        check(self);
+        let used = self.recording.take().unwrap_or_default();
+        let range = s.byte_range();
+        let inside = |r: &Range<usize>| range.start <= r.start && r.end <= range.end;
+        let found = self.diags.get(before..).unwrap_or_default();
+        let cacheable = found.iter().all(|d| {
+            inside(&d.range)
+                && d.related
+                    .iter()
+                    .all(|r| r.file.is_some() || inside(&r.range))
+                && d.fix
+                    .as_ref()
+                    .is_none_or(|f| f.edits.iter().all(|e| inside(&e.range)))
+        });
+        if cacheable {
+            let rel = |r: &Range<usize>| r.start - start..r.end - start;
+            let diags = found
+                .iter()
+                .map(|d| {
+                    let mut d = d.clone();
+                    d.range = rel(&d.range);
+                    for r in &mut d.related {
+                        if r.file.is_none() {
+                            r.range = rel(&r.range);
+                        }
+                    }
+                    if let Some(f) = &mut d.fix {
+                        for e in &mut f.edits {
+                            e.range = rel(&e.range);
+                        }
+                    }
+                    d
+                })
+                .collect();
+            self.cache_new.insert(key, CachedStmt { diags, used });
+        }
+    }
+
+    /// The cache key of a statement: its text and everything around it that
+    /// its check reads (routine declarations, handler, FOR variables, module,
+    /// the task's interface and constants).
+    fn statement_key(&self, s: Node<'_>) -> Option<u64> {
+        use std::hash::{Hash, Hasher};
+        let r = self.routine.as_ref()?;
+        let mut h = std::hash::DefaultHasher::new();
+        self.node_text(s).hash(&mut h);
+        self.routine_fingerprint.hash(&mut h);
+        r.in_error_handler.hash(&mut h);
+        r.for_vars.hash(&mut h);
+        self.module_idx().hash(&mut h);
+        self.task.interface.hash(&mut h);
+        self.task.constants.hash(&mut h);
+        Some(h.finish())
+    }
+
     fn check(&mut self) {
         let root = self.unit.tree.root_node();
         decls::check_file_wide(self, root);
@@ -233,17 +414,17 @@ impl<'t> Cx<'t> {
             }
             if let Some(d) = r.locals.get(&key) {
                 let d = d.clone();
-                self.used.insert(Used::RoutineSym(key));
+                self.mark_used(Used::RoutineSym(key));
                 return Some(DataSym::Local(d));
             }
             if let Some(p) = r.params.get(&key).copied() {
-                self.used.insert(Used::RoutineSym(key));
+                self.mark_used(Used::RoutineSym(key));
                 return Some(DataSym::Param(p));
             }
         }
         for r in self.lookup_items(name) {
             if let Some(d) = self.task.data(r) {
-                self.used.insert(Used::Item(r));
+                self.mark_used(Used::Item(r));
                 return Some(DataSym::Module(d, r));
             }
         }
@@ -267,7 +448,7 @@ impl<'t> Cx<'t> {
     ) -> Option<RoutineSym<'t>> {
         for r in self.lookup_items(name) {
             if let Some(d) = self.task.routine(r) {
-                self.used.insert(Used::Item(r));
+                self.mark_used(Used::Item(r));
                 return Some(RoutineSym::User(d, r));
             }
         }
@@ -285,7 +466,7 @@ impl<'t> Cx<'t> {
     pub(crate) fn type_exists(&mut self, name: &str) -> bool {
         for r in self.lookup_items(name) {
             if matches!(r.item, Item::Record(_) | Item::Alias(_)) {
-                self.used.insert(Used::Item(r));
+                self.mark_used(Used::Item(r));
                 return true;
             }
         }
@@ -495,19 +676,7 @@ impl<'t> Cx<'t> {
     /// `FOR` loops that enclose the offset).
     pub(crate) fn at(task: &'t Task, unit: usize, offset: usize) -> Option<Cx<'t>> {
         let u: &'t Unit = task.units.get(unit)?;
-        let mut cx = Cx {
-            task,
-            unit: u,
-            unit_idx: unit,
-            text: &u.text,
-            types: task.types(),
-            cat: catalogue(),
-            module: None,
-            routine: None,
-            diags: Vec::new(),
-            used: HashSet::new(),
-            reported_signals: HashSet::new(),
-        };
+        let mut cx = Cx::new(task, unit, u);
         let within = |r: &Range<usize>| r.start <= offset && offset <= r.end;
         cx.module = u
             .items

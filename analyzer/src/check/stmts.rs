@@ -94,9 +94,20 @@ fn leaves_list(s: Node<'_>) -> Option<&'static str> {
 }
 
 fn check_statement<'t>(cx: &mut Cx<'t>, s: Node<'t>) {
+    // Simple statements go through the statement cache (an edit elsewhere in
+    // the routine does not check them again); compound ones check their
+    // parts, whose simple statements are cached in turn.
+    if matches!(s.kind(), "assignment" | "procedure_call") {
+        cx.cached_statement(s, |cx| {
+            if s.kind() == "assignment" {
+                assignment(cx, s);
+            } else {
+                calls::procedure_call(cx, s);
+            }
+        });
+        return;
+    }
     match s.kind() {
-        "assignment" => assignment(cx, s),
-        "procedure_call" => calls::procedure_call(cx, s),
         "if_statement" => {
             if let Some(c) = field(s, "condition") {
                 exprs::condition(cx, c);
