@@ -112,19 +112,37 @@ pub fn completions(task: &Task, unit: usize, offset: usize) -> Vec<CompletionIte
     let w = words(stmt_text);
     let in_routine = cx.routine.is_some() || in_routine_text(prefix);
 
-    // Declarations: a type after VAR/PERS/CONST, nothing where the name goes.
+    // Declarations: a type after VAR/PERS/CONST, nothing where the name
+    // goes, values of the declared type after `:=`.
     if let Some(i) = w
         .iter()
         .position(|w| w == "var" || w == "pers" || w == "const")
     {
         let in_header = w.iter().any(|w| w == "proc" || w == "func");
         if !in_header {
+            if stmt_text.windows(2).any(|p| p == b":=") {
+                let ty = w.get(i + 1).cloned();
+                return expression_items(&mut cx, ty.as_deref());
+            }
             return if w.len() == i + 1 {
                 types(&mut cx)
             } else {
                 Vec::new()
             };
         }
+    }
+    match w.first().map(String::as_str) {
+        Some("goto") if w.len() == 1 => return labels(&cx),
+        Some("connect") if w.iter().any(|w| w == "with") => {
+            let mut out = Vec::new();
+            visible_routines(&mut cx, &mut |name, kind, detail| {
+                if kind == CompletionKind::Trap {
+                    out.push(item(name, kind, Some(detail), "0"));
+                }
+            });
+            return out;
+        }
+        _ => {}
     }
     // Routine headers: types in the parameter list and after FUNC.
     if let Some(first) = w
@@ -171,6 +189,28 @@ pub fn completions(task: &Task, unit: usize, offset: usize) -> Vec<CompletionIte
     // After `:=`: the left side's type is expected.
     let expected = assignment_target(&mut cx, stmt_text);
     expression_items(&mut cx, expected.as_deref())
+}
+
+/// The labels of the routine around the cursor.
+fn labels(cx: &Cx<'_>) -> Vec<CompletionItem> {
+    let Some(r) = &cx.routine else {
+        return Vec::new();
+    };
+    let root = cx.unit.tree.root_node();
+    let Some(node) = root.named_descendant_for_byte_range(r.decl.range.start, r.decl.range.end)
+    else {
+        return Vec::new();
+    };
+    let mut out = Vec::new();
+    super::resolve::walk(node, &mut |n| {
+        if n.kind() == "label"
+            && let Some(name) = n.child_by_field_name("name")
+            && let Some(t) = cx.text.get(name.byte_range())
+        {
+            out.push(item(t, CompletionKind::Label, None, "0"));
+        }
+    });
+    out
 }
 
 /// Without an item tree (broken code), is the text inside a routine?

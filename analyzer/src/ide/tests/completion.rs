@@ -163,3 +163,15 @@ fn completion_never_panics() {
         let _ = signature_help(&task, unit, offset);
     }
 }
+
+#[test]
+fn labels_traps_and_declaration_values() {
+    let items = labels(&in_proc("  again:\n    GOTO $0"));
+    assert_eq!(items, vec![("again".into(), CompletionKind::Label)]);
+    let src = format!(
+        "{HEAD}  TRAP onStop\n  ENDTRAP\n  PROC main()\n    VAR intnum irq;\n    CONNECT irq WITH $0\n  ENDPROC\nENDMODULE\n"
+    );
+    assert_eq!(labels(&src), vec![("onStop".into(), CompletionKind::Trap)]);
+    let items = labels(&in_proc("    VAR speeddata s := $0"));
+    assert_eq!(items.first().map(|i| i.0.as_str()), Some("vSlow"));
+}
