@@ -4,10 +4,12 @@
 
 pub mod catalogue;
 pub mod check;
+pub mod consteval;
 pub mod diagnostic;
 pub mod format;
 pub mod ide;
 pub mod items;
+pub mod lower;
 pub mod names;
 pub mod rules;
 pub mod syntax;

@@ -94,6 +94,7 @@ fn leaves_list(s: Node<'_>) -> Option<&'static str> {
 }
 
 fn check_statement<'t>(cx: &mut Cx<'t>, s: Node<'t>) {
+    crate::consteval::check_constant_errors(cx, s);
     // Simple statements go through the statement cache (an edit elsewhere in
     // the routine does not check them again); compound ones check their
     // parts, whose simple statements are cached in turn.

@@ -15,6 +15,7 @@ pub mod condition_not_bool;
 pub mod conditional_argument;
 pub mod conflicting_alternatives;
 pub mod connect_target;
+pub mod constant_error;
 pub mod declaration_after_statement;
 pub mod duplicate_argument;
 pub mod duplicate_declaration;
@@ -90,6 +91,7 @@ pub static RULES: &[&Rule] = &[
     &name_too_long::RULE,
     &string_too_long::RULE,
     &incomplete_code::RULE,
+    &constant_error::RULE,
     &option_routine::RULE,
     &unconfigured_signal::RULE,
     &unresolved_name::RULE,
