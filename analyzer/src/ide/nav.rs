@@ -91,9 +91,9 @@ pub(crate) fn uses(
     }
     // Routine-scope symbols are seen only inside their routine.
     let scope: Option<(usize, Range<usize>)> = match def {
-        Def::Param { unit, routine, .. } | Def::Local { unit, routine, .. } => {
-            Some((*unit, routine.range.clone()))
-        }
+        // Parameters are also named at call sites (`\Opt:=`, `Name:=`).
+        Def::Param { .. } => None,
+        Def::Local { unit, routine, .. } => Some((*unit, routine.range.clone())),
         Def::ForVar { unit, range, .. } | Def::Label { unit, range, .. } => {
             let u = task.units.get(*unit);
             let routine = u.and_then(|u| {

@@ -150,3 +150,12 @@ fn nothing_panics_on_odd_offsets() {
         let _ = crate::ide::hover(&task, unit, offset);
     }
 }
+
+#[test]
+fn renaming_a_parameter_renames_named_arguments() {
+    let src = "==> a.mod\nMODULE a\n  PROC Grip(\\switch fa$0st, num force)\n    IF Present(fast) TPWrite \"f\";\n  ENDPROC\nENDMODULE\n==> b.mod\nMODULE b\n  PROC main()\n    Grip \\fast, force:=2;\n    Grip 1;\n  ENDPROC\nENDMODULE\n";
+    let (task, unit, offset) = fixture(src);
+    let edits = rename(&task, unit, offset, "quick").unwrap_or_else(|e| panic!("{e}"));
+    let summary: Vec<(String, usize)> = edits.iter().map(|(p, e)| (p.clone(), e.len())).collect();
+    assert_eq!(summary, vec![("t/a.mod".into(), 2), ("t/b.mod".into(), 1)]);
+}
