@@ -48,3 +48,18 @@ fn format_corpus(bencher: Bencher<'_, '_>) {
         }
     });
 }
+
+/// The parse alone over the same files: the part of formatting that is
+/// tree-sitter's.
+#[divan::bench(sample_count = 10)]
+fn parse_only(bencher: Bencher<'_, '_>) {
+    let Some((texts, total)) = corpus() else {
+        return;
+    };
+    let mut parser = rapid_analyzer::syntax::parser();
+    bencher.counter(BytesCount::new(*total)).bench_local(|| {
+        for text in texts {
+            divan::black_box(rapid_analyzer::syntax::parse(&mut parser, text, None));
+        }
+    });
+}
