@@ -250,11 +250,11 @@ pub(crate) fn call_at(bf: &Before) -> Option<CallCx> {
             b'(' => {
                 if depth == 0 {
                     let mut j = i - 1;
-                    while j > 0 && b[j - 1] == b' ' {
+                    while j > stmt && b[j - 1] == b' ' {
                         j -= 1;
                     }
                     let end = j;
-                    while j > 0 && is_ident(b[j - 1]) {
+                    while j > stmt && is_ident(b[j - 1]) {
                         j -= 1;
                     }
                     if j < end && !b[j].is_ascii_digit() {
@@ -262,7 +262,7 @@ pub(crate) fn call_at(bf: &Before) -> Option<CallCx> {
                         let lower = name.to_ascii_lowercase();
                         if !["proc", "func", "trap", "if", "while", "elseif"]
                             .contains(&lower.as_str())
-                            && !is_routine_header(&b[stmt..j])
+                            && !is_routine_header(b.get(stmt..j).unwrap_or_default())
                         {
                             return Some(build(bf, name, j, true, &b[i..]));
                         }

@@ -101,3 +101,15 @@ fn parameter_name_hints_for_positional_arguments() {
         ]
     );
 }
+
+#[test]
+fn value_hints_after_computed_constants() {
+    let src = "MODULE m\n  CONST num a := 5;\n  CONST num b := a * 1.5;\n  CONST num c := 3;\n  VAR num v := a + 1;\nENDMODULE\n";
+    let (task, unit, _) = fixture(src);
+    let hints: Vec<(usize, String)> = inlay_hints(&task, unit, 0..src.len())
+        .into_iter()
+        .map(|h| (h.offset, h.label))
+        .collect();
+    let after = src.find("a * 1.5").unwrap_or(0) + "a * 1.5".len();
+    assert_eq!(hints, vec![(after, "= 7.5".to_owned())]);
+}

@@ -76,3 +76,22 @@ fn robtargets_are_decoded() {
         "{h}"
     );
 }
+
+#[test]
+fn constant_expressions_show_their_value() {
+    let h = hover_text(
+        "MODULE m\n  CONST num half := 1 / 2;\n  PROC main()\n    TPWrite \"\"\\Num:=Sqrt(2)$0;\n  ENDPROC\nENDMODULE\n",
+    );
+    assert!(h.contains("= 1.41421"), "{h}");
+    let h = hover_text(
+        "MODULE m\n  CONST num half := 1 / 2;\n  PROC main()\n    TPWrite \"\"\\Num:=ha$0lf;\n  ENDPROC\nENDMODULE\n",
+    );
+    assert!(
+        h.contains("CONST num half := 1 / 2;") && h.contains("= 0.5"),
+        "{h}"
+    );
+    let h = hover_text(
+        "MODULE m\n  CONST orient o := OrientZYX(90, 0, 0);\n  PROC main()\n    TPWrite \"\"\\Orient:=o$0;\n  ENDPROC\nENDMODULE\n",
+    );
+    assert!(h.contains("rz = 90°"), "{h}");
+}
