@@ -94,7 +94,7 @@ pub struct CheckArgs {
 
 /// Files larger than this are not modules a controller would load; they are
 /// skipped with a message rather than parsed.
-pub const MAX_FILE_BYTES: u64 = 64 * 1024 * 1024;
+pub const MAX_FILE_BYTES: u64 = 8 * 1024 * 1024;
 
 /// A file that was checked, with its diagnostics in source order.
 pub struct Checked {
@@ -171,7 +171,13 @@ fn run_inner(args: CheckArgs, stderr: &mut impl Write) -> Result<ExitCode, Strin
     };
     let (config, config_path) = crate::config::resolve_with_path(args.config.as_deref(), &paths[0])
         .map_err(|e| e.to_string())?;
-    let root = match config_path.as_deref().and_then(Path::parent) {
+    let root = match config_path.as_deref().and_then(Path::parent).map(|dir| {
+        if dir.as_os_str().is_empty() {
+            Path::new(".")
+        } else {
+            dir
+        }
+    }) {
         Some(dir) => normalize(&std::path::absolute(dir).map_err(|e| e.to_string())?),
         None => normalize(&std::env::current_dir().map_err(|e| e.to_string())?),
     };
@@ -193,11 +199,11 @@ fn run_inner(args: CheckArgs, stderr: &mut impl Write) -> Result<ExitCode, Strin
     );
     let mut failed = false;
     for (path, why) in &found.errors {
-        let _ = writeln!(stderr, "rapid: {}: {why}", path.display());
+        let _ = writeln!(stderr, "rapid: {}: {why}", output::display_path(path));
         failed = true;
     }
     for (path, why) in &found.warnings {
-        let _ = writeln!(stderr, "rapid: {}: {why}", path.display());
+        let _ = writeln!(stderr, "rapid: {}: {why}", output::display_path(path));
     }
     let extra_paths: Vec<PathBuf> = config
         .extra_paths
@@ -254,7 +260,7 @@ fn run_inner(args: CheckArgs, stderr: &mut impl Write) -> Result<ExitCode, Strin
             }
             Outcome::Skipped(path, why) => {
                 failed |= why.is_error();
-                let _ = writeln!(stderr, "rapid: {}: {why}", path.display());
+                let _ = writeln!(stderr, "rapid: {}: {why}", output::display_path(&path));
                 report.skipped.push((path, why.to_string()));
             }
         }
@@ -325,7 +331,7 @@ fn fix_outcomes(
         let Some((text, n)) = apply_safe_fixes(&c.file.text, &reported) else {
             continue;
         };
-        let path = c.file.path.display();
+        let path = output::display_path(&c.file.path);
         match c.file.encoding.encode(&text) {
             Ok(bytes) => match std::fs::write(&c.file.path, bytes) {
                 Ok(()) => {

@@ -33,7 +33,7 @@ pub fn locate<'a>(checked: &Checked, d: &'a Diagnostic) -> Located<'a> {
     let (line, column) = checked.file.human(d.range.start);
     let (end_line, end_column) = checked.file.human(d.range.end);
     Located {
-        file: checked.file.path.display().to_string(),
+        file: display_path(&checked.file.path),
         line,
         column,
         end_line,
@@ -53,13 +53,18 @@ fn all(report: &Report) -> impl Iterator<Item = (&Checked, &Diagnostic)> {
         .flat_map(|c| c.diagnostics.iter().map(move |d| (c, d)))
 }
 
-/// Where the rule is documented.
-pub fn help_uri(rule: &Rule) -> String {
-    format!(
-        "{}/blob/main/docs/diagnostics.md#{}",
-        env!("CARGO_PKG_REPOSITORY"),
-        anchor(rule)
-    )
+/// The project's home (from the package metadata; may be empty).
+const REPOSITORY: &str = env!("CARGO_PKG_REPOSITORY");
+
+/// Where the rule is documented, when the package names its repository.
+pub fn help_uri(rule: &Rule) -> Option<String> {
+    (!REPOSITORY.is_empty()).then(|| {
+        format!(
+            "{}/blob/main/docs/diagnostics.md#{}",
+            REPOSITORY.trim_end_matches('/'),
+            anchor(rule)
+        )
+    })
 }
 
 pub fn json(out: &mut impl Write, report: &Report) -> io::Result<()> {
@@ -172,7 +177,7 @@ fn render_one(renderer: &Renderer, c: &Checked, d: &Diagnostic) -> String {
         Severity::Info => Level::INFO,
         Severity::Hint => Level::HELP,
     };
-    let path = file.path.display().to_string();
+    let path = display_path(&file.path);
     let title = format!("{} [{}]", d.message, d.rule.name);
     let report = [level.primary_title(title).id(d.rule.code).element(
         Snippet::source(source)
@@ -184,11 +189,11 @@ fn render_one(renderer: &Renderer, c: &Checked, d: &Diagnostic) -> String {
 }
 
 /// A path as given on the command line, without a leading `./`.
-fn display_path(path: &Path) -> String {
+pub fn display_path(path: &Path) -> String {
     let s = path.display().to_string();
     match s.strip_prefix("./") {
-        Some(rest) => rest.to_owned(),
-        None => s,
+        Some(rest) if !rest.is_empty() => rest.to_owned(),
+        _ => s,
     }
 }
 
@@ -276,16 +281,19 @@ fn what_it_checks(doc: &str) -> String {
 
 fn sarif_rule(rule: &Rule) -> Value {
     let full = what_it_checks(rule.doc);
-    json!({
+    let mut value = json!({
         "id": rule.code,
         "name": rule.name,
         "shortDescription": {"text": rule.summary},
         "fullDescription": {"text": if full.is_empty() { rule.summary.to_owned() } else { full }},
         "help": {"text": doc_markdown(rule), "markdown": doc_markdown(rule)},
-        "helpUri": help_uri(rule),
         "defaultConfiguration": {"level": sarif_level(rule.severity)},
         "properties": {"tags": [rule.severity.as_str()]},
-    })
+    });
+    if let Some(uri) = help_uri(rule) {
+        value["helpUri"] = json!(uri);
+    }
+    value
 }
 
 /// `path` relative to `root` as a URI reference (percent-encoded, `/`
@@ -394,16 +402,19 @@ pub fn sarif(out: &mut impl Write, report: &Report, root: &Path) -> io::Result<(
         "file://{}/",
         encode_uri_path(root.to_string_lossy().trim_end_matches(['/', '\\']))
     );
+    let mut driver = json!({
+        "name": "rapid",
+        "version": env!("CARGO_PKG_VERSION"),
+        "rules": rules,
+    });
+    if !REPOSITORY.is_empty() {
+        driver["informationUri"] = json!(REPOSITORY);
+    }
     let log = json!({
         "$schema": "https://json.schemastore.org/sarif-2.1.0.json",
         "version": "2.1.0",
         "runs": [{
-            "tool": {"driver": {
-                "name": "rapid",
-                "version": env!("CARGO_PKG_VERSION"),
-                "informationUri": env!("CARGO_PKG_REPOSITORY"),
-                "rules": rules,
-            }},
+            "tool": {"driver": driver},
             "invocations": [{
                 "executionSuccessful": true,
                 "toolExecutionNotifications": notifications,

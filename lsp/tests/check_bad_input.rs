@@ -1,0 +1,174 @@
+//! `rapid check` on input that is not a tidy folder of modules: each case
+//! gets a clear message, no panic, and the other files are still checked.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output, Stdio};
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+fn scratch(name: &str) -> PathBuf {
+    static N: AtomicUsize = AtomicUsize::new(0);
+    let dir = std::env::temp_dir().join(format!(
+        "rapid-check-bad-{}-{}-{name}",
+        std::process::id(),
+        N.fetch_add(1, Ordering::Relaxed)
+    ));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("scratch folder");
+    dir
+}
+
+fn rapid(dir: &Path, args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_rapid"))
+        .arg("check")
+        .args(args)
+        .current_dir(dir)
+        .env_remove("CI")
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .output()
+        .expect("the rapid binary runs")
+}
+
+fn text(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).into_owned()
+}
+
+fn show(out: &Output) -> String {
+    format!(
+        "exit {:?}\n--- stdout\n{}--- stderr\n{}",
+        out.status.code(),
+        text(&out.stdout),
+        text(&out.stderr)
+    )
+}
+
+/// A module with one known finding, so "the rest is still checked" shows.
+const GOOD: &str = "MODULE Good\n    PROC main()\n        Missing;\n    ENDPROC\nENDMODULE\n";
+
+/// Checks `dir` and asserts the good module was checked, no panic
+/// happened, and stderr says `message` about the bad entry.
+fn assert_rest_checked(dir: &Path, message: &str, code: i32) -> Output {
+    let out = rapid(dir, &["--format", "concise"]);
+    let stdout = text(&out.stdout);
+    let stderr = text(&out.stderr);
+    assert!(!stderr.contains("panicked"), "{}", show(&out));
+    assert!(
+        stdout.contains("Good.mod:3:9: warning[W101]"),
+        "{}",
+        show(&out)
+    );
+    assert!(stderr.contains(message), "{}", show(&out));
+    assert_eq!(out.status.code(), Some(code), "{}", show(&out));
+    out
+}
+
+#[test]
+fn binary_and_encrypted_modules_are_skipped() {
+    let dir = scratch("binary");
+    std::fs::write(dir.join("Good.mod"), GOOD).expect("written");
+    std::fs::write(dir.join("Blob.mod"), b"MODULE\0\x01\x02").expect("written");
+    std::fs::write(dir.join("Secret.sys"), b"\xFD\x12\x34\x56\x78").expect("written");
+    assert_rest_checked(&dir, "Blob.mod: skipped: a binary file", 0);
+    assert_rest_checked(&dir, "Secret.sys: skipped: an encrypted module", 0);
+    // They are listed as skipped in machine formats too.
+    let out = rapid(&dir, &["--format", "junit"]);
+    assert!(text(&out.stdout).contains("<skipped message=\"skipped: a binary file"));
+    let out = rapid(&dir, &["--format", "sarif"]);
+    let log: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    let notes = log["runs"][0]["invocations"][0]["toolExecutionNotifications"]
+        .as_array()
+        .expect("notifications");
+    assert_eq!(notes.len(), 2, "{log}");
+}
+
+#[test]
+fn a_broken_symbolic_link_is_an_io_error() {
+    let dir = scratch("broken-link");
+    std::fs::write(dir.join("Good.mod"), GOOD).expect("written");
+    std::os::unix::fs::symlink(dir.join("gone.mod"), dir.join("Dangling.mod")).expect("link");
+    // A dangling link that is no module is nobody's business.
+    std::os::unix::fs::symlink(dir.join("gone.txt"), dir.join("notes.txt")).expect("link");
+    let out = assert_rest_checked(&dir, "Dangling.mod: a broken symbolic link", 2);
+    assert!(!text(&out.stderr).contains("notes.txt"), "{}", show(&out));
+}
+
+#[test]
+fn an_unreadable_file_is_an_io_error() {
+    let dir = scratch("unreadable");
+    std::fs::write(dir.join("Good.mod"), GOOD).expect("written");
+    let locked = dir.join("Locked.mod");
+    std::fs::write(&locked, GOOD).expect("written");
+    use std::os::unix::fs::PermissionsExt;
+    std::fs::set_permissions(&locked, std::fs::Permissions::from_mode(0o000)).expect("chmod");
+    if std::fs::read(&locked).is_ok() {
+        // Running as root: permissions do not stop reading. A path that is
+        // missing is the unreadable file then.
+        let out = rapid(&dir, &["--format", "concise", "Good.mod", "Missing.mod"]);
+        assert_eq!(out.status.code(), Some(2), "{}", show(&out));
+        assert!(text(&out.stdout).contains("Good.mod:3:9"), "{}", show(&out));
+        assert!(
+            text(&out.stderr).contains("Missing.mod: No such file"),
+            "{}",
+            show(&out)
+        );
+    } else {
+        assert_rest_checked(&dir, "Locked.mod: cannot read it: Permission denied", 2);
+    }
+}
+
+#[test]
+fn an_empty_folder_says_so() {
+    let dir = scratch("empty");
+    std::fs::create_dir_all(dir.join("nothing/here")).expect("folder");
+    let out = rapid(&dir, &["nothing"]);
+    assert_eq!(out.status.code(), Some(0), "{}", show(&out));
+    assert!(
+        text(&out.stderr).contains("no RAPID files found in nothing"),
+        "{}",
+        show(&out)
+    );
+    assert!(
+        text(&out.stdout).contains("Checked 0 files"),
+        "{}",
+        show(&out)
+    );
+}
+
+#[test]
+fn a_folder_cycle_through_links_is_walked_once() {
+    let dir = scratch("cycle");
+    std::fs::create_dir_all(dir.join("a/b")).expect("folder");
+    std::fs::write(dir.join("a/b/Good.mod"), GOOD).expect("written");
+    std::os::unix::fs::symlink(dir.join("a"), dir.join("a/b/loop")).expect("link");
+    let out = assert_rest_checked(&dir, "a link leads back to a folder above it", 0);
+    assert_eq!(
+        text(&out.stdout).matches("Good.mod").count(),
+        1,
+        "{}",
+        show(&out)
+    );
+}
+
+#[test]
+fn a_50_mb_file_is_handled() {
+    let dir = scratch("huge");
+    std::fs::write(dir.join("Good.mod"), GOOD).expect("written");
+    // 50 MB of declarations: generated, not read from anywhere.
+    let mut huge = String::from("MODULE Huge\n");
+    let line = "    CONST num c := 1; ! a constant with a comment to make the line long enough\n";
+    while huge.len() < 50_000_000 {
+        huge.push_str(line);
+    }
+    huge.push_str("ENDMODULE\n");
+    std::fs::write(dir.join("Huge.mod"), &huge).expect("written");
+    let out = rapid(&dir, &["--format", "concise", "--select", "E001"]);
+    assert!(!text(&out.stderr).contains("panicked"), "{}", show(&out));
+    assert!(
+        text(&out.stderr).contains("Huge.mod: skipped: 50.0 MB is more than the 8 MB"),
+        "{}",
+        show(&out)
+    );
+    assert!(text(&out.stdout).is_empty(), "{}", show(&out));
+    assert_eq!(out.status.code(), Some(0), "{}", show(&out));
+}

@@ -1,0 +1,473 @@
+//! `rapid check` and `rapid rules` end to end: the built binary on small
+//! programs written into scratch folders.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output, Stdio};
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+/// A fresh empty folder for one test.
+fn scratch(name: &str) -> PathBuf {
+    static N: AtomicUsize = AtomicUsize::new(0);
+    let dir = std::env::temp_dir().join(format!(
+        "rapid-check-{}-{}-{name}",
+        std::process::id(),
+        N.fetch_add(1, Ordering::Relaxed)
+    ));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("scratch folder");
+    dir
+}
+
+/// Writes `files` (`path`, text) below `dir`.
+fn write(dir: &Path, files: &[(&str, &str)]) {
+    for (path, text) in files {
+        let path = dir.join(path);
+        std::fs::create_dir_all(path.parent().expect("a parent")).expect("folder");
+        std::fs::write(path, text).expect("written");
+    }
+}
+
+fn rapid(dir: &Path, args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_rapid"))
+        .args(args)
+        .current_dir(dir)
+        .env_remove("CI")
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .output()
+        .expect("the rapid binary runs")
+}
+
+fn text(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).into_owned()
+}
+
+/// `code: stdout` then stderr, for snapshots and messages.
+fn show(out: &Output) -> String {
+    format!(
+        "exit {}\n--- stdout\n{}--- stderr\n{}",
+        out.status.code().unwrap_or(-1),
+        text(&out.stdout),
+        text(&out.stderr)
+    )
+}
+
+const MAIN: &str = "MODULE Main\n\
+    PROC main()\n\
+        VAR num x;\n\
+        VAR num unused;\n\
+        x = 1;\n\
+        helper \"a\";\n\
+        Missing;\n\
+        TPWrite \"\" \\Num:=x;\n\
+    ENDPROC\n\
+ENDMODULE\n";
+
+const LIB: &str = "MODULE Lib\n\
+    PROC helper(string s)\n\
+        TPWrite s;\n\
+    ENDPROC\n\
+ENDMODULE\n";
+
+/// A task with one error (E003), an unused datum (W201) and an unknown
+/// routine (W101).
+fn program(name: &str) -> PathBuf {
+    let dir = scratch(name);
+    write(&dir, &[("prog/Main.mod", MAIN), ("prog/Lib.mod", LIB)]);
+    dir
+}
+
+/// The (code, line) of each diagnostic, from `--format json`.
+fn findings(dir: &Path, args: &[&str]) -> Vec<(String, u64)> {
+    let mut all = vec!["check", "--format", "json"];
+    all.extend_from_slice(args);
+    let out = rapid(dir, &all);
+    let json: serde_json::Value =
+        serde_json::from_slice(&out.stdout).unwrap_or_else(|e| panic!("{e}: {}", show(&out)));
+    json.as_array()
+        .expect("an array")
+        .iter()
+        .map(|d| {
+            (
+                d["code"].as_str().expect("code").to_owned(),
+                d["line"].as_u64().expect("line"),
+            )
+        })
+        .collect()
+}
+
+fn codes(found: &[(String, u64)]) -> Vec<&str> {
+    found.iter().map(|(c, _)| c.as_str()).collect()
+}
+
+#[test]
+fn every_format_on_a_small_program() {
+    let dir = program("formats");
+    for format in ["human", "concise", "json", "github", "junit"] {
+        let out = rapid(&dir, &["check", "prog", "--format", format]);
+        insta::assert_snapshot!(format!("format_{format}"), show(&out));
+    }
+}
+
+#[test]
+fn sarif_is_valid_against_the_schema_and_has_what_github_reads() {
+    let dir = program("sarif");
+    let out = rapid(&dir, &["check", "--format", "sarif"]);
+    assert_eq!(out.status.code(), Some(1), "{}", show(&out));
+    let log: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    let schema: serde_json::Value =
+        serde_json::from_str(include_str!("data/sarif-schema-2.1.0.json"))
+            .expect("the schema is JSON");
+    let validator = jsonschema::validator_for(&schema).expect("the schema compiles");
+    let errors: Vec<String> = validator
+        .iter_errors(&log)
+        .map(|e| format!("{} at {}", e, e.instance_path()))
+        .collect();
+    assert!(errors.is_empty(), "{errors:#?}");
+    // The schema allows much; GitHub code scanning needs these.
+    let run = &log["runs"][0];
+    let rules = run["tool"]["driver"]["rules"].as_array().expect("rules");
+    let w201 = rules
+        .iter()
+        .find(|r| r["id"] == "W201")
+        .expect("W201 is described");
+    assert_eq!(w201["name"], "unused-data");
+    assert_eq!(w201["defaultConfiguration"]["level"], "warning");
+    assert!(
+        w201["helpUri"]
+            .as_str()
+            .expect("helpUri")
+            .ends_with("docs/diagnostics.md#w201-unused-data")
+    );
+    assert!(
+        w201["help"]["markdown"]
+            .as_str()
+            .expect("help")
+            .contains("### Example")
+    );
+    assert!(
+        !w201["fullDescription"]["text"]
+            .as_str()
+            .expect("text")
+            .is_empty()
+    );
+    let results = run["results"].as_array().expect("results");
+    let codes: Vec<&str> = results
+        .iter()
+        .map(|r| r["ruleId"].as_str().expect("id"))
+        .collect();
+    assert_eq!(codes, ["W201", "E003", "W101"]);
+    let e003 = &results[1];
+    assert_eq!(e003["level"], "error");
+    let index = e003["ruleIndex"].as_u64().expect("index") as usize;
+    assert_eq!(rules[index]["id"], "E003");
+    let location = &e003["locations"][0]["physicalLocation"];
+    assert_eq!(location["artifactLocation"]["uri"], "prog/Main.mod");
+    assert_eq!(location["artifactLocation"]["uriBaseId"], "%SRCROOT%");
+    assert_eq!(
+        location["region"],
+        serde_json::json!({"startLine": 5, "startColumn": 3, "endLine": 5, "endColumn": 4})
+    );
+    assert!(
+        run["originalUriBaseIds"]["%SRCROOT%"]["uri"]
+            .as_str()
+            .expect("root")
+            .starts_with("file:///")
+    );
+    assert!(e003["partialFingerprints"]["rapidLineHash/v1"].is_string());
+}
+
+#[test]
+fn output_is_deterministic_whatever_the_threads() {
+    let dir = scratch("determinism");
+    for i in 0..24 {
+        let task = i % 3;
+        write(
+            &dir,
+            &[(
+                &format!("t{task}/M{i}.mod"),
+                &format!(
+                    "MODULE M{i}\n    PROC p{i}()\n        VAR num a{i};\n        q{i};\n        n{i} := {i};\n    ENDPROC\nENDMODULE\n"
+                ),
+            )],
+        );
+    }
+    for format in ["human", "sarif", "junit"] {
+        let one = rapid(&dir, &["check", "--format", format, "--threads", "1"]);
+        let two = rapid(&dir, &["check", "--format", format, "--threads", "2"]);
+        let again = rapid(&dir, &["check", "--format", format, "--threads", "2"]);
+        assert!(!one.stdout.is_empty());
+        assert_eq!(text(&one.stdout), text(&two.stdout), "{format}");
+        assert_eq!(text(&two.stdout), text(&again.stdout), "{format}");
+    }
+    let found = findings(&dir, &[]);
+    assert_eq!(found.len(), 24 * 3, "{found:?}");
+}
+
+#[test]
+fn exit_codes_follow_the_flags() {
+    let dir = program("exit");
+    let code = |args: &[&str]| rapid(&dir, args).status.code();
+    assert_eq!(code(&["check"]), Some(1));
+    assert_eq!(code(&["check", "--exit-zero"]), Some(0));
+    assert_eq!(code(&["check", "--ignore", "E003"]), Some(0));
+    assert_eq!(
+        code(&["check", "--ignore", "E003", "--error-on-warnings"]),
+        Some(1)
+    );
+    assert_eq!(
+        code(&[
+            "check",
+            "--select",
+            "E003,W201",
+            "--ignore",
+            "E,W",
+            "--error-on-warnings"
+        ]),
+        Some(0)
+    );
+    assert_eq!(code(&["check", "--select", "E999"]), Some(2));
+    assert_eq!(code(&["check", "no-such-folder"]), Some(2));
+    assert_eq!(code(&["check", "--format", "yaml"]), Some(2));
+}
+
+#[test]
+fn select_ignore_and_severity_from_the_command_line_and_rapid_toml() {
+    let dir = program("config");
+    assert_eq!(codes(&findings(&dir, &[])), ["W201", "E003", "W101"]);
+    assert_eq!(codes(&findings(&dir, &["--select", "W"])), ["W201", "W101"]);
+    assert_eq!(
+        codes(&findings(&dir, &["--ignore", "unused-data,E0"])),
+        ["W101"]
+    );
+    write(
+        &dir,
+        &[(
+            "rapid.toml",
+            "[lint]\nignore = [\"W1\"]\n[lint.severity]\nunused-data = \"error\"\n",
+        )],
+    );
+    assert_eq!(codes(&findings(&dir, &[])), ["W201", "E003"]);
+    let json = rapid(&dir, &["check", "--format", "json"]);
+    let first: serde_json::Value = serde_json::from_slice(&json.stdout).expect("JSON");
+    assert_eq!(first[0]["severity"], "error", "{}", show(&json));
+    // Found upwards from a checked sub-folder too.
+    assert_eq!(codes(&findings(&dir, &["prog/Main.mod"])), ["W201", "E003"]);
+    // The command line's --select replaces the file's select; its ignore adds.
+    assert_eq!(codes(&findings(&dir, &["--select", "W1,E"])), ["E003"]);
+}
+
+#[test]
+fn per_path_overrides_and_excludes() {
+    let dir = scratch("overrides");
+    write(
+        &dir,
+        &[
+            ("new/Main.mod", MAIN),
+            ("new/Lib.mod", LIB),
+            ("legacy/Main.mod", MAIN),
+            ("legacy/Lib.mod", LIB),
+            ("backup_old/Main.mod", MAIN),
+            ("new/gen/Main.mod", MAIN),
+            (
+                "rapid.toml",
+                "exclude = [\"backup_old/**\"]\n\n[[lint.overrides]]\npaths = [\"legacy/**\"]\nignore = [\"W\"]\n\
+                 [lint.overrides.severity]\nE003 = \"warning\"\n",
+            ),
+        ],
+    );
+    let out = rapid(
+        &dir,
+        &[
+            "check",
+            "--format",
+            "concise",
+            "--exclude",
+            "gen",
+            "--exit-zero",
+        ],
+    );
+    insta::assert_snapshot!(show(&out));
+    // An excluded file named explicitly (as pre-commit does) is left out.
+    let out = rapid(&dir, &["check", "backup_old/Main.mod"]);
+    assert_eq!(out.status.code(), Some(0), "{}", show(&out));
+    assert!(
+        text(&out.stderr).contains("no RAPID files found"),
+        "{}",
+        show(&out)
+    );
+}
+
+#[test]
+fn configuration_errors_name_the_file_line_and_key() {
+    let dir = program("bad-config");
+    write(
+        &dir,
+        &[(
+            "rapid.toml",
+            "[lint]\nselect = [\"E\"]\nignored = [\"W\"]\n",
+        )],
+    );
+    let out = rapid(&dir, &["check"]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = text(&out.stderr);
+    assert!(
+        err.contains("rapid.toml:3: unknown field `ignored`"),
+        "{err}"
+    );
+    write(
+        &dir,
+        &[("rapid.toml", "[lint]\nselect = [\"E\", \"unused-dat\"]\n")],
+    );
+    let out = rapid(&dir, &["check"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(
+        text(&out.stderr)
+            .contains("rapid.toml:2: `select`: no rule has the code or name `unused-dat`"),
+        "{}",
+        show(&out)
+    );
+    // --config names another file; the found one is not read.
+    write(&dir, &[("other.toml", "[lint]\nselect = [\"E003\"]\n")]);
+    assert_eq!(
+        codes(&findings(&dir, &["--config", "other.toml"])),
+        ["E003"]
+    );
+    let out = rapid(&dir, &["check", "--config", "missing.toml"]);
+    assert_eq!(out.status.code(), Some(2), "{}", show(&out));
+}
+
+#[test]
+fn inline_suppressions() {
+    let dir = scratch("suppress");
+    write(
+        &dir,
+        &[(
+            "p/Main.mod",
+            "MODULE Main\n\
+                 ! rapid: ignore-module[unresolved-name]\n\
+                 PROC main()\n\
+                     VAR num x; ! rapid: ignore[W201]\n\
+                     ! rapid: ignore[E003, E001]\n\
+                     x = 1;\n\
+                     VAR num y;\n\
+                     Missing;\n\
+                     y = 2;\n\
+                 ENDPROC\n\
+                 ENDMODULE\n",
+        )],
+    );
+    let found = findings(&dir, &[]);
+    assert!(
+        found
+            .iter()
+            .all(|(c, line)| c != "W101" && *line != 4 && *line != 6),
+        "{found:?}"
+    );
+    assert!(found.contains(&("E003".to_owned(), 9)), "{found:?}");
+}
+
+#[test]
+fn extra_paths_join_the_task_but_are_not_reported() {
+    let dir = scratch("extra");
+    write(
+        &dir,
+        &[
+            (
+                "src/Main.mod",
+                "MODULE Main\n    PROC main()\n        helper;\n        SetDO doGrip, 1;\n    ENDPROC\nENDMODULE\n",
+            ),
+            (
+                "controller/Shared.sys",
+                "MODULE Shared(SYSMODULE)\n    PROC helper()\n        VAR num unused;\n    ENDPROC\nENDMODULE\n",
+            ),
+            (
+                "controller/EIO.cfg",
+                "EIO:CFG_1.0:6:1::\n#\nEIO_SIGNAL:\n\n      -Name \"doGrip\" -SignalType \"DO\" -Device \"d652\"\n",
+            ),
+        ],
+    );
+    let alone = findings(&dir, &["src"]);
+    assert!(alone.iter().any(|(c, _)| c == "W101"), "{alone:?}");
+    let with_extra = findings(&dir, &["src", "--extra-path", "controller"]);
+    assert!(with_extra.is_empty(), "{with_extra:?}");
+    write(&dir, &[("rapid.toml", "extra-paths = [\"controller\"]\n")]);
+    let from_config = findings(&dir, &["src"]);
+    assert!(from_config.is_empty(), "{from_config:?}");
+}
+
+#[test]
+fn fix_applies_safe_fixes_in_the_files_encoding_and_line_endings() {
+    let dir = scratch("fix");
+    // Latin-1, CRLF, no final newline.
+    let source: &[u8] = b"MODULE M\r\n  ! caf\xE9\r\n  PROC main()\r\n    VAR num x;\r\n    x = 1;\r\n    TPWrite \"\" \\Num:=x;\r\n    Missing;\r\n  ENDPROC\r\nENDMODULE";
+    std::fs::write(dir.join("M.mod"), source).expect("written");
+    let out = rapid(&dir, &["check", "--fix", "--format", "concise"]);
+    assert_eq!(out.status.code(), Some(0), "{}", show(&out));
+    let fixed = std::fs::read(dir.join("M.mod")).expect("read");
+    let at = source
+        .windows(6)
+        .position(|w| w == b"x = 1;")
+        .expect("the assignment");
+    let expected = [&source[..at], b"x := 1;", &source[at + 6..]].concat();
+    assert_eq!(fixed, expected, "{}", text(&fixed));
+    assert!(
+        text(&out.stderr).contains("M.mod: fixed 1 problem"),
+        "{}",
+        show(&out)
+    );
+    // What remains is printed; the fixed problem is not.
+    let stdout = text(&out.stdout);
+    assert!(
+        stdout.contains("W101") && !stdout.contains("E003"),
+        "{stdout}"
+    );
+    // Nothing left to fix: the file is not touched.
+    let out = rapid(&dir, &["check", "--fix"]);
+    assert!(!text(&out.stderr).contains("fixed"), "{}", show(&out));
+}
+
+#[test]
+fn statistics_count_per_rule() {
+    let dir = program("statistics");
+    let out = rapid(&dir, &["check", "--statistics"]);
+    assert_eq!(out.status.code(), Some(1));
+    insta::assert_snapshot!(show(&out));
+    let out = rapid(&dir, &["check", "--statistics", "--format", "json"]);
+    let json: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    assert_eq!(json.as_array().map(Vec::len), Some(3), "{json}");
+}
+
+#[test]
+fn rules_lists_and_describes() {
+    let dir = scratch("rules");
+    let out = rapid(&dir, &["rules"]);
+    assert_eq!(out.status.code(), Some(0));
+    let list = text(&out.stdout);
+    for rule in ["E001  syntax-error", "W201  unused-data"] {
+        assert!(list.contains(rule), "{list}");
+    }
+    let out = rapid(&dir, &["rules", "unused-data"]);
+    let one = text(&out.stdout);
+    assert!(
+        one.starts_with("W201 unused-data (default severity: warning)\n"),
+        "{one}"
+    );
+    assert!(one.contains("### Why"), "{one}");
+    assert_eq!(text(&rapid(&dir, &["rules", "w201"]).stdout), one);
+    let out = rapid(&dir, &["rules", "--format", "json"]);
+    let json: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    let all = json.as_array().expect("array");
+    assert_eq!(all.len(), list.lines().count());
+    assert!(
+        all.iter()
+            .all(|r| r["code"].is_string() && r["doc"].is_string())
+    );
+    let out = rapid(&dir, &["rules", "E003", "--format", "json"]);
+    let json: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    assert_eq!(json["name"], "equals-for-assignment");
+    let out = rapid(&dir, &["rules", "nonsense"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(text(&out.stderr).contains("no rule has the code or name `nonsense`"));
+}
