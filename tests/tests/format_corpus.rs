@@ -2,7 +2,8 @@
 //! without errors: the result parses without errors, has the same tokens
 //! (keywords compared in upper case, comments without trailing blanks), keeps
 //! every comment on a line with the same neighbours, and formatting it again
-//! changes nothing. Prints how many files were formatted, how many were
+//! changes nothing (also with a narrow line width, where many calls are
+//! wrapped). Prints how many files were formatted, how many were
 //! already formatted, and the time taken.
 //!
 //! The corpus is read from `RAPID_CORPUS` or `../shared/corpus`; without it
@@ -140,6 +141,16 @@ fn formatting_the_corpus_is_safe_and_stable() {
         }
         if comment_places(&tree, &text) != comment_places(&out_tree, &out) {
             failures.push(format!("{}: a comment moved", path.display()));
+        }
+        // narrow settings wrap far more calls: still stable
+        let narrow = FormatOptions {
+            indent_width: 2,
+            line_width: 60,
+        };
+        if let Ok(once) = format(&text, &narrow)
+            && format(&once, &narrow).as_ref() != Ok(&once)
+        {
+            failures.push(format!("{}: not idempotent at width 60", path.display()));
         }
         match format(&out, &options) {
             Ok(again) if again == out => {}
