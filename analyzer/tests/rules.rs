@@ -324,9 +324,9 @@ fn show() {
     let want = want.to_string_lossy().into_owned();
     for f in fixtures().iter().filter(|f| f.name.contains(&want)) {
         let (_, rendered) = run(f);
-        println!("== {}", f.name);
+        eprintln!("== {}", f.name);
         for r in rendered.values() {
-            println!("{r}");
+            eprintln!("{r}");
         }
     }
 }

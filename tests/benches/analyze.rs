@@ -44,8 +44,11 @@ fn corpus() -> Option<&'static Corpus> {
         .as_ref()
 }
 
+/// Files as (path, text).
+type Files = Vec<(String, String)>;
+
 /// The corpus's `.pgf` and `.cfg` files.
-fn side_files() -> (Vec<(String, String)>, Vec<(String, String)>) {
+fn side_files() -> (Files, Files) {
     let (mut programs, mut configs) = (Vec::new(), Vec::new());
     let Some(dir) = rapid_tests::corpus_dir() else {
         return (programs, configs);

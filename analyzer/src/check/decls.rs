@@ -262,7 +262,6 @@ fn same_persistent(cx: &Cx<'_>, a: ItemRef, b: ItemRef) -> bool {
 
 /// Checks a data declaration of a module or a routine.
 pub(super) fn check_data<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &DataDecl, in_routine: bool) {
-    crate::consteval::check_constant_errors(cx, node);
     check_name_length(cx, &decl.name, decl.name_range.clone());
     if let Some(t) = &decl.ty {
         check_type_name(cx, &t.name, t.range.clone());
@@ -295,6 +294,9 @@ pub(super) fn check_data<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &DataDecl, i
             let sizes = literal_sizes(cx, decl);
             exprs::check_initial_value(cx, value, &decl_ty(decl), &sizes);
         }
+        // A declaration the parser could not read (e.g. a template's
+        // `{{PORT}}` for the value) has its syntax error already.
+        None if node.has_error() => {}
         None if decl.storage == Storage::Const => {
             cx.report(
                 &rules::missing_initializer::RULE,
