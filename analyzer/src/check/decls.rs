@@ -262,6 +262,7 @@ fn same_persistent(cx: &Cx<'_>, a: ItemRef, b: ItemRef) -> bool {
 
 /// Checks a data declaration of a module or a routine.
 pub(super) fn check_data<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &DataDecl, in_routine: bool) {
+    crate::consteval::check_constant_errors(cx, node);
     check_name_length(cx, &decl.name, decl.name_range.clone());
     if let Some(t) = &decl.ty {
         check_type_name(cx, &t.name, t.range.clone());

@@ -109,6 +109,7 @@ fn check_statement<'t>(cx: &mut Cx<'t>, s: Node<'t>) {
     // parts, whose simple statements are cached in turn.
     if matches!(s.kind(), "assignment" | "procedure_call") {
         cx.cached_statement(s, |cx| {
+            crate::consteval::check_constant_errors(cx, s);
             if s.kind() == "assignment" {
                 assignment(cx, s);
             } else {
@@ -117,6 +118,7 @@ fn check_statement<'t>(cx: &mut Cx<'t>, s: Node<'t>) {
         });
         return;
     }
+    crate::consteval::check_constant_errors(cx, s);
     match s.kind() {
         "if_statement" => {
             if let Some(c) = field(s, "condition") {
