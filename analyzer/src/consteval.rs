@@ -854,6 +854,12 @@ fn type_of_value(v: &Value, expr: &Expr, env: &dyn Env) -> String {
             _ => {}
         }
     }
+    value_type(v)
+}
+
+/// The RAPID type of a value as `rapid eval` and hovers show it: arrays as
+/// `num{2,3}` (an empty or untyped aggregate is `anytype`).
+pub fn value_type(v: &Value) -> String {
     let mut dims = Vec::new();
     let mut cur = v;
     while let Value::Array(items) = cur {

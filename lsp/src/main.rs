@@ -4,6 +4,7 @@
 mod builtins;
 mod check;
 mod config;
+mod eval;
 mod fmt;
 mod rules_cmd;
 mod server;
@@ -26,6 +27,9 @@ struct Cli {
 enum Command {
     /// Check RAPID files and folders and report every problem found.
     Check(check::CheckArgs),
+    /// Compute a RAPID expression as the controller would (constants of a
+    /// program with --file).
+    Eval(eval::EvalArgs),
     /// Rewrite RAPID files in the canonical layout.
     Fmt(fmt::FmtArgs),
     /// Show the built-in catalogue: functions, instructions, data types and
@@ -51,6 +55,7 @@ fn main() -> ExitCode {
     };
     match cli.command {
         Command::Check(args) => check::run(args),
+        Command::Eval(args) => eval::run(args),
         Command::Fmt(args) => fmt::run(args),
         Command::Builtins(args) => builtins::run(args),
         Command::Rules(args) => rules_cmd::run(args),

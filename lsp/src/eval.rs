@@ -1,0 +1,280 @@
+//! `rapid eval`: compute a RAPID expression the way the controller would,
+//! alone or with the data of a program.
+//!
+//! The expression is parsed with the RAPID grammar inside a small synthetic
+//! module, lowered, and evaluated by `rapid_evaluator` through
+//! `rapid_analyzer::consteval`. Exit codes: 0 with a value, 1 when the
+//! evaluation fails (a run-time error, data that is not constant, an unknown
+//! name), 2 for usage errors and expressions that do not parse.
+
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::sync::Arc;
+
+use rapid_analyzer::consteval::{self, EnvOptions};
+use rapid_analyzer::lower::{is_expression, lower_with};
+use rapid_analyzer::task::{Task, Unit, task_key};
+use rapid_analyzer::workspace::Workspace;
+use rapid_evaluator::{EvalError, Evaluation};
+
+use crate::check::discover;
+use crate::source::SourceFile;
+
+/// Output formats of `rapid eval`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Format {
+    /// The value as RAPID writes it (`ValToStr`).
+    Human,
+    /// `{"type": ..., "value": ...}`, or `{"error": {"code": ..., "message": ...}}`.
+    Json,
+}
+
+#[derive(Debug, clap::Args)]
+pub struct EvalArgs {
+    /// The expression, in RAPID syntax: `'Sqrt(2) * Sin(30)'`.
+    #[arg(allow_hyphen_values = true)]
+    pub expr: String,
+    /// Evaluate with the data of a program: a module (names resolve as in
+    /// that module, with the rest of its task) or a folder (the task's
+    /// global data).
+    #[arg(long, value_name = "PATH")]
+    pub file: Option<PathBuf>,
+    /// Use the initial values of VAR and PERS data instead of reporting
+    /// them as not constant; the result is labelled.
+    #[arg(long)]
+    pub initial: bool,
+    /// How to print the result.
+    #[arg(long, value_enum, default_value_t = Format::Human)]
+    pub format: Format,
+}
+
+/// The synthetic module the expression is parsed in.
+const PREFIX: &str = "MODULE rapid_eval_\n  CONST anytype rapid_eval_ := ";
+const SUFFIX: &str = ";\nENDMODULE\n";
+const EVAL_PATH: &str = "<expression>";
+
+pub fn run(args: EvalArgs) -> ExitCode {
+    let mut stderr = anstream::stderr();
+    let expr_text = args.expr.trim();
+    if expr_text.is_empty() {
+        let _ = writeln!(stderr, "rapid: eval: the expression is empty");
+        return ExitCode::from(2);
+    }
+    let source = format!("{PREFIX}{expr_text}{SUFFIX}");
+    let expr_unit = Arc::new(Unit::new(EVAL_PATH.to_owned(), source, None));
+    if let Err(message) = check_syntax(&expr_unit, expr_text) {
+        let _ = writeln!(stderr, "rapid: eval: {message}");
+        return ExitCode::from(2);
+    }
+    let (task, at) = match &args.file {
+        None => (
+            Arc::new(Task::new(String::new(), vec![expr_unit.clone()], None)),
+            None,
+        ),
+        Some(path) => match program(path) {
+            Ok(found) => found,
+            Err(message) => {
+                let _ = writeln!(stderr, "rapid: eval: {}: {message}", path.display());
+                return ExitCode::from(2);
+            }
+        },
+    };
+    let Some(node) = expression_node(&expr_unit, expr_text) else {
+        let _ = writeln!(stderr, "rapid: eval: not a single expression");
+        return ExitCode::from(2);
+    };
+    let module = at.and_then(|(unit, offset)| {
+        let m = task
+            .units
+            .get(unit)?
+            .items
+            .modules
+            .iter()
+            .position(|m| m.range.start <= offset && offset <= m.range.end)?;
+        Some((unit, m))
+    });
+    let expr = lower_with(node, &expr_unit.text, &|name| {
+        consteval::is_builtin_call(&task, module, name)
+    });
+    let options = if args.initial {
+        EnvOptions::initial_values()
+    } else {
+        EnvOptions::default()
+    };
+    let result = consteval::eval_in(&task, at, &expr, None, options);
+    report(&result, args.format)
+}
+
+/// Prints the value or the error; the exit code.
+fn report(result: &Result<Evaluation, EvalError>, format: Format) -> ExitCode {
+    let stdout = std::io::stdout();
+    let mut out = stdout.lock();
+    let mut stderr = anstream::stderr();
+    let written = match (result, format) {
+        (Ok(e), Format::Human) => {
+            if !e.initial_values_used.is_empty() {
+                let _ = writeln!(
+                    stderr,
+                    "rapid: eval: note: computed from the initial value of {} (not constant: it may differ at run time)",
+                    names(&e.initial_values_used)
+                );
+            }
+            writeln!(out, "{}", e.value)
+        }
+        (Ok(e), Format::Json) => {
+            let mut v = serde_json::json!({
+                "type": consteval::value_type(&e.value),
+                "value": e.value.to_string(),
+            });
+            if !e.initial_values_used.is_empty() {
+                v["initial_values"] = serde_json::json!(e.initial_values_used);
+            }
+            writeln!(out, "{v}")
+        }
+        (Err(e), Format::Human) => {
+            let _ = writeln!(stderr, "error: {}: {}", e.code.name(), e.message);
+            Ok(())
+        }
+        (Err(e), Format::Json) => {
+            let v = serde_json::json!({
+                "error": {
+                    "code": e.code.name(),
+                    "message": e.message,
+                    "runtime": e.code.is_runtime(),
+                }
+            });
+            writeln!(out, "{v}")
+        }
+    };
+    if let Err(e) = written.and_then(|()| out.flush())
+        && e.kind() != std::io::ErrorKind::BrokenPipe
+    {
+        let _ = writeln!(stderr, "rapid: eval: cannot write the result: {e}");
+        return ExitCode::from(2);
+    }
+    if result.is_ok() {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    }
+}
+
+fn names(list: &[String]) -> String {
+    let quoted: Vec<String> = list.iter().map(|n| format!("`{n}`")).collect();
+    quoted.join(", ")
+}
+
+/// The expression's node in the synthetic module: the initial value, which
+/// must span the whole expression.
+fn expression_node<'u>(unit: &'u Unit, expr: &str) -> Option<tree_sitter::Node<'u>> {
+    let start = PREFIX.len();
+    let end = start + expr.len();
+    let mut node = unit
+        .tree
+        .root_node()
+        .named_descendant_for_byte_range(start, end)?;
+    loop {
+        if node.byte_range() == (start..end) && is_expression(node.kind()) {
+            let parent = node.parent()?;
+            if parent.kind() == "data_declaration" {
+                return Some(node);
+            }
+        }
+        node = node.parent()?;
+        if node.start_byte() < start || node.end_byte() > end {
+            return None;
+        }
+    }
+}
+
+/// Syntax errors of the synthetic module, told in the user's text.
+fn check_syntax(unit: &Unit, expr: &str) -> Result<(), String> {
+    if let Some(d) = unit.syntax.first() {
+        let offset = d.range.start.saturating_sub(PREFIX.len()).min(expr.len());
+        let column = expr.get(..offset).map_or(offset, |s| s.chars().count()) + 1;
+        let caret = format!("{}^", " ".repeat(column - 1));
+        return Err(format!(
+            "the expression does not parse at column {column}: {}\n  {expr}\n  {caret}",
+            d.message
+        ));
+    }
+    if expression_node(unit, expr).is_none() {
+        return Err("the text is not a single RAPID expression".to_owned());
+    }
+    Ok(())
+}
+
+/// A task, and the unit and offset where names resolve (`None`: the
+/// task's globals).
+type Program = (Arc<Task>, Option<(usize, usize)>);
+
+/// The task of `path` (a module, or a folder) and where names resolve: in a
+/// module, at its start; in a folder, the task's globals.
+fn program(path: &Path) -> Result<Program, String> {
+    let meta = std::fs::metadata(path).map_err(|e| e.to_string())?;
+    let is_file = meta.is_file();
+    let unit_path = |p: &Path| p.to_string_lossy().into_owned();
+    // The folder the task is grouped by (a backup's RAPID/TASKn, or the
+    // module's folder), walked as `rapid check` would walk it.
+    let root = if is_file {
+        let key = task_key(&unit_path(path));
+        if key.is_empty() {
+            PathBuf::from(".")
+        } else {
+            PathBuf::from(key)
+        }
+    } else {
+        path.to_owned()
+    };
+    let found = discover(std::slice::from_ref(&root));
+    let mut files = found.files;
+    if is_file && !files.iter().any(|f| f == path) {
+        files.push(path.to_owned());
+    }
+    let mut workspace = Workspace::new();
+    for cfg in &found.configs {
+        if let Ok(bytes) = std::fs::read(cfg) {
+            workspace.set_config(&unit_path(cfg), &String::from_utf8_lossy(&bytes));
+        }
+    }
+    for file in &files {
+        match SourceFile::read(file) {
+            Ok(source) => workspace.set_file(&unit_path(file), source.text),
+            Err(why) if file == path => return Err(why.to_string()),
+            Err(_) => {}
+        }
+    }
+    if is_file {
+        let me = unit_path(path);
+        let task = workspace.task_of(&me);
+        let unit = task
+            .units
+            .iter()
+            .position(|u| u.path == me)
+            .ok_or("not a RAPID module")?;
+        let module = task.units[unit]
+            .items
+            .modules
+            .first()
+            .ok_or("no module found in the file")?;
+        let at = Some((unit, module.name_range.start));
+        return Ok((task, at));
+    }
+    let tasks = workspace.tasks();
+    let wanted = task_key(&unit_path(&root.join("x.mod")));
+    let task = match tasks.iter().find(|t| t.key == wanted) {
+        Some(t) => t.clone(),
+        None if tasks.len() == 1 => tasks[0].clone(),
+        None if tasks.is_empty() => return Err("no RAPID modules found".to_owned()),
+        None => {
+            let keys: Vec<&str> = tasks.iter().map(|t| t.key.as_str()).take(5).collect();
+            return Err(format!(
+                "the folder holds {} tasks; give one of them (e.g. {})",
+                tasks.len(),
+                keys.join(", ")
+            ));
+        }
+    };
+    Ok((task, None))
+}

@@ -1,0 +1,184 @@
+//! `rapid eval` end to end: the built binary, its output and exit codes.
+
+use std::path::Path;
+use std::process::{Command, Output};
+
+fn repo() -> &'static Path {
+    Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
+}
+
+fn rapid(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_rapid"))
+        .arg("eval")
+        .args(args)
+        .current_dir(repo())
+        .output()
+        .expect("the rapid binary runs")
+}
+
+fn text(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).into_owned()
+}
+
+/// Runs `rapid eval ARGS` and returns (exit code, stdout, stderr).
+fn eval(args: &[&str]) -> (Option<i32>, String, String) {
+    let out = rapid(args);
+    (out.status.code(), text(&out.stdout), text(&out.stderr))
+}
+
+/// Each case: the arguments and the expected stdout (exit code 0).
+#[test]
+fn values_print_as_rapid_writes_them() {
+    let cases: &[(&[&str], &str)] = &[
+        (&["Sqrt(2) * Sin(30)"], "0.707107"),
+        (&["OrientZYX(90, 0, 0)"], "[0.707107,0,0,0.707107]"),
+        (&["10 DIV 3"], "3"),
+        (&["-7 MOD 3"], "-1"),
+        (&["ValToStr(1/3)"], "\"0.333333\""),
+        (&["\"ab\" + \"c\""], "\"abc\""),
+        (&["NOT TRUE OR TRUE"], "TRUE"),
+        (&["[1, 2, 3]"], "[1,2,3]"),
+        (&["pi"], "3.14159"),
+        (&["v100.v_tcp * 2"], "200"),
+        (&["NumToStr(2/3, 2)"], "\"0.67\""),
+        (&["0xFF + 1"], "256"),
+        (
+            &[
+                "--file",
+                "examples/palletizer/MainModule.mod",
+                "Offs(pPickAbove, 0, 0, 100)",
+            ],
+            "[[812.5,-402.1,555],[0.00469,0.70712,-0.70706,0.00421],[-1,0,-1,0],[9E+09,9E+09,9E+09,9E+09,9E+09,9E+09]]",
+        ),
+        (
+            &[
+                "--file",
+                "examples/palletizer/MainModule.mod",
+                "nRows * nCols * nLayers",
+            ],
+            "24",
+        ),
+        (
+            &[
+                "--file",
+                "examples/palletizer",
+                "pPalletOrigin.trans.z + boxHeight",
+            ],
+            "300",
+        ),
+    ];
+    for (args, expected) in cases {
+        let (code, stdout, stderr) = eval(args);
+        assert_eq!(code, Some(0), "{args:?}: {stderr}");
+        assert_eq!(stdout.trim_end(), *expected, "{args:?}");
+        assert!(stderr.is_empty(), "{args:?}: {stderr}");
+    }
+}
+
+#[test]
+fn run_time_errors_go_to_stderr_with_exit_1() {
+    let cases: &[(&str, &str)] = &[
+        ("1 / 0", "error: ERR_DIVZERO: "),
+        ("10 DIV (2 - 2)", "error: ERR_DIVZERO: "),
+        ("Sqrt(-1)", "error: ERR_ARGVALERR: "),
+        ("StrPart(\"abc\", 5, 2)", "error: ERR_OUTOFBND: "),
+        ("2.5 MOD 2", "error: ERR_NOTINTVAL: "),
+    ];
+    for (expr, expected) in cases {
+        let (code, stdout, stderr) = eval(&[expr]);
+        assert_eq!(code, Some(1), "{expr}");
+        assert!(stdout.is_empty(), "{expr}: {stdout}");
+        assert!(stderr.starts_with(expected), "{expr}: {stderr}");
+    }
+}
+
+#[test]
+fn names_that_are_not_constant() {
+    let (code, _, stderr) = eval(&["nobody + 1"]);
+    assert_eq!(code, Some(1));
+    assert!(stderr.contains("unknown-name"), "{stderr}");
+
+    let args = [
+        "--file",
+        "examples/palletizer/MainModule.mod",
+        "nPlaced + 1",
+    ];
+    let (code, _, stderr) = eval(&args);
+    assert_eq!(code, Some(1));
+    assert!(stderr.contains("not-constant"), "{stderr}");
+
+    let args = [
+        "--initial",
+        "--file",
+        "examples/palletizer/MainModule.mod",
+        "nPlaced + 1",
+    ];
+    let (code, stdout, stderr) = eval(&args);
+    assert_eq!(code, Some(0), "{stderr}");
+    assert_eq!(stdout, "1\n");
+    assert!(stderr.contains("initial value of `nPlaced`"), "{stderr}");
+}
+
+#[test]
+fn json_output() {
+    let (code, stdout, _) = eval(&["--format", "json", "Sqrt(2)"]);
+    assert_eq!(code, Some(0));
+    let v: serde_json::Value = serde_json::from_str(&stdout).expect("json");
+    assert_eq!(v, serde_json::json!({"type": "num", "value": "1.41421"}));
+
+    let (code, stdout, _) = eval(&["--format", "json", "[[1, 2], [3, 4]]"]);
+    assert_eq!(code, Some(0));
+    let v: serde_json::Value = serde_json::from_str(&stdout).expect("json");
+    assert_eq!(
+        v,
+        serde_json::json!({"type": "num{2,2}", "value": "[[1,2],[3,4]]"})
+    );
+
+    let (code, stdout, _) = eval(&["--format", "json", "1 / 0"]);
+    assert_eq!(code, Some(1));
+    let v: serde_json::Value = serde_json::from_str(&stdout).expect("json");
+    assert_eq!(v["error"]["code"], "ERR_DIVZERO");
+    assert_eq!(v["error"]["runtime"], true);
+    assert!(v["error"]["message"].is_string());
+
+    let args = [
+        "--format",
+        "json",
+        "--file",
+        "examples/palletizer/MainModule.mod",
+        "jHome.robax.rax_5",
+    ];
+    let (code, stdout, _) = eval(&args);
+    assert_eq!(code, Some(0));
+    let v: serde_json::Value = serde_json::from_str(&stdout).expect("json");
+    assert_eq!(v, serde_json::json!({"type": "num", "value": "30"}));
+}
+
+#[test]
+fn expressions_that_do_not_parse_say_where() {
+    let (code, stdout, stderr) = eval(&["1 +"]);
+    assert_eq!(code, Some(2));
+    assert!(stdout.is_empty());
+    assert!(stderr.contains("does not parse at column 4"), "{stderr}");
+
+    let (code, _, stderr) = eval(&["Sqrt(2))"]);
+    assert_eq!(code, Some(2));
+    assert!(stderr.contains("column 8"), "{stderr}");
+
+    let (code, _, stderr) = eval(&["  "]);
+    assert_eq!(code, Some(2));
+    assert!(stderr.contains("empty"), "{stderr}");
+
+    let (code, _, stderr) = eval(&["1; ENDMODULE"]);
+    assert_eq!(code, Some(2), "{stderr}");
+}
+
+#[test]
+fn usage_errors_exit_2() {
+    let (code, _, stderr) = eval(&["--file", "no/such/file.mod", "1"]);
+    assert_eq!(code, Some(2));
+    assert!(stderr.contains("no/such/file.mod"), "{stderr}");
+
+    let (code, _, _) = eval(&[]);
+    assert_eq!(code, Some(2));
+}
