@@ -163,7 +163,8 @@ impl Backend {
             .mutate("listing documents", |s| s.docs.keys().cloned().collect())
             .unwrap_or_default();
         self.schedule(paths, Some(Duration::ZERO));
-        if self.shared.lock().caps.pull_diagnostics && self.shared.lock().caps.diagnostic_refresh {
+        let caps = self.shared.lock().caps;
+        if caps.pull_diagnostics && caps.diagnostic_refresh {
             let client = self.client.clone();
             tokio::spawn(async move { client.workspace_diagnostic_refresh().await });
         }
@@ -617,8 +618,11 @@ impl LanguageServer for Backend {
 
     async fn initialized(&self, _: InitializedParams) {
         let caps = self.shared.lock().caps;
+        // Requests to the client run on their own: an `initialized` that
+        // waits for the client's answers would hold up `exit`.
         if caps.watch_files_dynamically {
-            self.register_watchers().await;
+            let this = self.clone();
+            tokio::spawn(async move { this.register_watchers().await });
         } else {
             let this = self.clone();
             tokio::spawn(async move { this.poll_disk().await });
@@ -820,9 +824,7 @@ impl LanguageServer for Backend {
         let previous = params.previous_result_id;
         let computed = self
             .on_snapshot(&params.text_document.uri, "diagnostics", |snap| {
-                let raw = snap.diagnostics();
-                let converted = convert_diagnostics(snap, &raw);
-                converted
+                convert_diagnostics(snap, &snap.diagnostics())
             })
             .await?;
         let items = computed.unwrap_or_default();

@@ -259,11 +259,11 @@ impl State {
             self.config_generation += 1;
             return Ok(true);
         }
+        self.disk.insert(path.to_owned(), mtime(path));
         if self.docs.contains_key(&name) {
             return Ok(false);
         }
         let before = self.ws.unit(&name).map(|u| u.interface);
-        self.disk.insert(path.to_owned(), mtime(path));
         match SourceFile::read(path) {
             Ok(file) => {
                 let unit = make_unit(name.clone(), file.text, None);

@@ -20,7 +20,6 @@ async fn setup(name: &str) -> (TestClient, String, String) {
         ],
     );
     let mut client = TestClient::new(dir.clone(), json!({"diagnosticsDelay": 0})).await;
-    client.indexed().await;
     let main = client.open(&dir.join("Main.mod"), MAIN);
     let lib = super::uri(&dir.join("Lib.mod"));
     (client, main, lib)

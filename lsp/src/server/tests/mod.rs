@@ -111,6 +111,9 @@ impl TestClient {
             .await;
         assert!(response.get("result").is_some(), "{response}");
         client.notify("initialized", json!({}));
+        // Tests start from a settled state: the workspace indexed (and the
+        // publications that follow it scheduled).
+        client.indexed().await;
         client
     }
 

@@ -44,7 +44,6 @@ async fn the_workspace_is_indexed_with_progress() {
         ],
     );
     let mut client = TestClient::new(dir.clone(), json!({"diagnosticsDelay": 0})).await;
-    client.indexed().await;
     // Progress: created, begun, reported, ended.
     assert!(
         client
@@ -105,7 +104,6 @@ async fn files_changed_outside_the_editor_are_reloaded() {
     let dir = temp_dir("ws-watch");
     write_files(&dir, &[("Lib.mod", LIB), ("EIO.cfg", EIO)]);
     let mut client = TestClient::new(dir.clone(), json!({"diagnosticsDelay": 0})).await;
-    client.indexed().await;
     let main = client.open(&dir.join("Main.mod"), MAIN);
     until_codes(&mut client, &main, &[]).await;
     // Lib renames its routine on disk.
@@ -142,7 +140,6 @@ async fn a_closed_file_goes_back_to_its_text_on_disk() {
     let dir = temp_dir("ws-close");
     write_files(&dir, &[("Lib.mod", LIB), ("EIO.cfg", EIO)]);
     let mut client = TestClient::new(dir.clone(), json!({"diagnosticsDelay": 0})).await;
-    client.indexed().await;
     let main = client.open(&dir.join("Main.mod"), MAIN);
     let lib = client.open(&dir.join("Lib.mod"), LIB);
     until_codes(&mut client, &main, &[]).await;
@@ -177,7 +174,6 @@ async fn unreadable_files_are_skipped_with_a_log_message() {
     )
     .expect("write");
     let mut client = TestClient::new(dir.clone(), json!({"diagnosticsDelay": 0})).await;
-    client.indexed().await;
     let logs: Vec<String> = client
         .received
         .iter()
