@@ -197,3 +197,45 @@ fn edit_recheck_largest(bencher: Bencher<'_, '_>) {
         ws.diagnostics(path).len()
     });
 }
+
+/// The incremental reparse alone of the same one-character edit as
+/// [`edit_recheck_largest`] (what the re-check cannot avoid).
+#[divan::bench(sample_count = 50)]
+fn edit_reparse_only_largest(bencher: Bencher<'_, '_>) {
+    let Some(corpus) = corpus() else {
+        return;
+    };
+    let Some((path, text)) = corpus.files.iter().max_by_key(|(_, t)| t.len()) else {
+        return;
+    };
+    let at = ["PROC ", "FUNC ", "TRAP "]
+        .iter()
+        .filter_map(|k| text.find(k))
+        .min()
+        .and_then(|i| text[i..].find('\n').map(|j| i + j + 1))
+        .unwrap_or(0);
+    let mut edited = text.clone();
+    edited.insert(at, ' ');
+    let unit = Unit::new(path.clone(), text.clone(), None);
+    let point = |s: &str| tree_sitter::Point {
+        row: s.matches('\n').count(),
+        column: s.len() - s.rfind('\n').map_or(0, |i| i + 1),
+    };
+    let edit = tree_sitter::InputEdit {
+        start_byte: at,
+        old_end_byte: at,
+        new_end_byte: at + 1,
+        start_position: point(&text[..at]),
+        old_end_position: point(&text[..at]),
+        new_end_position: point(&edited[..at + 1]),
+    };
+    let mut parser = tree_sitter::Parser::new();
+    let _ = parser.set_language(&tree_sitter_rapid::LANGUAGE.into());
+    bencher.bench_local(|| {
+        let mut tree = unit.tree.clone();
+        tree.edit(&edit);
+        parser
+            .parse(&edited, Some(&tree))
+            .map(|t| t.root_node().child_count())
+    });
+}
