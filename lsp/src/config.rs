@@ -309,13 +309,8 @@ pub fn find(start: &Path) -> Option<PathBuf> {
 }
 
 /// The configuration for a run: the file named explicitly, else the one
-/// found from `first_path`, else the defaults.
-pub fn resolve(explicit: Option<&Path>, first_path: &Path) -> Result<Config, ConfigError> {
-    resolve_with_path(explicit, first_path).map(|(config, _)| config)
-}
-
-/// Like [`resolve`], also giving the file the configuration came from (its
-/// folder is the root that relative globs and paths start from).
+/// found from `first_path`, else the defaults; with the file it came from
+/// (its folder is the root that relative globs and paths start from).
 pub fn resolve_with_path(
     explicit: Option<&Path>,
     first_path: &Path,

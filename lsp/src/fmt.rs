@@ -1,6 +1,7 @@
 //! `rapid fmt`: rewrite RAPID files in the canonical layout.
 //!
-//! Files keep their encoding (Latin-1 stays Latin-1, a UTF-8 BOM stays) and
+//! Files are found as `rapid check` finds them (honouring `.gitignore` and
+//! the `exclude` globs of `rapid.toml`). Files keep their encoding (Latin-1 stays Latin-1, a UTF-8 BOM stays) and
 //! their line endings; a file with syntax errors is left untouched. Exit
 //! codes: 0 when all went well, 1 when `--check` or `--diff` found files to
 //! change or a file was left unformatted because of a syntax error, 2 on a
@@ -9,11 +10,12 @@
 use std::io::{Read, Write};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
+use std::sync::Arc;
 
 use rapid_analyzer::format::{FormatError, FormatOptions, format, verify};
 use rayon::prelude::*;
 
-use crate::check::discover;
+use crate::check::{LintSettings, Overrides, discover_with, normalize};
 use crate::config;
 use crate::source::{SourceFile, Unreadable};
 
@@ -73,22 +75,43 @@ pub fn run(args: FmtArgs) -> ExitCode {
     } else {
         paths[0].as_path()
     };
-    let options = match config::resolve(args.config.as_deref(), first) {
-        Ok(config) => config.format.options(),
+    let (config, config_path) = match config::resolve_with_path(args.config.as_deref(), first) {
+        Ok(found) => found,
         Err(e) => {
             let _ = writeln!(stderr, "rapid: {e}");
             return ExitCode::from(2);
         }
     };
+    let options = config.format.options();
     if stdin {
         return run_stdin(&args, &options);
     }
-
-    let found = discover(&paths);
+    // `exclude` in rapid.toml leaves files out, as for `rapid check`
+    let root = match config_path.as_deref().and_then(Path::parent) {
+        Some(dir) => std::path::absolute(dir),
+        None => std::env::current_dir(),
+    };
+    let settings = match root.map_err(|e| e.to_string()).and_then(|root| {
+        LintSettings::new(&config, normalize(&root), &Overrides::default())
+            .map_err(|e| e.to_string())
+    }) {
+        Ok(settings) => Arc::new(settings),
+        Err(e) => {
+            let _ = writeln!(stderr, "rapid: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    let found = discover_with(
+        &paths,
+        Arc::new(move |p: &Path, dir: bool| settings.is_excluded(p, dir)),
+    );
     let mut usage_error = false;
     for (path, why) in &found.errors {
         let _ = writeln!(stderr, "rapid: {}: {why}", path.display());
         usage_error = true;
+    }
+    for (path, why) in &found.warnings {
+        let _ = writeln!(stderr, "rapid: {}: {why}", path.display());
     }
     let outcomes: Vec<Outcome> = found
         .files

@@ -191,3 +191,22 @@ fn a_bad_configuration_exits_2_naming_file_line_and_key() {
         UNFORMATTED
     );
 }
+
+#[test]
+fn excluded_files_are_left_alone() {
+    let dir = scratch("exclude");
+    std::fs::create_dir_all(dir.join("old")).expect("folder");
+    std::fs::write(dir.join("rapid.toml"), "exclude = [\"old/**\"]\n").expect("written");
+    std::fs::write(dir.join("old/a.mod"), UNFORMATTED).expect("written");
+    std::fs::write(dir.join("b.mod"), UNFORMATTED).expect("written");
+    let out = rapid(&dir, &["."], None);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(
+        std::fs::read_to_string(dir.join("old/a.mod")).expect("read"),
+        UNFORMATTED
+    );
+    assert_eq!(
+        std::fs::read_to_string(dir.join("b.mod")).expect("read"),
+        FORMATTED
+    );
+}
