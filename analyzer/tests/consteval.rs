@@ -264,3 +264,40 @@ fn cyclic_constants_do_not_hang() {
         "a => num{*} = [1]",
     );
 }
+
+#[test]
+fn every_offset_of_broken_code_is_safe() {
+    let fixture = "//- a.mod\nMODULE a\n  RECORD r\n    num x;\n    pos p;\n  ENDRECORD\n  CONST r k := [1, [2, 3, 4]];\n  CONST num n{2} := [k.x, k.p.y / 0];\n  PERS string s := \"a\" + \"b\";\n  CONST num cyc := cyc + 1;\n  PROC p(num v, \\switch sw)\n    VAR num w := Round(v \\Dec:=2);\n    CONST num c := n{3} + <EXP>;\n    w := Offs(<ARG>, 1, 2) + [1,2;\n    FOR i FROM 1 TO Dim(n, 1) DO\n      w := StrPart(s, i, 1) + ;\n    ENDFOR\n  ENDPROC\n  FUNC num f(num a)\n    RETURN Abs(a) * -(1 DIV 0);\n  ENDFUNC\nENDMODULE\n//- b.mod\nMODULE b\n  CONST num z := k.p.z * n{1}$0;\nENDMODULE\n";
+    let (task, _, _) = task_of(fixture);
+    let mut shown = 0;
+    for (u, unit) in task.units.iter().enumerate() {
+        for offset in 0..=unit.text.len() + 1 {
+            if let Some(v) = value_at(&task, u, offset) {
+                assert!(v.range.start <= offset.max(1) && offset <= v.range.end + 1);
+                shown += 1;
+            }
+            let _ = value_of_range(&task, u, offset.saturating_sub(3)..offset);
+        }
+    }
+    assert!(shown > 10, "only {shown} offsets show a value");
+}
+
+#[test]
+fn aggregates_and_numbers_take_the_type_of_their_target() {
+    check(
+        "MODULE m\n  VAR pos p;\n  PROC q()\n    p := [1, 2, 3]$0;\n  ENDPROC\nENDMODULE\n",
+        "[1, 2, 3] => pos = [1,2,3]",
+    );
+    check(
+        "MODULE m\n  FUNC pose f()\n    RETURN [[0, 0, 10], [1, 0, 0, 0]]$0;\n  ENDFUNC\nENDMODULE\n",
+        "[[0, 0, 10], [1, 0, 0, 0]] => pose = [[0,0,10],[1,0,0,0]] euler [0.0, 0.0, 0.0]",
+    );
+    check(
+        "MODULE m\n  VAR dnum d;\n  PROC q()\n    d := 4294967295 DIV$0 2;\n  ENDPROC\nENDMODULE\n",
+        "4294967295 DIV 2 => dnum = 2147483647",
+    );
+    check(
+        "MODULE m\n  CONST num grid{2, 2} := [[1, 2], [3, 4]]$0;\nENDMODULE\n",
+        "[[1, 2], [3, 4]] => num{2,2} = [[1,2],[3,4]]",
+    );
+}
