@@ -204,7 +204,7 @@ def run(binary, root, path, label, delay, n_keys=100, n_req=200):
     open_ms = (t1 - t0) * 1000
     line = body_line(text)
     indent = len(text.splitlines()[line]) - len(text.splitlines()[line].lstrip())
-    keys = []
+    keys, fulls = [], []
     version = 1
     cpu0 = s.cpu_ms()
     for k in range(n_keys):
@@ -217,9 +217,14 @@ def run(binary, root, path, label, delay, n_keys=100, n_req=200):
             change = {"range": {"start": {"line": line, "character": indent}, "end": {"line": line, "character": indent + 1}}, "text": ""}
         t0 = time.perf_counter()
         s.notify("textDocument/didChange", {"textDocument": {"uri": uri, "version": version}, "contentChanges": [change]})
-        t1, _ = s.wait(lambda m, v=version: m.get("method") == "textDocument/publishDiagnostics"
-                       and m["params"]["uri"] == uri and m["params"].get("version") == v)
+        is_v = lambda m, v=version: (m.get("method") == "textDocument/publishDiagnostics"
+                                     and m["params"]["uri"] == uri and m["params"].get("version") == v)
+        # First the quick publication (syntax, others carried over), then
+        # the full check's.
+        t1, _ = s.wait(is_v)
+        t2, _ = s.wait(is_v)
         keys.append((t1 - t0) * 1000)
+        fulls.append((t2 - t0) * 1000)
     key_cpu = (s.cpu_ms() - cpu0) / n_keys
     hovers, completions = [], []
     for (ln, ch) in identifier_positions(text, rnd, n_req):
@@ -234,7 +239,7 @@ def run(binary, root, path, label, delay, n_keys=100, n_req=200):
     return {
         "label": label, "indexed": indexed, "index_ms": index_ms, "open_ms": open_ms,
         "index_cpu": index_cpu, "key_cpu": key_cpu,
-        "keys": keys, "hovers": hovers, "completions": completions, "items": n_items,
+        "keys": keys, "fulls": fulls, "hovers": hovers, "completions": completions, "items": n_items,
         "rss": rss, "hwm": hwm, "lines": text.count("\n") + 1,
     }
 
@@ -259,12 +264,13 @@ def main():
         results.append(run(binary, corpus, largest, f"whole corpus, largest module open, debounce {d}", delay))
     shutil.rmtree(tmp, ignore_errors=True)
     print(f"largest corpus module: {largest.relative_to(corpus)}\n")
-    print("| scenario | lines | indexing (wall, server CPU) | open to diagnostics | keystroke to diagnostics (median / p99; server CPU per keystroke) | hover (median / p99) | completion (median / p99, items) | RSS (now / peak) |")
-    print("| --- | --- | --- | --- | --- | --- | --- | --- |")
+    print("| scenario | lines | indexing (wall, server CPU) | open to diagnostics | keystroke to first diagnostics (median / p99) | keystroke to full check's diagnostics (median / p99; server CPU per keystroke) | hover (median / p99) | completion (median / p99, items) | RSS (now / peak) |")
+    print("| --- | --- | --- | --- | --- | --- | --- | --- | --- |")
     for r in results:
         med = statistics.median
         print(f"| {r['label']} | {r['lines']} | {r['index_ms']:.0f} ms, {r['index_cpu']:.0f} ms CPU ({r['indexed']}) | {r['open_ms']:.1f} ms "
-              f"| {med(r['keys']):.1f} / {pct(r['keys'], 99):.1f} ms; {r['key_cpu']:.1f} ms CPU "
+              f"| {med(r['keys']):.1f} / {pct(r['keys'], 99):.1f} ms "
+              f"| {med(r['fulls']):.1f} / {pct(r['fulls'], 99):.1f} ms; {r['key_cpu']:.1f} ms CPU "
               f"| {med(r['hovers']):.2f} / {pct(r['hovers'], 99):.2f} ms "
               f"| {med(r['completions']):.2f} / {pct(r['completions'], 99):.2f} ms ({r['items']}) "
               f"| {r['rss']:.0f} / {r['hwm']:.0f} MB |")

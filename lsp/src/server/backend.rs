@@ -191,6 +191,26 @@ impl Backend {
         let Some(snap) = snap else {
             return;
         };
+        // Two phases, as the text changed: at once, the new syntax
+        // diagnostics with the others carried over from the last check;
+        // then the full check.
+        let Ok((snap, quick)) = self
+            .blocking("carrying diagnostics over", move || {
+                let quick = snap.carried_over().map(|d| convert_diagnostics(&snap, &d));
+                (snap, quick)
+            })
+            .await
+        else {
+            return;
+        };
+        if let Some(quick) = quick {
+            let _order = self.shared.publish.lock().await;
+            if self.mutate("publishing diagnostics", |s| current(s)) == Some(true) {
+                self.client
+                    .publish_diagnostics(snap.uri.clone(), quick, snap.version)
+                    .await;
+            }
+        }
         let Ok((snap, raw, converted)) = self
             .blocking("computing diagnostics", move || {
                 let raw = snap.diagnostics();

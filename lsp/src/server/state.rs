@@ -97,6 +97,9 @@ pub struct Snapshot {
     /// URIs of open documents (which may not be `file:` URIs).
     pub uris: Arc<HashMap<String, Uri>>,
     pub cached: Option<Arc<Vec<Diagnostic>>>,
+    /// The last diagnostics computed for an older text of the file, with
+    /// that unit: carried over while the new ones are computed.
+    pub previous: Option<(Arc<Unit>, Arc<Vec<Diagnostic>>)>,
     pub config_generation: u64,
 }
 
@@ -134,6 +137,67 @@ impl Snapshot {
             &self.index,
             self.diagnostics().to_vec(),
         )
+    }
+
+    /// Diagnostics at once, without checking: the new text's syntax
+    /// diagnostics and the previous text's other diagnostics moved past the
+    /// edit (those inside the edited span are dropped). `None` when there is
+    /// no previous result, or a fresh one is cached.
+    pub fn carried_over(&self) -> Option<Vec<Diagnostic>> {
+        if self.cached.is_some() {
+            return None;
+        }
+        let (old_unit, old) = self.previous.as_ref()?;
+        let (old_text, new_text) = (old_unit.text.as_bytes(), self.unit.text.as_bytes());
+        let prefix = old_text
+            .iter()
+            .zip(new_text)
+            .take_while(|(a, b)| a == b)
+            .count();
+        let max_suffix = old_text.len().min(new_text.len()) - prefix;
+        let suffix = old_text
+            .iter()
+            .rev()
+            .zip(new_text.iter().rev())
+            .take(max_suffix)
+            .take_while(|(a, b)| a == b)
+            .count();
+        let old_end = old_text.len() - suffix;
+        let new_end = new_text.len() - suffix;
+        let moved = |r: &std::ops::Range<usize>| -> Option<std::ops::Range<usize>> {
+            if r.end <= prefix && r.end < old_end {
+                Some(r.clone())
+            } else if r.start >= old_end && r.start > prefix {
+                Some(r.start - old_end + new_end..r.end - old_end + new_end)
+            } else {
+                None
+            }
+        };
+        let mut out = self.unit.syntax.clone();
+        for d in old.iter().filter(|d| !old_unit.syntax.contains(d)) {
+            // Related locations in this file move too, or go.
+            let Some(range) = moved(&d.range) else {
+                continue;
+            };
+            let mut d = d.clone();
+            d.range = range;
+            d.related.retain_mut(|r| {
+                if r.file.is_some() {
+                    return true;
+                }
+                match moved(&r.range) {
+                    Some(m) => {
+                        r.range = m;
+                        true
+                    }
+                    None => false,
+                }
+            });
+            d.fix = None;
+            out.push(d);
+        }
+        out.sort_by_key(|d| (d.range.start, d.range.end));
+        Some(out)
     }
 
     /// The analyzer's diagnostics of the file (cached when possible).
@@ -207,6 +271,10 @@ impl State {
                 && c.config_generation == self.config_generation)
                 .then(|| c.diagnostics.clone())
         });
+        let previous = self.diagnostics.get(&path).and_then(|c| {
+            (!Arc::ptr_eq(&c.unit, &unit) && c.config_generation == self.config_generation)
+                .then(|| (c.unit.clone(), c.diagnostics.clone()))
+        });
         Some(Snapshot {
             uri: uri.clone(),
             path,
@@ -219,6 +287,7 @@ impl State {
             settings: Arc::new(self.settings.clone()),
             uris: Arc::new(self.open_uris()),
             cached,
+            previous,
             config_generation: self.config_generation,
         })
     }
