@@ -30,6 +30,7 @@ pub fn hover(task: &Task, unit: usize, offset: usize) -> Option<HoverResult> {
                     | Def::Component(..)
             );
             if data
+                && !literal_initialiser(task, &def)
                 && let Some(v) = super::value::value_at(task, unit, offset)
                 && v.range.start <= node.start_byte()
                 && node.end_byte() <= v.range.end
@@ -428,4 +429,28 @@ fn value_markdown(v: &super::value::ConstValue) -> String {
         );
     }
     out
+}
+
+/// Is the data's initial value a literal (so its value is in the
+/// declaration shown already)?
+fn literal_initialiser(task: &Task, def: &Def<'_>) -> bool {
+    let (unit, init) = match def {
+        Def::Item(r) => match task.data(*r).and_then(|d| d.init.clone()) {
+            Some(i) => (r.unit, i),
+            None => return false,
+        },
+        Def::Local { unit, decl, .. } => match decl.init.clone() {
+            Some(i) => (*unit, i),
+            None => return false,
+        },
+        _ => return false,
+    };
+    task.units
+        .get(unit)
+        .and_then(|u| {
+            u.tree
+                .root_node()
+                .named_descendant_for_byte_range(init.start, init.end)
+        })
+        .is_some_and(super::inlay::is_literal)
 }

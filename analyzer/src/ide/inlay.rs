@@ -124,7 +124,7 @@ fn is_optional(arg: Node<'_>) -> bool {
 }
 
 /// A literal, or an aggregate of literals: its value reads as its text.
-fn is_literal(n: Node<'_>) -> bool {
+pub(crate) fn is_literal(n: Node<'_>) -> bool {
     match n.kind() {
         "number" | "string" | "boolean" => true,
         "unary_expression" => n

@@ -95,3 +95,14 @@ fn constant_expressions_show_their_value() {
     );
     assert!(h.contains("rz = 90°"), "{h}");
 }
+
+#[test]
+fn literal_initial_values_are_not_repeated() {
+    let h = hover_text(
+        "MODULE m\n  CONST num k := 2;\n  PROC main()\n    TPWrite \"\"\\Num:=k$0;\n  ENDPROC\nENDMODULE\n",
+    );
+    assert!(
+        h.contains("CONST num k := 2;") && !h.contains("`= 2`"),
+        "{h}"
+    );
+}
