@@ -127,7 +127,8 @@ pub(crate) fn uses(
                 continue;
             };
             if d.key(task) == key {
-                out.push((ui, n.byte_range(), is_write(n)));
+                let write = is_write(n) || passed_by_reference(task, ui, n);
+                out.push((ui, n.byte_range(), write));
             }
         }
     }
@@ -164,6 +165,58 @@ fn is_write(node: tree_sitter::Node<'_>) -> bool {
             _ => return false,
         }
     }
+}
+
+/// Is this name (or the data it starts) an argument of a VAR, PERS or
+/// INOUT parameter, which the routine may change?
+fn passed_by_reference(task: &Task, unit: usize, node: tree_sitter::Node<'_>) -> bool {
+    let mut n = node;
+    let arg = loop {
+        let f = super::resolve::field_in_parent(n);
+        let Some(p) = n.parent() else {
+            return false;
+        };
+        match (p.kind(), f) {
+            ("argument", Some("value")) => break p,
+            ("component_access" | "index_expression", Some("object")) => n = p,
+            _ => return false,
+        }
+    };
+    let Some(call) = super::resolve::call_of_argument(arg) else {
+        return false;
+    };
+    let Some(mut cx) = Cx::at(task, unit, call.start_byte()) else {
+        return false;
+    };
+    let Some(sym) = super::resolve::call_routine(&mut cx, call) else {
+        return false;
+    };
+    let sig = super::signature::sig_of(sym);
+    let text = cx.text;
+    let name_of = |a: tree_sitter::Node<'_>| {
+        a.child_by_field_name("name")
+            .and_then(|n| text.get(n.byte_range()))
+    };
+    let param = match name_of(arg) {
+        Some(name) => sig.params.iter().find(|p| same(&p.name, name)),
+        None => {
+            let Some(list) = arg.parent() else {
+                return false;
+            };
+            let args = crate::syntax_util::fields(list, "argument");
+            let named: Vec<&str> = args.iter().filter_map(|a| name_of(*a)).collect();
+            let k = args
+                .iter()
+                .take_while(|a| a.id() != arg.id())
+                .filter(|a| name_of(**a).is_none())
+                .count();
+            sig.params
+                .iter()
+                .filter(|p| !p.optional && !named.iter().any(|n| same(n, &p.name)))
+                .nth(k)
+        }
+    };
+    param.is_some_and(|p| p.mode != crate::catalogue::Mode::In)
 }
 
 pub fn references(

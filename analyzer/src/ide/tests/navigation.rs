@@ -159,3 +159,14 @@ fn renaming_a_parameter_renames_named_arguments() {
     let summary: Vec<(String, usize)> = edits.iter().map(|(p, e)| (p.clone(), e.len())).collect();
     assert_eq!(summary, vec![("t/a.mod".into(), 2), ("t/b.mod".into(), 1)]);
 }
+
+#[test]
+fn arguments_of_reference_parameters_are_writes() {
+    let src = "MODULE m\n  PROC bump(INOUT num v, num by)\n    v := v + by;\n  ENDPROC\n  PROC main()\n    VAR num n$0;\n    bump n, n;\n    Incr n;\n  ENDPROC\nENDMODULE\n";
+    let (task, unit, offset) = fixture(src);
+    let hl: Vec<bool> = document_highlights(&task, unit, offset)
+        .into_iter()
+        .map(|(_, w)| w)
+        .collect();
+    assert_eq!(hl, vec![true, true, false, true]);
+}
