@@ -122,8 +122,18 @@ pub(crate) fn uses(
             None => Some(root),
         };
         let Some(node) = node else { continue };
+        let mut scopes = super::tokens::Scopes::new(task, ui);
         for n in names_spelt(node, &u.text, &name) {
-            let Some(d) = resolve(task, ui, n) else {
+            // The scope of the routine is cached; FOR variables (which the
+            // cache does not see) resolve the slow way.
+            let d = if in_for_loop_of(n, &u.text, &name) {
+                resolve(task, ui, n)
+            } else {
+                scopes
+                    .at(n.start_byte())
+                    .and_then(|cx| super::resolve::resolve_in(cx, n))
+            };
+            let Some(d) = d else {
                 continue;
             };
             if d.key(task) == key {
@@ -133,6 +143,22 @@ pub(crate) fn uses(
         }
     }
     out
+}
+
+/// Is `n` inside a FOR loop whose variable is spelt `name`?
+fn in_for_loop_of(n: tree_sitter::Node<'_>, text: &str, name: &str) -> bool {
+    let mut at = n.parent();
+    while let Some(p) = at {
+        if p.kind() == "for_statement"
+            && p.child_by_field_name("variable")
+                .and_then(|v| text.get(v.byte_range()))
+                .is_some_and(|v| same(v, name))
+        {
+            return true;
+        }
+        at = p.parent();
+    }
+    false
 }
 
 /// Is this name written here: declared, assigned, a FOR variable?
