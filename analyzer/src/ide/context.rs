@@ -292,14 +292,10 @@ pub(crate) fn call_at(bf: &Before) -> Option<CallCx> {
         return None;
     }
     let name = String::from_utf8_lossy(&s[lead..lead + name_len]).into_owned();
-    if is_keyword_statement(&name)
-        || after.windows(2).any(|w| w == b":=") && !after.contains(&b'\\')
-    {
-        // `x := ...` or a keyword statement; `:=` inside named arguments is
-        // allowed (`MoveL \Conc, ToPoint:=p10`), caught below.
-        if !is_named_args(after) {
-            return None;
-        }
+    // A keyword statement, or an assignment `x := ...` (`:=` after the
+    // first word rather than after an argument name).
+    if is_keyword_statement(&name) || !is_named_args(after) {
+        return None;
     }
     Some(build(bf, name, stmt + lead, false, after))
 }
@@ -360,6 +356,12 @@ mod tests {
         assert_eq!(c.current.name.as_deref(), Some("ID"));
         assert_eq!(call("  x := Abs(").map(|c| c.name), Some("Abs".to_owned()));
         assert_eq!(call("  x := y"), None);
+        assert_eq!(call("  IF n > "), None);
+        assert_eq!(call("  x.a := Abs(y) + "), None);
+        assert_eq!(
+            call("  MoveL ToPoint:=p10, ").map(|c| c.done[0].name.clone()),
+            Some(Some("ToPoint".to_owned()))
+        );
         assert_eq!(
             call("  IF a THEN\n    TPWrite \"a;b\", ").map(|c| c.done.len()),
             Some(1)
