@@ -53,6 +53,7 @@ if want static || want vscode; then
     npmq ci --no-audit --no-fund
     npmq run --silent typecheck
     npmq run --silent build
+    node --test test/language.test.mjs
     npx vscode-tmgrammar-test -g syntaxes/rapid.tmLanguage.json "test/grammar/*.mod"
     rm -rf "$tools/agreement"
     node test/agreement.mjs "$tools/agreement"
