@@ -21,7 +21,9 @@
 //!   brackets; `Name:=value`, `\Opt:=value`, `\Switch` and `\Opt?var` in
 //!   arguments are tight, as RAPID writes them (`MoveL p10, v100, fine,
 //!   tool0\WObj:=wobj0;`), except that a `\` right after the procedure name or
-//!   after a comma is preceded by a space.
+//!   after a comma is preceded by a space (`StopMove \Quick;`). In parameter
+//!   lists `\` follows a space and `|` is spaced (`(num a, \switch On |
+//!   switch Off)`).
 //! - Wrapping: only the arguments of a procedure call are wrapped. When such
 //!   a line is longer than [`FormatOptions::line_width`] characters (a
 //!   trailing comment not counted), it is broken after the commas that
@@ -31,10 +33,11 @@
 //!   with a `robtarget` literal) stays on its line. Aggregates, declarations
 //!   and expressions are never wrapped: long `robtarget` literals stay on
 //!   the line the user put them on.
-//! - Blank lines: exactly one between two routines (a blank line is added
-//!   after the first one's end keyword if there is none, comments between
-//!   them stay with the second); elsewhere runs of blank lines collapse to
-//!   one, and a single blank line is kept where the user put one.
+//! - Blank lines: exactly one between two routines, and between two modules
+//!   of a file (a blank line is added after the first one's end keyword if
+//!   there is none, comments between them stay with the second); elsewhere
+//!   runs of blank lines collapse to one, and a single blank line is kept
+//!   where the user put one. Blank lines before the first token go.
 //! - Comments stay where they are: a trailing comment stays at the end of its
 //!   line with the blanks before it kept; a comment on its own line keeps its
 //!   line, indented like the statement after it or, when the next line
@@ -59,8 +62,8 @@
 //! keywords (and drops trailing blanks of comments); two tokens are never
 //! made to touch if they could then read as one. [`verify`] checks a result
 //! independently, by parsing it again and comparing its tokens with the
-//! original's (`rapid fmt --verify` does it for every file; the corpus tests
-//! do it for every file of the corpus).
+//! original's (`rapid fmt --verify` does it for every file; the corpus test
+//! makes the same check, with its own code, on every file of the corpus).
 
 mod collect;
 mod layout;
