@@ -141,7 +141,7 @@ pub fn format(text: &str, options: &FormatOptions) -> Result<String, FormatError
 }
 
 /// Formats a whole text, as the smallest edits that turn `text` into
-/// [`format`]'s result: non-overlapping, in order, on the original byte
+/// [`format()`]'s result: non-overlapping, in order, on the original byte
 /// offsets.
 pub fn format_edits(text: &str, options: &FormatOptions) -> Result<Vec<Edit>, FormatError> {
     Ok(run(text, options, true)?.edits)
