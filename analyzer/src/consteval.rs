@@ -651,6 +651,10 @@ impl Env for RoutineScope<'_, '_> {
 // ---------------------------------------------------------------------------
 // Values for hovers.
 
+/// How many enclosing expressions [`value_at`] tries, and how deep the
+/// context of an aggregate is followed.
+const MAX_CONTEXT_DEPTH: u32 = 64;
+
 /// Field names whose node is a name, not a value.
 const NOT_VALUES: &[&str] = &[
     "name",
@@ -694,8 +698,15 @@ pub fn value_at(task: &Task, unit: usize, offset: usize) -> Option<ConstValue> {
     path.truncate(at + 1);
     with_env(task, Some((unit, offset)), options, |env| {
         let mut typing = Cx::at(task, unit, offset);
+        let mut tried = 0;
         while let Some((n, field)) = path.last().copied() {
             if is_expression(n.kind()) {
+                // Each try evaluates the whole expression: stop climbing
+                // through absurdly deep nesting.
+                tried += 1;
+                if tried > MAX_CONTEXT_DEPTH {
+                    return None;
+                }
                 if !field.is_some_and(|f| NOT_VALUES.contains(&f))
                     && let Some(v) = value_of_node(task, unit, &path, env, typing.as_mut(), options)
                 {
@@ -882,13 +893,28 @@ pub fn value_type(v: &Value) -> String {
 /// assigned to, the value a function returns, or the component or element
 /// of an aggregate that has a type itself.
 fn expected_type<'t>(cx: &mut Cx<'t>, path: &[Step<'t>], env: &dyn Env) -> Option<Type> {
+    expected_type_at(cx, path, env, 0)
+}
+
+fn expected_type_at<'t>(
+    cx: &mut Cx<'t>,
+    path: &[Step<'t>],
+    env: &dyn Env,
+    depth: u32,
+) -> Option<Type> {
+    // Contexts nest no deeper than aggregates of aggregates do in practice.
+    if depth > MAX_CONTEXT_DEPTH {
+        return None;
+    }
     let [.., (parent, _), (node, field)] = path else {
         return None;
     };
     let (parent, node) = (*parent, *node);
     let outer = &path[..path.len() - 1];
     match (parent.kind(), (*field)?) {
-        ("parenthesized_expression", _) | ("unary_expression", _) => expected_type(cx, outer, env),
+        ("parenthesized_expression", _) | ("unary_expression", _) => {
+            expected_type_at(cx, outer, env, depth + 1)
+        }
         ("data_declaration", "value") => {
             let name = field_of(parent, "name")?;
             match env.lookup(text_of(name, cx.text)) {
@@ -903,7 +929,7 @@ fn expected_type<'t>(cx: &mut Cx<'t>, path: &[Step<'t>], env: &dyn Env) -> Optio
             }
         }
         ("aggregate", "element") => {
-            let outer_ty = expected_type(cx, outer, env)?;
+            let outer_ty = expected_type_at(cx, outer, env, depth + 1)?;
             if !outer_ty.dims.is_empty() {
                 return Some(outer_ty.element());
             }

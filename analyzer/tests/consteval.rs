@@ -301,3 +301,18 @@ fn aggregates_and_numbers_take_the_type_of_their_target() {
         "[[1, 2], [3, 4]] => num{2,2} = [[1,2],[3,4]]",
     );
 }
+
+#[test]
+fn deep_nesting_stays_cheap() {
+    let depth = 3000;
+    let fixture = format!(
+        "MODULE m\n  CONST num x := {}1$0{};\nENDMODULE\n",
+        "(".repeat(depth),
+        ")".repeat(depth)
+    );
+    let (task, unit, offset) = task_of(&fixture);
+    let start = std::time::Instant::now();
+    let _ = value_at(&task, unit, offset);
+    let _ = value_at(&task, unit, offset + depth);
+    assert!(start.elapsed() < std::time::Duration::from_secs(10));
+}

@@ -63,9 +63,8 @@ pub fn run(args: EvalArgs) -> ExitCode {
     }
     let source = format!("{PREFIX}{expr_text}{SUFFIX}");
     let expr_unit = Arc::new(Unit::new(EVAL_PATH.to_owned(), source, None));
-    if let Err(message) = check_syntax(&expr_unit, expr_text) {
-        let _ = writeln!(stderr, "rapid: eval: {message}");
-        return ExitCode::from(2);
+    if let Err(e) = check_syntax(&expr_unit, expr_text) {
+        return syntax_error(&e, expr_text, args.format);
     }
     let (task, at) = match &args.file {
         None => (
@@ -189,20 +188,58 @@ fn expression_node<'u>(unit: &'u Unit, expr: &str) -> Option<tree_sitter::Node<'
 }
 
 /// Syntax errors of the synthetic module, told in the user's text.
-fn check_syntax(unit: &Unit, expr: &str) -> Result<(), String> {
+/// Why the expression cannot be evaluated as written.
+struct SyntaxError {
+    /// 1-based character column in the expression.
+    column: Option<usize>,
+    message: String,
+}
+
+fn check_syntax(unit: &Unit, expr: &str) -> Result<(), SyntaxError> {
     if let Some(d) = unit.syntax.first() {
         let offset = d.range.start.saturating_sub(PREFIX.len()).min(expr.len());
         let column = expr.get(..offset).map_or(offset, |s| s.chars().count()) + 1;
-        let caret = format!("{}^", " ".repeat(column - 1));
-        return Err(format!(
-            "the expression does not parse at column {column}: {}\n  {expr}\n  {caret}",
-            d.message
-        ));
+        return Err(SyntaxError {
+            column: Some(column),
+            message: d.message.clone(),
+        });
     }
     if expression_node(unit, expr).is_none() {
-        return Err("the text is not a single RAPID expression".to_owned());
+        return Err(SyntaxError {
+            column: None,
+            message: "the text is not a single RAPID expression".to_owned(),
+        });
     }
     Ok(())
+}
+
+/// Reports an expression that does not parse; exit code 2.
+fn syntax_error(e: &SyntaxError, expr: &str, format: Format) -> ExitCode {
+    match format {
+        Format::Json => {
+            let v = serde_json::json!({
+                "error": {
+                    "code": "syntax-error",
+                    "message": e.message,
+                    "column": e.column,
+                }
+            });
+            let _ = writeln!(std::io::stdout().lock(), "{v}");
+        }
+        Format::Human => {
+            let mut stderr = anstream::stderr();
+            let _ = match e.column {
+                Some(column) => writeln!(
+                    stderr,
+                    "rapid: eval: the expression does not parse at column {column}: {}\n  {expr}\n  {}^",
+                    e.message,
+                    " ".repeat(column - 1)
+                ),
+                None => writeln!(stderr, "rapid: eval: {}", e.message),
+            };
+        }
+    }
+    ExitCode::from(2)
 }
 
 /// A task, and the unit and offset where names resolve (`None`: the

@@ -182,3 +182,12 @@ fn usage_errors_exit_2() {
     let (code, _, _) = eval(&[]);
     assert_eq!(code, Some(2));
 }
+
+#[test]
+fn json_syntax_errors() {
+    let (code, stdout, _) = eval(&["--format", "json", "Sqrt(2"]);
+    assert_eq!(code, Some(2));
+    let v: serde_json::Value = serde_json::from_str(&stdout).expect("json");
+    assert_eq!(v["error"]["code"], "syntax-error");
+    assert_eq!(v["error"]["column"], 7);
+}
