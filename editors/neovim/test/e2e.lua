@@ -140,6 +140,17 @@ vim.notify = function(msg)
 end
 vim.cmd('RapidBuildParser')
 
+check('the parser builds for Neovim 0.10 too (ABI 14, regenerated with the tree-sitter CLI)', function()
+  expect(vim.fn.executable('tree-sitter') == 1, 'the tree-sitter CLI is not on PATH')
+  local out = vim.fn.tempname() .. '/rapid14.so'
+  require('rapid').build_parser(nil, { abi = 14, out = out })
+  vim.treesitter.language.add('rapid14', { path = out, symbol_name = 'rapid' })
+  expect(vim.treesitter.language.inspect('rapid14').abi_version == 14, 'ABI %s',
+    tostring(vim.treesitter.language.inspect('rapid14').abi_version))
+  local tree = vim.treesitter.get_string_parser('MODULE m\n  PROC main()\n  ENDPROC\nENDMODULE\n', 'rapid14'):parse()[1]
+  expect(not tree:root():has_error(), 'the ABI 14 parser fails on a module: %s', tree:root():sexpr())
+end)
+
 vim.cmd('edit ' .. vim.fn.fnameescape(main_path))
 local buf = vim.api.nvim_get_current_buf()
 

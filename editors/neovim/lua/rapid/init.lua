@@ -113,8 +113,11 @@ end
 --- most: there the grammar is regenerated with `tree-sitter generate --abi 14`
 --- (the tree-sitter CLI must be on PATH).
 ---@param grammar_dir string|nil
+---@param opts { abi: integer?, out: string? }|nil  abi: the highest ABI to build for
+---  (default: what this Neovim loads); out: the library (default: parser/rapid.so here)
 ---@return string path of the built parser
-function M.build_parser(grammar_dir)
+function M.build_parser(grammar_dir, opts)
+  opts = opts or {}
   grammar_dir = grammar_dir or M.config.grammar_dir or vim.fs.joinpath(M.root, '..', '..', 'tree-sitter-rapid')
   grammar_dir = vim.fs.normalize(vim.fn.fnamemodify(grammar_dir, ':p'))
   local src = vim.fs.joinpath(grammar_dir, 'src')
@@ -122,7 +125,7 @@ function M.build_parser(grammar_dir)
     error('no ' .. vim.fs.joinpath(src, 'parser.c') .. ': set grammar_dir to the tree-sitter-rapid folder', 0)
   end
   local abi = parser_abi(vim.fs.joinpath(src, 'parser.c'))
-  local max_abi = vim.treesitter.language_version
+  local max_abi = opts.abi or vim.treesitter.language_version
   if abi and max_abi and abi > max_abi then
     if vim.fn.executable('tree-sitter') == 0 then
       error(('the parser has ABI %d but this Neovim loads ABI %d at most; install the tree-sitter CLI'
@@ -135,9 +138,8 @@ function M.build_parser(grammar_dir)
     run({ 'cp', vim.fs.joinpath(src, 'scanner.c'), vim.fs.joinpath(tmp, 'src') })
     src = vim.fs.joinpath(tmp, 'src')
   end
-  local out_dir = vim.fs.joinpath(M.root, 'parser')
-  vim.fn.mkdir(out_dir, 'p')
-  local out = vim.fs.joinpath(out_dir, 'rapid.so')
+  local out = opts.out or vim.fs.joinpath(M.root, 'parser', 'rapid.so')
+  vim.fn.mkdir(vim.fs.dirname(out), 'p')
   local cc = vim.env.CC or 'cc'
   run({ cc, '-shared', '-fPIC', '-O2', '-I', src, vim.fs.joinpath(src, 'parser.c'),
     vim.fs.joinpath(src, 'scanner.c'), '-o', out }, src)
