@@ -107,13 +107,9 @@ pub(crate) fn uses(
         }
         _ => None,
     };
-    let lower = fold(&name);
     let mut out = Vec::new();
     for (ui, u) in task.units.iter().enumerate() {
         if only_unit.is_some_and(|o| o != ui) || scope.as_ref().is_some_and(|(su, _)| *su != ui) {
-            continue;
-        }
-        if !u.text.to_ascii_lowercase().contains(&lower) {
             continue;
         }
         let root = u.tree.root_node();
