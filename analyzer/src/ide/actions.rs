@@ -14,6 +14,10 @@ use crate::syntax_util::fields;
 use crate::task::{Task, Unit};
 use crate::ty::Ty;
 
+/// Quick fixes for the diagnostics (indexes into `diagnostics`) that
+/// overlap `range`: the diagnostic's own `fix` when it has one, else an
+/// edit computed here for W101 (declare the data), E003/E001 `=` (use
+/// `:=`), W201 (remove the declaration) and E404 (add `RETURN`).
 pub fn code_actions(
     task: &Task,
     unit: usize,

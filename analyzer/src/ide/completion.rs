@@ -87,6 +87,9 @@ fn snippet(label: &str, body: &str) -> CompletionItem {
     }
 }
 
+/// Completion candidates at `offset` for the context the text before it
+/// shows. All candidates of the context are returned (the client filters);
+/// `sort_text` orders the likely ones first.
 pub fn completions(task: &Task, unit: usize, offset: usize) -> Vec<CompletionItem> {
     let Some(u) = task.units.get(unit) else {
         return Vec::new();

@@ -13,6 +13,8 @@ use crate::task::{Item, Task};
 /// Longest declaration text shown before it is shortened.
 const MAX_DECL: usize = 160;
 
+/// Markdown for the name, constant expression or robtarget literal at
+/// `offset`, with the range it describes.
 pub fn hover(task: &Task, unit: usize, offset: usize) -> Option<HoverResult> {
     let u = task.units.get(unit)?;
     if let Some(node) = name_at(&u.tree, offset) {

@@ -15,6 +15,9 @@ use crate::task::Task;
 /// Longest value shown in a hint.
 const MAX_VALUE: usize = 48;
 
+/// Parameter names before positional arguments (calls with two or more
+/// required parameters) and `= value` after `CONST` initialisers that are
+/// not literals, within `range`, sorted by offset.
 pub fn inlay_hints(task: &Task, unit: usize, range: Range<usize>) -> Vec<InlayHint> {
     let Some(u) = task.units.get(unit) else {
         return Vec::new();

@@ -25,6 +25,8 @@ fn def_at<'t>(task: &'t Task, unit: usize, offset: usize) -> Option<Def<'t>> {
     resolve(task, unit, node)
 }
 
+/// Where the name at `offset` is declared (also "go to declaration");
+/// empty for built-ins, which have no source.
 pub fn definition(task: &Task, unit: usize, offset: usize) -> Vec<Location> {
     def_at(task, unit, offset)
         .and_then(|d| location(task, &d))
@@ -32,6 +34,8 @@ pub fn definition(task: &Task, unit: usize, offset: usize) -> Vec<Location> {
         .collect()
 }
 
+/// Where the type of the name at `offset` is declared (user records and
+/// aliases only).
 pub fn type_definition(task: &Task, unit: usize, offset: usize) -> Vec<Location> {
     let Some(def) = def_at(task, unit, offset) else {
         return Vec::new();
@@ -241,6 +245,8 @@ fn passed_by_reference(task: &Task, unit: usize, node: tree_sitter::Node<'_>) ->
     param.is_some_and(|p| p.mode != crate::catalogue::Mode::In)
 }
 
+/// Every use of the declaration at `offset` in the task's modules
+/// (names compare case-insensitively).
 pub fn references(
     task: &Task,
     unit: usize,
@@ -273,6 +279,9 @@ pub fn references(
     out
 }
 
+/// The uses of the declaration at `offset` in this file: (range, is a
+/// write: declared, assigned, a FOR variable, or passed to a VAR, PERS or
+/// INOUT parameter).
 pub fn document_highlights(task: &Task, unit: usize, offset: usize) -> Vec<(Range<usize>, bool)> {
     let Some(def) = def_at(task, unit, offset) else {
         return Vec::new();
@@ -348,6 +357,8 @@ pub(crate) fn is_reserved(name: &str) -> bool {
     RESERVED.iter().any(|r| same(r, name))
 }
 
+/// The range of the name at `offset` if it can be renamed; a message
+/// otherwise (reserved words, built-ins, signals, nothing declared).
 pub fn prepare_rename(task: &Task, unit: usize, offset: usize) -> Result<Range<usize>, String> {
     let u = task.units.get(unit).ok_or("no such file")?;
     let Some(node) = name_at(&u.tree, offset) else {
@@ -395,6 +406,9 @@ pub(crate) fn invalid_identifier(name: &str) -> Option<String> {
     None
 }
 
+/// Edits per file path renaming the declaration at `offset` and all its
+/// uses; refused for invalid identifiers, reserved words, built-in names
+/// and names already declared where the symbol is seen.
 pub fn rename(
     task: &Task,
     unit: usize,

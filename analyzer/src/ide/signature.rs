@@ -139,6 +139,8 @@ pub(crate) fn label(sig: &Sig) -> (String, Vec<Range<usize>>) {
     (out, ranges)
 }
 
+/// The signature of the procedure or function call around `offset`, with
+/// the parameter the current argument goes to.
 pub fn signature_help(task: &Task, unit: usize, offset: usize) -> Option<SignatureHelp> {
     let (sig, call) = call_sig(task, unit, offset)?;
     let (label, ranges) = label(&sig);

@@ -49,6 +49,10 @@ const LEAVES: &[&str] = &[
     "type_identifier",
 ];
 
+/// Foldable line ranges: modules, the `%%%` header (`region`), routines,
+/// records, handlers, compound statements and their clauses, and runs of
+/// two or more whole-line comments (`comment`). A block's closing line
+/// (`ENDPROC`, `ENDIF`, ...) stays visible.
 pub fn folding_ranges(unit: &Unit) -> Vec<FoldingRange> {
     let text = &unit.text;
     let lines = LineIndex::new(text);

@@ -106,6 +106,9 @@ fn routine_data(unit: &Unit, range: &std::ops::Range<usize>) -> Vec<Symbol> {
         .collect()
 }
 
+/// The outline of a file: modules holding their data, records (with
+/// components), aliases and routines (with their routine data), in source
+/// order.
 pub fn document_symbols(unit: &Unit) -> Vec<Symbol> {
     unit.items
         .modules
@@ -131,6 +134,8 @@ fn matches(name: &str, query: &str) -> Option<u8> {
 /// Most symbols a workspace query returns.
 const MAX_WORKSPACE_SYMBOLS: usize = 500;
 
+/// Symbols of every task whose name contains `query` or its letters in
+/// order (case-insensitive), best matches first, at most 500.
 pub fn workspace_symbols(tasks: &[Arc<Task>], query: &str) -> Vec<(String, Symbol)> {
     let mut found: Vec<(u8, String, Symbol)> = Vec::new();
     for task in tasks {

@@ -82,6 +82,9 @@ const OPERATORS: &[&str] = &[
     ":=", "+", "-", "*", "/", "=", "<>", "<", ">", "<=", ">=", "\\", "?", "%",
 ];
 
+/// Semantic tokens of the file (or of the nodes overlapping `range`),
+/// sorted, one line each; `token_type` indexes [`super::TOKEN_TYPES`] and
+/// `modifiers` holds bits of [`super::TOKEN_MODIFIERS`].
 pub fn semantic_tokens(
     task: &Task,
     unit: usize,
