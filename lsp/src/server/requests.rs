@@ -45,12 +45,10 @@ pub fn completion(snap: &Snapshot, pos: Position) -> Vec<lsp::CompletionItem> {
         .map(|c| lsp::CompletionItem {
             kind: Some(completion_kind(c.kind)),
             detail: c.detail,
-            insert_text_format: Some(if c.is_snippet {
-                InsertTextFormat::SNIPPET
-            } else {
-                InsertTextFormat::PLAIN_TEXT
-            }),
-            data: Some(json!({"label": c.label, "kind": kind_name(c.kind)})),
+            insert_text_format: c.is_snippet.then_some(InsertTextFormat::SNIPPET),
+            // The client sends the item back on resolve: its label is there
+            // already, the analyzer's kind goes in `data`.
+            data: Some(json!(kind_name(c.kind))),
             insert_text: c.insert_text,
             sort_text: c.sort_text,
             label: c.label,
@@ -65,13 +63,9 @@ pub fn resolve_completion(mut item: lsp::CompletionItem) -> lsp::CompletionItem 
     let Some(data) = &item.data else {
         return item;
     };
-    let label = data.get("label").and_then(|l| l.as_str());
-    let kind = data
-        .get("kind")
-        .and_then(|k| k.as_str())
-        .and_then(kind_from_name);
-    if let (Some(label), Some(kind)) = (label, kind)
-        && let Some(doc) = ide::completion_documentation(label, kind)
+    let kind = data.as_str().and_then(kind_from_name);
+    if let Some(kind) = kind
+        && let Some(doc) = ide::completion_documentation(&item.label, kind)
     {
         item.documentation = Some(Documentation::MarkupContent(markdown(doc)));
     }
