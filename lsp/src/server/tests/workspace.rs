@@ -206,3 +206,60 @@ async fn unreadable_files_are_skipped_with_a_log_message() {
     assert_eq!(hover, Value::Null);
     client.shutdown().await;
 }
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn rapid_toml_configures_the_rules_and_is_reloaded() {
+    let dir = temp_dir("ws-toml");
+    write_files(
+        &dir,
+        &[("rapid.toml", "[lint]\nignore = [\"unused-data\"]\n")],
+    );
+    let mut client = TestClient::new(dir.clone(), json!({"diagnosticsDelay": 0})).await;
+    let text =
+        "MODULE Main\n  PROC main()\n    VAR num unused;\n    nothere;\n  ENDPROC\nENDMODULE\n";
+    let main = client.open(&dir.join("Main.mod"), text);
+    until_codes(&mut client, &main, &["W101"]).await;
+    // The file changes: unresolved names are hints now, unused data is back.
+    write_files(
+        &dir,
+        &[(
+            "rapid.toml",
+            "[lint.severity]\nunresolved-name = \"hint\"\n",
+        )],
+    );
+    client.notify(
+        "workspace/didChangeWatchedFiles",
+        json!({"changes": [{"uri": uri(&dir.join("rapid.toml")), "type": 2}]}),
+    );
+    let params = until_codes(&mut client, &main, &["W201", "W101"]).await;
+    assert_eq!(params["diagnostics"][1]["severity"], 4, "{params}");
+    client.shutdown().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn without_file_watching_the_disk_is_polled() {
+    let dir = temp_dir("ws-poll");
+    write_files(&dir, &[("Lib.mod", LIB), ("EIO.cfg", EIO)]);
+    // A client that cannot watch files.
+    let mut client =
+        TestClient::with_capabilities(dir.clone(), json!({}), json!({"diagnosticsDelay": 0})).await;
+    let main = client.open(&dir.join("Main.mod"), MAIN);
+    until_codes(&mut client, &main, &[]).await;
+    assert!(
+        !client
+            .server_requests
+            .iter()
+            .any(|r| r["method"] == "client/registerCapability")
+    );
+    // Lib renames its routine on disk; nobody tells the server.
+    std::thread::sleep(std::time::Duration::from_millis(20));
+    write_files(
+        &dir,
+        &[(
+            "Lib.mod",
+            "MODULE Lib\n  PROC helper2()\n  ENDPROC\nENDMODULE\n",
+        )],
+    );
+    until_codes(&mut client, &main, &["W101"]).await;
+    client.shutdown().await;
+}
