@@ -21,7 +21,7 @@ mkdir -p "$tools" "$out"
 parts=("$@")
 [ ${#parts[@]} -gt 0 ] || parts=(static vscode neovim)
 want() { [[ " ${parts[*]} " == *" $1 "* ]]; }
-step() { printf '\n==> editors: %s\n' "$*"; }
+step() { printf '\n==> editors: %s (at %d s)\n' "$*" $((SECONDS - t0)); }
 die() { echo "error: editors: $*" >&2; exit 1; }
 t0=$SECONDS
 failed=()

@@ -356,6 +356,19 @@ try {
     await page.screenshot({ path: path.join(out, "vscode-completion.png") });
     await page.keyboard.press("Escape");
   });
+
+  await step("a missing server binary gives a message with a link to the install instructions", async () => {
+    const machine = path.join(data, "Machine", "settings.json");
+    const bogus = path.join(tmp, "no-such-dir", "rapid");
+    fs.writeFileSync(machine, JSON.stringify({ ...JSON.parse(settings), "rapid.server.path": bogus }, null, 2));
+    const toast = page.locator(".notifications-toasts .notification-toast", { hasText: bogus });
+    await toast.first().waitFor({ state: "visible" });
+    const text = await toast.first().innerText();
+    await page.screenshot({ path: path.join(out, "vscode-missing-server.png") });
+    assert(/does not exist or cannot be run/.test(text), `notification: ${text}`);
+    assert(/How to install/.test(text), `notification without the install link: ${text}`);
+    fs.writeFileSync(machine, settings);
+  });
 } catch (err) {
   failed += 1;
   failures.push(`setup: ${err?.message ?? err}`);
