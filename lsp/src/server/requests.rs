@@ -236,7 +236,7 @@ pub fn workspace_edit(snap: &Snapshot, files: Vec<(String, Vec<Edit>)>) -> Works
             let Some(unit) = snap.task.units.iter().find(|u| u.path == path) else {
                 continue;
             };
-            let index = LineIndex::new(&unit.text);
+            let index = snap.line_index(&path, unit);
             text_edits(&LineMap::new(&unit.text, &index, snap.encoding), &edits)
         };
         changes.entry(uri).or_default().extend(converted);

@@ -101,6 +101,8 @@ pub struct Snapshot {
     /// that unit: carried over while the new ones are computed.
     pub previous: Option<(Arc<Unit>, Arc<Vec<Diagnostic>>)>,
     pub config_generation: u64,
+    /// Line indexes of the task's other files, built on demand.
+    pub other_indexes: Mutex<HashMap<String, Arc<LineIndex>>>,
 }
 
 impl Snapshot {
@@ -121,11 +123,23 @@ impl Snapshot {
             return Some(Location::new(uri, self.map().range(range)));
         }
         let unit = self.task.units.iter().find(|u| u.path == path)?;
-        let index = LineIndex::new(&unit.text);
+        let index = self.line_index(path, unit);
         Some(Location::new(
             uri,
             LineMap::new(&unit.text, &index, self.encoding).range(range),
         ))
+    }
+
+    /// The line index of another unit of the task, built once per snapshot.
+    pub fn line_index(&self, path: &str, unit: &Unit) -> Arc<LineIndex> {
+        let mut cache = self
+            .other_indexes
+            .lock()
+            .unwrap_or_else(PoisonError::into_inner);
+        cache
+            .entry(path.to_owned())
+            .or_insert_with(|| Arc::new(LineIndex::new(&unit.text)))
+            .clone()
     }
 
     /// The diagnostics to report: the analyzer's, with the lint settings
@@ -289,6 +303,7 @@ impl State {
             cached,
             previous,
             config_generation: self.config_generation,
+            other_indexes: Mutex::default(),
         })
     }
 
