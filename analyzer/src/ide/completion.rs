@@ -70,17 +70,34 @@ fn item(label: &str, kind: CompletionKind, detail: Option<String>, sort: &str) -
     }
 }
 
+/// A snippet line without its placeholders' markup: `FOR ${1:i} FROM`
+/// gives `FOR i FROM`.
+fn plain(line: &str) -> String {
+    let mut out = String::new();
+    let mut chars = line.chars().peekable();
+    while let Some(c) = chars.next() {
+        match c {
+            '$' => {
+                if chars.peek() == Some(&'{') {
+                    chars.next();
+                    while chars.next_if(|c| c.is_ascii_digit()).is_some() {}
+                    chars.next_if_eq(&':');
+                } else {
+                    while chars.next_if(|c| c.is_ascii_digit()).is_some() {}
+                }
+            }
+            '}' => {}
+            c => out.push(c),
+        }
+    }
+    out.trim_end().to_owned()
+}
+
 fn snippet(label: &str, body: &str) -> CompletionItem {
     CompletionItem {
         label: label.to_owned(),
         kind: CompletionKind::Snippet,
-        detail: Some(
-            body.lines()
-                .next()
-                .unwrap_or_default()
-                .replace("${1:", "")
-                .replace('}', ""),
-        ),
+        detail: Some(plain(body.lines().next().unwrap_or_default())),
         insert_text: Some(body.to_owned()),
         is_snippet: true,
         sort_text: Some(format!("3{}", fold(label))),

@@ -40,6 +40,7 @@ fn statement_start_offers_instructions_procedures_keywords_and_snippets() {
             .unwrap_or_default()
             .contains("${1:i}")
     );
+    assert_eq!(for_snippet.detail.as_deref(), Some("FOR i FROM 1 TO 10 DO"));
     // Functions are not statements.
     assert!(!has(&labels(&in_proc("    $0")), "Abs"));
 }
