@@ -19,7 +19,7 @@ use tower_lsp_server::ls_types::*;
 use tower_lsp_server::{Client, LanguageServer};
 
 use super::diagnostics;
-use super::document::{Document, apply_changes};
+use super::document::{Document, apply_changes, apply_text_changes};
 use super::position::PosEncoding;
 use super::requests;
 use super::settings::Settings;
@@ -596,6 +596,13 @@ fn server_capabilities(encoding: PosEncoding) -> ServerCapabilities {
         })),
         document_formatting_provider: Some(OneOf::Left(true)),
         document_range_formatting_provider: Some(OneOf::Left(true)),
+        workspace: Some(WorkspaceServerCapabilities {
+            workspace_folders: Some(WorkspaceFoldersServerCapabilities {
+                supported: Some(true),
+                change_notifications: Some(OneOf::Left(true)),
+            }),
+            file_operations: None,
+        }),
         diagnostic_provider: Some(DiagnosticServerCapabilities::Options(DiagnosticOptions {
             identifier: Some("rapid".to_owned()),
             inter_file_dependencies: true,
@@ -663,6 +670,7 @@ impl LanguageServer for Backend {
         if is_eio_cfg(&path) {
             self.mutate("opening", |s| {
                 s.ws.set_config(&path, &doc.text);
+                s.open_configs.insert(path.clone(), doc.text);
                 s.config_generation += 1;
             });
             self.republish_all();
@@ -701,6 +709,21 @@ impl LanguageServer for Backend {
     async fn did_change(&self, params: DidChangeTextDocumentParams) {
         let path = path_of(&params.text_document.uri);
         let version = params.text_document.version;
+        if is_eio_cfg(&path) {
+            let applied = self.mutate("applying a change", |s| {
+                let encoding = s.encoding;
+                let text = s.open_configs.get_mut(&path)?;
+                apply_text_changes(text, &params.content_changes, encoding);
+                let text = text.clone();
+                s.ws.set_config(&path, &text);
+                s.config_generation += 1;
+                Some(())
+            });
+            if applied.flatten().is_some() {
+                self.republish_all();
+            }
+            return;
+        }
         let outcome = self.mutate("applying a change", |s| {
             let encoding = s.encoding;
             let doc = s.docs.get(&path)?;
@@ -746,6 +769,19 @@ impl LanguageServer for Backend {
     async fn did_close(&self, params: DidCloseTextDocumentParams) {
         let uri = params.text_document.uri;
         let path = path_of(&uri);
+        if is_eio_cfg(&path) {
+            self.mutate("closing", |s| {
+                if s.open_configs.remove(&path).is_some() {
+                    let p = PathBuf::from(&path);
+                    if !p.is_file() || s.load_from_disk(&p).is_err() {
+                        s.ws.remove_config(&path);
+                        s.config_generation += 1;
+                    }
+                }
+            });
+            self.republish_all();
+            return;
+        }
         let others = self
             .mutate("closing", |s| {
                 let doc = s.docs.remove(&path)?;
@@ -816,6 +852,35 @@ impl LanguageServer for Backend {
             self.log(MessageType::WARNING, p).await;
         }
         self.republish_all();
+    }
+
+    async fn did_change_workspace_folders(&self, params: DidChangeWorkspaceFoldersParams) {
+        self.mutate("changing workspace folders", |s| {
+            let removed: Vec<PathBuf> = params
+                .event
+                .removed
+                .iter()
+                .filter_map(|f| f.uri.to_file_path().map(|p| p.into_owned()))
+                .collect();
+            s.roots.retain(|r| !removed.contains(r));
+            for f in &params.event.added {
+                if let Some(p) = f.uri.to_file_path() {
+                    s.roots.push(p.into_owned());
+                }
+            }
+            // Files of removed folders are forgotten (unless open).
+            let gone: Vec<PathBuf> = s
+                .disk
+                .keys()
+                .filter(|p| removed.iter().any(|r| p.starts_with(r)))
+                .cloned()
+                .collect();
+            for p in gone {
+                s.remove_from_disk(&p);
+            }
+        });
+        let this = self.clone();
+        tokio::spawn(async move { this.index_workspace().await });
     }
 
     async fn did_change_configuration(&self, params: DidChangeConfigurationParams) {

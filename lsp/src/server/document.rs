@@ -67,6 +67,25 @@ pub fn apply_changes(
     Unit::new(unit.path.clone(), text, tree.as_ref())
 }
 
+/// Applies `changes` to a plain text (an I/O configuration open in the
+/// editor).
+pub fn apply_text_changes(
+    text: &mut String,
+    changes: &[TextDocumentContentChangeEvent],
+    encoding: PosEncoding,
+) {
+    for change in changes {
+        match change.range {
+            None => text.clone_from(&change.text),
+            Some(range) => {
+                let index = LineIndex::new(text);
+                let span = LineMap::new(text, &index, encoding).offset_range(range);
+                text.replace_range(span, &change.text);
+            }
+        }
+    }
+}
+
 /// A byte offset as tree-sitter counts points: rows end at `\n` only,
 /// columns are bytes.
 fn point_at(text: &str, offset: usize) -> Point {

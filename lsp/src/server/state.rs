@@ -37,6 +37,8 @@ pub struct State {
     pub ws: Workspace,
     /// Open documents by path (the analyzer's name of the file).
     pub docs: HashMap<String, Document>,
+    /// I/O configurations (`EIO.cfg`) open in the editor, with their text.
+    pub open_configs: HashMap<String, String>,
     pub encoding: PosEncoding,
     pub settings: Settings,
     /// The client's settings as it sent them, to resolve again when

@@ -263,3 +263,44 @@ async fn without_file_watching_the_disk_is_polled() {
     until_codes(&mut client, &main, &["W101"]).await;
     client.shutdown().await;
 }
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn an_io_configuration_edited_in_the_editor_applies_at_once() {
+    let dir = temp_dir("ws-eio-edit");
+    write_files(&dir, &[("Lib.mod", LIB)]);
+    let mut client = TestClient::new(dir.clone(), json!({"diagnosticsDelay": 0})).await;
+    let eio = client.open(&dir.join("EIO.cfg"), EIO);
+    let main = client.open(&dir.join("Main.mod"), MAIN);
+    until_codes(&mut client, &main, &[]).await;
+    // Rename the signal in the configuration (unsaved): `doGrip` is unknown.
+    let line = EIO
+        .lines()
+        .position(|l| l.contains("doGrip"))
+        .expect("line");
+    let col = EIO
+        .lines()
+        .nth(line)
+        .and_then(|l| l.find("doGrip"))
+        .expect("col")
+        + 2;
+    client.change(
+        &eio,
+        2,
+        json!([{"range": {"start": {"line": line, "character": col}, "end": {"line": line, "character": col + 4}}, "text": "Hand"}]),
+    );
+    let params = client.diagnostics_for(&main).await;
+    let params = if codes(&params).is_empty() {
+        client.diagnostics_for(&main).await
+    } else {
+        params
+    };
+    assert!(!codes(&params).is_empty(), "{params}");
+    // Renamed back: clean again.
+    client.change(
+        &eio,
+        3,
+        json!([{"range": {"start": {"line": line, "character": col}, "end": {"line": line, "character": col + 4}}, "text": "Grip"}]),
+    );
+    until_codes(&mut client, &main, &[]).await;
+    client.shutdown().await;
+}
