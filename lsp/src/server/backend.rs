@@ -745,6 +745,12 @@ impl LanguageServer for Backend {
         match outcome {
             Some(Some(others)) => {
                 self.schedule(vec![path], None);
+                let caps = self.shared.lock().caps;
+                if !others.is_empty() && caps.pull_diagnostics && caps.diagnostic_refresh {
+                    // Pulling clients ask again for the other files.
+                    let client = self.client.clone();
+                    tokio::spawn(async move { client.workspace_diagnostic_refresh().await });
+                }
                 self.schedule(others, None);
             }
             Some(None) => {
