@@ -16,6 +16,43 @@ use crate::names::{fold, same};
 use crate::task::{Item, Task};
 use crate::ty::Ty;
 
+/// The catalogue's names (folded) and signatures, computed once.
+struct Builtins {
+    instructions: Vec<(String, String)>,
+    functions: Vec<(String, String)>,
+    datatypes: Vec<(String, String)>,
+    data: Vec<(String, String)>,
+}
+
+fn builtins() -> &'static Builtins {
+    static CACHE: std::sync::OnceLock<Builtins> = std::sync::OnceLock::new();
+    CACHE.get_or_init(|| {
+        let cat = catalogue();
+        Builtins {
+            instructions: cat
+                .instructions
+                .iter()
+                .map(|r| (fold(&r.name), r.signature()))
+                .collect(),
+            functions: cat
+                .functions
+                .iter()
+                .map(|r| (fold(&r.name), r.signature()))
+                .collect(),
+            datatypes: cat
+                .datatypes
+                .iter()
+                .map(|t| (fold(&t.name), t.signature()))
+                .collect(),
+            data: cat
+                .data
+                .iter()
+                .map(|d| (fold(&d.name), d.signature()))
+                .collect(),
+        }
+    })
+}
+
 /// Snippets: label, body.
 const STATEMENT_SNIPPETS: &[(&str, &str)] = &[
     ("IF", "IF ${1:condition} THEN\n\t$0\nENDIF"),
@@ -272,12 +309,16 @@ fn statement_start_items(cx: &mut Cx<'_>) -> Vec<CompletionItem> {
             out.push(item(name, kind, Some(detail), "1"));
         }
     });
-    for r in &catalogue().instructions {
-        if seen.insert(fold(&r.name)) {
+    for (r, (key, sig)) in catalogue()
+        .instructions
+        .iter()
+        .zip(&builtins().instructions)
+    {
+        if seen.insert(key.clone()) {
             out.push(item(
                 &r.name,
                 CompletionKind::Procedure,
-                Some(r.signature()),
+                Some(sig.clone()),
                 "2",
             ));
         }
@@ -335,14 +376,9 @@ fn types(cx: &mut Cx<'_>) -> Vec<CompletionItem> {
     for refs in cx.task.locals.values() {
         refs.iter().for_each(|r| user(*r, true));
     }
-    for t in &catalogue().datatypes {
-        if seen.insert(fold(&t.name)) {
-            out.push(item(
-                &t.name,
-                CompletionKind::Type,
-                Some(t.signature()),
-                "1",
-            ));
+    for (t, (key, sig)) in catalogue().datatypes.iter().zip(&builtins().datatypes) {
+        if seen.insert(key.clone()) {
+            out.push(item(&t.name, CompletionKind::Type, Some(sig.clone()), "1"));
         }
     }
     out
@@ -384,11 +420,10 @@ fn visible_routines(cx: &mut Cx<'_>, f: &mut impl FnMut(&str, CompletionKind, St
 /// Data in scope; those of type `expected` sort first.
 fn data_items(cx: &mut Cx<'_>, expected: Option<&str>, out: &mut Vec<CompletionItem>) {
     let types = cx.task.types();
+    let expected_base = expected.map(|e| types.base(&Ty::named(e)));
     let matches = |ty: Option<&str>| -> bool {
-        match (expected, ty) {
-            (Some(e), Some(t)) => {
-                same(e, t) || types.base(&Ty::named(e)) == types.base(&Ty::named(t))
-            }
+        match (expected, &expected_base, ty) {
+            (Some(e), Some(eb), Some(t)) => same(e, t) || *eb == types.base(&Ty::named(t)),
             _ => false,
         }
     };
@@ -475,13 +510,13 @@ fn data_items(cx: &mut Cx<'_>, expected: Option<&str>, out: &mut Vec<CompletionI
             );
         }
     }
-    for d in &catalogue().data {
+    for (d, (_, sig)) in catalogue().data.iter().zip(&builtins().data) {
         let kind = match d.kind {
             crate::catalogue::DatumKind::Const => CompletionKind::Constant,
             crate::catalogue::DatumKind::Pers => CompletionKind::Persistent,
             crate::catalogue::DatumKind::Var => CompletionKind::Variable,
         };
-        push(&d.name, kind, Some(&d.ty), d.signature(), 4);
+        push(&d.name, kind, Some(&d.ty), sig.clone(), 4);
     }
 }
 
@@ -490,8 +525,9 @@ fn expression_items(cx: &mut Cx<'_>, expected: Option<&str>) -> Vec<CompletionIt
     let mut out = Vec::new();
     data_items(cx, expected, &mut out);
     let types = cx.task.types();
-    let returns_expected = |ret: Option<&str>| match (expected, ret) {
-        (Some(e), Some(r)) => same(e, r) || types.base(&Ty::named(e)) == types.base(&Ty::named(r)),
+    let expected_base = expected.map(|e| types.base(&Ty::named(e)));
+    let returns_expected = |ret: Option<&str>| match (expected, &expected_base, ret) {
+        (Some(e), Some(eb), Some(r)) => same(e, r) || *eb == types.base(&Ty::named(r)),
         _ => false,
     };
     let mut seen = HashSet::new();
@@ -517,8 +553,8 @@ fn expression_items(cx: &mut Cx<'_>, expected: Option<&str>) -> Vec<CompletionIt
             ));
         }
     }
-    for r in &catalogue().functions {
-        if seen.insert(fold(&r.name)) {
+    for (r, (key, sig)) in catalogue().functions.iter().zip(&builtins().functions) {
+        if seen.insert(key.clone()) {
             let first = if returns_expected(r.returns.as_deref()) {
                 "1"
             } else {
@@ -527,7 +563,7 @@ fn expression_items(cx: &mut Cx<'_>, expected: Option<&str>) -> Vec<CompletionIt
             out.push(item(
                 &r.name,
                 CompletionKind::Function,
-                Some(r.signature()),
+                Some(sig.clone()),
                 &format!("{first}2"),
             ));
         }
