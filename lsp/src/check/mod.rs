@@ -90,6 +90,22 @@ pub struct CheckArgs {
     /// Threads to check with (default: one per core).
     #[arg(long, value_name = "N")]
     pub threads: Option<usize>,
+    /// Print the time each phase took to stderr (for benchmarks).
+    #[arg(long, hide = true)]
+    pub timings: bool,
+}
+
+/// Phase timings of the last run, for `--timings`.
+static TIMINGS: std::sync::Mutex<Vec<(&'static str, std::time::Duration)>> =
+    std::sync::Mutex::new(Vec::new());
+
+/// Records that `phase` took the time since `*since`, and restarts it.
+fn lap(phase: &'static str, since: &mut std::time::Instant) {
+    let now = std::time::Instant::now();
+    if let Ok(mut t) = TIMINGS.lock() {
+        t.push((phase, now - *since));
+    }
+    *since = now;
 }
 
 /// Files larger than this are not modules a controller would load; they are
@@ -164,6 +180,8 @@ fn run_inner(args: CheckArgs, stderr: &mut impl Write) -> Result<ExitCode, Strin
             .num_threads(n.max(1))
             .build_global();
     }
+    let mut clock = std::time::Instant::now();
+    let started = clock;
     let paths = if args.paths.is_empty() {
         vec![PathBuf::from(".")]
     } else {
@@ -228,6 +246,7 @@ fn run_inner(args: CheckArgs, stderr: &mut impl Write) -> Result<ExitCode, Strin
         );
     }
 
+    lap("configuration and discovery", &mut clock);
     let progress = progress_bar(found.files.len());
     let mut outcomes = check_files(&found.files, &found.configs, &extra, &progress);
     let mut fixed = 0;
@@ -244,6 +263,7 @@ fn run_inner(args: CheckArgs, stderr: &mut impl Write) -> Result<ExitCode, Strin
         }
     }
     progress.finish_and_clear();
+    clock = std::time::Instant::now();
 
     let mut report = Report {
         checked: Vec::with_capacity(outcomes.len()),
@@ -266,6 +286,7 @@ fn run_inner(args: CheckArgs, stderr: &mut impl Write) -> Result<ExitCode, Strin
         }
     }
 
+    lap("selection and suppressions", &mut clock);
     let stdout = std::io::stdout();
     let mut out = anstream::AutoStream::auto(stdout.lock());
     let written = if args.statistics {
@@ -284,6 +305,20 @@ fn run_inner(args: CheckArgs, stderr: &mut impl Write) -> Result<ExitCode, Strin
         && e.kind() != std::io::ErrorKind::BrokenPipe
     {
         return Err(format!("cannot write the report: {e}"));
+    }
+    lap("output", &mut clock);
+    if args.timings
+        && let Ok(t) = TIMINGS.lock()
+    {
+        for (phase, took) in t.iter() {
+            let _ = writeln!(stderr, "{:>9.2} ms  {phase}", took.as_secs_f64() * 1e3);
+        }
+        let total = started.elapsed().as_secs_f64() * 1e3;
+        let _ = writeln!(
+            stderr,
+            "{total:>9.2} ms  total ({} threads)",
+            rayon::current_num_threads()
+        );
     }
     let worst = report
         .checked
@@ -384,22 +419,30 @@ pub fn check_files(
     extra: &Discovery,
     progress: &ProgressBar,
 ) -> Vec<Outcome> {
-    let read: Vec<Result<SourceFile, Skip>> = files
-        .par_iter()
-        .map(|p| {
-            let result = read_source(p);
-            progress.inc(1);
-            result
-        })
+    let mut clock = std::time::Instant::now();
+    // Read, decode and parse each file in one parallel pass, largest files
+    // first so that no big module is left to one thread at the end.
+    let mut order: Vec<(u64, usize)> = files
+        .iter()
+        .enumerate()
+        .map(|(i, p)| (std::fs::metadata(p).map_or(0, |m| m.len()), i))
         .collect();
-    let units: Vec<Option<Unit>> = read
+    order.sort_by(|a, b| b.0.cmp(&a.0).then(a.1.cmp(&b.1)));
+    let mut parsed: Vec<(usize, Result<SourceFile, Skip>, Option<Unit>)> = order
         .par_iter()
-        .map(|r| {
-            r.as_ref()
+        .map(|&(_, i)| {
+            let read = read_source(&files[i]);
+            let unit = read
+                .as_ref()
                 .ok()
-                .map(|f| Unit::new(unit_path(&f.path), f.text.clone(), None))
+                .map(|f| Unit::new(unit_path(&f.path), f.text.clone(), None));
+            progress.inc(1);
+            (i, read, unit)
         })
         .collect();
+    parsed.sort_by_key(|(i, _, _)| *i);
+    let (read, units): (Vec<_>, Vec<_>) = parsed.into_iter().map(|(_, r, u)| (r, u)).unzip();
+    lap("reading, decoding, parsing and item trees", &mut clock);
     let mut workspace = Workspace::new();
     for path in configs {
         if let Ok(bytes) = std::fs::read(path) {
@@ -414,21 +457,39 @@ pub fn check_files(
         workspace.set_unit(unit);
     }
     let tasks = workspace.tasks();
-    let mut by_path: HashMap<String, Vec<Diagnostic>> = tasks
-        .par_iter()
+    lap("extra paths, configuration and task indexes", &mut clock);
+    // One job per checked file, largest first (a task may be one big
+    // backup: its files are spread over the threads too).
+    let mut jobs: Vec<(&Arc<rapid_analyzer::task::Task>, &Arc<Unit>)> = tasks
+        .iter()
         .filter(|task| checked_keys.contains(&task.key))
-        .flat_map_iter(|task| {
+        .flat_map(|task| {
             task.units
                 .iter()
                 .filter(|u| checked_paths.contains(&u.path))
-                .map(|u| {
-                    let d = (u.path.clone(), diagnostics_of(task, u));
-                    progress.inc(1);
-                    d
-                })
-                .collect::<Vec<_>>()
+                .map(move |u| (task, u))
         })
         .collect();
+    jobs.sort_by(|a, b| {
+        b.1.text
+            .len()
+            .cmp(&a.1.text.len())
+            .then(a.1.path.cmp(&b.1.path))
+    });
+    let mut by_path: HashMap<String, Vec<Diagnostic>> = jobs
+        .par_iter()
+        .map(|(task, u)| {
+            let d = (u.path.clone(), diagnostics_of(task, u));
+            progress.inc(1);
+            d
+        })
+        .collect();
+    lap("checking (analyzer)", &mut clock);
+    // Freeing every tree and index costs tens of milliseconds on a large
+    // project and the process ends soon after: let the exit reclaim them.
+    drop(jobs);
+    std::mem::forget(tasks);
+    std::mem::forget(workspace);
     read.into_iter()
         .zip(files)
         .map(|(r, path)| match r {
