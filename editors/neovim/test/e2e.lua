@@ -134,6 +134,20 @@ check('filetype detection: extensions in any case, content for .mod/.sys/.prg', 
   end
 end)
 
+check('the nvim-lspconfig configuration registers (with a stand-in lspconfig.configs)', function()
+  -- nvim-lspconfig is not installed here: its configs table is a plain table
+  package.loaded['lspconfig.configs'] = {}
+  require('rapid.lspconfig').register()
+  local entry = package.loaded['lspconfig.configs'].rapid
+  package.loaded['lspconfig.configs'] = nil
+  expect(entry and entry.default_config, 'no rapid entry')
+  local d = entry.default_config
+  expect(vim.deep_equal(d.cmd, { 'rapid', 'lsp' }) and vim.deep_equal(d.filetypes, { 'rapid' }),
+    'default_config %s', vim.inspect(d))
+  local root = d.root_dir(ws .. '/MainModule.mod')
+  expect(root == ws, 'root_dir %s, expected the folder with EIO.cfg %s', tostring(root), ws)
+end)
+
 -- headless Neovim writes notifications to stderr without a newline
 vim.notify = function(msg)
   say('notify: ' .. msg)
@@ -306,6 +320,27 @@ check('completion after \\ lists the optional arguments', function()
   expect(known == total, 'completion lists %d of the %d optional arguments of MoveL: %s', known, total,
     table.concat(labels, ' '))
   vim.api.nvim_buf_set_lines(buf, row + 1, row + 2, false, {})
+end)
+
+check(':RapidRestart starts a new server that publishes the diagnostics again', function()
+  local old = client.id
+  vim.cmd('RapidRestart')
+  local new
+  local ok = vim.wait(TIMEOUT, function()
+    new = vim.lsp.get_clients({ bufnr = buf, name = 'rapid' })[1]
+    return new ~= nil and new.id ~= old and new.initialized
+  end, 50)
+  expect(ok, 'no new rapid client after :RapidRestart')
+  expect(#vim.lsp.get_clients({ name = 'rapid' }) == 1, '%d rapid clients', #vim.lsp.get_clients({ name = 'rapid' }))
+  ok = vim.wait(TIMEOUT, function()
+    for _, d in ipairs(vim.diagnostic.get(buf)) do
+      if d.code == expected[1].code then
+        return true
+      end
+    end
+    return false
+  end, 50)
+  expect(ok, 'no %s diagnostic from the new server', expected[1].code)
 end)
 
 finish()

@@ -156,7 +156,7 @@ function M.restart()
   vim.defer_fn(function()
     for _, buf in ipairs(vim.api.nvim_list_bufs()) do
       if vim.api.nvim_buf_is_loaded(buf) and vim.bo[buf].filetype == 'rapid' then
-        vim.api.nvim_exec_autocmds('FileType', { buffer = buf, pattern = 'rapid' })
+        vim.api.nvim_exec_autocmds('FileType', { buffer = buf })
       end
     end
   end, 300)
