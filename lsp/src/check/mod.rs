@@ -452,6 +452,8 @@ pub fn check_files(
     }
     let checked_paths: HashSet<String> = units.iter().flatten().map(|u| u.path.clone()).collect();
     let checked_keys: BTreeSet<String> = checked_paths.iter().map(|p| task_key(p)).collect();
+    // Skipped files are not checked: the second half of the bar is shorter.
+    progress.set_length((files.len() + checked_paths.len()) as u64);
     add_extra(&mut workspace, extra, &checked_paths, &checked_keys);
     for unit in units.into_iter().flatten() {
         workspace.set_unit(unit);
