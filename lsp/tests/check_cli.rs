@@ -471,3 +471,31 @@ fn rules_lists_and_describes() {
     assert_eq!(out.status.code(), Some(2));
     assert!(text(&out.stderr).contains("no rule has the code or name `nonsense`"));
 }
+
+#[test]
+fn sarif_related_locations_point_into_checked_files() {
+    let dir = scratch("sarif-related");
+    write(
+        &dir,
+        &[
+            (
+                "p/A.mod",
+                "MODULE A\n    PROC helper()\n    ENDPROC\nENDMODULE\n",
+            ),
+            (
+                "p/B.mod",
+                "MODULE B\n    PROC helper()\n    ENDPROC\nENDMODULE\n",
+            ),
+        ],
+    );
+    let out = rapid(&dir, &["check", "--format", "sarif"]);
+    let log: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    let results = log["runs"][0]["results"].as_array().expect("results");
+    let a = results
+        .iter()
+        .find(|r| r["locations"][0]["physicalLocation"]["artifactLocation"]["uri"] == "p/A.mod")
+        .unwrap_or_else(|| panic!("a result in A: {log}"));
+    let related = &a["relatedLocations"][0]["physicalLocation"];
+    assert_eq!(related["artifactLocation"]["uri"], "p/B.mod", "{a}");
+    assert_eq!(related["region"]["startLine"], 2, "{a}");
+}

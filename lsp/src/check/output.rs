@@ -343,6 +343,11 @@ pub fn sarif(out: &mut impl Write, report: &Report, root: &Path) -> io::Result<(
     let rules: Vec<Value> = RULES.iter().map(|r| sarif_rule(r)).collect();
     let mut results = Vec::new();
     let mut seen: BTreeMap<String, usize> = BTreeMap::new();
+    let by_path: std::collections::HashMap<String, &Checked> = report
+        .checked
+        .iter()
+        .map(|c| (c.file.path.to_string_lossy().into_owned(), c))
+        .collect();
     for (c, d) in all(report) {
         let l = locate(c, d);
         let (uri, relative) = relative_uri(&c.file.path, root);
@@ -379,6 +384,42 @@ pub fn sarif(out: &mut impl Write, report: &Report, root: &Path) -> io::Result<(
         });
         if let Some(index) = RULES.iter().position(|r| r.code == d.rule.code) {
             result["ruleIndex"] = json!(index);
+        }
+        let related: Vec<Value> = d
+            .related
+            .iter()
+            .enumerate()
+            .filter_map(|(id, r)| {
+                // Another file is shown only when it was checked too (an
+                // extra path's module has no place in the report).
+                let target = match &r.file {
+                    None => c,
+                    Some(path) => *by_path.get(path.as_str())?,
+                };
+                let (line, column) = target.file.human(r.range.start);
+                let (end_line, end_column) = target.file.human(r.range.end);
+                let (uri, relative) = relative_uri(&target.file.path, root);
+                let mut artifact = json!({"uri": uri});
+                if relative {
+                    artifact["uriBaseId"] = json!("%SRCROOT%");
+                }
+                Some(json!({
+                    "id": id,
+                    "message": {"text": r.message},
+                    "physicalLocation": {
+                        "artifactLocation": artifact,
+                        "region": {
+                            "startLine": line,
+                            "startColumn": column,
+                            "endLine": end_line,
+                            "endColumn": end_column,
+                        }
+                    }
+                }))
+            })
+            .collect();
+        if !related.is_empty() {
+            result["relatedLocations"] = json!(related);
         }
         results.push(result);
     }
