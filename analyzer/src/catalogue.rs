@@ -581,7 +581,13 @@ fn index<T>(items: &[T], name: impl Fn(&T) -> &String) -> HashMap<String, usize>
 }
 
 fn lookup<'a, T>(map: &HashMap<String, usize>, items: &'a [T], name: &str) -> Option<&'a T> {
-    map.get(&name.to_lowercase()).and_then(|&i| items.get(i))
+    // Catalogue names are ASCII; other names keep the Unicode lowercasing.
+    let index = if name.is_ascii() {
+        crate::names::with_folded(name, |key| map.get(key).copied())
+    } else {
+        map.get(&name.to_lowercase()).copied()
+    };
+    index.and_then(|i| items.get(i))
 }
 
 #[cfg(test)]

@@ -7,6 +7,24 @@ pub fn fold(name: &str) -> String {
     name.to_ascii_lowercase()
 }
 
+/// Calls `f` with the folded form of `name` (as [`fold`]) without
+/// allocating for names of up to 32 bytes: for map look-ups on a hot path.
+pub fn with_folded<R>(name: &str, f: impl FnOnce(&str) -> R) -> R {
+    const MAX: usize = 32;
+    let bytes = name.as_bytes();
+    if bytes.len() <= MAX {
+        let mut buf = [0u8; MAX];
+        let out = &mut buf[..bytes.len()];
+        out.copy_from_slice(bytes);
+        out.make_ascii_lowercase();
+        // ASCII lowercasing keeps UTF-8 valid, so this always succeeds.
+        if let Ok(folded) = std::str::from_utf8(out) {
+            return f(folded);
+        }
+    }
+    f(&fold(name))
+}
+
 /// Do two names denote the same thing?
 pub fn same(a: &str, b: &str) -> bool {
     a.eq_ignore_ascii_case(b)
@@ -19,5 +37,8 @@ mod tests {
         assert_eq!(super::fold("MoveL"), "movel");
         assert!(super::same("EndProc", "ENDPROC"));
         assert!(!super::same("p10", "p100"));
+        for name in ["MoveL", "", "é_Ä", &"AbC".repeat(20)] {
+            assert_eq!(super::with_folded(name, str::to_string), super::fold(name));
+        }
     }
 }

@@ -6,7 +6,7 @@ use std::fmt;
 
 use crate::catalogue::{Catalogue, TypeKind, ValueClass, catalogue};
 use crate::items::{AliasDecl, RecordDecl};
-use crate::names::{fold, same};
+use crate::names::{fold, same, with_folded};
 
 /// The type of a value, a data object or a parameter.
 #[derive(Clone, Debug)]
@@ -134,7 +134,7 @@ impl<'a> Types<'a> {
 
     /// Is there a type of this name?
     pub fn exists(&self, name: &str) -> bool {
-        self.user.contains_key(&fold(name))
+        with_folded(name, |key| self.user.contains_key(key))
             || self.catalogue.datatype(name).is_some()
             || name.eq_ignore_ascii_case("switch")
     }
@@ -149,7 +149,7 @@ impl<'a> Types<'a> {
     }
 
     pub fn user(&self, name: &str) -> Option<UserType<'a>> {
-        self.user.get(&fold(name)).copied()
+        with_folded(name, |key| self.user.get(key).copied())
     }
 
     /// Follows aliases (user and built-in) to the type they stand for.

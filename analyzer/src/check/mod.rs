@@ -18,7 +18,7 @@ use tree_sitter::Node;
 use crate::catalogue::{Catalogue, Datum, DatumKind, Mode, Routine, catalogue};
 use crate::diagnostic::{Diagnostic, Related, Rule};
 use crate::items::{DataDecl, Module, ParamDecl, RoutineDecl, Storage};
-use crate::names::fold;
+use crate::names::{fold, with_folded};
 use crate::task::{Item, ItemRef, Task, Unit};
 use crate::ty::{Ty, Types};
 
@@ -371,17 +371,20 @@ impl<'t> Cx<'t> {
     /// Items visible from the current module under `name`: its own items
     /// (any scope) first, then the task's globals.
     pub(crate) fn lookup_items(&self, name: &str) -> Vec<ItemRef> {
-        let key = fold(name);
+        with_folded(name, |key| self.lookup_items_folded(key))
+    }
+
+    fn lookup_items_folded(&self, key: &str) -> Vec<ItemRef> {
         let mine = self.module_idx();
         let mut own: Vec<ItemRef> = Vec::new();
-        if let Some(locals) = self.task.locals.get(&key) {
+        if let Some(locals) = self.task.locals.get(key) {
             own.extend(
                 locals
                     .iter()
                     .filter(|r| r.unit == self.unit_idx && Some(r.module) == mine),
             );
         }
-        if let Some(globals) = self.task.globals.get(&key) {
+        if let Some(globals) = self.task.globals.get(key) {
             let (here, elsewhere): (Vec<ItemRef>, Vec<ItemRef>) = globals
                 .iter()
                 .partition(|r| r.unit == self.unit_idx && Some(r.module) == mine);
@@ -397,12 +400,14 @@ impl<'t> Cx<'t> {
     /// the name is not visible.
     pub(crate) fn local_elsewhere(&self, name: &str) -> Option<ItemRef> {
         let mine = self.module_idx();
-        self.task
-            .locals
-            .get(&fold(name))?
-            .iter()
-            .copied()
-            .find(|r| !(r.unit == self.unit_idx && Some(r.module) == mine))
+        with_folded(name, |key| {
+            self.task
+                .locals
+                .get(key)?
+                .iter()
+                .copied()
+                .find(|r| !(r.unit == self.unit_idx && Some(r.module) == mine))
+        })
     }
 
     /// Resolves a data name in the current scope. Marks it used.
@@ -422,7 +427,7 @@ impl<'t> Cx<'t> {
                 return Some(DataSym::Param(p));
             }
         }
-        for r in self.lookup_items(name) {
+        for r in self.lookup_items_folded(&key) {
             if let Some(d) = self.task.data(r) {
                 self.mark_used(Used::Item(r));
                 return Some(DataSym::Module(d, r));
