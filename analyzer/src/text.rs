@@ -239,6 +239,19 @@ pub fn is_rapid_file_name(name: &str) -> bool {
         .any(|e| ext.eq_ignore_ascii_case(e))
 }
 
+/// Is this a controller configuration file the analyzer reads (`EIO.cfg`
+/// for I/O signals, `MOC.cfg` for mechanical units), in any letter case?
+pub fn is_controller_config_name(name: &str) -> bool {
+    let base = name.rsplit(['/', '\\']).next().unwrap_or(name);
+    base.eq_ignore_ascii_case("eio.cfg") || base.eq_ignore_ascii_case("moc.cfg")
+}
+
+/// Is this a program file (`.pgf`, an XML list of a task's modules)?
+pub fn is_program_file_name(name: &str) -> bool {
+    name.rsplit_once('.')
+        .is_some_and(|(_, ext)| ext.eq_ignore_ascii_case("pgf"))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -310,6 +323,15 @@ mod tests {
         assert_eq!(LineEnding::detect("a\rb\r"), LineEnding::Cr);
         assert_eq!(LineEnding::detect("a\nb"), LineEnding::Lf);
         assert_eq!(LineEnding::detect("ab"), LineEnding::Lf);
+    }
+
+    #[test]
+    fn configuration_and_program_file_names() {
+        assert!(is_controller_config_name("b/SYSPAR/EIO.cfg"));
+        assert!(is_controller_config_name("moc.CFG"));
+        assert!(!is_controller_config_name("SIO.cfg"));
+        assert!(is_program_file_name("T_ROB1.pgf") && is_program_file_name("a.PGF"));
+        assert!(!is_program_file_name("a.mod"));
     }
 
     #[test]

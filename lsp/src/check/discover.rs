@@ -3,15 +3,18 @@
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-use rapid_analyzer::text::is_rapid_file_name;
+use rapid_analyzer::text::{is_controller_config_name, is_program_file_name, is_rapid_file_name};
 
 /// The files found, and the problems met on the way.
 #[derive(Debug, Default)]
 pub struct Discovery {
     /// RAPID files, sorted, without duplicates.
     pub files: Vec<PathBuf>,
-    /// I/O configuration files (`EIO.cfg`), sorted.
+    /// Controller configuration files (`EIO.cfg` signals, `MOC.cfg`
+    /// mechanical units), sorted.
     pub configs: Vec<PathBuf>,
+    /// Program files (`.pgf`: the modules of one task), sorted.
+    pub programs: Vec<PathBuf>,
     /// Paths that could not be walked, with the reason.
     pub errors: Vec<(PathBuf, String)>,
     /// Things worth saying that do not stop the run (a folder reached twice
@@ -44,8 +47,10 @@ pub fn discover_with(paths: &[PathBuf], excluded: Excluder) -> Discovery {
             Ok(meta) if meta.is_file() => {
                 if !excluded(root, false) {
                     let name = root.file_name().unwrap_or_default().to_string_lossy();
-                    if name.eq_ignore_ascii_case("eio.cfg") {
+                    if is_controller_config_name(&name) {
                         out.configs.push(root.clone());
+                    } else if is_program_file_name(&name) && is_xml(root) {
+                        out.programs.push(root.clone());
                     } else {
                         out.files.push(root.clone());
                     }
@@ -74,8 +79,15 @@ pub fn discover_with(paths: &[PathBuf], excluded: Excluder) -> Discovery {
                     let name = entry.file_name().to_string_lossy();
                     if is_file && is_rapid_file_name(&name) {
                         out.files.push(entry.into_path());
-                    } else if is_file && name.eq_ignore_ascii_case("eio.cfg") {
+                    } else if is_file && is_controller_config_name(&name) {
                         out.configs.push(entry.into_path());
+                    } else if is_file && is_program_file_name(&name) {
+                        // Some tools write RAPID text into `.pgf` files.
+                        if is_xml(entry.path()) {
+                            out.programs.push(entry.into_path());
+                        } else {
+                            out.files.push(entry.into_path());
+                        }
                     }
                 }
                 Err(e) => {
@@ -106,7 +118,24 @@ pub fn discover_with(paths: &[PathBuf], excluded: Excluder) -> Discovery {
     out.files.dedup();
     out.configs.sort();
     out.configs.dedup();
+    out.programs.sort();
+    out.programs.dedup();
     out
+}
+
+/// Does the file start like XML (after a byte-order mark and blanks)? A
+/// `.pgf` program file does; RAPID text written into a `.pgf` does not.
+fn is_xml(path: &Path) -> bool {
+    use std::io::Read;
+    let mut head = [0u8; 64];
+    let n = std::fs::File::open(path)
+        .and_then(|mut f| f.read(&mut head))
+        .unwrap_or(0);
+    let head = head.get(..n).unwrap_or_default();
+    let head = head.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(head);
+    head.iter()
+        .find(|b| !b.is_ascii_whitespace())
+        .is_some_and(|&b| b == b'<')
 }
 
 fn is_loop(e: &ignore::Error) -> bool {

@@ -21,7 +21,7 @@ use std::sync::Arc;
 
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rapid_analyzer::diagnostic::{Diagnostic, Severity};
-use rapid_analyzer::task::{Unit, task_key};
+use rapid_analyzer::task::Unit;
 use rapid_analyzer::workspace::{Workspace, diagnostics_of};
 use rayon::prelude::*;
 
@@ -248,7 +248,13 @@ fn run_inner(args: CheckArgs, stderr: &mut impl Write) -> Result<ExitCode, Strin
 
     lap("configuration and discovery", &mut clock);
     let progress = progress_bar(found.files.len());
-    let mut outcomes = check_files(&found.files, &found.configs, &extra, &progress);
+    let mut outcomes = check_files(
+        &found.files,
+        &found.configs,
+        &found.programs,
+        &extra,
+        &progress,
+    );
     let mut fixed = 0;
     if args.fix {
         // A fix can make room for another (or reveal one): a few passes.
@@ -259,7 +265,13 @@ fn run_inner(args: CheckArgs, stderr: &mut impl Write) -> Result<ExitCode, Strin
             if n == 0 {
                 break;
             }
-            outcomes = check_files(&found.files, &found.configs, &extra, &progress);
+            outcomes = check_files(
+                &found.files,
+                &found.configs,
+                &found.programs,
+                &extra,
+                &progress,
+            );
         }
     }
     progress.finish_and_clear();
@@ -409,13 +421,15 @@ fn progress_bar(files: usize) -> ProgressBar {
 
 /// Reads and checks every file, in parallel, keeping the order of `files`.
 /// Files are grouped into tasks as the analyzer does; `configs` are the I/O
-/// configuration files whose signals the tasks below them may use. The
+/// configuration files whose signals and mechanical units the tasks below
+/// them may use; `programs` are `.pgf` files that group modules into a task. The
 /// modules and configuration of `extra` join the tasks (the tasks they
 /// belong to when those are checked, else every checked task) but are not
 /// reported. Diagnostics are the analyzer's, unfiltered.
 pub fn check_files(
     files: &[PathBuf],
     configs: &[PathBuf],
+    programs: &[PathBuf],
     extra: &Discovery,
     progress: &ProgressBar,
 ) -> Vec<Outcome> {
@@ -444,6 +458,11 @@ pub fn check_files(
     let (read, units): (Vec<_>, Vec<_>) = parsed.into_iter().map(|(_, r, u)| (r, u)).unzip();
     lap("reading, decoding, parsing and item trees", &mut clock);
     let mut workspace = Workspace::new();
+    for path in programs {
+        if let Ok(bytes) = std::fs::read(path) {
+            workspace.set_program(&unit_path(path), &String::from_utf8_lossy(&bytes));
+        }
+    }
     for path in configs {
         if let Ok(bytes) = std::fs::read(path) {
             let text = String::from_utf8_lossy(&bytes);
@@ -451,7 +470,10 @@ pub fn check_files(
         }
     }
     let checked_paths: HashSet<String> = units.iter().flatten().map(|u| u.path.clone()).collect();
-    let checked_keys: BTreeSet<String> = checked_paths.iter().map(|p| task_key(p)).collect();
+    let checked_keys: BTreeSet<String> = checked_paths
+        .iter()
+        .map(|p| workspace.task_key(p))
+        .collect();
     // Skipped files are not checked: the second half of the bar is shorter.
     progress.set_length((files.len() + checked_paths.len()) as u64);
     add_extra(&mut workspace, extra, &checked_paths, &checked_keys);
@@ -536,7 +558,7 @@ fn add_extra(
         })
         .collect();
     for (i, unit) in units.into_iter().enumerate() {
-        if checked_keys.contains(&task_key(&unit.path)) {
+        if checked_keys.contains(&workspace.task_key(&unit.path)) {
             workspace.set_unit(unit);
             continue;
         }

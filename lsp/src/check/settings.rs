@@ -27,12 +27,18 @@ pub struct Overrides {
 struct RuleSet {
     /// Indexed like [`RULES`]: `None` when the rule is off.
     severity: Vec<Option<Severity>>,
+    /// Indexed like [`RULES`]: the severity was configured. Otherwise each
+    /// diagnostic keeps the severity the analyzer gave it (which may be
+    /// lower than the rule's default, e.g. an ambiguous global in a plain
+    /// folder, whose grouping into one task is only a guess).
+    configured: Vec<bool>,
 }
 
 impl RuleSet {
     fn all() -> RuleSet {
         RuleSet {
             severity: RULES.iter().map(|r| Some(r.severity)).collect(),
+            configured: vec![false; RULES.len()],
         }
     }
 
@@ -63,19 +69,40 @@ impl RuleSet {
             let Some(sev) = Severity::parse(sev) else {
                 continue;
             };
-            for (slot, rule) in self.severity.iter_mut().zip(RULES) {
+            for ((slot, configured), rule) in self
+                .severity
+                .iter_mut()
+                .zip(&mut self.configured)
+                .zip(RULES)
+            {
                 if let Some(current) = slot
                     && selects(selector, rule)
                 {
                     *current = sev;
+                    *configured = true;
                 }
             }
         }
     }
 
-    fn of(&self, code: &str) -> Option<Severity> {
+    /// `None` when the rule is off; else its severity (configured or default).
+    #[cfg(test)]
+    fn effective(&self, code: &str) -> Option<Severity> {
         let idx = RULES.iter().position(|r| r.code == code)?;
         self.severity.get(idx).copied().flatten()
+    }
+
+    /// `None` when the rule is off; else the configured severity, if any.
+    fn of(&self, code: &str) -> Option<Option<Severity>> {
+        let idx = RULES.iter().position(|r| r.code == code)?;
+        let severity = self.severity.get(idx).copied().flatten()?;
+        Some(
+            self.configured
+                .get(idx)
+                .copied()
+                .unwrap_or(false)
+                .then_some(severity),
+        )
     }
 }
 
@@ -215,11 +242,13 @@ impl LintSettings {
         diagnostics
             .into_iter()
             .filter_map(|mut d| {
-                let severity = rules.of(d.rule.code)?;
+                let configured = rules.of(d.rule.code)?;
                 if suppressions.suppresses(lines.line_col(d.range.start).line, d.rule) {
                     return None;
                 }
-                d.severity = severity;
+                if let Some(severity) = configured {
+                    d.severity = severity;
+                }
                 Some(d)
             })
             .collect()
@@ -276,7 +305,9 @@ mod tests {
 
     fn severity(s: &LintSettings, path: &str, rule: &str) -> Option<&'static str> {
         let code = find(rule).expect("rule").code;
-        s.rules_for(Path::new(path)).of(code).map(Severity::as_str)
+        s.rules_for(Path::new(path))
+            .effective(code)
+            .map(Severity::as_str)
     }
 
     #[test]

@@ -309,6 +309,11 @@ impl Backend {
             }
         }
         self.mutate("indexing", |s| {
+            for program in &found.programs {
+                if let Ok(bytes) = std::fs::read(program) {
+                    s.ws.set_program(&program.to_string_lossy(), &String::from_utf8_lossy(&bytes));
+                }
+            }
             for cfg in &found.configs {
                 if let Err(why) = s.load_from_disk(cfg) {
                     problems.push(format!("{}: {why}", cfg.display()));

@@ -249,10 +249,10 @@ pub fn path_of(uri: &Uri) -> String {
     }
 }
 
+/// A controller configuration file the analyzer reads (`EIO.cfg` signals,
+/// `MOC.cfg` mechanical units).
 pub fn is_eio_cfg(path: &str) -> bool {
-    Path::new(path)
-        .file_name()
-        .is_some_and(|n| n.eq_ignore_ascii_case("eio.cfg"))
+    rapid_analyzer::text::is_controller_config_name(path)
 }
 
 /// Parses a text into a unit, unless it is too large to analyse.

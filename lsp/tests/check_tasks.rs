@@ -1,0 +1,100 @@
+//! How `rapid check` groups files into tasks: `.pgf` program files, RAPID
+//! text in a `.pgf`, controller backups, and the severity of a clash that
+//! only a guessed grouping produces.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output, Stdio};
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+fn scratch(name: &str) -> PathBuf {
+    static N: AtomicUsize = AtomicUsize::new(0);
+    let dir = std::env::temp_dir().join(format!(
+        "rapid-check-tasks-{}-{}-{name}",
+        std::process::id(),
+        N.fetch_add(1, Ordering::Relaxed)
+    ));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("scratch folder");
+    dir
+}
+
+fn write(dir: &Path, name: &str, text: &str) {
+    let path = dir.join(name);
+    if let Some(parent) = path.parent() {
+        std::fs::create_dir_all(parent).expect("folder");
+    }
+    std::fs::write(path, text).expect("write");
+}
+
+fn check(dir: &Path) -> (Option<i32>, String) {
+    let out: Output = Command::new(env!("CARGO_BIN_EXE_rapid"))
+        .args(["check", "--format", "concise", "."])
+        .current_dir(dir)
+        .env_remove("CI")
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .output()
+        .expect("the rapid binary runs");
+    let mut lines: Vec<String> = String::from_utf8_lossy(&out.stdout)
+        .lines()
+        .map(|l| l.replace('\\', "/"))
+        .collect();
+    lines.sort();
+    (out.status.code(), lines.join("\n"))
+}
+
+const MAIN_A: &str = "MODULE A\n  PROC main()\n    TPWrite \"a\";\n  ENDPROC\nENDMODULE\n";
+const MAIN_B: &str = "MODULE B\n  PROC main()\n    TPWrite \"b\";\n  ENDPROC\nENDMODULE\n";
+
+#[test]
+fn a_plain_folder_is_one_task_and_its_clashes_are_warnings() {
+    let dir = scratch("plain");
+    write(&dir, "A.mod", MAIN_A);
+    write(&dir, "B.mod", MAIN_B);
+    let (code, out) = check(&dir);
+    assert_eq!(code, Some(0), "{out}");
+    assert_eq!(out.matches("warning[E107]").count(), 2, "{out}");
+    assert!(!out.contains("error["), "{out}");
+}
+
+#[test]
+fn a_backup_task_is_certain_and_its_clashes_are_errors() {
+    let dir = scratch("backup");
+    write(&dir, "BACKUP/RAPID/TASK1/PROGMOD/A.mod", MAIN_A);
+    write(&dir, "BACKUP/RAPID/TASK1/PROGMOD/B.mod", MAIN_B);
+    write(&dir, "BACKUP/RAPID/TASK2/PROGMOD/C.mod", &MAIN_A.replace("MODULE A", "MODULE C"));
+    let (code, out) = check(&dir);
+    assert_eq!(code, Some(1), "{out}");
+    // TASK2's main does not clash with TASK1's.
+    assert_eq!(out.matches("error[E107]").count(), 2, "{out}");
+    assert!(!out.contains("C.mod"), "{out}");
+}
+
+#[test]
+fn program_files_group_the_modules_they_list() {
+    let dir = scratch("pgf");
+    write(&dir, "A.mod", MAIN_A);
+    write(&dir, "B.mod", MAIN_B);
+    write(
+        &dir,
+        "a.pgf",
+        "<?xml version=\"1.0\" encoding=\"ISO-8859-1\" ?>\n<Program>\n\t<Module>A.mod</Module>\n</Program>\n",
+    );
+    write(
+        &dir,
+        "b.pgf",
+        "<?xml version=\"1.0\" encoding=\"ISO-8859-1\" ?>\n<Program>\n\t<Module>B.mod</Module>\n</Program>\n",
+    );
+    let (code, out) = check(&dir);
+    assert_eq!((code, out.as_str()), (Some(0), ""));
+}
+
+#[test]
+fn rapid_text_in_a_pgf_file_is_checked_as_a_module() {
+    let dir = scratch("pgf-rapid");
+    write(&dir, "Prog.pgf", "MODULE P\n  PROC main()\n    x := 1\n  ENDPROC\nENDMODULE\n");
+    let (code, out) = check(&dir);
+    assert_eq!(code, Some(1), "{out}");
+    assert!(out.contains("Prog.pgf:3:") && out.contains("error[E002]"), "{out}");
+}
