@@ -63,7 +63,11 @@ fn a_backup_task_is_certain_and_its_clashes_are_errors() {
     let dir = scratch("backup");
     write(&dir, "BACKUP/RAPID/TASK1/PROGMOD/A.mod", MAIN_A);
     write(&dir, "BACKUP/RAPID/TASK1/PROGMOD/B.mod", MAIN_B);
-    write(&dir, "BACKUP/RAPID/TASK2/PROGMOD/C.mod", &MAIN_A.replace("MODULE A", "MODULE C"));
+    write(
+        &dir,
+        "BACKUP/RAPID/TASK2/PROGMOD/C.mod",
+        &MAIN_A.replace("MODULE A", "MODULE C"),
+    );
     let (code, out) = check(&dir);
     assert_eq!(code, Some(1), "{out}");
     // TASK2's main does not clash with TASK1's.
@@ -93,8 +97,15 @@ fn program_files_group_the_modules_they_list() {
 #[test]
 fn rapid_text_in_a_pgf_file_is_checked_as_a_module() {
     let dir = scratch("pgf-rapid");
-    write(&dir, "Prog.pgf", "MODULE P\n  PROC main()\n    x := 1\n  ENDPROC\nENDMODULE\n");
+    write(
+        &dir,
+        "Prog.pgf",
+        "MODULE P\n  PROC main()\n    x := 1\n  ENDPROC\nENDMODULE\n",
+    );
     let (code, out) = check(&dir);
     assert_eq!(code, Some(1), "{out}");
-    assert!(out.contains("Prog.pgf:3:") && out.contains("error[E002]"), "{out}");
+    assert!(
+        out.contains("Prog.pgf:3:") && out.contains("error[E002]"),
+        "{out}"
+    );
 }
