@@ -1171,30 +1171,58 @@ fn children_with_fields(node: Node<'_>) -> Vec<Step<'_>> {
     out
 }
 
-/// Finds the maximal expressions below the last node of `path`.
+/// Finds the maximal expressions below the last node of `path`, in source
+/// order (one cursor for the whole walk: this runs for every statement).
 fn scan<'t>(cx: &mut Cx<'t>, path: &mut Vec<Step<'t>>, found: &mut Vec<Vec<Step<'t>>>) {
     let Some((node, _)) = path.last().copied() else {
         return;
     };
-    for (child, f) in children_with_fields(node) {
-        if !child.is_named() || is_statement_like(child.kind()) {
-            continue;
-        }
-        if f.is_some_and(|f| NOT_VALUES.contains(&f)) {
-            continue;
-        }
-        path.push((child, f));
-        if is_expression(child.kind()) {
-            if has_operation(child) {
-                let s = shape(cx, path, found, 0);
-                if s.constant && s.operation {
-                    found.push(path.clone());
+    let mut cursor = node.walk();
+    if !cursor.goto_first_child() {
+        return;
+    }
+    // How far the cursor is below `node`; every node between `node` and the
+    // cursor is on `path`.
+    let mut depth = 1usize;
+    loop {
+        let child = cursor.node();
+        let f = cursor.field_name();
+        let mut descend = false;
+        if child.is_named()
+            && !is_statement_like(child.kind())
+            && !f.is_some_and(|f| NOT_VALUES.contains(&f))
+        {
+            path.push((child, f));
+            if is_expression(child.kind()) {
+                if has_operation(child) {
+                    let s = shape(cx, path, found, 0);
+                    if s.constant && s.operation {
+                        found.push(path.clone());
+                    }
                 }
+                path.pop();
+            } else {
+                descend = true;
             }
-        } else {
-            scan(cx, path, found);
         }
-        path.pop();
+        if descend {
+            if cursor.goto_first_child() {
+                depth += 1;
+                continue;
+            }
+            path.pop();
+        }
+        // The next node after `child` that is not below it.
+        loop {
+            if cursor.goto_next_sibling() {
+                break;
+            }
+            if depth <= 1 || !cursor.goto_parent() {
+                return;
+            }
+            depth -= 1;
+            path.pop();
+        }
     }
 }
 

@@ -147,6 +147,11 @@ impl Workspace {
             .filter(|u| self.task_key(&u.path) == key)
             .cloned()
             .collect();
+        self.build_task(key, units)
+    }
+
+    /// Builds and caches the task `key` of `units`.
+    fn build_task(&mut self, key: String, units: Vec<Arc<Unit>>) -> Arc<Task> {
         let (signals, mecunits) = self.config_for(&key);
         let mut task = Task::new(key.clone(), units, signals);
         task.mecunits = mecunits;
@@ -157,12 +162,22 @@ impl Workspace {
 
     /// Every task of the workspace.
     pub fn tasks(&mut self) -> Vec<Arc<Task>> {
-        let keys: BTreeMap<String, String> = self
-            .units
-            .keys()
-            .map(|p| (self.task_key(p), p.clone()))
-            .collect();
-        keys.values().map(|p| self.task_of(p)).collect()
+        // Group the units once (asking `task_of` per task would compute
+        // every unit's key again for each task).
+        let mut groups: BTreeMap<String, Vec<Arc<Unit>>> = BTreeMap::new();
+        for unit in self.units.values() {
+            groups
+                .entry(self.task_key(&unit.path))
+                .or_default()
+                .push(unit.clone());
+        }
+        groups
+            .into_iter()
+            .map(|(key, units)| match self.tasks.get(&key) {
+                Some(task) => task.clone(),
+                None => self.build_task(key, units),
+            })
+            .collect()
     }
 
     /// The configuration that applies to a task: its signals (`None` when
