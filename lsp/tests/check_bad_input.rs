@@ -1,21 +1,11 @@
 //! `rapid check` on input that is not a tidy folder of modules: each case
 //! gets a clear message, no panic, and the other files are still checked.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, Output, Stdio};
-use std::sync::atomic::{AtomicUsize, Ordering};
 
-fn scratch(name: &str) -> PathBuf {
-    static N: AtomicUsize = AtomicUsize::new(0);
-    let dir = std::env::temp_dir().join(format!(
-        "rapid-check-bad-{}-{}-{name}",
-        std::process::id(),
-        N.fetch_add(1, Ordering::Relaxed)
-    ));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("scratch folder");
-    dir
-}
+mod support;
+use support::*;
 
 fn rapid(dir: &Path, args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_rapid"))
@@ -28,10 +18,6 @@ fn rapid(dir: &Path, args: &[&str]) -> Output {
         .stderr(Stdio::piped())
         .output()
         .expect("the rapid binary runs")
-}
-
-fn text(bytes: &[u8]) -> String {
-    String::from_utf8_lossy(bytes).into_owned()
 }
 
 fn show(out: &Output) -> String {

@@ -2,28 +2,14 @@
 //! text in a `.pgf`, controller backups, and the severity of a clash that
 //! only a guessed grouping produces.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, Output, Stdio};
-use std::sync::atomic::{AtomicUsize, Ordering};
 
-fn scratch(name: &str) -> PathBuf {
-    static N: AtomicUsize = AtomicUsize::new(0);
-    let dir = std::env::temp_dir().join(format!(
-        "rapid-check-tasks-{}-{}-{name}",
-        std::process::id(),
-        N.fetch_add(1, Ordering::Relaxed)
-    ));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("scratch folder");
-    dir
-}
+mod support;
+use support::*;
 
-fn write(dir: &Path, name: &str, text: &str) {
-    let path = dir.join(name);
-    if let Some(parent) = path.parent() {
-        std::fs::create_dir_all(parent).expect("folder");
-    }
-    std::fs::write(path, text).expect("write");
+fn write1(dir: &Path, name: &str, text: &str) {
+    write(dir, &[(name, text)]);
 }
 
 fn check(dir: &Path) -> (Option<i32>, String) {
@@ -50,8 +36,8 @@ const MAIN_B: &str = "MODULE B\n  PROC main()\n    TPWrite \"b\";\n  ENDPROC\nEN
 #[test]
 fn a_plain_folder_is_one_task_and_its_clashes_are_warnings() {
     let dir = scratch("plain");
-    write(&dir, "A.mod", MAIN_A);
-    write(&dir, "B.mod", MAIN_B);
+    write1(&dir, "A.mod", MAIN_A);
+    write1(&dir, "B.mod", MAIN_B);
     let (code, out) = check(&dir);
     assert_eq!(code, Some(0), "{out}");
     assert_eq!(out.matches("warning[E107]").count(), 2, "{out}");
@@ -61,9 +47,9 @@ fn a_plain_folder_is_one_task_and_its_clashes_are_warnings() {
 #[test]
 fn a_backup_task_is_certain_and_its_clashes_are_errors() {
     let dir = scratch("backup");
-    write(&dir, "BACKUP/RAPID/TASK1/PROGMOD/A.mod", MAIN_A);
-    write(&dir, "BACKUP/RAPID/TASK1/PROGMOD/B.mod", MAIN_B);
-    write(
+    write1(&dir, "BACKUP/RAPID/TASK1/PROGMOD/A.mod", MAIN_A);
+    write1(&dir, "BACKUP/RAPID/TASK1/PROGMOD/B.mod", MAIN_B);
+    write1(
         &dir,
         "BACKUP/RAPID/TASK2/PROGMOD/C.mod",
         &MAIN_A.replace("MODULE A", "MODULE C"),
@@ -78,14 +64,14 @@ fn a_backup_task_is_certain_and_its_clashes_are_errors() {
 #[test]
 fn program_files_group_the_modules_they_list() {
     let dir = scratch("pgf");
-    write(&dir, "A.mod", MAIN_A);
-    write(&dir, "B.mod", MAIN_B);
-    write(
+    write1(&dir, "A.mod", MAIN_A);
+    write1(&dir, "B.mod", MAIN_B);
+    write1(
         &dir,
         "a.pgf",
         "<?xml version=\"1.0\" encoding=\"ISO-8859-1\" ?>\n<Program>\n\t<Module>A.mod</Module>\n</Program>\n",
     );
-    write(
+    write1(
         &dir,
         "b.pgf",
         "<?xml version=\"1.0\" encoding=\"ISO-8859-1\" ?>\n<Program>\n\t<Module>B.mod</Module>\n</Program>\n",
@@ -97,7 +83,7 @@ fn program_files_group_the_modules_they_list() {
 #[test]
 fn rapid_text_in_a_pgf_file_is_checked_as_a_module() {
     let dir = scratch("pgf-rapid");
-    write(
+    write1(
         &dir,
         "Prog.pgf",
         "MODULE P\n  PROC main()\n    x := 1\n  ENDPROC\nENDMODULE\n",

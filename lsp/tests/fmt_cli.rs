@@ -1,25 +1,14 @@
 //! `rapid fmt` end to end: the built binary on files in a scratch folder.
 
 use std::io::Write;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, Output, Stdio};
-use std::sync::atomic::{AtomicUsize, Ordering};
+
+mod support;
+use support::*;
 
 const UNFORMATTED: &str = "MODULE M\nVAR num a:=1;\nENDMODULE\n";
 const FORMATTED: &str = "MODULE M\n    VAR num a := 1;\nENDMODULE\n";
-
-/// A fresh empty folder for one test.
-fn scratch(name: &str) -> PathBuf {
-    static N: AtomicUsize = AtomicUsize::new(0);
-    let dir = std::env::temp_dir().join(format!(
-        "rapid-fmt-{}-{}-{name}",
-        std::process::id(),
-        N.fetch_add(1, Ordering::Relaxed)
-    ));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("scratch folder");
-    dir
-}
 
 fn rapid(dir: &Path, args: &[&str], stdin: Option<&[u8]>) -> Output {
     let mut child = Command::new(env!("CARGO_BIN_EXE_rapid"))
@@ -37,10 +26,6 @@ fn rapid(dir: &Path, args: &[&str], stdin: Option<&[u8]>) -> Output {
         .expect("stdin written");
     drop(input);
     child.wait_with_output().expect("rapid finishes")
-}
-
-fn text(bytes: &[u8]) -> String {
-    String::from_utf8_lossy(bytes).into_owned()
 }
 
 #[test]

@@ -16,13 +16,12 @@ pub fn corpus_dir() -> Option<PathBuf> {
     dir.is_dir().then_some(dir)
 }
 
-/// Every RAPID file of the corpus (by extension; `.pgf` program files are
-/// XML and left out), sorted, with its bytes. `None` when there is no corpus;
-/// callers print one line and skip.
-pub fn corpus_files() -> Option<Vec<(PathBuf, Vec<u8>)>> {
-    let dir = corpus_dir()?;
+/// Every file below `dir` whose extension is a RAPID module's (`.mod
+/// .modx .sys .sysx .prg`, any case) or, with `with_pgf`, a `.pgf` program
+/// file (some tools write RAPID text into those), sorted.
+pub fn rapid_paths(dir: &Path, with_pgf: bool) -> Vec<PathBuf> {
     let mut out = Vec::new();
-    let mut stack = vec![dir.clone()];
+    let mut stack = vec![dir.to_path_buf()];
     while let Some(folder) = stack.pop() {
         let Ok(entries) = std::fs::read_dir(&folder) else {
             continue;
@@ -31,19 +30,48 @@ pub fn corpus_files() -> Option<Vec<(PathBuf, Vec<u8>)>> {
             let path = entry.path();
             if path.is_dir() {
                 stack.push(path);
-            } else if path
+                continue;
+            }
+            let name = path
                 .file_name()
-                .is_some_and(|n| rapid_analyzer::text::is_rapid_file_name(&n.to_string_lossy()))
-                && let Ok(bytes) = std::fs::read(&path)
+                .map(|n| n.to_string_lossy().into_owned())
+                .unwrap_or_default();
+            if rapid_analyzer::text::is_rapid_file_name(&name)
+                || (with_pgf && rapid_analyzer::text::is_program_file_name(&name))
             {
-                let rel = path
-                    .strip_prefix(&dir)
-                    .map(Path::to_path_buf)
-                    .unwrap_or(path);
-                out.push((rel, bytes));
+                out.push(path);
             }
         }
     }
     out.sort();
-    Some(out)
+    out
+}
+
+/// Text of a file's bytes: UTF-8 when valid, else Latin-1 (every byte is
+/// its code point), as the analyzer decodes modules.
+pub fn decode_text(bytes: &[u8]) -> String {
+    match std::str::from_utf8(bytes) {
+        Ok(text) => text.to_owned(),
+        Err(_) => bytes.iter().map(|&b| char::from(b)).collect(),
+    }
+}
+
+/// Every RAPID file of the corpus (by extension; `.pgf` program files are
+/// XML and left out), sorted, with its path relative to the corpus and its
+/// bytes. `None` when there is no corpus; callers print one line and skip.
+pub fn corpus_files() -> Option<Vec<(PathBuf, Vec<u8>)>> {
+    let dir = corpus_dir()?;
+    Some(
+        rapid_paths(&dir, false)
+            .into_iter()
+            .filter_map(|path| {
+                let bytes = std::fs::read(&path).ok()?;
+                let rel = path
+                    .strip_prefix(&dir)
+                    .map(Path::to_path_buf)
+                    .unwrap_or(path);
+                Some((rel, bytes))
+            })
+            .collect(),
+    )
 }

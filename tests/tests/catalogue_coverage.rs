@@ -13,8 +13,6 @@ use std::path::{Path, PathBuf};
 
 use rapid_analyzer::catalogue::{catalogue, option_routines};
 
-const EXTENSIONS: &[&str] = &["mod", "modx", "sys", "sysx", "prg", "pgf"];
-
 /// Routines the corpus calls whose declaring module is simply not in the corpus (user or
 /// project code, not option routines, so they do not belong in `option_routines.toml`),
 /// and calls in files that are not programs. Reviewed: (name, reason).
@@ -77,45 +75,6 @@ const CORPUS_GAPS: &[(&str, &str)] = &[
     ),
 ];
 
-fn corpus_dir() -> Option<PathBuf> {
-    if let Some(dir) = std::env::var_os("RAPID_CORPUS") {
-        let dir = PathBuf::from(dir);
-        return dir.is_dir().then_some(dir);
-    }
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shared/corpus");
-    dir.is_dir().then_some(dir)
-}
-
-fn rapid_files(dir: &Path) -> Vec<PathBuf> {
-    let mut out = Vec::new();
-    let mut stack = vec![dir.to_path_buf()];
-    while let Some(folder) = stack.pop() {
-        let Ok(entries) = std::fs::read_dir(&folder) else {
-            continue;
-        };
-        for entry in entries.flatten() {
-            let path = entry.path();
-            if path.is_dir() {
-                stack.push(path);
-            } else if path.extension().is_some_and(|e| {
-                EXTENSIONS.contains(&e.to_string_lossy().to_ascii_lowercase().as_str())
-            }) {
-                out.push(path);
-            }
-        }
-    }
-    out.sort();
-    out
-}
-
-/// UTF-8 when valid, else Latin-1.
-fn decode(bytes: &[u8]) -> String {
-    match std::str::from_utf8(bytes) {
-        Ok(text) => text.to_owned(),
-        Err(_) => bytes.iter().map(|&b| char::from(b)).collect(),
-    }
-}
-
 /// Routine names declared in a tree, and (name, is_function) of every call by name.
 fn walk(
     tree: &tree_sitter::Tree,
@@ -162,7 +121,7 @@ struct Count {
 
 #[test]
 fn every_called_builtin_is_catalogued_or_a_reviewed_option_routine() {
-    let Some(dir) = corpus_dir() else {
+    let Some(dir) = rapid_tests::corpus_dir() else {
         println!("catalogue_coverage: no corpus (set RAPID_CORPUS); skipped");
         return;
     };
@@ -178,8 +137,8 @@ fn every_called_builtin_is_catalogued_or_a_reviewed_option_routine() {
     let mut declared = HashSet::new();
     let mut called: BTreeMap<String, Count> = BTreeMap::new();
     let mut files = 0usize;
-    for path in rapid_files(&dir) {
-        let text = decode(&std::fs::read(&path).expect("readable corpus file"));
+    for path in rapid_tests::rapid_paths(&dir, true) {
+        let text = rapid_tests::decode_text(&std::fs::read(&path).expect("readable corpus file"));
         if text
             .trim_start_matches(['\u{feff}', ' ', '\t', '\r', '\n'])
             .starts_with('<')
@@ -258,7 +217,7 @@ fn every_called_builtin_is_catalogued_or_a_reviewed_option_routine() {
 /// of its parameters.
 #[test]
 fn named_arguments_of_builtins_are_parameters() {
-    let Some(dir) = corpus_dir() else {
+    let Some(dir) = rapid_tests::corpus_dir() else {
         println!("catalogue_coverage: no corpus (set RAPID_CORPUS); skipped");
         return;
     };
@@ -269,8 +228,8 @@ fn named_arguments_of_builtins_are_parameters() {
         .expect("the RAPID grammar loads");
     let mut declared = HashSet::new();
     let mut uses: Vec<(String, String, PathBuf)> = Vec::new();
-    for path in rapid_files(&dir) {
-        let text = decode(&std::fs::read(&path).expect("readable corpus file"));
+    for path in rapid_tests::rapid_paths(&dir, true) {
+        let text = rapid_tests::decode_text(&std::fs::read(&path).expect("readable corpus file"));
         if text
             .trim_start_matches(['\u{feff}', ' ', '\t', '\r', '\n'])
             .starts_with('<')

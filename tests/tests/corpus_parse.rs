@@ -7,7 +7,6 @@
 
 #![allow(clippy::print_stdout)]
 
-use std::path::{Path, PathBuf};
 
 /// Files that are not valid RAPID, with the reason (paths relative to the
 /// corpus root, `/` separated). Each one must still fail: a file that
@@ -67,48 +66,6 @@ const KNOWN_BROKEN: &[(&str, &str)] = &[
     ),
 ];
 
-const EXTENSIONS: &[&str] = &["mod", "modx", "sys", "sysx", "prg", "pgf"];
-
-fn corpus_dir() -> Option<PathBuf> {
-    if let Some(dir) = std::env::var_os("RAPID_CORPUS") {
-        let dir = PathBuf::from(dir);
-        return dir.is_dir().then_some(dir);
-    }
-    // the workspace root is the parent of this crate
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shared/corpus");
-    dir.is_dir().then_some(dir)
-}
-
-fn rapid_files(dir: &Path) -> Vec<PathBuf> {
-    let mut out = Vec::new();
-    let mut stack = vec![dir.to_path_buf()];
-    while let Some(folder) = stack.pop() {
-        let Ok(entries) = std::fs::read_dir(&folder) else {
-            continue;
-        };
-        for entry in entries.flatten() {
-            let path = entry.path();
-            if path.is_dir() {
-                stack.push(path);
-            } else if path.extension().is_some_and(|e| {
-                EXTENSIONS.contains(&e.to_string_lossy().to_ascii_lowercase().as_str())
-            }) {
-                out.push(path);
-            }
-        }
-    }
-    out.sort();
-    out
-}
-
-/// UTF-8 when valid, else Latin-1 (every byte is the code point).
-fn decode(bytes: &[u8]) -> String {
-    match std::str::from_utf8(bytes) {
-        Ok(text) => text.to_owned(),
-        Err(_) => bytes.iter().map(|&b| char::from(b)).collect(),
-    }
-}
-
 /// `.pgf` program files are XML unless they hold RAPID text.
 fn is_xml(text: &str) -> bool {
     text.trim_start_matches(['\u{feff}', ' ', '\t', '\r', '\n'])
@@ -152,7 +109,7 @@ fn syntax_errors(tree: &tree_sitter::Tree) -> Vec<String> {
 
 #[test]
 fn every_rapid_file_of_the_corpus_parses_clean() {
-    let Some(dir) = corpus_dir() else {
+    let Some(dir) = rapid_tests::corpus_dir() else {
         println!("corpus_parse: no corpus (set RAPID_CORPUS); skipped");
         return;
     };
@@ -164,8 +121,8 @@ fn every_rapid_file_of_the_corpus_parses_clean() {
     let (mut files, mut clean, mut excluded) = (0usize, 0usize, 0usize);
     let mut failures = Vec::new();
     let mut now_clean = Vec::new();
-    for path in rapid_files(&dir) {
-        let text = decode(&std::fs::read(&path).expect("readable corpus file"));
+    for path in rapid_tests::rapid_paths(&dir, true) {
+        let text = rapid_tests::decode_text(&std::fs::read(&path).expect("readable corpus file"));
         if is_xml(&text) {
             continue;
         }
