@@ -6,6 +6,8 @@
 //! case-insensitive, as RAPID names are.
 
 use std::collections::HashMap;
+
+use crate::names::NameMap;
 use std::fmt::Write as _;
 use std::sync::OnceLock;
 
@@ -230,10 +232,10 @@ pub struct Catalogue {
 
 #[derive(Debug, Default)]
 struct Index {
-    functions: HashMap<String, usize>,
-    instructions: HashMap<String, usize>,
-    datatypes: HashMap<String, usize>,
-    data: HashMap<String, usize>,
+    functions: NameMap<usize>,
+    instructions: NameMap<usize>,
+    datatypes: NameMap<usize>,
+    data: NameMap<usize>,
 }
 
 /// The shared catalogue, parsed on first use.
@@ -571,8 +573,8 @@ pub fn option_routines() -> Result<Vec<OptionRoutine>, String> {
         .map_err(|e| format!("option_routines.toml: {e}"))
 }
 
-fn index<T>(items: &[T], name: impl Fn(&T) -> &String) -> HashMap<String, usize> {
-    let mut map = HashMap::with_capacity(items.len());
+fn index<T>(items: &[T], name: impl Fn(&T) -> &String) -> NameMap<usize> {
+    let mut map = NameMap::with_capacity_and_hasher(items.len(), Default::default());
     for (i, item) in items.iter().enumerate() {
         // Keep the first on duplicates; `check` reports them.
         map.entry(name(item).to_lowercase()).or_insert(i);
@@ -580,7 +582,7 @@ fn index<T>(items: &[T], name: impl Fn(&T) -> &String) -> HashMap<String, usize>
     map
 }
 
-fn lookup<'a, T>(map: &HashMap<String, usize>, items: &'a [T], name: &str) -> Option<&'a T> {
+fn lookup<'a, T>(map: &NameMap<usize>, items: &'a [T], name: &str) -> Option<&'a T> {
     // Catalogue names are ASCII; other names keep the Unicode lowercasing.
     let index = if name.is_ascii() {
         crate::names::with_folded(name, |key| map.get(key).copied())
