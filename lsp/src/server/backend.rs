@@ -110,6 +110,24 @@ impl Backend {
         self.blocking(what, move || f(&snap)).await.map(Some)
     }
 
+    /// Definition, declaration and type definition: the locations `find`
+    /// gives for the position.
+    async fn goto(
+        &self,
+        p: TextDocumentPositionParams,
+        what: &'static str,
+        find: fn(&rapid_analyzer::task::Task, usize, usize) -> Vec<ide::Location>,
+    ) -> Result<Option<GotoDefinitionResponse>> {
+        let pos = p.position;
+        Ok(self
+            .on_snapshot(&p.text_document.uri, what, move |s| {
+                let found = find(&s.task, s.unit_idx, s.map().offset(pos));
+                requests::locations(s, found)
+            })
+            .await?
+            .map(GotoDefinitionResponse::Array))
+    }
+
     async fn blocking<R: Send + 'static>(
         &self,
         what: &'static str,
@@ -988,45 +1006,36 @@ impl LanguageServer for Backend {
         &self,
         params: GotoDefinitionParams,
     ) -> Result<Option<GotoDefinitionResponse>> {
-        let p = params.text_document_position_params;
-        let pos = p.position;
-        Ok(self
-            .on_snapshot(&p.text_document.uri, "definition", move |s| {
-                let found = ide::definition(&s.task, s.unit_idx, s.map().offset(pos));
-                requests::locations(s, found)
-            })
-            .await?
-            .map(GotoDefinitionResponse::Array))
+        self.goto(
+            params.text_document_position_params,
+            "definition",
+            ide::definition,
+        )
+        .await
     }
 
     async fn goto_declaration(
         &self,
         params: GotoDeclarationParams,
     ) -> Result<Option<GotoDeclarationResponse>> {
-        let p = params.text_document_position_params;
-        let pos = p.position;
-        Ok(self
-            .on_snapshot(&p.text_document.uri, "declaration", move |s| {
-                let found = ide::definition(&s.task, s.unit_idx, s.map().offset(pos));
-                requests::locations(s, found)
-            })
-            .await?
-            .map(GotoDeclarationResponse::Array))
+        self.goto(
+            params.text_document_position_params,
+            "declaration",
+            ide::definition,
+        )
+        .await
     }
 
     async fn goto_type_definition(
         &self,
         params: GotoTypeDefinitionParams,
     ) -> Result<Option<GotoTypeDefinitionResponse>> {
-        let p = params.text_document_position_params;
-        let pos = p.position;
-        Ok(self
-            .on_snapshot(&p.text_document.uri, "type definition", move |s| {
-                let found = ide::type_definition(&s.task, s.unit_idx, s.map().offset(pos));
-                requests::locations(s, found)
-            })
-            .await?
-            .map(GotoTypeDefinitionResponse::Array))
+        self.goto(
+            params.text_document_position_params,
+            "type definition",
+            ide::type_definition,
+        )
+        .await
     }
 
     async fn references(&self, params: ReferenceParams) -> Result<Option<Vec<Location>>> {
