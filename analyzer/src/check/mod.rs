@@ -524,7 +524,7 @@ impl<'t> Cx<'t> {
         let limit = if key.len() <= 4 { 1 } else { 2 };
         let mut best: Option<(usize, String)> = None;
         let mut consider = |cand: &str| {
-            let d = edit_distance(&key, &fold(cand));
+            let d = edit_distance_folded(&key, cand);
             if d > 0 && d <= limit && best.as_ref().is_none_or(|(bd, _)| d < *bd) {
                 best = Some((d, cand.to_owned()));
             }
@@ -656,16 +656,40 @@ fn close_global(task: &Task, key: &str, limit: usize) -> Option<(usize, String)>
 
 /// Levenshtein distance of two short ASCII strings.
 pub(crate) fn edit_distance(a: &str, b: &str) -> usize {
-    let (a, b) = (a.as_bytes(), b.as_bytes());
+    distance(a.as_bytes(), b.as_bytes(), |x, y| x == y)
+}
+
+/// [`edit_distance`] between a folded `key` and `name` as if `name` were
+/// folded too (without allocating its folded form).
+fn edit_distance_folded(key: &str, name: &str) -> usize {
+    distance(key.as_bytes(), name.as_bytes(), |x, y| {
+        x == y.to_ascii_lowercase()
+    })
+}
+
+/// Levenshtein distance of byte strings, or 3 when their lengths differ by
+/// more than 2 (callers only care about distances up to 2).
+fn distance(a: &[u8], b: &[u8], eq: impl Fn(u8, u8) -> bool) -> usize {
+    const STACK: usize = 64;
     if a.len().abs_diff(b.len()) > 2 {
         return 3;
     }
-    let mut prev: Vec<usize> = (0..=b.len()).collect();
-    let mut cur = vec![0; b.len() + 1];
-    for (i, ca) in a.iter().enumerate() {
+    let mut stack = [[0usize; STACK]; 2];
+    let mut heap;
+    let (mut prev, mut cur): (&mut [usize], &mut [usize]) = if b.len() < STACK {
+        let [p, c] = &mut stack;
+        (&mut p[..=b.len()], &mut c[..=b.len()])
+    } else {
+        heap = (vec![0; b.len() + 1], vec![0; b.len() + 1]);
+        (&mut heap.0, &mut heap.1)
+    };
+    for (j, p) in prev.iter_mut().enumerate() {
+        *p = j;
+    }
+    for (i, &ca) in a.iter().enumerate() {
         cur[0] = i + 1;
-        for (j, cb) in b.iter().enumerate() {
-            let cost = usize::from(ca != cb);
+        for (j, &cb) in b.iter().enumerate() {
+            let cost = usize::from(!eq(ca, cb));
             cur[j + 1] = (prev[j] + cost).min(prev[j + 1] + 1).min(cur[j] + 1);
         }
         std::mem::swap(&mut prev, &mut cur);
@@ -755,5 +779,29 @@ impl<'t> Cx<'t> {
         self.used = used;
         self.reported_signals = signals;
         ty
+    }
+}
+
+#[cfg(test)]
+mod distance_tests {
+    #[test]
+    fn edit_distances() {
+        for (a, b, d) in [
+            ("movel", "movel", 0),
+            ("movel", "movej", 1),
+            ("movel", "mvel", 1),
+            ("ptarget", "ptraget", 2),
+            ("abc", "abcdef", 3),
+            ("", "ab", 2),
+        ] {
+            assert_eq!(super::edit_distance(a, b), d, "{a} {b}");
+            assert_eq!(
+                super::edit_distance_folded(a, &b.to_uppercase()),
+                d,
+                "{a} {b}"
+            );
+        }
+        let long = "x".repeat(70);
+        assert_eq!(super::edit_distance(&long, &format!("{long}y")), 1);
     }
 }
