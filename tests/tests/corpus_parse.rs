@@ -7,7 +7,6 @@
 
 #![allow(clippy::print_stdout)]
 
-
 /// Files that are not valid RAPID, with the reason (paths relative to the
 /// corpus root, `/` separated). Each one must still fail: a file that
 /// starts to parse clean has to leave this list.
