@@ -34,7 +34,14 @@ fn corpus() -> Option<&'static Corpus> {
                     _ => None,
                 })
                 .collect();
-            let (programs, configs) = side_files();
+            let dir = rapid_tests::corpus_dir()?;
+            let inputs = rapid_tests::workspace_inputs(&dir);
+            let programs = inputs.programs;
+            let configs = inputs
+                .configs
+                .into_iter()
+                .filter(|(p, _)| rapid_analyzer::text::is_controller_config_name(p))
+                .collect();
             Some(Corpus {
                 files,
                 programs,
@@ -42,45 +49,6 @@ fn corpus() -> Option<&'static Corpus> {
             })
         })
         .as_ref()
-}
-
-/// Files as (path, text).
-type Files = Vec<(String, String)>;
-
-/// The corpus's `.pgf` and `.cfg` files.
-fn side_files() -> (Files, Files) {
-    let (mut programs, mut configs) = (Vec::new(), Vec::new());
-    let Some(dir) = rapid_tests::corpus_dir() else {
-        return (programs, configs);
-    };
-    let mut stack = vec![dir.clone()];
-    while let Some(folder) = stack.pop() {
-        let Ok(entries) = std::fs::read_dir(&folder) else {
-            continue;
-        };
-        for entry in entries.flatten() {
-            let path = entry.path();
-            if path.is_dir() {
-                stack.push(path);
-                continue;
-            }
-            let rel = path
-                .strip_prefix(&dir)
-                .map(|p| p.to_string_lossy().replace('\\', "/"))
-                .unwrap_or_default();
-            let lower = rel.to_ascii_lowercase();
-            let Ok(bytes) = std::fs::read(&path) else {
-                continue;
-            };
-            let text = String::from_utf8_lossy(&bytes).into_owned();
-            if lower.ends_with(".pgf") {
-                programs.push((rel, text));
-            } else if lower.ends_with("eio.cfg") || lower.ends_with("moc.cfg") {
-                configs.push((rel, text));
-            }
-        }
-    }
-    (programs, configs)
 }
 
 fn workspace(corpus: &Corpus) -> Workspace {

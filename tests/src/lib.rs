@@ -6,6 +6,8 @@
 
 use std::path::{Path, PathBuf};
 
+use rapid_analyzer::text::{Decoded, decode};
+
 /// The corpus folder, if there is one.
 pub fn corpus_dir() -> Option<PathBuf> {
     if let Some(dir) = std::env::var_os("RAPID_CORPUS") {
@@ -16,10 +18,9 @@ pub fn corpus_dir() -> Option<PathBuf> {
     dir.is_dir().then_some(dir)
 }
 
-/// Every file below `dir` whose extension is a RAPID module's (`.mod
-/// .modx .sys .sysx .prg`, any case) or, with `with_pgf`, a `.pgf` program
-/// file (some tools write RAPID text into those), sorted.
-pub fn rapid_paths(dir: &Path, with_pgf: bool) -> Vec<PathBuf> {
+/// Every file below `dir` (recursively, links followed as the file system
+/// reports them), sorted.
+pub fn all_files(dir: &Path) -> Vec<PathBuf> {
     let mut out = Vec::new();
     let mut stack = vec![dir.to_path_buf()];
     while let Some(folder) = stack.pop() {
@@ -30,21 +31,74 @@ pub fn rapid_paths(dir: &Path, with_pgf: bool) -> Vec<PathBuf> {
             let path = entry.path();
             if path.is_dir() {
                 stack.push(path);
-                continue;
-            }
-            let name = path
-                .file_name()
-                .map(|n| n.to_string_lossy().into_owned())
-                .unwrap_or_default();
-            if rapid_analyzer::text::is_rapid_file_name(&name)
-                || (with_pgf && rapid_analyzer::text::is_program_file_name(&name))
-            {
+            } else {
                 out.push(path);
             }
         }
     }
     out.sort();
     out
+}
+
+fn file_name(path: &Path) -> String {
+    path.file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default()
+}
+
+/// Every file below `dir` whose extension is a RAPID module's (`.mod
+/// .modx .sys .sysx .prg`, any case) or, with `with_pgf`, a `.pgf` program
+/// file (some tools write RAPID text into those), sorted.
+pub fn rapid_paths(dir: &Path, with_pgf: bool) -> Vec<PathBuf> {
+    all_files(dir)
+        .into_iter()
+        .filter(|path| {
+            let name = file_name(path);
+            rapid_analyzer::text::is_rapid_file_name(&name)
+                || (with_pgf && rapid_analyzer::text::is_program_file_name(&name))
+        })
+        .collect()
+}
+
+/// What a workspace needs from a folder, as (path relative to `dir` with
+/// `/` separators, text), each list sorted: RAPID modules that decode as
+/// text, `.pgf` program files, and `.cfg` configuration files (all of them;
+/// callers keep the ones they want).
+#[derive(Debug, Default)]
+pub struct Inputs {
+    pub modules: Vec<(String, String)>,
+    pub programs: Vec<(String, String)>,
+    pub configs: Vec<(String, String)>,
+}
+
+/// Reads the [`Inputs`] below `dir`.
+pub fn workspace_inputs(dir: &Path) -> Inputs {
+    let mut inputs = Inputs::default();
+    for path in all_files(dir) {
+        let rel = path
+            .strip_prefix(dir)
+            .map(|p| p.to_string_lossy().replace('\\', "/"))
+            .unwrap_or_default();
+        let name = file_name(&path);
+        let lower = name.to_ascii_lowercase();
+        let Ok(bytes) = std::fs::read(&path) else {
+            continue;
+        };
+        if rapid_analyzer::text::is_rapid_file_name(&name) {
+            if let Decoded::Text { text, .. } = decode(&bytes) {
+                inputs.modules.push((rel, text));
+            }
+        } else if lower.ends_with(".pgf") {
+            inputs
+                .programs
+                .push((rel, String::from_utf8_lossy(&bytes).into_owned()));
+        } else if lower.ends_with(".cfg") {
+            inputs
+                .configs
+                .push((rel, String::from_utf8_lossy(&bytes).into_owned()));
+        }
+    }
+    inputs
 }
 
 /// Text of a file's bytes: UTF-8 when valid, else Latin-1 (every byte is

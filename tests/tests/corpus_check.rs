@@ -11,7 +11,7 @@ use std::path::Path;
 
 use rapid_analyzer::diagnostic::Severity;
 use rapid_analyzer::rules::RULES;
-use rapid_analyzer::text::{Decoded, LineIndex, decode};
+use rapid_analyzer::text::LineIndex;
 use rapid_analyzer::workspace::Workspace;
 
 /// Error-level findings reviewed by hand and found to be real defects of
@@ -56,66 +56,13 @@ fn is_damaged(syntax_errors: usize) -> bool {
     syntax_errors > 0
 }
 
-struct Loaded {
-    files: Vec<(String, String)>,
-    programs: Vec<(String, String)>,
-    configs: Vec<(String, String)>,
-}
-
-fn load(dir: &Path) -> Loaded {
-    let mut loaded = Loaded {
-        files: Vec::new(),
-        programs: Vec::new(),
-        configs: Vec::new(),
-    };
-    let mut stack = vec![dir.to_path_buf()];
-    while let Some(folder) = stack.pop() {
-        let Ok(entries) = std::fs::read_dir(&folder) else {
-            continue;
-        };
-        for entry in entries.flatten() {
-            let path = entry.path();
-            if path.is_dir() {
-                stack.push(path);
-                continue;
-            }
-            let rel = path
-                .strip_prefix(dir)
-                .map(|p| p.to_string_lossy().replace('\\', "/"))
-                .unwrap_or_default();
-            let lower = rel.to_ascii_lowercase();
-            let Ok(bytes) = std::fs::read(&path) else {
-                continue;
-            };
-            let name = path.file_name().unwrap_or_default().to_string_lossy();
-            if rapid_analyzer::text::is_rapid_file_name(&name) {
-                if let Decoded::Text { text, .. } = decode(&bytes) {
-                    loaded.files.push((rel, text));
-                }
-            } else if lower.ends_with(".pgf") {
-                loaded
-                    .programs
-                    .push((rel, String::from_utf8_lossy(&bytes).into_owned()));
-            } else if lower.ends_with(".cfg") {
-                loaded
-                    .configs
-                    .push((rel, String::from_utf8_lossy(&bytes).into_owned()));
-            }
-        }
-    }
-    loaded.files.sort();
-    loaded.programs.sort();
-    loaded.configs.sort();
-    loaded
-}
-
 #[test]
 fn corpus_errors_are_true_defects() {
     let Some(dir) = rapid_tests::corpus_dir() else {
         eprintln!("corpus_check skipped: no corpus (set RAPID_CORPUS)");
         return;
     };
-    let loaded = load(&dir);
+    let loaded = rapid_tests::workspace_inputs(&dir);
     let mut ws = Workspace::new();
     for (p, t) in &loaded.configs {
         ws.set_config(p, t);
@@ -123,16 +70,16 @@ fn corpus_errors_are_true_defects() {
     for (p, t) in &loaded.programs {
         ws.set_program(p, t);
     }
-    for (p, t) in &loaded.files {
+    for (p, t) in &loaded.modules {
         ws.set_file(p, t.clone());
     }
-    let lines: usize = loaded.files.iter().map(|(_, t)| t.lines().count()).sum();
+    let lines: usize = loaded.modules.iter().map(|(_, t)| t.lines().count()).sum();
     let mut per_code: BTreeMap<(&str, Severity), (usize, usize)> = BTreeMap::new();
     let mut in_damaged = Vec::new();
     let mut damaged = Vec::new();
     let mut true_defects = Vec::new();
     let mut untriaged = Vec::new();
-    for (path, text) in &loaded.files {
+    for (path, text) in &loaded.modules {
         let diags = ws.diagnostics(path);
         let syntax = diags
             .iter()
@@ -188,7 +135,7 @@ fn corpus_errors_are_true_defects() {
     );
     page.push_str(&format!(
         "- files: {}\n- lines: {lines}\n- damaged files (syntax errors; their other findings are not triaged): {}\n- error-level findings outside damaged files: {} (true defects: {}, untriaged: {})\n\n",
-        loaded.files.len(),
+        loaded.modules.len(),
         damaged.len(),
         true_defects.len() + untriaged.len(),
         true_defects.len(),
