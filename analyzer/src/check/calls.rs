@@ -492,22 +492,10 @@ fn check_value<'t>(cx: &mut Cx<'t>, p: &SigParam, v: Node<'t>) {
     if actual.is_unknown() || matches!(p.ty, Ty::Unknown) {
         return;
     }
-    if p.any_array {
-        if actual.dims() == 0 {
-            cx.report(
-                &rules::array_argument::RULE,
-                v.byte_range(),
-                format!(
-                    "{} needs an array, found {}",
-                    p.name,
-                    exprs::a_type(&actual)
-                ),
-            );
-        }
-        return;
-    }
-    if let Ty::Any = p.ty.element() {
-        if p.ty.dims() > 0 && actual.dims() == 0 {
+    // `anytype` parameters take any type; an array of any rank (Dim's
+    // ArrPar) or an `anytype` array needs some array.
+    if p.any_array || matches!(p.ty.element(), Ty::Any) {
+        if (p.any_array || p.ty.dims() > 0) && actual.dims() == 0 {
             cx.report(
                 &rules::array_argument::RULE,
                 v.byte_range(),
