@@ -2,22 +2,14 @@
 //! gets a clear message, no panic, and the other files are still checked.
 
 use std::path::Path;
-use std::process::{Command, Output, Stdio};
+use std::process::Output;
 
 mod support;
 use support::*;
 
-fn rapid(dir: &Path, args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_rapid"))
-        .arg("check")
-        .args(args)
-        .current_dir(dir)
-        .env_remove("CI")
-        .stdin(Stdio::null())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .output()
-        .expect("the rapid binary runs")
+/// `rapid check` with `args` in `dir`.
+fn check(dir: &Path, args: &[&str]) -> Output {
+    rapid(dir, &[&["check"], args].concat())
 }
 
 fn show(out: &Output) -> String {
@@ -35,7 +27,7 @@ const GOOD: &str = "MODULE Good\n    PROC main()\n        Missing;\n    ENDPROC\
 /// Checks `dir` and asserts the good module was checked, no panic
 /// happened, and stderr says `message` about the bad entry.
 fn assert_rest_checked(dir: &Path, message: &str, code: i32) -> Output {
-    let out = rapid(dir, &["--format", "concise"]);
+    let out = check(dir, &["--format", "concise"]);
     let stdout = text(&out.stdout);
     let stderr = text(&out.stderr);
     assert!(!stderr.contains("panicked"), "{}", show(&out));
@@ -58,9 +50,9 @@ fn binary_and_encrypted_modules_are_skipped() {
     assert_rest_checked(&dir, "Blob.mod: skipped: a binary file", 0);
     assert_rest_checked(&dir, "Secret.sys: skipped: an encrypted module", 0);
     // They are listed as skipped in machine formats too.
-    let out = rapid(&dir, &["--format", "junit"]);
+    let out = check(&dir, &["--format", "junit"]);
     assert!(text(&out.stdout).contains("<skipped message=\"skipped: a binary file"));
-    let out = rapid(&dir, &["--format", "sarif"]);
+    let out = check(&dir, &["--format", "sarif"]);
     let log: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
     let notes = log["runs"][0]["invocations"][0]["toolExecutionNotifications"]
         .as_array()
@@ -90,7 +82,7 @@ fn an_unreadable_file_is_an_io_error() {
     if std::fs::read(&locked).is_ok() {
         // Running as root: permissions do not stop reading. A path that is
         // missing is the unreadable file then.
-        let out = rapid(&dir, &["--format", "concise", "Good.mod", "Missing.mod"]);
+        let out = check(&dir, &["--format", "concise", "Good.mod", "Missing.mod"]);
         assert_eq!(out.status.code(), Some(2), "{}", show(&out));
         assert!(text(&out.stdout).contains("Good.mod:3:9"), "{}", show(&out));
         assert!(
@@ -107,7 +99,7 @@ fn an_unreadable_file_is_an_io_error() {
 fn an_empty_folder_says_so() {
     let dir = scratch("empty");
     std::fs::create_dir_all(dir.join("nothing/here")).expect("folder");
-    let out = rapid(&dir, &["nothing"]);
+    let out = check(&dir, &["nothing"]);
     assert_eq!(out.status.code(), Some(0), "{}", show(&out));
     assert!(
         text(&out.stderr).contains("no RAPID files found in nothing"),
@@ -148,7 +140,7 @@ fn a_50_mb_file_is_handled() {
     }
     huge.push_str("ENDMODULE\n");
     std::fs::write(dir.join("Huge.mod"), &huge).expect("written");
-    let out = rapid(&dir, &["--format", "concise", "--select", "E001"]);
+    let out = check(&dir, &["--format", "concise", "--select", "E001"]);
     assert!(!text(&out.stderr).contains("panicked"), "{}", show(&out));
     assert!(
         text(&out.stderr).contains("Huge.mod: skipped: 50.0 MB is more than the 8 MB"),

@@ -2,22 +2,10 @@
 //! programs written into scratch folders.
 
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output, Stdio};
+use std::process::Output;
 
 mod support;
 use support::*;
-
-fn rapid(dir: &Path, args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_rapid"))
-        .args(args)
-        .current_dir(dir)
-        .env_remove("CI")
-        .stdin(Stdio::null())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .output()
-        .expect("the rapid binary runs")
-}
 
 /// `code: stdout` then stderr, for snapshots and messages.
 fn show(out: &Output) -> String {

@@ -3,7 +3,6 @@
 //! only a guessed grouping produces.
 
 use std::path::Path;
-use std::process::{Command, Output, Stdio};
 
 mod support;
 use support::*;
@@ -13,15 +12,7 @@ fn write1(dir: &Path, name: &str, text: &str) {
 }
 
 fn check(dir: &Path) -> (Option<i32>, String) {
-    let out: Output = Command::new(env!("CARGO_BIN_EXE_rapid"))
-        .args(["check", "--format", "concise", "."])
-        .current_dir(dir)
-        .env_remove("CI")
-        .stdin(Stdio::null())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .output()
-        .expect("the rapid binary runs");
+    let out = rapid(dir, &["check", "--format", "concise", "."]);
     let mut lines: Vec<String> = String::from_utf8_lossy(&out.stdout)
         .lines()
         .map(|l| l.replace('\\', "/"))
