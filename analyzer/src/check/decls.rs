@@ -333,7 +333,17 @@ pub(super) fn check_data<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &DataDecl, i
         }
         None => {}
     }
-    let _ = in_routine;
+    if in_routine && decl.storage == Storage::Pers {
+        let at = field(node, "storage").map_or(decl.name_range.clone(), |s| s.byte_range());
+        cx.report(
+            &rules::persistent_in_routine::RULE,
+            at,
+            format!(
+                "`{}` is a persistent declared in a routine; declare it at module level, or make it VAR",
+                decl.name
+            ),
+        );
+    }
 }
 
 /// The sizes of an array declaration that are written as plain numbers.

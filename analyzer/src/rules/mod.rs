@@ -35,6 +35,7 @@ pub mod name_too_long;
 pub mod non_numeric_index;
 pub mod not_a_routine;
 pub mod option_routine;
+pub mod persistent_in_routine;
 pub mod return_value;
 pub mod shadowed_name;
 pub mod string_too_long;
@@ -92,6 +93,7 @@ pub static RULES: &[&Rule] = &[
     &string_too_long::RULE,
     &incomplete_code::RULE,
     &constant_error::RULE,
+    &persistent_in_routine::RULE,
     &option_routine::RULE,
     &unconfigured_signal::RULE,
     &unresolved_name::RULE,
