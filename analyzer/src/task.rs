@@ -6,12 +6,13 @@
 //! modules of one folder form one task. Tasks never see each other's names.
 
 use std::collections::HashMap;
+use std::ops::Range;
 use std::sync::Arc;
 
 use tree_sitter::Tree;
 
 use crate::diagnostic::Diagnostic;
-use crate::items::{DataDecl, FileItems, Module, RecordDecl, RoutineDecl, Scope};
+use crate::items::{DataDecl, FileItems, Module, RecordDecl, RoutineDecl, Scope, Storage};
 use crate::names::fold;
 use crate::ty::{Types, UserType};
 
@@ -127,6 +128,111 @@ pub fn task_key(path: &str) -> String {
     }
 }
 
+/// The controller a task belongs to: for the key of a backup's
+/// `RAPID/TASKn` folder ([`task_key`]), the key up to and including
+/// `RAPID/`; `None` for any other task.
+pub fn controller_of(key: &str) -> Option<&str> {
+    let (parent, last) = key.rsplit_once('/')?;
+    let is_task = last.len() > 4
+        && last[..4].eq_ignore_ascii_case("task")
+        && last[4..].bytes().all(|b| b.is_ascii_digit());
+    let rapid = parent.rsplit('/').next()?;
+    (is_task && rapid.eq_ignore_ascii_case("rapid")).then(|| &key[..=parent.len()])
+}
+
+/// A system-global persistent declared in another task of the same
+/// controller (see [`Task::shared`]).
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub struct SharedPers {
+    /// The name as declared.
+    pub name: String,
+    /// The type name as declared.
+    pub ty: String,
+    /// Whether that type is an `ALIAS` declared in its task (an alias and
+    /// its base type are interchangeable, so no conflict is reported).
+    pub alias: bool,
+    /// The dimension expressions as written (`["3", "4"]`), empty for one
+    /// value.
+    pub dims: Vec<String>,
+    /// The declaring task's key and file, and the name's byte range there.
+    pub task: String,
+    pub path: String,
+    pub name_range: Range<usize>,
+}
+
+impl SharedPers {
+    /// The type as RAPID writes it, with its dimensions: `num{3}`.
+    pub fn display(&self) -> String {
+        if self.dims.is_empty() {
+            self.ty.clone()
+        } else {
+            format!("{}{{{}}}", self.ty, self.dims.join(","))
+        }
+    }
+}
+
+/// The system-global persistents of a controller's tasks, by folded name.
+pub type SharedMap = HashMap<String, Vec<SharedPers>>;
+
+/// The system-global persistents declared in `units` (the files of one
+/// controller's `RAPID/TASKn` folders; files of other tasks are ignored), by
+/// folded name, and a hash of them.
+pub fn shared_persistents<'u>(units: impl Iterator<Item = &'u Arc<Unit>>) -> (SharedMap, u64) {
+    use std::hash::{Hash, Hasher};
+    let units: Vec<(String, &Arc<Unit>)> = units
+        .map(|u| (task_key(&u.path), u))
+        .filter(|(key, _)| controller_of(key).is_some())
+        .collect();
+    let mut aliases: std::collections::HashSet<(&str, String)> = Default::default();
+    for (key, unit) in &units {
+        for m in &unit.items.modules {
+            aliases.extend(m.aliases.iter().map(|a| (key.as_str(), fold(&a.name))));
+        }
+    }
+    let mut out = SharedMap::new();
+    for (key, unit) in &units {
+        for module in &unit.items.modules {
+            for d in &module.data {
+                if d.storage != Storage::Pers || d.scope != Scope::Global {
+                    continue;
+                }
+                let Some(ty) = &d.ty else { continue };
+                let dims = d
+                    .dims
+                    .iter()
+                    .map(|r| {
+                        unit.text
+                            .get(r.clone())
+                            .unwrap_or_default()
+                            .trim()
+                            .to_owned()
+                    })
+                    .collect();
+                out.entry(fold(&d.name)).or_default().push(SharedPers {
+                    name: d.name.clone(),
+                    ty: ty.name.clone(),
+                    alias: aliases.contains(&(key.as_str(), fold(&ty.name))),
+                    dims,
+                    task: key.clone(),
+                    path: unit.path.clone(),
+                    name_range: d.name_range.clone(),
+                });
+            }
+        }
+    }
+    let mut names: Vec<&String> = out.keys().collect();
+    names.sort();
+    let mut h = std::collections::hash_map::DefaultHasher::new();
+    for name in names {
+        let list = &out[name];
+        // `out` is built from a BTreeMap's order of units, so each list is
+        // in a stable order.
+        (name, list).hash(&mut h);
+    }
+    let hash = h.finish();
+    (out, hash)
+}
+
 /// Where a declaration lives: unit (index in the task), module, and item.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct ItemRef {
@@ -163,11 +269,25 @@ pub struct Task {
     pub interface: u64,
     /// Combined [`Unit::constants`] of every unit.
     pub constants: u64,
+    /// The system-global persistents (`PERS`, neither `TASK` nor `LOCAL`)
+    /// that the tasks of the same controller declare (this one included),
+    /// by folded name
+    /// (empty outside a backup's `RAPID/TASKn` folders): the controller
+    /// shares them, so their types must agree. Set with [`Task::set_shared`].
+    pub shared: Arc<SharedMap>,
     /// Memo of "did you mean" suggestions among the globals, by folded name.
     pub(crate) close_names: std::sync::Mutex<HashMap<String, Option<(usize, String)>>>,
 }
 
 impl Task {
+    /// Sets [`Task::shared`] (with the hash [`shared_persistents`] gave):
+    /// the task's interface hash then covers them, so cached results are
+    /// dropped when another task's persistents change.
+    pub fn set_shared(&mut self, shared: Arc<SharedMap>, hash: u64) {
+        self.interface ^= hash;
+        self.shared = shared;
+    }
+
     pub fn new(key: String, units: Vec<Arc<Unit>>, signals: Option<Signals>) -> Task {
         let mut globals: HashMap<String, Vec<ItemRef>> = HashMap::new();
         let mut locals: HashMap<String, Vec<ItemRef>> = HashMap::new();
@@ -197,6 +317,7 @@ impl Task {
             mecunits: Default::default(),
             interface,
             constants,
+            shared: Arc::default(),
             close_names: Default::default(),
         }
     }

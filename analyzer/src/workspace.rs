@@ -12,7 +12,10 @@ use std::sync::Arc;
 
 use crate::check::StmtCache;
 use crate::diagnostic::Diagnostic;
-use crate::task::{Config, Signals, Task, Unit, parse_config, task_key};
+use crate::task::{
+    Config, SharedMap, Signals, Task, Unit, controller_of, parse_config, shared_persistents,
+    task_key,
+};
 
 #[derive(Default)]
 pub struct Workspace {
@@ -20,6 +23,9 @@ pub struct Workspace {
     /// What each configuration file declares, by the file's path.
     configs: BTreeMap<String, Config>,
     tasks: HashMap<String, Arc<Task>>,
+    /// The shared persistents of each controller (backup), by the
+    /// controller's key ([`controller_of`]), with their hash.
+    controllers: HashMap<String, (Arc<SharedMap>, u64)>,
     checked: HashMap<String, Checked>,
     /// Program files (`.pgf`): the pgf's path to the folded paths of the
     /// modules it lists.
@@ -102,13 +108,29 @@ impl Workspace {
     pub fn set_unit(&mut self, unit: Unit) {
         let key = self.task_key(&unit.path);
         self.tasks.remove(&key);
-        self.units.insert(unit.path.clone(), Arc::new(unit));
+        let (interface, constants) = (unit.interface, unit.constants);
+        let old = self.units.insert(unit.path.clone(), Arc::new(unit));
+        // Array sizes are in `constants`, not in the interface.
+        if old.is_none_or(|o| o.interface != interface || o.constants != constants) {
+            self.forget_sibling_tasks(&key);
+        }
     }
 
     pub fn remove_file(&mut self, path: &str) {
         if self.units.remove(path).is_some() {
-            self.tasks.remove(&self.task_key(path));
+            let key = self.task_key(path);
+            self.tasks.remove(&key);
+            self.forget_sibling_tasks(&key);
             self.checked.remove(path);
+        }
+    }
+
+    /// Drops the other tasks of `key`'s controller, which hold its
+    /// persistents in [`Task::shared`].
+    fn forget_sibling_tasks(&mut self, key: &str) {
+        if let Some(controller) = controller_of(key) {
+            self.tasks.retain(|k, _| !k.starts_with(controller));
+            self.controllers.remove(controller);
         }
     }
 
@@ -155,6 +177,20 @@ impl Workspace {
         let (signals, mecunits) = self.config_for(&key);
         let mut task = Task::new(key.clone(), units, signals);
         task.mecunits = mecunits;
+        if let Some(controller) = controller_of(&key) {
+            let (shared, hash) = match self.controllers.get(controller) {
+                Some(c) => c.clone(),
+                None => {
+                    let (map, hash) = shared_persistents(
+                        self.units.values().filter(|u| under(&u.path, controller)),
+                    );
+                    let c = (Arc::new(map), hash);
+                    self.controllers.insert(controller.to_owned(), c.clone());
+                    c
+                }
+            };
+            task.set_shared(shared, hash);
+        }
         let task = Arc::new(task);
         self.tasks.insert(key, task.clone());
         task
@@ -256,6 +292,16 @@ pub fn diagnostics_cached(
     (out, next)
 }
 
+/// Is `path` below `folder` (a normalised prefix ending in `/`), with either
+/// separator?
+fn under(path: &str, folder: &str) -> bool {
+    path.len() > folder.len()
+        && path
+            .bytes()
+            .zip(folder.bytes())
+            .all(|(a, b)| a == b || (a == b'\\' && b == b'/'))
+}
+
 /// Is this the key of a backup's `RAPID/TASKn` folder?
 fn is_backup_key(key: &str) -> bool {
     let lower = key.to_ascii_lowercase();
@@ -354,6 +400,23 @@ mod tests {
         assert_eq!(cache.reused(), 400, "every other statement is reused");
         // The other module's result is not recomputed at all.
         assert!(Arc::ptr_eq(&b, &ws.diagnostics("p/B.mod")));
+    }
+
+    #[test]
+    fn a_persistent_changed_in_one_task_rechecks_the_other_tasks() {
+        let module = |ty: &str| format!("MODULE M\n  PERS {ty} shared := 0;\nENDMODULE\n");
+        let mut ws = Workspace::new();
+        ws.set_file("b/RAPID/TASK1/PROGMOD/M.mod", module("num"));
+        ws.set_file("b/RAPID/TASK2/PROGMOD/M.mod", module("num"));
+        assert!(ws.diagnostics("b/RAPID/TASK1/PROGMOD/M.mod").is_empty());
+        ws.set_file("b/RAPID/TASK2/PROGMOD/M.mod", module("dnum"));
+        let found = ws.diagnostics("b/RAPID/TASK1/PROGMOD/M.mod");
+        assert_eq!(found.len(), 1, "{found:?}");
+        assert_eq!(found[0].rule.name, "shared-persistent-mismatch");
+        let related = &found[0].related[0];
+        assert_eq!(related.file.as_deref(), Some("b/RAPID/TASK2/PROGMOD/M.mod"));
+        ws.remove_file("b/RAPID/TASK2/PROGMOD/M.mod");
+        assert!(ws.diagnostics("b/RAPID/TASK1/PROGMOD/M.mod").is_empty());
     }
 
     #[test]

@@ -333,6 +333,9 @@ pub(super) fn check_data<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &DataDecl, i
         }
         None => {}
     }
+    if !in_routine {
+        super::shared::check_persistent(cx, decl);
+    }
     if in_routine && decl.storage == Storage::Pers {
         let at = field(node, "storage").map_or(decl.name_range.clone(), |s| s.byte_range());
         cx.report(

@@ -8,6 +8,7 @@
 mod calls;
 mod decls;
 mod exprs;
+mod shared;
 mod stmts;
 
 use std::collections::{HashMap, HashSet};

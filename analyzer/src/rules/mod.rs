@@ -38,6 +38,7 @@ pub mod option_routine;
 pub mod persistent_in_routine;
 pub mod return_value;
 pub mod shadowed_name;
+pub mod shared_persistent_mismatch;
 pub mod string_too_long;
 pub mod switch_argument;
 pub mod syntax_error;
@@ -63,6 +64,7 @@ pub static RULES: &[&Rule] = &[
     &duplicate_declaration::RULE,
     &ambiguous_global::RULE,
     &local_not_visible::RULE,
+    &shared_persistent_mismatch::RULE,
     &type_mismatch::RULE,
     &non_numeric_index::RULE,
     &aggregate_arity::RULE,
