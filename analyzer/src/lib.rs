@@ -17,4 +17,5 @@ mod syntax_util;
 pub mod task;
 pub mod text;
 pub mod ty;
+pub mod unit_tree;
 pub mod workspace;

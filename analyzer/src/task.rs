@@ -15,6 +15,7 @@ use crate::diagnostic::Diagnostic;
 use crate::items::{DataDecl, FileItems, Module, RecordDecl, RoutineDecl, Scope, Storage};
 use crate::names::fold;
 use crate::ty::{Types, UserType};
+use crate::unit_tree::UnitTree;
 
 /// One parsed file with its item tree. Immutable once built: an edit makes
 /// a new unit (reusing the old tree for an incremental parse).
@@ -24,7 +25,9 @@ pub struct Unit {
     /// in related locations).
     pub path: String,
     pub text: String,
-    pub tree: Tree,
+    /// The syntax tree; it may have been released ([`Unit::release_tree`])
+    /// and is then parsed again on use.
+    pub tree: UnitTree,
     pub items: FileItems,
     pub interface: u64,
     /// A hash of the values of the unit's module data and the sizes of its
@@ -58,10 +61,17 @@ impl Unit {
             constants: constants_hash(&items, &text),
             path,
             text,
-            tree,
+            tree: UnitTree::new(tree),
             items,
             syntax,
         }
+    }
+
+    /// Releases the syntax tree to save memory (most of a unit's memory is
+    /// its tree); the next use of [`Unit::tree`] parses the text again.
+    /// Everything else (items, interface, syntax diagnostics) stays.
+    pub fn release_tree(&mut self) {
+        self.tree.release(&self.text);
     }
 
     fn empty(path: String, text: String, tree: Option<Tree>) -> Unit {
@@ -69,7 +79,7 @@ impl Unit {
             Some(tree) => Unit {
                 path,
                 text,
-                tree,
+                tree: UnitTree::new(tree),
                 items: FileItems::default(),
                 interface: 0,
                 constants: 0,

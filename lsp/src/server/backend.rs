@@ -23,7 +23,9 @@ use super::document::{Document, apply_changes, apply_text_changes};
 use super::position::PosEncoding;
 use super::requests;
 use super::settings::Settings;
-use super::state::{ClientCaps, Shared, Snapshot, State, is_eio_cfg, make_unit, path_of};
+use super::state::{
+    ClientCaps, Shared, Snapshot, State, closed_unit, is_eio_cfg, make_unit, path_of,
+};
 
 /// The extensions of RAPID files, in the letter cases seen in practice, for
 /// file watchers (LSP glob patterns are case-sensitive).
@@ -468,7 +470,7 @@ fn read_units(
         .par_iter()
         .map(|p| {
             let unit = crate::source::SourceFile::read(p)
-                .map(|f| make_unit(p.to_string_lossy().into_owned(), f.text, None));
+                .map(|f| closed_unit(p.to_string_lossy().into_owned(), f.text));
             (p.clone(), unit)
         })
         .collect()

@@ -264,6 +264,16 @@ pub fn make_unit(path: String, text: String, old: Option<&tree_sitter::Tree>) ->
     }
 }
 
+/// A unit of a file that is not open in the editor: parsed for its items
+/// and syntax diagnostics, then its tree released (trees are most of the
+/// memory of a workspace; a feature that needs the syntax of a closed file
+/// parses it again).
+pub fn closed_unit(path: String, text: String) -> Unit {
+    let mut unit = make_unit(path, text, None);
+    unit.release_tree();
+    unit
+}
+
 impl State {
     pub fn next_id(&mut self) -> u64 {
         self.next_id += 1;
@@ -361,7 +371,7 @@ impl State {
         let before = self.ws.unit(&name).map(|u| u.interface);
         match SourceFile::read(path) {
             Ok(file) => {
-                let unit = make_unit(name.clone(), file.text, None);
+                let unit = closed_unit(name.clone(), file.text);
                 let changed = before != Some(unit.interface);
                 self.ws.set_unit(unit);
                 Ok(changed)
