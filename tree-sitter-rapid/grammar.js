@@ -66,6 +66,24 @@ function sep1(rule, sep) {
 }
 
 /**
+ * `repeat(rule)` with its first `count` items unrolled into nested
+ * optionals: a list of up to `count` items then costs no reduction of its
+ * own (it is part of the rule that contains it), where `repeat` costs about
+ * two per item (it builds a balanced tree of hidden nodes). The visible tree
+ * is the same. For the short lists that make up most of real code
+ * (aggregates such as robtargets, arguments).
+ * @param {RuleOrLiteral} rule
+ * @param {number} count
+ */
+function unrolledRepeat(rule, count) {
+  let tail = repeat(rule);
+  for (let i = 0; i < count; i++) {
+    tail = optional(seq(rule, tail));
+  }
+  return tail;
+}
+
+/**
  * Data declarations and statements, then the handlers, in their order.
  * @param {any} $
  */
@@ -91,10 +109,21 @@ module.exports = grammar({
     global: _ => RESERVED.map(ci),
   },
 
-  supertypes: $ => [
+  // No `supertypes`: a supertype is a real (hidden) node, one reduction
+  // more for every expression, statement and declaration, and nothing
+  // queries them. Hidden pass-through rules are inlined for the same reason.
+  // The visible tree is the same either way. Not inlined: `_expression`
+  // (error recovery would prefer a missing `TRUE` to a missing name),
+  // `_type` (tree-sitter drops its alias when inlined), `_target` (recursive).
+  inline: $ => [
     $._declaration,
     $._statement,
-    $._expression,
+    $._routine_item,
+    $._simple_statement,
+    $._primary_expression,
+    $._first_parameter,
+    $._scope,
+    $._name,
   ],
 
   conflicts: $ => [],
@@ -439,10 +468,10 @@ module.exports = grammar({
     // first argument, then `, argument` or `\optional` (comma optional)
     argument_list: $ => seq(
       field('argument', $.argument),
-      repeat(choice(
+      unrolledRepeat(choice(
         seq(',', field('argument', $.argument)),
         field('argument', alias($._optional_argument, $.argument)),
-      )),
+      ), 5),
     ),
 
     argument: $ => choice(
@@ -546,7 +575,8 @@ module.exports = grammar({
 
     aggregate: $ => seq(
       '[',
-      sep1(field('element', $._expression), ','),
+      field('element', $._expression),
+      unrolledRepeat(seq(',', field('element', $._expression)), 7),
       ']',
     ),
 
