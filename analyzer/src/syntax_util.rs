@@ -54,3 +54,27 @@ pub fn has_token(node: Node<'_>, kind: &str) -> bool {
 pub fn is_placeholder(node: Node<'_>) -> bool {
     node.kind() == "placeholder"
 }
+
+/// The node's kind, as [`Node::kind`] gives it, from a table built once
+/// (`Node::kind` checks the name's UTF-8 on every call, which shows in walks
+/// over long routines).
+pub fn kind<'a>(node: Node<'a>) -> &'a str {
+    static NAMES: std::sync::OnceLock<Vec<String>> = std::sync::OnceLock::new();
+    let names = NAMES.get_or_init(|| {
+        let language = crate::syntax::language();
+        (0..language.node_kind_count())
+            .map(|i| {
+                u16::try_from(i)
+                    .ok()
+                    .and_then(|id| language.node_kind_for_id(id))
+                    .unwrap_or_default()
+                    .to_owned()
+            })
+            .collect()
+    });
+    match names.get(usize::from(node.kind_id())) {
+        Some(name) if !name.is_empty() => name.as_str(),
+        // ERROR and the like are outside the table.
+        _ => node.kind(),
+    }
+}

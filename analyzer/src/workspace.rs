@@ -33,6 +33,10 @@ pub struct Workspace {
     /// Folded module path to the program that lists it (derived from
     /// `programs`).
     listed: HashMap<String, String>,
+    /// The units of a task whose cached [`Task`] was dropped because one of
+    /// its files was replaced, in the task's order: rebuilding it needs no
+    /// search for its members (their set did not change).
+    members: HashMap<String, Vec<Arc<Unit>>>,
 }
 
 struct Checked {
@@ -73,6 +77,7 @@ impl Workspace {
             }
         }
         self.tasks.clear();
+        self.members.clear();
     }
 
     /// The key of the task a file belongs to: its program's, when a `.pgf`
@@ -107,9 +112,24 @@ impl Workspace {
     /// Adds or replaces a file parsed by the caller (e.g. incrementally).
     pub fn set_unit(&mut self, unit: Unit) {
         let key = self.task_key(&unit.path);
-        self.tasks.remove(&key);
+        let unit = Arc::new(unit);
+        // The same file replaced: the task keeps its members.
+        let mut members = match self.tasks.remove(&key) {
+            Some(task) => Some(task.units.clone()),
+            None => self.members.remove(&key),
+        };
+        match members
+            .as_mut()
+            .and_then(|m| m.iter_mut().find(|u| u.path == unit.path))
+        {
+            Some(slot) => *slot = unit.clone(),
+            None => members = None,
+        }
+        if let Some(members) = members {
+            self.members.insert(key.clone(), members);
+        }
         let (interface, constants) = (unit.interface, unit.constants);
-        let old = self.units.insert(unit.path.clone(), Arc::new(unit));
+        let old = self.units.insert(unit.path.clone(), unit);
         // Array sizes are in `constants`, not in the interface.
         if old.is_none_or(|o| o.interface != interface || o.constants != constants) {
             self.forget_sibling_tasks(&key);
@@ -120,6 +140,7 @@ impl Workspace {
         if self.units.remove(path).is_some() {
             let key = self.task_key(path);
             self.tasks.remove(&key);
+            self.members.remove(&key);
             self.forget_sibling_tasks(&key);
             self.checked.remove(path);
         }
@@ -141,11 +162,13 @@ impl Workspace {
     pub fn set_config(&mut self, path: &str, text: &str) {
         self.configs.insert(path.to_owned(), parse_config(text));
         self.tasks.clear();
+        self.members.clear();
     }
 
     pub fn remove_config(&mut self, path: &str) {
         if self.configs.remove(path).is_some() {
             self.tasks.clear();
+            self.members.clear();
         }
     }
 
@@ -162,6 +185,9 @@ impl Workspace {
         let key = self.task_key(path);
         if let Some(t) = self.tasks.get(&key) {
             return t.clone();
+        }
+        if let Some(units) = self.members.remove(&key) {
+            return self.build_task(key, units);
         }
         let units: Vec<Arc<Unit>> = self
             .units
@@ -211,7 +237,10 @@ impl Workspace {
             .into_iter()
             .map(|(key, units)| match self.tasks.get(&key) {
                 Some(task) => task.clone(),
-                None => self.build_task(key, units),
+                None => {
+                    self.members.remove(&key);
+                    self.build_task(key, units)
+                }
             })
             .collect()
     }
@@ -400,6 +429,52 @@ mod tests {
         assert_eq!(cache.reused(), 400, "every other statement is reused");
         // The other module's result is not recomputed at all.
         assert!(Arc::ptr_eq(&b, &ws.diagnostics("p/B.mod")));
+    }
+
+    /// Compound statements are cached whole unless a GOTO inside depends on
+    /// the routine's labels, which the cache key leaves out.
+    #[test]
+    fn a_goto_inside_a_compound_statement_follows_the_labels() {
+        let text = |label: &str| {
+            format!(
+                "MODULE A\n  VAR num n;\n  PROC main()\n    {label}:\n    n := 1;\n    IF n > 0 THEN\n      n := 2;\n      GOTO again;\n    ENDIF\n  ENDPROC\nENDMODULE\n"
+            )
+        };
+        let mut ws = Workspace::new();
+        ws.set_file("p/A.mod", text("again"));
+        assert!(ws.diagnostics("p/A.mod").is_empty());
+        ws.set_file("p/A.mod", text("other"));
+        let found = ws.diagnostics("p/A.mod");
+        assert!(
+            found.iter().any(|d| d.rule.name == "unknown-label"),
+            "{found:?}"
+        );
+        let unit = ws.unit("p/A.mod").cloned().expect("the file");
+        let task = ws.task_of("p/A.mod");
+        assert_eq!(*found, diagnostics_of(&task, &unit));
+    }
+
+    /// An edit elsewhere leaves a compound statement's result cached, and the
+    /// workspace rebuilds the task from its known members.
+    #[test]
+    fn compound_statements_are_reused_whole() {
+        let mut body = String::new();
+        for i in 0..50 {
+            body.push_str(&format!(
+                "    IF n > {i} THEN\n      n := {i};\n    ENDIF\n"
+            ));
+        }
+        let text = format!("MODULE A\n  VAR num n;\n  PROC main()\n{body}  ENDPROC\nENDMODULE\n");
+        let mut ws = Workspace::new();
+        ws.set_file("p/A.mod", text.clone());
+        ws.set_file("p/B.mod", "MODULE B\nENDMODULE\n".into());
+        assert!(ws.diagnostics("p/A.mod").is_empty());
+        ws.set_file("p/A.mod", text.replacen("n := 7;", "n := 8;", 1));
+        assert!(ws.members.contains_key("p"), "the task's members are kept");
+        assert!(ws.diagnostics("p/A.mod").is_empty());
+        assert_eq!(ws.task_of("p/A.mod").units.len(), 2);
+        // The 49 other IF statements, whole.
+        assert_eq!(ws.checked["p/A.mod"].statements.reused(), 49);
     }
 
     #[test]

@@ -374,3 +374,144 @@ fn cached_rechecks_equal_fresh_checks() {
     }
     assert!(compared > 100, "only {compared} comparisons");
 }
+
+/// The position of a byte offset, for tree-sitter.
+fn point_at(text: &str, at: usize) -> tree_sitter::Point {
+    let before = &text[..at];
+    tree_sitter::Point {
+        row: before.matches('\n').count(),
+        column: at - before.rfind('\n').map_or(0, |i| i + 1),
+    }
+}
+
+/// Replaces `path`'s text as an editor does: the old tree edited, then an
+/// incremental parse.
+fn edit_file(ws: &mut Workspace, path: &str, new: String) {
+    let unit = ws.unit(path).expect("the file").clone();
+    let old = &unit.text;
+    let prefix = old
+        .bytes()
+        .zip(new.bytes())
+        .take_while(|(a, b)| a == b)
+        .count();
+    let suffix = old
+        .bytes()
+        .rev()
+        .zip(new.bytes().rev())
+        .take_while(|(a, b)| a == b)
+        .count()
+        .min(old.len().min(new.len()) - prefix);
+    // On character boundaries of both texts.
+    let mut start = prefix;
+    while !old.is_char_boundary(start) || !new.is_char_boundary(start) {
+        start -= 1;
+    }
+    let (mut old_end, mut new_end) = (old.len() - suffix, new.len() - suffix);
+    while !old.is_char_boundary(old_end) || !new.is_char_boundary(new_end) {
+        old_end += 1;
+        new_end += 1;
+    }
+    let mut tree = unit.tree.clone();
+    tree.edit(&tree_sitter::InputEdit {
+        start_byte: start,
+        old_end_byte: old_end,
+        new_end_byte: new_end,
+        start_position: point_at(old, start),
+        old_end_position: point_at(old, old_end),
+        new_end_position: point_at(&new, new_end),
+    });
+    ws.set_unit(rapid_analyzer::task::Unit::new(
+        path.to_owned(),
+        new,
+        Some(&tree),
+    ));
+}
+
+/// One edit of a kind the statement cache must survive, at line `line`
+/// (taken modulo the line count): a character typed at the start of the line,
+/// the line deleted, the line doubled (a statement added), a label and a
+/// GOTO, a data type changed (`num` to `bool`, first after the line), a
+/// character inside a string and inside a comment, a line break (the line
+/// count changes), blanks.
+fn edit_of_kind(text: &str, kind: usize, line: usize) -> Option<String> {
+    let starts: Vec<usize> = std::iter::once(0)
+        .chain(text.match_indices('\n').map(|(i, _)| i + 1))
+        .filter(|&i| i < text.len())
+        .collect();
+    let at = *starts.get(line % starts.len().max(1))?;
+    let end = text[at..].find('\n').map_or(text.len(), |i| at + i + 1);
+    let mut new = text.to_owned();
+    match kind % 10 {
+        0 => new.insert(at, 'x'),
+        1 => new.replace_range(at..end, ""),
+        2 => new.insert_str(at, &text[at..end]),
+        3 => new.insert_str(at, "lbl1:\n"),
+        4 => new.insert_str(at, "GOTO lbl1;\n"),
+        5 => {
+            let i = at + text[at..].find("num")?;
+            new.replace_range(i..i + 3, "bool");
+        }
+        6 => {
+            let i = at + text[at..].find('"')?;
+            new.insert(i + 1, 'q');
+        }
+        7 => {
+            let i = at + text[at..].find('!')?;
+            new.insert_str(i + 1, " x:");
+        }
+        8 => new.insert(at, '\n'),
+        _ => new.insert_str(at, "  "),
+    }
+    Some(new)
+}
+
+/// Edits of every kind the statement cache special-cases, chained (each on
+/// the result of the previous ones), in every module of a fixture in turn,
+/// parsed incrementally: after each, every module's cached re-check equals a
+/// fresh check.
+#[test]
+fn chained_edits_recheck_like_fresh_checks() {
+    let mut compared = 0;
+    for fixture in fixtures() {
+        let mut ws = Workspace::new();
+        let mut modules = Vec::new();
+        for (path, text) in &fixture.files {
+            if path.to_ascii_lowercase().ends_with(".cfg") {
+                ws.set_config(path, text);
+            } else if path.to_ascii_lowercase().ends_with(".pgf") {
+                ws.set_program(path, text);
+            } else if is_module(Path::new(path)) {
+                ws.set_file(path, text.clone());
+                modules.push(path.clone());
+            }
+        }
+        if modules.is_empty() {
+            continue;
+        }
+        for path in &modules {
+            ws.diagnostics(path);
+        }
+        for step in 0..40 {
+            let path = &modules[step % modules.len()];
+            let text = ws.unit(path).expect("the file").text.clone();
+            let Some(new) = edit_of_kind(&text, step, step * 7 + step / 10) else {
+                continue;
+            };
+            edit_file(&mut ws, path, new);
+            for p in &modules {
+                let cached = ws.diagnostics(p);
+                let task = ws.task_of(p);
+                let unit = ws.unit(p).expect("the file").clone();
+                let fresh = rapid_analyzer::workspace::diagnostics_of(&task, &unit);
+                assert_eq!(
+                    *cached,
+                    fresh,
+                    "{p} after edit {step} (kind {}) of {path}",
+                    step % 10
+                );
+                compared += 1;
+            }
+        }
+    }
+    assert!(compared > 500, "only {compared} comparisons");
+}

@@ -78,14 +78,30 @@ pub(super) fn check_file_wide(cx: &mut Cx<'_>, root: Node<'_>) {
 /// A cheap look at the text: placeholders need a `<`, and a string longer
 /// than the limit needs a line with that many characters between quotes.
 fn may_hold_placeholder_or_long_string(text: &str) -> bool {
-    text.contains('<')
-        || text.lines().any(|line| {
-            line.len() > MAX_STRING
-                && matches!(
-                    (line.find('"'), line.rfind('"')),
-                    (Some(a), Some(b)) if b - a > MAX_STRING
-                )
-        })
+    if text.contains('<') {
+        return true;
+    }
+    // Only the lines that hold a quote (usually few): from each quote to the
+    // next line.
+    let mut from = 0;
+    while let Some(q) = text.get(from..).and_then(|t| t.find('"')) {
+        let q = from + q;
+        let start = text[..q].rfind('\n').map_or(0, |i| i + 1);
+        let end = text[q..].find('\n').map_or(text.len(), |i| q + i);
+        // As `str::lines` gives it: without the line break.
+        let line = &text[start..end];
+        let line = line.strip_suffix('\r').unwrap_or(line);
+        if line.len() > MAX_STRING
+            && matches!(
+                (line.find('"'), line.rfind('"')),
+                (Some(a), Some(b)) if b - a > MAX_STRING
+            )
+        {
+            return true;
+        }
+        from = end;
+    }
+    false
 }
 
 /// The number of characters of a string literal's value (escapes count one).
@@ -400,14 +416,21 @@ fn check_routine<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &'t RoutineDecl) {
         in_error_handler: false,
     });
 
+    // One walk over the routine's children (long generated routines make
+    // each walk costly): the items of its body, and its named children for
+    // the labels.
+    let RoutineChildren {
+        body,
+        named,
+        handlers,
+    } = routine_children(node);
     // Routine data, which must come before the first statement.
-    let body = fields(node, "body");
     let mut seen_statement = false;
     let mut statements = Vec::new();
     let mut local_names: Vec<(String, Range<usize>)> = Vec::new();
     let mut decl_nodes = Vec::new();
     for item in body {
-        if item.kind() == "data_declaration" {
+        if crate::syntax_util::kind(item) == "data_declaration" {
             decl_nodes.push(item);
             if seen_statement {
                 cx.report(
@@ -438,6 +461,7 @@ fn check_routine<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &'t RoutineDecl) {
     // The statement cache's view of the routine: its name and kind (the
     // parameters are in the task's interface) and the text of its data
     // declarations, so that white space around statements does not count.
+    cx.cache.routines += 1;
     cx.routine_fingerprint = {
         use std::hash::{Hash, Hasher};
         let mut h = std::hash::DefaultHasher::new();
@@ -447,10 +471,10 @@ fn check_routine<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &'t RoutineDecl) {
         }
         h.finish()
     };
-    stmts::collect_labels(cx, node);
+    stmts::collect_labels(cx, node, named);
     stmts::check_block(cx, &statements);
-    for (handler, in_error) in [("backward", false), ("error", true), ("undo", false)] {
-        if let Some(h) = field(node, handler) {
+    for (h, in_error) in handlers.into_iter().zip([false, true, false]) {
+        if let Some(h) = h {
             if let Some(r) = &mut cx.routine {
                 r.in_error_handler = in_error;
             }
@@ -476,6 +500,50 @@ fn check_routine<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &'t RoutineDecl) {
     }
     check_unused_in_routine(cx, decl);
     cx.routine = None;
+}
+
+/// A routine's children, from one walk.
+struct RoutineChildren<'t> {
+    /// In field `body`.
+    body: Vec<Node<'t>>,
+    /// Every named child.
+    named: Vec<Node<'t>>,
+    /// The first child in fields `backward`, `error` and `undo`.
+    handlers: [Option<Node<'t>>; 3],
+}
+
+fn routine_children(node: Node<'_>) -> RoutineChildren<'_> {
+    use crate::syntax_util::field_id;
+    let body_id = field_id("body");
+    let handler_ids = [field_id("backward"), field_id("error"), field_id("undo")];
+    let mut out = RoutineChildren {
+        body: Vec::new(),
+        named: Vec::new(),
+        handlers: [None; 3],
+    };
+    let mut cursor = node.walk();
+    if cursor.goto_first_child() {
+        loop {
+            let child = cursor.node();
+            if let Some(id) = cursor.field_id() {
+                if Some(id) == body_id {
+                    out.body.push(child);
+                }
+                for (slot, h) in out.handlers.iter_mut().zip(handler_ids) {
+                    if slot.is_none() && Some(id) == h {
+                        *slot = Some(child);
+                    }
+                }
+            }
+            if child.is_named() {
+                out.named.push(child);
+            }
+            if !cursor.goto_next_sibling() {
+                break;
+            }
+        }
+    }
+    out
 }
 
 /// A routine's data or parameter that hides a module or task name, or (for

@@ -12,6 +12,7 @@ mod shared;
 mod stmts;
 
 use std::collections::{HashMap, HashSet};
+use std::hash::BuildHasherDefault;
 use std::ops::Range;
 
 use tree_sitter::Node;
@@ -42,7 +43,9 @@ pub fn check_unit_cached(
         return (Vec::new(), StmtCache::default());
     };
     let mut cx = Cx::new(task, unit, u);
-    cx.cache_old = cache.entries;
+    cx.cache = cache;
+    cx.cache.generation += 1;
+    cx.cache.reused = 0;
     cx.cache_enabled = true;
     cx.check();
     let mut diags = std::mem::take(&mut cx.diags);
@@ -53,10 +56,10 @@ pub fn check_unit_cached(
         !std::ptr::eq(d.rule, &crate::rules::unconfigured_signal::RULE)
             || seen.insert(d.message.clone())
     });
-    let cache = StmtCache {
-        entries: std::mem::take(&mut cx.cache_new),
-        reused: cx.cache_reused,
-    };
+    let mut cache = std::mem::take(&mut cx.cache);
+    // Keep only what this check met (as if the cache were made afresh).
+    let generation = cache.generation;
+    cache.entries.retain(|_, e| e.generation == generation);
     (diags, cache)
 }
 
@@ -64,10 +67,17 @@ pub fn check_unit_cached(
 /// context, with diagnostic ranges relative to the statement's start.
 #[derive(Debug, Default)]
 pub struct StmtCache {
-    entries: HashMap<u64, CachedStmt>,
+    entries: HashMap<u64, CachedStmt, BuildHasherDefault<KeyHasher>>,
     /// How many statements the check that made this cache took from the
     /// previous one.
     reused: usize,
+    /// Checks made with this cache: each entry is stamped with the last one
+    /// that met its statement, and the others are dropped after a check.
+    generation: u64,
+    /// Routines entered by checks made with this cache (never reset), so
+    /// that an entry can tell whether its uses were already recorded in the
+    /// routine being checked.
+    routines: u64,
 }
 
 impl StmtCache {
@@ -86,10 +96,35 @@ impl StmtCache {
     }
 }
 
+/// The cache's keys are hashes already: use them as they are.
+#[derive(Default)]
+pub(crate) struct KeyHasher(u64);
+
+impl std::hash::Hasher for KeyHasher {
+    fn finish(&self) -> u64 {
+        self.0
+    }
+
+    fn write(&mut self, bytes: &[u8]) {
+        for b in bytes {
+            self.0 = self.0.rotate_left(8) ^ u64::from(*b);
+        }
+    }
+
+    fn write_u64(&mut self, n: u64) {
+        self.0 = n;
+    }
+}
+
 #[derive(Clone, Debug)]
 pub(crate) struct CachedStmt {
     diags: Vec<Diagnostic>,
     used: Vec<Used>,
+    /// The last check that met this statement.
+    generation: u64,
+    /// The last routine (a [`StmtCache::routines`] count) whose `used` set
+    /// holds this statement's uses.
+    routine: u64,
 }
 
 /// What a data name denotes.
@@ -166,11 +201,9 @@ pub(crate) struct Cx<'t> {
     /// Folded names of routine-scope symbols and module items that were used.
     pub used: HashSet<Used>,
     pub reported_signals: HashSet<String>,
-    /// Statement results of the previous check, and of this one.
-    pub(crate) cache_old: HashMap<u64, CachedStmt>,
-    pub(crate) cache_new: HashMap<u64, CachedStmt>,
+    /// Statement results of the previous checks, and of this one.
+    pub(crate) cache: StmtCache,
     pub(crate) cache_enabled: bool,
-    pub(crate) cache_reused: usize,
     /// Uses recorded while a statement is checked, for the cache.
     pub(crate) recording: Option<Vec<Used>>,
     /// A hash of the current routine's header and declarations.
@@ -198,10 +231,8 @@ impl<'t> Cx<'t> {
             diags: Vec::new(),
             used: HashSet::new(),
             reported_signals: HashSet::new(),
-            cache_old: HashMap::new(),
-            cache_new: HashMap::new(),
+            cache: StmtCache::default(),
             cache_enabled: false,
-            cache_reused: 0,
             recording: None,
             routine_fingerprint: 0,
         }
@@ -227,12 +258,10 @@ impl<'t> Cx<'t> {
             return;
         };
         let start = s.start_byte();
-        let cached = self
-            .cache_old
-            .get(&key)
-            .or_else(|| self.cache_new.get(&key))
-            .cloned();
-        if let Some(c) = cached {
+        let generation = self.cache.generation;
+        let routine = self.cache.routines;
+        if let Some(c) = self.cache.entries.get_mut(&key) {
+            c.generation = generation;
             for d in &c.diags {
                 let mut d = d.clone();
                 d.range = d.range.start + start..d.range.end + start;
@@ -248,11 +277,17 @@ impl<'t> Cx<'t> {
                 }
                 self.diags.push(d);
             }
-            for u in &c.used {
-                self.used.insert(u.clone());
+            // The same statement met again in this routine: its uses are
+            // recorded already.
+            if c.routine != routine {
+                c.routine = routine;
+                for u in &c.used {
+                    if !self.used.contains(u) {
+                        self.used.insert(u.clone());
+                    }
+                }
             }
-            self.cache_reused += 1;
-            self.cache_new.insert(key, c);
+            self.cache.reused += 1;
             return;
         }
         let before = self.diags.len();
@@ -291,7 +326,15 @@ impl<'t> Cx<'t> {
                     d
                 })
                 .collect();
-            self.cache_new.insert(key, CachedStmt { diags, used });
+            self.cache.entries.insert(
+                key,
+                CachedStmt {
+                    diags,
+                    used,
+                    generation,
+                    routine,
+                },
+            );
         }
     }
 
@@ -774,10 +817,15 @@ impl<'t> Cx<'t> {
         // this in the middle of a unit (constant evaluation).
         let before = self.diags.len();
         let used = self.used.clone();
+        let recorded = self.recording.as_ref().map(Vec::len);
         let signals = self.reported_signals.clone();
         let ty = exprs::expr(self, node, None);
         self.diags.truncate(before);
         self.used = used;
+        // The statement cache records only the uses that stay.
+        if let (Some(r), Some(len)) = (&mut self.recording, recorded) {
+            r.truncate(len);
+        }
         self.reported_signals = signals;
         ty
     }

@@ -7,33 +7,45 @@ use super::{Cx, Place, RoutineSym, calls, exprs};
 use crate::items::RoutineKind;
 use crate::names::fold;
 use crate::rules;
-use crate::syntax_util::{field, fields};
+use crate::syntax_util::{field, fields, kind as kind_of};
 use crate::ty::Ty;
 
 /// Collects the labels of the routine being checked, with the statement
-/// list that holds each.
-pub(super) fn collect_labels(cx: &mut Cx<'_>, routine: Node<'_>) {
+/// list that holds each; `named` are the routine's named children.
+pub(super) fn collect_labels<'t>(cx: &mut Cx<'_>, routine: Node<'t>, named: Vec<Node<'t>>) {
     // A label is `name:`; a routine without a `:` other than in `:=` has none
     // (a cheap look at the text spares the walk of long generated routines).
     let text = cx.text.get(routine.byte_range()).unwrap_or_default();
-    let has_colon = text
-        .bytes()
-        .zip(text.bytes().skip(1).chain(std::iter::once(b' ')))
-        .any(|(a, b)| a == b':' && b != b'=');
+    let mut from = 0;
+    let has_colon = loop {
+        match text.get(from..).and_then(|t| t.find(':')) {
+            Some(i) if text.as_bytes().get(from + i + 1) == Some(&b'=') => from += i + 1,
+            Some(_) => break true,
+            None => break false,
+        }
+    };
     if !has_colon {
         return;
     }
-    let mut stack = vec![routine];
+    let mut stack = vec![(routine, Some(named))];
     let mut found = Vec::new();
-    while let Some(node) = stack.pop() {
+    while let Some((node, children)) = stack.pop() {
         let mut cursor = node.walk();
-        for child in node.named_children(&mut cursor) {
-            if child.kind() == "label" {
+        let children = match children {
+            Some(c) => c,
+            None => node.named_children(&mut cursor).collect(),
+        };
+        for child in children {
+            let kind = kind_of(child);
+            if kind == "label" {
                 if let Some(name) = field(child, "name") {
                     found.push((cx.node_text(name).to_owned(), name.byte_range(), node.id()));
                 }
-            } else if !child.kind().ends_with("expression") && child.kind() != "argument_list" {
-                stack.push(child);
+            } else if !kind.ends_with("expression")
+                && kind != "argument_list"
+                && (child.has_error() || !cannot_hold_label(kind))
+            {
+                stack.push((child, None));
             }
         }
     }
@@ -64,17 +76,37 @@ pub(super) fn collect_labels(cx: &mut Cx<'_>, routine: Node<'_>) {
     }
 }
 
+/// Nodes of these kinds hold no statement list, so (when they parsed
+/// without error) no label: the label walk skips them.
+fn cannot_hold_label(kind: &str) -> bool {
+    matches!(
+        kind,
+        "assignment"
+            | "procedure_call"
+            | "comment"
+            | "compact_if_statement"
+            | "goto_statement"
+            | "return_statement"
+            | "raise_statement"
+            | "exit_statement"
+            | "retry_statement"
+            | "trynext_statement"
+            | "connect_statement"
+            | "data_declaration"
+    )
+}
+
 /// Checks a statement list, and reports the statements no path reaches.
 pub(super) fn check_block<'t>(cx: &mut Cx<'t>, statements: &[Node<'t>]) {
     let mut ended_by: Option<&str> = None;
     for (i, s) in statements.iter().enumerate() {
-        if s.kind() == "label" {
+        if kind_of(*s) == "label" {
             ended_by = None;
         } else if let Some(by) = ended_by.take() {
             let end = statements
                 .iter()
                 .skip(i)
-                .take_while(|n| n.kind() != "label")
+                .take_while(|n| kind_of(**n) != "label")
                 .last()
                 .map_or(s.end_byte(), |n| n.end_byte());
             cx.report(
@@ -92,7 +124,7 @@ pub(super) fn check_block<'t>(cx: &mut Cx<'t>, statements: &[Node<'t>]) {
 
 /// The keyword of a statement that always leaves its statement list.
 fn leaves_list(s: Node<'_>) -> Option<&'static str> {
-    Some(match s.kind() {
+    Some(match kind_of(s) {
         "return_statement" => "RETURN",
         "exit_statement" => "EXIT",
         "raise_statement" => "RAISE",
@@ -104,13 +136,16 @@ fn leaves_list(s: Node<'_>) -> Option<&'static str> {
 }
 
 fn check_statement<'t>(cx: &mut Cx<'t>, s: Node<'t>) {
-    // Simple statements go through the statement cache (an edit elsewhere in
-    // the routine does not check them again); compound ones check their
-    // parts, whose simple statements are cached in turn.
-    if matches!(s.kind(), "assignment" | "procedure_call") {
+    // Statements go through the statement cache (an edit elsewhere in the
+    // routine does not check them again). Simple ones always; compound ones
+    // whole when no GOTO inside depends on the routine's labels (which the
+    // cache key leaves out), else part by part, their simple statements
+    // cached in turn.
+    let kind = kind_of(s);
+    if matches!(kind, "assignment" | "procedure_call") {
         cx.cached_statement(s, |cx| {
             crate::consteval::check_constant_errors(cx, s);
-            if s.kind() == "assignment" {
+            if kind == "assignment" {
                 assignment(cx, s);
             } else {
                 calls::procedure_call(cx, s);
@@ -118,8 +153,33 @@ fn check_statement<'t>(cx: &mut Cx<'t>, s: Node<'t>) {
         });
         return;
     }
+    if matches!(
+        kind,
+        "if_statement"
+            | "compact_if_statement"
+            | "for_statement"
+            | "while_statement"
+            | "test_statement"
+    ) && !s.has_error()
+        && !mentions_goto(cx.node_text(s))
+    {
+        cx.cached_statement(s, |cx| check_uncached(cx, s));
+        return;
+    }
+    check_uncached(cx, s);
+}
+
+/// Could this text hold a GOTO statement? (Any `goto` in any case, comments
+/// and strings included.)
+fn mentions_goto(text: &str) -> bool {
+    text.as_bytes()
+        .windows(4)
+        .any(|w| w.eq_ignore_ascii_case(b"goto"))
+}
+
+fn check_uncached<'t>(cx: &mut Cx<'t>, s: Node<'t>) {
     crate::consteval::check_constant_errors(cx, s);
-    match s.kind() {
+    match kind_of(s) {
         "if_statement" => {
             if let Some(c) = field(s, "condition") {
                 exprs::condition(cx, c);
