@@ -205,10 +205,19 @@ impl Backend {
                     return None;
                 }
                 let uri = s.docs.get(&path)?.uri.clone();
-                s.snapshot(&uri)
+                let snap = s.snapshot(&uri)?;
+                // Taken, not shared: a check still running for an older
+                // text finds none and starts afresh.
+                let statements = s
+                    .statements
+                    .remove(&path)
+                    .filter(|(generation, _)| *generation == snap.config_generation)
+                    .map(|(_, cache)| cache)
+                    .unwrap_or_default();
+                Some((snap, statements))
             })
             .flatten();
-        let Some(snap) = snap else {
+        let Some((snap, statements)) = snap else {
             return;
         };
         // Two phases, as the text changed: at once, the new syntax
@@ -231,11 +240,11 @@ impl Backend {
                     .await;
             }
         }
-        let Ok((snap, raw, converted)) = self
+        let Ok((snap, raw, statements, converted)) = self
             .blocking("computing diagnostics", move || {
-                let raw = snap.diagnostics();
+                let (raw, statements) = snap.diagnostics_reusing(statements);
                 let converted = convert_diagnostics(&snap, &raw);
-                (snap, raw, converted)
+                (snap, raw, statements, converted)
             })
             .await
         else {
@@ -245,6 +254,10 @@ impl Backend {
         let send = self
             .mutate("publishing diagnostics", |s| {
                 s.cache_diagnostics(&snap, raw);
+                if s.docs.contains_key(&snap.path) {
+                    s.statements
+                        .insert(snap.path.clone(), (snap.config_generation, statements));
+                }
                 current(s)
             })
             .unwrap_or(false);
@@ -818,6 +831,7 @@ impl LanguageServer for Backend {
                 let doc = s.docs.remove(&path)?;
                 s.semantic.remove(&path);
                 s.diagnostics.remove(&path);
+                s.statements.remove(&path);
                 let before = doc.unit.interface;
                 // The file goes back to its state on disk.
                 let p = PathBuf::from(&path);

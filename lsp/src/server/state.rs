@@ -6,10 +6,11 @@ use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex, MutexGuard, PoisonError};
 
+use rapid_analyzer::check::StmtCache;
 use rapid_analyzer::diagnostic::Diagnostic;
 use rapid_analyzer::task::{Task, Unit, task_key};
 use rapid_analyzer::text::LineIndex;
-use rapid_analyzer::workspace::{Workspace, diagnostics_of};
+use rapid_analyzer::workspace::{Workspace, diagnostics_cached, diagnostics_of};
 use tower_lsp_server::ls_types::{Location, Uri};
 
 use super::document::Document;
@@ -51,6 +52,12 @@ pub struct State {
     /// cached diagnostics are recomputed.
     pub config_generation: u64,
     pub diagnostics: HashMap<String, CachedDiagnostics>,
+    /// Per open document, the statement results of its last check with the
+    /// configuration generation they were computed under, so the next check
+    /// after an edit re-checks only the statements it changed. (Statement
+    /// results depend on the controller configuration, signals and
+    /// mechanical units, which their cache keys do not cover.)
+    pub statements: HashMap<String, (u64, StmtCache)>,
     /// The last semantic tokens sent per document, for deltas.
     pub semantic: HashMap<String, (String, Arc<Vec<u32>>)>,
     pub next_id: u64,
@@ -172,6 +179,19 @@ impl Snapshot {
         match &self.cached {
             Some(d) => d.clone(),
             None => Arc::new(diagnostics_of(&self.task, &self.unit)),
+        }
+    }
+
+    /// [`Snapshot::diagnostics`], reusing the statement results of an
+    /// earlier check of the file (`statements`); returns them for the next
+    /// check.
+    pub fn diagnostics_reusing(&self, statements: StmtCache) -> (Arc<Vec<Diagnostic>>, StmtCache) {
+        match &self.cached {
+            Some(d) => (d.clone(), statements),
+            None => {
+                let (d, next) = diagnostics_cached(&self.task, &self.unit, statements);
+                (Arc::new(d), next)
+            }
         }
     }
 }
