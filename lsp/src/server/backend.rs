@@ -766,7 +766,7 @@ impl LanguageServer for Backend {
             let encoding = s.encoding;
             let doc = s.docs.get(&path)?;
             let old_interface = doc.unit.interface;
-            let unit = apply_changes(&doc.unit, &params.content_changes, encoding);
+            let unit = apply_changes(&doc.unit, &doc.index, &params.content_changes, encoding);
             let changed = unit.interface != old_interface;
             s.ws.set_unit(unit);
             let unit = s.ws.unit(&path)?.clone();

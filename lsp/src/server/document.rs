@@ -28,23 +28,30 @@ pub struct Document {
 }
 
 /// Applies `changes` to `unit`'s text and tree; returns the new unit.
+/// `index` is the line index of `unit`'s text (the first change's range is
+/// converted with it; later ones with an index of the text as it is then).
 pub fn apply_changes(
     unit: &Unit,
+    index: &LineIndex,
     changes: &[TextDocumentContentChangeEvent],
     encoding: PosEncoding,
 ) -> Unit {
     let mut text = unit.text.clone();
     let mut tree: Option<Tree> = Some(unit.tree.clone());
-    let mut index: Option<LineIndex> = None;
+    // `None`: `index` still describes `text`.
+    let mut fresh: Option<Option<LineIndex>> = None;
     for change in changes {
         match change.range {
             None => {
                 text.clone_from(&change.text);
                 tree = None;
-                index = None;
+                fresh = Some(None);
             }
             Some(range) => {
-                let idx = index.get_or_insert_with(|| LineIndex::new(&text));
+                let idx = match &mut fresh {
+                    None => index,
+                    Some(fresh) => &*fresh.get_or_insert_with(|| LineIndex::new(&text)),
+                };
                 let span = LineMap::new(&text, idx, encoding).offset_range(range);
                 let start_point = point_at(&text, span.start);
                 let old_end_point = point_at(&text, span.end);
@@ -60,7 +67,7 @@ pub fn apply_changes(
                         new_end_position: point_at(&text, new_end),
                     });
                 }
-                index = None;
+                fresh = Some(None);
             }
         }
     }
@@ -114,7 +121,8 @@ mod tests {
     /// Incremental reparse gives the same tree as a fresh parse.
     fn check(before: &str, changes: &[TextDocumentContentChangeEvent], after: &str) {
         let unit = Unit::new("t/A.mod".into(), before.to_owned(), None);
-        let edited = apply_changes(&unit, changes, PosEncoding::Utf16);
+        let index = LineIndex::new(&unit.text);
+        let edited = apply_changes(&unit, &index, changes, PosEncoding::Utf16);
         assert_eq!(edited.text, after);
         let fresh = Unit::new("t/A.mod".into(), after.to_owned(), None);
         assert_eq!(
