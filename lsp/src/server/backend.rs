@@ -309,37 +309,38 @@ impl Backend {
         } else {
             None
         };
+        // One parallel pass over every file, largest first (so that a large
+        // file does not start last and leave a core idle); each unit goes
+        // into the workspace as soon as it is parsed, and progress is
+        // reported from here meanwhile.
         let total = found.files.len().max(1);
-        let mut done = 0;
-        let mut problems = Vec::new();
-        for chunk in found.files.chunks(64) {
-            let chunk = chunk.to_vec();
-            let Ok(read) = self
-                .blocking("reading files", move || read_units(&chunk))
-                .await
-            else {
-                continue;
-            };
-            done += read.len();
-            self.mutate("indexing", |s| {
-                for (path, result) in read {
-                    match result {
-                        Ok(unit) => {
-                            if !s.docs.contains_key(&unit.path) {
-                                s.disk
-                                    .insert(path, super::state::mtime(Path::new(&unit.path)));
-                                s.ws.set_unit(unit);
-                            }
-                        }
-                        Err(why) => problems.push(format!("{}: {why}", path.display())),
+        let done = Arc::new(std::sync::atomic::AtomicUsize::new(0));
+        let mut files = found.files.clone();
+        files
+            .sort_by_cached_key(|p| std::cmp::Reverse(std::fs::metadata(p).map_or(0, |m| m.len())));
+        let reading = {
+            let shared = self.shared.clone();
+            let done = done.clone();
+            self.blocking("reading files", move || read_units(&files, &shared, &done))
+        };
+        tokio::pin!(reading);
+        let mut problems = loop {
+            tokio::select! {
+                read = &mut reading => break read.unwrap_or_default(),
+                () = tokio::time::sleep(Duration::from_millis(100)) => {
+                    if let Some(p) = &progress {
+                        let done = done.load(Ordering::Relaxed);
+                        let pct = u32::try_from(done * 100 / total).unwrap_or(100);
+                        p.report_with_message(format!("{done}/{total} files"), pct)
+                            .await;
                     }
                 }
-            });
-            if let Some(p) = &progress {
-                let pct = u32::try_from(done * 100 / total).unwrap_or(100);
-                p.report_with_message(format!("{done}/{total} files"), pct)
-                    .await;
             }
+        };
+        if let Some(p) = &progress {
+            let done = done.load(Ordering::Relaxed);
+            p.report_with_message(format!("{done}/{total} files"), 100)
+                .await;
         }
         self.mutate("indexing", |s| {
             for program in &found.programs {
@@ -472,19 +473,36 @@ impl Backend {
     }
 }
 
+/// Reads and parses `files` in parallel into the workspace (files open in
+/// the editor keep the editor's text), counting them in `done`; returns the
+/// files that could not be read, with why.
 fn read_units(
     files: &[PathBuf],
-) -> Vec<(
-    PathBuf,
-    std::result::Result<rapid_analyzer::task::Unit, crate::source::Unreadable>,
-)> {
+    shared: &Shared,
+    done: &std::sync::atomic::AtomicUsize,
+) -> Vec<String> {
     use rayon::prelude::*;
     files
         .par_iter()
-        .map(|p| {
-            let unit = crate::source::SourceFile::read(p)
+        .filter_map(|p| {
+            let read = crate::source::SourceFile::read(p)
                 .map(|f| closed_unit(p.to_string_lossy().into_owned(), f.text));
-            (p.clone(), unit)
+            let mtime = super::state::mtime(p);
+            let problem = {
+                let mut s = shared.lock();
+                match read {
+                    Ok(unit) => {
+                        if !s.docs.contains_key(&unit.path) {
+                            s.disk.insert(p.clone(), mtime);
+                            s.ws.set_unit(unit);
+                        }
+                        None
+                    }
+                    Err(why) => Some(format!("{}: {why}", p.display())),
+                }
+            };
+            done.fetch_add(1, Ordering::Relaxed);
+            problem
         })
         .collect()
 }
