@@ -208,6 +208,18 @@ pub(crate) struct Cx<'t> {
     pub(crate) recording: Option<Vec<Used>>,
     /// A hash of the current routine's header and declarations.
     pub(crate) routine_fingerprint: u64,
+    /// The last context [`Cx::statement_key`] hashed.
+    statement_context: Option<StatementContext>,
+}
+
+/// What a statement's cache key holds besides its text (the task's interface
+/// and constants are fixed for a check), and its hash.
+struct StatementContext {
+    fingerprint: u64,
+    in_error_handler: bool,
+    for_vars: Vec<String>,
+    module: Option<usize>,
+    hash: u64,
 }
 
 /// A use of a declaration, for the unused-symbol lints.
@@ -235,6 +247,7 @@ impl<'t> Cx<'t> {
             cache_enabled: false,
             recording: None,
             routine_fingerprint: 0,
+            statement_context: None,
         }
     }
 
@@ -341,17 +354,42 @@ impl<'t> Cx<'t> {
     /// The cache key of a statement: its text and everything around it that
     /// its check reads (routine declarations, handler, FOR variables, module,
     /// the task's interface and constants).
-    fn statement_key(&self, s: Node<'_>) -> Option<u64> {
+    fn statement_key(&mut self, s: Node<'_>) -> Option<u64> {
         use std::hash::{Hash, Hasher};
         let r = self.routine.as_ref()?;
+        let module = self.module_idx();
+        // The context changes rarely: hash it once per change.
+        let context = match &self.statement_context {
+            Some(c)
+                if c.fingerprint == self.routine_fingerprint
+                    && c.in_error_handler == r.in_error_handler
+                    && c.module == module
+                    && c.for_vars == r.for_vars =>
+            {
+                c.hash
+            }
+            _ => {
+                let mut h = std::hash::DefaultHasher::new();
+                self.routine_fingerprint.hash(&mut h);
+                r.in_error_handler.hash(&mut h);
+                r.for_vars.hash(&mut h);
+                module.hash(&mut h);
+                self.task.interface.hash(&mut h);
+                self.task.constants.hash(&mut h);
+                let hash = h.finish();
+                self.statement_context = Some(StatementContext {
+                    fingerprint: self.routine_fingerprint,
+                    in_error_handler: r.in_error_handler,
+                    for_vars: r.for_vars.clone(),
+                    module,
+                    hash,
+                });
+                hash
+            }
+        };
         let mut h = std::hash::DefaultHasher::new();
+        context.hash(&mut h);
         self.node_text(s).hash(&mut h);
-        self.routine_fingerprint.hash(&mut h);
-        r.in_error_handler.hash(&mut h);
-        r.for_vars.hash(&mut h);
-        self.module_idx().hash(&mut h);
-        self.task.interface.hash(&mut h);
-        self.task.constants.hash(&mut h);
         Some(h.finish())
     }
 

@@ -13,14 +13,21 @@ use crate::ty::Ty;
 /// Collects the labels of the routine being checked, with the statement
 /// list that holds each; `named` are the routine's named children.
 pub(super) fn collect_labels<'t>(cx: &mut Cx<'_>, routine: Node<'t>, named: Vec<Node<'t>>) {
-    // A label is `name:`; a routine without a `:` other than in `:=` has none
-    // (a cheap look at the text spares the walk of long generated routines).
+    // A label is `name:`; a routine without a `:` other than in `:=` or in a
+    // comment has none (a cheap look at the text spares the walk of long
+    // generated routines).
     let text = cx.text.get(routine.byte_range()).unwrap_or_default();
     let mut from = 0;
     let has_colon = loop {
         match text.get(from..).and_then(|t| t.find(':')) {
-            Some(i) if text.as_bytes().get(from + i + 1) == Some(&b'=') => from += i + 1,
-            Some(_) => break true,
+            Some(i) => {
+                let at = from + i;
+                from = at + 1;
+                if text.as_bytes().get(at + 1) == Some(&b'=') || in_comment(text, at) {
+                    continue;
+                }
+                break true;
+            }
             None => break false,
         }
     };
@@ -74,6 +81,15 @@ pub(super) fn collect_labels<'t>(cx: &mut Cx<'_>, routine: Node<'t>, named: Vec<
         });
         cx.report_with(d);
     }
+}
+
+/// Is byte `at` of `text` certainly inside a comment: after a `!` on its
+/// line, with no quote before it on the line (which could open a string that
+/// holds the `!`)?
+fn in_comment(text: &str, at: usize) -> bool {
+    let line = text.get(..at).unwrap_or_default();
+    let line = line.rfind(['\n', '\r']).map_or(line, |i| &line[i + 1..]);
+    line.contains('!') && !line.contains('"')
 }
 
 /// Nodes of these kinds hold no statement list, so (when they parsed
