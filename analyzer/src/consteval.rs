@@ -561,7 +561,7 @@ fn expression_at(unit: &Unit, range: Range<usize>) -> Option<Node<'_>> {
     path_to(unit.tree.root_node(), range.clone())
         .into_iter()
         .map(|(n, _)| n)
-        .find(|n| n.byte_range() == range && is_expression(n.kind()))
+        .find(|n| n.byte_range() == range && is_expression(crate::syntax_util::kind(*n)))
 }
 
 /// A node with the field of its parent that holds it.
@@ -681,14 +681,16 @@ pub fn value_at(task: &Task, unit: usize, offset: usize) -> Option<ConstValue> {
     let mut start = root.named_descendant_for_byte_range(offset, offset)?;
     // A cursor just after a name or a closing bracket means that expression
     // (as editors place it after the last character typed).
-    let on_token = matches!(start.kind(), "identifier" | "number" | "string" | "boolean")
-        && start.start_byte() <= offset
+    let on_token = matches!(
+        crate::syntax_util::kind(start),
+        "identifier" | "number" | "string" | "boolean"
+    ) && start.start_byte() <= offset
         && offset < start.end_byte();
     if !on_token
         && offset > 0
         && let Some(left) = root.named_descendant_for_byte_range(offset - 1, offset - 1)
         && left.end_byte() == offset
-        && is_expression(left.kind())
+        && is_expression(crate::syntax_util::kind(left))
     {
         start = left;
     }
@@ -703,7 +705,7 @@ pub fn value_at(task: &Task, unit: usize, offset: usize) -> Option<ConstValue> {
         let mut typing = Cx::at(task, unit, offset);
         let mut tried = 0;
         while let Some((n, field)) = path.last().copied() {
-            if is_expression(n.kind()) {
+            if is_expression(crate::syntax_util::kind(n)) {
                 // Each try evaluates the whole expression: stop climbing
                 // through absurdly deep nesting.
                 tried += 1;
@@ -715,7 +717,7 @@ pub fn value_at(task: &Task, unit: usize, offset: usize) -> Option<ConstValue> {
                 {
                     return Some(v);
                 }
-            } else if !matches!(n.kind(), "argument" | "argument_list") {
+            } else if !matches!(crate::syntax_util::kind(n), "argument" | "argument_list") {
                 return None;
             }
             path.pop();
@@ -733,9 +735,9 @@ pub fn value_of_range(task: &Task, unit: usize, range: Range<usize>) -> Option<C
     let start = range.start + (text.len() - text.trim_start().len());
     let end = range.end - (text.len() - text.trim_end().len());
     let mut path = path_to(u.tree.root_node(), start..end);
-    let at = path
-        .iter()
-        .position(|(n, _)| n.byte_range() == (start..end) && is_expression(n.kind()))?;
+    let at = path.iter().position(|(n, _)| {
+        n.byte_range() == (start..end) && is_expression(crate::syntax_util::kind(*n))
+    })?;
     path.truncate(at + 1);
     let (node, field) = *path.last()?;
     if field.is_some_and(|f| NOT_VALUES.contains(&f)) {
@@ -764,8 +766,10 @@ fn value_of_node<'t>(
     let (node, _) = *path.last()?;
     let v = evaluate_node(task, unit, path, env, typing, options)?;
     let text = task.units.get(unit).map_or("", |u| text_of(node, &u.text));
-    if matches!(node.kind(), "number" | "string" | "boolean")
-        && v.error.is_none()
+    if matches!(
+        crate::syntax_util::kind(node),
+        "number" | "string" | "boolean"
+    ) && v.error.is_none()
         && v.value.eq_ignore_ascii_case(text)
     {
         return None;
@@ -914,7 +918,7 @@ fn expected_type_at<'t>(
     };
     let (parent, node) = (*parent, *node);
     let outer = &path[..path.len() - 1];
-    match (parent.kind(), (*field)?) {
+    match (crate::syntax_util::kind(parent), (*field)?) {
         ("parenthesized_expression", _) | ("unary_expression", _) => {
             expected_type_at(cx, outer, env, depth + 1)
         }
@@ -1000,8 +1004,8 @@ fn argument_type<'t>(
     list: Node<'t>,
     arg: Node<'t>,
 ) -> Option<Type> {
-    let name = field(call, "name").filter(|n| n.kind() == "identifier")?;
-    let want_function = call.kind() == "function_call";
+    let name = field(call, "name").filter(|n| crate::syntax_util::kind(*n) == "identifier")?;
+    let want_function = crate::syntax_util::kind(call) == "function_call";
     let sym = cx.resolve_routine(text_of(name, cx.text), want_function)?;
     // (name, type, dims, required)
     let params: Vec<(String, String, u8, bool)> = match sym {
@@ -1189,12 +1193,15 @@ fn scan<'t>(cx: &mut Cx<'t>, path: &mut Vec<Step<'t>>, found: &mut Vec<Vec<Step<
         let f = cursor.field_name();
         let mut descend = false;
         if child.is_named()
-            && !is_statement_like(child.kind())
+            && !is_statement_like(crate::syntax_util::kind(child))
             && !f.is_some_and(|f| NOT_VALUES.contains(&f))
         {
             path.push((child, f));
-            if is_expression(child.kind()) {
-                if has_operation(child) {
+            if is_expression(crate::syntax_util::kind(child)) {
+                // Aggregates of number literals (most robtargets) hold no
+                // operation: their text says so without a walk.
+                if !crate::syntax_util::is_literal_aggregate(child, cx.text) && has_operation(child)
+                {
                     let s = shape(cx, path, found, 0);
                     if s.constant && s.operation {
                         found.push(path.clone());
@@ -1233,9 +1240,9 @@ fn has_operation(node: Node<'_>) -> bool {
     loop {
         let n = cursor.node();
         if matches!(
-            n.kind(),
+            crate::syntax_util::kind(n),
             "binary_expression" | "function_call" | "index_expression"
-        ) || (n.kind() == "unary_expression" && !is_signed_number(n))
+        ) || (crate::syntax_util::kind(n) == "unary_expression" && !is_signed_number(n))
         {
             return true;
         }
@@ -1258,9 +1265,9 @@ fn has_operation(node: Node<'_>) -> bool {
 
 /// `-1`, `+2.5`: a sign on a number literal.
 fn is_signed_number(node: Node<'_>) -> bool {
-    node.kind() == "unary_expression"
-        && field(node, "operand").is_some_and(|o| o.kind() == "number")
-        && field(node, "operator").is_some_and(|o| o.kind() != "not")
+    crate::syntax_util::kind(node) == "unary_expression"
+        && field(node, "operand").is_some_and(|o| crate::syntax_util::kind(o) == "number")
+        && field(node, "operator").is_some_and(|o| crate::syntax_util::kind(o) != "not")
 }
 
 #[derive(Clone, Copy)]
@@ -1288,7 +1295,7 @@ fn shape<'t>(
     if depth > crate::lower::MAX_DEPTH || node.has_error() {
         return NOT;
     }
-    let (mut constant, operation) = match node.kind() {
+    let (mut constant, operation) = match crate::syntax_util::kind(node) {
         "number" | "string" | "boolean" => {
             return Shape {
                 constant: true,
@@ -1326,18 +1333,18 @@ fn shape<'t>(
         if !child.is_named() || f.is_some_and(|f| NOT_VALUES.contains(&f)) {
             continue;
         }
-        if is_expression(child.kind()) {
+        if is_expression(crate::syntax_util::kind(child)) {
             parts.push(vec![(child, f)]);
-        } else if child.kind() == "argument_list" {
+        } else if crate::syntax_util::kind(child) == "argument_list" {
             for (arg, af) in children_with_fields(child) {
-                if arg.kind() != "argument" {
+                if crate::syntax_util::kind(arg) != "argument" {
                     continue;
                 }
                 if field(arg, "conditional").is_some() {
                     constant = false;
                 }
                 match field(arg, "value") {
-                    Some(v) if is_expression(v.kind()) => {
+                    Some(v) if is_expression(crate::syntax_util::kind(v)) => {
                         parts.push(vec![(child, f), (arg, af), (v, Some("value"))]);
                     }
                     Some(_) => constant = false,
@@ -1345,7 +1352,7 @@ fn shape<'t>(
                     None => constant = false,
                 }
             }
-        } else if child.kind() != "comment" {
+        } else if crate::syntax_util::kind(child) != "comment" {
             constant = false;
         }
     }
@@ -1397,7 +1404,7 @@ fn names_in(node: Node<'_>) -> Vec<Node<'_>> {
         if f.is_some_and(|f| NOT_VALUES.contains(&f)) {
             continue;
         }
-        if n.kind() == "identifier" {
+        if crate::syntax_util::kind(n) == "identifier" {
             out.push(n);
             continue;
         }

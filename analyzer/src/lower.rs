@@ -62,14 +62,14 @@ impl Lowering<'_> {
         }
         let depth = depth + 1;
         let text = text_of(node, self.text);
-        match node.kind() {
+        match crate::syntax_util::kind(node) {
             "number" => Expr::Num(text.to_owned()),
             "string" => Expr::Str(text.to_owned()),
             "boolean" => Expr::Bool(has_token(node, "true")),
             "identifier" => Expr::Name(text.to_owned()),
             "parenthesized_expression" => self.child(node, "expression", depth),
             "unary_expression" => {
-                let op = match field(node, "operator").map(|o| o.kind()) {
+                let op = match field(node, "operator").map(|o| crate::syntax_util::kind(o)) {
                     Some("-") => UnOp::Neg,
                     Some("+") => UnOp::Plus,
                     Some("not") => UnOp::Not,
@@ -78,7 +78,9 @@ impl Lowering<'_> {
                 Expr::Unary(op, Box::new(self.child(node, "operand", depth)))
             }
             "binary_expression" => {
-                let Some(op) = field(node, "operator").and_then(|o| binary_op(o.kind())) else {
+                let Some(op) =
+                    field(node, "operator").and_then(|o| binary_op(crate::syntax_util::kind(o)))
+                else {
                     return Expr::Unknown;
                 };
                 Expr::Binary(
@@ -89,10 +91,12 @@ impl Lowering<'_> {
             }
             "function_call" => self.call(node, depth),
             "component_access" => match field(node, "component") {
-                Some(c) if c.kind() == "identifier" && !c.is_missing() => Expr::Component(
-                    Box::new(self.child(node, "object", depth)),
-                    text_of(c, self.text).to_owned(),
-                ),
+                Some(c) if crate::syntax_util::kind(c) == "identifier" && !c.is_missing() => {
+                    Expr::Component(
+                        Box::new(self.child(node, "object", depth)),
+                        text_of(c, self.text).to_owned(),
+                    )
+                }
                 _ => Expr::Unknown,
             },
             "index_expression" => {
@@ -124,7 +128,9 @@ impl Lowering<'_> {
     }
 
     fn call(&self, node: Node<'_>, depth: u32) -> Expr {
-        let Some(name) = field(node, "name").filter(|n| n.kind() == "identifier") else {
+        let Some(name) =
+            field(node, "name").filter(|n| crate::syntax_util::kind(*n) == "identifier")
+        else {
             return Expr::Unknown;
         };
         let name = text_of(name, self.text);
@@ -135,7 +141,7 @@ impl Lowering<'_> {
         if let Some(list) = field(node, "arguments") {
             for a in fields(list, "argument") {
                 let arg_name = field(a, "name").map(|n| {
-                    if n.kind() == "identifier" {
+                    if crate::syntax_util::kind(n) == "identifier" {
                         text_of(n, self.text).to_owned()
                     } else {
                         String::new()
@@ -333,7 +339,7 @@ mod tests {
             .expect("a node");
         let mut node = node;
         while let Some(p) = node.parent() {
-            if p.kind() != "parenthesized_expression" {
+            if crate::syntax_util::kind(p) != "parenthesized_expression" {
                 break;
             }
             node = p;

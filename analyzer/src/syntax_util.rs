@@ -55,6 +55,164 @@ pub fn is_placeholder(node: Node<'_>) -> bool {
     node.kind() == "placeholder"
 }
 
+/// A literal aggregate read from the source text: `[...]` nesting number
+/// literals (each optionally signed: `-1`, `+ 2.5`), plain strings and
+/// booleans, as the robtargets and data tables that fill real programs are
+/// written. Checking it from the text spares walking its many tree nodes.
+/// Byte ranges are those of the tree's nodes.
+#[derive(Debug)]
+pub enum Literal {
+    /// A number literal or a signed one (a `unary_expression`).
+    Number(std::ops::Range<usize>),
+    /// A string literal without escape sequences.
+    String(std::ops::Range<usize>),
+    /// `TRUE` or `FALSE`.
+    Boolean(std::ops::Range<usize>),
+    /// A nested aggregate.
+    Aggregate(std::ops::Range<usize>, Vec<Literal>),
+}
+
+/// How deep literal aggregates are read from the text; deeper ones take the
+/// tree's way.
+const MAX_LITERAL_DEPTH: usize = 16;
+
+/// Reads the aggregate `node` as a [`Literal`] when its text holds nothing
+/// but brackets, commas, blanks and literals; `None` otherwise (names,
+/// operations, comments, escape sequences, anything unusual), and for nodes
+/// with syntax errors.
+pub fn literal_aggregate(node: Node<'_>, text: &str) -> Option<Literal> {
+    let range = node.byte_range();
+    if range.end > text.len() || node.has_error() {
+        return None;
+    }
+    let mut at = range.start;
+    let lit = read_aggregate(text.as_bytes(), &mut at, 0)?;
+    (at == range.end).then_some(lit)
+}
+
+/// Is `node` an aggregate made only of literals (see [`literal_aggregate`])?
+pub fn is_literal_aggregate(node: Node<'_>, text: &str) -> bool {
+    node.kind_id() == kinds().aggregate && literal_aggregate(node, text).is_some()
+}
+
+fn skip_blanks(bytes: &[u8], at: &mut usize) {
+    while bytes
+        .get(*at)
+        .is_some_and(|b| matches!(b, b' ' | b'\t' | b'\r' | b'\n'))
+    {
+        *at += 1;
+    }
+}
+
+fn read_aggregate(bytes: &[u8], at: &mut usize, depth: usize) -> Option<Literal> {
+    if depth > MAX_LITERAL_DEPTH || bytes.get(*at) != Some(&b'[') {
+        return None;
+    }
+    let start = *at;
+    *at += 1;
+    let mut elements = Vec::new();
+    loop {
+        skip_blanks(bytes, at);
+        let element = match bytes.get(*at)? {
+            b'[' => read_aggregate(bytes, at, depth + 1)?,
+            b'"' => read_string(bytes, at)?,
+            b't' | b'T' | b'f' | b'F' => read_boolean(bytes, at)?,
+            _ => read_number(bytes, at)?,
+        };
+        elements.push(element);
+        skip_blanks(bytes, at);
+        match bytes.get(*at)? {
+            b',' => *at += 1,
+            b']' => {
+                *at += 1;
+                return Some(Literal::Aggregate(start..*at, elements));
+            }
+            _ => return None,
+        }
+    }
+}
+
+/// Does a name character follow (so that a token would run on)?
+fn runs_on(bytes: &[u8], at: usize) -> bool {
+    bytes
+        .get(at)
+        .is_some_and(|b| b.is_ascii_alphanumeric() || matches!(b, b'.' | b'_') || !b.is_ascii())
+}
+
+/// A number literal as the grammar's decimal form
+/// (`(\d+(\.\d*)?|\.\d+)([eE][+-]?\d+)?`), optionally after one sign.
+fn read_number(bytes: &[u8], at: &mut usize) -> Option<Literal> {
+    let start = *at;
+    if matches!(bytes.get(*at), Some(b'-' | b'+')) {
+        *at += 1;
+        skip_blanks(bytes, at);
+    }
+    let digits = |at: &mut usize| {
+        let from = *at;
+        while bytes.get(*at).is_some_and(u8::is_ascii_digit) {
+            *at += 1;
+        }
+        *at - from
+    };
+    let int = digits(at);
+    let frac = if bytes.get(*at) == Some(&b'.') {
+        *at += 1;
+        Some(digits(at))
+    } else {
+        None
+    };
+    if int == 0 && matches!(frac, None | Some(0)) {
+        return None;
+    }
+    if matches!(bytes.get(*at), Some(b'e' | b'E')) {
+        *at += 1;
+        if matches!(bytes.get(*at), Some(b'-' | b'+')) {
+            *at += 1;
+        }
+        if digits(at) == 0 {
+            return None;
+        }
+    }
+    if runs_on(bytes, *at) {
+        return None;
+    }
+    Some(Literal::Number(start..*at))
+}
+
+/// A string literal on one line without escape sequences (`""`, `\\`).
+fn read_string(bytes: &[u8], at: &mut usize) -> Option<Literal> {
+    let start = *at;
+    *at += 1;
+    loop {
+        match bytes.get(*at)? {
+            b'"' => {
+                *at += 1;
+                if bytes.get(*at) == Some(&b'"') {
+                    return None;
+                }
+                return Some(Literal::String(start..*at));
+            }
+            b'\\' | b'\r' | b'\n' => return None,
+            _ => *at += 1,
+        }
+    }
+}
+
+/// `TRUE` or `FALSE`, in any case.
+fn read_boolean(bytes: &[u8], at: &mut usize) -> Option<Literal> {
+    let start = *at;
+    let word = ["true", "false"].into_iter().find(|w| {
+        bytes
+            .get(start..start + w.len())
+            .is_some_and(|b| b.eq_ignore_ascii_case(w.as_bytes()))
+    })?;
+    *at += word.len();
+    if runs_on(bytes, *at) {
+        return None;
+    }
+    Some(Literal::Boolean(start..*at))
+}
+
 /// The node's kind, as [`Node::kind`] gives it, from a table built once
 /// (`Node::kind` checks the name's UTF-8 on every call, which shows in walks
 /// over long routines).
@@ -77,4 +235,20 @@ pub fn kind<'a>(node: Node<'a>) -> &'a str {
         // ERROR and the like are outside the table.
         _ => node.kind(),
     }
+}
+
+/// Node kind ids the hot paths compare with.
+pub struct Kinds {
+    pub aggregate: u16,
+}
+
+/// The ids of [`Kinds`], resolved once.
+pub fn kinds() -> &'static Kinds {
+    static KINDS: std::sync::OnceLock<Kinds> = std::sync::OnceLock::new();
+    KINDS.get_or_init(|| {
+        let language = crate::syntax::language();
+        Kinds {
+            aggregate: language.id_for_node_kind("aggregate", true),
+        }
+    })
 }

@@ -1,8 +1,10 @@
 //! Types as the checker sees them, and the table of every type a task knows:
 //! the catalogue's and the user's `RECORD` and `ALIAS` declarations.
 
+use std::cell::RefCell;
 use std::collections::HashMap;
 use std::fmt;
+use std::rc::Rc;
 
 use crate::catalogue::{Catalogue, TypeKind, ValueClass, catalogue};
 use crate::items::{AliasDecl, RecordDecl};
@@ -109,6 +111,16 @@ pub enum UserType<'a> {
 pub struct Types<'a> {
     user: HashMap<String, UserType<'a>>,
     catalogue: &'static Catalogue,
+    /// [`Types::components_shared`] and [`Types::accepts`] by type name
+    /// as spelt: aggregates ask the same few questions over and over.
+    memo: RefCell<Memo>,
+}
+
+#[derive(Default)]
+struct Memo {
+    components: HashMap<String, Option<Rc<[(String, Ty)]>>>,
+    /// By literal type: `num`, `string`, `bool`.
+    accepts: [HashMap<String, bool>; 3],
 }
 
 /// The semi-value signal types, read as numbers in expressions.
@@ -129,6 +141,7 @@ impl<'a> Types<'a> {
         Types {
             user: map,
             catalogue: catalogue(),
+            memo: RefCell::default(),
         }
     }
 
@@ -203,6 +216,42 @@ impl<'a> Types<'a> {
                 .map(|c| (c.name.clone(), Ty::named(&c.ty)))
                 .collect()
         })
+    }
+
+    /// [`Types::components`], shared and remembered per named type.
+    pub fn components_shared(&self, ty: &Ty) -> Option<Rc<[(String, Ty)]>> {
+        let Ty::Named(name) = ty else {
+            return self.components(ty).map(Rc::from);
+        };
+        if let Some(found) = self.memo.borrow().components.get(name.as_str()) {
+            return found.clone();
+        }
+        let found = self.components(ty).map(Rc::from);
+        self.memo
+            .borrow_mut()
+            .components
+            .insert(name.clone(), found.clone());
+        found
+    }
+
+    /// `self.assignable(ty, &Ty::named(value))`, remembered per named type:
+    /// may a literal of type `value` (`num`, `string`, `bool`) stand where
+    /// `ty` is expected?
+    pub fn accepts(&self, ty: &Ty, value: &'static str) -> bool {
+        let slot = match value {
+            "num" => 0,
+            "string" => 1,
+            _ => 2,
+        };
+        let Ty::Named(name) = ty else {
+            return self.assignable(ty, &Ty::named(value));
+        };
+        if let Some(found) = self.memo.borrow().accepts[slot].get(name.as_str()) {
+            return *found;
+        }
+        let found = self.assignable(ty, &Ty::named(value));
+        self.memo.borrow_mut().accepts[slot].insert(name.clone(), found);
+        found
     }
 
     /// The type of component `name` of a record type.

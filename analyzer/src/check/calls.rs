@@ -115,7 +115,7 @@ pub(super) fn procedure_call<'t>(cx: &mut Cx<'t>, node: Node<'t>) {
         return;
     };
     let args = field(node, "arguments");
-    if name_node.kind() == "late_binding" {
+    if crate::syntax_util::kind(name_node) == "late_binding" {
         if let Some(e) = field(name_node, "expression") {
             exprs::check_expected(cx, e, &Ty::string(), "a late-bound procedure name");
         }
@@ -227,7 +227,7 @@ fn check_args_unknown<'t>(cx: &mut Cx<'t>, args: Option<Node<'t>>) {
     };
     for arg in fields(args, "argument") {
         if let Some(v) = field(arg, "value")
-            && v.kind() != "star"
+            && crate::syntax_util::kind(v) != "star"
         {
             exprs::place_or_value(cx, v);
         }
@@ -239,7 +239,7 @@ fn check_args_unknown<'t>(cx: &mut Cx<'t>, args: Option<Node<'t>>) {
 
 fn conditional<'t>(cx: &mut Cx<'t>, c: Node<'t>) {
     let name = cx.node_text(c);
-    if c.kind() != "identifier" || cx.optional_param(name).is_none() {
+    if crate::syntax_util::kind(c) != "identifier" || cx.optional_param(name).is_none() {
         cx.report(
             &rules::conditional_argument::RULE,
             c.byte_range(),
@@ -248,7 +248,7 @@ fn conditional<'t>(cx: &mut Cx<'t>, c: Node<'t>) {
             ),
         );
     }
-    if c.kind() == "identifier" {
+    if crate::syntax_util::kind(c) == "identifier" {
         let _ = cx.resolve_data(name);
     }
 }
@@ -283,7 +283,7 @@ fn check_args<'t>(cx: &mut Cx<'t>, sig: &Sig, args: Option<Node<'t>>, call: Rang
                         ),
                     );
                     if let Some(v) = value
-                        && v.kind() != "star"
+                        && crate::syntax_util::kind(v) != "star"
                     {
                         exprs::place_or_value(cx, v);
                     }
@@ -312,7 +312,7 @@ fn check_args<'t>(cx: &mut Cx<'t>, sig: &Sig, args: Option<Node<'t>>, call: Rang
                         format!("`{}` has no parameter `{name}`; {hint}", sig.name),
                     );
                     if let Some(v) = value
-                        && v.kind() != "star"
+                        && crate::syntax_util::kind(v) != "star"
                     {
                         exprs::place_or_value(cx, v);
                     }
@@ -441,12 +441,12 @@ fn check_args<'t>(cx: &mut Cx<'t>, sig: &Sig, args: Option<Node<'t>>, call: Rang
 }
 
 fn check_value<'t>(cx: &mut Cx<'t>, p: &SigParam, v: Node<'t>) {
-    if v.kind() == "star" {
+    if crate::syntax_util::kind(v) == "star" {
         return;
     }
     let (actual, place) = match p.mode {
         Mode::In => {
-            if v.kind() == "aggregate" {
+            if crate::syntax_util::kind(v) == "aggregate" {
                 exprs::check_expected(cx, v, &p.ty, &format!("the argument {}", p.name));
                 return;
             }

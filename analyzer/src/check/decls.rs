@@ -60,7 +60,14 @@ pub(super) fn check_file_wide(cx: &mut Cx<'_>, root: Node<'_>) {
                 _ => {}
             }
         }
-        if descend && kind != string && cursor.goto_first_child() {
+        // Aggregates of literals without strings hold nothing to report
+        // here (most robtargets): not worth their walk.
+        if descend
+            && kind != string
+            && !(crate::syntax_util::is_literal_aggregate(node, cx.text)
+                && !cx.node_text(node).contains('"'))
+            && cursor.goto_first_child()
+        {
             continue;
         }
         descend = true;
@@ -108,7 +115,7 @@ fn may_hold_placeholder_or_long_string(text: &str) -> bool {
 fn string_length(cx: &Cx<'_>, node: Node<'_>) -> usize {
     let mut cursor = node.walk();
     node.named_children(&mut cursor)
-        .map(|c| match c.kind() {
+        .map(|c| match crate::syntax_util::kind(c) {
             "escape_sequence" => 1,
             _ => cx.node_text(c).chars().count(),
         })
@@ -567,7 +574,7 @@ fn missing_return_fix(cx: &Cx<'_>, node: Node<'_>, decl: &RoutineDecl) -> Option
     let mut cursor = node.walk();
     let end = node
         .children(&mut cursor)
-        .find(|c| !c.is_named() && c.kind() == "endfunc")?;
+        .find(|c| !c.is_named() && crate::syntax_util::kind(*c) == "endfunc")?;
     let line_start = line_start(cx.text, end.start_byte());
     let indent = cx.text.get(line_start..end.start_byte())?;
     if !indent.trim().is_empty() {

@@ -6,7 +6,7 @@ use tree_sitter::Node;
 use super::{Cx, Place, calls};
 use crate::names::fold;
 use crate::rules;
-use crate::syntax_util::{field, fields};
+use crate::syntax_util::{Literal, field, fields, literal_aggregate};
 use crate::ty::Ty;
 
 /// Functions whose results are real numbers, for the float-equality lint.
@@ -18,7 +18,7 @@ const REAL_FUNCTIONS: &[&str] = &[
 /// The type of an expression, reporting what is wrong inside it. `expected`
 /// gives aggregates their type and lets unknown signal names be recognised.
 pub(super) fn expr<'t>(cx: &mut Cx<'t>, node: Node<'t>, expected: Option<&Ty>) -> Ty {
-    match node.kind() {
+    match crate::syntax_util::kind(node) {
         "number" => Ty::num(),
         "string" => Ty::string(),
         "boolean" => Ty::bool(),
@@ -110,7 +110,7 @@ fn check_sized<'t>(
     sizes: &[Option<usize>],
     what: &str,
 ) {
-    if node.kind() == "aggregate" {
+    if crate::syntax_util::kind(node) == "aggregate" {
         aggregate(cx, node, expected, sizes);
         return;
     }
@@ -142,6 +142,10 @@ pub(super) fn a_type(ty: &Ty) -> String {
 /// An aggregate takes its type from the context: a record fixes its
 /// components, an array its elements.
 fn aggregate<'t>(cx: &mut Cx<'t>, node: Node<'t>, expected: &Ty, sizes: &[Option<usize>]) {
+    if let Some(Literal::Aggregate(range, elements)) = literal_aggregate(node, cx.text) {
+        literal_aggregate_check(cx, range, &elements, expected, sizes);
+        return;
+    }
     let elements = fields(node, "element");
     match expected {
         Ty::Array(elem, dims) => {
@@ -218,12 +222,135 @@ fn aggregate<'t>(cx: &mut Cx<'t>, node: Node<'t>, expected: &Ty, sizes: &[Option
     }
 }
 
+/// What an element of a literal aggregate is, for messages (built only when
+/// one is reported).
+#[derive(Clone, Copy)]
+enum What<'a> {
+    ArrayElement,
+    Component(&'a str),
+}
+
+impl std::fmt::Display for What<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            What::ArrayElement => f.write_str("an array element"),
+            What::Component("") => f.write_str("an element"),
+            What::Component(name) => write!(f, "component {name}"),
+        }
+    }
+}
+
+/// [`aggregate`] for an aggregate of literals read from the text: the same
+/// findings, without walking its nodes. A number literal (signed or not) is
+/// a `num`, a string a `string`, a boolean a `bool`; an element checked
+/// without an expected type reports nothing.
+fn literal_aggregate_check(
+    cx: &mut Cx<'_>,
+    range: std::ops::Range<usize>,
+    elements: &[Literal],
+    expected: &Ty,
+    sizes: &[Option<usize>],
+) {
+    match expected {
+        Ty::Array(elem, dims) => {
+            let inner = if *dims > 1 {
+                Ty::Array(elem.clone(), dims - 1)
+            } else {
+                (**elem).clone()
+            };
+            if let Some(Some(size)) = sizes.first()
+                && *size != elements.len()
+            {
+                cx.report(
+                    &rules::aggregate_arity::RULE,
+                    range,
+                    format!(
+                        "the array has {size} elements, this aggregate gives {}",
+                        elements.len()
+                    ),
+                );
+            }
+            let rest = sizes.get(1..).unwrap_or_default();
+            for e in elements {
+                literal_check(cx, e, &inner, rest, What::ArrayElement);
+            }
+        }
+        Ty::Named(name) if cx.types.exists(name) => {
+            let Some(components) = cx.types.components_shared(expected) else {
+                cx.report(
+                    &rules::type_mismatch::RULE,
+                    range,
+                    format!(
+                        "an aggregate [...] cannot be {}; it is not a record or an array",
+                        a_type(expected)
+                    ),
+                );
+                return;
+            };
+            if components.len() != elements.len() {
+                let names: Vec<&str> = components.iter().map(|(n, _)| n.as_str()).collect();
+                cx.report(
+                    &rules::aggregate_arity::RULE,
+                    range,
+                    format!(
+                        "{} has {} components ({}), this aggregate gives {}",
+                        expected,
+                        components.len(),
+                        names.join(", "),
+                        elements.len()
+                    ),
+                );
+            }
+            for (i, e) in elements.iter().enumerate() {
+                match components.get(i) {
+                    Some((name, ty)) => literal_check(cx, e, ty, &[], What::Component(name)),
+                    None => literal_check(cx, e, &Ty::Unknown, &[], What::Component("")),
+                }
+            }
+        }
+        _ => {}
+    }
+}
+
+/// [`check_sized`] for an element of a literal aggregate.
+fn literal_check(
+    cx: &mut Cx<'_>,
+    literal: &Literal,
+    expected: &Ty,
+    sizes: &[Option<usize>],
+    what: What<'_>,
+) {
+    match literal {
+        Literal::Aggregate(range, elements) => {
+            literal_aggregate_check(cx, range.clone(), elements, expected, sizes);
+        }
+        Literal::Number(range) | Literal::String(range) | Literal::Boolean(range) => {
+            let actual = match literal {
+                Literal::Number(_) => "num",
+                Literal::String(_) => "string",
+                _ => "bool",
+            };
+            if !cx.types.accepts(expected, actual) {
+                cx.report(
+                    &rules::type_mismatch::RULE,
+                    range.clone(),
+                    format!(
+                        "{what} should be {}, found {}",
+                        a_type(expected),
+                        a_type(&Ty::named(actual))
+                    ),
+                );
+            }
+        }
+    }
+}
+
 fn unary<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Ty {
     let Some(operand) = field(node, "operand") else {
         return Ty::Unknown;
     };
     let op = field(node, "operator")
-        .map(|o| o.kind())
+        .map(|o| crate::syntax_util::kind(o))
         .unwrap_or_default();
     let ty = expr(cx, operand, None);
     if ty.is_unknown() {
@@ -258,12 +385,15 @@ fn binary<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Ty {
     ) else {
         return Ty::Unknown;
     };
-    let op = op_node.kind();
+    let op = crate::syntax_util::kind(op_node);
     let is_comparison = matches!(op, "=" | "<>");
     // A bare unknown name compared with a number is most likely a signal.
     // An aggregate operand takes its type from the other operand when that
     // is a record (`p + [0, 0, 10]`), and is left unknown otherwise.
-    let (lt, rt) = match (l.kind() == "aggregate", r.kind() == "aggregate") {
+    let (lt, rt) = match (
+        crate::syntax_util::kind(l) == "aggregate",
+        crate::syntax_util::kind(r) == "aggregate",
+    ) {
         (true, false) => {
             let rt = operand(cx, r, l, is_comparison);
             (aggregate_operand(cx, l, &rt), rt)
@@ -387,8 +517,8 @@ fn known_side(a: &Ty, b: &Ty, t: &crate::ty::Types<'_>) -> Ty {
 /// taken for a signal.
 fn operand<'t>(cx: &mut Cx<'t>, node: Node<'t>, other: Node<'t>, comparison: bool) -> Ty {
     if comparison
-        && node.kind() == "identifier"
-        && matches!(other.kind(), "number" | "identifier")
+        && crate::syntax_util::kind(node) == "identifier"
+        && matches!(crate::syntax_util::kind(other), "number" | "identifier")
         && cx.task.signals.is_none()
     {
         let name = cx.node_text(node);
@@ -396,7 +526,7 @@ fn operand<'t>(cx: &mut Cx<'t>, node: Node<'t>, other: Node<'t>, comparison: boo
             && cx.resolve_routine(name, true).is_none()
             && cx.local_elsewhere(name).is_none()
         {
-            let other_is_level = other.kind() == "number"
+            let other_is_level = crate::syntax_util::kind(other) == "number"
                 || cx
                     .cat
                     .datum(cx.node_text(other))
@@ -412,13 +542,13 @@ fn operand<'t>(cx: &mut Cx<'t>, node: Node<'t>, other: Node<'t>, comparison: boo
 
 /// Is this expression a computed real number (for the float-equality lint)?
 fn is_real(cx: &Cx<'_>, node: Node<'_>) -> bool {
-    match node.kind() {
+    match crate::syntax_util::kind(node) {
         "number" => cx
             .node_text(node)
             .parse::<f64>()
             .is_ok_and(|v| v.fract() != 0.0),
         "binary_expression" => {
-            field(node, "operator").is_some_and(|o| o.kind() == "/")
+            field(node, "operator").is_some_and(|o| crate::syntax_util::kind(o) == "/")
                 || field(node, "left").is_some_and(|l| is_real(cx, l))
                 || field(node, "right").is_some_and(|r| is_real(cx, r))
         }
@@ -533,7 +663,7 @@ fn index<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> (Ty, Place) {
 /// The type and place of a data reference (a name, a component, an
 /// element); other expressions are values.
 pub(super) fn place_or_value<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> (Ty, Place) {
-    match node.kind() {
+    match crate::syntax_util::kind(node) {
         "identifier" => {
             let name = cx.node_text(node);
             match cx.resolve_data(name) {
@@ -554,7 +684,7 @@ pub(super) fn place_or_value<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> (Ty, Place)
 /// A place that an argument passes by reference; an unknown name where a
 /// signal is expected is taken for the signal.
 pub(super) fn reference<'t>(cx: &mut Cx<'t>, node: Node<'t>, expected: &Ty) -> (Ty, Place) {
-    if node.kind() == "identifier" && is_configured(cx, expected) {
+    if crate::syntax_util::kind(node) == "identifier" && is_configured(cx, expected) {
         let name = cx.node_text(node);
         if cx.resolve_data(name).is_none() {
             unknown_signal(cx, node, name, expected);

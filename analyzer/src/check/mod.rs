@@ -399,7 +399,7 @@ impl<'t> Cx<'t> {
         let mut cursor = root.walk();
         let modules: Vec<Node<'t>> = root
             .named_children(&mut cursor)
-            .filter(|n| n.kind() == "module")
+            .filter(|n| crate::syntax_util::kind(*n) == "module")
             .collect();
         let mut mi = 0;
         for node in modules {
@@ -818,7 +818,7 @@ impl<'t> Cx<'t> {
             let mut cursor = node.walk();
             for item in node
                 .children_by_field_id(body, &mut cursor)
-                .take_while(|n| n.kind() == "data_declaration")
+                .take_while(|n| crate::syntax_util::kind(*n) == "data_declaration")
             {
                 if let Some(d) = crate::items::lower_data(item, &u.text) {
                     locals.entry(fold(&d.name)).or_insert(d);
@@ -831,7 +831,7 @@ impl<'t> Cx<'t> {
             if n.id() == node.id() {
                 break;
             }
-            if n.kind() == "for_statement"
+            if crate::syntax_util::kind(n) == "for_statement"
                 && let Some(v) = crate::syntax_util::field(n, "variable")
             {
                 for_vars.push(fold(cx.node_text(v)));
