@@ -30,7 +30,7 @@ use crate::check::{Cx, DataSym, RoutineSym};
 use crate::items::{DataDecl, ParamDecl, Storage};
 use crate::lower::{is_expression, lower_with};
 use crate::names::fold;
-use crate::syntax_util::{field, fields, has_token, text_of};
+use crate::syntax_util::{field, fields, text_of};
 use crate::task::{Item, ItemRef, Task, Unit};
 use crate::ty::{Ty, UserType};
 
@@ -1340,15 +1340,16 @@ fn shape<'t>(
                 if crate::syntax_util::kind(arg) != "argument" {
                     continue;
                 }
-                if field(arg, "conditional").is_some() {
+                let arg_parts = crate::syntax_util::argument_parts(arg);
+                if arg_parts.conditional.is_some() {
                     constant = false;
                 }
-                match field(arg, "value") {
+                match arg_parts.value {
                     Some(v) if is_expression(crate::syntax_util::kind(v)) => {
                         parts.push(vec![(child, f), (arg, af), (v, Some("value"))]);
                     }
                     Some(_) => constant = false,
-                    None if has_token(arg, "\\") => {}
+                    None if arg_parts.backslash => {}
                     None => constant = false,
                 }
             }

@@ -86,13 +86,20 @@ pub fn literal_aggregate(node: Node<'_>, text: &str) -> Option<Literal> {
         return None;
     }
     let mut at = range.start;
-    let lit = read_aggregate(text.as_bytes(), &mut at, 0)?;
-    (at == range.end).then_some(lit)
+    let mut out = Vec::with_capacity(1);
+    read_aggregate(text.as_bytes(), &mut at, 0, Some(&mut out))?;
+    (at == range.end).then(|| out.pop()).flatten()
 }
 
 /// Is `node` an aggregate made only of literals (see [`literal_aggregate`])?
+/// Reads the text without building the [`Literal`].
 pub fn is_literal_aggregate(node: Node<'_>, text: &str) -> bool {
-    node.kind_id() == kinds().aggregate && literal_aggregate(node, text).is_some()
+    let range = node.byte_range();
+    if node.kind_id() != kinds().aggregate || range.end > text.len() || node.has_error() {
+        return false;
+    }
+    let mut at = range.start;
+    read_aggregate(text.as_bytes(), &mut at, 0, None).is_some() && at == range.end
 }
 
 fn skip_blanks(bytes: &[u8], at: &mut usize) {
@@ -104,31 +111,46 @@ fn skip_blanks(bytes: &[u8], at: &mut usize) {
     }
 }
 
-fn read_aggregate(bytes: &[u8], at: &mut usize, depth: usize) -> Option<Literal> {
+/// Reads an aggregate at `at`, pushing it to `out` when given (otherwise
+/// only validating it).
+fn read_aggregate(
+    bytes: &[u8],
+    at: &mut usize,
+    depth: usize,
+    out: Option<&mut Vec<Literal>>,
+) -> Option<()> {
     if depth > MAX_LITERAL_DEPTH || bytes.get(*at) != Some(&b'[') {
         return None;
     }
     let start = *at;
     *at += 1;
-    let mut elements = Vec::new();
+    let mut elements = out.is_some().then(Vec::new);
     loop {
         skip_blanks(bytes, at);
-        let element = match bytes.get(*at)? {
-            b'[' => read_aggregate(bytes, at, depth + 1)?,
-            b'"' => read_string(bytes, at)?,
-            b't' | b'T' | b'f' | b'F' => read_boolean(bytes, at)?,
-            _ => read_number(bytes, at)?,
-        };
-        elements.push(element);
+        match bytes.get(*at)? {
+            b'[' => read_aggregate(bytes, at, depth + 1, elements.as_mut())?,
+            b'"' => push(elements.as_mut(), read_string(bytes, at)?),
+            b't' | b'T' | b'f' | b'F' => push(elements.as_mut(), read_boolean(bytes, at)?),
+            _ => push(elements.as_mut(), read_number(bytes, at)?),
+        }
         skip_blanks(bytes, at);
         match bytes.get(*at)? {
             b',' => *at += 1,
             b']' => {
                 *at += 1;
-                return Some(Literal::Aggregate(start..*at, elements));
+                if let (Some(out), Some(elements)) = (out, elements) {
+                    out.push(Literal::Aggregate(start..*at, elements));
+                }
+                return Some(());
             }
             _ => return None,
         }
+    }
+}
+
+fn push(out: Option<&mut Vec<Literal>>, literal: Literal) {
+    if let Some(out) = out {
+        out.push(literal);
     }
 }
 
@@ -251,4 +273,57 @@ pub fn kinds() -> &'static Kinds {
             aggregate: language.id_for_node_kind("aggregate", true),
         }
     })
+}
+
+/// The parts of an `argument` node, read in one pass over its children
+/// (each [`field`] call walks them again).
+#[derive(Clone, Copy, Default)]
+pub struct ArgumentParts<'a> {
+    pub name: Option<Node<'a>>,
+    pub value: Option<Node<'a>>,
+    pub conditional: Option<Node<'a>>,
+    /// Written in the optional form, `\Name`.
+    pub backslash: bool,
+}
+
+pub fn argument_parts(arg: Node<'_>) -> ArgumentParts<'_> {
+    struct Ids {
+        name: Option<std::num::NonZeroU16>,
+        value: Option<std::num::NonZeroU16>,
+        conditional: Option<std::num::NonZeroU16>,
+    }
+    static IDS: std::sync::OnceLock<Ids> = std::sync::OnceLock::new();
+    let ids = IDS.get_or_init(|| Ids {
+        name: field_id("name"),
+        value: field_id("value"),
+        conditional: field_id("conditional"),
+    });
+    let mut parts = ArgumentParts::default();
+    let mut cursor = arg.walk();
+    if !cursor.goto_first_child() {
+        return parts;
+    }
+    loop {
+        let node = cursor.node();
+        if let Some(f) = cursor.field_id() {
+            let slot = if Some(f) == ids.name {
+                &mut parts.name
+            } else if Some(f) == ids.value {
+                &mut parts.value
+            } else if Some(f) == ids.conditional {
+                &mut parts.conditional
+            } else {
+                &mut None
+            };
+            if slot.is_none() {
+                *slot = Some(node);
+            }
+        }
+        if !node.is_named() && kind(node) == "\\" {
+            parts.backslash = true;
+        }
+        if !cursor.goto_next_sibling() {
+            return parts;
+        }
+    }
 }

@@ -12,7 +12,7 @@ use crate::catalogue::Mode;
 use crate::items::RoutineKind;
 use crate::names::same;
 use crate::rules;
-use crate::syntax_util::{field, fields, has_token};
+use crate::syntax_util::{argument_parts, field, fields};
 use crate::ty::Ty;
 
 /// A parameter, whether of a built-in or a user routine.
@@ -226,12 +226,13 @@ fn check_args_unknown<'t>(cx: &mut Cx<'t>, args: Option<Node<'t>>) {
         return;
     };
     for arg in fields(args, "argument") {
-        if let Some(v) = field(arg, "value")
+        let parts = argument_parts(arg);
+        if let Some(v) = parts.value
             && crate::syntax_util::kind(v) != "star"
         {
             exprs::place_or_value(cx, v);
         }
-        if let Some(c) = field(arg, "conditional") {
+        if let Some(c) = parts.conditional {
             conditional(cx, c);
         }
     }
@@ -266,10 +267,11 @@ fn check_args<'t>(cx: &mut Cx<'t>, sig: &Sig, args: Option<Node<'t>>, call: Rang
     let mut given_groups: HashMap<u32, usize> = HashMap::new();
     let args = args.map(|a| fields(a, "argument")).unwrap_or_default();
     for arg in args {
-        let value = field(arg, "value");
-        let cond = field(arg, "conditional");
-        let optional_form = has_token(arg, "\\");
-        let index = match field(arg, "name") {
+        let parts = argument_parts(arg);
+        let value = parts.value;
+        let cond = parts.conditional;
+        let optional_form = parts.backslash;
+        let index = match parts.name {
             None => {
                 // Positional: the next required parameter.
                 let Some(&i) = required.get(next_required) else {

@@ -82,33 +82,30 @@ pub(super) fn check_file_wide(cx: &mut Cx<'_>, root: Node<'_>) {
     }
 }
 
-/// A cheap look at the text: placeholders need a `<`, and a string longer
+/// A cheap look at the text: placeholders need their token's pattern, and a string longer
 /// than the limit needs a line with that many characters between quotes.
 fn may_hold_placeholder_or_long_string(text: &str) -> bool {
-    if text.contains('<') {
-        return true;
-    }
-    // Only the lines that hold a quote (usually few): from each quote to the
-    // next line.
-    let mut from = 0;
-    while let Some(q) = text.get(from..).and_then(|t| t.find('"')) {
-        let q = from + q;
-        let start = text[..q].rfind('\n').map_or(0, |i| i + 1);
-        let end = text[q..].find('\n').map_or(text.len(), |i| q + i);
-        // As `str::lines` gives it: without the line break.
-        let line = &text[start..end];
-        let line = line.strip_suffix('\r').unwrap_or(line);
-        if line.len() > MAX_STRING
-            && matches!(
-                (line.find('"'), line.rfind('"')),
-                (Some(a), Some(b)) if b - a > MAX_STRING
-            )
-        {
-            return true;
+    may_hold_placeholder(text)
+        || text.lines().any(|line| {
+            line.len() > MAX_STRING
+                && matches!(
+                    (line.find('"'), line.rfind('"')),
+                    (Some(a), Some(b)) if b - a > MAX_STRING
+                )
+        })
+}
+
+/// Does the text hold the placeholder token's pattern, `<[A-Z]{2,4}>`
+/// (comparisons such as `a<b` do not)?
+fn may_hold_placeholder(text: &str) -> bool {
+    let bytes = text.as_bytes();
+    bytes.iter().enumerate().any(|(i, &b)| {
+        b == b'<' && {
+            let rest = bytes.get(i + 1..).unwrap_or_default();
+            let upper = rest.iter().take_while(|c| c.is_ascii_uppercase()).count();
+            (2..=4).contains(&upper) && rest.get(upper) == Some(&b'>')
         }
-        from = end;
-    }
-    false
+    })
 }
 
 /// The number of characters of a string literal's value (escapes count one).
@@ -422,6 +419,7 @@ fn check_routine<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &'t RoutineDecl) {
         labels: HashMap::new(),
         in_error_handler: false,
     });
+    cx.scope_changed();
 
     // One walk over the routine's children (long generated routines make
     // each walk costly): the items of its body, and its named children for
@@ -453,6 +451,7 @@ fn check_routine<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &'t RoutineDecl) {
                 if let Some(r) = &mut cx.routine {
                     r.locals.entry(fold(&d.name)).or_insert(d);
                 }
+                cx.scope_changed();
             }
         } else {
             seen_statement = true;
@@ -507,6 +506,7 @@ fn check_routine<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &'t RoutineDecl) {
     }
     check_unused_in_routine(cx, decl);
     cx.routine = None;
+    cx.scope_changed();
 }
 
 /// A routine's children, from one walk.

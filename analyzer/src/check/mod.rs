@@ -210,6 +210,9 @@ pub(crate) struct Cx<'t> {
     pub(crate) routine_fingerprint: u64,
     /// The last context [`Cx::statement_key`] hashed.
     statement_context: Option<StatementContext>,
+    /// "Did you mean" answers by folded name, for the current scope (cleared
+    /// by [`Cx::scope_changed`]): an unresolved name tends to recur.
+    close_memo: HashMap<String, Option<String>>,
 }
 
 /// What a statement's cache key holds besides its text (the task's interface
@@ -248,6 +251,7 @@ impl<'t> Cx<'t> {
             recording: None,
             routine_fingerprint: 0,
             statement_context: None,
+            close_memo: HashMap::new(),
         }
     }
 
@@ -412,9 +416,16 @@ impl<'t> Cx<'t> {
             }
             mi += 1;
             self.module = Some((mi - 1, module));
+            self.scope_changed();
             decls::check_module(self, node, module);
         }
         self.module = None;
+        self.scope_changed();
+    }
+
+    /// The names in scope changed (module, routine, routine data).
+    pub(crate) fn scope_changed(&mut self) {
+        self.close_memo.clear();
     }
 
     pub(crate) fn node_text(&self, node: Node<'_>) -> &'t str {
@@ -592,7 +603,16 @@ impl<'t> Cx<'t> {
             }
         }
         let mut message = format!("no {what} named `{name}` is declared in this task or built in");
-        if let Some(close) = self.close_match(name) {
+        let key = fold(name);
+        let close = match self.close_memo.get(&key) {
+            Some(close) => close.clone(),
+            None => {
+                let close = self.close_match(name);
+                self.close_memo.insert(key, close.clone());
+                close
+            }
+        };
+        if let Some(close) = close {
             message.push_str(&format!("; did you mean `{close}`?"));
         } else if what == "data" && self.task.signals.is_none() {
             message.push_str(" (if it is an I/O signal, give the controller's EIO.cfg)");
