@@ -1069,6 +1069,11 @@ fn argument_type<'t>(
 /// own call. Only maximal constant expressions that hold an operation are
 /// evaluated, each once.
 pub(crate) fn check_constant_errors<'t>(cx: &mut Cx<'t>, node: Node<'t>) {
+    // Most statements hold no operation at all (`MoveL p10, v100, z10,
+    // tool0;`): their text says so without a walk of their nodes.
+    if !may_hold_operation(cx.node_text(node)) {
+        return;
+    }
     let mut found = Vec::new();
     let mut path = vec![(node, None)];
     scan(cx, &mut path, &mut found);
@@ -1135,6 +1140,80 @@ pub(crate) fn check_constant_errors<'t>(cx: &mut Cx<'t>, node: Node<'t>) {
             ),
         );
     }
+}
+
+/// Could this text (of a statement or a declaration) hold an operation as
+/// [`has_operation`] sees them: a call or a parenthesis, an index, an
+/// operator other than the sign of a number literal, an operator keyword?
+/// Strings and comments are skipped. `false` is certain; `true` only means
+/// that the nodes must be looked at.
+fn may_hold_operation(text: &str) -> bool {
+    let b = text.as_bytes();
+    let is_word = |c: u8| c.is_ascii_alphanumeric() || c == b'_';
+    // The digits and points of a number literal end just before `end`.
+    let number_before = |end: usize| {
+        let run = b[..end]
+            .iter()
+            .rev()
+            .take_while(|c| c.is_ascii_digit() || **c == b'.')
+            .count();
+        run > 0 && (end == run || !b.get(end - run - 1).copied().is_some_and(is_word))
+    };
+    let mut prev = b' ';
+    let mut i = 0;
+    while let Some(&c) = b.get(i) {
+        match c {
+            b'"' => {
+                i += 1;
+                while b.get(i).is_some_and(|c| !matches!(c, b'"' | b'\n' | b'\r')) {
+                    i += 1;
+                }
+                i += 1;
+                prev = b'"';
+                continue;
+            }
+            b'!' => {
+                while b.get(i).is_some_and(|c| !matches!(c, b'\n' | b'\r')) {
+                    i += 1;
+                }
+                continue;
+            }
+            b'(' | b'{' | b'*' | b'/' | b'<' | b'>' => return true,
+            b'=' if prev != b':' => return true,
+            b'+' | b'-' => {
+                let digit_next = b
+                    .get(i + 1)
+                    .is_some_and(|d| d.is_ascii_digit() || *d == b'.');
+                let sign = digit_next && matches!(prev, b'[' | b',' | b'=');
+                let exponent =
+                    digit_next && matches!(prev, b'e' | b'E') && i >= 1 && number_before(i - 1);
+                if !(sign || exponent) {
+                    return true;
+                }
+            }
+            c if c.is_ascii_alphabetic() || c == b'_' => {
+                let start = i;
+                while b.get(i).copied().is_some_and(is_word) {
+                    i += 1;
+                }
+                let word = &b[start..i];
+                if ["div", "mod", "and", "or", "xor", "not"]
+                    .iter()
+                    .any(|k| word.eq_ignore_ascii_case(k.as_bytes()))
+                {
+                    return true;
+                }
+                prev = b[i - 1];
+                continue;
+            }
+            _ => {}
+        }
+        if !c.is_ascii_whitespace() {
+            prev = c;
+        }
+        i += 1;
+    }
+    false
 }
 
 /// Statements and declarations below a statement are checked on their own.

@@ -116,9 +116,27 @@ pub struct Types<'a> {
     memo: RefCell<Memo>,
 }
 
+/// A record's components, in order: names and types.
+pub type Components = Rc<[(String, Ty)]>;
+
+/// See [`Types::info`].
+#[derive(Clone, Copy)]
+struct Info {
+    exists: bool,
+    numeric: bool,
+    signal: bool,
+    boolean: bool,
+    /// The folded name of the base type, interned in [`Memo::bases`].
+    base_id: u32,
+    base_numeric: bool,
+    base_signal: bool,
+}
+
 #[derive(Default)]
 struct Memo {
-    components: HashMap<String, Option<Rc<[(String, Ty)]>>>,
+    info: HashMap<String, Info>,
+    bases: HashMap<String, u32>,
+    components: HashMap<String, Option<Components>>,
     /// By literal type: `num`, `string`, `bool`.
     accepts: [HashMap<String, bool>; 3],
 }
@@ -147,6 +165,10 @@ impl<'a> Types<'a> {
 
     /// Is there a type of this name?
     pub fn exists(&self, name: &str) -> bool {
+        self.info(name).exists
+    }
+
+    fn exists_uncached(&self, name: &str) -> bool {
         with_folded(name, |key| self.user.contains_key(key))
             || self.catalogue.datatype(name).is_some()
             || name.eq_ignore_ascii_case("switch")
@@ -219,7 +241,7 @@ impl<'a> Types<'a> {
     }
 
     /// [`Types::components`], shared and remembered per named type.
-    pub fn components_shared(&self, ty: &Ty) -> Option<Rc<[(String, Ty)]>> {
+    pub fn components_shared(&self, ty: &Ty) -> Option<Components> {
         let Ty::Named(name) = ty else {
             return self.components(ty).map(Rc::from);
         };
@@ -278,14 +300,59 @@ impl<'a> Types<'a> {
     }
 
     fn is_numeric(&self, ty: &Ty) -> bool {
+        match ty {
+            Ty::Named(name) => self.info(name).numeric,
+            _ => self.is_numeric_uncached(ty),
+        }
+    }
+
+    fn is_numeric_uncached(&self, ty: &Ty) -> bool {
         let base = self.base(ty);
         base.is("num") || base.is("dnum")
     }
 
     /// Is this a signal type, whose value reads as a number?
     pub fn is_signal(&self, ty: &Ty) -> bool {
+        match ty {
+            Ty::Named(name) => self.info(name).signal,
+            _ => self.is_signal_uncached(ty),
+        }
+    }
+
+    fn is_signal_uncached(&self, ty: &Ty) -> bool {
         let base = self.base(ty);
         SIGNALS.iter().any(|s| base.is(s))
+    }
+
+    /// What the predicates above say of a named type, remembered per name
+    /// as spelt (the checker asks them of the same few types all the time).
+    fn info(&self, name: &str) -> Info {
+        if let Some(info) = self.memo.borrow().info.get(name) {
+            return *info;
+        }
+        let ty = Ty::named(name);
+        let base = self.base(&ty);
+        let base_name = match &base {
+            Ty::Named(n) => fold(n),
+            _ => String::new(),
+        };
+        let info = {
+            let mut memo = self.memo.borrow_mut();
+            let next = u32::try_from(memo.bases.len()).unwrap_or(u32::MAX);
+            let base_id = *memo.bases.entry(base_name).or_insert(next);
+            drop(memo);
+            Info {
+                exists: self.exists_uncached(name),
+                numeric: self.is_numeric_uncached(&ty),
+                signal: self.is_signal_uncached(&ty),
+                boolean: base.is("bool"),
+                base_id,
+                base_numeric: self.is_numeric_uncached(&base),
+                base_signal: self.is_signal_uncached(&base),
+            }
+        };
+        self.memo.borrow_mut().info.insert(name.to_owned(), info);
+        info
     }
 
     /// The type a value of `ty` has when read in an expression: signals read
@@ -303,7 +370,10 @@ impl<'a> Types<'a> {
     }
 
     pub fn is_bool(&self, ty: &Ty) -> bool {
-        ty.is_unknown() || self.base(ty).is("bool")
+        match ty {
+            Ty::Named(name) => self.info(name).boolean,
+            _ => ty.is_unknown() || self.base(ty).is("bool"),
+        }
     }
 
     /// May a value of type `value` be stored where `target` is expected?
@@ -316,6 +386,12 @@ impl<'a> Types<'a> {
         match (target, value) {
             (Ty::Array(t, n), Ty::Array(v, m)) => n == m && self.assignable(t, v),
             (Ty::Array(..), _) | (_, Ty::Array(..)) => false,
+            (Ty::Named(t), Ty::Named(v)) => {
+                // As `base(target) == base(value)`, or the base of the
+                // target numeric and that of the value numeric or a signal.
+                let (t, v) = (self.info(t), self.info(v));
+                t.base_id == v.base_id || (t.base_numeric && (v.base_numeric || v.base_signal))
+            }
             _ => {
                 let (t, v) = (self.base(target), self.base(value));
                 t == v || (self.is_numeric(&t) && (self.is_numeric(&v) || self.is_signal(&v)))

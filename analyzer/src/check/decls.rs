@@ -21,9 +21,17 @@ const MAX_DIMS: usize = 3;
 
 /// Placeholders and string lengths, anywhere in the file.
 pub(super) fn check_file_wide(cx: &mut Cx<'_>, root: Node<'_>) {
-    if !may_hold_placeholder_or_long_string(cx.text) {
+    // The walk only enters nodes that overlap a region of the text that may
+    // hold a finding, and nodes with syntax errors.
+    let regions = placeholder_or_long_string_regions(cx.text);
+    if regions.is_empty() {
         return;
     }
+    let worth_entering = |node: Node<'_>| {
+        let r = node.byte_range();
+        let i = regions.partition_point(|g| g.end <= r.start);
+        regions.get(i).is_some_and(|g| g.start < r.end) || node.has_error()
+    };
     static KINDS: std::sync::OnceLock<(u16, u16)> = std::sync::OnceLock::new();
     let (placeholder, string) = *KINDS.get_or_init(|| {
         let language = crate::syntax::language();
@@ -33,44 +41,33 @@ pub(super) fn check_file_wide(cx: &mut Cx<'_>, root: Node<'_>) {
         )
     });
     let mut cursor = root.walk();
-    let mut descend = true;
     loop {
         let node = cursor.node();
         let kind = node.kind_id();
-        if descend {
-            match kind {
-                k if k == placeholder => {
-                    let p = cx.node_text(node);
+        match kind {
+            k if k == placeholder => {
+                let p = cx.node_text(node);
+                cx.report(
+                    &rules::incomplete_code::RULE,
+                    node.byte_range(),
+                    format!("unfilled placeholder {p}: this code is not finished"),
+                );
+            }
+            k if k == string => {
+                let len = string_length(cx, node);
+                if len > MAX_STRING {
                     cx.report(
-                        &rules::incomplete_code::RULE,
+                        &rules::string_too_long::RULE,
                         node.byte_range(),
-                        format!("unfilled placeholder {p}: this code is not finished"),
+                        format!("this string has {len} characters; a RAPID string holds at most {MAX_STRING}"),
                     );
                 }
-                k if k == string => {
-                    let len = string_length(cx, node);
-                    if len > MAX_STRING {
-                        cx.report(
-                            &rules::string_too_long::RULE,
-                            node.byte_range(),
-                            format!("this string has {len} characters; a RAPID string holds at most {MAX_STRING}"),
-                        );
-                    }
-                }
-                _ => {}
             }
+            _ => {}
         }
-        // Aggregates of literals without strings hold nothing to report
-        // here (most robtargets): not worth their walk.
-        if descend
-            && kind != string
-            && !(crate::syntax_util::is_literal_aggregate(node, cx.text)
-                && !cx.node_text(node).contains('"'))
-            && cursor.goto_first_child()
-        {
+        if kind != string && worth_entering(node) && cursor.goto_first_child() {
             continue;
         }
-        descend = true;
         loop {
             if cursor.goto_next_sibling() {
                 break;
@@ -82,30 +79,45 @@ pub(super) fn check_file_wide(cx: &mut Cx<'_>, root: Node<'_>) {
     }
 }
 
-/// A cheap look at the text: placeholders need their token's pattern, and a string longer
-/// than the limit needs a line with that many characters between quotes.
-fn may_hold_placeholder_or_long_string(text: &str) -> bool {
-    may_hold_placeholder(text)
-        || text.lines().any(|line| {
-            line.len() > MAX_STRING
-                && matches!(
-                    (line.find('"'), line.rfind('"')),
-                    (Some(a), Some(b)) if b - a > MAX_STRING
-                )
-        })
-}
-
-/// Does the text hold the placeholder token's pattern, `<[A-Z]{2,4}>`
-/// (comparisons such as `a<b` do not)?
-fn may_hold_placeholder(text: &str) -> bool {
+/// The regions of the text (sorted, disjoint byte ranges) where a
+/// placeholder or a string longer than the limit may be: the placeholder
+/// token's pattern, `<[A-Z]{2,4}>` (comparisons such as `a<b` do not match),
+/// and the lines with more than the limit between their first and last
+/// quote (a string does not span lines).
+fn placeholder_or_long_string_regions(text: &str) -> Vec<Range<usize>> {
     let bytes = text.as_bytes();
-    bytes.iter().enumerate().any(|(i, &b)| {
-        b == b'<' && {
-            let rest = bytes.get(i + 1..).unwrap_or_default();
-            let upper = rest.iter().take_while(|c| c.is_ascii_uppercase()).count();
-            (2..=4).contains(&upper) && rest.get(upper) == Some(&b'>')
+    let mut regions: Vec<Range<usize>> = Vec::new();
+    let mut add = |r: Range<usize>| match regions.last_mut() {
+        Some(last) if last.end >= r.start => last.end = last.end.max(r.end),
+        _ => regions.push(r),
+    };
+    let mut line_start = 0;
+    for line in text.split_inclusive('\n') {
+        let start = line_start;
+        line_start += line.len();
+        if line.len() > MAX_STRING
+            && let (Some(a), Some(b)) = (line.find('"'), line.rfind('"'))
+            && b - a > MAX_STRING
+        {
+            add(start..start + line.len());
+            continue;
         }
-    })
+        if !line.contains('<') {
+            continue;
+        }
+        for (i, &b) in line.as_bytes().iter().enumerate() {
+            if b != b'<' {
+                continue;
+            }
+            let at = start + i;
+            let rest = bytes.get(at + 1..).unwrap_or_default();
+            let upper = rest.iter().take_while(|c| c.is_ascii_uppercase()).count();
+            if (2..=4).contains(&upper) && rest.get(upper) == Some(&b'>') {
+                add(at..at + upper + 2);
+            }
+        }
+    }
+    regions
 }
 
 /// The number of characters of a string literal's value (escapes count one).
@@ -133,14 +145,32 @@ fn check_name_length(cx: &mut Cx<'_>, name: &str, range: Range<usize>) {
 }
 
 pub(super) fn check_module<'t>(cx: &mut Cx<'t>, node: Node<'t>, module: &'t Module) {
+    let data_nodes = body_nodes(node);
+    check_module_prelude(cx, module, &data_nodes);
+    for decl in &module.routines {
+        check_routine_at(cx, &data_nodes, decl);
+    }
+    check_unused_locals_of_module(cx, module);
+}
+
+/// The declarations of a module's body by start offset.
+pub(super) fn body_nodes(node: Node<'_>) -> HashMap<usize, Node<'_>> {
+    fields(node, "body")
+        .into_iter()
+        .map(|n| (n.start_byte(), n))
+        .collect()
+}
+
+/// The checks of a module other than its routines' and its unused LOCAL
+/// items: its name, duplicates, ambiguous globals, data, records, aliases.
+pub(super) fn check_module_prelude<'t>(
+    cx: &mut Cx<'t>,
+    module: &'t Module,
+    data_nodes: &HashMap<usize, Node<'t>>,
+) {
     check_name_length(cx, &module.name, module.name_range.clone());
     check_duplicates_in_module(cx, module);
     check_ambiguous_globals(cx, module);
-
-    let data_nodes: HashMap<usize, Node<'t>> = fields(node, "body")
-        .into_iter()
-        .map(|n| (n.start_byte(), n))
-        .collect();
     for decl in &module.data {
         if let Some(n) = data_nodes.get(&decl.range.start) {
             check_data(cx, *n, decl, false);
@@ -161,12 +191,17 @@ pub(super) fn check_module<'t>(cx: &mut Cx<'t>, node: Node<'t>, module: &'t Modu
             check_type_name(cx, &t.name, t.range.clone());
         }
     }
-    for decl in &module.routines {
-        if let Some(n) = data_nodes.get(&decl.range.start) {
-            check_routine(cx, *n, decl);
-        }
+}
+
+/// Checks a routine of the current module, found by its declaration.
+pub(super) fn check_routine_at<'t>(
+    cx: &mut Cx<'t>,
+    data_nodes: &HashMap<usize, Node<'t>>,
+    decl: &'t RoutineDecl,
+) {
+    if let Some(n) = data_nodes.get(&decl.range.start) {
+        check_routine(cx, *n, decl);
     }
-    check_unused_locals_of_module(cx, module);
 }
 
 fn check_type_name(cx: &mut Cx<'_>, name: &str, range: Range<usize>) {
@@ -697,7 +732,7 @@ fn check_unused_in_routine(cx: &mut Cx<'_>, decl: &RoutineDecl) {
     cx.used.retain(|u| !matches!(u, Used::RoutineSym(_)));
 }
 
-fn check_unused_locals_of_module(cx: &mut Cx<'_>, module: &Module) {
+pub(super) fn check_unused_locals_of_module(cx: &mut Cx<'_>, module: &Module) {
     let Some(mi) = cx.module.map(|(i, _)| i) else {
         return;
     };

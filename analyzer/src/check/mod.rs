@@ -48,7 +48,162 @@ pub fn check_unit_cached(
     cx.cache.reused = 0;
     cx.cache_enabled = true;
     cx.check();
-    let mut diags = std::mem::take(&mut cx.diags);
+    let diags = finish(std::mem::take(&mut cx.diags));
+    let mut cache = std::mem::take(&mut cx.cache);
+    // Keep only what this check met (as if the cache were made afresh).
+    let generation = cache.generation;
+    cache.entries.retain(|_, e| e.generation == generation);
+    (diags, cache)
+}
+
+/// A share of a unit's check, from [`check_unit_split`]: a run of the
+/// unit's pieces (each module's declarations, then each of its routines, in
+/// order). Shares can run on different threads.
+#[derive(Clone, Debug)]
+pub struct CheckShare<'a> {
+    task: &'a Task,
+    unit: usize,
+    pieces: Range<usize>,
+}
+
+/// What a [`CheckShare`] found: the findings of each of its pieces, and the
+/// module items its pieces used (for the unused-LOCAL lints, which look at
+/// the whole module).
+#[derive(Debug, Default)]
+pub struct ShareResult {
+    pieces: Vec<Vec<Diagnostic>>,
+    used: HashSet<Used>,
+}
+
+/// A piece of a unit's check: a module's declarations, or one routine.
+#[derive(Clone, Copy)]
+enum Piece {
+    Module(usize),
+    Routine(usize, usize),
+}
+
+/// The pieces of a unit, in the order [`check_unit`] checks them, with a
+/// weight each (their size in bytes).
+fn pieces(cx: &Cx<'_>) -> Vec<(Piece, usize)> {
+    let mut out = Vec::new();
+    for (mi, module, _) in cx.modules() {
+        let routines: usize = module.routines.iter().map(|r| r.range.len()).sum();
+        out.push((
+            Piece::Module(mi),
+            module.range.len().saturating_sub(routines),
+        ));
+        for (ri, r) in module.routines.iter().enumerate() {
+            out.push((Piece::Routine(mi, ri), r.range.len()));
+        }
+    }
+    out
+}
+
+/// Splits the check of a unit into at most `shares` shares of about equal
+/// size, for a caller that runs them in parallel ([`CheckShare::run`]) and
+/// hands the results, in order, to [`merge_unit_check`]: the diagnostics are
+/// those of [`check_unit`], in the same order.
+pub fn check_unit_split(task: &Task, unit: usize, shares: usize) -> Vec<CheckShare<'_>> {
+    let Some(u) = task.units.get(unit) else {
+        return Vec::new();
+    };
+    let cx = Cx::new(task, unit, u);
+    let pieces = pieces(&cx);
+    let total: usize = pieces.iter().map(|(_, w)| w).sum();
+    let shares = shares.clamp(1, pieces.len().max(1));
+    let mut out = Vec::new();
+    let (mut start, mut acc) = (0, 0);
+    for (i, (_, w)) in pieces.iter().enumerate() {
+        acc += w;
+        // Close a share once it holds its part of the total weight.
+        if acc * shares >= total * (out.len() + 1) && out.len() + 1 < shares {
+            out.push(CheckShare {
+                task,
+                unit,
+                pieces: start..i + 1,
+            });
+            start = i + 1;
+        }
+    }
+    out.push(CheckShare {
+        task,
+        unit,
+        pieces: start..pieces.len(),
+    });
+    out
+}
+
+impl CheckShare<'_> {
+    /// Checks this share's pieces.
+    pub fn run(&self) -> ShareResult {
+        let Some(u) = self.task.units.get(self.unit) else {
+            return ShareResult::default();
+        };
+        let mut cx = Cx::new(self.task, self.unit, u);
+        cx.cache.generation += 1;
+        cx.cache_enabled = true;
+        let modules = cx.modules();
+        let pieces = pieces(&cx);
+        let mut result = ShareResult::default();
+        let mut body: Option<(usize, HashMap<usize, Node<'_>>)> = None;
+        for (piece, _) in pieces.get(self.pieces.clone()).unwrap_or_default() {
+            let mi = match piece {
+                Piece::Module(mi) | Piece::Routine(mi, _) => *mi,
+            };
+            let Some((_, module, node)) = modules.iter().find(|(i, _, _)| *i == mi) else {
+                result.pieces.push(Vec::new());
+                continue;
+            };
+            if body.as_ref().is_none_or(|(m, _)| *m != mi) {
+                cx.enter_module(mi, module);
+                body = Some((mi, decls::body_nodes(*node)));
+            }
+            let Some((_, nodes)) = &body else {
+                continue;
+            };
+            match piece {
+                Piece::Module(_) => decls::check_module_prelude(&mut cx, module, nodes),
+                Piece::Routine(_, ri) => {
+                    if let Some(decl) = module.routines.get(*ri) {
+                        decls::check_routine_at(&mut cx, nodes, decl);
+                    }
+                }
+            }
+            result.pieces.push(std::mem::take(&mut cx.diags));
+        }
+        result.used = std::mem::take(&mut cx.used);
+        result
+    }
+}
+
+/// The diagnostics of a unit from the results of its shares
+/// ([`check_unit_split`]), given in the shares' order.
+pub fn merge_unit_check(task: &Task, unit: usize, results: Vec<ShareResult>) -> Vec<Diagnostic> {
+    let Some(u) = task.units.get(unit) else {
+        return Vec::new();
+    };
+    let mut cx = Cx::new(task, unit, u);
+    let mut found = Vec::new();
+    for r in results {
+        cx.used.extend(r.used);
+        found.extend(r.pieces);
+    }
+    let root = u.tree.root_node();
+    decls::check_file_wide(&mut cx, root);
+    let mut found = found.into_iter();
+    for (mi, module, _) in cx.modules() {
+        cx.enter_module(mi, module);
+        for _ in 0..=module.routines.len() {
+            cx.diags.extend(found.next().unwrap_or_default());
+        }
+        decls::check_unused_locals_of_module(&mut cx, module);
+    }
+    finish(std::mem::take(&mut cx.diags))
+}
+
+/// Sorts a unit's findings by position and keeps the first report of each
+/// unconfigured signal.
+fn finish(mut diags: Vec<Diagnostic>) -> Vec<Diagnostic> {
     diags.sort_by_key(|d| (d.range.start, d.range.end));
     // An unconfigured signal is reported once per name: at its first use.
     let mut seen = HashSet::new();
@@ -56,11 +211,7 @@ pub fn check_unit_cached(
         !std::ptr::eq(d.rule, &crate::rules::unconfigured_signal::RULE)
             || seen.insert(d.message.clone())
     });
-    let mut cache = std::mem::take(&mut cx.cache);
-    // Keep only what this check met (as if the cache were made afresh).
-    let generation = cache.generation;
-    cache.entries.retain(|_, e| e.generation == generation);
-    (diags, cache)
+    diags
 }
 
 /// Results of single statements, by a key of the statement's text and its
@@ -213,6 +364,8 @@ pub(crate) struct Cx<'t> {
     /// "Did you mean" answers by folded name, for the current scope (cleared
     /// by [`Cx::scope_changed`]): an unresolved name tends to recur.
     close_memo: HashMap<String, Option<String>>,
+    /// The module part of "did you mean", by module and folded name.
+    module_close_memo: HashMap<(usize, String), Option<(usize, String)>>,
 }
 
 /// What a statement's cache key holds besides its text (the task's interface
@@ -252,6 +405,7 @@ impl<'t> Cx<'t> {
             routine_fingerprint: 0,
             statement_context: None,
             close_memo: HashMap::new(),
+            module_close_memo: HashMap::new(),
         }
     }
 
@@ -400,26 +554,40 @@ impl<'t> Cx<'t> {
     fn check(&mut self) {
         let root = self.unit.tree.root_node();
         decls::check_file_wide(self, root);
+        for (mi, module, node) in self.modules() {
+            self.enter_module(mi, module);
+            decls::check_module(self, node, module);
+        }
+        self.module = None;
+        self.scope_changed();
+    }
+
+    /// The unit's modules with their nodes (modules without a name were not
+    /// lowered: the indexes stay aligned with the item tree's).
+    fn modules(&self) -> Vec<(usize, &'t Module, Node<'t>)> {
+        let root = self.unit.tree.root_node();
         let mut cursor = root.walk();
-        let modules: Vec<Node<'t>> = root
+        let nodes: Vec<Node<'t>> = root
             .named_children(&mut cursor)
             .filter(|n| crate::syntax_util::kind(*n) == "module")
             .collect();
+        let mut out = Vec::new();
         let mut mi = 0;
-        for node in modules {
-            // Modules without a name were not lowered; keep the indexes aligned.
+        for node in nodes {
             let Some(module) = self.unit.items.modules.get(mi) else {
                 break;
             };
             if module.range != node.byte_range() {
                 continue;
             }
+            out.push((mi, module, node));
             mi += 1;
-            self.module = Some((mi - 1, module));
-            self.scope_changed();
-            decls::check_module(self, node, module);
         }
-        self.module = None;
+        out
+    }
+
+    fn enter_module(&mut self, mi: usize, module: &'t Module) {
+        self.module = Some((mi, module));
         self.scope_changed();
     }
 
@@ -620,24 +788,48 @@ impl<'t> Cx<'t> {
         self.report(&crate::rules::unresolved_name::RULE, range, message);
     }
 
-    /// A visible name within a small edit distance of `name`.
-    fn close_match(&self, name: &str) -> Option<String> {
+    /// A visible name within a small edit distance of `name`: the first
+    /// closest of the routine's data and parameters, then the module's data
+    /// and routines, then the task's globals.
+    fn close_match(&mut self, name: &str) -> Option<String> {
         let key = fold(name);
         let limit = if key.len() <= 4 { 1 } else { 2 };
         let mut best: Option<(usize, String)> = None;
-        let mut consider = |cand: &str| {
-            let d = edit_distance_folded(&key, cand);
-            if d > 0 && d <= limit && best.as_ref().is_none_or(|(bd, _)| d < *bd) {
-                best = Some((d, cand.to_owned()));
-            }
-        };
         if let Some(r) = &self.routine {
+            let mut consider = |cand: &str| {
+                let d = edit_distance_folded(&key, cand);
+                if d > 0 && d <= limit && best.as_ref().is_none_or(|(bd, _)| d < *bd) {
+                    best = Some((d, cand.to_owned()));
+                }
+            };
             r.locals.values().for_each(|d| consider(&d.name));
             r.params.values().for_each(|p| consider(&p.name));
         }
-        if let Some((_, m)) = self.module {
-            m.data.iter().for_each(|d| consider(&d.name));
-            m.routines.iter().for_each(|d| consider(&d.name));
+        // The module's part does not depend on the routine: remembered per
+        // module (a module may declare thousands of data).
+        if let Some((mi, m)) = self.module {
+            let found = match self.module_close_memo.get(&(mi, key.clone())) {
+                Some(found) => found.clone(),
+                None => {
+                    let mut found: Option<(usize, String)> = None;
+                    let mut consider = |cand: &str| {
+                        let d = edit_distance_folded(&key, cand);
+                        if d > 0 && d <= limit && found.as_ref().is_none_or(|(bd, _)| d < *bd) {
+                            found = Some((d, cand.to_owned()));
+                        }
+                    };
+                    m.data.iter().for_each(|d| consider(&d.name));
+                    m.routines.iter().for_each(|d| consider(&d.name));
+                    self.module_close_memo
+                        .insert((mi, key.clone()), found.clone());
+                    found
+                }
+            };
+            if let Some((d, n)) = found
+                && best.as_ref().is_none_or(|(bd, _)| d < *bd)
+            {
+                best = Some((d, n));
+            }
         }
         let global = close_global(self.task, &key, limit);
         if let Some((d, n)) = global
@@ -769,8 +961,8 @@ fn edit_distance_folded(key: &str, name: &str) -> usize {
     })
 }
 
-/// Levenshtein distance of byte strings, or 3 when their lengths differ by
-/// more than 2 (callers only care about distances up to 2).
+/// Levenshtein distance of byte strings, or 3 when it is more than 2
+/// (callers only care about distances up to 2).
 fn distance(a: &[u8], b: &[u8], eq: impl Fn(u8, u8) -> bool) -> usize {
     const STACK: usize = 64;
     if a.len().abs_diff(b.len()) > 2 {
@@ -790,9 +982,15 @@ fn distance(a: &[u8], b: &[u8], eq: impl Fn(u8, u8) -> bool) -> usize {
     }
     for (i, &ca) in a.iter().enumerate() {
         cur[0] = i + 1;
+        let mut row_min = cur[0];
         for (j, &cb) in b.iter().enumerate() {
             let cost = usize::from(!eq(ca, cb));
             cur[j + 1] = (prev[j] + cost).min(prev[j + 1] + 1).min(cur[j] + 1);
+            row_min = row_min.min(cur[j + 1]);
+        }
+        // The distance is at least the smallest value of any row.
+        if row_min > 2 {
+            return 3;
         }
         std::mem::swap(&mut prev, &mut cur);
     }

@@ -500,10 +500,16 @@ pub fn check_files(
             .cmp(&a.1.text.len())
             .then(a.1.path.cmp(&b.1.path))
     });
+    let threads = rayon::current_num_threads();
     let mut by_path: HashMap<String, Vec<Diagnostic>> = jobs
         .par_iter()
         .map(|(task, u)| {
-            let d = (u.path.clone(), diagnostics_of(task, u));
+            let diagnostics = if threads > 1 && u.text.len() >= SPLIT_CHECK_BYTES {
+                diagnostics_split(task, u, threads)
+            } else {
+                diagnostics_of(task, u)
+            };
+            let d = (u.path.clone(), diagnostics);
             progress.inc(1);
             d
         })
@@ -524,6 +530,32 @@ pub fn check_files(
             Err(why) => Outcome::Skipped(path.clone(), why),
         })
         .collect()
+}
+
+/// Files at least this large have their routines checked on several
+/// threads (a single large module would otherwise keep one core busy while
+/// the others wait).
+const SPLIT_CHECK_BYTES: usize = 64 * 1024;
+
+/// [`diagnostics_of`], with the unit's routines spread over `shares` jobs of
+/// the thread pool: the same diagnostics in the same order.
+fn diagnostics_split(
+    task: &rapid_analyzer::task::Task,
+    unit: &Arc<Unit>,
+    shares: usize,
+) -> Vec<Diagnostic> {
+    use rapid_analyzer::check::{check_unit_split, merge_unit_check};
+    let Some(idx) = task.units.iter().position(|u| Arc::ptr_eq(u, unit)) else {
+        return diagnostics_of(task, unit);
+    };
+    let results = check_unit_split(task, idx, shares)
+        .par_iter()
+        .map(|share| share.run())
+        .collect();
+    let mut out = unit.syntax.clone();
+    out.extend(merge_unit_check(task, idx, results));
+    out.sort_by_key(|d| (d.range.start, d.range.end));
+    out
 }
 
 fn read_source(path: &Path) -> Result<SourceFile, Skip> {
