@@ -366,6 +366,9 @@ pub(crate) struct Cx<'t> {
     close_memo: HashMap<String, Option<String>>,
     /// The module part of "did you mean", by module and folded name.
     module_close_memo: HashMap<(usize, String), Option<(usize, String)>>,
+    /// The first position of each unconfigured signal's diagnostic that a
+    /// reused statement result added, by message.
+    reused_signals: HashMap<String, (usize, usize)>,
 }
 
 /// What a statement's cache key holds besides its text (the task's interface
@@ -406,6 +409,7 @@ impl<'t> Cx<'t> {
             statement_context: None,
             close_memo: HashMap::new(),
             module_close_memo: HashMap::new(),
+            reused_signals: HashMap::new(),
         }
     }
 
@@ -434,6 +438,20 @@ impl<'t> Cx<'t> {
         if let Some(c) = self.cache.entries.get_mut(&key) {
             c.generation = generation;
             for d in &c.diags {
+                // An unconfigured signal is kept once per name, at its first
+                // use in source order: a copy that a reused one already
+                // precedes (or ties with, being pushed earlier) would be
+                // dropped at the end anyway.
+                let at = (d.range.start + start, d.range.end + start);
+                if std::ptr::eq(d.rule, &crate::rules::unconfigured_signal::RULE) {
+                    match self.reused_signals.get_mut(&d.message) {
+                        Some(first) if *first <= at => continue,
+                        Some(first) => *first = at,
+                        None => {
+                            self.reused_signals.insert(d.message.clone(), at);
+                        }
+                    }
+                }
                 let mut d = d.clone();
                 d.range = d.range.start + start..d.range.end + start;
                 for r in &mut d.related {
