@@ -234,7 +234,10 @@ impl Backend {
         };
         if let Some(quick) = quick {
             let _order = self.shared.publish.lock().await;
-            if self.mutate("publishing diagnostics", |s| current(s)) == Some(true) {
+            let send = self.mutate("publishing diagnostics", |s| {
+                current(s) && s.to_publish(&snap.path, snap.version, &quick)
+            });
+            if send == Some(true) {
                 self.client
                     .publish_diagnostics(snap.uri.clone(), quick, snap.version)
                     .await;
@@ -258,7 +261,7 @@ impl Backend {
                     s.statements
                         .insert(snap.path.clone(), (snap.config_generation, statements));
                 }
-                current(s)
+                current(s) && s.to_publish(&snap.path, snap.version, &converted)
             })
             .unwrap_or(false);
         if send {
@@ -850,6 +853,7 @@ impl LanguageServer for Backend {
                 s.semantic.remove(&path);
                 s.diagnostics.remove(&path);
                 s.statements.remove(&path);
+                s.published.remove(&path);
                 let before = doc.unit.interface;
                 // The file goes back to its state on disk.
                 let p = PathBuf::from(&path);

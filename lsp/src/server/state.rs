@@ -58,6 +58,11 @@ pub struct State {
     /// results depend on the controller configuration, signals and
     /// mechanical units, which their cache keys do not cover.)
     pub statements: HashMap<String, (u64, StmtCache)>,
+    /// The diagnostics last published per open document, with the version
+    /// they were for: an unchanged list for the same version is not sent
+    /// again (another file's edit re-checks this one, mostly to the same
+    /// result).
+    pub published: HashMap<String, (Option<i32>, Vec<tower_lsp_server::ls_types::Diagnostic>)>,
     /// The last semantic tokens sent per document, for deltas.
     pub semantic: HashMap<String, (String, Arc<Vec<u32>>)>,
     pub next_id: u64,
@@ -362,6 +367,25 @@ impl State {
                 diagnostics,
             },
         );
+    }
+
+    /// Whether `diagnostics` for `version` of `path` differ from what was
+    /// last published for it; if so, remembers them as published.
+    pub fn to_publish(
+        &mut self,
+        path: &str,
+        version: Option<i32>,
+        diagnostics: &[tower_lsp_server::ls_types::Diagnostic],
+    ) -> bool {
+        if let Some((v, d)) = self.published.get(path)
+            && *v == version
+            && d.as_slice() == diagnostics
+        {
+            return false;
+        }
+        self.published
+            .insert(path.to_owned(), (version, diagnostics.to_vec()));
+        true
     }
 
     /// Open documents of the task of `path`, other than `path`.
