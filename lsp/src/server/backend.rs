@@ -232,10 +232,13 @@ impl Backend {
         else {
             return;
         };
+        // The check's result always follows a quick publication, even when
+        // it is the same list: it tells the client the check is done.
+        let quick_sent = quick.is_some();
         if let Some(quick) = quick {
             let _order = self.shared.publish.lock().await;
             let send = self.mutate("publishing diagnostics", |s| {
-                current(s) && s.to_publish(&snap.path, snap.version, &quick)
+                current(s) && s.to_publish(&snap.path, snap.version, &quick, true)
             });
             if send == Some(true) {
                 self.client
@@ -261,7 +264,7 @@ impl Backend {
                     s.statements
                         .insert(snap.path.clone(), (snap.config_generation, statements));
                 }
-                current(s) && s.to_publish(&snap.path, snap.version, &converted)
+                current(s) && s.to_publish(&snap.path, snap.version, &converted, quick_sent)
             })
             .unwrap_or(false);
         if send {

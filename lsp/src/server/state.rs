@@ -369,15 +369,18 @@ impl State {
         );
     }
 
-    /// Whether `diagnostics` for `version` of `path` differ from what was
-    /// last published for it; if so, remembers them as published.
+    /// Whether `diagnostics` for `version` of `path` are to be published:
+    /// `always`, or when they differ from what was last published for it.
+    /// Remembers them as published if so.
     pub fn to_publish(
         &mut self,
         path: &str,
         version: Option<i32>,
         diagnostics: &[tower_lsp_server::ls_types::Diagnostic],
+        always: bool,
     ) -> bool {
-        if let Some((v, d)) = self.published.get(path)
+        if !always
+            && let Some((v, d)) = self.published.get(path)
             && *v == version
             && d.as_slice() == diagnostics
         {
