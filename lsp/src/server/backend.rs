@@ -238,7 +238,7 @@ impl Backend {
         if let Some(quick) = quick {
             let _order = self.shared.publish.lock().await;
             let send = self.mutate("publishing diagnostics", |s| {
-                current(s) && s.to_publish(&snap.path, snap.version, &quick, true)
+                current(s) && s.should_publish(&snap.path, snap.version, &quick, true)
             });
             if send == Some(true) {
                 self.client
@@ -264,7 +264,7 @@ impl Backend {
                     s.statements
                         .insert(snap.path.clone(), (snap.config_generation, statements));
                 }
-                current(s) && s.to_publish(&snap.path, snap.version, &converted, quick_sent)
+                current(s) && s.should_publish(&snap.path, snap.version, &converted, quick_sent)
             })
             .unwrap_or(false);
         if send {

@@ -372,7 +372,7 @@ impl State {
     /// Whether `diagnostics` for `version` of `path` are to be published:
     /// `always`, or when they differ from what was last published for it.
     /// Remembers them as published if so.
-    pub fn to_publish(
+    pub fn should_publish(
         &mut self,
         path: &str,
         version: Option<i32>,
