@@ -1,6 +1,7 @@
 //! `rapid`: the language server, CI linter, evaluator and formatter for ABB
 //! RAPID.
 
+mod alloc;
 mod builtins;
 mod check;
 mod config;
@@ -42,6 +43,7 @@ enum Command {
 }
 
 fn main() -> ExitCode {
+    alloc::init();
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
         Err(e) => {
