@@ -201,8 +201,12 @@ impl Workspace {
     /// Builds and caches the task `key` of `units`.
     fn build_task(&mut self, key: String, units: Vec<Arc<Unit>>) -> Arc<Task> {
         let (signals, mecunits) = self.config_for(&key);
+        // Results depend on the configuration too: the interface covers it,
+        // so cached file and statement results are dropped when it changes.
+        let config = config_hash(signals.as_ref(), &mecunits);
         let mut task = Task::new(key.clone(), units, signals);
         task.mecunits = mecunits;
+        task.interface ^= config;
         if let Some(controller) = controller_of(&key) {
             let (shared, hash) = match self.controllers.get(controller) {
                 Some(c) => c.clone(),
@@ -319,6 +323,22 @@ pub fn diagnostics_cached(
     }
     out.sort_by_key(|d| (d.range.start, d.range.end));
     (out, next)
+}
+
+/// A hash of a task's configuration (signals with their types, mechanical
+/// units), independent of the maps' order.
+fn config_hash(signals: Option<&Signals>, mecunits: &HashSet<String>) -> u64 {
+    use std::hash::{Hash, Hasher};
+    let mut h = std::hash::DefaultHasher::new();
+    if let Some(signals) = signals {
+        let mut list: Vec<_> = signals.iter().collect();
+        list.sort();
+        list.hash(&mut h);
+    }
+    let mut units: Vec<_> = mecunits.iter().collect();
+    units.sort();
+    units.hash(&mut h);
+    h.finish()
 }
 
 /// Is `path` below `folder` (a normalised prefix ending in `/`), with either
@@ -492,6 +512,28 @@ mod tests {
         assert_eq!(related.file.as_deref(), Some("b/RAPID/TASK2/PROGMOD/M.mod"));
         ws.remove_file("b/RAPID/TASK2/PROGMOD/M.mod");
         assert!(ws.diagnostics("b/RAPID/TASK1/PROGMOD/M.mod").is_empty());
+    }
+
+    #[test]
+    fn a_configuration_change_rechecks_the_files_it_applies_to() {
+        let mut ws = Workspace::new();
+        ws.set_file(
+            "cell/M.mod",
+            "MODULE M\n  PROC main()\n    SetDO doGrip, 1;\n  ENDPROC\nENDMODULE\n".into(),
+        );
+        ws.set_config(
+            "cell/EIO.cfg",
+            "EIO_SIGNAL:\n  -Name \"doOther\" -SignalType \"DO\"\n",
+        );
+        let first = ws.diagnostics("cell/M.mod");
+        assert_eq!(first.len(), 1, "{first:?}");
+        assert_eq!(first[0].rule.name, "unresolved-name");
+        ws.set_config(
+            "cell/EIO.cfg",
+            "EIO_SIGNAL:\n  -Name \"doGrip\" -SignalType \"DO\"\n",
+        );
+        let again = ws.diagnostics("cell/M.mod");
+        assert!(again.is_empty(), "{again:?}");
     }
 
     #[test]
