@@ -8,7 +8,7 @@ use std::rc::Rc;
 
 use crate::catalogue::{Catalogue, TypeKind, ValueClass, catalogue};
 use crate::items::{AliasDecl, RecordDecl};
-use crate::names::{fold, same, with_folded};
+use crate::names::{NameHasher, fold, same, with_folded};
 
 /// The type of a value, a data object or a parameter.
 #[derive(Clone, Debug)]
@@ -132,13 +132,16 @@ struct Info {
     base_signal: bool,
 }
 
+/// A map by type name with the cheap [`NameHasher`].
+type ByName<V> = HashMap<String, V, std::hash::BuildHasherDefault<NameHasher>>;
+
 #[derive(Default)]
 struct Memo {
-    info: HashMap<String, Info>,
-    bases: HashMap<String, u32>,
-    components: HashMap<String, Option<Components>>,
+    info: ByName<Info>,
+    bases: ByName<u32>,
+    components: ByName<Option<Components>>,
     /// By literal type: `num`, `string`, `bool`.
-    accepts: [HashMap<String, bool>; 3],
+    accepts: [ByName<bool>; 3],
 }
 
 /// The semi-value signal types, read as numbers in expressions.

@@ -72,7 +72,7 @@ pub struct CheckShare<'a> {
 #[derive(Debug, Default)]
 pub struct ShareResult {
     pieces: Vec<Vec<Diagnostic>>,
-    used: HashSet<Used>,
+    used: UsedSet,
 }
 
 /// A piece of a unit's check: a module's declarations, or one routine.
@@ -350,7 +350,7 @@ pub(crate) struct Cx<'t> {
     pub routine: Option<RoutineCx<'t>>,
     pub diags: Vec<Diagnostic>,
     /// Folded names of routine-scope symbols and module items that were used.
-    pub used: HashSet<Used>,
+    pub used: UsedSet,
     pub reported_signals: HashSet<String>,
     /// Statement results of the previous checks, and of this one.
     pub(crate) cache: StmtCache,
@@ -381,6 +381,10 @@ struct StatementContext {
     hash: u64,
 }
 
+/// The uses met, hashed with the cheap [`NameHasher`] (looked up for every
+/// name the checker resolves).
+pub(crate) type UsedSet = HashSet<Used, std::hash::BuildHasherDefault<crate::names::NameHasher>>;
+
 /// A use of a declaration, for the unused-symbol lints.
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub(crate) enum Used {
@@ -400,7 +404,7 @@ impl<'t> Cx<'t> {
             module: None,
             routine: None,
             diags: Vec::new(),
-            used: HashSet::new(),
+            used: UsedSet::default(),
             reported_signals: HashSet::new(),
             cache: StmtCache::default(),
             cache_enabled: false,
@@ -655,21 +659,15 @@ impl<'t> Cx<'t> {
 
     fn lookup_items_folded(&self, key: &str) -> Vec<ItemRef> {
         let mine = self.module_idx();
+        let here = |r: &&ItemRef| r.unit == self.unit_idx && Some(r.module) == mine;
         let mut own: Vec<ItemRef> = Vec::new();
         if let Some(locals) = self.task.locals.get(key) {
-            own.extend(
-                locals
-                    .iter()
-                    .filter(|r| r.unit == self.unit_idx && Some(r.module) == mine),
-            );
+            own.extend(locals.iter().filter(here));
         }
         if let Some(globals) = self.task.globals.get(key) {
-            let (here, elsewhere): (Vec<ItemRef>, Vec<ItemRef>) = globals
-                .iter()
-                .partition(|r| r.unit == self.unit_idx && Some(r.module) == mine);
-            own.extend(here);
+            own.extend(globals.iter().filter(here));
             if own.is_empty() {
-                return elsewhere;
+                return globals.iter().filter(|r| !here(r)).copied().collect();
             }
         }
         own
@@ -691,22 +689,25 @@ impl<'t> Cx<'t> {
 
     /// Resolves a data name in the current scope. Marks it used.
     pub(crate) fn resolve_data(&mut self, name: &str) -> Option<DataSym<'t>> {
-        let key = fold(name);
+        with_folded(name, |key| self.resolve_data_folded(name, key))
+    }
+
+    fn resolve_data_folded(&mut self, name: &str, key: &str) -> Option<DataSym<'t>> {
         if let Some(r) = &self.routine {
-            if r.for_vars.contains(&key) {
+            if r.for_vars.iter().any(|v| v == key) {
                 return Some(DataSym::ForVar);
             }
-            if let Some(d) = r.locals.get(&key) {
+            if let Some(d) = r.locals.get(key) {
                 let d = d.clone();
-                self.mark_used(Used::RoutineSym(key));
+                self.mark_used(Used::RoutineSym(key.to_owned()));
                 return Some(DataSym::Local(d));
             }
-            if let Some(p) = r.params.get(&key).copied() {
-                self.mark_used(Used::RoutineSym(key));
+            if let Some(p) = r.params.get(key).copied() {
+                self.mark_used(Used::RoutineSym(key.to_owned()));
                 return Some(DataSym::Param(p));
             }
         }
-        for r in self.lookup_items_folded(&key) {
+        for r in self.lookup_items_folded(key) {
             if let Some(d) = self.task.data(r) {
                 self.mark_used(Used::Item(r));
                 return Some(DataSym::Module(d, r));
@@ -715,10 +716,10 @@ impl<'t> Cx<'t> {
         if let Some(d) = self.cat.datum(name) {
             return Some(DataSym::Builtin(d));
         }
-        if let Some(ty) = self.task.signals.as_ref().and_then(|s| s.get(&key)) {
+        if let Some(ty) = self.task.signals.as_ref().and_then(|s| s.get(key)) {
             return Some(DataSym::Signal(ty));
         }
-        if self.task.mecunits.contains(&key) {
+        if self.task.mecunits.contains(key) {
             return Some(DataSym::Signal("mecunit"));
         }
         None
