@@ -265,6 +265,10 @@ fn check_ambiguous_globals(cx: &mut Cx<'_>, module: &Module) {
     let Some(mi) = cx.module.map(|(i, _)| i) else {
         return;
     };
+    // The first declaration of another module, by folded name: only a
+    // persistent needs the whole list (many declarations of one name made
+    // this quadratic).
+    let mut first_elsewhere: HashMap<String, Option<ItemRef>> = HashMap::new();
     for (name, local, item) in module_items(module) {
         if local {
             continue;
@@ -274,13 +278,21 @@ fn check_ambiguous_globals(cx: &mut Cx<'_>, module: &Module) {
             module: mi,
             item,
         };
-        let Some(all) = cx.task.globals.get(&fold(name)) else {
+        let key = fold(name);
+        let Some(all) = cx.task.globals.get(&key) else {
             continue;
         };
-        let other = all
-            .iter()
-            .copied()
-            .find(|r| (r.unit, r.module) != (me.unit, me.module) && !same_persistent(cx, me, *r));
+        let elsewhere = |r: &ItemRef| (r.unit, r.module) != (me.unit, me.module);
+        let other = if cx.task.data(me).is_some_and(|d| d.storage == Storage::Pers) {
+            all.iter()
+                .copied()
+                .find(|r| elsewhere(r) && !same_persistent(cx, me, *r))
+        } else {
+            // `same_persistent` is false when `me` is not a persistent.
+            *first_elsewhere
+                .entry(key)
+                .or_insert_with(|| all.iter().copied().find(elsewhere))
+        };
         if let Some(other) = other {
             let other_module = cx
                 .task
