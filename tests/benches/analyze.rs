@@ -9,11 +9,8 @@ use rapid_analyzer::task::Unit;
 use rapid_analyzer::text::{Decoded, decode};
 use rapid_analyzer::workspace::{Workspace, diagnostics_of};
 
-#[global_allocator]
-static ALLOCATOR: rapid_tests::Allocator = rapid_tests::Allocator;
-
 fn main() {
-    rapid_tests::use_mimalloc_for_tree_sitter();
+    rapid_tests::alloc::init();
     divan::main();
 }
 

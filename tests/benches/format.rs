@@ -9,11 +9,8 @@ use divan::counter::BytesCount;
 use rapid_analyzer::format::{FormatOptions, format};
 use rapid_analyzer::text::{Decoded, decode};
 
-#[global_allocator]
-static ALLOCATOR: rapid_tests::Allocator = rapid_tests::Allocator;
-
 fn main() {
-    rapid_tests::use_mimalloc_for_tree_sitter();
+    rapid_tests::alloc::init();
     divan::main();
 }
 

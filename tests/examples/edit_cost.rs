@@ -26,6 +26,7 @@ struct Edit<'a> {
 }
 
 fn main() -> ExitCode {
+    rapid_tests::alloc::init();
     let Some(dir) = rapid_tests::corpus_dir() else {
         eprintln!("no corpus (set RAPID_CORPUS)");
         return ExitCode::from(2);

@@ -13,11 +13,8 @@ use std::process::ExitCode;
 
 use rapid_analyzer::text::{Decoded, decode};
 
-#[global_allocator]
-static ALLOCATOR: rapid_tests::Allocator = rapid_tests::Allocator;
-
 fn main() -> ExitCode {
-    rapid_tests::use_mimalloc_for_tree_sitter();
+    rapid_tests::alloc::init();
     let Some(files) = rapid_tests::corpus_files() else {
         eprintln!("no corpus (set RAPID_CORPUS)");
         return ExitCode::from(2);

@@ -8,26 +8,12 @@ use std::path::{Path, PathBuf};
 
 use rapid_analyzer::text::{Decoded, decode};
 
-/// The global allocator of the `rapid` binary, for the benches and
-/// examples to declare (`#[global_allocator] static A: Allocator =
-/// Allocator;`) so their figures agree with the binary's.
-pub use mimalloc::MiMalloc as Allocator;
-
-/// Makes tree-sitter allocate with mimalloc too, as the `rapid` binary
-/// does. Call it first thing in `main`, before any tree-sitter object exists.
-#[allow(unsafe_code)]
-pub fn use_mimalloc_for_tree_sitter() {
-    let allocator = tree_sitter::Allocator {
-        malloc: libmimalloc_sys::mi_malloc,
-        calloc: libmimalloc_sys::mi_calloc,
-        realloc: libmimalloc_sys::mi_realloc,
-        free: libmimalloc_sys::mi_free,
-    };
-    // SAFETY: as in the binary (`lsp/src/alloc.rs`): called once at the
-    // start of `main`, before any tree-sitter object exists, with functions
-    // of the C signatures and semantics tree-sitter expects.
-    unsafe { tree_sitter::set_allocator(Some(allocator)) }
-}
+/// The `rapid` binary's allocator (mimalloc, for Rust and for
+/// tree-sitter), the same file compiled here: every test, bench and example
+/// of this crate allocates as the binary does, so their figures agree with
+/// it. Benches and examples call [`alloc::init`] first thing in `main`.
+#[path = "../../lsp/src/alloc.rs"]
+pub mod alloc;
 
 /// The corpus folder, if there is one.
 pub fn corpus_dir() -> Option<PathBuf> {
