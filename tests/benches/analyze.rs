@@ -127,42 +127,17 @@ fn edit_recheck_largest(bencher: Bencher<'_, '_>) {
     for (p, _) in &corpus.files {
         ws.diagnostics(p);
     }
-    // Insert a space at the start of the first line inside a routine body.
-    let at = ["PROC ", "FUNC ", "TRAP "]
-        .iter()
-        .filter_map(|k| text.find(k))
-        .min()
-        .and_then(|i| text[i..].find('\n').map(|j| i + j + 1))
-        .unwrap_or(0);
-    let mut edited = text.clone();
-    edited.insert(at, ' ');
-    let versions = [text.clone(), edited];
+    let edit = rapid_tests::SpaceEdit::new(text);
     let mut flip = 0usize;
     bencher.bench_local(|| {
         flip ^= 1;
-        let (old, new) = (&versions[1 - flip], &versions[flip]);
         let Some(unit) = ws.unit(path) else {
             return 0;
         };
         let mut tree = unit.tree.clone();
-        let point = |s: &str| tree_sitter::Point {
-            row: s.matches('\n').count(),
-            column: s.len() - s.rfind('\n').map_or(0, |i| i + 1),
-        };
-        let (old_end, new_end) = if new.len() > old.len() {
-            (at, at + 1)
-        } else {
-            (at + 1, at)
-        };
-        tree.edit(&tree_sitter::InputEdit {
-            start_byte: at,
-            old_end_byte: old_end,
-            new_end_byte: new_end,
-            start_position: point(&old[..at]),
-            old_end_position: point(&old[..old_end]),
-            new_end_position: point(&new[..new_end]),
-        });
-        ws.set_unit(Unit::new(path.clone(), new.clone(), Some(&tree)));
+        tree.edit(&edit.input_edit(flip));
+        let new = edit.versions[flip].clone();
+        ws.set_unit(Unit::new(path.clone(), new, Some(&tree)));
         ws.diagnostics(path).len()
     });
 }
@@ -177,34 +152,16 @@ fn edit_reparse_only_largest(bencher: Bencher<'_, '_>) {
     let Some((path, text)) = corpus.files.iter().max_by_key(|(_, t)| t.len()) else {
         return;
     };
-    let at = ["PROC ", "FUNC ", "TRAP "]
-        .iter()
-        .filter_map(|k| text.find(k))
-        .min()
-        .and_then(|i| text[i..].find('\n').map(|j| i + j + 1))
-        .unwrap_or(0);
-    let mut edited = text.clone();
-    edited.insert(at, ' ');
+    let edit = rapid_tests::SpaceEdit::new(text);
     let unit = Unit::new(path.clone(), text.clone(), None);
-    let point = |s: &str| tree_sitter::Point {
-        row: s.matches('\n').count(),
-        column: s.len() - s.rfind('\n').map_or(0, |i| i + 1),
-    };
-    let edit = tree_sitter::InputEdit {
-        start_byte: at,
-        old_end_byte: at,
-        new_end_byte: at + 1,
-        start_position: point(&text[..at]),
-        old_end_position: point(&text[..at]),
-        new_end_position: point(&edited[..at + 1]),
-    };
+    let (input, edited) = (edit.input_edit(1), &edit.versions[1]);
     let mut parser = tree_sitter::Parser::new();
     let _ = parser.set_language(&tree_sitter_rapid::LANGUAGE.into());
     bencher.bench_local(|| {
         let mut tree = unit.tree.clone();
-        tree.edit(&edit);
+        tree.edit(&input);
         parser
-            .parse(&edited, Some(&tree))
+            .parse(edited, Some(&tree))
             .map(|t| t.root_node().child_count())
     });
 }

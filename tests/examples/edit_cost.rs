@@ -21,8 +21,7 @@ use rapid_analyzer::workspace::Workspace;
 
 struct Edit<'a> {
     path: &'a str,
-    versions: [String; 2],
-    at: usize,
+    space: rapid_tests::SpaceEdit,
 }
 
 fn main() -> ExitCode {
@@ -38,18 +37,9 @@ fn main() -> ExitCode {
     let Some((path, text)) = inputs.modules.iter().max_by_key(|(_, t)| t.len()) else {
         return ExitCode::from(2);
     };
-    let at = ["PROC ", "FUNC ", "TRAP "]
-        .iter()
-        .filter_map(|k| text.find(k))
-        .min()
-        .and_then(|i| text[i..].find('\n').map(|j| i + j + 1))
-        .unwrap_or(0);
-    let mut edited = text.clone();
-    edited.insert(at, ' ');
     let edit = Edit {
         path,
-        versions: [text.clone(), edited],
-        at,
+        space: rapid_tests::SpaceEdit::new(text),
     };
     let mut ws = Workspace::new();
     for (p, t) in &inputs.configs {
@@ -74,7 +64,7 @@ fn main() -> ExitCode {
             // Outside `edit_once`: keep the workspace's tree in step.
             if let Some(tree) = reparse_once(&ws, &mut parser, &edit, flip) {
                 total += tree.root_node().child_count() as usize;
-                let text = edit.versions[flip].clone();
+                let text = edit.space.versions[flip].clone();
                 ws.set_unit(Unit::from_tree(edit.path.to_owned(), text, Some(tree)));
             }
         } else {
@@ -87,26 +77,8 @@ fn main() -> ExitCode {
 
 /// The old tree of the edited file, edited.
 fn edited_tree(ws: &Workspace, edit: &Edit<'_>, flip: usize) -> Option<tree_sitter::Tree> {
-    let (old, new) = (&edit.versions[1 - flip], &edit.versions[flip]);
-    let at = edit.at;
     let mut tree = ws.unit(edit.path)?.tree.clone();
-    let point = |s: &str| tree_sitter::Point {
-        row: s.matches('\n').count(),
-        column: s.len() - s.rfind('\n').map_or(0, |i| i + 1),
-    };
-    let (old_end, new_end) = if new.len() > old.len() {
-        (at, at + 1)
-    } else {
-        (at + 1, at)
-    };
-    tree.edit(&tree_sitter::InputEdit {
-        start_byte: at,
-        old_end_byte: old_end,
-        new_end_byte: new_end,
-        start_position: point(&old[..at]),
-        old_end_position: point(&old[..old_end]),
-        new_end_position: point(&new[..new_end]),
-    });
+    tree.edit(&edit.space.input_edit(flip));
     Some(tree)
 }
 
@@ -118,7 +90,7 @@ fn reparse_once(
     flip: usize,
 ) -> Option<tree_sitter::Tree> {
     let tree = edited_tree(ws, edit, flip)?;
-    parser.parse(&edit.versions[flip], Some(&tree))
+    parser.parse(&edit.space.versions[flip], Some(&tree))
 }
 
 #[inline(never)]
@@ -126,7 +98,7 @@ fn edit_once(ws: &mut Workspace, edit: &Edit<'_>, flip: usize) -> usize {
     let Some(tree) = edited_tree(ws, edit, flip) else {
         return 0;
     };
-    let text = edit.versions[flip].clone();
+    let text = edit.space.versions[flip].clone();
     ws.set_unit(Unit::new(edit.path.to_owned(), text, Some(&tree)));
     ws.diagnostics(edit.path).len()
 }

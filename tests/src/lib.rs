@@ -136,3 +136,54 @@ pub fn corpus_files() -> Option<Vec<(PathBuf, Vec<u8>)>> {
             .collect(),
     )
 }
+
+/// The one-character edit of the edit benchmarks: a space inserted at the
+/// start of the first line inside the first routine of a text, then removed
+/// again, alternately.
+pub struct SpaceEdit {
+    /// Where the space goes.
+    pub at: usize,
+    /// The text without the space (`0`) and with it (`1`).
+    pub versions: [String; 2],
+}
+
+impl SpaceEdit {
+    pub fn new(text: &str) -> SpaceEdit {
+        let at = ["PROC ", "FUNC ", "TRAP "]
+            .iter()
+            .filter_map(|k| text.find(k))
+            .min()
+            .and_then(|i| text[i..].find('\n').map(|j| i + j + 1))
+            .unwrap_or(0);
+        let mut edited = text.to_owned();
+        edited.insert(at, ' ');
+        SpaceEdit {
+            at,
+            versions: [text.to_owned(), edited],
+        }
+    }
+
+    /// The edit from `versions[1 - to]` to `versions[to]`, as tree-sitter
+    /// takes it.
+    pub fn input_edit(&self, to: usize) -> tree_sitter::InputEdit {
+        let (old, new) = (&self.versions[1 - to], &self.versions[to]);
+        let at = self.at;
+        let point = |s: &str| tree_sitter::Point {
+            row: s.matches('\n').count(),
+            column: s.len() - s.rfind('\n').map_or(0, |i| i + 1),
+        };
+        let (old_end, new_end) = if new.len() > old.len() {
+            (at, at + 1)
+        } else {
+            (at + 1, at)
+        };
+        tree_sitter::InputEdit {
+            start_byte: at,
+            old_end_byte: old_end,
+            new_end_byte: new_end,
+            start_position: point(&old[..at]),
+            old_end_position: point(&old[..old_end]),
+            new_end_position: point(&new[..new_end]),
+        }
+    }
+}
