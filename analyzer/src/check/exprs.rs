@@ -1,6 +1,8 @@
 //! Expressions: their types, and the places (data references) that
 //! assignments and reference parameters need.
 
+use std::ops::Range;
+
 use tree_sitter::Node;
 
 use super::{Cx, Place, calls};
@@ -149,23 +151,8 @@ fn aggregate<'t>(cx: &mut Cx<'t>, node: Node<'t>, expected: &Ty, sizes: &[Option
     let elements = fields(node, "element");
     match expected {
         Ty::Array(elem, dims) => {
-            let inner = if *dims > 1 {
-                Ty::Array(elem.clone(), dims - 1)
-            } else {
-                (**elem).clone()
-            };
-            if let Some(Some(size)) = sizes.first()
-                && *size != elements.len()
-            {
-                cx.report(
-                    &rules::aggregate_arity::RULE,
-                    node.byte_range(),
-                    format!(
-                        "the array has {size} elements, this aggregate gives {}",
-                        elements.len()
-                    ),
-                );
-            }
+            let inner = element_type(elem, *dims);
+            check_array_arity(cx, node.byte_range(), sizes, elements.len());
             let rest = sizes.get(1..).unwrap_or_default();
             for e in elements {
                 check_sized(cx, e, &inner, rest, "an array element");
@@ -173,33 +160,13 @@ fn aggregate<'t>(cx: &mut Cx<'t>, node: Node<'t>, expected: &Ty, sizes: &[Option
         }
         Ty::Named(name) if cx.types.exists(name) => {
             let Some(components) = cx.types.components(expected) else {
-                cx.report(
-                    &rules::type_mismatch::RULE,
-                    node.byte_range(),
-                    format!(
-                        "an aggregate [...] cannot be {}; it is not a record or an array",
-                        a_type(expected)
-                    ),
-                );
+                report_not_aggregate(cx, node.byte_range(), expected);
                 for e in elements {
                     expr(cx, e, None);
                 }
                 return;
             };
-            if components.len() != elements.len() {
-                let names: Vec<&str> = components.iter().map(|(n, _)| n.as_str()).collect();
-                cx.report(
-                    &rules::aggregate_arity::RULE,
-                    node.byte_range(),
-                    format!(
-                        "{} has {} components ({}), this aggregate gives {}",
-                        expected,
-                        components.len(),
-                        names.join(", "),
-                        elements.len()
-                    ),
-                );
-            }
+            check_record_arity(cx, node.byte_range(), expected, &components, elements.len());
             for (e, (name, ty)) in elements.into_iter().zip(
                 components
                     .iter()
@@ -220,6 +187,64 @@ fn aggregate<'t>(cx: &mut Cx<'t>, node: Node<'t>, expected: &Ty, sizes: &[Option
             }
         }
     }
+}
+
+/// The type of an array aggregate's elements: the array with one dimension
+/// less.
+fn element_type(elem: &Ty, dims: u8) -> Ty {
+    if dims > 1 {
+        Ty::Array(Box::new(elem.clone()), dims - 1)
+    } else {
+        elem.clone()
+    }
+}
+
+/// An aggregate whose element count is not its array's size (when the size
+/// is written as a number).
+fn check_array_arity(cx: &mut Cx<'_>, range: Range<usize>, sizes: &[Option<usize>], given: usize) {
+    if let Some(Some(size)) = sizes.first()
+        && *size != given
+    {
+        cx.report(
+            &rules::aggregate_arity::RULE,
+            range,
+            format!("the array has {size} elements, this aggregate gives {given}"),
+        );
+    }
+}
+
+/// An aggregate whose element count is not its record's component count.
+fn check_record_arity(
+    cx: &mut Cx<'_>,
+    range: Range<usize>,
+    expected: &Ty,
+    components: &[(String, Ty)],
+    given: usize,
+) {
+    if components.len() != given {
+        let names: Vec<&str> = components.iter().map(|(n, _)| n.as_str()).collect();
+        cx.report(
+            &rules::aggregate_arity::RULE,
+            range,
+            format!(
+                "{expected} has {} components ({}), this aggregate gives {given}",
+                components.len(),
+                names.join(", "),
+            ),
+        );
+    }
+}
+
+/// An aggregate where the expected type is neither a record nor an array.
+fn report_not_aggregate(cx: &mut Cx<'_>, range: Range<usize>, expected: &Ty) {
+    cx.report(
+        &rules::type_mismatch::RULE,
+        range,
+        format!(
+            "an aggregate [...] cannot be {}; it is not a record or an array",
+            a_type(expected)
+        ),
+    );
 }
 
 /// What an element of a literal aggregate is, for messages (built only when
@@ -253,23 +278,8 @@ fn literal_aggregate_check(
 ) {
     match expected {
         Ty::Array(elem, dims) => {
-            let inner = if *dims > 1 {
-                Ty::Array(elem.clone(), dims - 1)
-            } else {
-                (**elem).clone()
-            };
-            if let Some(Some(size)) = sizes.first()
-                && *size != elements.len()
-            {
-                cx.report(
-                    &rules::aggregate_arity::RULE,
-                    range,
-                    format!(
-                        "the array has {size} elements, this aggregate gives {}",
-                        elements.len()
-                    ),
-                );
-            }
+            let inner = element_type(elem, *dims);
+            check_array_arity(cx, range.clone(), sizes, elements.len());
             let rest = sizes.get(1..).unwrap_or_default();
             for e in elements {
                 literal_check(cx, e, &inner, rest, What::ArrayElement);
@@ -277,30 +287,10 @@ fn literal_aggregate_check(
         }
         Ty::Named(name) if cx.types.exists(name) => {
             let Some(components) = cx.types.components_shared(expected) else {
-                cx.report(
-                    &rules::type_mismatch::RULE,
-                    range,
-                    format!(
-                        "an aggregate [...] cannot be {}; it is not a record or an array",
-                        a_type(expected)
-                    ),
-                );
+                report_not_aggregate(cx, range, expected);
                 return;
             };
-            if components.len() != elements.len() {
-                let names: Vec<&str> = components.iter().map(|(n, _)| n.as_str()).collect();
-                cx.report(
-                    &rules::aggregate_arity::RULE,
-                    range,
-                    format!(
-                        "{} has {} components ({}), this aggregate gives {}",
-                        expected,
-                        components.len(),
-                        names.join(", "),
-                        elements.len()
-                    ),
-                );
-            }
+            check_record_arity(cx, range, expected, &components, elements.len());
             for (i, e) in elements.iter().enumerate() {
                 match components.get(i) {
                     Some((name, ty)) => literal_check(cx, e, ty, &[], What::Component(name)),
