@@ -95,7 +95,51 @@ pub fn with_env<R>(
         .filter(|&(unit, offset)| in_routine(task, unit, offset))
         .and_then(|(unit, offset)| Cx::at(task, unit, offset))
         .and_then(|cx| RoutineNames::of(&cx));
-    with_routine(task, at, options, routine, f)
+    with_routine(task, at, options, routine, None, f)
+}
+
+/// The lowered initial values of a task's module data, kept by a checker
+/// context for its whole check so that each is lowered from the syntax tree
+/// once, not at every use (lowering depends only on the declaration and its
+/// module).
+pub(crate) struct InitCache {
+    /// The first slot and the number of data of each unit's modules.
+    modules: Vec<Vec<(usize, usize)>>,
+    slots: Vec<OnceCell<Option<Expr>>>,
+}
+
+impl InitCache {
+    pub(crate) fn new(task: &Task) -> InitCache {
+        let mut n = 0;
+        let modules = task
+            .units
+            .iter()
+            .map(|u| {
+                u.items
+                    .modules
+                    .iter()
+                    .map(|m| {
+                        let first = n;
+                        n += m.data.len();
+                        (first, m.data.len())
+                    })
+                    .collect()
+            })
+            .collect();
+        InitCache {
+            modules,
+            slots: std::iter::repeat_with(OnceCell::new).take(n).collect(),
+        }
+    }
+
+    /// The slot of module data `r`.
+    fn slot(&self, r: ItemRef) -> Option<&OnceCell<Option<Expr>>> {
+        let Item::Data(i) = r.item else {
+            return None;
+        };
+        let &(first, len) = self.modules.get(r.unit)?.get(r.module)?;
+        (i < len).then(|| self.slots.get(first + i))?
+    }
 }
 
 /// Is `offset` of unit `unit` inside a routine?
@@ -115,9 +159,10 @@ fn with_routine<'t, R>(
     at: Option<(usize, usize)>,
     options: EnvOptions,
     routine: Option<RoutineNames<'t>>,
+    inits: Option<&'t InitCache>,
     f: impl FnOnce(&dyn Env) -> R,
 ) -> R {
-    let shared = Shared::new(task, options);
+    let shared = Shared::new(task, options, inits);
     let mut scopes = Vec::new();
     for (u, unit) in task.units.iter().enumerate() {
         for (m, _) in unit.items.modules.iter().enumerate() {
@@ -219,10 +264,12 @@ struct Shared<'t> {
     /// Index of each unit's first module in the scope list.
     offsets: Vec<usize>,
     types: OnceCell<crate::ty::Types<'t>>,
+    /// Lowered initial values of module data, kept across calls.
+    inits: Option<&'t InitCache>,
 }
 
 impl<'t> Shared<'t> {
-    fn new(task: &'t Task, options: EnvOptions) -> Shared<'t> {
+    fn new(task: &'t Task, options: EnvOptions, inits: Option<&'t InitCache>) -> Shared<'t> {
         let mut offsets = Vec::with_capacity(task.units.len());
         let mut n = 0;
         for u in &task.units {
@@ -234,6 +281,7 @@ impl<'t> Shared<'t> {
             options,
             offsets,
             types: OnceCell::new(),
+            inits,
         }
     }
 
@@ -371,6 +419,7 @@ impl Env for ModuleScope<'_, '_> {
             return data_lookup(
                 self.shared,
                 d,
+                self.shared.inits.and_then(|c| c.slot(r)),
                 unit,
                 Some(scope),
                 scope,
@@ -481,10 +530,12 @@ fn catalogue_lookup<'a>(d: &'static Datum, options: EnvOptions) -> Lookup<'a> {
 
 /// What a data declaration gives the evaluator. `scope` is where names in
 /// its initial value resolve (`None`: the asking environment); `dims_env`
-/// evaluates its array sizes.
+/// evaluates its array sizes. `slot` keeps its lowered initial value.
+#[allow(clippy::too_many_arguments)]
 fn data_lookup<'a>(
     shared: &Shared<'_>,
     d: &DataDecl,
+    slot: Option<&'a OnceCell<Option<Expr>>>,
     unit: &Unit,
     scope: Option<&'a dyn Env>,
     dims_env: &dyn Env,
@@ -492,16 +543,22 @@ fn data_lookup<'a>(
     dims_depth: &Cell<u32>,
 ) -> Lookup<'a> {
     let ty = decl_type(d, unit, dims_env, dims_depth);
-    let init = || {
+    let lower = || {
         d.init
             .as_ref()
             .and_then(|r| expression_at(unit, r.clone()))
             .map(|n| lower_with(n, &unit.text, is_builtin))
     };
+    let init = || -> Option<Cow<'a, Expr>> {
+        match slot {
+            Some(slot) => slot.get_or_init(lower).as_ref().map(Cow::Borrowed),
+            None => lower().map(Cow::Owned),
+        }
+    };
     let kind = match d.storage {
         Storage::Const => {
             return Lookup::Constant {
-                expr: Cow::Owned(init().unwrap_or(Expr::Unknown)),
+                expr: init().unwrap_or(Cow::Owned(Expr::Unknown)),
                 ty,
                 scope,
             };
@@ -513,7 +570,7 @@ fn data_lookup<'a>(
         kind,
         ty,
         initial: if shared.offers_initial(d.storage) {
-            init().map(Cow::Owned)
+            init()
         } else {
             None
         },
@@ -618,6 +675,7 @@ impl Env for RoutineScope<'_, '_> {
                 return data_lookup(
                     self.module.shared,
                     d,
+                    None,
                     self.unit,
                     None,
                     self,
@@ -1088,11 +1146,13 @@ pub(crate) fn check_constant_errors<'t>(cx: &mut Cx<'t>, node: Node<'t>) {
     // Typing the context must not disturb the checker's findings.
     let diags = std::mem::take(&mut cx.diags);
     let signals = cx.reported_signals.clone();
+    let inits = cx.inits.take().unwrap_or_else(|| InitCache::new(task));
     with_routine(
         task,
         Some((cx.unit_idx, node.start_byte())),
         EnvOptions::default(),
         routine,
+        Some(&inits),
         |env| {
             for path in found {
                 let Some((n, _)) = path.last().copied() else {
@@ -1129,6 +1189,7 @@ pub(crate) fn check_constant_errors<'t>(cx: &mut Cx<'t>, node: Node<'t>) {
     );
     cx.diags = diags;
     cx.reported_signals = signals;
+    cx.inits = Some(inits);
     for (range, e) in reports {
         cx.report(
             &crate::rules::constant_error::RULE,

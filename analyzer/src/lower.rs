@@ -11,7 +11,7 @@
 use rapid_evaluator::{Arg, BinOp, Expr, UnOp};
 use tree_sitter::Node;
 
-use crate::syntax_util::{field, fields, has_token, text_of};
+use crate::syntax_util::{Literal, field, fields, has_token, text_of};
 
 /// Deepest nesting of expression nodes that is lowered; deeper
 /// sub-expressions become [`Expr::Unknown`]. Keeps lowering (and dropping
@@ -110,6 +110,11 @@ impl Lowering<'_> {
                 Expr::Index(Box::new(self.child(node, "object", depth)), indexes)
             }
             "aggregate" => {
+                // Literal tables and robtargets: read from the text, as the
+                // tree would give them, without walking their many nodes.
+                if let Some(literal) = crate::syntax_util::literal_aggregate(node, self.text) {
+                    return self.literal(&literal);
+                }
                 let elements = fields(node, "element");
                 if elements.is_empty() {
                     return Expr::Unknown;
@@ -117,6 +122,29 @@ impl Lowering<'_> {
                 Expr::Aggregate(elements.into_iter().map(|e| self.expr(e, depth)).collect())
             }
             _ => Expr::Unknown,
+        }
+    }
+
+    /// A literal read from the text, lowered as its nodes would be: a
+    /// signed number is a unary operation on the number.
+    fn literal(&self, literal: &Literal) -> Expr {
+        let text = |r: &std::ops::Range<usize>| self.text.get(r.clone()).unwrap_or_default();
+        match literal {
+            Literal::Number(r) => {
+                let t = text(r);
+                let op = match t.as_bytes().first() {
+                    Some(b'-') => UnOp::Neg,
+                    Some(b'+') => UnOp::Plus,
+                    _ => return Expr::Num(t.to_owned()),
+                };
+                let digits = t.get(1..).unwrap_or_default().trim_start();
+                Expr::Unary(op, Box::new(Expr::Num(digits.to_owned())))
+            }
+            Literal::String(r) => Expr::Str(text(r).to_owned()),
+            Literal::Boolean(r) => Expr::Bool(text(r).eq_ignore_ascii_case("true")),
+            Literal::Aggregate(_, elements) => {
+                Expr::Aggregate(elements.iter().map(|e| self.literal(e)).collect())
+            }
         }
     }
 
@@ -224,6 +252,24 @@ mod tests {
         }
         assert_eq!(node.byte_range(), start..end, "{expr} is one node");
         format!("{:?}", lower_with(node, &text, is_builtin))
+    }
+
+    #[test]
+    fn literal_aggregates_read_from_the_text_lower_as_their_nodes() {
+        // Each element alone takes the tree's way; the aggregate is read
+        // from the text.
+        let elements = [
+            "1", "-1", "- 2.5", "+ 3", "+.5", "9E+09", "-1.5e-3", "\"a b\"", "TRUE", "false",
+        ];
+        let expected = elements.iter().map(|e| lowered(e)).collect::<Vec<_>>();
+        assert_eq!(
+            lowered(&format!("[{}]", elements.join(", "))),
+            format!("Aggregate([{}])", expected.join(", "))
+        );
+        assert_eq!(
+            lowered("[[1 , -2],[\"x\"], [[TRUE]]]"),
+            r#"Aggregate([Aggregate([Num("1"), Unary(Neg, Num("2"))]), Aggregate([Str("\"x\"")]), Aggregate([Aggregate([Bool(true)])])])"#
+        );
     }
 
     #[test]

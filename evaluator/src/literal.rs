@@ -148,7 +148,11 @@ pub fn parse_num_literal(src: &str) -> Result<f64, EvalError> {
     if i != bytes.len() {
         return Err(bad());
     }
-    // Rust's parser accepts "1." and ".5" and exponents; normalise "1.E3".
+    // Rust's parser accepts "1." and ".5" and exponents; normalise "1.E3"
+    // (only when it is there: this runs for every number of every table).
+    if !s.contains(".e") && !s.contains(".E") {
+        return s.parse::<f64>().map_err(|_| bad());
+    }
     let text = s.replace(".e", ".0e").replace(".E", ".0E");
     text.parse::<f64>().map_err(|_| bad())
 }

@@ -369,6 +369,9 @@ pub(crate) struct Cx<'t> {
     /// The first position of each unconfigured signal's diagnostic that a
     /// reused statement result added, by message.
     reused_signals: HashMap<String, (usize, usize)>,
+    /// Lowered initial values of module data for rule E413, made on first
+    /// use and kept for the whole check.
+    pub(crate) inits: Option<crate::consteval::InitCache>,
 }
 
 /// What a statement's cache key holds besides its text (the task's interface
@@ -414,6 +417,7 @@ impl<'t> Cx<'t> {
             close_memo: HashMap::new(),
             module_close_memo: HashMap::new(),
             reused_signals: HashMap::new(),
+            inits: None,
         }
     }
 
