@@ -434,6 +434,12 @@ pub fn check_files(
     progress: &ProgressBar,
 ) -> Vec<Outcome> {
     let mut clock = std::time::Instant::now();
+    // The checker needs the catalogue (some milliseconds to load): load it
+    // on a thread that parsing leaves idle (a single large file is parsed
+    // on one thread).
+    rayon::spawn(|| {
+        let _ = rapid_analyzer::catalogue::catalogue();
+    });
     // Read, decode and parse each file in one parallel pass, largest files
     // first so that no big module is left to one thread at the end.
     let mut order: Vec<(u64, usize)> = files
