@@ -180,12 +180,7 @@ fn with_routine<'t, R>(
     let Some(u) = task.units.get(unit) else {
         return f(&global);
     };
-    let Some(m) = u
-        .items
-        .modules
-        .iter()
-        .position(|m| m.range.start <= offset && offset <= m.range.end)
-    else {
+    let Some(m) = u.items.module_at(offset) else {
         return f(&global);
     };
     let Some(scope) = shared.index(unit, m).and_then(|i| scopes.get(i)) else {
@@ -857,13 +852,7 @@ fn evaluate_node<'t>(
 /// Where an expression of `unit` is, for [`is_builtin_call`]: the unit and
 /// the module around `offset`.
 fn module_at(task: &Task, unit: usize, offset: usize) -> Option<(usize, usize)> {
-    let m = task
-        .units
-        .get(unit)?
-        .items
-        .modules
-        .iter()
-        .position(|m| m.range.start <= offset && offset <= m.range.end)?;
+    let m = task.units.get(unit)?.items.module_at(offset)?;
     Some((unit, m))
 }
 

@@ -155,6 +155,13 @@ pub struct AliasDecl {
 }
 
 impl FileItems {
+    /// The index of the module whose text holds `offset` (its end included).
+    pub fn module_at(&self, offset: usize) -> Option<usize> {
+        self.modules
+            .iter()
+            .position(|m| m.range.start <= offset && offset <= m.range.end)
+    }
+
     /// Lowers a parsed file. Placeholders and broken declarations are left
     /// out; nothing here fails.
     pub fn lower(tree: &Tree, text: &str) -> FileItems {

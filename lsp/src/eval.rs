@@ -84,13 +84,7 @@ pub fn run(args: EvalArgs) -> ExitCode {
         return ExitCode::from(2);
     };
     let module = at.and_then(|(unit, offset)| {
-        let m = task
-            .units
-            .get(unit)?
-            .items
-            .modules
-            .iter()
-            .position(|m| m.range.start <= offset && offset <= m.range.end)?;
+        let m = task.units.get(unit)?.items.module_at(offset)?;
         Some((unit, m))
     });
     let expr = lower_with(node, &expr_unit.text, &|name| {
