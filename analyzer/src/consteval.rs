@@ -1268,25 +1268,17 @@ fn may_hold_operation(text: &str) -> bool {
 
 /// Statements and declarations below a statement are checked on their own.
 fn is_statement_like(kind: &str) -> bool {
-    matches!(
-        kind,
-        "assignment"
-            | "procedure_call"
-            | "if_statement"
-            | "compact_if_statement"
-            | "for_statement"
-            | "while_statement"
-            | "test_statement"
-            | "label"
-            | "goto_statement"
-            | "return_statement"
-            | "raise_statement"
-            | "exit_statement"
-            | "retry_statement"
-            | "trynext_statement"
-            | "connect_statement"
-            | "data_declaration"
-    )
+    crate::syntax_util::is_simple_statement(kind)
+        || matches!(
+            kind,
+            "if_statement"
+                | "compact_if_statement"
+                | "for_statement"
+                | "while_statement"
+                | "test_statement"
+                | "label"
+                | "data_declaration"
+        )
 }
 
 /// The children of a node with their field names.

@@ -327,3 +327,20 @@ pub fn argument_parts(arg: Node<'_>) -> ArgumentParts<'_> {
         }
     }
 }
+
+/// Statements that hold no statement list of their own (the grammar's
+/// simple statements, which a compact `IF` can hold).
+pub fn is_simple_statement(kind: &str) -> bool {
+    matches!(
+        kind,
+        "assignment"
+            | "procedure_call"
+            | "goto_statement"
+            | "return_statement"
+            | "raise_statement"
+            | "exit_statement"
+            | "retry_statement"
+            | "trynext_statement"
+            | "connect_statement"
+    )
+}

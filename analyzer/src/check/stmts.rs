@@ -95,21 +95,11 @@ fn in_comment(text: &str, at: usize) -> bool {
 /// Nodes of these kinds hold no statement list, so (when they parsed
 /// without error) no label: the label walk skips them.
 fn cannot_hold_label(kind: &str) -> bool {
-    matches!(
-        kind,
-        "assignment"
-            | "procedure_call"
-            | "comment"
-            | "compact_if_statement"
-            | "goto_statement"
-            | "return_statement"
-            | "raise_statement"
-            | "exit_statement"
-            | "retry_statement"
-            | "trynext_statement"
-            | "connect_statement"
-            | "data_declaration"
-    )
+    crate::syntax_util::is_simple_statement(kind)
+        || matches!(
+            kind,
+            "comment" | "compact_if_statement" | "data_declaration"
+        )
 }
 
 /// Checks a statement list, and reports the statements no path reaches.
