@@ -35,6 +35,25 @@ struct Fixture {
     files: Vec<(String, String)>,
 }
 
+impl Fixture {
+    /// A workspace of the fixture's files: configurations, program files
+    /// and modules.
+    fn workspace(&self) -> Workspace {
+        let mut ws = Workspace::new();
+        for (path, text) in &self.files {
+            let lower = path.to_ascii_lowercase();
+            if lower.ends_with(".cfg") {
+                ws.set_config(path, text);
+            } else if lower.ends_with(".pgf") {
+                ws.set_program(path, text);
+            } else if is_module(Path::new(path)) {
+                ws.set_file(path, text.clone());
+            }
+        }
+        ws
+    }
+}
+
 fn root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures")
 }
@@ -153,17 +172,7 @@ fn expected_in(file: &str, text: &str) -> BTreeSet<Finding> {
 
 /// Runs a fixture: (findings, rendered diagnostics by finding).
 fn run(fixture: &Fixture) -> (BTreeSet<Finding>, BTreeMap<Finding, String>) {
-    let mut ws = Workspace::new();
-    for (path, text) in &fixture.files {
-        let lower = path.to_ascii_lowercase();
-        if lower.ends_with(".cfg") {
-            ws.set_config(path, text);
-        } else if lower.ends_with(".pgf") {
-            ws.set_program(path, text);
-        } else if is_module(Path::new(path)) {
-            ws.set_file(path, text.clone());
-        }
-    }
+    let mut ws = fixture.workspace();
     let mut found = BTreeSet::new();
     let mut rendered = BTreeMap::new();
     for (path, text) in &fixture.files {
@@ -338,16 +347,7 @@ fn show() {
 fn cached_rechecks_equal_fresh_checks() {
     let mut compared = 0;
     for fixture in fixtures() {
-        let mut ws = Workspace::new();
-        for (path, text) in &fixture.files {
-            if path.to_ascii_lowercase().ends_with(".cfg") {
-                ws.set_config(path, text);
-            } else if path.to_ascii_lowercase().ends_with(".pgf") {
-                ws.set_program(path, text);
-            } else if is_module(Path::new(path)) {
-                ws.set_file(path, text.clone());
-            }
-        }
+        let mut ws = fixture.workspace();
         for (path, text) in &fixture.files {
             if !is_module(Path::new(path)) {
                 continue;
@@ -473,18 +473,14 @@ fn edit_of_kind(text: &str, kind: usize, line: usize) -> Option<String> {
 fn chained_edits_recheck_like_fresh_checks() {
     let mut compared = 0;
     for fixture in fixtures() {
-        let mut ws = Workspace::new();
-        let mut modules = Vec::new();
-        for (path, text) in &fixture.files {
-            if path.to_ascii_lowercase().ends_with(".cfg") {
-                ws.set_config(path, text);
-            } else if path.to_ascii_lowercase().ends_with(".pgf") {
-                ws.set_program(path, text);
-            } else if is_module(Path::new(path)) {
-                ws.set_file(path, text.clone());
-                modules.push(path.clone());
-            }
-        }
+        let mut ws = fixture.workspace();
+        let modules: Vec<String> = fixture
+            .files
+            .iter()
+            .map(|(path, _)| path)
+            .filter(|path| is_module(Path::new(path)))
+            .cloned()
+            .collect();
         if modules.is_empty() {
             continue;
         }
