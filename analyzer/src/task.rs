@@ -25,9 +25,9 @@ pub struct Unit {
     /// in related locations).
     pub path: String,
     pub text: String,
-    /// The syntax tree; it may have been released ([`Unit::release_tree`])
-    /// and is then parsed again on use.
-    pub tree: UnitTree,
+    /// The syntax tree ([`Unit::tree`]); it may have been released
+    /// ([`Unit::release_tree`]) and is then parsed again on use.
+    tree: UnitTree,
     pub items: FileItems,
     pub interface: u64,
     /// A hash of the values of the unit's module data and the sizes of its
@@ -71,7 +71,12 @@ impl Unit {
     /// its tree); the next use of [`Unit::tree`] parses the text again.
     /// Everything else (items, interface, syntax diagnostics) stays.
     pub fn release_tree(&mut self) {
-        self.tree.release(&self.text);
+        self.tree.release();
+    }
+
+    /// The syntax tree, parsed again from the text if it was released.
+    pub fn tree(&self) -> &Tree {
+        self.tree.get(&self.text)
     }
 
     fn empty(path: String, text: String, tree: Option<Tree>) -> Unit {

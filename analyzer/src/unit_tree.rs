@@ -9,36 +9,30 @@
 //! only now and then (a reference search, a constant defined in another
 //! module), so it can release their trees and parse them again on demand.
 //!
-//! [`UnitTree`] dereferences to [`Tree`], so `unit.tree.root_node()` reads
-//! the same whether the tree was kept or is parsed again; once parsed again,
-//! it stays.
+//! [`crate::task::Unit::tree`] reads the same whether the tree was kept or
+//! is parsed again (from the unit's own text); once parsed again, it stays.
 
 use std::fmt;
-use std::ops::Deref;
 use std::sync::OnceLock;
 
 use tree_sitter::Tree;
 
+/// A unit's tree, kept or released. It holds no text of its own: the unit
+/// passes its text when the tree is needed again ([`crate::task::Unit::tree`]).
 pub struct UnitTree {
     tree: OnceLock<Tree>,
-    /// The text to parse again from, while the tree is released.
-    source: Option<Box<str>>,
 }
 
 impl UnitTree {
     pub fn new(tree: Tree) -> UnitTree {
         UnitTree {
             tree: OnceLock::from(tree),
-            source: None,
         }
     }
 
-    /// Releases the tree; the next use parses `text` (the unit's text)
-    /// again.
-    pub fn release(&mut self, text: &str) {
-        if self.tree.take().is_some() {
-            self.source = Some(text.into());
-        }
+    /// Releases the tree; the next [`UnitTree::get`] parses again.
+    pub fn release(&mut self) {
+        self.tree.take();
     }
 
     /// Whether the tree is in memory (kept, or parsed again since it was
@@ -46,14 +40,11 @@ impl UnitTree {
     pub fn is_loaded(&self) -> bool {
         self.tree.get().is_some()
     }
-}
 
-impl Deref for UnitTree {
-    type Target = Tree;
-
-    fn deref(&self) -> &Tree {
+    /// The tree, parsed again from `text` (the unit's text) if it was
+    /// released.
+    pub fn get(&self, text: &str) -> &Tree {
         self.tree.get_or_init(|| {
-            let text = self.source.as_deref().unwrap_or_default();
             let mut parser = crate::syntax::parser();
             match crate::syntax::parse(&mut parser, text, None)
                 .or_else(|| crate::syntax::parse(&mut parser, "", None))
@@ -92,10 +83,10 @@ mod tests {
         let Some(mut tree) = tree else {
             panic!("no tree");
         };
-        let before = tree.root_node().to_sexp();
-        tree.release(text);
+        let before = tree.get(text).root_node().to_sexp();
+        tree.release();
         assert!(!tree.is_loaded());
-        assert_eq!(tree.root_node().to_sexp(), before);
+        assert_eq!(tree.get(text).root_node().to_sexp(), before);
         assert!(tree.is_loaded());
     }
 }

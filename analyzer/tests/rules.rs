@@ -411,7 +411,7 @@ fn edit_file(ws: &mut Workspace, path: &str, new: String) {
         old_end += 1;
         new_end += 1;
     }
-    let mut tree = unit.tree.clone();
+    let mut tree = unit.tree().clone();
     tree.edit(&tree_sitter::InputEdit {
         start_byte: start,
         old_end_byte: old_end,

@@ -164,7 +164,7 @@ fn expression_node<'u>(unit: &'u Unit, expr: &str) -> Option<tree_sitter::Node<'
     let start = PREFIX.len();
     let end = start + expr.len();
     let mut node = unit
-        .tree
+        .tree()
         .root_node()
         .named_descendant_for_byte_range(start, end)?;
     loop {

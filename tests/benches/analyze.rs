@@ -134,7 +134,7 @@ fn edit_recheck_largest(bencher: Bencher<'_, '_>) {
         let Some(unit) = ws.unit(path) else {
             return 0;
         };
-        let mut tree = unit.tree.clone();
+        let mut tree = unit.tree().clone();
         tree.edit(&edit.input_edit(flip));
         let new = edit.versions[flip].clone();
         ws.set_unit(Unit::new(path.clone(), new, Some(&tree)));
@@ -158,7 +158,7 @@ fn edit_reparse_only_largest(bencher: Bencher<'_, '_>) {
     let mut parser = tree_sitter::Parser::new();
     let _ = parser.set_language(&tree_sitter_rapid::LANGUAGE.into());
     bencher.bench_local(|| {
-        let mut tree = unit.tree.clone();
+        let mut tree = unit.tree().clone();
         tree.edit(&input);
         parser
             .parse(edited, Some(&tree))

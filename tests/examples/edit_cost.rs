@@ -77,7 +77,7 @@ fn main() -> ExitCode {
 
 /// The old tree of the edited file, edited.
 fn edited_tree(ws: &Workspace, edit: &Edit<'_>, flip: usize) -> Option<tree_sitter::Tree> {
-    let mut tree = ws.unit(edit.path)?.tree.clone();
+    let mut tree = ws.unit(edit.path)?.tree().clone();
     tree.edit(&edit.space.input_edit(flip));
     Some(tree)
 }

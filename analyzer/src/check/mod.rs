@@ -188,7 +188,7 @@ pub fn merge_unit_check(task: &Task, unit: usize, results: Vec<ShareResult>) -> 
         cx.used.extend(r.used);
         found.extend(r.pieces);
     }
-    let root = u.tree.root_node();
+    let root = u.tree().root_node();
     decls::check_file_wide(&mut cx, root);
     let mut found = found.into_iter();
     for (mi, module, _) in cx.modules() {
@@ -578,7 +578,7 @@ impl<'t> Cx<'t> {
     }
 
     fn check(&mut self) {
-        let root = self.unit.tree.root_node();
+        let root = self.unit.tree().root_node();
         decls::check_file_wide(self, root);
         for (mi, module, node) in self.modules() {
             self.enter_module(mi, module);
@@ -591,7 +591,7 @@ impl<'t> Cx<'t> {
     /// The unit's modules with their nodes (modules without a name were not
     /// lowered: the indexes stay aligned with the item tree's).
     fn modules(&self) -> Vec<(usize, &'t Module, Node<'t>)> {
-        let root = self.unit.tree.root_node();
+        let root = self.unit.tree().root_node();
         let mut cursor = root.walk();
         let nodes: Vec<Node<'t>> = root
             .named_children(&mut cursor)
@@ -1042,7 +1042,7 @@ impl<'t> Cx<'t> {
         let Some(decl) = module.routines.iter().find(|r| within(&r.range)) else {
             return Some(cx);
         };
-        let root = u.tree.root_node();
+        let root = u.tree().root_node();
         let Some(node) = root.named_descendant_for_byte_range(decl.range.start, decl.range.end)
         else {
             return Some(cx);

@@ -88,7 +88,10 @@ fn newline(text: &str) -> &'static str {
 
 /// The routine node around `offset`.
 fn routine_node(u: &Unit, offset: usize) -> Option<Node<'_>> {
-    let mut at = u.tree.root_node().descendant_for_byte_range(offset, offset);
+    let mut at = u
+        .tree()
+        .root_node()
+        .descendant_for_byte_range(offset, offset);
     while let Some(n) = at {
         if matches!(
             n.kind(),
@@ -141,7 +144,7 @@ fn declare_variable(task: &Task, unit: usize, d: &Diagnostic) -> Option<CodeActi
 fn infer_type(task: &Task, unit: usize, range: Range<usize>) -> Option<String> {
     let u = task.units.get(unit)?;
     let node = u
-        .tree
+        .tree()
         .root_node()
         .named_descendant_for_byte_range(range.start, range.end)?;
     let parent = node.parent()?;
@@ -175,7 +178,7 @@ fn infer_type(task: &Task, unit: usize, range: Range<usize>) -> Option<String> {
 /// W201: delete the declaration (its whole line when it stands alone).
 fn remove_declaration(u: &Unit, d: &Diagnostic) -> Option<CodeAction> {
     let mut at = u
-        .tree
+        .tree()
         .root_node()
         .descendant_for_byte_range(d.range.start, d.range.end);
     while let Some(n) = at {

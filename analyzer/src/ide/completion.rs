@@ -253,7 +253,7 @@ fn labels(cx: &Cx<'_>) -> Vec<CompletionItem> {
     let Some(r) = &cx.routine else {
         return Vec::new();
     };
-    let root = cx.unit.tree.root_node();
+    let root = cx.unit.tree().root_node();
     let Some(node) = root.named_descendant_for_byte_range(r.decl.range.start, r.decl.range.end)
     else {
         return Vec::new();

@@ -17,7 +17,7 @@ const MAX_DECL: usize = 160;
 /// `offset`, with the range it describes.
 pub fn hover(task: &Task, unit: usize, offset: usize) -> Option<HoverResult> {
     let u = task.units.get(unit)?;
-    if let Some(node) = name_at(&u.tree, offset) {
+    if let Some(node) = name_at(u.tree(), offset) {
         let def = resolve(task, unit, node);
         if let Some(def) = def {
             let mut markdown = describe(task, &def)?;
@@ -52,7 +52,7 @@ pub fn hover(task: &Task, unit: usize, offset: usize) -> Option<HoverResult> {
         return None;
     }
     // A robtarget literal under the cursor.
-    let root = u.tree.root_node();
+    let root = u.tree().root_node();
     let mut at = root.descendant_for_byte_range(offset, offset);
     let mut outermost = None;
     while let Some(n) = at {
@@ -325,7 +325,7 @@ fn robtarget_of_def(task: &Task, def: &Def<'_>) -> Option<String> {
     };
     let u = task.units.get(unit)?;
     let node = u
-        .tree
+        .tree()
         .root_node()
         .named_descendant_for_byte_range(init.start, init.end)?;
     (node.kind() == "aggregate").then_some(())?;
@@ -450,7 +450,7 @@ fn literal_initialiser(task: &Task, def: &Def<'_>) -> bool {
     task.units
         .get(unit)
         .and_then(|u| {
-            u.tree
+            u.tree()
                 .root_node()
                 .named_descendant_for_byte_range(init.start, init.end)
         })

@@ -25,7 +25,7 @@ pub fn inlay_hints(task: &Task, unit: usize, range: Range<usize>) -> Vec<InlayHi
     let text = &u.text;
     let mut scopes = Scopes::new(task, unit);
     let mut out = Vec::new();
-    let root = u.tree.root_node();
+    let root = u.tree().root_node();
     let mut calls = Vec::new();
     let mut consts = Vec::new();
     walk_pruned(root, &mut |n: Node<'_>| {

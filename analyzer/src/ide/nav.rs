@@ -21,7 +21,7 @@ fn location(task: &Task, def: &Def<'_>) -> Option<Location> {
 
 fn def_at<'t>(task: &'t Task, unit: usize, offset: usize) -> Option<Def<'t>> {
     let u = task.units.get(unit)?;
-    let node = name_at(&u.tree, offset)?;
+    let node = name_at(u.tree(), offset)?;
     resolve(task, unit, node)
 }
 
@@ -116,7 +116,7 @@ pub(crate) fn uses(
         if only_unit.is_some_and(|o| o != ui) || scope.as_ref().is_some_and(|(su, _)| *su != ui) {
             continue;
         }
-        let root = u.tree.root_node();
+        let root = u.tree().root_node();
         let node = match &scope {
             Some((_, r)) => root.named_descendant_for_byte_range(r.start, r.end),
             None => Some(root),
@@ -361,7 +361,7 @@ pub(crate) fn is_reserved(name: &str) -> bool {
 /// otherwise (reserved words, built-ins, signals, nothing declared).
 pub fn prepare_rename(task: &Task, unit: usize, offset: usize) -> Result<Range<usize>, String> {
     let u = task.units.get(unit).ok_or("no such file")?;
-    let Some(node) = name_at(&u.tree, offset) else {
+    let Some(node) = name_at(u.tree(), offset) else {
         return Err("there is no name here to rename".to_owned());
     };
     let text = u.text.get(node.byte_range()).unwrap_or_default();

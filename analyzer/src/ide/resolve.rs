@@ -319,7 +319,7 @@ pub(crate) fn resolve_in<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Option<Def<'t>>
         }
         ("label", Some("name")) | ("goto_statement", Some("label")) => {
             let routine = cx.routine.as_ref()?.decl;
-            let root = cx.unit.tree.root_node();
+            let root = cx.unit.tree().root_node();
             let rnode =
                 root.named_descendant_for_byte_range(routine.range.start, routine.range.end)?;
             let mut found = None;

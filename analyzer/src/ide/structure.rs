@@ -59,7 +59,7 @@ pub fn folding_ranges(unit: &Unit) -> Vec<FoldingRange> {
     let line_of = |o: usize| lines.line_col(o).line;
     let mut out = Vec::new();
     let mut comments: Option<(usize, usize)> = None;
-    let root = unit.tree.root_node();
+    let root = unit.tree().root_node();
     let flush = |c: &mut Option<(usize, usize)>, out: &mut Vec<FoldingRange>| {
         if let Some((s, e)) = c.take()
             && e > s
@@ -139,7 +139,7 @@ pub fn folding_ranges(unit: &Unit) -> Vec<FoldingRange> {
 /// For each offset, the ranges around it, innermost first: token,
 /// expression, statement, block, routine, module, file.
 pub fn selection_ranges(unit: &Unit, offsets: &[usize]) -> Vec<Vec<Range<usize>>> {
-    let root = unit.tree.root_node();
+    let root = unit.tree().root_node();
     offsets
         .iter()
         .map(|&offset| {

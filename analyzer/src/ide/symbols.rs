@@ -94,7 +94,7 @@ fn module_symbol(unit: &Unit, m: &Module, with_locals: bool) -> Symbol {
 
 /// The data declared in the routine at `range`.
 fn routine_data(unit: &Unit, range: &std::ops::Range<usize>) -> Vec<Symbol> {
-    let root = unit.tree.root_node();
+    let root = unit.tree().root_node();
     let Some(node) = root.named_descendant_for_byte_range(range.start, range.end) else {
         return Vec::new();
     };

@@ -120,7 +120,7 @@ pub fn semantic_tokens(
             });
         }
     };
-    let root = u.tree.root_node();
+    let root = u.tree().root_node();
     let mut cursor = root.walk();
     // The ancestors of the cursor's node (`Node::parent` walks down from
     // the root each time; a stack is much cheaper).

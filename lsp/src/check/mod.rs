@@ -611,7 +611,7 @@ fn add_extra(
             workspace.set_unit(Unit::from_tree(
                 path,
                 unit.text.clone(),
-                Some(unit.tree.clone()),
+                Some(unit.tree().clone()),
             ));
         }
     }

@@ -37,7 +37,7 @@ pub fn apply_changes(
     encoding: PosEncoding,
 ) -> Unit {
     let mut text = unit.text.clone();
-    let mut tree: Option<Tree> = Some(unit.tree.clone());
+    let mut tree: Option<Tree> = Some(unit.tree().clone());
     // `None`: `index` still describes `text`.
     let mut fresh: Option<Option<LineIndex>> = None;
     for change in changes {
@@ -126,8 +126,8 @@ mod tests {
         assert_eq!(edited.text, after);
         let fresh = Unit::new("t/A.mod".into(), after.to_owned(), None);
         assert_eq!(
-            edited.tree.root_node().to_sexp(),
-            fresh.tree.root_node().to_sexp()
+            edited.tree().root_node().to_sexp(),
+            fresh.tree().root_node().to_sexp()
         );
         assert_eq!(edited.syntax, fresh.syntax);
     }
