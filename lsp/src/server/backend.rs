@@ -208,12 +208,7 @@ impl Backend {
                 let snap = s.snapshot(&uri)?;
                 // Taken, not shared: a check still running for an older
                 // text finds none and starts afresh.
-                let statements = s
-                    .statements
-                    .remove(&path)
-                    .filter(|(generation, _)| *generation == snap.config_generation)
-                    .map(|(_, cache)| cache)
-                    .unwrap_or_default();
+                let statements = s.statements.remove(&path).unwrap_or_default();
                 Some((snap, statements))
             })
             .flatten();
@@ -261,8 +256,7 @@ impl Backend {
             .mutate("publishing diagnostics", |s| {
                 s.cache_diagnostics(&snap, raw);
                 if s.docs.contains_key(&snap.path) {
-                    s.statements
-                        .insert(snap.path.clone(), (snap.config_generation, statements));
+                    s.statements.insert(snap.path.clone(), statements);
                 }
                 current(s) && s.should_publish(&snap.path, snap.version, &converted, quick_sent)
             })

@@ -52,12 +52,10 @@ pub struct State {
     /// cached diagnostics are recomputed.
     pub config_generation: u64,
     pub diagnostics: HashMap<String, CachedDiagnostics>,
-    /// Per open document, the statement results of its last check with the
-    /// configuration generation they were computed under, so the next check
-    /// after an edit re-checks only the statements it changed. (Statement
-    /// results depend on the controller configuration, signals and
-    /// mechanical units, which their cache keys do not cover.)
-    pub statements: HashMap<String, (u64, StmtCache)>,
+    /// Per open document, the statement results of its last check, so the
+    /// next check after an edit re-checks only the statements it changed
+    /// (their keys cover the task's interface, configuration included).
+    pub statements: HashMap<String, StmtCache>,
     /// The diagnostics last published per open document, with the version
     /// they were for: an unchanged list for the same version is not sent
     /// again (another file's edit re-checks this one, mostly to the same
