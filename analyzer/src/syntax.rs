@@ -44,36 +44,24 @@ pub fn syntax_diagnostics(tree: &Tree, text: &str) -> Vec<Diagnostic> {
         return out;
     }
     let language = tree.language();
-    let mut cursor = root.walk();
-    let mut descend = true;
-    loop {
-        let node = cursor.node();
-        if descend && node.is_error() {
+    // Only nodes with an error below them are entered.
+    crate::syntax_util::walk_pruned(root, &mut |node| {
+        if node.is_error() {
             let equals = equals_for_assignment(node, text);
             if equals.is_empty() {
                 out.push(error_diagnostic(node, text, &language));
             } else {
                 out.extend(equals);
             }
-            descend = false;
-        } else if descend && node.is_missing() {
+            false
+        } else if node.is_missing() {
             out.push(missing_diagnostic(node, &language));
-            descend = false;
+            false
+        } else {
+            node.has_error()
         }
-        if descend && node.has_error() && cursor.goto_first_child() {
-            continue;
-        }
-        descend = true;
-        loop {
-            if cursor.goto_next_sibling() {
-                break;
-            }
-            if !cursor.goto_parent() {
-                return out;
-            }
-        }
-        // Siblings without errors are skipped cheaply by `has_error` above.
-    }
+    });
+    out
 }
 
 /// `=` written for `:=` in an error: either the error starts with `=` right

@@ -344,3 +344,33 @@ pub fn is_simple_statement(kind: &str) -> bool {
             | "connect_statement"
     )
 }
+
+/// Calls `f` on every node under `node` (pre-order), without recursion.
+pub(crate) fn walk<'a>(node: Node<'a>, f: &mut impl FnMut(Node<'a>)) {
+    walk_pruned(node, &mut |n| {
+        f(n);
+        true
+    });
+}
+
+/// Calls `f` on the nodes under `node` (pre-order); `f` returns whether to
+/// visit the node's children.
+pub(crate) fn walk_pruned<'a>(node: Node<'a>, f: &mut impl FnMut(Node<'a>) -> bool) {
+    let mut cursor = node.walk();
+    loop {
+        if f(cursor.node()) && cursor.goto_first_child() {
+            continue;
+        }
+        loop {
+            if cursor.node().id() == node.id() {
+                return;
+            }
+            if cursor.goto_next_sibling() {
+                break;
+            }
+            if !cursor.goto_parent() {
+                return;
+            }
+        }
+    }
+}

@@ -40,9 +40,7 @@ pub(super) fn check_file_wide(cx: &mut Cx<'_>, root: Node<'_>) {
             language.id_for_node_kind("string", true),
         )
     });
-    let mut cursor = root.walk();
-    loop {
-        let node = cursor.node();
+    crate::syntax_util::walk_pruned(root, &mut |node| {
         let kind = node.kind_id();
         match kind {
             k if k == placeholder => {
@@ -65,18 +63,8 @@ pub(super) fn check_file_wide(cx: &mut Cx<'_>, root: Node<'_>) {
             }
             _ => {}
         }
-        if kind != string && worth_entering(node) && cursor.goto_first_child() {
-            continue;
-        }
-        loop {
-            if cursor.goto_next_sibling() {
-                break;
-            }
-            if !cursor.goto_parent() {
-                return;
-            }
-        }
-    }
+        kind != string && worth_entering(node)
+    });
 }
 
 /// The regions of the text (sorted, disjoint byte ranges) where a

@@ -328,26 +328,14 @@ pub fn verify(original: &str, formatted: &str) -> Result<(), FormatError> {
 /// Leaves in order: range, is it a keyword, is it a comment. (Iterative:
 /// any depth.)
 fn collect_leaves(root: Node<'_>, out: &mut Vec<(Range<usize>, bool, bool)>) {
-    let mut cursor = root.walk();
-    loop {
-        let node = cursor.node();
+    crate::syntax_util::walk_pruned(root, &mut |node| {
         let atomic = collect::is_atomic(node);
         if atomic && !node.byte_range().is_empty() {
             let keyword = !node.is_named() && node.kind().bytes().all(|b| b.is_ascii_alphabetic());
             out.push((node.byte_range(), keyword, node.kind() == "comment"));
         }
-        if !atomic && cursor.goto_first_child() {
-            continue;
-        }
-        loop {
-            if cursor.goto_next_sibling() {
-                break;
-            }
-            if !cursor.goto_parent() {
-                return;
-            }
-        }
-    }
+        !atomic
+    });
 }
 
 #[cfg(test)]

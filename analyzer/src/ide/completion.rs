@@ -259,7 +259,7 @@ fn labels(cx: &Cx<'_>) -> Vec<CompletionItem> {
         return Vec::new();
     };
     let mut out = Vec::new();
-    super::resolve::walk(node, &mut |n| {
+    crate::syntax_util::walk(node, &mut |n| {
         if n.kind() == "label"
             && let Some(name) = n.child_by_field_name("name")
             && let Some(t) = cx.text.get(name.byte_range())

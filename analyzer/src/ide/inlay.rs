@@ -5,11 +5,11 @@ use std::ops::Range;
 
 use tree_sitter::Node;
 
-use super::resolve::walk_pruned;
 use super::signature::sig_of;
 use super::tokens::Scopes;
 use super::{InlayHint, InlayKind};
 use crate::names::same;
+use crate::syntax_util::walk_pruned;
 use crate::task::Task;
 
 /// Longest value shown in a hint.

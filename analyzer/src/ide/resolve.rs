@@ -9,6 +9,7 @@ use crate::catalogue::{DataType, Datum, Routine, catalogue};
 use crate::check::{Cx, DataSym, RoutineSym};
 use crate::items::{DataDecl, ParamDecl, RoutineDecl};
 use crate::names::{fold, same};
+use crate::syntax_util::walk;
 use crate::task::{Item, ItemRef, Task};
 use crate::ty::{Ty, UserType};
 
@@ -436,36 +437,6 @@ fn item_declared_at(task: &Task, unit: usize, name: &str, range: Range<usize>) -
         .flatten()
         .copied()
         .find(|r| r.unit == unit && task.item_name(*r).is_some_and(|(_, n)| n == range))
-}
-
-/// Calls `f` on every node under `node` (pre-order), without recursion.
-pub(crate) fn walk<'a>(node: Node<'a>, f: &mut impl FnMut(Node<'a>)) {
-    walk_pruned(node, &mut |n| {
-        f(n);
-        true
-    });
-}
-
-/// Calls `f` on the nodes under `node` (pre-order); `f` returns whether to
-/// visit the node's children.
-pub(crate) fn walk_pruned<'a>(node: Node<'a>, f: &mut impl FnMut(Node<'a>) -> bool) {
-    let mut cursor = node.walk();
-    loop {
-        if f(cursor.node()) && cursor.goto_first_child() {
-            continue;
-        }
-        loop {
-            if cursor.node().id() == node.id() {
-                return;
-            }
-            if cursor.goto_next_sibling() {
-                break;
-            }
-            if !cursor.goto_parent() {
-                return;
-            }
-        }
-    }
 }
 
 /// Every name node in `node` spelt `name` (case-insensitive), found by a

@@ -5,7 +5,7 @@ use std::ops::Range;
 use tree_sitter::Node;
 
 use super::FoldingRange;
-use super::resolve::walk_pruned;
+use crate::syntax_util::walk_pruned;
 use crate::task::Unit;
 use crate::text::LineIndex;
 
