@@ -1,6 +1,8 @@
 //! The evaluator core: names, aggregates, operators, typing.
 
+use std::cell::RefCell;
 use std::collections::HashMap;
+use std::rc::Rc;
 
 use crate::env::{Env, Lookup, VarKind, predefined};
 use crate::error::{ErrorCode, EvalError, err};
@@ -22,7 +24,8 @@ pub(crate) enum Kind {
     Dnum,
     Bool,
     Str,
-    Record(String, Vec<(String, Type)>),
+    /// A record type: its name and its components in declaration order.
+    Record(Rc<(String, Vec<(String, Type)>)>),
     Array(Type),
     /// A type the evaluator knows nothing about; values pass unchecked.
     Opaque,
@@ -37,7 +40,13 @@ pub(crate) struct Ctx {
     pub(crate) initial_used: Vec<String>,
     in_progress: Vec<(usize, String)>,
     cache: HashMap<(usize, String), Value>,
+    /// Type names resolved so far, with the scope they were resolved in:
+    /// an aggregate asks for the kinds of its components at every element.
+    kinds: RefCell<Vec<(usize, String, Kind)>>,
 }
+
+/// How many resolved type names a [`Ctx`] remembers.
+const KIND_CACHE: usize = 64;
 
 fn scope_id(env: &dyn Env) -> usize {
     (env as *const dyn Env).cast::<()>() as usize
@@ -58,6 +67,7 @@ pub(crate) fn run(
         initial_used: Vec::new(),
         in_progress: Vec::new(),
         cache: HashMap::new(),
+        kinds: RefCell::new(Vec::new()),
     };
     let value = ctx.eval(expr, expected, env)?;
     Ok(Evaluation {
@@ -104,6 +114,50 @@ fn describe(v: &Value) -> String {
     }
 }
 
+/// The kinds of the four basic types, whatever the environment.
+fn primitive_kind(name: &str) -> Option<Kind> {
+    let is = |n: &str| name.eq_ignore_ascii_case(n);
+    match name.len() {
+        3 if is("num") => Some(Kind::Num),
+        4 if is("dnum") => Some(Kind::Dnum),
+        4 if is("bool") => Some(Kind::Bool),
+        6 if is("string") => Some(Kind::Str),
+        _ => None,
+    }
+}
+
+/// Resolves a type name through built-in and user aliases.
+fn resolve_kind(name: &str, env: &dyn Env) -> Kind {
+    let mut name = name.to_owned();
+    for _ in 0..16 {
+        if let Some(k) = primitive_kind(&name) {
+            return k;
+        }
+        if is_builtin_num_alias(&name) {
+            return Kind::Num;
+        }
+        if is_builtin_string_alias(&name) {
+            return Kind::Str;
+        }
+        if let Some(layout) = builtin_record_layout(&name) {
+            let layout = layout
+                .iter()
+                .map(|(n, t)| ((*n).to_string(), Type::named(*t)))
+                .collect();
+            return Kind::Record(Rc::new((name.to_ascii_lowercase(), layout)));
+        }
+        if let Some(layout) = env.record_layout(&name) {
+            return Kind::Record(Rc::new((name, layout)));
+        }
+        match env.alias_of(&name) {
+            Some(t) if !t.dims.is_empty() => return Kind::Array(t.element()),
+            Some(t) => name = t.name,
+            None => return Kind::Opaque,
+        }
+    }
+    Kind::Opaque
+}
+
 impl Ctx {
     /// Counts `n` units of work against the budget.
     pub(crate) fn step(&mut self, n: u64) -> Result<(), EvalError> {
@@ -122,41 +176,25 @@ impl Ctx {
         if !ty.dims.is_empty() {
             return Kind::Array(ty.element());
         }
-        let mut name = ty.name.clone();
-        for _ in 0..16 {
-            let lower = name.to_ascii_lowercase();
-            match lower.as_str() {
-                "num" => return Kind::Num,
-                "dnum" => return Kind::Dnum,
-                "bool" => return Kind::Bool,
-                "string" => return Kind::Str,
-                _ => {}
-            }
-            if is_builtin_num_alias(&lower) {
-                return Kind::Num;
-            }
-            if is_builtin_string_alias(&lower) {
-                return Kind::Str;
-            }
-            if let Some(layout) = builtin_record_layout(&lower) {
-                return Kind::Record(
-                    lower,
-                    layout
-                        .iter()
-                        .map(|(n, t)| ((*n).to_string(), Type::named(*t)))
-                        .collect(),
-                );
-            }
-            if let Some(layout) = env.record_layout(&name) {
-                return Kind::Record(name, layout);
-            }
-            match env.alias_of(&name) {
-                Some(t) if !t.dims.is_empty() => return Kind::Array(t.element()),
-                Some(t) => name = t.name,
-                None => return Kind::Opaque,
-            }
+        if let Some(k) = primitive_kind(&ty.name) {
+            return k;
         }
-        Kind::Opaque
+        let scope = scope_id(env);
+        let known = self
+            .kinds
+            .borrow()
+            .iter()
+            .find(|(s, n, _)| *s == scope && n.eq_ignore_ascii_case(&ty.name))
+            .map(|(_, _, k)| k.clone());
+        if let Some(k) = known {
+            return k;
+        }
+        let k = resolve_kind(&ty.name, env);
+        let mut kinds = self.kinds.borrow_mut();
+        if kinds.len() < KIND_CACHE {
+            kinds.push((scope, ty.name.clone(), k.clone()));
+        }
+        k
     }
 
     pub(crate) fn eval(
@@ -374,7 +412,8 @@ impl Ctx {
                 }
                 Ok(Value::Array(out))
             }
-            Some(Kind::Record(ty, layout)) => {
+            Some(Kind::Record(record)) => {
+                let (ty, layout) = &*record;
                 if items.len() != layout.len() {
                     return err(
                         ErrorCode::TypeMismatch,
@@ -387,10 +426,13 @@ impl Ctx {
                 }
                 let mut fields = Vec::with_capacity(layout.len());
                 for (it, (fname, fty)) in items.iter().zip(layout) {
-                    let v = self.eval(it, Some(&fty), env)?;
-                    fields.push((fname, v));
+                    let v = self.eval(it, Some(fty), env)?;
+                    fields.push((fname.clone(), v));
                 }
-                Ok(Value::Record { ty, fields })
+                Ok(Value::Record {
+                    ty: ty.clone(),
+                    fields,
+                })
             }
             Some(Kind::Num | Kind::Dnum | Kind::Bool | Kind::Str) => err(
                 ErrorCode::TypeMismatch,
@@ -432,8 +474,9 @@ impl Ctx {
             (Kind::Dnum, Value::Dnum(x)) => Ok(Value::Dnum(x)),
             (Kind::Bool, Value::Bool(b)) => Ok(Value::Bool(b)),
             (Kind::Str, Value::Str(s)) => Ok(Value::Str(s)),
-            (Kind::Record(name, layout), Value::Record { ty: vty, fields }) => {
-                if vty.eq_ignore_ascii_case(&name) {
+            (Kind::Record(record), Value::Record { ty: vty, fields }) => {
+                let (name, layout) = &*record;
+                if vty.eq_ignore_ascii_case(name) {
                     Ok(Value::Record { ty: vty, fields })
                 } else if layout.len() == fields.len()
                     && layout
@@ -442,21 +485,28 @@ impl Ctx {
                         .all(|((a, _), (b, _))| a.eq_ignore_ascii_case(b))
                 {
                     // Same layout under another name (robtarget / o_robtarget).
-                    Ok(Value::Record { ty: name, fields })
+                    Ok(Value::Record {
+                        ty: name.clone(),
+                        fields,
+                    })
                 } else {
                     mismatch(&Value::Record { ty: vty, fields })
                 }
             }
-            (Kind::Record(name, layout), Value::Array(items)) => {
+            (Kind::Record(record), Value::Array(items)) => {
+                let (name, layout) = &*record;
                 if items.len() != layout.len() {
                     return mismatch(&Value::Array(items));
                 }
                 let mut fields = Vec::with_capacity(items.len());
                 for (v, (fname, fty)) in items.into_iter().zip(layout) {
                     self.step(1)?;
-                    fields.push((fname, self.coerce(v, &fty, env)?));
+                    fields.push((fname.clone(), self.coerce(v, fty, env)?));
                 }
-                Ok(Value::Record { ty: name, fields })
+                Ok(Value::Record {
+                    ty: name.clone(),
+                    fields,
+                })
             }
             (Kind::Array(elem), Value::Array(items)) => {
                 if let Some(&n) = ty.dims.first()

@@ -73,6 +73,20 @@ pub const FUNCTIONS: &[&str] = &[
     "VectMagn",
 ];
 
+/// Whether the evaluator implements the function `name` (case-insensitive).
+pub fn is_function(name: &str) -> bool {
+    static SORTED: std::sync::OnceLock<Vec<String>> = std::sync::OnceLock::new();
+    let sorted = SORTED.get_or_init(|| {
+        let mut v: Vec<String> = FUNCTIONS.iter().map(|f| f.to_ascii_lowercase()).collect();
+        v.sort();
+        v
+    });
+    let lower = |b: &u8| b.to_ascii_lowercase();
+    sorted
+        .binary_search_by(|f| f.bytes().cmp(name.as_bytes().iter().map(lower)))
+        .is_ok()
+}
+
 #[derive(Clone, Copy, PartialEq, Eq)]
 enum K {
     /// Required, evaluated.

@@ -81,7 +81,7 @@ pub use env::{
 };
 pub use error::{ErrorCode, EvalError};
 pub use expr::{Arg, BinOp, Expr, Type, UnOp};
-pub use functions::FUNCTIONS;
+pub use functions::{FUNCTIONS, is_function};
 pub use geometry::euler_zyx_deg;
 pub use literal::{MAX_STRING_LEN, parse_num_literal, parse_string_literal};
 pub use literal_value::parse_data_literal;

@@ -335,3 +335,22 @@ proptest! {
         }
     }
 }
+
+/// `is_function` answers for exactly the names in `FUNCTIONS`, in any case.
+#[test]
+fn is_function_matches_the_list() {
+    for name in rapid_evaluator::FUNCTIONS {
+        assert!(rapid_evaluator::is_function(name), "{name}");
+        assert!(
+            rapid_evaluator::is_function(&name.to_ascii_uppercase()),
+            "{name}"
+        );
+        assert!(
+            rapid_evaluator::is_function(&name.to_ascii_lowercase()),
+            "{name}"
+        );
+    }
+    for name in ["", "MoveL", "Ab", "Abss", "Sqrt2", "NumToSt"] {
+        assert!(!rapid_evaluator::is_function(name), "{name}");
+    }
+}
