@@ -23,7 +23,7 @@ use std::ops::Range;
 use rapid_evaluator::{
     Env, ErrorCode, EvalError, Evaluation, Expr, Lookup, Options, Type, Value, VarKind,
 };
-use tree_sitter::Node;
+use tree_sitter::{Node, TreeCursor};
 
 use crate::catalogue::{Datum, DatumKind, Mode, TypeKind, catalogue};
 use crate::check::{Cx, DataSym, RoutineSym};
@@ -1281,9 +1281,10 @@ fn is_statement_like(kind: &str) -> bool {
         )
 }
 
-/// The children of a node with their field names.
-fn children_with_fields(node: Node<'_>) -> Vec<Step<'_>> {
-    let mut cursor = node.walk();
+/// The children of a node with their field names, read with `cursor` (one
+/// cursor serves a whole statement: making one allocates).
+fn children_with_fields<'t>(cursor: &mut TreeCursor<'t>, node: Node<'t>) -> Vec<Step<'t>> {
+    cursor.reset(node);
     let mut out = Vec::new();
     if cursor.goto_first_child() {
         loop {
@@ -1306,6 +1307,7 @@ fn scan<'t>(cx: &mut Cx<'t>, path: &mut Vec<Step<'t>>, found: &mut Vec<Vec<Step<
     if !cursor.goto_first_child() {
         return;
     }
+    let mut aux = node.walk();
     // How far the cursor is below `node`; every node between `node` and the
     // cursor is on `path`.
     let mut depth = 1usize;
@@ -1321,9 +1323,10 @@ fn scan<'t>(cx: &mut Cx<'t>, path: &mut Vec<Step<'t>>, found: &mut Vec<Vec<Step<
             if is_expression(crate::syntax_util::kind(child)) {
                 // Aggregates of number literals (most robtargets) hold no
                 // operation: their text says so without a walk.
-                if !crate::syntax_util::is_literal_aggregate(child, cx.text) && has_operation(child)
+                if !crate::syntax_util::is_literal_aggregate(child, cx.text)
+                    && has_operation(&mut aux, child)
                 {
-                    let s = shape(cx, path, found, 0);
+                    let s = shape(cx, &mut aux, path, found, 0);
                     if s.constant && s.operation {
                         found.push(path.clone());
                     }
@@ -1356,8 +1359,8 @@ fn scan<'t>(cx: &mut Cx<'t>, path: &mut Vec<Step<'t>>, found: &mut Vec<Vec<Step<
 
 /// Does the expression hold an operator, a call or an index (a cheap,
 /// syntactic test before names are resolved)?
-fn has_operation(node: Node<'_>) -> bool {
-    let mut cursor = node.walk();
+fn has_operation<'t>(cursor: &mut TreeCursor<'t>, node: Node<'t>) -> bool {
+    cursor.reset(node);
     loop {
         let n = cursor.node();
         if matches!(
@@ -1391,6 +1394,23 @@ fn is_signed_number(node: Node<'_>) -> bool {
         && field(node, "operator").is_some_and(|o| crate::syntax_util::kind(o) != "not")
 }
 
+/// An operand of an expression, as the steps from the expression to it.
+enum Part<'t> {
+    /// An expression child (an operand, a call's base).
+    Operand(Step<'t>),
+    /// The value of an argument: the argument list, the argument, the value.
+    Argument([Step<'t>; 3]),
+}
+
+impl<'t> Part<'t> {
+    fn steps(&self) -> &[Step<'t>] {
+        match self {
+            Part::Operand(s) => std::slice::from_ref(s),
+            Part::Argument(s) => s,
+        }
+    }
+}
+
 #[derive(Clone, Copy)]
 struct Shape {
     constant: bool,
@@ -1402,6 +1422,7 @@ struct Shape {
 /// non-constant expression go to `found`.
 fn shape<'t>(
     cx: &mut Cx<'t>,
+    cursor: &mut TreeCursor<'t>,
     path: &mut Vec<Step<'t>>,
     found: &mut Vec<Vec<Step<'t>>>,
     depth: u32,
@@ -1436,9 +1457,7 @@ fn shape<'t>(
         "function_call" => {
             let pure = field(node, "name").is_some_and(|n| {
                 let name = cx.node_text(n);
-                rapid_evaluator::FUNCTIONS
-                    .iter()
-                    .any(|f| f.eq_ignore_ascii_case(name))
+                rapid_evaluator::is_function(name)
                     && matches!(
                         cx.resolve_routine(name, true),
                         Some(RoutineSym::Builtin(..))
@@ -1449,15 +1468,15 @@ fn shape<'t>(
         _ => return NOT,
     };
     // The operands: expression children, and the values of arguments.
-    let mut parts: Vec<Vec<Step<'t>>> = Vec::new();
-    for (child, f) in children_with_fields(node) {
+    let mut parts: Vec<Part<'t>> = Vec::new();
+    for (child, f) in children_with_fields(cursor, node) {
         if !child.is_named() || f.is_some_and(|f| NOT_VALUES.contains(&f)) {
             continue;
         }
         if is_expression(crate::syntax_util::kind(child)) {
-            parts.push(vec![(child, f)]);
+            parts.push(Part::Operand((child, f)));
         } else if crate::syntax_util::kind(child) == "argument_list" {
-            for (arg, af) in children_with_fields(child) {
+            for (arg, af) in children_with_fields(cursor, child) {
                 if crate::syntax_util::kind(arg) != "argument" {
                     continue;
                 }
@@ -1467,7 +1486,7 @@ fn shape<'t>(
                 }
                 match arg_parts.value {
                     Some(v) if is_expression(crate::syntax_util::kind(v)) => {
-                        parts.push(vec![(child, f), (arg, af), (v, Some("value"))]);
+                        parts.push(Part::Argument([(child, f), (arg, af), (v, Some("value"))]));
                     }
                     Some(_) => constant = false,
                     None if arg_parts.backslash => {}
@@ -1479,11 +1498,11 @@ fn shape<'t>(
         }
     }
     let mut shapes = Vec::with_capacity(parts.len());
-    for steps in &parts {
-        let n = steps.len();
-        path.extend(steps.iter().copied());
-        shapes.push(shape(cx, path, found, depth + 1));
-        path.truncate(path.len() - n);
+    for part in &parts {
+        let steps = part.steps();
+        path.extend_from_slice(steps);
+        shapes.push(shape(cx, cursor, path, found, depth + 1));
+        path.truncate(path.len() - steps.len());
     }
     let mut op = operation;
     for s in &shapes {
@@ -1491,10 +1510,10 @@ fn shape<'t>(
         op |= s.operation;
     }
     if !constant {
-        for (steps, s) in parts.iter().zip(&shapes) {
+        for (part, s) in parts.iter().zip(&shapes) {
             if s.constant && s.operation {
                 let mut p = path.clone();
-                p.extend(steps.iter().copied());
+                p.extend_from_slice(part.steps());
                 found.push(p);
             }
         }
@@ -1520,6 +1539,7 @@ fn is_constant_name(cx: &mut Cx<'_>, name: &str) -> bool {
 /// The data names used in an expression (not routine, component or
 /// argument names).
 fn names_in(node: Node<'_>) -> Vec<Node<'_>> {
+    let mut cursor = node.walk();
     let mut out = Vec::new();
     let mut stack = vec![(node, None)];
     while let Some((n, f)) = stack.pop() {
@@ -1531,7 +1551,7 @@ fn names_in(node: Node<'_>) -> Vec<Node<'_>> {
             continue;
         }
         stack.extend(
-            children_with_fields(n)
+            children_with_fields(&mut cursor, n)
                 .into_iter()
                 .filter(|(c, _)| c.is_named()),
         );
