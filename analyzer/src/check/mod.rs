@@ -83,14 +83,16 @@ enum Piece {
 }
 
 /// The pieces of a unit, in the order [`check_unit`] checks them, with a
-/// weight each (their size in bytes).
+/// weight each: their size in bytes, a module's declarations counting for
+/// a quarter of theirs (most are literal data, checked from their text,
+/// about five times faster per byte than statements).
 fn pieces(cx: &Cx<'_>) -> Vec<(Piece, usize)> {
     let mut out = Vec::new();
     for (mi, module, _) in cx.modules() {
         let routines: usize = module.routines.iter().map(|r| r.range.len()).sum();
         out.push((
             Piece::Module(mi),
-            module.range.len().saturating_sub(routines),
+            module.range.len().saturating_sub(routines) / 4,
         ));
         for (ri, r) in module.routines.iter().enumerate() {
             out.push((Piece::Routine(mi, ri), r.range.len()));

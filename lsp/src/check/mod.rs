@@ -511,7 +511,7 @@ pub fn check_files(
         .par_iter()
         .map(|(task, u)| {
             let diagnostics = if threads > 1 && u.text.len() >= SPLIT_CHECK_BYTES {
-                diagnostics_split(task, u, threads)
+                diagnostics_split(task, u, threads * SHARES_PER_THREAD)
             } else {
                 diagnostics_of(task, u)
             };
@@ -542,6 +542,11 @@ pub fn check_files(
 /// threads (a single large module would otherwise keep one core busy while
 /// the others wait).
 const SPLIT_CHECK_BYTES: usize = 64 * 1024;
+
+/// Such a file is cut into this many shares per thread: a thread that
+/// starts late (a sleeping pool thread can take milliseconds to wake) or a
+/// share that costs more than its size says is made up for by the others.
+const SHARES_PER_THREAD: usize = 4;
 
 /// [`diagnostics_of`], with the unit's routines spread over `shares` jobs of
 /// the thread pool: the same diagnostics in the same order.
