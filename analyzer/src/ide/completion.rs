@@ -53,6 +53,13 @@ fn builtins() -> &'static Builtins {
     })
 }
 
+/// Builds what every completion list shares (the built-ins with their
+/// signatures) ahead of the first request, which would otherwise pay for
+/// it. A server calls this while it indexes.
+pub fn prepare_completions() {
+    builtins();
+}
+
 /// Snippets: label, body.
 const STATEMENT_SNIPPETS: &[(&str, &str)] = &[
     ("IF", "IF ${1:condition} THEN\n\t$0\nENDIF"),

@@ -321,7 +321,11 @@ impl Backend {
         let reading = {
             let shared = self.shared.clone();
             let done = done.clone();
-            self.blocking("reading files", move || read_units(&files, &shared, &done))
+            self.blocking("reading files", move || {
+                let read = read_units(&files, &shared, &done);
+                ide::prepare_completions();
+                read
+            })
         };
         tokio::pin!(reading);
         let mut problems = loop {
@@ -562,6 +566,13 @@ fn client_caps(params: &InitializeParams) -> ClientCaps {
             .and_then(|w| w.semantic_tokens.as_ref())
             .and_then(|d| d.refresh_support)
             == Some(true),
+        resolve_completion_detail: caps
+            .text_document
+            .as_ref()
+            .and_then(|t| t.completion.as_ref())
+            .and_then(|c| c.completion_item.as_ref())
+            .and_then(|i| i.resolve_support.as_ref())
+            .is_some_and(|r| r.properties.iter().any(|p| p == "detail")),
     }
 }
 
@@ -1011,17 +1022,32 @@ impl LanguageServer for Backend {
     async fn completion(&self, params: CompletionParams) -> Result<Option<CompletionResponse>> {
         let p = params.text_document_position;
         let pos = p.position;
+        let uri = p.text_document.uri;
+        let lazy = self
+            .mutate("completion", |s| {
+                s.last_completion = Some((uri.clone(), pos));
+                s.caps.resolve_completion_detail
+            })
+            .unwrap_or(false);
         Ok(self
-            .on_snapshot(&p.text_document.uri, "completion", move |s| {
-                requests::completion(s, pos)
+            .on_snapshot(&uri, "completion", move |s| {
+                requests::completion(s, pos, lazy)
             })
             .await?
             .map(CompletionResponse::Array))
     }
 
     async fn completion_resolve(&self, item: CompletionItem) -> Result<CompletionItem> {
+        // An item sent without its detail finds it again in the list it
+        // came from.
+        let origin = self
+            .mutate("completion resolve", |s| {
+                let (uri, pos) = s.last_completion.clone()?;
+                Some((s.snapshot(&uri)?, pos))
+            })
+            .flatten();
         self.blocking("completion resolve", move || {
-            requests::resolve_completion(item)
+            requests::resolve_completion(item, origin.as_ref().map(|(s, p)| (s, *p)))
         })
         .await
     }

@@ -38,13 +38,16 @@ fn markdown(value: String) -> MarkupContent {
     }
 }
 
-pub fn completion(snap: &Snapshot, pos: Position) -> Vec<lsp::CompletionItem> {
+/// The completion list at `pos`; with `lazy_detail`, without the items'
+/// details (signatures and declarations, most of the list's size), which
+/// [`resolve_completion`] adds to the item the user looks at.
+pub fn completion(snap: &Snapshot, pos: Position, lazy_detail: bool) -> Vec<lsp::CompletionItem> {
     let offset = snap.map().offset(pos);
     ide::completions(&snap.task, snap.unit_idx, offset)
         .into_iter()
         .map(|c| lsp::CompletionItem {
             kind: Some(completion_kind(c.kind)),
-            detail: c.detail,
+            detail: c.detail.filter(|_| !lazy_detail),
             insert_text_format: c.is_snippet.then_some(InsertTextFormat::SNIPPET),
             // The client sends the item back on resolve: its label is there
             // already, the analyzer's kind goes in `data`.
@@ -58,16 +61,30 @@ pub fn completion(snap: &Snapshot, pos: Position) -> Vec<lsp::CompletionItem> {
 }
 
 /// `completionItem/resolve`: documentation, looked up only for the item the
-/// user looks at.
-pub fn resolve_completion(mut item: lsp::CompletionItem) -> lsp::CompletionItem {
-    let Some(data) = &item.data else {
+/// user looks at, and the detail of an item sent without it: found in the
+/// list asked for at `origin` (the last completion's snapshot and position).
+pub fn resolve_completion(
+    mut item: lsp::CompletionItem,
+    origin: Option<(&Snapshot, Position)>,
+) -> lsp::CompletionItem {
+    let Some(kind) = item
+        .data
+        .as_ref()
+        .and_then(|d| d.as_str())
+        .and_then(kind_from_name)
+    else {
         return item;
     };
-    let kind = data.as_str().and_then(kind_from_name);
-    if let Some(kind) = kind
-        && let Some(doc) = ide::completion_documentation(&item.label, kind)
-    {
+    if let Some(doc) = ide::completion_documentation(&item.label, kind) {
         item.documentation = Some(Documentation::MarkupContent(markdown(doc)));
+    }
+    if item.detail.is_none()
+        && let Some((snap, pos)) = origin
+    {
+        item.detail = ide::completions(&snap.task, snap.unit_idx, snap.map().offset(pos))
+            .into_iter()
+            .find(|c| c.kind == kind && c.label == item.label)
+            .and_then(|c| c.detail);
     }
     item
 }

@@ -11,7 +11,7 @@ use rapid_analyzer::diagnostic::Diagnostic;
 use rapid_analyzer::task::{Task, Unit, task_key};
 use rapid_analyzer::text::LineIndex;
 use rapid_analyzer::workspace::{Workspace, diagnostics_cached, diagnostics_of};
-use tower_lsp_server::ls_types::{Location, Uri};
+use tower_lsp_server::ls_types::{Location, Position, Uri};
 
 use super::document::Document;
 use super::position::{LineMap, PosEncoding};
@@ -31,6 +31,9 @@ pub struct ClientCaps {
     pub pull_diagnostics: bool,
     pub diagnostic_refresh: bool,
     pub semantic_tokens_refresh: bool,
+    /// The client resolves a completion item's `detail` when it shows the
+    /// item (`completionItem.resolveSupport`): lists are sent without it.
+    pub resolve_completion_detail: bool,
 }
 
 #[derive(Default)]
@@ -46,6 +49,9 @@ pub struct State {
     /// `rapid.toml` changes.
     pub client_settings: serde_json::Value,
     pub caps: ClientCaps,
+    /// Where the last completion list was asked for, so that resolving one
+    /// of its items can find the item's detail.
+    pub last_completion: Option<(Uri, Position)>,
     /// Workspace folders.
     pub roots: Vec<PathBuf>,
     /// Every change to the settings or the I/O configuration bumps this, so

@@ -85,6 +85,49 @@ async fn hover_completion_and_signature_help() {
     client.shutdown().await;
 }
 
+/// A client that resolves `detail` (as VS Code does) gets lists without it,
+/// and each item's detail on resolve: the same one the list would carry.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn completion_detail_on_resolve() {
+    let dir = temp_dir("feat-lazy-detail");
+    write_files(&dir, &[("Lib.mod", LIB)]);
+    let lazy = json!({"textDocument": {"completion": {"completionItem": {
+        "resolveSupport": {"properties": ["documentation", "detail"]}}}}});
+    let mut client =
+        TestClient::with_capabilities(dir.clone(), lazy, json!({"diagnosticsDelay": 0})).await;
+    let main = client.open(&dir.join("Main.mod"), MAIN);
+    let at = pos(MAIN, "count := count", 0);
+    let items = client
+        .call("textDocument/completion", doc_pos(&main, at.clone()))
+        .await;
+    let items = items.as_array().cloned().unwrap_or_default();
+    assert!(items.len() > 100, "{}", items.len());
+    assert!(items.iter().all(|i| i.get("detail").is_none()), "{items:?}");
+    let mut eager = TestClient::new(dir.clone(), json!({"diagnosticsDelay": 0})).await;
+    let main2 = eager.open(&dir.join("Main.mod"), MAIN);
+    let full = eager
+        .call("textDocument/completion", doc_pos(&main2, at))
+        .await;
+    eager.shutdown().await;
+    for label in ["helper", "MoveL", "count", "v100"] {
+        let item = items
+            .iter()
+            .find(|i| i["label"] == label)
+            .unwrap_or_else(|| panic!("{label} offered: {items:?}"));
+        let expected = full
+            .as_array()
+            .into_iter()
+            .flatten()
+            .find(|i| i["label"] == label)
+            .map(|i| i["detail"].clone())
+            .unwrap_or_default();
+        assert!(expected.is_string(), "{label}: {full}");
+        let resolved = client.call("completionItem/resolve", item.clone()).await;
+        assert_eq!(resolved["detail"], expected, "{label}: {resolved}");
+    }
+    client.shutdown().await;
+}
+
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn navigation_across_files() {
     let (mut client, main, lib) = setup("feat-nav").await;
