@@ -1269,16 +1269,8 @@ fn may_hold_operation(text: &str) -> bool {
 /// Statements and declarations below a statement are checked on their own.
 fn is_statement_like(kind: &str) -> bool {
     crate::syntax_util::is_simple_statement(kind)
-        || matches!(
-            kind,
-            "if_statement"
-                | "compact_if_statement"
-                | "for_statement"
-                | "while_statement"
-                | "test_statement"
-                | "label"
-                | "data_declaration"
-        )
+        || crate::syntax_util::is_compound_statement(kind)
+        || matches!(kind, "label" | "data_declaration")
 }
 
 /// The children of a node with their field names, read with `cursor` (one

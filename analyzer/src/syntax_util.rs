@@ -345,6 +345,19 @@ pub fn is_simple_statement(kind: &str) -> bool {
     )
 }
 
+/// Statements that hold statements (`IF`, compact `IF`, `FOR`, `WHILE`,
+/// `TEST`).
+pub fn is_compound_statement(kind: &str) -> bool {
+    matches!(
+        kind,
+        "if_statement"
+            | "compact_if_statement"
+            | "for_statement"
+            | "while_statement"
+            | "test_statement"
+    )
+}
+
 /// Calls `f` on every node under `node` (pre-order), without recursion.
 pub(crate) fn walk<'a>(node: Node<'a>, f: &mut impl FnMut(Node<'a>)) {
     walk_pruned(node, &mut |n| {

@@ -159,14 +159,8 @@ fn check_statement<'t>(cx: &mut Cx<'t>, s: Node<'t>) {
         });
         return;
     }
-    if matches!(
-        kind,
-        "if_statement"
-            | "compact_if_statement"
-            | "for_statement"
-            | "while_statement"
-            | "test_statement"
-    ) && !s.has_error()
+    if crate::syntax_util::is_compound_statement(kind)
+        && !s.has_error()
         && !mentions_goto(cx.node_text(s))
     {
         cx.cached_statement(s, |cx| check_uncached(cx, s));
