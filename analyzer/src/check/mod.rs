@@ -819,49 +819,34 @@ impl<'t> Cx<'t> {
     fn close_match(&mut self, name: &str) -> Option<String> {
         let key = fold(name);
         let limit = if key.len() <= 4 { 1 } else { 2 };
-        let mut best: Option<(usize, String)> = None;
-        if let Some(r) = &self.routine {
-            let mut consider = |cand: &str| {
-                let d = edit_distance_folded(&key, cand);
-                if d > 0 && d <= limit && best.as_ref().is_none_or(|(bd, _)| d < *bd) {
-                    best = Some((d, cand.to_owned()));
-                }
-            };
-            r.locals.values().for_each(|d| consider(&d.name));
-            r.params.values().for_each(|p| consider(&p.name));
-        }
+        let mut best = self.routine.as_ref().and_then(|r| {
+            let locals = r.locals.values().map(|d| d.name.as_str());
+            closest(
+                &key,
+                limit,
+                locals.chain(r.params.values().map(|p| p.name.as_str())),
+            )
+        });
         // The module's part does not depend on the routine: remembered per
         // module (a module may declare thousands of data).
         if let Some((mi, m)) = self.module {
             let found = match self.module_close_memo.get(&(mi, key.clone())) {
                 Some(found) => found.clone(),
                 None => {
-                    let mut found: Option<(usize, String)> = None;
-                    let mut consider = |cand: &str| {
-                        let d = edit_distance_folded(&key, cand);
-                        if d > 0 && d <= limit && found.as_ref().is_none_or(|(bd, _)| d < *bd) {
-                            found = Some((d, cand.to_owned()));
-                        }
-                    };
-                    m.data.iter().for_each(|d| consider(&d.name));
-                    m.routines.iter().for_each(|d| consider(&d.name));
+                    let data = m.data.iter().map(|d| d.name.as_str());
+                    let found = closest(
+                        &key,
+                        limit,
+                        data.chain(m.routines.iter().map(|r| r.name.as_str())),
+                    );
                     self.module_close_memo
                         .insert((mi, key.clone()), found.clone());
                     found
                 }
             };
-            if let Some((d, n)) = found
-                && best.as_ref().is_none_or(|(bd, _)| d < *bd)
-            {
-                best = Some((d, n));
-            }
+            keep_nearer(&mut best, found);
         }
-        let global = close_global(self.task, &key, limit);
-        if let Some((d, n)) = global
-            && best.as_ref().is_none_or(|(bd, _)| d < *bd)
-        {
-            best = Some((d, n));
-        }
+        keep_nearer(&mut best, close_global(self.task, &key, limit));
         best.map(|(_, n)| n)
     }
 
@@ -947,6 +932,32 @@ pub(crate) fn option_routine(name: &str) -> Option<&'static crate::catalogue::Op
 
 /// The task's global name closest to `key` within `limit` edits, memoised
 /// per task (the same unresolved name tends to recur in many places).
+/// The first of the names nearest to `key` (folded), with its distance:
+/// at least one edit and at most `limit`.
+fn closest<'n>(
+    key: &str,
+    limit: usize,
+    names: impl IntoIterator<Item = &'n str>,
+) -> Option<(usize, String)> {
+    let mut best: Option<(usize, &str)> = None;
+    for cand in names {
+        let d = edit_distance_folded(key, cand);
+        if d > 0 && d <= limit && best.is_none_or(|(bd, _)| d < bd) {
+            best = Some((d, cand));
+        }
+    }
+    best.map(|(d, n)| (d, n.to_owned()))
+}
+
+/// Puts `other` in `best` if it is strictly nearer.
+fn keep_nearer(best: &mut Option<(usize, String)>, other: Option<(usize, String)>) {
+    if let Some((d, n)) = other
+        && best.as_ref().is_none_or(|(bd, _)| d < *bd)
+    {
+        *best = Some((d, n));
+    }
+}
+
 fn close_global(task: &Task, key: &str, limit: usize) -> Option<(usize, String)> {
     let mut memo = task
         .close_names
