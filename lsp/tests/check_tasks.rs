@@ -7,10 +7,6 @@ use std::path::Path;
 mod support;
 use support::*;
 
-fn write1(dir: &Path, name: &str, text: &str) {
-    write(dir, &[(name, text)]);
-}
-
 fn check(dir: &Path) -> (Option<i32>, String) {
     let out = rapid(dir, &["check", "--format", "concise", "."]);
     let mut lines: Vec<String> = String::from_utf8_lossy(&out.stdout)
@@ -27,8 +23,7 @@ const MAIN_B: &str = "MODULE B\n  PROC main()\n    TPWrite \"b\";\n  ENDPROC\nEN
 #[test]
 fn a_plain_folder_is_one_task_and_its_clashes_are_warnings() {
     let dir = scratch("plain");
-    write1(&dir, "A.mod", MAIN_A);
-    write1(&dir, "B.mod", MAIN_B);
+    write(&dir, &[("A.mod", MAIN_A), ("B.mod", MAIN_B)]);
     let (code, out) = check(&dir);
     assert_eq!(code, Some(0), "{out}");
     assert_eq!(out.matches("warning[E107]").count(), 2, "{out}");
@@ -38,12 +33,14 @@ fn a_plain_folder_is_one_task_and_its_clashes_are_warnings() {
 #[test]
 fn a_backup_task_is_certain_and_its_clashes_are_errors() {
     let dir = scratch("backup");
-    write1(&dir, "BACKUP/RAPID/TASK1/PROGMOD/A.mod", MAIN_A);
-    write1(&dir, "BACKUP/RAPID/TASK1/PROGMOD/B.mod", MAIN_B);
-    write1(
+    let c = MAIN_A.replace("MODULE A", "MODULE C");
+    write(
         &dir,
-        "BACKUP/RAPID/TASK2/PROGMOD/C.mod",
-        &MAIN_A.replace("MODULE A", "MODULE C"),
+        &[
+            ("BACKUP/RAPID/TASK1/PROGMOD/A.mod", MAIN_A),
+            ("BACKUP/RAPID/TASK1/PROGMOD/B.mod", MAIN_B),
+            ("BACKUP/RAPID/TASK2/PROGMOD/C.mod", &c),
+        ],
     );
     let (code, out) = check(&dir);
     assert_eq!(code, Some(1), "{out}");
@@ -55,17 +52,20 @@ fn a_backup_task_is_certain_and_its_clashes_are_errors() {
 #[test]
 fn program_files_group_the_modules_they_list() {
     let dir = scratch("pgf");
-    write1(&dir, "A.mod", MAIN_A);
-    write1(&dir, "B.mod", MAIN_B);
-    write1(
+    write(
         &dir,
-        "a.pgf",
-        "<?xml version=\"1.0\" encoding=\"ISO-8859-1\" ?>\n<Program>\n\t<Module>A.mod</Module>\n</Program>\n",
-    );
-    write1(
-        &dir,
-        "b.pgf",
-        "<?xml version=\"1.0\" encoding=\"ISO-8859-1\" ?>\n<Program>\n\t<Module>B.mod</Module>\n</Program>\n",
+        &[
+            ("A.mod", MAIN_A),
+            ("B.mod", MAIN_B),
+            (
+                "a.pgf",
+                "<?xml version=\"1.0\" encoding=\"ISO-8859-1\" ?>\n<Program>\n\t<Module>A.mod</Module>\n</Program>\n",
+            ),
+            (
+                "b.pgf",
+                "<?xml version=\"1.0\" encoding=\"ISO-8859-1\" ?>\n<Program>\n\t<Module>B.mod</Module>\n</Program>\n",
+            ),
+        ],
     );
     let (code, out) = check(&dir);
     assert_eq!((code, out.as_str()), (Some(0), ""));
@@ -74,10 +74,12 @@ fn program_files_group_the_modules_they_list() {
 #[test]
 fn rapid_text_in_a_pgf_file_is_checked_as_a_module() {
     let dir = scratch("pgf-rapid");
-    write1(
+    write(
         &dir,
-        "Prog.pgf",
-        "MODULE P\n  PROC main()\n    x := 1\n  ENDPROC\nENDMODULE\n",
+        &[(
+            "Prog.pgf",
+            "MODULE P\n  PROC main()\n    x := 1\n  ENDPROC\nENDMODULE\n",
+        )],
     );
     let (code, out) = check(&dir);
     assert_eq!(code, Some(1), "{out}");
