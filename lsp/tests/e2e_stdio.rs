@@ -155,6 +155,12 @@ fn an_editor_session_on_the_palletizer_example() {
         }),
     );
     assert_eq!(init["serverInfo"]["name"], "rapid");
+    // The server runs without transparent huge pages (steady latency).
+    if let Ok(status) = std::fs::read_to_string(format!("/proc/{}/status", editor.child.id()))
+        && let Some(line) = status.lines().find(|l| l.starts_with("THP_enabled:"))
+    {
+        assert_eq!(line.split_whitespace().nth(1), Some("0"), "{line}");
+    }
     editor.notify("initialized", json!({}));
     editor.wait_for(|m| {
         m["method"] == "window/logMessage"
