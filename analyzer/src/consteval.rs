@@ -17,7 +17,6 @@
 
 use std::borrow::Cow;
 use std::cell::{Cell, OnceCell};
-use std::collections::HashMap;
 use std::ops::Range;
 
 use rapid_evaluator::{
@@ -29,7 +28,7 @@ use crate::catalogue::{Datum, DatumKind, Mode, TypeKind, catalogue};
 use crate::check::{Cx, DataSym, RoutineSym};
 use crate::items::{DataDecl, ParamDecl, Storage};
 use crate::lower::{is_expression, lower_with};
-use crate::names::fold;
+use crate::names::{NameMap, fold};
 use crate::syntax_util::{field, fields, text_of};
 use crate::task::{Item, ItemRef, Task, Unit};
 use crate::ty::{Ty, UserType};
@@ -200,8 +199,8 @@ fn with_routine<'t, R>(
 /// The names a routine puts in front of its module's: its data, its
 /// parameters and the `FOR` variables around a position.
 struct RoutineNames<'t> {
-    locals: HashMap<String, DataDecl>,
-    params: HashMap<String, &'t ParamDecl>,
+    locals: NameMap<DataDecl>,
+    params: NameMap<&'t ParamDecl>,
     for_vars: Vec<String>,
 }
 

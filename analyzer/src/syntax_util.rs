@@ -10,8 +10,12 @@ pub fn text_of<'t>(node: Node<'_>, text: &'t str) -> &'t str {
 /// The grammar's field id for a field name, resolved once per name (tree-
 /// sitter's own lookup compares the name with every field name per call).
 pub fn field_id(name: &str) -> Option<std::num::NonZeroU16> {
-    static IDS: std::sync::OnceLock<std::collections::HashMap<String, std::num::NonZeroU16>> =
-        std::sync::OnceLock::new();
+    type Ids = std::collections::HashMap<
+        String,
+        std::num::NonZeroU16,
+        std::hash::BuildHasherDefault<crate::names::NameHasher>,
+    >;
+    static IDS: std::sync::OnceLock<Ids> = std::sync::OnceLock::new();
     IDS.get_or_init(|| {
         let language = crate::syntax::language();
         (1..=language.field_count())

@@ -13,7 +13,7 @@ use tree_sitter::Tree;
 
 use crate::diagnostic::Diagnostic;
 use crate::items::{DataDecl, FileItems, Module, RecordDecl, RoutineDecl, Scope, Storage};
-use crate::names::fold;
+use crate::names::{NameMap, fold};
 use crate::ty::{Types, UserType};
 use crate::unit_tree::UnitTree;
 
@@ -270,10 +270,10 @@ pub struct Task {
     pub key: String,
     pub units: Vec<Arc<Unit>>,
     /// Global (non-`LOCAL`) declarations of every module, by folded name.
-    pub globals: HashMap<String, Vec<ItemRef>>,
+    pub globals: NameMap<Vec<ItemRef>>,
     /// `LOCAL` declarations, by folded name (to explain why a name is not
     /// visible from another module).
-    pub locals: HashMap<String, Vec<ItemRef>>,
+    pub locals: NameMap<Vec<ItemRef>>,
     /// Signals configured for this task (`EIO.cfg`): folded name to data
     /// type (`signaldi`...); `None` when no configuration was given.
     pub signals: Option<Signals>,
@@ -304,8 +304,8 @@ impl Task {
     }
 
     pub fn new(key: String, units: Vec<Arc<Unit>>, signals: Option<Signals>) -> Task {
-        let mut globals: HashMap<String, Vec<ItemRef>> = HashMap::new();
-        let mut locals: HashMap<String, Vec<ItemRef>> = HashMap::new();
+        let mut globals: NameMap<Vec<ItemRef>> = NameMap::default();
+        let mut locals: NameMap<Vec<ItemRef>> = NameMap::default();
         let mut interface: u64 = 0;
         let mut constants: u64 = 0;
         for (u, unit) in units.iter().enumerate() {

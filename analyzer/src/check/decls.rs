@@ -9,7 +9,7 @@ use tree_sitter::Node;
 use super::{Cx, RoutineCx, Used, decl_ty, exprs, stmts};
 use crate::diagnostic::{Diagnostic, Edit, Fix};
 use crate::items::{self, DataDecl, Module, RoutineDecl, RoutineKind, Storage};
-use crate::names::fold;
+use crate::names::{NameMap, fold};
 use crate::rules;
 use crate::syntax_util::{field, fields};
 use crate::task::{Item, ItemRef, module_items};
@@ -138,7 +138,7 @@ fn check_name_length(cx: &mut Cx<'_>, name: &str, range: Range<usize>) {
 }
 
 pub(super) fn check_module<'t>(cx: &mut Cx<'t>, node: Node<'t>, module: &'t Module) {
-    let data_nodes = body_nodes(node);
+    let data_nodes = BodyNodes::of(node);
     check_module_prelude(cx, module, &data_nodes);
     for decl in &module.routines {
         check_routine_at(cx, &data_nodes, decl);
@@ -146,12 +146,22 @@ pub(super) fn check_module<'t>(cx: &mut Cx<'t>, node: Node<'t>, module: &'t Modu
     check_unused_locals_of_module(cx, module);
 }
 
-/// The declarations of a module's body by start offset.
-pub(super) fn body_nodes(node: Node<'_>) -> HashMap<usize, Node<'_>> {
-    fields(node, "body")
-        .into_iter()
-        .map(|n| (n.start_byte(), n))
-        .collect()
+/// The declarations of a module's body, in source order, found by their
+/// start offset.
+pub(super) struct BodyNodes<'t>(Vec<Node<'t>>);
+
+impl<'t> BodyNodes<'t> {
+    pub(super) fn of(module: Node<'t>) -> BodyNodes<'t> {
+        BodyNodes(fields(module, "body"))
+    }
+
+    /// The declaration that starts at `start` (the last one, should an
+    /// empty node start there too).
+    fn at(&self, start: usize) -> Option<Node<'t>> {
+        let after = self.0.partition_point(|n| n.start_byte() <= start);
+        let n = *self.0.get(after.checked_sub(1)?)?;
+        (n.start_byte() == start).then_some(n)
+    }
 }
 
 /// The checks of a module other than its routines' and its unused LOCAL
@@ -159,14 +169,14 @@ pub(super) fn body_nodes(node: Node<'_>) -> HashMap<usize, Node<'_>> {
 pub(super) fn check_module_prelude<'t>(
     cx: &mut Cx<'t>,
     module: &'t Module,
-    data_nodes: &HashMap<usize, Node<'t>>,
+    data_nodes: &BodyNodes<'t>,
 ) {
     check_name_length(cx, &module.name, module.name_range.clone());
     check_duplicates_in_module(cx, module);
     check_ambiguous_globals(cx, module);
     for decl in &module.data {
-        if let Some(n) = data_nodes.get(&decl.range.start) {
-            check_data(cx, *n, decl, false);
+        if let Some(n) = data_nodes.at(decl.range.start) {
+            check_data(cx, n, decl, false);
         }
     }
     for decl in &module.records {
@@ -189,11 +199,11 @@ pub(super) fn check_module_prelude<'t>(
 /// Checks a routine of the current module, found by its declaration.
 pub(super) fn check_routine_at<'t>(
     cx: &mut Cx<'t>,
-    data_nodes: &HashMap<usize, Node<'t>>,
+    data_nodes: &BodyNodes<'t>,
     decl: &'t RoutineDecl,
 ) {
-    if let Some(n) = data_nodes.get(&decl.range.start) {
-        check_routine(cx, *n, decl);
+    if let Some(n) = data_nodes.at(decl.range.start) {
+        check_routine(cx, n, decl);
     }
 }
 
@@ -426,7 +436,7 @@ fn literal_sizes(cx: &Cx<'_>, decl: &DataDecl) -> Vec<Option<usize>> {
 
 fn check_routine<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &'t RoutineDecl) {
     check_name_length(cx, &decl.name, decl.name_range.clone());
-    let mut params = HashMap::new();
+    let mut params = NameMap::default();
     let mut names: Vec<(&str, Range<usize>)> = Vec::new();
     for p in &decl.params {
         check_name_length(cx, &p.name, p.name_range.clone());
@@ -454,9 +464,9 @@ fn check_routine<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &'t RoutineDecl) {
     cx.routine = Some(RoutineCx {
         decl,
         params,
-        locals: HashMap::new(),
+        locals: NameMap::default(),
         for_vars: Vec::new(),
-        labels: HashMap::new(),
+        labels: NameMap::default(),
         in_error_handler: false,
     });
     cx.scope_changed();

@@ -20,7 +20,7 @@ use tree_sitter::Node;
 use crate::catalogue::{Catalogue, Datum, DatumKind, Mode, Routine, catalogue};
 use crate::diagnostic::{Diagnostic, Related, Rule};
 use crate::items::{DataDecl, Module, ParamDecl, RoutineDecl, Storage};
-use crate::names::{fold, with_folded};
+use crate::names::{NameMap, fold, with_folded};
 use crate::task::{Item, ItemRef, Task, Unit};
 use crate::ty::{Ty, Types};
 
@@ -147,7 +147,7 @@ impl CheckShare<'_> {
         let modules = cx.modules();
         let pieces = pieces(&cx);
         let mut result = ShareResult::default();
-        let mut body: Option<(usize, HashMap<usize, Node<'_>>)> = None;
+        let mut body: Option<(usize, decls::BodyNodes<'_>)> = None;
         for (piece, _) in pieces.get(self.pieces.clone()).unwrap_or_default() {
             let mi = match piece {
                 Piece::Module(mi) | Piece::Routine(mi, _) => *mi,
@@ -158,7 +158,7 @@ impl CheckShare<'_> {
             };
             if body.as_ref().is_none_or(|(m, _)| *m != mi) {
                 cx.enter_module(mi, module);
-                body = Some((mi, decls::body_nodes(*node)));
+                body = Some((mi, decls::BodyNodes::of(*node)));
             }
             let Some((_, nodes)) = &body else {
                 continue;
@@ -332,12 +332,12 @@ pub(crate) enum RoutineSym<'t> {
 /// The scope of the routine being checked.
 pub(crate) struct RoutineCx<'t> {
     pub decl: &'t RoutineDecl,
-    pub params: HashMap<String, &'t ParamDecl>,
-    pub locals: HashMap<String, DataDecl>,
+    pub params: NameMap<&'t ParamDecl>,
+    pub locals: NameMap<DataDecl>,
     pub for_vars: Vec<String>,
     /// Labels by folded name: the label's range and the statement list that
     /// holds it (the node id of the list's parent).
-    pub labels: HashMap<String, (Range<usize>, usize)>,
+    pub labels: NameMap<(Range<usize>, usize)>,
     pub in_error_handler: bool,
 }
 
@@ -1060,11 +1060,11 @@ impl<'t> Cx<'t> {
         else {
             return Some(cx);
         };
-        let mut params = HashMap::new();
+        let mut params = NameMap::default();
         for p in &decl.params {
             params.entry(fold(&p.name)).or_insert(p);
         }
-        let mut locals = HashMap::new();
+        let mut locals = NameMap::default();
         // Routine data comes before the first statement: stop there, so that
         // entering a long routine costs its declarations, not its statements
         // (constant evaluation enters the scope once per statement).
@@ -1097,7 +1097,7 @@ impl<'t> Cx<'t> {
             params,
             locals,
             for_vars,
-            labels: HashMap::new(),
+            labels: NameMap::default(),
             in_error_handler: false,
         });
         Some(cx)
