@@ -1,7 +1,7 @@
 //! `rapid check` and `rapid rules` end to end: the built binary on small
 //! programs written into scratch folders.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::Output;
 
 mod support;
@@ -36,7 +36,7 @@ ENDMODULE\n";
 
 /// A task with one error (E003), an unused datum (W201) and an unknown
 /// routine (W101).
-fn program(name: &str) -> PathBuf {
+fn program(name: &str) -> Scratch {
     let dir = scratch(name);
     write(&dir, &[("prog/Main.mod", MAIN), ("prog/Lib.mod", LIB)]);
     dir

@@ -2,22 +2,12 @@
 //! crate and uses what it needs).
 #![allow(dead_code)]
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, Output, Stdio};
-use std::sync::atomic::{AtomicUsize, Ordering};
 
-/// A fresh, empty folder for one test, named after the test.
-pub fn scratch(name: &str) -> PathBuf {
-    static N: AtomicUsize = AtomicUsize::new(0);
-    let dir = std::env::temp_dir().join(format!(
-        "rapid-test-{}-{}-{name}",
-        std::process::id(),
-        N.fetch_add(1, Ordering::Relaxed)
-    ));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("scratch folder");
-    dir
-}
+// The binary's in-process server tests use the same file.
+mod scratch;
+pub use scratch::*;
 
 /// Writes `files` (`path`, text) below `dir`, making folders as needed.
 pub fn write(dir: &Path, files: &[(&str, &str)]) {

@@ -25,7 +25,7 @@ fn no_delay() -> Value {
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn opened_files_get_diagnostics_with_version_code_link_and_tags() {
     let dir = temp_dir("diag-open");
-    let mut client = TestClient::new(dir.clone(), no_delay()).await;
+    let mut client = TestClient::new(dir.to_path_buf(), no_delay()).await;
     let text = "MODULE Main\n  PROC main()\n    VAR num unused;\n    x = 1;\n    nothere;\n  ENDPROC\n  PROC main()\n  ENDPROC\nENDMODULE\n";
     let uri = client.open(&dir.join("Main.mod"), text);
     let params = client.diagnostics_for(&uri).await;
@@ -37,7 +37,7 @@ async fn opened_files_get_diagnostics_with_version_code_link_and_tags() {
 async fn rule_severities_come_from_the_settings() {
     let dir = temp_dir("diag-settings");
     let options = json!({"diagnosticsDelay": 0, "rules": {"unused-data": "off", "W101": "error"}});
-    let mut client = TestClient::new(dir.clone(), options).await;
+    let mut client = TestClient::new(dir.to_path_buf(), options).await;
     let text =
         "MODULE Main\n  PROC main()\n    VAR num unused;\n    nothere;\n  ENDPROC\nENDMODULE\n";
     let uri = client.open(&dir.join("Main.mod"), text);
@@ -62,7 +62,7 @@ async fn rule_severities_come_from_the_settings() {
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn incremental_edits_with_crlf_and_non_ascii_text() {
     let dir = temp_dir("diag-edit");
-    let mut client = TestClient::new(dir.clone(), no_delay()).await;
+    let mut client = TestClient::new(dir.to_path_buf(), no_delay()).await;
     let text = "MODULE Main\r\n    ! Größe 𝄞\r\n    PROC main()\r\n        Stop;\r\n    ENDPROC\r\nENDMODULE\r\n";
     let uri = client.open(&dir.join("Main.mod"), text);
     assert_eq!(
@@ -106,7 +106,7 @@ async fn incremental_edits_with_crlf_and_non_ascii_text() {
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn typing_is_debounced_and_stale_results_never_win() {
     let dir = temp_dir("diag-debounce");
-    let mut client = TestClient::new(dir.clone(), json!({"diagnosticsDelay": 150})).await;
+    let mut client = TestClient::new(dir.to_path_buf(), json!({"diagnosticsDelay": 150})).await;
     let text = "MODULE Main\n  PROC main()\n    \n  ENDPROC\nENDMODULE\n";
     let uri = client.open(&dir.join("Main.mod"), text);
     // The first publication is immediate.
@@ -145,7 +145,7 @@ async fn typing_is_debounced_and_stale_results_never_win() {
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn an_interface_change_republishes_the_other_open_files_of_the_task() {
     let dir = temp_dir("diag-interface");
-    let mut client = TestClient::new(dir.clone(), no_delay()).await;
+    let mut client = TestClient::new(dir.to_path_buf(), no_delay()).await;
     let main = client.open(&dir.join("Main.mod"), MAIN);
     let lib = client.open(&dir.join("Lib.mod"), LIB);
     // Main sees Lib's helper once Lib is open.
@@ -171,7 +171,8 @@ async fn an_interface_change_republishes_the_other_open_files_of_the_task() {
 async fn pull_diagnostics_report_unchanged_results() {
     let dir = temp_dir("diag-pull");
     let capabilities = json!({"textDocument": {"diagnostic": {"dynamicRegistration": false}}});
-    let mut client = TestClient::with_capabilities(dir.clone(), capabilities, no_delay()).await;
+    let mut client =
+        TestClient::with_capabilities(dir.to_path_buf(), capabilities, no_delay()).await;
     let uri = client.open(&dir.join("Main.mod"), MAIN);
     let first = client
         .call(
@@ -220,7 +221,7 @@ async fn pull_diagnostics_report_unchanged_results() {
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn quick_fixes_come_from_the_diagnostics() {
     let dir = temp_dir("diag-fix");
-    let mut client = TestClient::new(dir.clone(), no_delay()).await;
+    let mut client = TestClient::new(dir.to_path_buf(), no_delay()).await;
     let text = "MODULE Main\n  PROC main()\n    VAR num x;\n    x = 1;\n  ENDPROC\nENDMODULE\n";
     let uri = client.open(&dir.join("Main.mod"), text);
     let params = client.diagnostics_for(&uri).await;

@@ -19,9 +19,10 @@ async fn setup(name: &str) -> (TestClient, String, String) {
             ("rapid.toml", "[format]\nindent-width = 2\n"),
         ],
     );
-    let mut client = TestClient::new(dir.clone(), json!({"diagnosticsDelay": 0})).await;
+    let mut client = TestClient::new(dir.to_path_buf(), json!({"diagnosticsDelay": 0})).await;
     let main = client.open(&dir.join("Main.mod"), MAIN);
     let lib = super::uri(&dir.join("Lib.mod"));
+    client.keep(dir);
     (client, main, lib)
 }
 
@@ -94,7 +95,8 @@ async fn completion_detail_on_resolve() {
     let lazy = json!({"textDocument": {"completion": {"completionItem": {
         "resolveSupport": {"properties": ["documentation", "detail"]}}}}});
     let mut client =
-        TestClient::with_capabilities(dir.clone(), lazy, json!({"diagnosticsDelay": 0})).await;
+        TestClient::with_capabilities(dir.to_path_buf(), lazy, json!({"diagnosticsDelay": 0}))
+            .await;
     let main = client.open(&dir.join("Main.mod"), MAIN);
     let at = pos(MAIN, "count := count", 0);
     let items = client
@@ -103,7 +105,7 @@ async fn completion_detail_on_resolve() {
     let items = items.as_array().cloned().unwrap_or_default();
     assert!(items.len() > 100, "{}", items.len());
     assert!(items.iter().all(|i| i.get("detail").is_none()), "{items:?}");
-    let mut eager = TestClient::new(dir.clone(), json!({"diagnosticsDelay": 0})).await;
+    let mut eager = TestClient::new(dir.to_path_buf(), json!({"diagnosticsDelay": 0})).await;
     let main2 = eager.open(&dir.join("Main.mod"), MAIN);
     let full = eager
         .call("textDocument/completion", doc_pos(&main2, at))

@@ -8,7 +8,6 @@ mod workspace;
 
 use std::collections::VecDeque;
 use std::path::{Path, PathBuf};
-use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Duration;
 
 use serde_json::{Value, json};
@@ -28,21 +27,15 @@ pub struct TestClient {
     next_id: i64,
     server: Option<tokio::task::JoinHandle<bool>>,
     pub root: PathBuf,
+    /// A scratch folder deleted with the client (see [`TestClient::keep`]).
+    folder: Option<Scratch>,
 }
 
 const TIMEOUT: Duration = Duration::from_secs(20);
 
-static DIRS: AtomicUsize = AtomicUsize::new(0);
-
-/// A fresh folder for a test's files.
-pub fn temp_dir(name: &str) -> PathBuf {
-    let n = DIRS.fetch_add(1, Ordering::SeqCst);
-    let dir =
-        std::env::temp_dir().join(format!("rapid-lsp-test-{}-{n}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    dir
-}
+#[path = "../../../tests/support/scratch.rs"]
+mod scratch;
+pub use scratch::{Scratch, scratch as temp_dir};
 
 /// Writes `files` (path relative to `dir`, text) and returns `dir`.
 pub fn write_files(dir: &Path, files: &[(&str, &str)]) {
@@ -63,6 +56,12 @@ pub fn uri(path: &Path) -> String {
 }
 
 impl TestClient {
+    /// Keeps `folder` (the workspace of a client made in a helper) until
+    /// the client is dropped.
+    pub fn keep(&mut self, folder: Scratch) {
+        self.folder = Some(folder);
+    }
+
     /// Starts a server on pipes, without initializing it.
     pub fn start(root: PathBuf) -> TestClient {
         let (to_server, server_in) = pipe();
@@ -77,6 +76,7 @@ impl TestClient {
             next_id: 0,
             server: Some(server),
             root,
+            folder: None,
         }
     }
 

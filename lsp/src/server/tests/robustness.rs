@@ -26,7 +26,7 @@ fn error_code(response: &Value) -> i64 {
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn malformed_messages_and_unknown_methods() {
     let dir = temp_dir("bad-json");
-    let mut client = TestClient::new(dir.clone(), json!({})).await;
+    let mut client = TestClient::new(dir.to_path_buf(), json!({})).await;
     let uri = client.open(&dir.join("Main.mod"), TEXT);
     // Not JSON at all: a parse error, answered with a null id.
     let junk = b"{\"jsonrpc\": \"2.0\", \"id\": 99, \"method\": ";
@@ -68,7 +68,7 @@ async fn malformed_messages_and_unknown_methods() {
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn unknown_and_deleted_files_get_empty_answers() {
     let dir = temp_dir("bad-file");
-    let mut client = TestClient::new(dir.clone(), json!({})).await;
+    let mut client = TestClient::new(dir.to_path_buf(), json!({})).await;
     let missing = uri(&dir.join("Nope.mod"));
     for method in [
         "textDocument/hover",
@@ -117,7 +117,7 @@ async fn unknown_and_deleted_files_get_empty_answers() {
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn positions_past_the_end_are_clamped() {
     let dir = temp_dir("bad-pos");
-    let mut client = TestClient::new(dir.clone(), json!({})).await;
+    let mut client = TestClient::new(dir.to_path_buf(), json!({})).await;
     let uri = client.open(&dir.join("Main.mod"), TEXT);
     for position in [
         json!({"line": 2, "character": 500}),
@@ -153,7 +153,7 @@ async fn positions_past_the_end_are_clamped() {
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn a_huge_file_is_kept_but_not_analysed() {
     let dir = temp_dir("bad-huge");
-    let mut client = TestClient::new(dir.clone(), json!({"diagnosticsDelay": 0})).await;
+    let mut client = TestClient::new(dir.to_path_buf(), json!({"diagnosticsDelay": 0})).await;
     let mut text = String::from("MODULE Huge\n");
     let line = "  ! ........................................................................\n";
     while text.len() < 50 * 1024 * 1024 {
@@ -187,7 +187,7 @@ async fn a_huge_file_is_kept_but_not_analysed() {
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn a_panicking_handler_answers_an_error_and_the_server_goes_on() {
     let dir = temp_dir("bad-panic");
-    let mut client = TestClient::new(dir.clone(), json!({})).await;
+    let mut client = TestClient::new(dir.to_path_buf(), json!({})).await;
     let uri = client.open(&dir.join("Main.mod"), TEXT);
     let response = client.request("rapid/testPanic", Value::Null).await;
     assert_eq!(error_code(&response), -32603, "{response}");
@@ -209,7 +209,7 @@ async fn a_panicking_handler_answers_an_error_and_the_server_goes_on() {
 async fn shutdown_and_exit_follow_the_protocol() {
     // Requests before initialize are refused.
     let dir = temp_dir("bad-lifecycle");
-    let mut client = TestClient::start(dir.clone());
+    let mut client = TestClient::start(dir.to_path_buf());
     let response = client
         .request(
             "textDocument/hover",
@@ -221,7 +221,8 @@ async fn shutdown_and_exit_follow_the_protocol() {
 
     // After shutdown, requests are invalid; exit then ends the server with
     // success.
-    let mut client = TestClient::new(temp_dir("bad-lifecycle2"), json!({})).await;
+    let dir = temp_dir("bad-lifecycle2");
+    let mut client = TestClient::new(dir.to_path_buf(), json!({})).await;
     assert_eq!(client.call("shutdown", Value::Null).await, Value::Null);
     let response = client
         .request(
@@ -234,7 +235,8 @@ async fn shutdown_and_exit_follow_the_protocol() {
     assert!(client.finish().await);
 
     // Exit without shutdown: the server stops, reporting an unclean exit.
-    let mut client = TestClient::new(temp_dir("bad-lifecycle3"), json!({})).await;
+    let dir = temp_dir("bad-lifecycle3");
+    let mut client = TestClient::new(dir.to_path_buf(), json!({})).await;
     client.notify("exit", Value::Null);
     assert!(!client.finish().await);
 }
@@ -242,7 +244,7 @@ async fn shutdown_and_exit_follow_the_protocol() {
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn position_encoding_is_negotiated() {
     let dir = temp_dir("encoding");
-    let mut client = TestClient::start(dir.clone());
+    let mut client = TestClient::start(dir.to_path_buf());
     let init = client
         .call(
             "initialize",
@@ -275,7 +277,8 @@ async fn position_encoding_is_negotiated() {
     assert!(client.shutdown().await);
 
     // Without the offer, UTF-16.
-    let mut client = TestClient::start(temp_dir("encoding2"));
+    let dir = temp_dir("encoding2");
+    let mut client = TestClient::start(dir.to_path_buf());
     let init = client.call("initialize", json!({"capabilities": {}})).await;
     assert_eq!(init["capabilities"]["positionEncoding"], "utf-16");
 }

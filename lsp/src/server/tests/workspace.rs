@@ -43,7 +43,7 @@ async fn the_workspace_is_indexed_with_progress() {
             ("notes.txt", "x"),
         ],
     );
-    let mut client = TestClient::new(dir.clone(), json!({"diagnosticsDelay": 0})).await;
+    let mut client = TestClient::new(dir.to_path_buf(), json!({"diagnosticsDelay": 0})).await;
     // Progress: created, begun, reported, ended.
     assert!(
         client
@@ -103,7 +103,7 @@ async fn the_workspace_is_indexed_with_progress() {
 async fn files_changed_outside_the_editor_are_reloaded() {
     let dir = temp_dir("ws-watch");
     write_files(&dir, &[("Lib.mod", LIB), ("EIO.cfg", EIO)]);
-    let mut client = TestClient::new(dir.clone(), json!({"diagnosticsDelay": 0})).await;
+    let mut client = TestClient::new(dir.to_path_buf(), json!({"diagnosticsDelay": 0})).await;
     let main = client.open(&dir.join("Main.mod"), MAIN);
     until_codes(&mut client, &main, &[]).await;
     // Lib renames its routine on disk.
@@ -139,7 +139,7 @@ async fn files_changed_outside_the_editor_are_reloaded() {
 async fn a_closed_file_goes_back_to_its_text_on_disk() {
     let dir = temp_dir("ws-close");
     write_files(&dir, &[("Lib.mod", LIB), ("EIO.cfg", EIO)]);
-    let mut client = TestClient::new(dir.clone(), json!({"diagnosticsDelay": 0})).await;
+    let mut client = TestClient::new(dir.to_path_buf(), json!({"diagnosticsDelay": 0})).await;
     let main = client.open(&dir.join("Main.mod"), MAIN);
     let lib = client.open(&dir.join("Lib.mod"), LIB);
     until_codes(&mut client, &main, &[]).await;
@@ -173,7 +173,7 @@ async fn unreadable_files_are_skipped_with_a_log_message() {
         b"MODULE Latin\n  ! Gr\xF6\xDFe\n  PROC latinProc()\n  ENDPROC\nENDMODULE\n",
     )
     .expect("write");
-    let mut client = TestClient::new(dir.clone(), json!({"diagnosticsDelay": 0})).await;
+    let mut client = TestClient::new(dir.to_path_buf(), json!({"diagnosticsDelay": 0})).await;
     let logs: Vec<String> = client
         .received
         .iter()
@@ -214,7 +214,7 @@ async fn rapid_toml_configures_the_rules_and_is_reloaded() {
         &dir,
         &[("rapid.toml", "[lint]\nignore = [\"unused-data\"]\n")],
     );
-    let mut client = TestClient::new(dir.clone(), json!({"diagnosticsDelay": 0})).await;
+    let mut client = TestClient::new(dir.to_path_buf(), json!({"diagnosticsDelay": 0})).await;
     let text =
         "MODULE Main\n  PROC main()\n    VAR num unused;\n    nothere;\n  ENDPROC\nENDMODULE\n";
     let main = client.open(&dir.join("Main.mod"), text);
@@ -242,7 +242,8 @@ async fn without_file_watching_the_disk_is_polled() {
     write_files(&dir, &[("Lib.mod", LIB), ("EIO.cfg", EIO)]);
     // A client that cannot watch files.
     let mut client =
-        TestClient::with_capabilities(dir.clone(), json!({}), json!({"diagnosticsDelay": 0})).await;
+        TestClient::with_capabilities(dir.to_path_buf(), json!({}), json!({"diagnosticsDelay": 0}))
+            .await;
     let main = client.open(&dir.join("Main.mod"), MAIN);
     until_codes(&mut client, &main, &[]).await;
     assert!(
@@ -268,7 +269,7 @@ async fn without_file_watching_the_disk_is_polled() {
 async fn an_io_configuration_edited_in_the_editor_applies_at_once() {
     let dir = temp_dir("ws-eio-edit");
     write_files(&dir, &[("Lib.mod", LIB)]);
-    let mut client = TestClient::new(dir.clone(), json!({"diagnosticsDelay": 0})).await;
+    let mut client = TestClient::new(dir.to_path_buf(), json!({"diagnosticsDelay": 0})).await;
     let eio = client.open(&dir.join("EIO.cfg"), EIO);
     let main = client.open(&dir.join("Main.mod"), MAIN);
     until_codes(&mut client, &main, &[]).await;
