@@ -1,7 +1,6 @@
-//! Bounded evaluation, scopes across modules, the API surface, and speed.
+//! Bounded evaluation, scopes across modules and the API surface.
 
 use std::borrow::Cow;
-use std::time::Instant;
 
 use rapid_evaluator::{
     Arg, BinOp, EmptyEnv, Env, ErrorCode, Expr, Lookup, MapEnv, Options, Type, UnOp, Value,
@@ -318,10 +317,10 @@ fn euler_helper_and_literal_parsers() {
 }
 
 #[test]
-fn hover_expressions_take_microseconds() {
+fn hover_expressions_give_their_values() {
+    // What a hover evaluates most: math, orientations, offsets of a
+    // constant target. Their speed is measured by the `eval` benchmark.
     let mut env = MapEnv::new();
-    let rt = "[[500,0,600],[1,0,0,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]]";
-    let _ = rt;
     env.constant(
         "pHome",
         Type::named("robtarget"),
@@ -336,26 +335,27 @@ fn hover_expressions_take_microseconds() {
         name: n.into(),
         args: args.into_iter().map(Arg::positional).collect(),
     };
-    let exprs = [
-        Expr::Binary(
-            BinOp::Mul,
-            Box::new(call("Sqrt", vec![num("2")])),
-            Box::new(call("Sin", vec![num("30")])),
+    let cases = [
+        (
+            Expr::Binary(
+                BinOp::Mul,
+                Box::new(call("Sqrt", vec![num("2")])),
+                Box::new(call("Sin", vec![num("30")])),
+            ),
+            "0.707107",
         ),
-        call("OrientZYX", vec![num("90"), num("0"), num("0")]),
-        call("Offs", vec![name("pHome"), num("0"), num("0"), num("100")]),
+        (
+            call("OrientZYX", vec![num("90"), num("0"), num("0")]),
+            "[0.707107,0,0,0.707107]",
+        ),
+        (
+            call("Offs", vec![name("pHome"), num("0"), num("0"), num("100")]),
+            "[[500,0,700],[1,0,0,0],[0,0,0,0],[9E+09,9E+09,9E+09,9E+09,9E+09,9E+09]]",
+        ),
     ];
-    let n = 2000;
-    let start = Instant::now();
-    for _ in 0..n {
-        for e in &exprs {
-            assert!(eval_as(e, None, &env).is_ok());
-        }
+    for (e, want) in cases {
+        assert_eq!(code(eval_as(&e, None, &env)), want, "{e:?}");
     }
-    let per = start.elapsed() / (n * exprs.len() as u32);
-    // Generous, so that a debug build on a loaded machine passes; a release
-    // build takes a few microseconds.
-    assert!(per.as_micros() < 500, "{per:?} per evaluation");
 }
 
 #[test]

@@ -1,9 +1,11 @@
 //! Every `CONST` declaration of the corpus of real code is evaluated, in
 //! its task (files grouped as `rapid check` groups them), through
-//! `consteval`: nothing may panic or take long, and the outcome of each is
-//! counted (a value, not constant, a run-time error, something the evaluator
-//! cannot compute). The counts are printed; the test fails on a panic, on a
-//! slow evaluation, or when almost nothing evaluates (a broken connection).
+//! `consteval`: nothing may panic, and the outcome of each is counted (a
+//! value, not constant, a run-time error, something the evaluator cannot
+//! compute). The counts and the slowest evaluation are printed; the test
+//! fails on a panic or when almost nothing evaluates (a broken connection).
+//! Evaluation is bounded by the evaluator's step and depth limits, not by a
+//! clock.
 //!
 //! The corpus is read from `RAPID_CORPUS` or `../shared/corpus` next to the
 //! workspace; when neither exists the test prints one line and passes.
@@ -19,7 +21,7 @@ use rapid_analyzer::workspace::Workspace;
 use rapid_evaluator::Expr;
 
 #[test]
-fn every_corpus_constant_evaluates_quickly_and_without_panic() {
+fn every_corpus_constant_evaluates_without_panic() {
     let Some(files) = rapid_tests::corpus_files() else {
         println!("no corpus: skipped");
         return;
@@ -67,12 +69,6 @@ fn every_corpus_constant_evaluates_quickly_and_without_panic() {
     assert!(
         total == 0 || values * 2 > total,
         "fewer than half the constants evaluate: {outcomes:?}"
-    );
-    assert!(
-        slowest.0 < Duration::from_secs(5),
-        "an evaluation took {:?}: {}",
-        slowest.0,
-        slowest.1
     );
 }
 
