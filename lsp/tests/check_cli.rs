@@ -74,6 +74,36 @@ fn every_format_on_a_small_program() {
     }
 }
 
+/// Removes ANSI colour sequences (`ESC [ ... m`).
+fn strip_colours(s: &str) -> String {
+    let mut out = String::new();
+    let mut rest = s;
+    while let Some(i) = rest.find('\u{1b}') {
+        out.push_str(&rest[..i]);
+        rest = &rest[i..];
+        rest = rest.find('m').map_or("", |m| &rest[m + 1..]);
+    }
+    out.push_str(rest);
+    out
+}
+
+#[test]
+fn human_output_is_coloured_only_when_asked_and_says_the_same() {
+    let dir = program("colours");
+    let plain = rapid(&dir, &["check", "prog"]);
+    let coloured = std::process::Command::new(env!("CARGO_BIN_EXE_rapid"))
+        .args(["check", "prog"])
+        .current_dir(&dir)
+        .env_remove("NO_COLOR")
+        .env("CLICOLOR_FORCE", "1")
+        .output()
+        .expect("the rapid binary runs");
+    let (plain, coloured) = (text(&plain.stdout), text(&coloured.stdout));
+    assert!(!plain.contains('\u{1b}'), "{plain}");
+    assert!(coloured.contains("\u{1b}["), "{coloured}");
+    assert_eq!(strip_colours(&coloured), plain);
+}
+
 #[test]
 fn sarif_is_valid_against_the_schema_and_has_what_github_reads() {
     let dir = program("sarif");

@@ -299,13 +299,20 @@ fn run_inner(args: CheckArgs, stderr: &mut impl Write) -> Result<ExitCode, Strin
     }
 
     lap("selection and suppressions", &mut clock);
+    // Colours as the real stdout allows, through a buffer: stdout is
+    // line-buffered even into a pipe, a system call for every line of the
+    // report (31,000 for 6,000 findings).
     let stdout = std::io::stdout();
-    let mut out = anstream::AutoStream::auto(stdout.lock());
+    let colours = anstream::AutoStream::choice(&stdout);
+    let mut buffered = std::io::BufWriter::with_capacity(1 << 16, stdout.lock());
+    let mut out = anstream::AutoStream::new(&mut buffered as &mut dyn Write, colours);
     let written = if args.statistics {
         output::statistics(&mut out, &report, args.format == Format::Json)
     } else {
         match args.format {
-            Format::Human => output::human(&mut out, &report),
+            Format::Human => {
+                output::human(&mut out, &report, colours != anstream::ColorChoice::Never)
+            }
             Format::Concise => output::concise(&mut out, &report),
             Format::Json => output::json(&mut out, &report),
             Format::Sarif => output::sarif(&mut out, &report, &root),

@@ -118,8 +118,14 @@ pub fn statistics(out: &mut impl Write, report: &Report, as_json: bool) -> io::R
     Ok(())
 }
 
-pub fn human(out: &mut impl Write, report: &Report) -> io::Result<()> {
-    let renderer = Renderer::styled();
+/// `styled`: the output shows colours (rendering plain text costs a third of
+/// rendering styled text and stripping the styles again).
+pub fn human(out: &mut impl Write, report: &Report, styled: bool) -> io::Result<()> {
+    let renderer = if styled {
+        Renderer::styled()
+    } else {
+        Renderer::plain()
+    };
     let mut counts = [0usize; 4];
     let mut fixable = 0;
     for (c, d) in all(report) {
