@@ -170,9 +170,18 @@ impl FileItems {
         let modules = root
             .named_children(&mut cursor)
             .filter(|n| n.kind() == "module")
-            .filter_map(|n| lower_module(n, text))
+            .filter_map(|n| lower_module(n, fields(n, "body"), text))
             .collect();
         FileItems { modules }
+    }
+
+    /// Lowers a file parsed as two parts ([`crate::split_parse`]): its one
+    /// module, whose declarations are `body` (from both trees, in source
+    /// order).
+    pub(crate) fn lower_split(module: Node<'_>, body: Vec<Node<'_>>, text: &str) -> FileItems {
+        FileItems {
+            modules: lower_module(module, body, text).into_iter().collect(),
+        }
     }
 
     /// A hash of everything other modules can see, ignoring positions: equal
@@ -243,7 +252,7 @@ fn scope_of(node: Node<'_>) -> Scope {
     }
 }
 
-fn lower_module(node: Node<'_>, text: &str) -> Option<Module> {
+fn lower_module<'t>(node: Node<'t>, body: Vec<Node<'t>>, text: &str) -> Option<Module> {
     let (name, name_range) = name_of(node, text)?;
     let mut attributes = ModuleAttributes::default();
     if let Some(attrs) = field(node, "attributes") {
@@ -268,7 +277,7 @@ fn lower_module(node: Node<'_>, text: &str) -> Option<Module> {
         records: Vec::new(),
         aliases: Vec::new(),
     };
-    for item in fields(node, "body") {
+    for item in body {
         match item.kind() {
             "data_declaration" => module.data.extend(lower_data(item, text)),
             "procedure_declaration" | "function_declaration" | "trap_declaration" => {

@@ -12,6 +12,7 @@ pub mod items;
 pub mod lower;
 pub mod names;
 pub mod rules;
+pub mod split_parse;
 pub mod syntax;
 mod syntax_util;
 pub mod task;

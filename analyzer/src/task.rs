@@ -9,7 +9,7 @@ use std::collections::HashMap;
 use std::ops::Range;
 use std::sync::Arc;
 
-use tree_sitter::Tree;
+use tree_sitter::{Node, Tree};
 
 use crate::diagnostic::Diagnostic;
 use crate::items::{DataDecl, FileItems, Module, RecordDecl, RoutineDecl, Scope, Storage};
@@ -28,6 +28,10 @@ pub struct Unit {
     /// The syntax tree ([`Unit::tree`]); it may have been released
     /// ([`Unit::release_tree`]) and is then parsed again on use.
     tree: UnitTree,
+    /// A file parsed as two parts ([`Unit::from_split`]): the byte range of
+    /// the routines the second tree holds, and that tree. `tree` then holds
+    /// the rest.
+    part: Option<(Range<usize>, Tree)>,
     pub items: FileItems,
     pub interface: u64,
     /// A hash of the values of the unit's module data and the sizes of its
@@ -62,9 +66,54 @@ impl Unit {
             path,
             text,
             tree: UnitTree::new(tree),
+            part: None,
             items,
             syntax,
         }
+    }
+
+    /// Builds a unit from the two trees of a file parsed as two parts (see
+    /// [`crate::split_parse`]): `main` read everything but `chunk`, `part`
+    /// read `chunk` (with the module's header and end). When the trees do
+    /// not fit together as planned (a syntax error in either, declarations
+    /// on the wrong side), the path and the text come back: parse the file
+    /// as a whole.
+    pub fn from_split(
+        path: String,
+        text: String,
+        main: Tree,
+        chunk: Range<usize>,
+        part: Tree,
+    ) -> Result<Unit, (String, String)> {
+        let items = {
+            let (Some(module), Some(part_module)) = (
+                crate::split_parse::sole_module(&main),
+                crate::split_parse::sole_module(&part),
+            ) else {
+                return Err((path, text));
+            };
+            let inside = |n: &Node<'_>| chunk.start <= n.start_byte() && n.end_byte() <= chunk.end;
+            let mine = crate::syntax_util::fields(module, "body");
+            let theirs = crate::syntax_util::fields(part_module, "body");
+            if theirs.is_empty() || !theirs.iter().all(inside) || mine.iter().any(inside) {
+                return Err((path, text));
+            }
+            let mut body = mine;
+            body.extend(theirs);
+            body.sort_by_key(|n| n.start_byte());
+            FileItems::lower_split(module, body, &text)
+        };
+        Ok(Unit {
+            interface: items.interface_hash(),
+            constants: constants_hash(&items, &text),
+            path,
+            text,
+            tree: UnitTree::new(main),
+            part: Some((chunk, part)),
+            items,
+            // Neither tree has an error.
+            syntax: Vec::new(),
+        })
     }
 
     /// Releases the syntax tree to save memory (most of a unit's memory is
@@ -72,11 +121,42 @@ impl Unit {
     /// Everything else (items, interface, syntax diagnostics) stays.
     pub fn release_tree(&mut self) {
         self.tree.release();
+        // Parsed again, the tree is the whole file's.
+        self.part = None;
     }
 
-    /// The syntax tree, parsed again from the text if it was released.
+    /// The syntax tree, parsed again from the text if it was released. For
+    /// a file parsed as two parts, the tree of all but the later routines
+    /// ([`Unit::tree_at`] finds the tree of an offset).
     pub fn tree(&self) -> &Tree {
         self.tree.get(&self.text)
+    }
+
+    /// The tree that holds the text at `offset`.
+    pub fn tree_at(&self, offset: usize) -> &Tree {
+        match &self.part {
+            Some((chunk, part)) if chunk.contains(&offset) => part,
+            _ => self.tree(),
+        }
+    }
+
+    /// The second tree of a file parsed as two parts, with the byte range
+    /// of the routines it holds.
+    pub fn part(&self) -> Option<(Range<usize>, &Tree)> {
+        self.part.as_ref().map(|(r, t)| (r.clone(), t))
+    }
+
+    /// The declarations of `module` (a module node of this unit), in source
+    /// order, from both trees of a file parsed as two parts.
+    pub fn module_body<'a>(&'a self, module: Node<'a>) -> Vec<Node<'a>> {
+        let mut body = crate::syntax_util::fields(module, "body");
+        if let Some((_, part)) = &self.part
+            && let Some(m) = crate::split_parse::sole_module(part)
+        {
+            body.extend(crate::syntax_util::fields(m, "body"));
+            body.sort_by_key(|n| n.start_byte());
+        }
+        body
     }
 
     fn empty(path: String, text: String, tree: Option<Tree>) -> Unit {
@@ -85,6 +165,7 @@ impl Unit {
                 path,
                 text,
                 tree: UnitTree::new(tree),
+                part: None,
                 items: FileItems::default(),
                 interface: 0,
                 constants: 0,

@@ -200,6 +200,40 @@ fn output_is_deterministic_whatever_the_threads() {
 }
 
 #[test]
+fn a_large_module_parsed_on_two_threads_reports_as_on_one() {
+    // Over 128 KiB: with two threads, its later routines are parsed on
+    // their own (see `rapid_analyzer::split_parse`).
+    let dir = scratch("large");
+    let mut module = String::from("MODULE Large\n    CONST num k := 3;\n    VAR num n;\n");
+    let mut i = 0;
+    while module.len() < 200 * 1024 {
+        module.push_str(&format!(
+            "    PROC p{i}()\n        VAR num unused{i};\n        CONST num zero{i} := 0;\n        n := k DIV zero{i};\n        missing{i} n;\n        TPWrite \"<EXP> {i}\";\n        n := n + p{i};\n    ENDPROC\n"
+        ));
+        i += 1;
+    }
+    module.push_str("ENDMODULE\n");
+    write(&dir, &[("cell/Large.mod", &module)]);
+    let one = rapid(&dir, &["check", "--format", "json", "--threads", "1"]);
+    let two = rapid(&dir, &["check", "--format", "json", "--threads", "2"]);
+    assert_eq!(text(&one.stdout), text(&two.stdout));
+    let found = findings(&dir, &["--threads", "2"]);
+    // In every routine, the last ones included: unused data, a constant
+    // error, an unknown routine, a routine used as data.
+    let mut counts = std::collections::BTreeMap::new();
+    for (code, _) in &found {
+        *counts.entry(code.as_str()).or_insert(0) += 1;
+    }
+    let want = [("E413", i), ("W101", 2 * i), ("W201", i)];
+    assert_eq!(counts, want.into_iter().collect());
+    let last_line = module.lines().count() as u64 - 2;
+    assert!(
+        found.iter().any(|(_, line)| *line + 3 >= last_line),
+        "{found:?}"
+    );
+}
+
+#[test]
 fn exit_codes_follow_the_flags() {
     let dir = program("exit");
     let code = |args: &[&str]| rapid(&dir, args).status.code();

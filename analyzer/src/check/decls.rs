@@ -20,18 +20,35 @@ const MAX_STRING: usize = 80;
 const MAX_DIMS: usize = 3;
 
 /// Placeholders and string lengths, anywhere in the file.
-pub(super) fn check_file_wide(cx: &mut Cx<'_>, root: Node<'_>) {
+pub(super) fn check_file_wide(cx: &mut Cx<'_>) {
     // The walk only enters nodes that overlap a region of the text that may
     // hold a finding, and nodes with syntax errors.
-    let regions = placeholder_or_long_string_regions(cx.text);
+    let mut regions = placeholder_or_long_string_regions(cx.text);
     if regions.is_empty() {
         return;
     }
-    let worth_entering = |node: Node<'_>| {
+    let unit = cx.unit;
+    check_file_wide_in(cx, unit.tree().root_node(), &regions);
+    // The second tree of a file parsed as two parts: only its routines (it
+    // repeats the module's header and end).
+    if let Some((chunk, part)) = unit.part() {
+        regions.retain_mut(|g| {
+            *g = g.start.max(chunk.start)..g.end.min(chunk.end);
+            g.start < g.end
+        });
+        check_file_wide_in(cx, part.root_node(), &regions);
+    }
+}
+
+/// [`check_file_wide`] in one tree, entering only nodes that overlap
+/// `regions` (or hold a syntax error).
+fn check_file_wide_in(cx: &mut Cx<'_>, root: Node<'_>, regions: &[Range<usize>]) {
+    let overlaps = |node: Node<'_>| {
         let r = node.byte_range();
         let i = regions.partition_point(|g| g.end <= r.start);
-        regions.get(i).is_some_and(|g| g.start < r.end) || node.has_error()
+        regions.get(i).is_some_and(|g| g.start < r.end)
     };
+    let worth_entering = |node: Node<'_>| overlaps(node) || node.has_error();
     static KINDS: std::sync::OnceLock<(u16, u16)> = std::sync::OnceLock::new();
     let (placeholder, string) = *KINDS.get_or_init(|| {
         let language = crate::syntax::language();
@@ -43,7 +60,7 @@ pub(super) fn check_file_wide(cx: &mut Cx<'_>, root: Node<'_>) {
     crate::syntax_util::walk_pruned(root, &mut |node| {
         let kind = node.kind_id();
         match kind {
-            k if k == placeholder => {
+            k if k == placeholder && overlaps(node) => {
                 let p = cx.node_text(node);
                 cx.report(
                     &rules::incomplete_code::RULE,
@@ -51,7 +68,7 @@ pub(super) fn check_file_wide(cx: &mut Cx<'_>, root: Node<'_>) {
                     format!("unfilled placeholder {p}: this code is not finished"),
                 );
             }
-            k if k == string => {
+            k if k == string && overlaps(node) => {
                 let len = string_length(cx, node);
                 if len > MAX_STRING {
                     cx.report(
@@ -138,7 +155,7 @@ fn check_name_length(cx: &mut Cx<'_>, name: &str, range: Range<usize>) {
 }
 
 pub(super) fn check_module<'t>(cx: &mut Cx<'t>, node: Node<'t>, module: &'t Module) {
-    let data_nodes = BodyNodes::of(node);
+    let data_nodes = BodyNodes::of(cx.unit, node);
     check_module_prelude(cx, module, &data_nodes);
     for decl in &module.routines {
         check_routine_at(cx, &data_nodes, decl);
@@ -151,8 +168,8 @@ pub(super) fn check_module<'t>(cx: &mut Cx<'t>, node: Node<'t>, module: &'t Modu
 pub(super) struct BodyNodes<'t>(Vec<Node<'t>>);
 
 impl<'t> BodyNodes<'t> {
-    pub(super) fn of(module: Node<'t>) -> BodyNodes<'t> {
-        BodyNodes(fields(module, "body"))
+    pub(super) fn of(unit: &'t crate::task::Unit, module: Node<'t>) -> BodyNodes<'t> {
+        BodyNodes(unit.module_body(module))
     }
 
     /// The declaration that starts at `start` (the last one, should an

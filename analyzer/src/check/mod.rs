@@ -158,7 +158,7 @@ impl CheckShare<'_> {
             };
             if body.as_ref().is_none_or(|(m, _)| *m != mi) {
                 cx.enter_module(mi, module);
-                body = Some((mi, decls::BodyNodes::of(*node)));
+                body = Some((mi, decls::BodyNodes::of(u, *node)));
             }
             let Some((_, nodes)) = &body else {
                 continue;
@@ -190,8 +190,7 @@ pub fn merge_unit_check(task: &Task, unit: usize, results: Vec<ShareResult>) -> 
         cx.used.extend(r.used);
         found.extend(r.pieces);
     }
-    let root = u.tree().root_node();
-    decls::check_file_wide(&mut cx, root);
+    decls::check_file_wide(&mut cx);
     let mut found = found.into_iter();
     for (mi, module, _) in cx.modules() {
         cx.enter_module(mi, module);
@@ -580,8 +579,7 @@ impl<'t> Cx<'t> {
     }
 
     fn check(&mut self) {
-        let root = self.unit.tree().root_node();
-        decls::check_file_wide(self, root);
+        decls::check_file_wide(self);
         for (mi, module, node) in self.modules() {
             self.enter_module(mi, module);
             decls::check_module(self, node, module);
@@ -1055,7 +1053,7 @@ impl<'t> Cx<'t> {
         let Some(decl) = module.routines.iter().find(|r| within(&r.range)) else {
             return Some(cx);
         };
-        let root = u.tree().root_node();
+        let root = u.tree_at(decl.range.start).root_node();
         let Some(node) = root.named_descendant_for_byte_range(decl.range.start, decl.range.end)
         else {
             return Some(cx);

@@ -1,0 +1,155 @@
+//! A module parsed as two parts (`split_parse`, as `rapid check` parses a
+//! large file on two threads) has the items, diagnostics and constant values
+//! of the same module parsed as a whole.
+
+use std::collections::BTreeSet;
+use std::sync::Arc;
+
+use rapid_analyzer::check::{check_unit_split, merge_unit_check};
+use rapid_analyzer::consteval::value_at;
+use rapid_analyzer::diagnostic::Diagnostic;
+use rapid_analyzer::split_parse::{parse_ranges, plan};
+use rapid_analyzer::task::{Task, Unit};
+use rapid_analyzer::workspace::{Workspace, diagnostics_of};
+
+const PATH: &str = "cell/Big.mod";
+
+/// A module whose routines (early and late) hold findings of many rules:
+/// constant errors through routine constants, placeholders, long strings,
+/// labels, unknown names, unused data, and data declared between routines.
+fn module() -> String {
+    let mut text = String::from(
+        "MODULE Big(NOSTEPIN)\n  CONST num k := 4;\n  VAR num n;\n  RECORD pair\n    num a;\n    num b;\n  ENDRECORD\n",
+    );
+    let long = "x".repeat(90);
+    for i in 0..24 {
+        let local = if i % 3 == 0 { "LOCAL " } else { "" };
+        text.push_str(&format!(
+            "  ! routine {i}\n  {local}PROC p{i}()\n    CONST num z{i} := 0;\n    VAR num unused{i};\n    VAR pair q;\n    n := k DIV z{i};\n    again:\n    n := n + 1;\n    IF n < {i} GOTO again;\n    missing{i} n;\n    TPWrite \"{long}\";\n    q.c := 1;\n  ENDPROC\n"
+        ));
+        if i % 5 == 0 {
+            text.push_str(&format!(
+                "  VAR num between{i} := 1;\n  FUNC num f{i}(num x)\n    RETURN x * <EXP>;\n  ENDFUNC\n  TRAP t{i}\n    n := 0;\n  ENDTRAP\n"
+            ));
+        }
+    }
+    text.push_str("ENDMODULE\n");
+    text
+}
+
+fn split_unit(text: &str) -> Unit {
+    let plan = plan(text, 0.5).expect("the module splits");
+    let main = parse_ranges(text, &plan.main).expect("main tree");
+    let part = parse_ranges(text, &plan.part).expect("part tree");
+    Unit::from_split(PATH.into(), text.into(), main, plan.chunk, part)
+        .unwrap_or_else(|_| panic!("the trees fit together"))
+}
+
+fn task_of(unit: Unit) -> Arc<Task> {
+    let mut ws = Workspace::new();
+    ws.set_unit(unit);
+    ws.tasks().into_iter().next().expect("a task")
+}
+
+/// (code, range, message, fix) of each diagnostic: what a failure shows.
+type Finding = (&'static str, std::ops::Range<usize>, String, String);
+
+fn findings(diagnostics: &[Diagnostic]) -> Vec<Finding> {
+    diagnostics
+        .iter()
+        .map(|d| {
+            let fix = format!("{:?}", d.fix);
+            (d.rule.code, d.range.clone(), d.message.clone(), fix)
+        })
+        .collect()
+}
+
+/// The diagnostics of the task's only unit, checked whole and in shares.
+fn diagnostics(task: &Task) -> (Vec<Finding>, Vec<Finding>) {
+    let unit = &task.units[0];
+    let whole = diagnostics_of(task, unit);
+    let results = check_unit_split(task, 0, 5)
+        .iter()
+        .map(|s| s.run())
+        .collect();
+    let mut shared = unit.syntax.clone();
+    shared.extend(merge_unit_check(task, 0, results));
+    shared.sort_by_key(|d| (d.range.start, d.range.end));
+    (findings(&whole), findings(&shared))
+}
+
+#[test]
+fn a_module_parsed_in_two_parts_checks_as_a_whole() {
+    let text = module();
+    let split = split_unit(&text);
+    let (chunk, _) = split.part().expect("a second tree");
+    let whole = Unit::new(PATH.into(), text.clone(), None);
+    assert_eq!(split.items, whole.items);
+    assert_eq!(split.interface, whole.interface);
+    assert_eq!(split.constants, whole.constants);
+
+    let (whole_task, split_task) = (task_of(whole), task_of(split));
+    let (expected, expected_shared) = diagnostics(&whole_task);
+    assert_eq!(expected, expected_shared);
+    // The comparison means something: the later routines have findings of
+    // many rules.
+    let late: BTreeSet<&str> = expected
+        .iter()
+        .filter(|(_, range, ..)| chunk.contains(&range.start))
+        .map(|(code, ..)| *code)
+        .collect();
+    // constant-error, incomplete-code, string-too-long, unresolved-name,
+    // unknown-component, unused-data, unused-routine
+    for rule in ["E413", "E412", "E411", "W101", "E105", "W201", "W203"] {
+        assert!(
+            late.contains(rule),
+            "no {rule} in the later routines: {late:?}"
+        );
+    }
+    let (found, found_shared) = diagnostics(&split_task);
+    assert_eq!(found, expected);
+    assert_eq!(found_shared, expected);
+
+    // Constant values in both trees.
+    for at in [
+        text.find("k DIV z0").expect("early"),
+        text.rfind("k DIV z").expect("late"),
+        text.rfind("z23 := 0").expect("late constant"),
+    ] {
+        assert!(
+            split_task.units[0]
+                .tree_at(at)
+                .root_node()
+                .byte_range()
+                .contains(&at)
+        );
+        assert_eq!(
+            value_at(&split_task, 0, at),
+            value_at(&whole_task, 0, at),
+            "at {at}"
+        );
+    }
+}
+
+#[test]
+fn trees_that_do_not_fit_are_handed_back() {
+    // A syntax error in a later routine: the caller parses the whole file,
+    // so that the error is reported as a whole parse finds it.
+    let text = module().replace(
+        "    again:\n    n := n + 1;\n    IF n < 20",
+        "    n := := 1;\n    again:\n    IF n < 20",
+    );
+    let broken = plan(&text, 0.5).expect("the lines still split");
+    let main = parse_ranges(&text, &broken.main).expect("main tree");
+    let part = parse_ranges(&text, &broken.part).expect("part tree");
+    assert!(part.root_node().has_error());
+    let back = Unit::from_split(PATH.into(), text.clone(), main, broken.chunk, part);
+    assert!(matches!(back, Err((p, t)) if p == PATH && t == text));
+
+    // Trees swapped: declarations on the wrong side.
+    let text = module();
+    let fine = plan(&text, 0.5).expect("a plan");
+    let main = parse_ranges(&text, &fine.main).expect("main tree");
+    let part = parse_ranges(&text, &fine.part).expect("part tree");
+    assert!(Unit::from_split(PATH.into(), text, part, fine.chunk, main).is_err());
+}
