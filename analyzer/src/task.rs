@@ -14,6 +14,7 @@ use tree_sitter::{Node, Tree};
 use crate::diagnostic::Diagnostic;
 use crate::items::{DataDecl, FileItems, Module, RecordDecl, RoutineDecl, Scope, Storage};
 use crate::names::{NameMap, fold};
+use crate::split_parse::PartKind;
 use crate::ty::{Types, UserType};
 use crate::unit_tree::UnitTree;
 
@@ -28,10 +29,9 @@ pub struct Unit {
     /// The syntax tree ([`Unit::tree`]); it may have been released
     /// ([`Unit::release_tree`]) and is then parsed again on use.
     tree: UnitTree,
-    /// A file parsed as two parts ([`Unit::from_split`]): the byte range of
-    /// the routines the second tree holds, and that tree. `tree` then holds
-    /// the rest.
-    part: Option<(Range<usize>, Tree)>,
+    /// A file parsed as two parts ([`Unit::from_split`]): the second tree.
+    /// `tree` then holds the rest.
+    part: Option<Part>,
     pub items: FileItems,
     pub interface: u64,
     /// A hash of the values of the unit's module data and the sizes of its
@@ -74,34 +74,20 @@ impl Unit {
 
     /// Builds a unit from the two trees of a file parsed as two parts (see
     /// [`crate::split_parse`]): `main` read everything but `chunk`, `part`
-    /// read `chunk` (with the module's header and end). When the trees do
-    /// not fit together as planned (a syntax error in either, declarations
-    /// on the wrong side), the path and the text come back: parse the file
-    /// as a whole.
+    /// read `chunk` (what it holds is `kind`) with the module's header and
+    /// end. When the trees do not fit together as planned (a syntax error in
+    /// either, declarations or statements on the wrong side), the path and
+    /// the text come back: parse the file as a whole.
     pub fn from_split(
         path: String,
         text: String,
         main: Tree,
-        chunk: Range<usize>,
         part: Tree,
+        chunk: Range<usize>,
+        kind: PartKind,
     ) -> Result<Unit, (String, String)> {
-        let items = {
-            let (Some(module), Some(part_module)) = (
-                crate::split_parse::sole_module(&main),
-                crate::split_parse::sole_module(&part),
-            ) else {
-                return Err((path, text));
-            };
-            let inside = |n: &Node<'_>| chunk.start <= n.start_byte() && n.end_byte() <= chunk.end;
-            let mine = crate::syntax_util::fields(module, "body");
-            let theirs = crate::syntax_util::fields(part_module, "body");
-            if theirs.is_empty() || !theirs.iter().all(inside) || mine.iter().any(inside) {
-                return Err((path, text));
-            }
-            let mut body = mine;
-            body.extend(theirs);
-            body.sort_by_key(|n| n.start_byte());
-            FileItems::lower_split(module, body, &text)
+        let Some(items) = split_items(&main, &part, &chunk, kind, &text) else {
+            return Err((path, text));
         };
         Ok(Unit {
             interface: items.interface_hash(),
@@ -109,7 +95,11 @@ impl Unit {
             path,
             text,
             tree: UnitTree::new(main),
-            part: Some((chunk, part)),
+            part: Some(Part {
+                chunk,
+                tree: part,
+                kind,
+            }),
             items,
             // Neither tree has an error.
             syntax: Vec::new(),
@@ -135,28 +125,42 @@ impl Unit {
     /// The tree that holds the text at `offset`.
     pub fn tree_at(&self, offset: usize) -> &Tree {
         match &self.part {
-            Some((chunk, part)) if chunk.contains(&offset) => part,
+            Some(p) if p.chunk.contains(&offset) => &p.tree,
             _ => self.tree(),
         }
     }
 
     /// The second tree of a file parsed as two parts, with the byte range
-    /// of the routines it holds.
+    /// of what it holds that the first does not.
     pub fn part(&self) -> Option<(Range<usize>, &Tree)> {
-        self.part.as_ref().map(|(r, t)| (r.clone(), t))
+        self.part.as_ref().map(|p| (p.chunk.clone(), &p.tree))
     }
 
     /// The declarations of `module` (a module node of this unit), in source
     /// order, from both trees of a file parsed as two parts.
     pub fn module_body<'a>(&'a self, module: Node<'a>) -> Vec<Node<'a>> {
         let mut body = crate::syntax_util::fields(module, "body");
-        if let Some((_, part)) = &self.part
-            && let Some(m) = crate::split_parse::sole_module(part)
+        if let Some(p) = &self.part
+            && p.kind == PartKind::Declarations
+            && let Some(m) = crate::split_parse::sole_module(&p.tree)
         {
             body.extend(crate::syntax_util::fields(m, "body"));
             body.sort_by_key(|n| n.start_byte());
         }
         body
+    }
+
+    /// For a routine whose later statements the second tree of a file
+    /// parsed as two parts holds: that tree's node of the routine (the same
+    /// byte range, with only those statements).
+    pub fn routine_rest<'a>(&'a self, routine: Node<'_>) -> Option<Node<'a>> {
+        let p = self
+            .part
+            .as_ref()
+            .filter(|p| p.kind == PartKind::Statements)?;
+        let m = crate::split_parse::sole_module(&p.tree)?;
+        let other = crate::syntax_util::fields(m, "body").into_iter().next()?;
+        (other.byte_range() == routine.byte_range()).then_some(other)
     }
 
     fn empty(path: String, text: String, tree: Option<Tree>) -> Unit {
@@ -174,6 +178,61 @@ impl Unit {
             // No tree even for empty text means the grammar could not be
             // loaded at all, which the grammar's own tests rule out.
             None => unreachable_tree(path, text),
+        }
+    }
+}
+
+/// The second tree of a file parsed as two parts.
+#[derive(Debug)]
+struct Part {
+    /// What it holds that the unit's tree does not.
+    chunk: Range<usize>,
+    tree: Tree,
+    kind: PartKind,
+}
+
+/// The items of a file parsed as two parts, if the trees fit together: no
+/// syntax error, one module in each, and what the chunk holds in the second
+/// tree only.
+fn split_items(
+    main: &Tree,
+    part: &Tree,
+    chunk: &Range<usize>,
+    kind: PartKind,
+    text: &str,
+) -> Option<FileItems> {
+    use crate::syntax_util::fields;
+    let module = crate::split_parse::sole_module(main)?;
+    let part_module = crate::split_parse::sole_module(part)?;
+    let inside = |n: &Node<'_>| chunk.start <= n.start_byte() && n.end_byte() <= chunk.end;
+    let mine = fields(module, "body");
+    let theirs = fields(part_module, "body");
+    match kind {
+        PartKind::Declarations => {
+            if theirs.is_empty() || !theirs.iter().all(inside) || mine.iter().any(inside) {
+                return None;
+            }
+            let mut body = mine;
+            body.extend(theirs);
+            body.sort_by_key(|n| n.start_byte());
+            Some(FileItems::lower_split(module, body, text))
+        }
+        PartKind::Statements => {
+            // The second tree: the one routine, with the chunk's statements.
+            let [routine] = theirs.as_slice() else {
+                return None;
+            };
+            let own = mine
+                .iter()
+                .find(|n| n.byte_range() == routine.byte_range())?;
+            let later = fields(*routine, "body");
+            if later.is_empty()
+                || !later.iter().all(inside)
+                || fields(*own, "body").iter().any(inside)
+            {
+                return None;
+            }
+            Some(FileItems::lower(main, text))
         }
     }
 }

@@ -41,7 +41,7 @@ fn split_unit(text: &str) -> Unit {
     let plan = plan(text, 0.5).expect("the module splits");
     let main = parse_ranges(text, &plan.main).expect("main tree");
     let part = parse_ranges(text, &plan.part).expect("part tree");
-    Unit::from_split(PATH.into(), text.into(), main, plan.chunk, part)
+    Unit::from_split(PATH.into(), text.into(), main, part, plan.chunk, plan.kind)
         .unwrap_or_else(|_| panic!("the trees fit together"))
 }
 
@@ -131,6 +131,64 @@ fn a_module_parsed_in_two_parts_checks_as_a_whole() {
     }
 }
 
+/// One long generated routine (the usual shape of a large module written by
+/// a CAM tool), with jumps across the whole of it, nested blocks, findings
+/// on both sides and an error handler; and a function whose every path must
+/// return.
+fn long_routine() -> String {
+    let mut text = String::from(
+        "MODULE Gen\n  VAR num n;\n  CONST num zero := 0;\n  PROC main()\n    VAR num i;\n    VAR num idle;\n    top:\n",
+    );
+    let long = "y".repeat(85);
+    for i in 0..60 {
+        text.push_str(&match i % 6 {
+            0 => format!("    n := n + {i};\n    m{i}:\n"),
+            1 => format!("    IF n > {i} THEN\n      n := 0;\n      GOTO top;\n    ELSE\n      n := 1 DIV zero;\n    ENDIF\n"),
+            2 => format!("    FOR j FROM 1 TO 3 DO\n      n := n * j; ! step;\n    ENDFOR\n    IF n < 0 GOTO m{};\n", (i + 30) % 60 / 6 * 6),
+            3 => format!("    TPWrite \"{long}\";\n    unknown{i} n;\n"),
+            4 => format!("    GOTO m{};\n    n := <EXP>;\n", (i + 20) % 60 / 6 * 6),
+            _ => format!("    MoveL Offs(p{i},\n      0, 0, {i}), v100, fine, tool0;\n"),
+        });
+    }
+    text.push_str("    GOTO nowhere;\n  ERROR\n    RETRY;\n  ENDPROC\n");
+    text.push_str("  FUNC num f()\n    RETURN 1;\n  ENDFUNC\nENDMODULE\n");
+    text
+}
+
+#[test]
+fn a_long_routine_parsed_in_two_parts_checks_as_a_whole() {
+    let text = long_routine();
+    let plan = plan(&text, 0.5).expect("the routine splits");
+    assert_eq!(plan.kind, rapid_analyzer::split_parse::PartKind::Statements);
+    let split = split_unit(&text);
+    let whole = Unit::new(PATH.into(), text.clone(), None);
+    assert_eq!(split.items, whole.items);
+    let (whole_task, split_task) = (task_of(whole), task_of(split));
+    let (expected, expected_shared) = diagnostics(&whole_task);
+    assert_eq!(expected, expected_shared);
+    let late: BTreeSet<&str> = expected
+        .iter()
+        .filter(|(_, range, ..)| plan.chunk.contains(&range.start))
+        .map(|(code, ..)| *code)
+        .collect();
+    // constant-error, incomplete-code, string-too-long, unresolved-name
+    for rule in ["E413", "E412", "E411", "W101"] {
+        assert!(
+            late.contains(rule),
+            "no {rule} in the later statements: {late:?}"
+        );
+    }
+    // The jumps across the split are fine; only the missing label is not.
+    let labels: Vec<_> = expected
+        .iter()
+        .filter(|(code, ..)| *code == "E104" || *code == "E406")
+        .collect();
+    assert_eq!(labels.len(), 1, "{labels:?}");
+    let (found, found_shared) = diagnostics(&split_task);
+    assert_eq!(found, expected);
+    assert_eq!(found_shared, expected);
+}
+
 #[test]
 fn trees_that_do_not_fit_are_handed_back() {
     // A syntax error in a later routine: the caller parses the whole file,
@@ -143,7 +201,14 @@ fn trees_that_do_not_fit_are_handed_back() {
     let main = parse_ranges(&text, &broken.main).expect("main tree");
     let part = parse_ranges(&text, &broken.part).expect("part tree");
     assert!(part.root_node().has_error());
-    let back = Unit::from_split(PATH.into(), text.clone(), main, broken.chunk, part);
+    let back = Unit::from_split(
+        PATH.into(),
+        text.clone(),
+        main,
+        part,
+        broken.chunk,
+        broken.kind,
+    );
     assert!(matches!(back, Err((p, t)) if p == PATH && t == text));
 
     // Trees swapped: declarations on the wrong side.
@@ -151,5 +216,5 @@ fn trees_that_do_not_fit_are_handed_back() {
     let fine = plan(&text, 0.5).expect("a plan");
     let main = parse_ranges(&text, &fine.main).expect("main tree");
     let part = parse_ranges(&text, &fine.part).expect("part tree");
-    assert!(Unit::from_split(PATH.into(), text, part, fine.chunk, main).is_err());
+    assert!(Unit::from_split(PATH.into(), text, part, main, fine.chunk, fine.kind).is_err());
 }

@@ -165,6 +165,7 @@ pub(super) fn check_module<'t>(cx: &mut Cx<'t>, node: Node<'t>, module: &'t Modu
 
 /// The declarations of a module's body, in source order, found by their
 /// start offset.
+#[derive(Debug)]
 pub(super) struct BodyNodes<'t>(Vec<Node<'t>>);
 
 impl<'t> BodyNodes<'t> {
@@ -188,14 +189,40 @@ pub(super) fn check_module_prelude<'t>(
     module: &'t Module,
     data_nodes: &BodyNodes<'t>,
 ) {
+    check_module_names(cx, module);
+    check_module_data(cx, module, data_nodes, 0..module.data.len());
+    check_records_and_aliases(cx, module);
+}
+
+/// [`check_module_prelude`] without the data declarations (checked in runs
+/// by [`check_module_data`]).
+pub(super) fn check_module_own(cx: &mut Cx<'_>, module: &Module) {
+    check_module_names(cx, module);
+    check_records_and_aliases(cx, module);
+}
+
+/// The module's name, duplicates and ambiguous globals.
+fn check_module_names(cx: &mut Cx<'_>, module: &Module) {
     check_name_length(cx, &module.name, module.name_range.clone());
     check_duplicates_in_module(cx, module);
     check_ambiguous_globals(cx, module);
-    for decl in &module.data {
+}
+
+/// Checks the module's data declarations `run` (indexes into its data).
+pub(super) fn check_module_data<'t>(
+    cx: &mut Cx<'t>,
+    module: &'t Module,
+    data_nodes: &BodyNodes<'t>,
+    run: Range<usize>,
+) {
+    for decl in module.data.get(run).unwrap_or_default() {
         if let Some(n) = data_nodes.at(decl.range.start) {
             check_data(cx, n, decl, false);
         }
     }
+}
+
+fn check_records_and_aliases(cx: &mut Cx<'_>, module: &Module) {
     for decl in &module.records {
         check_name_length(cx, &decl.name, decl.name_range.clone());
         for (name, ty, range) in &decl.components {
@@ -492,10 +519,17 @@ fn check_routine<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &'t RoutineDecl) {
     // each walk costly): the items of its body, and its named children for
     // the labels.
     let RoutineChildren {
-        body,
-        named,
+        mut body,
+        mut named,
         handlers,
     } = routine_children(node);
+    // A long routine parsed as two parts: its later statements are in the
+    // second tree (after all of these, before the handlers).
+    if let Some(rest) = cx.unit.routine_rest(node) {
+        let later = routine_children(rest).body;
+        body.extend(later.iter().copied());
+        named.extend(later);
+    }
     // Routine data, which must come before the first statement.
     let mut seen_statement = false;
     let mut statements = Vec::new();

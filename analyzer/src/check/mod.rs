@@ -14,6 +14,7 @@ mod stmts;
 use std::collections::{HashMap, HashSet};
 use std::hash::BuildHasherDefault;
 use std::ops::Range;
+use std::sync::Arc;
 
 use tree_sitter::Node;
 
@@ -64,6 +65,15 @@ pub struct CheckShare<'a> {
     task: &'a Task,
     unit: usize,
     pieces: Range<usize>,
+    split: Arc<Split<'a>>,
+}
+
+/// What every share of a unit's check needs, made once: the pieces, and the
+/// declaration nodes of each module (a walk of thousands of nodes).
+#[derive(Debug)]
+struct Split<'a> {
+    pieces: Vec<(Piece, usize)>,
+    bodies: Vec<(usize, decls::BodyNodes<'a>)>,
 }
 
 /// What a [`CheckShare`] found: the findings of each of its pieces, and the
@@ -75,12 +85,26 @@ pub struct ShareResult {
     used: UsedSet,
 }
 
-/// A piece of a unit's check: a module's declarations, or one routine.
-#[derive(Clone, Copy)]
+/// A piece of a unit's check: a module's own checks (its name, duplicates,
+/// records, aliases), a run of its data declarations, or one routine.
+#[derive(Clone, Debug)]
 enum Piece {
     Module(usize),
+    Data(usize, Range<usize>),
     Routine(usize, usize),
 }
+
+impl Piece {
+    fn module(&self) -> usize {
+        match self {
+            Piece::Module(mi) | Piece::Data(mi, _) | Piece::Routine(mi, _) => *mi,
+        }
+    }
+}
+
+/// Data declarations per piece: a module of thousands of robtargets is
+/// shared out like a long list of routines.
+const DATA_PER_PIECE: usize = 512;
 
 /// The pieces of a unit, in the order [`check_unit`] checks them, with a
 /// weight each: their size in bytes, a module's declarations counting for
@@ -90,10 +114,16 @@ fn pieces(cx: &Cx<'_>) -> Vec<(Piece, usize)> {
     let mut out = Vec::new();
     for (mi, module, _) in cx.modules() {
         let routines: usize = module.routines.iter().map(|r| r.range.len()).sum();
+        let data: usize = module.data.iter().map(|d| d.range.len()).sum();
         out.push((
             Piece::Module(mi),
-            module.range.len().saturating_sub(routines) / 4,
+            module.range.len().saturating_sub(routines + data) / 4,
         ));
+        for start in (0..module.data.len()).step_by(DATA_PER_PIECE) {
+            let run = start..(start + DATA_PER_PIECE).min(module.data.len());
+            let bytes: usize = module.data[run.clone()].iter().map(|d| d.range.len()).sum();
+            out.push((Piece::Data(mi, run), bytes / 4));
+        }
         for (ri, r) in module.routines.iter().enumerate() {
             out.push((Piece::Routine(mi, ri), r.range.len()));
         }
@@ -113,26 +143,33 @@ pub fn check_unit_split(task: &Task, unit: usize, shares: usize) -> Vec<CheckSha
     let pieces = pieces(&cx);
     let total: usize = pieces.iter().map(|(_, w)| w).sum();
     let shares = shares.clamp(1, pieces.len().max(1));
-    let mut out = Vec::new();
+    let count = pieces.len();
+    let mut ranges = Vec::new();
     let (mut start, mut acc) = (0, 0);
     for (i, (_, w)) in pieces.iter().enumerate() {
         acc += w;
         // Close a share once it holds its part of the total weight.
-        if acc * shares >= total * (out.len() + 1) && out.len() + 1 < shares {
-            out.push(CheckShare {
-                task,
-                unit,
-                pieces: start..i + 1,
-            });
+        if acc * shares >= total * (ranges.len() + 1) && ranges.len() + 1 < shares {
+            ranges.push(start..i + 1);
             start = i + 1;
         }
     }
-    out.push(CheckShare {
-        task,
-        unit,
-        pieces: start..pieces.len(),
-    });
-    out
+    ranges.push(start..count);
+    let bodies = cx
+        .modules()
+        .into_iter()
+        .map(|(mi, _, node)| (mi, decls::BodyNodes::of(u, node)))
+        .collect();
+    let split = Arc::new(Split { pieces, bodies });
+    ranges
+        .into_iter()
+        .map(|pieces| CheckShare {
+            task,
+            unit,
+            pieces,
+            split: Arc::clone(&split),
+        })
+        .collect()
 }
 
 impl CheckShare<'_> {
@@ -145,26 +182,30 @@ impl CheckShare<'_> {
         cx.cache.generation += 1;
         cx.cache_enabled = true;
         let modules = cx.modules();
-        let pieces = pieces(&cx);
         let mut result = ShareResult::default();
-        let mut body: Option<(usize, decls::BodyNodes<'_>)> = None;
-        for (piece, _) in pieces.get(self.pieces.clone()).unwrap_or_default() {
-            let mi = match piece {
-                Piece::Module(mi) | Piece::Routine(mi, _) => *mi,
-            };
-            let Some((_, module, node)) = modules.iter().find(|(i, _, _)| *i == mi) else {
+        let mut entered = None;
+        for (piece, _) in self
+            .split
+            .pieces
+            .get(self.pieces.clone())
+            .unwrap_or_default()
+        {
+            let mi = piece.module();
+            let found = modules.iter().find(|(i, _, _)| *i == mi);
+            let nodes = self.split.bodies.iter().find(|(i, _)| *i == mi);
+            let (Some((_, module, _)), Some((_, nodes))) = (found, nodes) else {
                 result.pieces.push(Vec::new());
                 continue;
             };
-            if body.as_ref().is_none_or(|(m, _)| *m != mi) {
+            if entered != Some(mi) {
                 cx.enter_module(mi, module);
-                body = Some((mi, decls::BodyNodes::of(u, *node)));
+                entered = Some(mi);
             }
-            let Some((_, nodes)) = &body else {
-                continue;
-            };
             match piece {
-                Piece::Module(_) => decls::check_module_prelude(&mut cx, module, nodes),
+                Piece::Module(_) => decls::check_module_own(&mut cx, module),
+                Piece::Data(_, run) => {
+                    decls::check_module_data(&mut cx, module, nodes, run.clone());
+                }
                 Piece::Routine(_, ri) => {
                     if let Some(decl) = module.routines.get(*ri) {
                         decls::check_routine_at(&mut cx, nodes, decl);
@@ -191,10 +232,11 @@ pub fn merge_unit_check(task: &Task, unit: usize, results: Vec<ShareResult>) -> 
         found.extend(r.pieces);
     }
     decls::check_file_wide(&mut cx);
+    let pieces = pieces(&cx);
     let mut found = found.into_iter();
     for (mi, module, _) in cx.modules() {
         cx.enter_module(mi, module);
-        for _ in 0..=module.routines.len() {
+        for _ in pieces.iter().filter(|(p, _)| p.module() == mi) {
             cx.diags.extend(found.next().unwrap_or_default());
         }
         decls::check_unused_locals_of_module(&mut cx, module);
@@ -335,8 +377,8 @@ pub(crate) struct RoutineCx<'t> {
     pub locals: NameMap<DataDecl>,
     pub for_vars: Vec<String>,
     /// Labels by folded name: the label's range and the statement list that
-    /// holds it (the node id of the list's parent).
-    pub labels: NameMap<(Range<usize>, usize)>,
+    /// holds it ([`stmts::BlockKey`] of the list's parent).
+    pub labels: NameMap<(Range<usize>, stmts::BlockKey)>,
     pub in_error_handler: bool,
 }
 

@@ -46,7 +46,11 @@ pub(super) fn collect_labels<'t>(cx: &mut Cx<'_>, routine: Node<'t>, named: Vec<
             let kind = kind_of(child);
             if kind == "label" {
                 if let Some(name) = field(child, "name") {
-                    found.push((cx.node_text(name).to_owned(), name.byte_range(), node.id()));
+                    found.push((
+                        cx.node_text(name).to_owned(),
+                        name.byte_range(),
+                        block_key(node),
+                    ));
                 }
             } else if !kind.ends_with("expression")
                 && kind != "argument_list"
@@ -81,6 +85,15 @@ pub(super) fn collect_labels<'t>(cx: &mut Cx<'_>, routine: Node<'t>, named: Vec<
         });
         cx.report_with(d);
     }
+}
+
+/// What identifies the statement list that holds a label: its node's kind
+/// and byte range, not the node itself, which a long routine parsed as two
+/// parts has in both trees.
+pub(crate) type BlockKey = (u16, usize, usize);
+
+fn block_key(node: Node<'_>) -> BlockKey {
+    (node.kind_id(), node.start_byte(), node.end_byte())
 }
 
 /// Is byte `at` of `text` certainly inside a comment: after a `!` on its
@@ -300,7 +313,7 @@ fn goto(cx: &mut Cx<'_>, s: Node<'_>) {
             let mut at = s.parent();
             let mut reachable = false;
             while let Some(n) = at {
-                if n.id() == list {
+                if block_key(n) == list {
                     reachable = true;
                     break;
                 }

@@ -550,9 +550,10 @@ pub fn check_files(
 const SPLIT_PARSE_BYTES: usize = 128 * 1024;
 
 /// Parses a file: a large one as two parts on two threads (its later
-/// routines on their own, see [`rapid_analyzer::split_parse`]), the same
-/// items and diagnostics as a whole parse; any other file, or one that does
-/// not split cleanly, as a whole.
+/// routines, or the later statements of a long routine, on their own, see
+/// [`rapid_analyzer::split_parse`]), with the items and diagnostics of a
+/// whole parse; any other file, or one that does not split cleanly, as a
+/// whole.
 fn parse_unit(path: String, text: String) -> Unit {
     use rapid_analyzer::split_parse::{parse_ranges, plan};
     let plan = (text.len() >= SPLIT_PARSE_BYTES && rayon::current_num_threads() > 1)
@@ -570,7 +571,7 @@ fn parse_unit(path: String, text: String) -> Unit {
     let (Some(main), Some(part)) = (main, part) else {
         return Unit::new(path, text, None);
     };
-    Unit::from_split(path, text, main, plan.chunk, part)
+    Unit::from_split(path, text, main, part, plan.chunk, plan.kind)
         .unwrap_or_else(|(path, text)| Unit::new(path, text, None))
 }
 
