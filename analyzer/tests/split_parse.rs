@@ -218,3 +218,40 @@ fn trees_that_do_not_fit_are_handed_back() {
     let part = parse_ranges(&text, &fine.part).expect("part tree");
     assert!(Unit::from_split(PATH.into(), text, part, main, fine.chunk, fine.kind).is_err());
 }
+
+#[test]
+fn a_long_routine_checked_in_parts_reports_as_checked_whole() {
+    // Between 128 and 256 KB: two parts of 2,000 statements. A RETURN ends
+    // the first part, so the second starts unreachable; data are used in
+    // one part only, in the handler only, or nowhere.
+    let mut text = String::from(
+        "MODULE Gen\n  VAR num n;\n  PROC main()\n    VAR num early;\n    VAR num late;\n    VAR num handler;\n    VAR num never;\n",
+    );
+    let pad = "x".repeat(40);
+    for i in 0..4000 {
+        text.push_str(&match i {
+            0 => "    early := 1;\n".to_owned(),
+            1999 => "    RETURN;\n".to_owned(),
+            2003 => "    back:\n".to_owned(),
+            3999 => "    late := 2;\n".to_owned(),
+            _ => format!("    n := n + {i}; ! {pad}\n"),
+        });
+    }
+    text.push_str("  ERROR\n    handler := 1;\n    GOTO back;\n  ENDPROC\nENDMODULE\n");
+    assert!(text.len() > 128 * 1024 && text.len() < 256 * 1024);
+    let task = task_of(Unit::new(PATH.into(), text, None));
+    let (whole, shared) = diagnostics(&task);
+    assert_eq!(shared, whole);
+    let codes: Vec<(&str, String)> = whole.iter().map(|(c, _, m, _)| (*c, m.clone())).collect();
+    assert_eq!(
+        codes,
+        vec![
+            ("W201", "`never` is declared but never used".to_owned()),
+            (
+                "W204",
+                "this code can never run: it follows RETURN".to_owned()
+            ),
+        ],
+        "{whole:?}"
+    );
+}

@@ -241,7 +241,10 @@ fn a_large_module_parsed_on_two_threads_reports_as_on_one() {
         let dir = scratch(&format!("large-{name}"));
         let mut module = String::from("MODULE Large\n    CONST num k := 3;\n    VAR num n;\n");
         if name == "long" {
-            module.push_str("    PROC main()\n        VAR num unused;\n");
+            // Checked in parts: data one part uses are used.
+            module.push_str(
+                "    PROC main()\n        VAR num unused;\n        VAR num early;\n        VAR num late;\n        early := 1;\n",
+            );
         }
         let mut i = 0;
         while module.len() < 200 * 1024 || (name == "long" && i < 2_000) {
@@ -249,7 +252,7 @@ fn a_large_module_parsed_on_two_threads_reports_as_on_one() {
             i += 1;
         }
         if name == "long" {
-            module.push_str("    ENDPROC\n    PROC p()\n    ENDPROC\n");
+            module.push_str("        late := 2;\n    ENDPROC\n    PROC p()\n    ENDPROC\n");
         }
         module.push_str("ENDMODULE\n");
         write(&dir, &[("cell/Large.mod", &module)]);

@@ -175,7 +175,7 @@ impl<'t> BodyNodes<'t> {
 
     /// The declaration that starts at `start` (the last one, should an
     /// empty node start there too).
-    fn at(&self, start: usize) -> Option<Node<'t>> {
+    pub(super) fn at(&self, start: usize) -> Option<Node<'t>> {
         let after = self.0.partition_point(|n| n.start_byte() <= start);
         let n = *self.0.get(after.checked_sub(1)?)?;
         (n.start_byte() == start).then_some(n)
@@ -248,6 +248,22 @@ pub(super) fn check_routine_at<'t>(
 ) {
     if let Some(n) = data_nodes.at(decl.range.start) {
         check_routine(cx, n, decl);
+    }
+}
+
+/// [`check_routine_part`] of a routine of the current module, found by its
+/// declaration; `children` are its [`all_routine_children`], if the caller
+/// has them.
+pub(super) fn check_routine_part_at<'t>(
+    cx: &mut Cx<'t>,
+    data_nodes: &BodyNodes<'t>,
+    decl: &'t RoutineDecl,
+    children: Option<&RoutineChildren<'t>>,
+    part: usize,
+    parts: usize,
+) {
+    if let Some(n) = data_nodes.at(decl.range.start) {
+        check_routine_part(cx, n, decl, children, part, parts);
     }
 }
 
@@ -479,6 +495,24 @@ fn literal_sizes(cx: &Cx<'_>, decl: &DataDecl) -> Vec<Option<usize>> {
 }
 
 fn check_routine<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &'t RoutineDecl) {
+    check_routine_part(cx, node, decl, None, 0, 1);
+}
+
+/// Checks part `part` of `parts` of a routine: the routine's own checks
+/// (its declarations, labels) in the first part, that share of its
+/// statements, and its handlers and end in the last. A long routine is
+/// checked in parts on several threads; each part reports the routine data
+/// and parameters it did not see used, and only those no part used are
+/// reported ([`merge_unused`]).
+pub(super) fn check_routine_part<'t>(
+    cx: &mut Cx<'t>,
+    node: Node<'t>,
+    decl: &'t RoutineDecl,
+    children: Option<&RoutineChildren<'t>>,
+    part: usize,
+    parts: usize,
+) {
+    let first_report = cx.diags.len();
     check_name_length(cx, &decl.name, decl.name_range.clone());
     let mut params = NameMap::default();
     let mut names: Vec<(&str, Range<usize>)> = Vec::new();
@@ -519,17 +553,13 @@ fn check_routine<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &'t RoutineDecl) {
     // each walk costly): the items of its body, and its named children for
     // the labels.
     let RoutineChildren {
-        mut body,
-        mut named,
+        body,
+        named,
         handlers,
-    } = routine_children(node);
-    // A long routine parsed as two parts: its later statements are in the
-    // second tree (after all of these, before the handlers).
-    if let Some(rest) = cx.unit.routine_rest(node) {
-        let later = routine_children(rest).body;
-        body.extend(later.iter().copied());
-        named.extend(later);
-    }
+    } = match children {
+        Some(c) => c.clone(),
+        None => all_routine_children(cx.unit, node),
+    };
     // Routine data, which must come before the first statement.
     let mut seen_statement = false;
     let mut statements = Vec::new();
@@ -579,7 +609,20 @@ fn check_routine<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &'t RoutineDecl) {
         h.finish()
     };
     stmts::collect_labels(cx, node, named);
-    stmts::check_block(cx, &statements);
+    // The routine's own findings are the first part's.
+    if part > 0 {
+        cx.diags.truncate(first_report);
+    }
+    let share = statements.len().div_ceil(parts.max(1));
+    let from = (part * share).min(statements.len());
+    let to = ((part + 1) * share).min(statements.len());
+    stmts::check_block_part(cx, &statements, from..to);
+    if part + 1 < parts {
+        unused_of_part(cx, decl, parts);
+        cx.routine = None;
+        cx.scope_changed();
+        return;
+    }
     for (h, in_error) in handlers.into_iter().zip([false, true, false]) {
         if let Some(h) = h {
             if let Some(r) = &mut cx.routine {
@@ -605,19 +648,62 @@ fn check_routine<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &'t RoutineDecl) {
         }
         cx.report_with(d);
     }
-    check_unused_in_routine(cx, decl);
+    unused_of_part(cx, decl, parts);
     cx.routine = None;
     cx.scope_changed();
 }
 
+/// The unused routine data and parameters, as one part of a routine saw
+/// them: reported directly for a routine checked whole, else kept apart
+/// (`Cx::part_unused`) for [`merge_unused`].
+fn unused_of_part(cx: &mut Cx<'_>, decl: &RoutineDecl, parts: usize) {
+    let mark = cx.diags.len();
+    check_unused_in_routine(cx, decl);
+    if parts > 1 {
+        cx.part_unused = cx.diags.split_off(mark);
+    }
+}
+
+/// What the parts of a routine checked in parts found unused: only what
+/// every part found (a datum one part uses is used), in the first part's
+/// order.
+pub(crate) fn merge_unused(parts: Vec<Vec<Diagnostic>>) -> Vec<Diagnostic> {
+    let mut parts = parts.into_iter();
+    let Some(first) = parts.next() else {
+        return Vec::new();
+    };
+    let rest: Vec<Vec<Diagnostic>> = parts.collect();
+    first
+        .into_iter()
+        .filter(|d| rest.iter().all(|p| p.contains(d)))
+        .collect()
+}
+
 /// A routine's children, from one walk.
-struct RoutineChildren<'t> {
+#[derive(Clone, Debug)]
+pub(super) struct RoutineChildren<'t> {
     /// In field `body`.
     body: Vec<Node<'t>>,
     /// Every named child.
     named: Vec<Node<'t>>,
     /// The first child in fields `backward`, `error` and `undo`.
     handlers: [Option<Node<'t>>; 3],
+}
+
+/// The children of a routine, with its later statements from the second
+/// tree of a long routine parsed as two parts (after all of its own
+/// statements, before its handlers).
+pub(super) fn all_routine_children<'t>(
+    unit: &'t crate::task::Unit,
+    node: Node<'t>,
+) -> RoutineChildren<'t> {
+    let mut children = routine_children(node);
+    if let Some(rest) = unit.routine_rest(node) {
+        let later = routine_children(rest).body;
+        children.body.extend(later.iter().copied());
+        children.named.extend(later);
+    }
+    children
 }
 
 fn routine_children(node: Node<'_>) -> RoutineChildren<'_> {

@@ -74,6 +74,9 @@ pub struct CheckShare<'a> {
 struct Split<'a> {
     pieces: Vec<(Piece, usize)>,
     bodies: Vec<(usize, decls::BodyNodes<'a>)>,
+    /// The children of each routine checked in parts: (module, routine,
+    /// children).
+    routines: Vec<(usize, usize, decls::RoutineChildren<'a>)>,
 }
 
 /// What a [`CheckShare`] found: the findings of each of its pieces, and the
@@ -82,6 +85,8 @@ struct Split<'a> {
 #[derive(Debug, Default)]
 pub struct ShareResult {
     pieces: Vec<Vec<Diagnostic>>,
+    /// For the parts of a routine checked in parts: what each found unused.
+    unused: Vec<Vec<Diagnostic>>,
     used: UsedSet,
 }
 
@@ -91,16 +96,21 @@ pub struct ShareResult {
 enum Piece {
     Module(usize),
     Data(usize, Range<usize>),
-    Routine(usize, usize),
+    /// A routine, or part `.2` of `.3` of a long one.
+    Routine(usize, usize, usize, usize),
 }
 
 impl Piece {
     fn module(&self) -> usize {
         match self {
-            Piece::Module(mi) | Piece::Data(mi, _) | Piece::Routine(mi, _) => *mi,
+            Piece::Module(mi) | Piece::Data(mi, _) | Piece::Routine(mi, ..) => *mi,
         }
     }
 }
+
+/// A routine is checked in parts of about this many bytes (a long
+/// generated routine would otherwise keep one thread busy).
+const ROUTINE_PART_BYTES: usize = 128 * 1024;
 
 /// Data declarations per piece: a module of thousands of robtargets is
 /// shared out like a long list of routines.
@@ -125,7 +135,10 @@ fn pieces(cx: &Cx<'_>) -> Vec<(Piece, usize)> {
             out.push((Piece::Data(mi, run), bytes / 4));
         }
         for (ri, r) in module.routines.iter().enumerate() {
-            out.push((Piece::Routine(mi, ri), r.range.len()));
+            let parts = r.range.len().div_ceil(ROUTINE_PART_BYTES).max(1);
+            for part in 0..parts {
+                out.push((Piece::Routine(mi, ri, part, parts), r.range.len() / parts));
+            }
         }
     }
     out
@@ -155,12 +168,33 @@ pub fn check_unit_split(task: &Task, unit: usize, shares: usize) -> Vec<CheckSha
         }
     }
     ranges.push(start..count);
-    let bodies = cx
-        .modules()
-        .into_iter()
-        .map(|(mi, _, node)| (mi, decls::BodyNodes::of(u, node)))
+    let modules = cx.modules();
+    let bodies: Vec<(usize, decls::BodyNodes<'_>)> = modules
+        .iter()
+        .map(|(mi, _, node)| (*mi, decls::BodyNodes::of(u, *node)))
         .collect();
-    let split = Arc::new(Split { pieces, bodies });
+    // One walk of each long routine, for all of its parts.
+    let mut routines = Vec::new();
+    for (piece, _) in &pieces {
+        let Piece::Routine(mi, ri, 0, parts) = piece else {
+            continue;
+        };
+        let decl = modules
+            .iter()
+            .find(|(i, _, _)| i == mi)
+            .and_then(|(_, m, _)| m.routines.get(*ri));
+        let nodes = bodies.iter().find(|(i, _)| i == mi);
+        if let (true, Some(decl), Some((_, nodes))) = (*parts > 1, decl, nodes)
+            && let Some(node) = nodes.at(decl.range.start)
+        {
+            routines.push((*mi, *ri, decls::all_routine_children(u, node)));
+        }
+    }
+    let split = Arc::new(Split {
+        pieces,
+        bodies,
+        routines,
+    });
     ranges
         .into_iter()
         .map(|pieces| CheckShare {
@@ -206,13 +240,20 @@ impl CheckShare<'_> {
                 Piece::Data(_, run) => {
                     decls::check_module_data(&mut cx, module, nodes, run.clone());
                 }
-                Piece::Routine(_, ri) => {
+                Piece::Routine(_, ri, part, parts) => {
+                    let children = self
+                        .split
+                        .routines
+                        .iter()
+                        .find(|(m, r, _)| *m == mi && r == ri)
+                        .map(|(_, _, c)| c);
                     if let Some(decl) = module.routines.get(*ri) {
-                        decls::check_routine_at(&mut cx, nodes, decl);
+                        decls::check_routine_part_at(&mut cx, nodes, decl, children, *part, *parts);
                     }
                 }
             }
             result.pieces.push(std::mem::take(&mut cx.diags));
+            result.unused.push(std::mem::take(&mut cx.part_unused));
         }
         result.used = std::mem::take(&mut cx.used);
         result
@@ -227,17 +268,31 @@ pub fn merge_unit_check(task: &Task, unit: usize, results: Vec<ShareResult>) -> 
     };
     let mut cx = Cx::new(task, unit, u);
     let mut found = Vec::new();
+    let mut unused = Vec::new();
     for r in results {
         cx.used.extend(r.used);
         found.extend(r.pieces);
+        unused.extend(r.unused);
     }
     decls::check_file_wide(&mut cx);
     let pieces = pieces(&cx);
     let mut found = found.into_iter();
+    let mut unused = unused.into_iter();
     for (mi, module, _) in cx.modules() {
         cx.enter_module(mi, module);
-        for _ in pieces.iter().filter(|(p, _)| p.module() == mi) {
+        let mut parts_unused = Vec::new();
+        for (piece, _) in pieces.iter().filter(|(p, _)| p.module() == mi) {
             cx.diags.extend(found.next().unwrap_or_default());
+            let piece_unused = unused.next().unwrap_or_default();
+            if let Piece::Routine(_, _, part, parts) = piece
+                && *parts > 1
+            {
+                parts_unused.push(piece_unused);
+                if part + 1 == *parts {
+                    cx.diags
+                        .extend(decls::merge_unused(std::mem::take(&mut parts_unused)));
+                }
+            }
         }
         decls::check_unused_locals_of_module(&mut cx, module);
     }
@@ -415,6 +470,9 @@ pub(crate) struct Cx<'t> {
     /// Lowered initial values of module data for rule E413, made on first
     /// use and kept for the whole check.
     pub(crate) inits: Option<crate::consteval::InitCache>,
+    /// The unused routine data and parameters the last part of a routine
+    /// checked in parts found ([`decls::merge_unused`]).
+    pub(crate) part_unused: Vec<Diagnostic>,
 }
 
 /// What a statement's cache key holds besides its text (the task's interface
@@ -461,6 +519,7 @@ impl<'t> Cx<'t> {
             module_close_memo: HashMap::new(),
             reused_signals: HashMap::new(),
             inits: None,
+            part_unused: Vec::new(),
         }
     }
 
