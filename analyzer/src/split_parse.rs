@@ -334,14 +334,19 @@ impl<'a> Points<'a> {
     }
 }
 
-/// The module of a tree when it is the tree's only top-level node and has
-/// no syntax error.
+/// The module of a tree when it is the tree's only top-level node besides
+/// comments and the tree has no syntax error.
 pub(crate) fn sole_module(tree: &Tree) -> Option<Node<'_>> {
     let root = tree.root_node();
-    if root.has_error() || root.named_child_count() != 1 {
+    if root.has_error() {
         return None;
     }
-    root.named_child(0).filter(|m| m.kind() == "module")
+    let mut cursor = root.walk();
+    let mut top = root
+        .named_children(&mut cursor)
+        .filter(|n| n.kind() != "comment");
+    let module = top.next().filter(|m| m.kind() == "module")?;
+    top.next().is_none().then_some(module)
 }
 
 #[cfg(test)]
@@ -358,6 +363,15 @@ mod tests {
         }
         text.push_str("ENDMODULE\n");
         text
+    }
+
+    #[test]
+    fn comments_around_the_module_do_not_count() {
+        let text = format!("! written by a tool\n{}! the end\n", module(6));
+        let plan = plan(&text, 0.5).expect("a plan");
+        let main = parse_ranges(&text, &plan.main).expect("main");
+        let part = parse_ranges(&text, &plan.part).expect("part");
+        assert!(sole_module(&main).is_some() && sole_module(&part).is_some());
     }
 
     #[test]
