@@ -76,8 +76,10 @@ impl Unit {
     /// [`crate::split_parse`]): `main` read everything but `chunk`, `part`
     /// read `chunk` (what it holds is `kind`) with the module's header and
     /// end. When the trees do not fit together as planned (a syntax error in
-    /// either, declarations or statements on the wrong side), the path and
-    /// the text come back: parse the file as a whole.
+    /// either, declarations or statements on the wrong side), the file is
+    /// parsed as a whole, so that its errors are reported as a whole parse
+    /// finds them: incrementally from `main`, whose nodes outside the chunk
+    /// are reused (about half a parse).
     pub fn from_split(
         path: String,
         text: String,
@@ -85,11 +87,11 @@ impl Unit {
         part: Tree,
         chunk: Range<usize>,
         kind: PartKind,
-    ) -> Result<Unit, (String, String)> {
+    ) -> Unit {
         let Some(items) = split_items(&main, &part, &chunk, kind, &text) else {
-            return Err((path, text));
+            return Unit::new(path, text, Some(&main));
         };
-        Ok(Unit {
+        Unit {
             interface: items.interface_hash(),
             constants: constants_hash(&items, &text),
             path,
@@ -103,7 +105,12 @@ impl Unit {
             items,
             // Neither tree has an error.
             syntax: Vec::new(),
-        })
+        }
+    }
+
+    /// Whether this unit was parsed as two parts ([`Unit::from_split`]).
+    pub fn is_split(&self) -> bool {
+        self.part.is_some()
     }
 
     /// Releases the syntax tree to save memory (most of a unit's memory is

@@ -41,8 +41,9 @@ fn split_unit(text: &str) -> Unit {
     let plan = plan(text, 0.5).expect("the module splits");
     let main = parse_ranges(text, &plan.main).expect("main tree");
     let part = parse_ranges(text, &plan.part).expect("part tree");
-    Unit::from_split(PATH.into(), text.into(), main, part, plan.chunk, plan.kind)
-        .unwrap_or_else(|_| panic!("the trees fit together"))
+    let unit = Unit::from_split(PATH.into(), text.into(), main, part, plan.chunk, plan.kind);
+    assert!(unit.is_split(), "the trees fit together");
+    unit
 }
 
 fn task_of(unit: Unit) -> Arc<Task> {
@@ -190,8 +191,8 @@ fn a_long_routine_parsed_in_two_parts_checks_as_a_whole() {
 }
 
 #[test]
-fn trees_that_do_not_fit_are_handed_back() {
-    // A syntax error in a later routine: the caller parses the whole file,
+fn trees_that_do_not_fit_are_parsed_again_whole() {
+    // A syntax error in a later routine: the file is parsed again whole,
     // so that the error is reported as a whole parse finds it.
     let text = module().replace(
         "    again:\n    n := n + 1;\n    IF n < 20",
@@ -209,14 +210,30 @@ fn trees_that_do_not_fit_are_handed_back() {
         broken.chunk,
         broken.kind,
     );
-    assert!(matches!(back, Err((p, t)) if p == PATH && t == text));
+    // Parsed again whole (reusing the main tree): the tree, the syntax
+    // errors and the items of a whole parse.
+    assert!(!back.is_split());
+    let whole = Unit::new(PATH.into(), text.clone(), None);
+    assert_eq!(
+        back.tree().root_node().to_sexp(),
+        whole.tree().root_node().to_sexp()
+    );
+    assert!(!whole.syntax.is_empty());
+    assert_eq!(back.syntax, whole.syntax);
+    assert_eq!(back.items, whole.items);
 
     // Trees swapped: declarations on the wrong side.
     let text = module();
     let fine = plan(&text, 0.5).expect("a plan");
     let main = parse_ranges(&text, &fine.main).expect("main tree");
     let part = parse_ranges(&text, &fine.part).expect("part tree");
-    assert!(Unit::from_split(PATH.into(), text, part, main, fine.chunk, fine.kind).is_err());
+    let back = Unit::from_split(PATH.into(), text.clone(), part, main, fine.chunk, fine.kind);
+    assert!(!back.is_split());
+    let whole = Unit::new(PATH.into(), text, None);
+    assert_eq!(
+        back.tree().root_node().to_sexp(),
+        whole.tree().root_node().to_sexp()
+    );
 }
 
 #[test]

@@ -572,7 +572,6 @@ fn parse_unit(path: String, text: String) -> Unit {
         return Unit::new(path, text, None);
     };
     Unit::from_split(path, text, main, part, plan.chunk, plan.kind)
-        .unwrap_or_else(|(path, text)| Unit::new(path, text, None))
 }
 
 /// Files at least this large have their routines checked on several
