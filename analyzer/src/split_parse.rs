@@ -374,6 +374,15 @@ mod tests {
         assert!(sole_module(&main).is_some() && sole_module(&part).is_some());
     }
 
+    /// The whole parse of `text`, and the two trees of its plan.
+    fn three_parses(text: &str, main_share: f64) -> [Tree; 3] {
+        let plan = plan(text, main_share).expect("a plan");
+        let whole = crate::syntax::parse(&mut crate::syntax::parser(), text, None).expect("tree");
+        let main = parse_ranges(text, &plan.main).expect("main");
+        let part = parse_ranges(text, &plan.part).expect("part");
+        [whole, main, part]
+    }
+
     #[test]
     fn the_later_routines_go_to_the_second_parser() {
         let text = module(6);
@@ -401,10 +410,7 @@ mod tests {
     #[test]
     fn both_trees_hold_the_nodes_of_a_whole_parse() {
         let text = module(9);
-        let plan = plan(&text, 0.4).expect("a plan");
-        let whole = crate::syntax::parse(&mut crate::syntax::parser(), &text, None).expect("tree");
-        let main = parse_ranges(&text, &plan.main).expect("main");
-        let part = parse_ranges(&text, &plan.part).expect("part");
+        let [whole, main, part] = three_parses(&text, 0.4);
         let body = |t: &Tree| {
             let m = sole_module(t).expect("one module without errors");
             crate::syntax_util::fields(m, "body")
@@ -481,10 +487,7 @@ mod tests {
     #[test]
     fn both_trees_hold_the_statements_of_a_whole_parse() {
         let text = long_routine(40);
-        let plan = plan(&text, 0.5).expect("a plan");
-        let whole = crate::syntax::parse(&mut crate::syntax::parser(), &text, None).expect("tree");
-        let main = parse_ranges(&text, &plan.main).expect("main");
-        let part = parse_ranges(&text, &plan.part).expect("part");
+        let [whole, main, part] = three_parses(&text, 0.5);
         let statements = |t: &Tree| {
             let m = sole_module(t).expect("one module without errors");
             let routine = crate::syntax_util::fields(m, "body")

@@ -79,26 +79,36 @@ fn diagnostics(task: &Task) -> (Vec<Finding>, Vec<Finding>) {
     (findings(&whole), findings(&shared))
 }
 
-#[test]
-fn a_module_parsed_in_two_parts_checks_as_a_whole() {
-    let text = module();
-    let split = split_unit(&text);
+/// Parses `text` whole and in two parts, and checks that the two units have
+/// the same items and diagnostics (each checked whole and in shares); gives
+/// both tasks and the rule codes found in the second part.
+fn compare(text: &str) -> (Arc<Task>, Arc<Task>, BTreeSet<&'static str>) {
+    let split = split_unit(text);
     let (chunk, _) = split.part().expect("a second tree");
-    let whole = Unit::new(PATH.into(), text.clone(), None);
+    let whole = Unit::new(PATH.into(), text.to_owned(), None);
     assert_eq!(split.items, whole.items);
     assert_eq!(split.interface, whole.interface);
     assert_eq!(split.constants, whole.constants);
-
     let (whole_task, split_task) = (task_of(whole), task_of(split));
     let (expected, expected_shared) = diagnostics(&whole_task);
     assert_eq!(expected, expected_shared);
-    // The comparison means something: the later routines have findings of
-    // many rules.
-    let late: BTreeSet<&str> = expected
+    let (found, found_shared) = diagnostics(&split_task);
+    assert_eq!(found, expected);
+    assert_eq!(found_shared, expected);
+    let late = expected
         .iter()
         .filter(|(_, range, ..)| chunk.contains(&range.start))
         .map(|(code, ..)| *code)
         .collect();
+    (whole_task, split_task, late)
+}
+
+#[test]
+fn a_module_parsed_in_two_parts_checks_as_a_whole() {
+    let text = module();
+    let (whole_task, split_task, late) = compare(&text);
+    // The comparison means something: the later routines have findings of
+    // many rules.
     // constant-error, incomplete-code, string-too-long, unresolved-name,
     // unknown-component, unused-data, unused-routine
     for rule in ["E413", "E412", "E411", "W101", "E105", "W201", "W203"] {
@@ -107,9 +117,6 @@ fn a_module_parsed_in_two_parts_checks_as_a_whole() {
             "no {rule} in the later routines: {late:?}"
         );
     }
-    let (found, found_shared) = diagnostics(&split_task);
-    assert_eq!(found, expected);
-    assert_eq!(found_shared, expected);
 
     // Constant values in both trees.
     for at in [
@@ -161,17 +168,7 @@ fn a_long_routine_parsed_in_two_parts_checks_as_a_whole() {
     let text = long_routine();
     let plan = plan(&text, 0.5).expect("the routine splits");
     assert_eq!(plan.kind, rapid_analyzer::split_parse::PartKind::Statements);
-    let split = split_unit(&text);
-    let whole = Unit::new(PATH.into(), text.clone(), None);
-    assert_eq!(split.items, whole.items);
-    let (whole_task, split_task) = (task_of(whole), task_of(split));
-    let (expected, expected_shared) = diagnostics(&whole_task);
-    assert_eq!(expected, expected_shared);
-    let late: BTreeSet<&str> = expected
-        .iter()
-        .filter(|(_, range, ..)| plan.chunk.contains(&range.start))
-        .map(|(code, ..)| *code)
-        .collect();
+    let (whole_task, _, late) = compare(&text);
     // constant-error, incomplete-code, string-too-long, unresolved-name
     for rule in ["E413", "E412", "E411", "W101"] {
         assert!(
@@ -180,14 +177,12 @@ fn a_long_routine_parsed_in_two_parts_checks_as_a_whole() {
         );
     }
     // The jumps across the split are fine; only the missing label is not.
+    let (expected, _) = diagnostics(&whole_task);
     let labels: Vec<_> = expected
         .iter()
         .filter(|(code, ..)| *code == "E104" || *code == "E406")
         .collect();
     assert_eq!(labels.len(), 1, "{labels:?}");
-    let (found, found_shared) = diagnostics(&split_task);
-    assert_eq!(found, expected);
-    assert_eq!(found_shared, expected);
 }
 
 #[test]
