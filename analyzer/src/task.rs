@@ -78,8 +78,10 @@ impl Unit {
     /// end. When the trees do not fit together as planned (a syntax error in
     /// either, declarations or statements on the wrong side), the file is
     /// parsed as a whole, so that its errors are reported as a whole parse
-    /// finds them: incrementally from `main`, whose nodes outside the chunk
-    /// are reused (about half a parse).
+    /// finds them: incrementally from one of the trees, whose nodes are
+    /// reused (from the tree without an error when the other has one: its
+    /// whole half is reused, and only the half with the error is parsed
+    /// again).
     pub fn from_split(
         path: String,
         text: String,
@@ -89,7 +91,12 @@ impl Unit {
         kind: PartKind,
     ) -> Unit {
         let Some(items) = split_items(&main, &part, &chunk, kind, &text) else {
-            return Unit::new(path, text, Some(&main));
+            let clean = if main.root_node().has_error() && !part.root_node().has_error() {
+                &part
+            } else {
+                &main
+            };
+            return Unit::new(path, text, Some(clean));
         };
         Unit {
             interface: items.interface_hash(),
@@ -123,8 +130,8 @@ impl Unit {
     }
 
     /// The syntax tree, parsed again from the text if it was released. For
-    /// a file parsed as two parts, the tree of all but the later routines
-    /// ([`Unit::tree_at`] finds the tree of an offset).
+    /// a file parsed as two parts, the tree of all but what the second tree
+    /// holds ([`Unit::tree_at`] finds the tree of an offset).
     pub fn tree(&self) -> &Tree {
         self.tree.get(&self.text)
     }

@@ -217,6 +217,28 @@ fn trees_that_do_not_fit_are_parsed_again_whole() {
     assert_eq!(back.syntax, whole.syntax);
     assert_eq!(back.items, whole.items);
 
+    // The error in the main part: parsed again from the second tree.
+    let text = module().replacen("    n := k DIV z0;\n", "    n := k DIV DIV z0;\n", 1);
+    let broken = plan(&text, 0.5).expect("the lines still split");
+    let main = parse_ranges(&text, &broken.main).expect("main tree");
+    let part = parse_ranges(&text, &broken.part).expect("part tree");
+    assert!(main.root_node().has_error() && !part.root_node().has_error());
+    let back = Unit::from_split(
+        PATH.into(),
+        text.clone(),
+        main,
+        part,
+        broken.chunk,
+        broken.kind,
+    );
+    let whole = Unit::new(PATH.into(), text.clone(), None);
+    assert!(!back.is_split() && !whole.syntax.is_empty());
+    assert_eq!(
+        back.tree().root_node().to_sexp(),
+        whole.tree().root_node().to_sexp()
+    );
+    assert_eq!(back.syntax, whole.syntax);
+
     // Trees swapped: declarations on the wrong side.
     let text = module();
     let fine = plan(&text, 0.5).expect("a plan");
