@@ -31,7 +31,7 @@ struct SigParam {
 
 /// A routine's signature, whether built in or declared.
 #[derive(Clone, Debug)]
-struct Sig {
+pub(super) struct Sig {
     name: String,
     params: Vec<SigParam>,
     required_groups: Vec<u32>,
@@ -39,7 +39,22 @@ struct Sig {
     kind: RoutineKind,
 }
 
-fn signature(sym: RoutineSym<'_>) -> Sig {
+/// The signature of a routine, made once per check context (a MoveL
+/// signature is some twenty parameters of names and types).
+fn signature(cx: &mut Cx<'_>, sym: RoutineSym<'_>) -> std::rc::Rc<Sig> {
+    let key = match sym {
+        RoutineSym::Builtin(r, is_function) => (std::ptr::from_ref(r) as usize, false, is_function),
+        RoutineSym::User(d, _) => (std::ptr::from_ref(d) as usize, true, false),
+    };
+    if let Some(sig) = cx.signatures.get(&key) {
+        return std::rc::Rc::clone(sig);
+    }
+    let sig = std::rc::Rc::new(make_signature(sym));
+    cx.signatures.insert(key, std::rc::Rc::clone(&sig));
+    sig
+}
+
+fn make_signature(sym: RoutineSym<'_>) -> Sig {
     match sym {
         RoutineSym::Builtin(r, is_function) => Sig {
             name: r.name.clone(),
@@ -132,7 +147,7 @@ pub(super) fn procedure_call<'t>(cx: &mut Cx<'t>, node: Node<'t>) {
     }
     match cx.resolve_routine(name, false) {
         Some(sym) => {
-            let sig = signature(sym);
+            let sig = signature(cx, sym);
             match sig.kind {
                 RoutineKind::Func => cx.report(
                     &rules::call_kind_mismatch::RULE,
@@ -175,7 +190,7 @@ pub(super) fn function_call<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Ty {
     }
     match cx.resolve_routine(name, true) {
         Some(sym) => {
-            let sig = signature(sym);
+            let sig = signature(cx, sym);
             if sig.kind != RoutineKind::Func {
                 cx.report(
                     &rules::call_kind_mismatch::RULE,
@@ -192,7 +207,7 @@ pub(super) fn function_call<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Ty {
                 );
             }
             check_args(cx, &sig, args, name_node.byte_range());
-            sig.returns.unwrap_or(Ty::Unknown)
+            sig.returns.clone().unwrap_or(Ty::Unknown)
         }
         None => {
             not_a_routine(cx, name, name_node.byte_range());

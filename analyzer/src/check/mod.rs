@@ -473,6 +473,9 @@ pub(crate) struct Cx<'t> {
     /// The unused routine data and parameters the last part of a routine
     /// checked in parts found ([`decls::merge_unused`]).
     pub(crate) part_unused: Vec<Diagnostic>,
+    /// Signatures of the routines called so far, by the address of their
+    /// declaration (and whether a built-in is called as a function).
+    signatures: HashMap<(usize, bool, bool), std::rc::Rc<calls::Sig>>,
 }
 
 /// What a statement's cache key holds besides its text (the task's interface
@@ -520,6 +523,7 @@ impl<'t> Cx<'t> {
             reused_signals: HashMap::new(),
             inits: None,
             part_unused: Vec::new(),
+            signatures: HashMap::new(),
         }
     }
 
