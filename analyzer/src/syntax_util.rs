@@ -91,7 +91,7 @@ pub fn literal_aggregate(node: Node<'_>, text: &str) -> Option<Literal> {
     }
     let mut at = range.start;
     let mut out = Vec::with_capacity(1);
-    read_aggregate(text.as_bytes(), &mut at, 0, Some(&mut out))?;
+    read_aggregate(text.as_bytes(), &mut at, 0, &mut Read::Literals(&mut out))?;
     (at == range.end).then(|| out.pop()).flatten()
 }
 
@@ -103,7 +103,42 @@ pub fn is_literal_aggregate(node: Node<'_>, text: &str) -> bool {
         return false;
     }
     let mut at = range.start;
-    read_aggregate(text.as_bytes(), &mut at, 0, None).is_some() && at == range.end
+    read_aggregate(text.as_bytes(), &mut at, 0, &mut Read::Check).is_some() && at == range.end
+}
+
+/// The shape of an aggregate made only of literals: `[` and `]` around
+/// each aggregate, `n`, `s` and `b` for numbers, strings and booleans
+/// (`[[nnn][nnnn]]`). Whether such an aggregate fits a type depends on its
+/// shape only, not on the values.
+pub fn literal_shape(node: Node<'_>, text: &str) -> Option<Vec<u8>> {
+    let range = node.byte_range();
+    if range.end > text.len() || node.has_error() {
+        return None;
+    }
+    let mut at = range.start;
+    let mut shape = Vec::with_capacity(32);
+    read_aggregate(text.as_bytes(), &mut at, 0, &mut Read::Shape(&mut shape))?;
+    (at == range.end).then_some(shape)
+}
+
+/// What reading an aggregate makes.
+enum Read<'a> {
+    /// Nothing: the text is only checked.
+    Check,
+    /// The aggregate's [`Literal`], pushed.
+    Literals(&'a mut Vec<Literal>),
+    /// Its [`literal_shape`], appended.
+    Shape(&'a mut Vec<u8>),
+}
+
+impl Read<'_> {
+    fn leaf(&mut self, literal: Literal, mark: u8) {
+        match self {
+            Read::Check => {}
+            Read::Literals(out) => out.push(literal),
+            Read::Shape(shape) => shape.push(mark),
+        }
+    }
 }
 
 fn skip_blanks(bytes: &[u8], at: &mut usize) {
@@ -115,46 +150,46 @@ fn skip_blanks(bytes: &[u8], at: &mut usize) {
     }
 }
 
-/// Reads an aggregate at `at`, pushing it to `out` when given (otherwise
-/// only validating it).
-fn read_aggregate(
-    bytes: &[u8],
-    at: &mut usize,
-    depth: usize,
-    out: Option<&mut Vec<Literal>>,
-) -> Option<()> {
+/// Reads an aggregate at `at` into `out`.
+fn read_aggregate(bytes: &[u8], at: &mut usize, depth: usize, out: &mut Read<'_>) -> Option<()> {
     if depth > MAX_LITERAL_DEPTH || bytes.get(*at) != Some(&b'[') {
         return None;
     }
     let start = *at;
     *at += 1;
-    let mut elements = out.is_some().then(Vec::new);
+    // The elements of this aggregate go to a list of their own.
+    let mut elements = Vec::new();
+    let mut inner = match out {
+        Read::Check => Read::Check,
+        Read::Literals(_) => Read::Literals(&mut elements),
+        Read::Shape(shape) => {
+            shape.push(b'[');
+            Read::Shape(shape)
+        }
+    };
     loop {
         skip_blanks(bytes, at);
         match bytes.get(*at)? {
-            b'[' => read_aggregate(bytes, at, depth + 1, elements.as_mut())?,
-            b'"' => push(elements.as_mut(), read_string(bytes, at)?),
-            b't' | b'T' | b'f' | b'F' => push(elements.as_mut(), read_boolean(bytes, at)?),
-            _ => push(elements.as_mut(), read_number(bytes, at)?),
+            b'[' => read_aggregate(bytes, at, depth + 1, &mut inner)?,
+            b'"' => inner.leaf(read_string(bytes, at)?, b's'),
+            b't' | b'T' | b'f' | b'F' => inner.leaf(read_boolean(bytes, at)?, b'b'),
+            _ => inner.leaf(read_number(bytes, at)?, b'n'),
         }
         skip_blanks(bytes, at);
         match bytes.get(*at)? {
             b',' => *at += 1,
             b']' => {
                 *at += 1;
-                if let (Some(out), Some(elements)) = (out, elements) {
+                if let Read::Shape(shape) = inner {
+                    shape.push(b']');
+                }
+                if let Read::Literals(out) = out {
                     out.push(Literal::Aggregate(start..*at, elements));
                 }
                 return Some(());
             }
             _ => return None,
         }
-    }
-}
-
-fn push(out: Option<&mut Vec<Literal>>, literal: Literal) {
-    if let Some(out) = out {
-        out.push(literal);
     }
 }
 

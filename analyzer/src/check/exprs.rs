@@ -144,9 +144,21 @@ pub(super) fn a_type(ty: &Ty) -> String {
 /// An aggregate takes its type from the context: a record fixes its
 /// components, an array its elements.
 fn aggregate<'t>(cx: &mut Cx<'t>, node: Node<'t>, expected: &Ty, sizes: &[Option<usize>]) {
-    if let Some(Literal::Aggregate(range, elements)) = literal_aggregate(node, cx.text) {
-        literal_aggregate_check(cx, range, &elements, expected, sizes);
-        return;
+    // An aggregate of literals fits its type or not by its shape alone:
+    // robtargets by the thousand are checked once per shape.
+    if let Some(shape) = crate::syntax_util::literal_shape(node, cx.text) {
+        let key = (format!("{expected:?}"), sizes.to_vec(), shape);
+        if cx.clean_literals.contains(&key) {
+            return;
+        }
+        if let Some(Literal::Aggregate(range, elements)) = literal_aggregate(node, cx.text) {
+            let before = cx.diags.len();
+            literal_aggregate_check(cx, range, &elements, expected, sizes);
+            if cx.diags.len() == before {
+                cx.clean_literals.insert(key);
+            }
+            return;
+        }
     }
     let elements = fields(node, "element");
     match expected {

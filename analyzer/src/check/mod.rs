@@ -476,6 +476,9 @@ pub(crate) struct Cx<'t> {
     /// Signatures of the routines called so far, by the address of their
     /// declaration (and whether a built-in is called as a function).
     signatures: HashMap<(usize, bool, bool), std::rc::Rc<calls::Sig>>,
+    /// Aggregates of literals found to fit their type, by (the type, the
+    /// array sizes, the aggregate's shape): the same shape fits again.
+    pub(crate) clean_literals: HashSet<(String, Vec<Option<usize>>, Vec<u8>)>,
 }
 
 /// What a statement's cache key holds besides its text (the task's interface
@@ -524,6 +527,7 @@ impl<'t> Cx<'t> {
             inits: None,
             part_unused: Vec::new(),
             signatures: HashMap::new(),
+            clean_literals: HashSet::new(),
         }
     }
 
