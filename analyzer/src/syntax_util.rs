@@ -85,25 +85,14 @@ const MAX_LITERAL_DEPTH: usize = 16;
 /// operations, comments, escape sequences, anything unusual), and for nodes
 /// with syntax errors.
 pub fn literal_aggregate(node: Node<'_>, text: &str) -> Option<Literal> {
-    let range = node.byte_range();
-    if range.end > text.len() || node.has_error() {
-        return None;
-    }
-    let mut at = range.start;
     let mut out = Vec::with_capacity(1);
-    read_aggregate(text.as_bytes(), &mut at, 0, &mut Read::Literals(&mut out))?;
-    (at == range.end).then(|| out.pop()).flatten()
+    read_node(node, text, &mut Read::Literals(&mut out)).then(|| out.pop())?
 }
 
 /// Is `node` an aggregate made only of literals (see [`literal_aggregate`])?
 /// Reads the text without building the [`Literal`].
 pub fn is_literal_aggregate(node: Node<'_>, text: &str) -> bool {
-    let range = node.byte_range();
-    if node.kind_id() != kinds().aggregate || range.end > text.len() || node.has_error() {
-        return false;
-    }
-    let mut at = range.start;
-    read_aggregate(text.as_bytes(), &mut at, 0, &mut Read::Check).is_some() && at == range.end
+    node.kind_id() == kinds().aggregate && read_node(node, text, &mut Read::Check)
 }
 
 /// The shape of an aggregate made only of literals: `[` and `]` around
@@ -111,14 +100,19 @@ pub fn is_literal_aggregate(node: Node<'_>, text: &str) -> bool {
 /// (`[[nnn][nnnn]]`). Whether such an aggregate fits a type depends on its
 /// shape only, not on the values.
 pub fn literal_shape(node: Node<'_>, text: &str) -> Option<Vec<u8>> {
+    let mut shape = Vec::with_capacity(32);
+    read_node(node, text, &mut Read::Shape(&mut shape)).then_some(shape)
+}
+
+/// Reads the text of `node` as an aggregate of literals into `out`: whether
+/// it is one, from its first byte to its last, without syntax errors.
+fn read_node(node: Node<'_>, text: &str, out: &mut Read<'_>) -> bool {
     let range = node.byte_range();
     if range.end > text.len() || node.has_error() {
-        return None;
+        return false;
     }
     let mut at = range.start;
-    let mut shape = Vec::with_capacity(32);
-    read_aggregate(text.as_bytes(), &mut at, 0, &mut Read::Shape(&mut shape))?;
-    (at == range.end).then_some(shape)
+    read_aggregate(text.as_bytes(), &mut at, 0, out).is_some() && at == range.end
 }
 
 /// What reading an aggregate makes.

@@ -185,6 +185,34 @@ fn a_long_routine_parsed_in_two_parts_checks_as_a_whole() {
     assert_eq!(labels.len(), 1, "{labels:?}");
 }
 
+/// Splits `text`, whose main part (or else second part) has a syntax error,
+/// and checks that the unit is the whole parse's: its tree, syntax errors
+/// and items.
+fn assert_parsed_again_whole(text: &str, error_in_main: bool) {
+    let broken = plan(text, 0.5).expect("the lines still split");
+    let main = parse_ranges(text, &broken.main).expect("main tree");
+    let part = parse_ranges(text, &broken.part).expect("part tree");
+    let errors = (main.root_node().has_error(), part.root_node().has_error());
+    assert_eq!(errors, (error_in_main, !error_in_main));
+    let back = Unit::from_split(
+        PATH.into(),
+        text.into(),
+        main,
+        part,
+        broken.chunk,
+        broken.kind,
+    );
+    assert!(!back.is_split());
+    let whole = Unit::new(PATH.into(), text.into(), None);
+    assert_eq!(
+        back.tree().root_node().to_sexp(),
+        whole.tree().root_node().to_sexp()
+    );
+    assert!(!whole.syntax.is_empty());
+    assert_eq!(back.syntax, whole.syntax);
+    assert_eq!(back.items, whole.items);
+}
+
 #[test]
 fn trees_that_do_not_fit_are_parsed_again_whole() {
     // A syntax error in a later routine: the file is parsed again whole,
@@ -193,51 +221,10 @@ fn trees_that_do_not_fit_are_parsed_again_whole() {
         "    again:\n    n := n + 1;\n    IF n < 20",
         "    n := := 1;\n    again:\n    IF n < 20",
     );
-    let broken = plan(&text, 0.5).expect("the lines still split");
-    let main = parse_ranges(&text, &broken.main).expect("main tree");
-    let part = parse_ranges(&text, &broken.part).expect("part tree");
-    assert!(part.root_node().has_error());
-    let back = Unit::from_split(
-        PATH.into(),
-        text.clone(),
-        main,
-        part,
-        broken.chunk,
-        broken.kind,
-    );
-    // Parsed again whole (reusing the main tree): the tree, the syntax
-    // errors and the items of a whole parse.
-    assert!(!back.is_split());
-    let whole = Unit::new(PATH.into(), text.clone(), None);
-    assert_eq!(
-        back.tree().root_node().to_sexp(),
-        whole.tree().root_node().to_sexp()
-    );
-    assert!(!whole.syntax.is_empty());
-    assert_eq!(back.syntax, whole.syntax);
-    assert_eq!(back.items, whole.items);
-
+    assert_parsed_again_whole(&text, false);
     // The error in the main part: parsed again from the second tree.
     let text = module().replacen("    n := k DIV z0;\n", "    n := k DIV DIV z0;\n", 1);
-    let broken = plan(&text, 0.5).expect("the lines still split");
-    let main = parse_ranges(&text, &broken.main).expect("main tree");
-    let part = parse_ranges(&text, &broken.part).expect("part tree");
-    assert!(main.root_node().has_error() && !part.root_node().has_error());
-    let back = Unit::from_split(
-        PATH.into(),
-        text.clone(),
-        main,
-        part,
-        broken.chunk,
-        broken.kind,
-    );
-    let whole = Unit::new(PATH.into(), text.clone(), None);
-    assert!(!back.is_split() && !whole.syntax.is_empty());
-    assert_eq!(
-        back.tree().root_node().to_sexp(),
-        whole.tree().root_node().to_sexp()
-    );
-    assert_eq!(back.syntax, whole.syntax);
+    assert_parsed_again_whole(&text, true);
 
     // Trees swapped: declarations on the wrong side.
     let text = module();
