@@ -382,6 +382,14 @@ try {
   }
   await browser?.close().catch(() => {});
   server.kill("SIGTERM");
+  await new Promise((resolve) => {
+    if (server.exitCode !== null) return resolve();
+    server.once("exit", resolve);
+    setTimeout(resolve, 5000);
+  });
+  // The profile, workspace and code-server data are scratch (what is worth
+  // keeping was copied to `out`): left behind, every run leaves one.
+  fs.rmSync(tmp, { recursive: true, force: true, maxRetries: 3 });
 }
 console.log(`screenshots and logs: ${out}`);
 console.log(`${passed} passed, ${failed} failed`);
