@@ -1,25 +1,31 @@
 //! A large module parsed as two parts at once.
 //!
 //! Tree-sitter parses a file on one thread; on a 9,000-line module that is
-//! more than half of `rapid check`'s time. A module's routines are parsed
-//! the same wherever they stand in it, so the later routines can be parsed
-//! by a second parser while the first parses the rest: each parser reads
-//! only its byte ranges of the text (tree-sitter's included ranges), and
-//! the nodes of both trees keep their offsets in the whole text.
+//! more than half of `rapid check`'s time. A module's declarations, and a
+//! routine's statements, are parsed the same wherever they stand, so the
+//! later ones can be parsed by a second parser while the first parses the
+//! rest: each parser reads only its byte ranges of the text (tree-sitter's
+//! included ranges), and the nodes of both trees keep their offsets in the
+//! whole text.
 //!
-//! - The main tree holds everything but [`SplitPlan::chunk`]: the header,
-//!   the module data, the first routines, `ENDMODULE`.
-//! - The part tree holds the module's header line, the chunk (whole
-//!   routines, with whatever lies between them) and `ENDMODULE`.
+//! - The main tree holds everything but [`SplitPlan::chunk`].
+//! - The part tree holds the module's header line, the chunk and
+//!   `ENDMODULE`; the chunk is either the module's later declarations (data
+//!   and routines, [`PartKind::Declarations`]) or the later statements of
+//!   one long routine, read with that routine's first and last lines
+//!   ([`PartKind::Statements`]).
 //!
 //! The plan is made from the text's lines alone, before any parse: a
 //! routine starts on a line whose first word is `PROC`, `FUNC` or `TRAP`
-//! (after `LOCAL`) and ends on the line whose first word closes it. That
-//! holds for any module without syntax errors (those words are reserved,
-//! strings end with their line and comments are lines). A module with syntax
+//! (after `LOCAL`) and ends on the line whose first word closes it; a
+//! declaration or a statement starts on a line after one that ended the
+//! previous one (with `;`), blocks counted by their opening and closing
+//! words. That holds for any module without syntax errors (those words are
+//! reserved, strings end with their line and comments are lines); where the
+//! counting loses track, that routine is not split. A module with syntax
 //! errors, or trees that do not fit together as planned, is parsed again as
-//! a whole by the caller ([`crate::task::Unit::from_split`] says so), so
-//! that syntax errors are reported as a whole parse finds them.
+//! a whole ([`crate::task::Unit::from_split`] does so), so that syntax
+//! errors are reported as a whole parse finds them.
 
 use std::ops::Range;
 
@@ -69,10 +75,10 @@ struct RoutineLines {
 }
 
 /// Splits `text` so that the main parser reads about `main_share` (0 to 1)
-/// of its bytes: at a routine of the module, or at a statement of a long
-/// routine, whichever is nearer. `None` when the text is not one module
-/// whose routines can be found line by line, or when nothing worth a second
-/// parser would go to it.
+/// of its bytes: at a declaration of the module, or at a statement of a
+/// long routine, whichever comes nearer. `None` when the text is not one
+/// module whose routines can be found line by line, or when either parser
+/// would get less than an eighth of the text.
 pub fn plan(text: &str, main_share: f64) -> Option<SplitPlan> {
     let mut header_end = None;
     let mut endmodule = None;
