@@ -228,7 +228,10 @@ impl CheckShare<'_> {
             let found = modules.iter().find(|(i, _, _)| *i == mi);
             let nodes = self.split.bodies.iter().find(|(i, _)| *i == mi);
             let (Some((_, module, _)), Some((_, nodes))) = (found, nodes) else {
+                // One entry per piece in both lists, which the merge reads
+                // side by side.
                 result.pieces.push(Vec::new());
+                result.unused.push(Vec::new());
                 continue;
             };
             if entered != Some(mi) {
@@ -470,8 +473,8 @@ pub(crate) struct Cx<'t> {
     /// Lowered initial values of module data for rule E413, made on first
     /// use and kept for the whole check.
     pub(crate) inits: Option<crate::consteval::InitCache>,
-    /// The unused routine data and parameters the last part of a routine
-    /// checked in parts found ([`decls::merge_unused`]).
+    /// The unused routine data and parameters that the part just checked of
+    /// a routine checked in parts found ([`decls::merge_unused`]).
     pub(crate) part_unused: Vec<Diagnostic>,
     /// Signatures of the routines called so far, by the address of their
     /// declaration (and whether a built-in is called as a function).
