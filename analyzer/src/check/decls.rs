@@ -29,8 +29,9 @@ pub(super) fn check_file_wide(cx: &mut Cx<'_>) {
     }
     let unit = cx.unit;
     check_file_wide_in(cx, unit.tree().root_node(), &regions);
-    // The second tree of a file parsed as two parts: only its routines (it
-    // repeats the module's header and end).
+    // The second tree of a file parsed as two parts: only its chunk (it
+    // repeats the module's header and end, and a split routine's first and
+    // last lines).
     if let Some((chunk, part)) = unit.part() {
         regions.retain_mut(|g| {
             *g = g.start.max(chunk.start)..g.end.min(chunk.end);
