@@ -307,6 +307,8 @@ pub fn parse_ranges(text: &str, ranges: &[Range<usize>]) -> Option<Tree> {
 }
 
 /// Rows and columns of increasing offsets, from one pass over the text.
+/// Rows count `\n` only, as tree-sitter's lexer does (`text::LineIndex`
+/// also breaks lines at a lone `\r`).
 struct Points<'a> {
     text: &'a str,
     offset: usize,
@@ -380,6 +382,14 @@ mod tests {
         assert!(sole_module(&main).is_some() && sole_module(&part).is_some());
     }
 
+    /// The range and the tree of each child of `node` in field `body`.
+    fn body_of(node: Node<'_>) -> Vec<(Range<usize>, String)> {
+        crate::syntax_util::fields(node, "body")
+            .into_iter()
+            .map(|n| (n.byte_range(), n.to_sexp()))
+            .collect()
+    }
+
     /// The whole parse of `text`, and the two trees of its plan.
     fn three_parses(text: &str, main_share: f64) -> [Tree; 3] {
         let plan = plan(text, main_share).expect("a plan");
@@ -417,13 +427,7 @@ mod tests {
     fn both_trees_hold_the_nodes_of_a_whole_parse() {
         let text = module(9);
         let [whole, main, part] = three_parses(&text, 0.4);
-        let body = |t: &Tree| {
-            let m = sole_module(t).expect("one module without errors");
-            crate::syntax_util::fields(m, "body")
-                .into_iter()
-                .map(|n| (n.byte_range(), n.to_sexp()))
-                .collect::<Vec<_>>()
-        };
+        let body = |t: &Tree| body_of(sole_module(t).expect("one module without errors"));
         let mut split = body(&main);
         split.extend(body(&part));
         split.sort_by_key(|(r, _)| r.start);
@@ -500,10 +504,7 @@ mod tests {
                 .into_iter()
                 .find(|n| n.kind() == "procedure_declaration")
                 .expect("the routine");
-            crate::syntax_util::fields(routine, "body")
-                .into_iter()
-                .map(|n| (n.byte_range(), n.to_sexp()))
-                .collect::<Vec<_>>()
+            body_of(routine)
         };
         let mut split = statements(&main);
         split.extend(statements(&part));

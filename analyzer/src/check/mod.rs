@@ -84,10 +84,16 @@ struct Split<'a> {
 /// the whole module).
 #[derive(Debug, Default)]
 pub struct ShareResult {
-    pieces: Vec<Vec<Diagnostic>>,
-    /// For the parts of a routine checked in parts: what each found unused.
-    unused: Vec<Vec<Diagnostic>>,
+    pieces: Vec<PieceResult>,
     used: UsedSet,
+}
+
+/// What one piece found: its diagnostics, and for a part of a routine
+/// checked in parts the routine data and parameters it saw unused.
+#[derive(Debug, Default)]
+struct PieceResult {
+    diags: Vec<Diagnostic>,
+    unused: Vec<Diagnostic>,
 }
 
 /// A piece of a unit's check: a module's own checks (its name, duplicates,
@@ -228,10 +234,7 @@ impl CheckShare<'_> {
             let found = modules.iter().find(|(i, _, _)| *i == mi);
             let nodes = self.split.bodies.iter().find(|(i, _)| *i == mi);
             let (Some((_, module, _)), Some((_, nodes))) = (found, nodes) else {
-                // One entry per piece in both lists, which the merge reads
-                // side by side.
-                result.pieces.push(Vec::new());
-                result.unused.push(Vec::new());
+                result.pieces.push(PieceResult::default());
                 continue;
             };
             if entered != Some(mi) {
@@ -255,8 +258,10 @@ impl CheckShare<'_> {
                     }
                 }
             }
-            result.pieces.push(std::mem::take(&mut cx.diags));
-            result.unused.push(std::mem::take(&mut cx.part_unused));
+            result.pieces.push(PieceResult {
+                diags: std::mem::take(&mut cx.diags),
+                unused: std::mem::take(&mut cx.part_unused),
+            });
         }
         result.used = std::mem::take(&mut cx.used);
         result
@@ -271,26 +276,23 @@ pub fn merge_unit_check(task: &Task, unit: usize, results: Vec<ShareResult>) -> 
     };
     let mut cx = Cx::new(task, unit, u);
     let mut found = Vec::new();
-    let mut unused = Vec::new();
     for r in results {
         cx.used.extend(r.used);
         found.extend(r.pieces);
-        unused.extend(r.unused);
     }
     decls::check_file_wide(&mut cx);
     let pieces = pieces(&cx);
     let mut found = found.into_iter();
-    let mut unused = unused.into_iter();
     for (mi, module, _) in cx.modules() {
         cx.enter_module(mi, module);
         let mut parts_unused = Vec::new();
         for (piece, _) in pieces.iter().filter(|(p, _)| p.module() == mi) {
-            cx.diags.extend(found.next().unwrap_or_default());
-            let piece_unused = unused.next().unwrap_or_default();
+            let result = found.next().unwrap_or_default();
+            cx.diags.extend(result.diags);
             if let Piece::Routine(_, _, part, parts) = piece
                 && *parts > 1
             {
-                parts_unused.push(piece_unused);
+                parts_unused.push(result.unused);
                 if part + 1 == *parts {
                     cx.diags
                         .extend(decls::merge_unused(std::mem::take(&mut parts_unused)));
