@@ -551,11 +551,10 @@ pub(super) fn check_routine_part<'t>(
     cx.scope_changed();
 
     // One walk over the routine's children (long generated routines make
-    // each walk costly): the items of its body, and its named children for
-    // the labels.
+    // each walk costly): the items of its body, its handlers, its labels.
     let RoutineChildren {
         body,
-        named,
+        labels,
         handlers,
     } = match children {
         Some(c) => c.clone(),
@@ -609,7 +608,7 @@ pub(super) fn check_routine_part<'t>(
         }
         h.finish()
     };
-    stmts::collect_labels(cx, node, named);
+    stmts::collect_labels(cx, labels);
     // The routine's own findings are the first part's.
     if part > 0 {
         cx.diags.truncate(first_report);
@@ -685,8 +684,8 @@ pub(crate) fn merge_unused(parts: Vec<Vec<Diagnostic>>) -> Vec<Diagnostic> {
 pub(super) struct RoutineChildren<'t> {
     /// In field `body`.
     body: Vec<Node<'t>>,
-    /// Every named child.
-    named: Vec<Node<'t>>,
+    /// The labels of the routine ([`stmts::find_labels`]).
+    labels: Vec<stmts::Label>,
     /// The first child in fields `backward`, `error` and `undo`.
     handlers: [Option<Node<'t>>; 3],
 }
@@ -698,24 +697,27 @@ pub(super) fn all_routine_children<'t>(
     unit: &'t crate::task::Unit,
     node: Node<'t>,
 ) -> RoutineChildren<'t> {
-    let mut children = routine_children(node);
+    let (mut children, mut named) = routine_children(node);
     if let Some(rest) = unit.routine_rest(node) {
-        let later = routine_children(rest).body;
+        let later = routine_children(rest).0.body;
         children.body.extend(later.iter().copied());
-        children.named.extend(later);
+        named.extend(later);
     }
+    children.labels = stmts::find_labels(&unit.text, node, named);
     children
 }
 
-fn routine_children(node: Node<'_>) -> RoutineChildren<'_> {
+/// A routine's children without its labels, and its named children.
+fn routine_children(node: Node<'_>) -> (RoutineChildren<'_>, Vec<Node<'_>>) {
     use crate::syntax_util::field_id;
     let body_id = field_id("body");
     let handler_ids = [field_id("backward"), field_id("error"), field_id("undo")];
     let mut out = RoutineChildren {
         body: Vec::new(),
-        named: Vec::new(),
+        labels: Vec::new(),
         handlers: [None; 3],
     };
+    let mut named = Vec::new();
     let mut cursor = node.walk();
     if cursor.goto_first_child() {
         loop {
@@ -731,14 +733,14 @@ fn routine_children(node: Node<'_>) -> RoutineChildren<'_> {
                 }
             }
             if child.is_named() {
-                out.named.push(child);
+                named.push(child);
             }
             if !cursor.goto_next_sibling() {
                 break;
             }
         }
     }
-    out
+    (out, named)
 }
 
 /// A routine's data or parameter that hides a module or task name, or (for

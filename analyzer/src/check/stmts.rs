@@ -12,13 +12,18 @@ use crate::rules;
 use crate::syntax_util::{field, fields, kind as kind_of};
 use crate::ty::Ty;
 
-/// Collects the labels of the routine being checked, with the statement
-/// list that holds each; `named` are the routine's named children.
-pub(super) fn collect_labels<'t>(cx: &mut Cx<'_>, routine: Node<'t>, named: Vec<Node<'t>>) {
+/// A label of a routine: its name, the name's range, and the statement list
+/// that holds it.
+pub(super) type Label = (String, Range<usize>, BlockKey);
+
+/// The labels of a routine, in source order; `named` are the routine's
+/// named children. Reads only the syntax: a long routine checked in parts
+/// finds them once for all its parts.
+pub(super) fn find_labels(source: &str, routine: Node<'_>, named: Vec<Node<'_>>) -> Vec<Label> {
     // A label is `name:`; a routine without a `:` other than in `:=` or in a
     // comment has none (a cheap look at the text spares the walk of long
     // generated routines).
-    let text = cx.text.get(routine.byte_range()).unwrap_or_default();
+    let text = source.get(routine.byte_range()).unwrap_or_default();
     let mut from = 0;
     let has_colon = loop {
         match text.get(from..).and_then(|t| t.find(':')) {
@@ -34,7 +39,7 @@ pub(super) fn collect_labels<'t>(cx: &mut Cx<'_>, routine: Node<'t>, named: Vec<
         }
     };
     if !has_colon {
-        return;
+        return Vec::new();
     }
     let mut stack = vec![(routine, Some(named))];
     let mut found = Vec::new();
@@ -49,7 +54,7 @@ pub(super) fn collect_labels<'t>(cx: &mut Cx<'_>, routine: Node<'t>, named: Vec<
             if kind == "label" {
                 if let Some(name) = field(child, "name") {
                     found.push((
-                        cx.node_text(name).to_owned(),
+                        crate::syntax_util::text_of(name, source).to_owned(),
                         name.byte_range(),
                         block_key(node),
                     ));
@@ -63,6 +68,12 @@ pub(super) fn collect_labels<'t>(cx: &mut Cx<'_>, routine: Node<'t>, named: Vec<
         }
     }
     found.sort_by_key(|(_, r, _)| r.start);
+    found
+}
+
+/// Records the labels of the routine being checked ([`find_labels`]) and
+/// reports those declared twice.
+pub(super) fn collect_labels(cx: &mut Cx<'_>, found: Vec<Label>) {
     let mut dups = Vec::new();
     if let Some(r) = &mut cx.routine {
         for (name, range, list) in found {
