@@ -63,6 +63,18 @@ const KNOWN_BROKEN: &[(&str, &str)] = &[
         "BossyMr__intellij-rapid/src/main/resources/codeStyle/preview/WRAPPING_AND_BRACES_TEMPLATE.mod",
         "formatter preview text: a declaration without its `;`",
     ),
+    (
+        "dkaynarc__tmc/src/cluster/Tmc/Robotics/bin/Debug/modFiles/PlaceTablet.mod",
+        "a template: `%MagazineHover%` lines are replaced by other modules' text before loading",
+    ),
+    (
+        "dkaynarc__tmc/src/cluster/Tmc/Robotics/bin/Debug/modFiles/SortChip.mod",
+        "a template: `%XCoord%` in a target and `%MagazineHover%` lines are filled in before loading",
+    ),
+    (
+        "dkaynarc__tmc/src/cluster/Tmc/Robotics/mod/SorterSortChip.mod",
+        "a template: `%XCoord%` in a target and `%MagazineHover%` lines are filled in before loading",
+    ),
 ];
 
 /// `.pgf` program files are XML unless they hold RAPID text.
