@@ -368,14 +368,20 @@ impl<'a> Types<'a> {
         }
     }
 
+    /// May a value of this type stand where a number is read? Unknown types
+    /// (unresolved type names included) may stand anywhere.
     pub fn is_num_like(&self, ty: &Ty) -> bool {
-        ty.is_unknown() || self.is_numeric(ty) || self.is_signal(ty)
+        ty.is_unknown() || !self.is_known(ty) || self.is_numeric(ty) || self.is_signal(ty)
     }
 
+    /// May a value of this type stand where a bool is read?
     pub fn is_bool(&self, ty: &Ty) -> bool {
         match ty {
-            Ty::Named(name) => self.info(name).boolean,
-            _ => ty.is_unknown() || self.base(ty).is("bool"),
+            Ty::Named(name) => {
+                let info = self.info(name);
+                info.boolean || !info.exists
+            }
+            _ => ty.is_unknown() || !self.is_known(ty) || self.base(ty).is("bool"),
         }
     }
 

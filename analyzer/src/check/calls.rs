@@ -506,7 +506,7 @@ fn check_value<'t>(cx: &mut Cx<'t>, p: &SigParam, v: Node<'t>) {
         );
         return;
     }
-    if actual.is_unknown() || matches!(p.ty, Ty::Unknown) {
+    if !cx.types.is_known(&actual) || matches!(p.ty, Ty::Unknown) {
         return;
     }
     // `anytype` parameters take any type; an array of any rank (Dim's

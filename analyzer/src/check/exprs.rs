@@ -355,7 +355,7 @@ fn unary<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Ty {
         .map(|o| crate::syntax_util::kind(o))
         .unwrap_or_default();
     let ty = expr(cx, operand, None);
-    if ty.is_unknown() {
+    if !cx.types.is_known(&ty) {
         return if op == "not" { Ty::bool() } else { Ty::Unknown };
     }
     let base = cx.types.base(&ty);
@@ -416,19 +416,18 @@ fn binary<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Ty {
     };
     let t = &cx.types;
     let (lb, rb) = (t.base(&lt), t.base(&rt));
-    let unknown = lt.is_unknown() || rt.is_unknown();
+    // Unknown types (unresolved names, unresolved type names) are
+    // compatible with everything: one mistake, one finding.
+    let unknown = !t.is_known(&lt) || !t.is_known(&rt);
     let num = |x: &Ty| t.is_num_like(x);
     let dnum = lb.is("dnum") || rb.is("dnum");
     let numeric = if dnum { Ty::named("dnum") } else { Ty::num() };
     let result = match op {
         "or" | "xor" | "and" => (t.is_bool(&lt) && t.is_bool(&rt)).then(Ty::bool),
-        "=" | "<>" => {
-            if lt.dims() > 0 || rt.dims() > 0 {
-                None
-            } else {
-                (unknown || t.assignable(&lt, &rt) || t.assignable(&rt, &lt)).then(Ty::bool)
-            }
-        }
+        // Values of one type compare, arrays too (same element type and
+        // number of dimensions: `stReact = ["Ready", "Ready", "Ready"]` for a
+        // `string{3}` is loaded by real controllers).
+        "=" | "<>" => (unknown || t.assignable(&lt, &rt) || t.assignable(&rt, &lt)).then(Ty::bool),
         "<" | ">" | "<=" | ">=" => (num(&lt) && num(&rt)).then(Ty::bool),
         "+" if unknown => Some(known_side(&lt, &rt, t)),
         "+" if num(&lt) && num(&rt) => Some(numeric),
@@ -496,10 +495,14 @@ fn binary<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Ty {
     }
 }
 
-/// An aggregate operand, typed as the other operand when that is a record.
+/// An aggregate operand, typed as the other operand when that is a record
+/// or an array (as an assignment's target types its value).
 fn aggregate_operand<'t>(cx: &mut Cx<'t>, node: Node<'t>, other: &Ty) -> Ty {
     let ty = cx.types.value_type(other);
-    if other.dims() == 0 && cx.types.components(&ty).is_some() {
+    if other.dims() > 0 && cx.types.is_known(other) {
+        aggregate(cx, node, other, &[]);
+        other.clone()
+    } else if other.dims() == 0 && cx.types.components(&ty).is_some() {
         aggregate(cx, node, &ty, &[]);
         ty
     } else {
@@ -542,13 +545,12 @@ fn operand<'t>(cx: &mut Cx<'t>, node: Node<'t>, other: Node<'t>, comparison: boo
     expr(cx, node, None)
 }
 
-/// Is this expression a computed real number (for the float-equality lint)?
+/// Is this expression a computed real number (for the float-equality
+/// lint): a division or a real-valued function somewhere in it? A literal
+/// such as `-112.5` is not computed: comparing a value with it is how real
+/// programs test a taught or configured value.
 fn is_real(cx: &Cx<'_>, node: Node<'_>) -> bool {
     match crate::syntax_util::kind(node) {
-        "number" => cx
-            .node_text(node)
-            .parse::<f64>()
-            .is_ok_and(|v| v.fract() != 0.0),
         "binary_expression" => {
             field(node, "operator").is_some_and(|o| crate::syntax_util::kind(o) == "/")
                 || field(node, "left").is_some_and(|l| is_real(cx, l))

@@ -396,7 +396,7 @@ fn return_statement<'t>(cx: &mut Cx<'t>, s: Node<'t>) {
 fn connect<'t>(cx: &mut Cx<'t>, s: Node<'t>) {
     if let Some(target) = field(s, "interrupt") {
         let (ty, place) = exprs::place_or_value(cx, target);
-        if !ty.is_unknown() && !ty.is("intnum") {
+        if cx.types.is_known(&ty) && !ty.is("intnum") {
             cx.report(
                 &rules::connect_target::RULE,
                 target.byte_range(),
