@@ -9,6 +9,7 @@ pub mod diagnostic;
 pub mod format;
 pub mod ide;
 pub mod items;
+pub mod layout;
 pub mod lower;
 pub mod names;
 pub mod rules;

@@ -13,6 +13,7 @@ use tree_sitter::{Node, Tree};
 
 use crate::diagnostic::Diagnostic;
 use crate::items::{DataDecl, FileItems, Module, RecordDecl, RoutineDecl, Scope, Storage};
+use crate::layout::Grouping;
 use crate::names::{NameMap, fold};
 use crate::split_parse::PartKind;
 use crate::ty::{Types, UserType};
@@ -276,38 +277,7 @@ fn unreachable_tree(path: String, _text: String) -> Unit {
     panic!("tree-sitter returned no tree for an empty text ({path})")
 }
 
-/// The key of the task a file belongs to, from its path.
-pub fn task_key(path: &str) -> String {
-    let normal = path.replace('\\', "/");
-    let parts: Vec<&str> = normal.split('/').collect();
-    for i in (0..parts.len().saturating_sub(1)).rev() {
-        let p = parts[i];
-        if p.len() > 4
-            && p[..4].eq_ignore_ascii_case("task")
-            && p[4..].bytes().all(|b| b.is_ascii_digit())
-            && i > 0
-            && parts[i - 1].eq_ignore_ascii_case("rapid")
-        {
-            return parts[..=i].join("/");
-        }
-    }
-    match normal.rsplit_once('/') {
-        Some((dir, _)) => dir.to_owned(),
-        None => String::new(),
-    }
-}
-
-/// The controller a task belongs to: for the key of a backup's
-/// `RAPID/TASKn` folder ([`task_key`]), the key up to and including
-/// `RAPID/`; `None` for any other task.
-pub fn controller_of(key: &str) -> Option<&str> {
-    let (parent, last) = key.rsplit_once('/')?;
-    let is_task = last.len() > 4
-        && last[..4].eq_ignore_ascii_case("task")
-        && last[4..].bytes().all(|b| b.is_ascii_digit());
-    let rapid = parent.rsplit('/').next()?;
-    (is_task && rapid.eq_ignore_ascii_case("rapid")).then(|| &key[..=parent.len()])
-}
+pub use crate::layout::{controller_of, task_key};
 
 /// A system-global persistent declared in another task of the same
 /// controller (see [`Task::shared`]).
@@ -446,6 +416,28 @@ pub struct Task {
     pub shared: Arc<SharedMap>,
     /// Memo of "did you mean" suggestions among the globals, by folded name.
     pub(crate) close_names: std::sync::Mutex<HashMap<String, Option<(usize, String)>>>,
+    /// How the modules were grouped (set by the workspace).
+    pub grouping: Grouping,
+    /// A view made for one unit (its index): the task as that unit sees it,
+    /// without the modules that cannot be loaded with it ([`Task::excluded`]).
+    /// `None` for a whole group.
+    pub owner: Option<usize>,
+    /// In a view, the modules of the group left out because they clash
+    /// with the owner (another version of it): each with its file and its
+    /// module names and their ranges.
+    pub excluded: Vec<Excluded>,
+    /// In a whole group, the units that clash with others, with the units
+    /// each clashes with: they are checked in views of their own, not in
+    /// this task.
+    pub clashing: HashMap<usize, Vec<usize>>,
+}
+
+/// A module file that a view of a task leaves out.
+#[derive(Clone, Debug)]
+pub struct Excluded {
+    pub path: String,
+    /// The names of its modules, as declared, with their name ranges.
+    pub modules: Vec<(String, Range<usize>)>,
 }
 
 impl Task {
@@ -488,14 +480,37 @@ impl Task {
             constants,
             shared: Arc::default(),
             close_names: Default::default(),
+            grouping: Grouping::Folder,
+            owner: None,
+            excluded: Vec::new(),
+            clashing: Default::default(),
         }
     }
 
-    /// Is this task a controller backup's `RAPID/TASKn` folder (so its
-    /// modules are certainly loaded together), rather than a plain folder?
+    /// Is this task a task folder of a controller backup (so its modules
+    /// were loaded together by a controller)?
     pub fn is_backup(&self) -> bool {
-        let key = self.key.to_ascii_lowercase();
-        key.contains("rapid/task") || key.starts_with("task")
+        self.grouping == Grouping::Backup
+    }
+
+    /// Are the modules known to be loaded together (a backup's task, or a
+    /// `.pgf` program), rather than guessed from a shared folder?
+    pub fn is_certain(&self) -> bool {
+        self.grouping != Grouping::Folder
+    }
+
+    /// Is the unit at `idx` checked in this task (rather than in a view of
+    /// its own, or in the group)?
+    pub fn owns(&self, idx: usize) -> bool {
+        match self.owner {
+            Some(owner) => owner == idx,
+            None => !self.clashing.contains_key(&idx),
+        }
+    }
+
+    /// The units checked in this task ([`Task::owns`]), with their indexes.
+    pub fn own_units(&self) -> impl Iterator<Item = (usize, &Arc<Unit>)> {
+        self.units.iter().enumerate().filter(|(i, _)| self.owns(*i))
     }
 
     pub fn module(&self, r: ItemRef) -> Option<&Module> {
@@ -699,18 +714,6 @@ fn option_value(entry: &str, option: &str) -> Option<String> {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn tasks_follow_the_backup_layout() {
-        assert_eq!(task_key("b/RAPID/TASK1/PROGMOD/Main.mod"), "b/RAPID/TASK1");
-        assert_eq!(task_key("b/RAPID/TASK2/SYSMOD/user.sys"), "b/RAPID/TASK2");
-        assert_eq!(task_key("proj/src/Main.mod"), "proj/src");
-        assert_eq!(task_key("Main.mod"), "");
-        assert_eq!(
-            task_key(r"c:\b\RAPID\TASK1\PROGMOD\a.mod"),
-            "c:/b/RAPID/TASK1"
-        );
-    }
 
     #[test]
     fn signals_come_from_the_signal_section() {

@@ -1,6 +1,6 @@
 //! How `rapid check` groups files into tasks: `.pgf` program files, RAPID
-//! text in a `.pgf`, controller backups, and the severity of a clash that
-//! only a guessed grouping produces.
+//! text in a `.pgf`, controller backups, and the versions of a program
+//! that a plain folder holds side by side.
 
 use std::path::Path;
 
@@ -21,13 +21,27 @@ const MAIN_A: &str = "MODULE A\n  PROC main()\n    TPWrite \"a\";\n  ENDPROC\nEN
 const MAIN_B: &str = "MODULE B\n  PROC main()\n    TPWrite \"b\";\n  ENDPROC\nENDMODULE\n";
 
 #[test]
-fn a_plain_folder_is_one_task_and_its_clashes_are_warnings() {
+fn modules_of_a_plain_folder_that_clash_are_versions_checked_apart() {
     let dir = scratch("plain");
-    write(&dir, &[("A.mod", MAIN_A), ("B.mod", MAIN_B)]);
+    // A and B both declare `main`: two versions of a program. Each is
+    // checked with the rest of the folder (Common), never with the other.
+    let a = MAIN_A.replace("TPWrite \"a\";", "TPWrite \"a\";\n    helper;");
+    let b = MAIN_B.replace(
+        "TPWrite \"b\";",
+        "TPWrite \"b\";\n    helper;\n    onlyInA;",
+    );
+    let common = "MODULE Common\n  PROC helper()\n  ENDPROC\nENDMODULE\n";
+    let a = a.replace("ENDMODULE", "  PROC onlyInA()\n  ENDPROC\nENDMODULE");
+    write(
+        &dir,
+        &[("A.mod", &a), ("B.mod", &b), ("Common.mod", common)],
+    );
     let (code, out) = check(&dir);
     assert_eq!(code, Some(0), "{out}");
-    assert_eq!(out.matches("warning[E107]").count(), 2, "{out}");
-    assert!(!out.contains("error["), "{out}");
+    assert!(!out.contains("E107"), "{out}");
+    // B cannot see A's routine: they are never loaded together.
+    assert_eq!(out.matches("warning[W101]").count(), 1, "{out}");
+    assert!(out.contains("B.mod:5:5: warning[W101]"), "{out}");
 }
 
 #[test]

@@ -90,9 +90,9 @@ fn parse_and_analyze(bencher: Bencher<'_, '_>) {
     };
     bencher.bench(|| {
         let mut ws = workspace(corpus);
-        ws.tasks()
+        ws.checks()
             .iter()
-            .flat_map(|t| t.units.iter().map(|u| diagnostics_of(t, u).len()))
+            .map(|(t, u)| diagnostics_of(t, u).len())
             .sum::<usize>()
     });
 }
@@ -104,11 +104,11 @@ fn analyze_only(bencher: Bencher<'_, '_>) {
         return;
     };
     let mut ws = workspace(corpus);
-    let tasks = ws.tasks();
+    let checks = ws.checks();
     bencher.bench(|| {
-        tasks
+        checks
             .iter()
-            .flat_map(|t| t.units.iter().map(|u| diagnostics_of(t, u).len()))
+            .map(|(t, u)| diagnostics_of(t, u).len())
             .sum::<usize>()
     });
 }

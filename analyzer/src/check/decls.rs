@@ -9,7 +9,7 @@ use tree_sitter::Node;
 use super::{Cx, RoutineCx, Used, decl_ty, exprs, stmts};
 use crate::diagnostic::{Diagnostic, Edit, Fix};
 use crate::items::{self, DataDecl, Module, RoutineDecl, RoutineKind, Storage};
-use crate::names::{NameMap, fold};
+use crate::names::{NameMap, fold, same};
 use crate::rules;
 use crate::syntax_util::{field, fields};
 use crate::task::{Item, ItemRef, module_items};
@@ -207,6 +207,41 @@ fn check_module_names(cx: &mut Cx<'_>, module: &Module) {
     check_name_length(cx, &module.name, module.name_range.clone());
     check_duplicates_in_module(cx, module);
     check_ambiguous_globals(cx, module);
+    check_duplicate_module(cx, module);
+}
+
+/// Another file of the task (left out of this view of it) declares the
+/// same module: reported in the later file, once.
+fn check_duplicate_module(cx: &mut Cx<'_>, module: &Module) {
+    if !cx.task.is_certain() {
+        return;
+    }
+    let first = cx.task.excluded.iter().find_map(|e| {
+        let (_, range) = e.modules.iter().find(|(n, _)| same(n, &module.name))?;
+        (e.path < cx.unit.path).then(|| (e.path.clone(), range.clone()))
+    });
+    let Some((path, range)) = first else {
+        return;
+    };
+    let file = path
+        .rsplit(['/', '\\'])
+        .next()
+        .unwrap_or_default()
+        .to_owned();
+    let d = Diagnostic::new(
+        &rules::duplicate_module::RULE,
+        module.name_range.clone(),
+        format!(
+            "module {} is also declared in {file}: a task loads only one of them",
+            module.name
+        ),
+    )
+    .with_related(crate::diagnostic::Related {
+        file: Some(path),
+        range,
+        message: format!("module {} declared here too", module.name),
+    });
+    cx.report_with(d);
 }
 
 /// Checks the module's data declarations `run` (indexes into its data).
@@ -369,7 +404,7 @@ fn check_ambiguous_globals(cx: &mut Cx<'_>, module: &Module) {
             if let Some(rel) = cx.related_item(other, format!("also declared in {other_module}")) {
                 d = d.with_related(rel);
             }
-            if !cx.task.is_backup() {
+            if !cx.task.is_certain() {
                 // A plain folder may hold alternative programs that are never
                 // loaded together: the grouping is a guess, so only warn.
                 d.severity = crate::diagnostic::Severity::Warning;

@@ -7,14 +7,19 @@
 //! its task (the declarations other modules see) changes, so typing inside a
 //! routine re-checks only that file.
 
+mod alternatives;
+mod home;
+#[cfg(test)]
+mod tests;
+
 use std::collections::{BTreeMap, HashMap, HashSet};
 use std::sync::Arc;
 
 use crate::check::StmtCache;
 use crate::diagnostic::Diagnostic;
+use crate::layout::{Grouping, locate};
 use crate::task::{
     Config, SharedMap, Signals, Task, Unit, controller_of, parse_config, shared_persistents,
-    task_key,
 };
 
 #[derive(Default)]
@@ -23,6 +28,15 @@ pub struct Workspace {
     /// What each configuration file declares, by the file's path.
     configs: BTreeMap<String, Config>,
     tasks: HashMap<String, Arc<Task>>,
+    /// Views of a task for its units that clash with others, by the task's
+    /// key and the unit's path (see [`alternatives`]).
+    views: HashMap<String, HashMap<String, Arc<Task>>>,
+    /// Modules of a backup's `HOME/` that a task of the backup loads by
+    /// name, and so belong to it: the module's path to the task's key.
+    adopted: HashMap<String, String>,
+    /// The module files that each unit of a backup's task names in its
+    /// strings (for `Load` and `StartLoad`), by the unit's path.
+    loads: HashMap<String, Vec<String>>,
     /// The shared persistents of each controller (backup), by the
     /// controller's key ([`controller_of`]), with their hash.
     controllers: HashMap<String, (Arc<SharedMap>, u64)>,
@@ -76,20 +90,41 @@ impl Workspace {
                 self.listed.entry(m.clone()).or_insert_with(|| pgf.clone());
             }
         }
+        self.forget_all_tasks();
+    }
+
+    /// Drops every cached task (their grouping or configuration changed).
+    fn forget_all_tasks(&mut self) {
         self.tasks.clear();
+        self.views.clear();
         self.members.clear();
     }
 
+    /// Drops the cached task `key` and its views; returns the task.
+    fn forget_task(&mut self, key: &str) -> Option<Arc<Task>> {
+        self.views.remove(key);
+        self.tasks.remove(key)
+    }
+
     /// The key of the task a file belongs to: its program's, when a `.pgf`
-    /// lists it, else [`task_key`].
+    /// lists it, the task's of a backup that loads it from `HOME/`, else
+    /// its place's ([`crate::layout::task_key`]).
     pub fn task_key(&self, path: &str) -> String {
-        let key = task_key(path);
-        if self.programs.is_empty() || is_backup_key(&key) {
-            return key;
+        self.locate(path).0
+    }
+
+    /// [`Workspace::task_key`], and how the task's modules are grouped.
+    fn locate(&self, path: &str) -> (String, Grouping) {
+        if let Some(key) = self.adopted.get(path) {
+            return (key.clone(), Grouping::Backup);
+        }
+        let (key, grouping) = locate(path);
+        if self.programs.is_empty() || grouping == Grouping::Backup {
+            return (key, grouping);
         }
         let folded = normalize(path);
         if let Some(pgf) = self.listed.get(&folded) {
-            return pgf.clone();
+            return (pgf.clone(), Grouping::Program);
         }
         if folded.ends_with(".sys") || folded.ends_with(".sysx") {
             let dir = folded.rsplit_once('/').map_or("", |(d, _)| d);
@@ -98,10 +133,10 @@ impl Workspace {
                 .keys()
                 .find(|p| normalize(p).rsplit_once('/').map_or("", |(d, _)| d) == dir)
             {
-                return pgf.clone();
+                return (pgf.clone(), Grouping::Program);
             }
         }
-        key
+        (key, grouping)
     }
 
     /// Adds or replaces a file, parsing it from scratch.
@@ -111,10 +146,11 @@ impl Workspace {
 
     /// Adds or replaces a file parsed by the caller (e.g. incrementally).
     pub fn set_unit(&mut self, unit: Unit) {
+        let loads_changed = self.note_loads(&unit.path, Some(&unit.text));
         let key = self.task_key(&unit.path);
         let unit = Arc::new(unit);
         // The same file replaced: the task keeps its members.
-        let mut members = match self.tasks.remove(&key) {
+        let mut members = match self.forget_task(&key) {
             Some(task) => Some(task.units.clone()),
             None => self.members.remove(&key),
         };
@@ -134,15 +170,21 @@ impl Workspace {
         if old.is_none_or(|o| o.interface != interface || o.constants != constants) {
             self.forget_sibling_tasks(&key);
         }
+        if loads_changed {
+            self.refresh_adoption();
+        }
     }
 
     pub fn remove_file(&mut self, path: &str) {
         if self.units.remove(path).is_some() {
             let key = self.task_key(path);
-            self.tasks.remove(&key);
+            self.forget_task(&key);
             self.members.remove(&key);
             self.forget_sibling_tasks(&key);
             self.checked.remove(path);
+            if self.note_loads(path, None) {
+                self.refresh_adoption();
+            }
         }
     }
 
@@ -151,6 +193,7 @@ impl Workspace {
     fn forget_sibling_tasks(&mut self, key: &str) {
         if let Some(controller) = controller_of(key) {
             self.tasks.retain(|k, _| !k.starts_with(controller));
+            self.views.retain(|k, _| !k.starts_with(controller));
             self.controllers.remove(controller);
         }
     }
@@ -161,14 +204,12 @@ impl Workspace {
     /// the backup for `SYSPAR/*.cfg`).
     pub fn set_config(&mut self, path: &str, text: &str) {
         self.configs.insert(path.to_owned(), parse_config(text));
-        self.tasks.clear();
-        self.members.clear();
+        self.forget_all_tasks();
     }
 
     pub fn remove_config(&mut self, path: &str) {
         if self.configs.remove(path).is_some() {
-            self.tasks.clear();
-            self.members.clear();
+            self.forget_all_tasks();
         }
     }
 
@@ -180,8 +221,35 @@ impl Workspace {
         self.units.keys().map(String::as_str)
     }
 
-    /// The task a file belongs to (built on demand and cached).
+    /// The task a file is checked in (built on demand and cached): its
+    /// group, or the view of its group made for it when it clashes with
+    /// other modules of the group ([`alternatives`]).
     pub fn task_of(&mut self, path: &str) -> Arc<Task> {
+        let group = self.group_of(path);
+        let Some(idx) = group.units.iter().position(|u| u.path == path) else {
+            return group;
+        };
+        let Some(left_out) = group.clashing.get(&idx) else {
+            return group;
+        };
+        if let Some(view) = self.views.get(&group.key).and_then(|v| v.get(path)) {
+            return view.clone();
+        }
+        let (units, owner, excluded) = alternatives::view_units(&group.units, idx, left_out);
+        let mut view = self.make_task(group.key.clone(), units, group.grouping);
+        view.owner = Some(owner);
+        view.excluded = excluded;
+        let view = Arc::new(view);
+        self.views
+            .entry(group.key.clone())
+            .or_default()
+            .insert(path.to_owned(), view.clone());
+        view
+    }
+
+    /// The whole group of modules a file belongs to (built on demand and
+    /// cached).
+    fn group_of(&mut self, path: &str) -> Arc<Task> {
         let key = self.task_key(path);
         if let Some(t) = self.tasks.get(&key) {
             return t.clone();
@@ -198,16 +266,30 @@ impl Workspace {
         self.build_task(key, units)
     }
 
-    /// Builds and caches the task `key` of `units`.
+    /// Builds and caches the group task `key` of `units`.
     fn build_task(&mut self, key: String, units: Vec<Arc<Unit>>) -> Arc<Task> {
+        let grouping = units
+            .first()
+            .map_or(Grouping::Folder, |u| self.locate(&u.path).1);
+        let mut task = self.make_task(key.clone(), units, grouping);
+        task.clashing = alternatives::clashes(&task.units, grouping);
+        let task = Arc::new(task);
+        self.tasks.insert(key, task.clone());
+        task
+    }
+
+    /// A task of `units` under `key`, with its configuration and the
+    /// persistents its controller shares.
+    fn make_task(&mut self, key: String, units: Vec<Arc<Unit>>, grouping: Grouping) -> Task {
         let (signals, mecunits) = self.config_for(&key);
         // Results depend on the configuration too: the interface covers it,
         // so cached file and statement results are dropped when it changes.
         let config = config_hash(signals.as_ref(), &mecunits);
         let mut task = Task::new(key.clone(), units, signals);
+        task.grouping = grouping;
         task.mecunits = mecunits;
         task.interface ^= config;
-        if let Some(controller) = controller_of(&key) {
+        if let Some(controller) = controller_of(&key).filter(|_| grouping == Grouping::Backup) {
             let (shared, hash) = match self.controllers.get(controller) {
                 Some(c) => c.clone(),
                 None => {
@@ -221,12 +303,29 @@ impl Workspace {
             };
             task.set_shared(shared, hash);
         }
-        let task = Arc::new(task);
-        self.tasks.insert(key, task.clone());
         task
     }
 
-    /// Every task of the workspace.
+    /// Every unit of the workspace with the task it is checked in (its
+    /// group, or its own view of the group: [`Workspace::task_of`]), in
+    /// the order of the groups.
+    pub fn checks(&mut self) -> Vec<(Arc<Task>, Arc<Unit>)> {
+        let mut out = Vec::with_capacity(self.units.len());
+        for group in self.tasks() {
+            for (i, unit) in group.units.iter().enumerate() {
+                if group.owns(i) {
+                    out.push((group.clone(), unit.clone()));
+                } else {
+                    out.push((self.task_of(&unit.path), unit.clone()));
+                }
+            }
+        }
+        out
+    }
+
+    /// Every task of the workspace: each group of modules (a unit that
+    /// clashes with others of its group is checked in a view of its own,
+    /// see [`Workspace::checks`]).
     pub fn tasks(&mut self) -> Vec<Arc<Task>> {
         // Group the units once (asking `task_of` per task would compute
         // every unit's key again for each task).
@@ -351,12 +450,6 @@ fn under(path: &str, folder: &str) -> bool {
             .all(|(a, b)| a == b || (a == b'\\' && b == b'/'))
 }
 
-/// Is this the key of a backup's `RAPID/TASKn` folder?
-fn is_backup_key(key: &str) -> bool {
-    let lower = key.to_ascii_lowercase();
-    lower.contains("rapid/task")
-}
-
 /// A path with `/` separators, `.` and `..` resolved, folded.
 fn normalize(path: &str) -> String {
     let mut parts: Vec<&str> = Vec::new();
@@ -411,157 +504,5 @@ fn config_root(path: &str) -> &str {
         Some((parent, last)) if last.eq_ignore_ascii_case("syspar") => parent,
         None if dir.eq_ignore_ascii_case("syspar") => "",
         _ => dir,
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn configuration_applies_below_its_root() {
-        assert_eq!(config_root("b/SYSPAR/EIO.cfg"), "b");
-        assert_eq!(config_root("proj/EIO.cfg"), "proj");
-    }
-
-    #[test]
-    fn an_edit_in_one_routine_rechecks_only_its_changed_statements() {
-        let mut body = String::new();
-        for i in 0..200 {
-            body.push_str(&format!("    n := n + {i};\n    WaitTime 0.{i};\n"));
-        }
-        let text = format!(
-            "MODULE A\n  VAR num n;\n  PROC main()\n{body}  ENDPROC\n  PROC other()\n    n := 1;\n  ENDPROC\nENDMODULE\n"
-        );
-        let mut ws = Workspace::new();
-        ws.set_file("p/A.mod", text.clone());
-        ws.set_file(
-            "p/B.mod",
-            "MODULE B\n  PROC helper()\n  ENDPROC\nENDMODULE\n".into(),
-        );
-        assert!(ws.diagnostics("p/A.mod").is_empty());
-        let b = ws.diagnostics("p/B.mod");
-        // One character changed in one statement of main.
-        let edited = text.replacen("n := n + 7;", "n := n + 1000;", 1);
-        ws.set_file("p/A.mod", edited);
-        assert!(ws.diagnostics("p/A.mod").is_empty());
-        let cache = &ws.checked["p/A.mod"].statements;
-        assert_eq!(cache.reused(), 400, "every other statement is reused");
-        // The other module's result is not recomputed at all.
-        assert!(Arc::ptr_eq(&b, &ws.diagnostics("p/B.mod")));
-    }
-
-    /// Compound statements are cached whole unless a GOTO inside depends on
-    /// the routine's labels, which the cache key leaves out.
-    #[test]
-    fn a_goto_inside_a_compound_statement_follows_the_labels() {
-        let text = |label: &str| {
-            format!(
-                "MODULE A\n  VAR num n;\n  PROC main()\n    {label}:\n    n := 1;\n    IF n > 0 THEN\n      n := 2;\n      GOTO again;\n    ENDIF\n  ENDPROC\nENDMODULE\n"
-            )
-        };
-        let mut ws = Workspace::new();
-        ws.set_file("p/A.mod", text("again"));
-        assert!(ws.diagnostics("p/A.mod").is_empty());
-        ws.set_file("p/A.mod", text("other"));
-        let found = ws.diagnostics("p/A.mod");
-        assert!(
-            found.iter().any(|d| d.rule.name == "unknown-label"),
-            "{found:?}"
-        );
-        let unit = ws.unit("p/A.mod").cloned().expect("the file");
-        let task = ws.task_of("p/A.mod");
-        assert_eq!(*found, diagnostics_of(&task, &unit));
-    }
-
-    /// An edit elsewhere leaves a compound statement's result cached, and the
-    /// workspace rebuilds the task from its known members.
-    #[test]
-    fn compound_statements_are_reused_whole() {
-        let mut body = String::new();
-        for i in 0..50 {
-            body.push_str(&format!(
-                "    IF n > {i} THEN\n      n := {i};\n    ENDIF\n"
-            ));
-        }
-        let text = format!("MODULE A\n  VAR num n;\n  PROC main()\n{body}  ENDPROC\nENDMODULE\n");
-        let mut ws = Workspace::new();
-        ws.set_file("p/A.mod", text.clone());
-        ws.set_file("p/B.mod", "MODULE B\nENDMODULE\n".into());
-        assert!(ws.diagnostics("p/A.mod").is_empty());
-        ws.set_file("p/A.mod", text.replacen("n := 7;", "n := 8;", 1));
-        assert!(ws.members.contains_key("p"), "the task's members are kept");
-        assert!(ws.diagnostics("p/A.mod").is_empty());
-        assert_eq!(ws.task_of("p/A.mod").units.len(), 2);
-        // The 49 other IF statements, whole.
-        assert_eq!(ws.checked["p/A.mod"].statements.reused(), 49);
-    }
-
-    #[test]
-    fn a_persistent_changed_in_one_task_rechecks_the_other_tasks() {
-        let module = |ty: &str| format!("MODULE M\n  PERS {ty} shared := 0;\nENDMODULE\n");
-        let mut ws = Workspace::new();
-        ws.set_file("b/RAPID/TASK1/PROGMOD/M.mod", module("num"));
-        ws.set_file("b/RAPID/TASK2/PROGMOD/M.mod", module("num"));
-        assert!(ws.diagnostics("b/RAPID/TASK1/PROGMOD/M.mod").is_empty());
-        ws.set_file("b/RAPID/TASK2/PROGMOD/M.mod", module("dnum"));
-        let found = ws.diagnostics("b/RAPID/TASK1/PROGMOD/M.mod");
-        assert_eq!(found.len(), 1, "{found:?}");
-        assert_eq!(found[0].rule.name, "shared-persistent-mismatch");
-        let related = &found[0].related[0];
-        assert_eq!(related.file.as_deref(), Some("b/RAPID/TASK2/PROGMOD/M.mod"));
-        ws.remove_file("b/RAPID/TASK2/PROGMOD/M.mod");
-        assert!(ws.diagnostics("b/RAPID/TASK1/PROGMOD/M.mod").is_empty());
-    }
-
-    #[test]
-    fn a_configuration_change_rechecks_the_files_it_applies_to() {
-        let mut ws = Workspace::new();
-        ws.set_file(
-            "cell/M.mod",
-            "MODULE M\n  PROC main()\n    SetDO doGrip, 1;\n  ENDPROC\nENDMODULE\n".into(),
-        );
-        ws.set_config(
-            "cell/EIO.cfg",
-            "EIO_SIGNAL:\n  -Name \"doOther\" -SignalType \"DO\"\n",
-        );
-        let first = ws.diagnostics("cell/M.mod");
-        assert_eq!(first.len(), 1, "{first:?}");
-        assert_eq!(first[0].rule.name, "unresolved-name");
-        ws.set_config(
-            "cell/EIO.cfg",
-            "EIO_SIGNAL:\n  -Name \"doGrip\" -SignalType \"DO\"\n",
-        );
-        let again = ws.diagnostics("cell/M.mod");
-        assert!(again.is_empty(), "{again:?}");
-    }
-
-    #[test]
-    fn results_are_reused_until_the_task_interface_changes() {
-        let mut ws = Workspace::new();
-        ws.set_file(
-            "p/A.mod",
-            "MODULE A\n  PROC main()\n    helper;\n  ENDPROC\nENDMODULE\n".into(),
-        );
-        ws.set_file(
-            "p/B.mod",
-            "MODULE B\n  PROC helper()\n  ENDPROC\nENDMODULE\n".into(),
-        );
-        let first = ws.diagnostics("p/A.mod");
-        assert!(first.is_empty(), "{first:?}");
-        // An edit inside B's routine body keeps B's interface: A's result is reused.
-        ws.set_file(
-            "p/B.mod",
-            "MODULE B\n  PROC helper()\n    Stop;\n  ENDPROC\nENDMODULE\n".into(),
-        );
-        assert!(Arc::ptr_eq(&first, &ws.diagnostics("p/A.mod")));
-        // Renaming the routine changes the interface: A is checked again.
-        ws.set_file(
-            "p/B.mod",
-            "MODULE B\n  PROC helper2()\n  ENDPROC\nENDMODULE\n".into(),
-        );
-        let again = ws.diagnostics("p/A.mod");
-        assert_eq!(again.len(), 1, "{again:?}");
-        assert_eq!(again[0].rule.name, "unresolved-name");
     }
 }

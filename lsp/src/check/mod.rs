@@ -493,19 +493,14 @@ pub fn check_files(
     for unit in units.into_iter().flatten() {
         workspace.set_unit(unit);
     }
-    let tasks = workspace.tasks();
+    let tasks = workspace.checks();
     lap("extra paths, configuration and task indexes", &mut clock);
     // One job per checked file, largest first (a task may be one big
     // backup: its files are spread over the threads too).
     let mut jobs: Vec<(&Arc<rapid_analyzer::task::Task>, &Arc<Unit>)> = tasks
         .iter()
-        .filter(|task| checked_keys.contains(&task.key))
-        .flat_map(|task| {
-            task.units
-                .iter()
-                .filter(|u| checked_paths.contains(&u.path))
-                .map(move |u| (task, u))
-        })
+        .filter(|(task, u)| checked_keys.contains(&task.key) && checked_paths.contains(&u.path))
+        .map(|(task, u)| (task, u))
         .collect();
     jobs.sort_by(|a, b| {
         b.1.text

@@ -1,0 +1,231 @@
+//! Where a module file sits, and what that says about the task it belongs
+//! to: a controller backup's task folders, `.pgf` programs (in the
+//! workspace), or a plain folder.
+//!
+//! A backup (or a program saved from RobotStudio) keeps each task under
+//! `RAPID/`: `RAPID/TASK1/PROGMOD/Main.mod` (RobotWare 5 and 6),
+//! `RAPID/T_ROB1/...` (task names, with any folders below them), or, for a
+//! system with one task, `RAPID/PROGMOD/...`. Anywhere else the modules of
+//! one folder are taken to form one task, which is only a guess.
+
+/// How the modules of a task were grouped: this decides how sure the
+/// checker may be that they are loaded together.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Grouping {
+    /// A task folder of a controller backup's `RAPID/` folder: its modules
+    /// were loaded together by a real controller.
+    Backup,
+    /// The modules a `.pgf` program file lists.
+    Program,
+    /// The modules of one plain folder: maybe one program, maybe several
+    /// versions of one, maybe unrelated.
+    Folder,
+}
+
+/// The task a file belongs to by its place: the key (a folder path, `/`
+/// separated) and how it was found.
+pub fn locate(path: &str) -> (String, Grouping) {
+    let normal = path.replace('\\', "/");
+    let parts: Vec<&str> = normal.split('/').collect();
+    // Folders only (the last part is the file), innermost first.
+    let folders = parts.len().saturating_sub(1);
+    for i in (1..folders).rev() {
+        if !parts[i - 1].eq_ignore_ascii_case("rapid") {
+            continue;
+        }
+        let dir = parts[i];
+        if is_module_folder(dir) {
+            // `RAPID/PROGMOD/...`: the system's only task.
+            return (parts[..i].join("/"), Grouping::Backup);
+        }
+        let child_is_module_folder = i + 1 < folders && is_module_folder(parts[i + 1]);
+        if is_task_name(dir) || child_is_module_folder {
+            return (parts[..=i].join("/"), Grouping::Backup);
+        }
+    }
+    let key = match normal.rsplit_once('/') {
+        Some((dir, _)) => dir.to_owned(),
+        None => String::new(),
+    };
+    (key, Grouping::Folder)
+}
+
+/// The key of the task a file belongs to by its place ([`locate`]).
+pub fn task_key(path: &str) -> String {
+    locate(path).0
+}
+
+/// `PROGMOD` or `SYSMOD`, the folders a backup keeps a task's modules in.
+fn is_module_folder(name: &str) -> bool {
+    name.eq_ignore_ascii_case("progmod") || name.eq_ignore_ascii_case("sysmod")
+}
+
+/// A task folder's name as controllers write them: `TASK1` (RobotWare 5 and
+/// 6 number them) or a task name in the `T_ROB1` style.
+fn is_task_name(name: &str) -> bool {
+    let numbered = name
+        .get(..4)
+        .zip(name.get(4..))
+        .is_some_and(|(head, digits)| {
+            head.eq_ignore_ascii_case("task")
+                && !digits.is_empty()
+                && digits.bytes().all(|b| b.is_ascii_digit())
+        });
+    let named = name
+        .get(..2)
+        .is_some_and(|head| head.eq_ignore_ascii_case("t_") && name.len() > 2);
+    numbered || named
+}
+
+/// The controller a task of a backup belongs to: for a key that
+/// [`locate`] gives a task folder under `RAPID/`, the key up to and
+/// including `RAPID/`; `None` for any other key.
+pub fn controller_of(key: &str) -> Option<&str> {
+    let (parent, last) = key.rsplit_once('/')?;
+    let rapid = parent.rsplit('/').next()?;
+    (rapid.eq_ignore_ascii_case("rapid") && !is_module_folder(last)).then(|| &key[..=parent.len()])
+}
+
+/// The backup folder (the one holding `RAPID/`, `HOME/`, `SYSPAR/`) of a
+/// task key of a backup, or of a path inside a backup's `HOME/`.
+pub fn backup_root(path: &str) -> Option<&str> {
+    let lower = path.to_ascii_lowercase();
+    for marker in ["/rapid/", "/home/"] {
+        if let Some(at) = lower.rfind(marker) {
+            return path.get(..at);
+        }
+    }
+    for marker in ["/rapid", "/home"] {
+        if lower.ends_with(marker) {
+            return path.get(..path.len() - marker.len());
+        }
+    }
+    None
+}
+
+/// Is this file inside a `HOME/` folder (the controller's file area, from
+/// which programs load modules at run time)?
+pub fn in_home(path: &str) -> bool {
+    let normal = path.replace('\\', "/");
+    let mut parts: Vec<&str> = normal.split('/').collect();
+    parts.pop();
+    parts.iter().any(|p| p.eq_ignore_ascii_case("home"))
+}
+
+/// The file names (lowercase, without folders) of the modules a text names
+/// in string literals, as `Load`, `StartLoad` and their file paths do
+/// (`"HOME:/Parts/Part1.mod"`, `\File:="Part1.MOD"`).
+pub fn named_module_files(text: &str) -> Vec<String> {
+    const EXTENSIONS: [&str; 5] = [".mod", ".sys", ".modx", ".sysx", ".prg"];
+    let mut out = Vec::new();
+    let mut rest = text;
+    while let Some(open) = rest.find('"') {
+        let after = &rest[open + 1..];
+        let Some(close) = after.find(['"', '\n']) else {
+            break;
+        };
+        let literal = &after[..close];
+        let lower = literal.to_ascii_lowercase();
+        if EXTENSIONS.iter().any(|e| lower.ends_with(e)) {
+            let name = lower.rsplit(['/', '\\', ':']).next().unwrap_or_default();
+            if !name.is_empty() && !out.iter().any(|n: &String| n == name) {
+                out.push(name.to_owned());
+            }
+        }
+        rest = &after[(close + 1).min(after.len())..];
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn tasks_follow_the_backup_layout() {
+        let key = |p| locate(p);
+        assert_eq!(
+            key("b/RAPID/TASK1/PROGMOD/Main.mod"),
+            ("b/RAPID/TASK1".into(), Grouping::Backup)
+        );
+        assert_eq!(task_key("b/RAPID/TASK2/SYSMOD/user.sys"), "b/RAPID/TASK2");
+        assert_eq!(
+            key("b/RAPID/T_ROB1/TCSupport/TcDefine.sys"),
+            ("b/RAPID/T_ROB1".into(), Grouping::Backup)
+        );
+        assert_eq!(task_key("b/RAPID/T_ROB1/Main.mod"), "b/RAPID/T_ROB1");
+        assert_eq!(
+            task_key("b/RAPID/Robot1/PROGMOD/Main.mod"),
+            "b/RAPID/Robot1"
+        );
+        assert_eq!(
+            key("b/RAPID/PROGMOD/Main.mod"),
+            ("b/RAPID".into(), Grouping::Backup)
+        );
+        assert_eq!(
+            key("repo/RAPID/backup/RAPID/TASK3/PROGMOD/a.mod"),
+            ("repo/RAPID/backup/RAPID/TASK3".into(), Grouping::Backup)
+        );
+        assert_eq!(
+            key("proj/src/Main.mod"),
+            ("proj/src".into(), Grouping::Folder)
+        );
+        assert_eq!(
+            key("proj/RAPID/Main.mod"),
+            ("proj/RAPID".into(), Grouping::Folder)
+        );
+        assert_eq!(
+            key("b/HOME/T_ROB1/x.mod"),
+            ("b/HOME/T_ROB1".into(), Grouping::Folder)
+        );
+        assert_eq!(task_key("Main.mod"), "");
+        assert_eq!(
+            task_key(r"c:\b\RAPID\TASK1\PROGMOD\a.mod"),
+            "c:/b/RAPID/TASK1"
+        );
+    }
+
+    #[test]
+    fn folder_names_in_any_script_are_safe() {
+        assert_eq!(task_key("/home/josé/robot/Main.mod"), "/home/josé/robot");
+        assert_eq!(
+            task_key("/srv/ロボット/RAPID/タスク/Main.mod"),
+            "/srv/ロボット/RAPID/タスク"
+        );
+        assert_eq!(
+            task_key("/srv/é/RAPID/TASKé/PROGMOD/a.mod"),
+            "/srv/é/RAPID/TASKé"
+        );
+        assert_eq!(
+            controller_of("/srv/ロボット/RAPID/TASK1"),
+            Some("/srv/ロボット/RAPID/")
+        );
+        assert!(!is_task_name("tâsk1"));
+        assert!(!is_task_name("T_"));
+    }
+
+    #[test]
+    fn controllers_are_the_rapid_folder() {
+        assert_eq!(controller_of("b/RAPID/TASK1"), Some("b/RAPID/"));
+        assert_eq!(controller_of("b/RAPID/T_ROB2"), Some("b/RAPID/"));
+        assert_eq!(controller_of("proj/src"), None);
+        assert_eq!(controller_of("b/RAPID"), None);
+        assert_eq!(backup_root("b/RAPID/TASK1"), Some("b"));
+        assert_eq!(backup_root("b/HOME/Parts/p.mod"), Some("b"));
+        assert_eq!(backup_root("b/RAPID"), Some("b"));
+        assert_eq!(backup_root("proj/src"), None);
+    }
+
+    #[test]
+    fn loaded_module_files_are_found_in_strings() {
+        let text = "Load \\Dynamic, \"HOME:/Parts/Part1.mod\";\n\
+                    StartLoad diskhome \\File:=\"part2.MODX\", load1;\n\
+                    TPWrite \"not a file\";\n\
+                    s := \"a.mod\" + \"a.mod\";";
+        assert_eq!(
+            named_module_files(text),
+            ["part1.mod", "part2.modx", "a.mod"]
+        );
+        assert!(named_module_files("\"unterminated").is_empty());
+    }
+}

@@ -1,0 +1,148 @@
+use super::*;
+
+#[test]
+fn configuration_applies_below_its_root() {
+    assert_eq!(config_root("b/SYSPAR/EIO.cfg"), "b");
+    assert_eq!(config_root("proj/EIO.cfg"), "proj");
+}
+
+#[test]
+fn an_edit_in_one_routine_rechecks_only_its_changed_statements() {
+    let mut body = String::new();
+    for i in 0..200 {
+        body.push_str(&format!("    n := n + {i};\n    WaitTime 0.{i};\n"));
+    }
+    let text = format!(
+        "MODULE A\n  VAR num n;\n  PROC main()\n{body}  ENDPROC\n  PROC other()\n    n := 1;\n  ENDPROC\nENDMODULE\n"
+    );
+    let mut ws = Workspace::new();
+    ws.set_file("p/A.mod", text.clone());
+    ws.set_file(
+        "p/B.mod",
+        "MODULE B\n  PROC helper()\n  ENDPROC\nENDMODULE\n".into(),
+    );
+    assert!(ws.diagnostics("p/A.mod").is_empty());
+    let b = ws.diagnostics("p/B.mod");
+    // One character changed in one statement of main.
+    let edited = text.replacen("n := n + 7;", "n := n + 1000;", 1);
+    ws.set_file("p/A.mod", edited);
+    assert!(ws.diagnostics("p/A.mod").is_empty());
+    let cache = &ws.checked["p/A.mod"].statements;
+    assert_eq!(cache.reused(), 400, "every other statement is reused");
+    // The other module's result is not recomputed at all.
+    assert!(Arc::ptr_eq(&b, &ws.diagnostics("p/B.mod")));
+}
+
+/// Compound statements are cached whole unless a GOTO inside depends on
+/// the routine's labels, which the cache key leaves out.
+#[test]
+fn a_goto_inside_a_compound_statement_follows_the_labels() {
+    let text = |label: &str| {
+        format!(
+            "MODULE A\n  VAR num n;\n  PROC main()\n    {label}:\n    n := 1;\n    IF n > 0 THEN\n      n := 2;\n      GOTO again;\n    ENDIF\n  ENDPROC\nENDMODULE\n"
+        )
+    };
+    let mut ws = Workspace::new();
+    ws.set_file("p/A.mod", text("again"));
+    assert!(ws.diagnostics("p/A.mod").is_empty());
+    ws.set_file("p/A.mod", text("other"));
+    let found = ws.diagnostics("p/A.mod");
+    assert!(
+        found.iter().any(|d| d.rule.name == "unknown-label"),
+        "{found:?}"
+    );
+    let unit = ws.unit("p/A.mod").cloned().expect("the file");
+    let task = ws.task_of("p/A.mod");
+    assert_eq!(*found, diagnostics_of(&task, &unit));
+}
+
+/// An edit elsewhere leaves a compound statement's result cached, and the
+/// workspace rebuilds the task from its known members.
+#[test]
+fn compound_statements_are_reused_whole() {
+    let mut body = String::new();
+    for i in 0..50 {
+        body.push_str(&format!(
+            "    IF n > {i} THEN\n      n := {i};\n    ENDIF\n"
+        ));
+    }
+    let text = format!("MODULE A\n  VAR num n;\n  PROC main()\n{body}  ENDPROC\nENDMODULE\n");
+    let mut ws = Workspace::new();
+    ws.set_file("p/A.mod", text.clone());
+    ws.set_file("p/B.mod", "MODULE B\nENDMODULE\n".into());
+    assert!(ws.diagnostics("p/A.mod").is_empty());
+    ws.set_file("p/A.mod", text.replacen("n := 7;", "n := 8;", 1));
+    assert!(ws.members.contains_key("p"), "the task's members are kept");
+    assert!(ws.diagnostics("p/A.mod").is_empty());
+    assert_eq!(ws.task_of("p/A.mod").units.len(), 2);
+    // The 49 other IF statements, whole.
+    assert_eq!(ws.checked["p/A.mod"].statements.reused(), 49);
+}
+
+#[test]
+fn a_persistent_changed_in_one_task_rechecks_the_other_tasks() {
+    let module = |ty: &str| format!("MODULE M\n  PERS {ty} shared := 0;\nENDMODULE\n");
+    let mut ws = Workspace::new();
+    ws.set_file("b/RAPID/TASK1/PROGMOD/M.mod", module("num"));
+    ws.set_file("b/RAPID/TASK2/PROGMOD/M.mod", module("num"));
+    assert!(ws.diagnostics("b/RAPID/TASK1/PROGMOD/M.mod").is_empty());
+    ws.set_file("b/RAPID/TASK2/PROGMOD/M.mod", module("dnum"));
+    let found = ws.diagnostics("b/RAPID/TASK1/PROGMOD/M.mod");
+    assert_eq!(found.len(), 1, "{found:?}");
+    assert_eq!(found[0].rule.name, "shared-persistent-mismatch");
+    let related = &found[0].related[0];
+    assert_eq!(related.file.as_deref(), Some("b/RAPID/TASK2/PROGMOD/M.mod"));
+    ws.remove_file("b/RAPID/TASK2/PROGMOD/M.mod");
+    assert!(ws.diagnostics("b/RAPID/TASK1/PROGMOD/M.mod").is_empty());
+}
+
+#[test]
+fn a_configuration_change_rechecks_the_files_it_applies_to() {
+    let mut ws = Workspace::new();
+    ws.set_file(
+        "cell/M.mod",
+        "MODULE M\n  PROC main()\n    SetDO doGrip, 1;\n  ENDPROC\nENDMODULE\n".into(),
+    );
+    ws.set_config(
+        "cell/EIO.cfg",
+        "EIO_SIGNAL:\n  -Name \"doOther\" -SignalType \"DO\"\n",
+    );
+    let first = ws.diagnostics("cell/M.mod");
+    assert_eq!(first.len(), 1, "{first:?}");
+    assert_eq!(first[0].rule.name, "unresolved-name");
+    ws.set_config(
+        "cell/EIO.cfg",
+        "EIO_SIGNAL:\n  -Name \"doGrip\" -SignalType \"DO\"\n",
+    );
+    let again = ws.diagnostics("cell/M.mod");
+    assert!(again.is_empty(), "{again:?}");
+}
+
+#[test]
+fn results_are_reused_until_the_task_interface_changes() {
+    let mut ws = Workspace::new();
+    ws.set_file(
+        "p/A.mod",
+        "MODULE A\n  PROC main()\n    helper;\n  ENDPROC\nENDMODULE\n".into(),
+    );
+    ws.set_file(
+        "p/B.mod",
+        "MODULE B\n  PROC helper()\n  ENDPROC\nENDMODULE\n".into(),
+    );
+    let first = ws.diagnostics("p/A.mod");
+    assert!(first.is_empty(), "{first:?}");
+    // An edit inside B's routine body keeps B's interface: A's result is reused.
+    ws.set_file(
+        "p/B.mod",
+        "MODULE B\n  PROC helper()\n    Stop;\n  ENDPROC\nENDMODULE\n".into(),
+    );
+    assert!(Arc::ptr_eq(&first, &ws.diagnostics("p/A.mod")));
+    // Renaming the routine changes the interface: A is checked again.
+    ws.set_file(
+        "p/B.mod",
+        "MODULE B\n  PROC helper2()\n  ENDPROC\nENDMODULE\n".into(),
+    );
+    let again = ws.diagnostics("p/A.mod");
+    assert_eq!(again.len(), 1, "{again:?}");
+    assert_eq!(again[0].rule.name, "unresolved-name");
+}
