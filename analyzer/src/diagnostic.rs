@@ -53,6 +53,10 @@ pub struct Rule {
     pub name: &'static str,
     /// The severity unless configuration says otherwise.
     pub severity: Severity,
+    /// Whether the rule is on unless configuration says otherwise. Rules
+    /// off by default report style choices that real, working code often
+    /// makes; a project selects them explicitly.
+    pub default_on: bool,
     /// One line: what the rule reports.
     pub summary: &'static str,
     /// Markdown: what it checks, why it matters, an example.
@@ -75,15 +79,27 @@ macro_rules! declare_rule {
         $(#[doc = $doc:literal])+
         $vis:vis static $ident:ident = ($code:literal, $name:literal, $severity:ident);
     ) => {
+        $crate::declare_rule! {
+            $(#[doc = $doc])+
+            $vis static $ident = ($code, $name, $severity, on);
+        }
+    };
+    (
+        $(#[doc = $doc:literal])+
+        $vis:vis static $ident:ident = ($code:literal, $name:literal, $severity:ident, $default:ident);
+    ) => {
         $(#[doc = $doc])+
         $vis static $ident: $crate::diagnostic::Rule = $crate::diagnostic::Rule {
             code: $code,
             name: $name,
             severity: $crate::diagnostic::Severity::$severity,
+            default_on: $crate::declare_rule!(@on $default),
             summary: $crate::diagnostic::first_line(concat!($($doc, "\n"),+)),
             doc: concat!($($doc, "\n"),+),
         };
     };
+    (@on on) => { true };
+    (@on off) => { false };
 }
 
 /// The first non-empty line of a doc comment, trimmed (usable in consts).

@@ -188,14 +188,22 @@ fn run(fixture: &Fixture) -> (BTreeSet<Finding>, BTreeMap<Finding, String>) {
                 d.severity.as_str().to_owned(),
                 d.rule.name.to_owned(),
             );
-            rendered.insert(f.clone(), render(path, text, &index, d));
+            rendered.insert(f.clone(), render(path, text, &index, d, &fixture.files));
             found.insert(f);
         }
     }
     (found, rendered)
 }
 
-fn render(path: &str, text: &str, index: &LineIndex, d: &Diagnostic) -> String {
+/// A diagnostic as `file:line:col: severity[code name]: message`, with its
+/// fix and its related locations (in their own files, found in `files`).
+fn render(
+    path: &str,
+    text: &str,
+    index: &LineIndex,
+    d: &Diagnostic,
+    files: &[(String, String)],
+) -> String {
     let (line, col) = index.human(d.range.start, text);
     let mut s = format!(
         "{path}:{line}:{col}: {}[{} {}]: {}",
@@ -219,12 +227,12 @@ fn render(path: &str, text: &str, index: &LineIndex, d: &Diagnostic) -> String {
         }
     }
     for r in &d.related {
-        let (l, c) = index.human(r.range.start, text);
-        s.push_str(&format!(
-            "\n    {}:{l}:{c}: {}",
-            r.file.as_deref().unwrap_or(path),
-            r.message
-        ));
+        let file = r.file.as_deref().unwrap_or(path);
+        let (l, c) = match files.iter().find(|(p, _)| p == file) {
+            Some((_, other)) if file != path => LineIndex::new(other).human(r.range.start, other),
+            _ => index.human(r.range.start, text),
+        };
+        s.push_str(&format!("\n    {file}:{l}:{c}: {}", r.message));
     }
     s
 }
@@ -312,6 +320,8 @@ fn rendered_messages() {
         "missing-return/fail.mod",
         "unused-data/fail.mod",
         "ambiguous-global/fail",
+        "unresolved-name/fail_repeated.mod",
+        "duplicate-module/fail_backup",
     ] {
         let fixture = all
             .iter()

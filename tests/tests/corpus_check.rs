@@ -30,22 +30,46 @@ const TRUE_DEFECTS: &[(&str, &str, usize, &str)] = &[
         "the same file: the procedure `name2` repeats the name again",
     ),
     (
-        "parser/IfStatements.mod",
-        "incomplete-code",
-        4,
-        "a parser test file with an unfilled `<SMT>` placeholder",
-    ),
-    (
-        "Wizard/Wizard.mod",
-        "incomplete-code",
-        3,
-        "a wizard-generated routine whose body is still the `<SMT>` placeholder",
-    ),
-    (
         "Robot-Piano/PointModule.mod",
         "aggregate-arity",
         20,
         "an array declared with 14 rows initialised with 10",
+    ),
+    (
+        "Keen1949__ABB_ROBOT_Socket/RAPID/TASK1/PROGMOD/Socket_Commands.mod",
+        "argument-count",
+        34,
+        "`Assemble` is declared with six string parameters and called with five",
+    ),
+    (
+        "Keen1949__ABB_ROBOT_Socket/RAPID/TASK1/PROGMOD/Socket_Commands.mod",
+        "argument-count",
+        39,
+        "`GoSnap(string, string)` called with no arguments",
+    ),
+    (
+        "Keen1949__ABB_ROBOT_Socket/RAPID/TASK1/PROGMOD/Socket_Commands.mod",
+        "argument-count",
+        47,
+        "`CaliCam` takes three strings and is called with one",
+    ),
+    (
+        "Keen1949__ABB_ROBOT_Socket/RAPID/TASK1/PROGMOD/Socket_Commands.mod",
+        "argument-count",
+        49,
+        "`TranCam(string, string)` called with no arguments",
+    ),
+    (
+        "liamjosephnolan__DiceRobot/MainModule.mod",
+        "call-kind-mismatch",
+        26,
+        "the function `reset_dice` called as a procedure (its other uses assign its result)",
+    ),
+    (
+        "ravenorb__abb-robot-welder/RAPID/PROGMOD/MainModule.mod",
+        "argument-count",
+        12,
+        "`TPWrite` given three strings separated by commas; it takes one string",
     ),
 ];
 
@@ -205,5 +229,19 @@ fn corpus_errors_are_true_defects() {
         untriaged.is_empty(),
         "error-level findings not triaged as true defects:\n{}",
         untriaged.join("\n")
+    );
+    let stale: Vec<String> = TRUE_DEFECTS
+        .iter()
+        .filter(|(p, r, l, _)| {
+            !true_defects
+                .iter()
+                .any(|row| row.contains(&format!("{p}:{l}`")) && row.contains(&format!(" {r}: ")))
+        })
+        .map(|(p, r, l, _)| format!("{p}:{l} {r}"))
+        .collect();
+    assert!(
+        stale.is_empty(),
+        "triaged true defects that are no longer reported (remove them):\n{}",
+        stale.join("\n")
     );
 }

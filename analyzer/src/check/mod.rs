@@ -49,7 +49,7 @@ pub fn check_unit_cached(
     cx.cache.reused = 0;
     cx.cache_enabled = true;
     cx.check();
-    let diags = finish(std::mem::take(&mut cx.diags));
+    let diags = finish(std::mem::take(&mut cx.diags), &u.text);
     let mut cache = std::mem::take(&mut cx.cache);
     // Keep only what this check met (as if the cache were made afresh).
     let generation = cache.generation;
@@ -301,19 +301,56 @@ pub fn merge_unit_check(task: &Task, unit: usize, results: Vec<ShareResult>) -> 
         }
         decls::check_unused_locals_of_module(&mut cx, module);
     }
-    finish(std::mem::take(&mut cx.diags))
+    finish(std::mem::take(&mut cx.diags), &u.text)
 }
 
-/// Sorts a unit's findings by position and keeps the first report of each
-/// unconfigured signal.
-fn finish(mut diags: Vec<Diagnostic>) -> Vec<Diagnostic> {
+/// Sorts a unit's findings by position and reports each name once: an
+/// unresolved name at its first use, with the other uses as related
+/// locations; an unconfigured signal or an option routine at its first use.
+fn finish(mut diags: Vec<Diagnostic>, text: &str) -> Vec<Diagnostic> {
+    use crate::rules::{option_routine, unconfigured_signal, unresolved_name};
     diags.sort_by_key(|d| (d.range.start, d.range.end));
-    // An unconfigured signal is reported once per name: at its first use.
-    let mut seen = HashSet::new();
-    diags.retain(|d| {
-        !std::ptr::eq(d.rule, &crate::rules::unconfigured_signal::RULE)
-            || seen.insert(d.message.clone())
-    });
+    let once = |d: &Diagnostic| {
+        [
+            &unresolved_name::RULE,
+            &unconfigured_signal::RULE,
+            &option_routine::RULE,
+        ]
+        .iter()
+        .any(|r| std::ptr::eq(d.rule, *r))
+    };
+    // The first diagnostic of each (rule, name), by index into `diags`.
+    let mut first: HashMap<(&'static str, String), usize> = HashMap::new();
+    let mut keep = vec![true; diags.len()];
+    let mut uses: Vec<(usize, Range<usize>)> = Vec::new();
+    for (i, d) in diags.iter().enumerate() {
+        if !once(d) {
+            continue;
+        }
+        let name = fold(text.get(d.range.clone()).unwrap_or_default());
+        match first.entry((d.rule.code, name)) {
+            std::collections::hash_map::Entry::Occupied(e) => {
+                keep[i] = false;
+                if std::ptr::eq(d.rule, &unresolved_name::RULE) {
+                    uses.push((*e.get(), d.range.clone()));
+                }
+            }
+            std::collections::hash_map::Entry::Vacant(e) => {
+                e.insert(i);
+            }
+        }
+    }
+    for (at, range) in uses {
+        if let Some(d) = diags.get_mut(at) {
+            d.related.push(Related {
+                file: None,
+                range,
+                message: "used here too".to_owned(),
+            });
+        }
+    }
+    let mut keep = keep.into_iter();
+    diags.retain(|_| keep.next().unwrap_or(true));
     diags
 }
 
@@ -396,9 +433,11 @@ pub(crate) enum DataSym<'t> {
 }
 
 impl DataSym<'_> {
+    /// The symbol's type; a type name the task does not know is unknown
+    /// (reported once where it is declared), so nothing else is reported
+    /// against it.
     pub(crate) fn ty(&self, types: &Types<'_>) -> Ty {
-        let _ = types;
-        match self {
+        let ty = match self {
             DataSym::Param(p) => {
                 p.ty.as_ref()
                     .map_or(Ty::Unknown, |t| Ty::named(&t.name))
@@ -409,7 +448,8 @@ impl DataSym<'_> {
             DataSym::ForVar => Ty::num(),
             DataSym::Builtin(d) => Ty::named(&d.ty),
             DataSym::Signal(ty) => Ty::named(ty),
-        }
+        };
+        if types.is_known(&ty) { ty } else { Ty::Unknown }
     }
 }
 

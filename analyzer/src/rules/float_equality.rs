@@ -2,10 +2,11 @@ crate::declare_rule! {
     /// `=` or `<>` comparing the result of a floating-point computation.
     ///
     /// ### What it checks
-    /// Comparing with `=` or `<>` where an operand is computed with `/`, a
-    /// trigonometric or other real-valued function, or is a literal with a
-    /// fraction. `num` is a single-precision value, so such results are rarely
-    /// exactly equal.
+    /// Comparing with `=` or `<>` where an operand is computed with `/` or a
+    /// trigonometric or other real-valued function. `num` is a single-precision
+    /// value, so such results are rarely exactly equal. Comparing with a literal
+    /// (`x = -112.5`) is not reported: the value compared may be taught or
+    /// configured, and literals are exact.
     ///
     /// ### Why
     /// The comparison can be false when the values are equal for every practical

@@ -8,7 +8,8 @@ crate::declare_rule! {
     ///
     /// ### Why
     /// The controller loads such a module but stops with an error when execution
-    /// reaches the placeholder.
+    /// reaches the placeholder: a warning, since the module loads and runs until
+    /// then.
     ///
     /// ### Example
     /// ```rapid
@@ -16,5 +17,5 @@ crate::declare_rule! {
     ///     <SMT>
     /// ENDPROC
     /// ```
-    pub static RULE = ("E412", "incomplete-code", Error);
+    pub static RULE = ("E412", "incomplete-code", Warning);
 }

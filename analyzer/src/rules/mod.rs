@@ -19,6 +19,7 @@ pub mod constant_error;
 pub mod declaration_after_statement;
 pub mod duplicate_argument;
 pub mod duplicate_declaration;
+pub mod duplicate_module;
 pub mod equals_for_assignment;
 pub mod float_equality;
 pub mod goto_into_block;
@@ -105,6 +106,7 @@ pub static RULES: &[&Rule] = &[
     &unreachable_code::RULE,
     &shadowed_name::RULE,
     &float_equality::RULE,
+    &duplicate_module::RULE,
 ];
 
 /// The rule with this code or name (any case).
@@ -120,25 +122,34 @@ pub fn reference_page() -> String {
         "# Diagnostics reference\n\n\
          <!-- Generated from analyzer/src/rules by `RAPID_BLESS=1 cargo test -p rapid-analyzer reference_page`. Do not edit. -->\n\n\
          Every diagnostic of `rapid check` and `rapid lsp` has a stable code and name. \
-         Codes are never reused.\n\n\
-         | code | name | default severity | summary |\n| --- | --- | --- | --- |\n",
+         Codes are never reused.\n\n",
+    );
+    out.push_str(DEFAULT_SET);
+    out.push_str(
+        "\n| code | name | default severity | on by default | summary |\n| --- | --- | --- | --- | --- |\n",
     );
     for rule in RULES {
         out.push_str(&format!(
-            "| [{code}](#{anchor}) | `{name}` | {sev} | {summary} |\n",
+            "| [{code}](#{anchor}) | `{name}` | {sev} | {on} | {summary} |\n",
             code = rule.code,
             anchor = anchor(rule),
             name = rule.name,
             sev = rule.severity.as_str(),
+            on = if rule.default_on { "yes" } else { "no" },
             summary = rule.summary,
         ));
     }
     for rule in RULES {
         out.push_str(&format!(
-            "\n## {code} {name}\n\nDefault severity: {sev}.\n\n",
+            "\n## {code} {name}\n\nDefault severity: {sev}{on}.\n\n",
             code = rule.code,
             name = rule.name,
             sev = rule.severity.as_str(),
+            on = if rule.default_on {
+                ""
+            } else {
+                "; off unless selected (`[lint] select` or `--select`)"
+            },
         ));
         for line in rule.doc.lines() {
             out.push_str(line.strip_prefix(' ').unwrap_or(line));
@@ -147,6 +158,24 @@ pub fn reference_page() -> String {
     }
     out
 }
+
+/// What the reference page says of the default set of rules.
+const DEFAULT_SET: &str = "## The default set\n\n\
+A finding is an **error** only when a controller would refuse to load the module, or \
+the code cannot work at all. Code from a controller backup was loaded by a controller, so \
+an error there is presumed to be our mistake until the language rules show otherwise; \
+where the manuals are silent, the reading that accepts loaded code is chosen.\n\n\
+A **warning** is a probable mistake that the controller accepts and that shows only at \
+run time (a function that can end without `RETURN`, an unfilled `<SMT>` placeholder, \
+unreachable code, a name that nothing in a partial folder declares). Warnings are meant to \
+stay switched on in CI: each name that cannot be resolved is reported once per file, with \
+its other uses as related locations.\n\n\
+**Info** notes say what cannot be checked (an option routine, a signal without the \
+controller's `EIO.cfg`), once per name per file. **Hints** (unused data, parameters and \
+`LOCAL` routines) are shown faded in editors; they are not problems of the program.\n\n\
+Rules that flag style choices real programs make on purpose are off unless a project \
+selects them: `shadowed-name` (a routine's own `i` or `pTemp` hiding a global of the same \
+name is common and harmless).\n";
 
 /// The anchor of a rule's section in the reference page.
 pub fn anchor(rule: &Rule) -> String {
@@ -187,6 +216,12 @@ mod tests {
                 assert!(rule.doc.contains(part), "{} lacks '{part}'", rule.code);
             }
             assert!(!rule.summary.is_empty() && !rule.summary.starts_with('#'));
+            // The summary is the doc's first line: a whole sentence.
+            assert!(
+                rule.summary.ends_with('.'),
+                "{}: the first doc line is the summary and must be a whole sentence",
+                rule.code
+            );
         }
     }
 

@@ -7,7 +7,8 @@ crate::declare_rule! {
     ///
     /// ### Why
     /// Reading the routine, one easily takes the name for the global or built-in
-    /// one.
+    /// one. Real programs do this on purpose all the time (a routine's own `i` or
+    /// `pTemp`), so the rule is off unless a project selects it.
     ///
     /// ### Example
     /// ```rapid
@@ -15,5 +16,5 @@ crate::declare_rule! {
     ///     VAR tooldata tool0;     ! hides the built-in tool0
     /// ENDPROC
     /// ```
-    pub static RULE = ("W205", "shadowed-name", Warning);
+    pub static RULE = ("W205", "shadowed-name", Warning, off);
 }

@@ -1,6 +1,8 @@
 crate::declare_rule! {
-    /// A persistent that another task of the same controller declares with
-    /// a different type or different dimensions.
+    /// A persistent that another task of the controller declares differently.
+    ///
+    /// Another task of the same controller declares the persistent with a
+    /// different type or different dimensions.
     ///
     /// ### What it checks
     /// A system-global `PERS` (without `TASK` or `LOCAL`) is one datum for

@@ -7,7 +7,8 @@ crate::declare_rule! {
     ///
     /// ### Why
     /// Unused data is often left over from an edit, or a sign that the wrong name
-    /// was used elsewhere.
+    /// was used elsewhere. The program works as it is, so this is a hint: editors
+    /// show the declaration faded rather than listing a problem.
     ///
     /// ### Example
     /// ```rapid
@@ -16,5 +17,5 @@ crate::declare_rule! {
     ///     TPWrite "Hello";
     /// ENDPROC
     /// ```
-    pub static RULE = ("W201", "unused-data", Warning);
+    pub static RULE = ("W201", "unused-data", Hint);
 }

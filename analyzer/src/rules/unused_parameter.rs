@@ -6,7 +6,9 @@ crate::declare_rule! {
     /// parameter tested with `Present` counts as used).
     ///
     /// ### Why
-    /// Callers pass a value that has no effect, which is often a mistake.
+    /// Callers pass a value that has no effect, which is sometimes a mistake, but
+    /// routines often keep a parameter for a common calling convention: this is
+    /// a hint, shown faded in editors.
     ///
     /// ### Example
     /// ```rapid
@@ -14,5 +16,5 @@ crate::declare_rule! {
     ///     MoveL p, v100, fine, tool0;    ! layer is unused
     /// ENDPROC
     /// ```
-    pub static RULE = ("W202", "unused-parameter", Warning);
+    pub static RULE = ("W202", "unused-parameter", Hint);
 }

@@ -6,7 +6,9 @@ crate::declare_rule! {
     /// nothing there calls it (or connects it, for a trap), it is dead code.
     ///
     /// ### Why
-    /// Dead code is misleading to read and still has to load.
+    /// Dead code is misleading to read and still has to load. A routine named in
+    /// a late-bound call (`%"name"%`, `CallByVar`) counts as called. This is a
+    /// hint, shown faded in editors.
     ///
     /// ### Example
     /// ```rapid
@@ -14,5 +16,5 @@ crate::declare_rule! {
     ///     TPWrite "never called";
     /// ENDPROC
     /// ```
-    pub static RULE = ("W203", "unused-routine", Warning);
+    pub static RULE = ("W203", "unused-routine", Hint);
 }

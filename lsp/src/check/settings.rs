@@ -35,9 +35,13 @@ struct RuleSet {
 }
 
 impl RuleSet {
+    /// The rules on by default, at their default severity.
     fn all() -> RuleSet {
         RuleSet {
-            severity: RULES.iter().map(|r| Some(r.severity)).collect(),
+            severity: RULES
+                .iter()
+                .map(|r| r.default_on.then_some(r.severity))
+                .collect(),
             configured: vec![false; RULES.len()],
         }
     }
@@ -311,6 +315,27 @@ mod tests {
     }
 
     #[test]
+    fn rules_off_by_default_are_on_when_selected() {
+        let default = settings("", Overrides::default());
+        assert_eq!(severity(&default, "/proj/a.mod", "shadowed-name"), None);
+        assert_eq!(severity(&default, "/proj/a.mod", "W101"), Some("warning"));
+        let chosen = settings("[lint]\nselect = [\"E\", \"W\"]\n", Overrides::default());
+        assert_eq!(
+            severity(&chosen, "/proj/a.mod", "shadowed-name"),
+            Some("warning")
+        );
+        let cli = settings(
+            "",
+            Overrides {
+                select: vec!["W205".into()],
+                ..Overrides::default()
+            },
+        );
+        assert_eq!(severity(&cli, "/proj/a.mod", "W205"), Some("warning"));
+        assert_eq!(severity(&cli, "/proj/a.mod", "W101"), None);
+    }
+
+    #[test]
     fn select_ignore_and_severity() {
         let s = settings(
             "[lint]\nselect = [\"E\", \"W201\"]\nignore = [\"E001\"]\n[lint.severity]\nunused-data = \"error\"\n",
@@ -333,7 +358,7 @@ mod tests {
                 exclude: vec![],
             },
         );
-        assert_eq!(severity(&s, "/proj/a.mod", "W201"), Some("warning"));
+        assert_eq!(severity(&s, "/proj/a.mod", "W201"), Some("hint"));
         assert_eq!(severity(&s, "/proj/legacy/x/a.mod", "W201"), None);
         assert_eq!(severity(&s, "/proj/a.mod", "W101"), None);
         assert_eq!(severity(&s, "/proj/a.mod", "E001"), None);

@@ -267,7 +267,7 @@ mod tests {
         assert_eq!(
             severities(&s, &["W201", "W101", "W202", "E001", "E002"]),
             [
-                Some(Severity::Warning),
+                Some(Severity::Hint),
                 None,
                 Some(Severity::Hint),
                 Some(Severity::Warning),
