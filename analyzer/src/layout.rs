@@ -117,22 +117,15 @@ pub fn in_home(path: &str) -> bool {
 /// (`"HOME:/Parts/Part1.mod"`, `\File:="Part1.MOD"`).
 pub fn named_module_files(text: &str) -> Vec<String> {
     const EXTENSIONS: [&str; 5] = [".mod", ".sys", ".modx", ".sysx", ".prg"];
-    let mut out = Vec::new();
-    let mut rest = text;
-    while let Some(open) = rest.find('"') {
-        let after = &rest[open + 1..];
-        let Some(close) = after.find(['"', '\n']) else {
-            break;
-        };
-        let literal = &after[..close];
+    let mut out: Vec<String> = Vec::new();
+    for (_, literal) in crate::lex::string_literals(text) {
         let lower = literal.to_ascii_lowercase();
         if EXTENSIONS.iter().any(|e| lower.ends_with(e)) {
             let name = lower.rsplit(['/', '\\', ':']).next().unwrap_or_default();
-            if !name.is_empty() && !out.iter().any(|n: &String| n == name) {
+            if !name.is_empty() && !out.iter().any(|n| n == name) {
                 out.push(name.to_owned());
             }
         }
-        rest = &after[(close + 1).min(after.len())..];
     }
     out
 }
@@ -221,7 +214,7 @@ mod tests {
         let text = "Load \\Dynamic, \"HOME:/Parts/Part1.mod\";\n\
                     StartLoad diskhome \\File:=\"part2.MODX\", load1;\n\
                     TPWrite \"not a file\";\n\
-                    s := \"a.mod\" + \"a.mod\";";
+                    s := \"a.mod\" + \"a.mod\"; ! \"b.mod\"";
         assert_eq!(
             named_module_files(text),
             ["part1.mod", "part2.modx", "a.mod"]

@@ -10,6 +10,7 @@ pub mod format;
 pub mod ide;
 pub mod items;
 pub mod layout;
+pub mod lex;
 pub mod lower;
 pub mod names;
 pub mod rules;

@@ -321,6 +321,7 @@ fn rendered_messages() {
         "unused-data/fail.mod",
         "ambiguous-global/fail",
         "unresolved-name/fail_repeated.mod",
+        "unresolved-name/fail_suggestions.mod",
         "duplicate-module/fail_backup",
     ] {
         let fixture = all

@@ -922,12 +922,26 @@ fn check_unused_in_routine(cx: &mut Cx<'_>, decl: &RoutineDecl) {
     cx.used.retain(|u| !matches!(u, Used::RoutineSym(_)));
 }
 
+/// Is `name` used by name in a string of its module: late binding
+/// (`%"name"%`, `%"path_" + n%`), `CallByVar "path_", n`, `GetDataVal
+/// "name"`? A string that is the name, or a prefix of it of three
+/// characters or more followed by what a computed suffix gives (digits or
+/// any name characters), counts.
+fn named_in_strings(name: &str, strings: &[String]) -> bool {
+    let name = fold(name);
+    strings.iter().any(|s| {
+        *s == name || (s.len() >= 3 && name.len() > s.len() && name.starts_with(s.as_str()))
+    })
+}
+
 pub(super) fn check_unused_locals_of_module(cx: &mut Cx<'_>, module: &Module) {
     let Some(mi) = cx.module.map(|(i, _)| i) else {
         return;
     };
     let mut found = Vec::new();
     let mut data_found = Vec::new();
+    // The module's string literals, read when a LOCAL item seems unused.
+    let mut strings: Option<Vec<String>> = None;
     for (name, local, item) in module_items(module) {
         if !local {
             continue;
@@ -938,6 +952,17 @@ pub(super) fn check_unused_locals_of_module(cx: &mut Cx<'_>, module: &Module) {
             item,
         };
         if cx.used.contains(&Used::Item(r)) {
+            continue;
+        }
+        let strings = strings.get_or_insert_with(|| {
+            let text = cx.text.get(module.range.clone()).unwrap_or_default();
+            crate::lex::string_literals(text)
+                .into_iter()
+                .map(|(_, s)| fold(s.trim()))
+                .filter(|s| !s.is_empty())
+                .collect()
+        });
+        if named_in_strings(name, strings) {
             continue;
         }
         let Some((_, range)) = cx.task.item_name(r) else {

@@ -506,9 +506,9 @@ pub(crate) struct Cx<'t> {
     statement_context: Option<StatementContext>,
     /// "Did you mean" answers by folded name, for the current scope (cleared
     /// by [`Cx::scope_changed`]): an unresolved name tends to recur.
-    close_memo: HashMap<String, Option<String>>,
-    /// The module part of "did you mean", by module and folded name.
-    module_close_memo: HashMap<(usize, String), Option<(usize, String)>>,
+    close_memo: HashMap<(Kind, String), Option<String>>,
+    /// The module part of "did you mean", by module, kind and folded name.
+    module_close_memo: HashMap<(usize, Kind, String), Option<(usize, String)>>,
     /// The first position of each unconfigured signal's diagnostic that a
     /// reused statement result added, by message.
     reused_signals: HashMap<String, (usize, usize)>,
@@ -948,12 +948,13 @@ impl<'t> Cx<'t> {
             }
         }
         let mut message = format!("no {what} named `{name}` is declared in this task or built in");
-        let key = fold(name);
-        let close = match self.close_memo.get(&key) {
+        let kind = Kind::of(what);
+        let memo_key = (kind, fold(name));
+        let close = match self.close_memo.get(&memo_key) {
             Some(close) => close.clone(),
             None => {
-                let close = self.close_match(name);
-                self.close_memo.insert(key, close.clone());
+                let close = self.close_match(name, kind);
+                self.close_memo.insert(memo_key, close.clone());
                 close
             }
         };
@@ -965,40 +966,52 @@ impl<'t> Cx<'t> {
         self.report(&crate::rules::unresolved_name::RULE, range, message);
     }
 
-    /// A visible name within a small edit distance of `name`: the first
-    /// closest of the routine's data and parameters, then the module's data
-    /// and routines, then the task's globals.
-    fn close_match(&mut self, name: &str) -> Option<String> {
+    /// A visible name of the same kind within a small edit distance of
+    /// `name`: the first closest of the routine's data and parameters, then
+    /// the module's, then the task's globals. A suggestion of another kind
+    /// (a data type for a variable) would mislead more than help.
+    fn close_match(&mut self, name: &str, kind: Kind) -> Option<String> {
         let key = fold(name);
         let limit = if key.len() <= 4 { 1 } else { 2 };
-        let mut best = self.routine.as_ref().and_then(|r| {
-            let locals = r.locals.values().map(|d| d.name.as_str());
-            closest(
-                &key,
-                limit,
-                locals.chain(r.params.values().map(|p| p.name.as_str())),
-            )
-        });
+        let mut best = None;
+        if kind == Kind::Data {
+            best = self.routine.as_ref().and_then(|r| {
+                let locals = r.locals.values().map(|d| d.name.as_str());
+                closest(
+                    &key,
+                    limit,
+                    locals.chain(r.params.values().map(|p| p.name.as_str())),
+                )
+            });
+        }
         // The module's part does not depend on the routine: remembered per
         // module (a module may declare thousands of data).
         if let Some((mi, m)) = self.module {
-            let found = match self.module_close_memo.get(&(mi, key.clone())) {
+            let memo_key = (mi, kind, key.clone());
+            let found = match self.module_close_memo.get(&memo_key) {
                 Some(found) => found.clone(),
                 None => {
-                    let data = m.data.iter().map(|d| d.name.as_str());
-                    let found = closest(
-                        &key,
-                        limit,
-                        data.chain(m.routines.iter().map(|r| r.name.as_str())),
-                    );
-                    self.module_close_memo
-                        .insert((mi, key.clone()), found.clone());
+                    let found = match kind {
+                        Kind::Data => closest(&key, limit, m.data.iter().map(|d| d.name.as_str())),
+                        Kind::Routine => {
+                            closest(&key, limit, m.routines.iter().map(|r| r.name.as_str()))
+                        }
+                        Kind::Type => closest(
+                            &key,
+                            limit,
+                            m.records
+                                .iter()
+                                .map(|r| r.name.as_str())
+                                .chain(m.aliases.iter().map(|a| a.name.as_str())),
+                        ),
+                    };
+                    self.module_close_memo.insert(memo_key, found.clone());
                     found
                 }
             };
             keep_nearer(&mut best, found);
         }
-        keep_nearer(&mut best, close_global(self.task, &key, limit));
+        keep_nearer(&mut best, close_global(self.task, &key, limit, kind));
         best.map(|(_, n)| n)
     }
 
@@ -1110,12 +1123,13 @@ fn keep_nearer(best: &mut Option<(usize, String)>, other: Option<(usize, String)
     }
 }
 
-fn close_global(task: &Task, key: &str, limit: usize) -> Option<(usize, String)> {
+fn close_global(task: &Task, key: &str, limit: usize, kind: Kind) -> Option<(usize, String)> {
     let mut memo = task
         .close_names
         .lock()
         .unwrap_or_else(std::sync::PoisonError::into_inner);
-    if let Some(found) = memo.get(key) {
+    let memo_key = format!("{}{key}", kind.prefix());
+    if let Some(found) = memo.get(&memo_key) {
         return found.clone();
     }
     let mut best: Option<(usize, String)> = None;
@@ -1123,17 +1137,57 @@ fn close_global(task: &Task, key: &str, limit: usize) -> Option<(usize, String)>
         if folded.len().abs_diff(key.len()) > limit {
             continue;
         }
+        let Some(r) = refs.iter().find(|r| kind.matches(r.item)) else {
+            continue;
+        };
         let d = edit_distance(key, folded);
         if d > 0
             && d <= limit
             && best.as_ref().is_none_or(|(bd, _)| d < *bd)
-            && let Some((n, _)) = refs.first().and_then(|r| task.item_name(*r))
+            && let Some((n, _)) = task.item_name(*r)
         {
             best = Some((d, n.to_owned()));
         }
     }
-    memo.insert(key.to_owned(), best.clone());
+    memo.insert(memo_key, best.clone());
     best
+}
+
+/// What kind of name a "did you mean" looks for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub(crate) enum Kind {
+    Data,
+    Routine,
+    Type,
+}
+
+impl Kind {
+    /// From the word [`Cx::unresolved`] is given: "data", "routine", "data type".
+    fn of(what: &str) -> Kind {
+        match what {
+            "routine" => Kind::Routine,
+            "data type" => Kind::Type,
+            _ => Kind::Data,
+        }
+    }
+
+    fn matches(self, item: Item) -> bool {
+        matches!(
+            (self, item),
+            (Kind::Data, Item::Data(_))
+                | (Kind::Routine, Item::Routine(_))
+                | (Kind::Type, Item::Record(_) | Item::Alias(_))
+        )
+    }
+
+    /// Keeps the kinds apart in the task's memo of suggestions.
+    fn prefix(self) -> &'static str {
+        match self {
+            Kind::Data => "d:",
+            Kind::Routine => "r:",
+            Kind::Type => "t:",
+        }
+    }
 }
 
 /// Levenshtein distance of two short ASCII strings.
