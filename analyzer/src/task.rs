@@ -418,6 +418,10 @@ pub struct Task {
     pub(crate) close_names: std::sync::Mutex<HashMap<String, Option<(usize, String)>>>,
     /// How the modules were grouped (set by the workspace).
     pub grouping: Grouping,
+    /// A task of a real controller backup (one with its `SYSPAR`) whose
+    /// every module is here: a name nothing declares would stop the
+    /// controller from loading it, so it is an error, not a warning.
+    pub complete: bool,
     /// A view made for one unit (its index): the task as that unit sees it,
     /// without the modules that cannot be loaded with it ([`Task::excluded`]).
     /// `None` for a whole group.
@@ -481,6 +485,7 @@ impl Task {
             shared: Arc::default(),
             close_names: Default::default(),
             grouping: Grouping::Folder,
+            complete: false,
             owner: None,
             excluded: Vec::new(),
             clashing: Default::default(),
@@ -610,19 +615,104 @@ pub struct Config {
     pub signals: Option<Signals>,
     /// Mechanical units (`MOC.cfg`, section `MECHANICAL_UNIT`), folded.
     pub mecunits: Vec<String>,
+    /// The controller's tasks in order (`SYS.cfg`, section `CAB_TASKS`):
+    /// their names as written. A backup keeps task *n* in `RAPID/TASKn`.
+    pub tasks: Vec<String>,
+    /// Modules the controller loads into tasks when it starts (`SYS.cfg`,
+    /// section `CAB_TASK_MODULES`).
+    pub task_modules: Vec<TaskModule>,
 }
 
-/// Reads a configuration file: the signals of `EIO.cfg` and the mechanical
-/// units of `MOC.cfg` (whatever the file is called).
+/// A module that `SYS.cfg` has the controller load into a task.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub struct TaskModule {
+    /// The file as written: `HOME:/user.sys`, `RELEASE:/options/...`.
+    pub file: String,
+    /// The task's name; `None` for every task (`-AllTask`).
+    pub task: Option<String>,
+}
+
+impl TaskModule {
+    /// The file's path below the controller's `HOME:` folder, if it is there.
+    pub fn home_path(&self) -> Option<&str> {
+        let head = self.file.get(..5)?;
+        head.eq_ignore_ascii_case("home:").then(|| {
+            self.file
+                .get(5..)
+                .unwrap_or_default()
+                .trim_start_matches(['/', '\\'])
+        })
+    }
+
+    /// The file's name, without folders, lowercase.
+    pub fn file_name(&self) -> String {
+        self.file
+            .rsplit(['/', '\\', ':'])
+            .next()
+            .unwrap_or_default()
+            .to_ascii_lowercase()
+    }
+}
+
+/// Reads a configuration file: the signals of `EIO.cfg`, the mechanical
+/// units of `MOC.cfg`, the tasks and task modules of `SYS.cfg` (whatever the
+/// file is called).
 pub fn parse_config(cfg: &str) -> Config {
     let has_signals = cfg.lines().any(|l| {
         let t = l.trim();
         t.ends_with(':') && !t.starts_with('-') && t.to_ascii_uppercase().contains("SIGNAL")
     });
+    let tasks = section_entries(cfg, "CAB_TASKS")
+        .iter()
+        .filter_map(|e| option_value(e, "-Name"))
+        .collect();
+    let task_modules = section_entries(cfg, "CAB_TASK_MODULES")
+        .iter()
+        .filter_map(|e| {
+            let file = option_value(e, "-File")?;
+            let task = option_value(e, "-Task").filter(|_| !e.contains("-AllTask"));
+            Some(TaskModule { file, task })
+        })
+        .collect();
     Config {
         signals: has_signals.then(|| parse_eio_signals(cfg)),
         mecunits: parse_moc_units(cfg),
+        tasks,
+        task_modules,
     }
+}
+
+/// The entries of a section of a configuration file (`NAME:` then entries
+/// starting with `-`, continued over lines that end in `\`), each as one
+/// line.
+fn section_entries(cfg: &str, section: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut inside = false;
+    let mut entry = String::new();
+    let mut continued = false;
+    for line in cfg.lines() {
+        let t = line.trim();
+        if !continued && t.ends_with(':') && !t.starts_with('-') && !t.contains(' ') {
+            if !entry.is_empty() {
+                out.push(std::mem::take(&mut entry));
+            }
+            inside = t[..t.len() - 1].eq_ignore_ascii_case(section);
+            continue;
+        }
+        if !inside {
+            continue;
+        }
+        if t.starts_with('-') && !continued && !entry.is_empty() {
+            out.push(std::mem::take(&mut entry));
+        }
+        continued = t.ends_with('\\');
+        entry.push(' ');
+        entry.push_str(t.trim_end_matches('\\'));
+    }
+    if !entry.trim().is_empty() {
+        out.push(entry);
+    }
+    out
 }
 
 /// The `-name` of every entry of the `MECHANICAL_UNIT:` section, folded.
@@ -714,6 +804,29 @@ fn option_value(entry: &str, option: &str) -> Option<String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn tasks_and_their_modules_come_from_sys_cfg() {
+        let cfg = "SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n\n  -Name \"T_ROB1\" -Type \"NORMAL\" \\\n   -MotionTask \n\n  -Name \"T_PLC\" -Type \"SEMISTATIC\"\n#\nCAB_TASK_MODULES:\n\n  -File \"HOME:/user.sys\" -ModName \"user\" -AllTask\n  -File \"RELEASE:/options/x.sys\" -ModName \"x\" \\\n   -Task \"T_ROB1\" -Hidden\n#\nCAB_EXEC_HOOKS:\n  -Routine \"r\" -Shelf \"POWER_ON\"\n";
+        let config = parse_config(cfg);
+        assert_eq!(config.tasks, ["T_ROB1", "T_PLC"]);
+        assert_eq!(
+            config.task_modules,
+            [
+                TaskModule {
+                    file: "HOME:/user.sys".into(),
+                    task: None
+                },
+                TaskModule {
+                    file: "RELEASE:/options/x.sys".into(),
+                    task: Some("T_ROB1".into())
+                },
+            ]
+        );
+        assert_eq!(config.task_modules[0].home_path(), Some("user.sys"));
+        assert_eq!(config.task_modules[1].home_path(), None);
+        assert_eq!(config.task_modules[1].file_name(), "x.sys");
+    }
 
     #[test]
     fn signals_come_from_the_signal_section() {

@@ -240,10 +240,13 @@ pub fn is_rapid_file_name(name: &str) -> bool {
 }
 
 /// Is this a controller configuration file the analyzer reads (`EIO.cfg`
-/// for I/O signals, `MOC.cfg` for mechanical units), in any letter case?
+/// for I/O signals, `MOC.cfg` for mechanical units, `SYS.cfg` for the tasks
+/// and the modules they load), in any letter case?
 pub fn is_controller_config_name(name: &str) -> bool {
     let base = name.rsplit(['/', '\\']).next().unwrap_or(name);
-    base.eq_ignore_ascii_case("eio.cfg") || base.eq_ignore_ascii_case("moc.cfg")
+    ["eio.cfg", "moc.cfg", "sys.cfg"]
+        .iter()
+        .any(|n| base.eq_ignore_ascii_case(n))
 }
 
 /// Is this a program file (`.pgf`, an XML list of a task's modules)?
@@ -328,6 +331,7 @@ mod tests {
     #[test]
     fn configuration_and_program_file_names() {
         assert!(is_controller_config_name("b/SYSPAR/EIO.cfg"));
+        assert!(is_controller_config_name("b/SYSPAR/SYS.cfg"));
         assert!(is_controller_config_name("moc.CFG"));
         assert!(!is_controller_config_name("SIO.cfg"));
         assert!(is_program_file_name("T_ROB1.pgf") && is_program_file_name("a.PGF"));

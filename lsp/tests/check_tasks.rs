@@ -102,3 +102,48 @@ fn rapid_text_in_a_pgf_file_is_checked_as_a_module() {
         "{out}"
     );
 }
+
+#[test]
+fn unresolved_names_are_errors_only_in_a_complete_backup() {
+    let dir = scratch("complete");
+    let main =
+        "MODULE Main\n  PROC main()\n    MoveJ pHoem, v1000, fine, tool0;\n  ENDPROC\nENDMODULE\n";
+    write(
+        &dir,
+        &[
+            (
+                "B/SYSPAR/SYS.cfg",
+                "SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n\n  -Name \"T_ROB1\" -Type \"NORMAL\"\n",
+            ),
+            ("B/RAPID/TASK1/PROGMOD/Main.mod", main),
+            // The same program outside a backup: a partial folder.
+            ("loose/Main.mod", main),
+        ],
+    );
+    let (code, out) = check(&dir);
+    assert_eq!(code, Some(1), "{out}");
+    assert!(
+        out.contains("B/RAPID/TASK1/PROGMOD/Main.mod:3:11: error[W101]"),
+        "{out}"
+    );
+    assert!(out.contains("loose/Main.mod:3:11: warning[W101]"), "{out}");
+    // An encrypted module of the task could declare the name: a warning.
+    std::fs::write(
+        dir.join("B/RAPID/TASK1/SYSMOD/Secret.sys"),
+        b"\xFD\x12\x34\x56\x78",
+    )
+    .or_else(|_| {
+        std::fs::create_dir_all(dir.join("B/RAPID/TASK1/SYSMOD"))?;
+        std::fs::write(
+            dir.join("B/RAPID/TASK1/SYSMOD/Secret.sys"),
+            b"\xFD\x12\x34\x56\x78",
+        )
+    })
+    .expect("written");
+    let (code, out) = check(&dir);
+    assert_eq!(code, Some(0), "{out}");
+    assert!(
+        out.contains("B/RAPID/TASK1/PROGMOD/Main.mod:3:11: warning[W101]"),
+        "{out}"
+    );
+}

@@ -78,7 +78,7 @@ fn unknown_signal(cx: &mut Cx<'_>, node: Node<'_>, name: &str, expected: &Ty) {
             "no {} named `{name}` in the configuration ({file}), and no data of that name",
             if mecunit { "mechanical unit" } else { "signal" }
         );
-        cx.report(&rules::unresolved_name::RULE, node.byte_range(), message);
+        cx.report_unresolved(node.byte_range(), message);
     } else {
         // Reported at every use; `check_unit` keeps the first per name.
         cx.report(

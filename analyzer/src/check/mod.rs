@@ -963,7 +963,19 @@ impl<'t> Cx<'t> {
         } else if what == "data" && self.task.signals.is_none() {
             message.push_str(" (if it is an I/O signal, give the controller's EIO.cfg)");
         }
-        self.report(&crate::rules::unresolved_name::RULE, range, message);
+        self.report_unresolved(range, message);
+    }
+
+    /// Reports a name nothing declares: an error in a complete backup's
+    /// task (every module is here, so the controller would refuse to load
+    /// it), a warning anywhere else (the declaration may be in a module or
+    /// an option that is not part of the checked files).
+    pub(crate) fn report_unresolved(&mut self, range: Range<usize>, message: String) {
+        let mut d = Diagnostic::new(&crate::rules::unresolved_name::RULE, range, message);
+        if self.task.complete {
+            d.severity = crate::diagnostic::Severity::Error;
+        }
+        self.report_with(d);
     }
 
     /// A visible name of the same kind within a small edit distance of

@@ -6,8 +6,11 @@ crate::declare_rule! {
     /// modules, in the built-in catalogue, or (for signals) in the I/O
     /// configuration. It may be a typing mistake, or it may be declared in a module
     /// or a RobotWare option that is not part of the checked files; this is why it
-    /// is a warning of its own and not an error. The message proposes close matches
-    /// when there are any.
+    /// is a warning, reported once per name and file with its other uses as related
+    /// locations. In a task of a complete controller backup (the backup has its
+    /// `SYSPAR`, every module of the task could be read, and every module `SYS.cfg`
+    /// loads into the task is there) nothing can be missing, and it is an error.
+    /// The message proposes close matches of the same kind when there are any.
     ///
     /// ### Why
     /// A module that uses an undeclared name fails to link when it is loaded on the

@@ -37,6 +37,9 @@ pub struct Workspace {
     /// The module files that each unit of a backup's task names in its
     /// strings (for `Load` and `StartLoad`), by the unit's path.
     loads: HashMap<String, Vec<String>>,
+    /// Module files that exist but could not be read (see
+    /// [`Workspace::set_unreadable`]).
+    unreadable: std::collections::BTreeSet<String>,
     /// The shared persistents of each controller (backup), by the
     /// controller's key ([`controller_of`]), with their hash.
     controllers: HashMap<String, (Arc<SharedMap>, u64)>,
@@ -205,10 +208,27 @@ impl Workspace {
     pub fn set_config(&mut self, path: &str, text: &str) {
         self.configs.insert(path.to_owned(), parse_config(text));
         self.forget_all_tasks();
+        self.refresh_adoption();
     }
 
     pub fn remove_config(&mut self, path: &str) {
         if self.configs.remove(path).is_some() {
+            self.forget_all_tasks();
+            self.refresh_adoption();
+        }
+    }
+
+    /// Records a module file that exists but could not be read (encrypted,
+    /// binary, unreadable): its task is then known to be incomplete, and
+    /// names nothing declares are not errors there.
+    pub fn set_unreadable(&mut self, path: &str) {
+        if self.unreadable.insert(path.to_owned()) {
+            self.forget_all_tasks();
+        }
+    }
+
+    pub fn remove_unreadable(&mut self, path: &str) {
+        if self.unreadable.remove(path) {
             self.forget_all_tasks();
         }
     }
@@ -285,8 +305,10 @@ impl Workspace {
         // Results depend on the configuration too: the interface covers it,
         // so cached file and statement results are dropped when it changes.
         let config = config_hash(signals.as_ref(), &mecunits);
+        let complete = grouping == Grouping::Backup && self.is_complete(&key);
         let mut task = Task::new(key.clone(), units, signals);
         task.grouping = grouping;
+        task.complete = complete;
         task.mecunits = mecunits;
         task.interface ^= config;
         if let Some(controller) = controller_of(&key).filter(|_| grouping == Grouping::Backup) {

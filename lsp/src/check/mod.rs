@@ -482,6 +482,13 @@ pub fn check_files(
             workspace.set_config(&unit_path(path), &text);
         }
     }
+    // A module that could not be read (encrypted, binary, too large)
+    // leaves its task incomplete.
+    for (r, path) in read.iter().zip(files) {
+        if r.is_err() {
+            workspace.set_unreadable(&unit_path(path));
+        }
+    }
     let checked_paths: HashSet<String> = units.iter().flatten().map(|u| u.path.clone()).collect();
     let checked_keys: BTreeSet<String> = checked_paths
         .iter()
