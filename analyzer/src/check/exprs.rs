@@ -12,9 +12,11 @@ use crate::syntax_util::{Literal, field, fields, literal_aggregate};
 use crate::ty::Ty;
 
 /// Functions whose results are real numbers, for the float-equality lint.
+/// `Pow` is left out: real programs raise integers to integer powers,
+/// whose results a `num` holds exactly.
 const REAL_FUNCTIONS: &[&str] = &[
-    "sqrt", "sin", "cos", "tan", "asin", "acos", "atan", "atan2", "exp", "pow", "distance",
-    "vectmagn", "dotprod",
+    "sqrt", "sin", "cos", "tan", "asin", "acos", "atan", "atan2", "exp", "distance", "vectmagn",
+    "dotprod",
 ];
 
 /// The type of an expression, reporting what is wrong inside it. `expected`
@@ -460,7 +462,19 @@ fn binary<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Ty {
     };
     match result {
         Some(ty) => {
-            if is_comparison && num(&lt) && num(&rt) && (is_real(cx, l) || is_real(cx, r)) {
+            // Comparing with zero asks "is it exactly the same point,
+            // vector or value", which identical inputs answer exactly.
+            let zero = |n: Node<'_>| {
+                crate::syntax_util::kind(n) == "number"
+                    && cx.node_text(n).parse::<f64>().is_ok_and(|v| v == 0.0)
+            };
+            if is_comparison
+                && num(&lt)
+                && num(&rt)
+                && (is_real(cx, l) || is_real(cx, r))
+                && !zero(l)
+                && !zero(r)
+            {
                 cx.report(
                     &rules::float_equality::RULE,
                     node.byte_range(),

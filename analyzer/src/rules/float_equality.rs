@@ -6,7 +6,9 @@ crate::declare_rule! {
     /// trigonometric or other real-valued function. `num` is a single-precision
     /// value, so such results are rarely exactly equal. Comparing with a literal
     /// (`x = -112.5`) is not reported: the value compared may be taught or
-    /// configured, and literals are exact.
+    /// configured, and literals are exact. Neither is comparing a computed value
+    /// with `0` (`Distance(p1, p2) = 0` asks whether two points are the same) nor
+    /// `Pow` (integer powers of integers are exact).
     ///
     /// ### Why
     /// The comparison can be false when the values are equal for every practical
