@@ -240,10 +240,14 @@ pub fn is_rapid_file_name(name: &str) -> bool {
 }
 
 /// Is this a controller configuration file the analyzer reads (`EIO.cfg`
-/// for I/O signals, `MOC.cfg` for mechanical units), in any letter case?
+/// for I/O signals, `MOC.cfg` for mechanical units, `BACKINFO/backinfo.txt`
+/// and `BACKINFO/system.xml` for the RobotWare version and options), in any
+/// letter case?
 pub fn is_controller_config_name(name: &str) -> bool {
     let base = name.rsplit(['/', '\\']).next().unwrap_or(name);
-    base.eq_ignore_ascii_case("eio.cfg") || base.eq_ignore_ascii_case("moc.cfg")
+    base.eq_ignore_ascii_case("eio.cfg")
+        || base.eq_ignore_ascii_case("moc.cfg")
+        || crate::controller::is_controller_info_name(name)
 }
 
 /// Is this a program file (`.pgf`, an XML list of a task's modules)?

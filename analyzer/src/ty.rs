@@ -6,7 +6,7 @@ use std::collections::HashMap;
 use std::fmt;
 use std::rc::Rc;
 
-use crate::catalogue::{Catalogue, TypeKind, ValueClass, catalogue};
+use crate::catalogue::{Catalogue, TypeKind, ValueClass};
 use crate::items::{AliasDecl, RecordDecl};
 use crate::names::{NameHasher, fold, same, with_folded};
 
@@ -150,7 +150,10 @@ const SIGNALS: &[&str] = &[
 ];
 
 impl<'a> Types<'a> {
-    pub fn new(user: impl IntoIterator<Item = UserType<'a>>) -> Types<'a> {
+    pub fn new(
+        user: impl IntoIterator<Item = UserType<'a>>,
+        catalogue: &'static Catalogue,
+    ) -> Types<'a> {
         let mut map = HashMap::new();
         for t in user {
             let name = match t {
@@ -161,7 +164,7 @@ impl<'a> Types<'a> {
         }
         Types {
             user: map,
-            catalogue: catalogue(),
+            catalogue,
             memo: RefCell::default(),
         }
     }
@@ -199,10 +202,13 @@ impl<'a> Types<'a> {
                     let next = match self.user(&current) {
                         Some(UserType::Alias(a)) => a.of.as_ref().map(|t| t.name.clone()),
                         Some(UserType::Record(_)) => None,
-                        None => self
-                            .catalogue
-                            .datatype(&current)
-                            .and_then(|t| t.alias_of.clone()),
+                        None => match self.catalogue.datatype(&current) {
+                            // A type known by name only: its data are not
+                            // type-checked.
+                            Some(t) if !t.layout_known => return Ty::Unknown,
+                            Some(t) => t.alias_of.clone(),
+                            None => None,
+                        },
                     };
                     match next {
                         Some(n) => current = n,
@@ -409,7 +415,7 @@ mod tests {
 
     #[test]
     fn aliases_are_their_base_type() {
-        let types = Types::new([]);
+        let types = Types::new([], crate::catalogue::base());
         assert!(types.assignable(&Ty::named("errnum"), &Ty::num()));
         assert!(types.assignable(&Ty::num(), &Ty::named("ERRNUM")));
         assert!(!types.assignable(&Ty::string(), &Ty::num()));
@@ -420,7 +426,7 @@ mod tests {
 
     #[test]
     fn records_have_components() {
-        let types = Types::new([]);
+        let types = Types::new([], crate::catalogue::base());
         let pos = types.components(&Ty::named("pos")).unwrap_or_default();
         let names: Vec<_> = pos.iter().map(|(n, _)| n.as_str()).collect();
         assert_eq!(names, ["x", "y", "z"]);

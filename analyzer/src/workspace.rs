@@ -11,6 +11,9 @@ use std::collections::{BTreeMap, HashMap, HashSet};
 use std::sync::Arc;
 
 use crate::check::StmtCache;
+use crate::controller::{
+    ControllerInfo, ControllerOverride, is_controller_info_name, parse_controller_info,
+};
 use crate::diagnostic::Diagnostic;
 use crate::task::{
     Config, SharedMap, Signals, Task, Unit, controller_of, parse_config, shared_persistents,
@@ -37,6 +40,10 @@ pub struct Workspace {
     /// its files was replaced, in the task's order: rebuilding it needs no
     /// search for its members (their set did not change).
     members: HashMap<String, Vec<Arc<Unit>>>,
+    /// What backups say about their controllers (`BACKINFO`), by file path.
+    systems: BTreeMap<String, ControllerInfo>,
+    /// The controller as the project configuration describes it.
+    controller: ControllerOverride,
 }
 
 struct Checked {
@@ -159,13 +166,51 @@ impl Workspace {
     /// signals) or `MOC.cfg` (mechanical units); other `.cfg` files are read
     /// for the same sections. It applies to the tasks below its folder (below
     /// the backup for `SYSPAR/*.cfg`).
+    /// `BACKINFO/backinfo.txt` and `BACKINFO/system.xml` name the RobotWare
+    /// version and options of the backup's controller.
     pub fn set_config(&mut self, path: &str, text: &str) {
-        self.configs.insert(path.to_owned(), parse_config(text));
+        if is_controller_info_name(path) {
+            let info = parse_controller_info(path, text, crate::catalogue::base());
+            self.systems.insert(path.to_owned(), info);
+        } else {
+            self.configs.insert(path.to_owned(), parse_config(text));
+        }
         self.tasks.clear();
         self.members.clear();
     }
 
+    /// Sets the controller of the project configuration (`[controller]` of
+    /// `rapid.toml` or the editor's settings); each key it sets wins over
+    /// what a backup says.
+    pub fn set_controller(&mut self, controller: ControllerOverride) {
+        if self.controller != controller {
+            self.controller = controller;
+            self.tasks.clear();
+            self.members.clear();
+        }
+    }
+
+    /// What the backups and the project configuration say about the
+    /// controller of the task `key`.
+    pub fn controller_of_task(&self, key: &str) -> ControllerInfo {
+        let mut info = ControllerInfo::default();
+        for (path, system) in &self.systems {
+            if key.starts_with(config_root(path)) {
+                info.merge(system);
+            }
+        }
+        let sel = info.selection(&self.controller);
+        ControllerInfo {
+            robotware: sel.robotware,
+            options: sel.options().to_vec(),
+        }
+    }
+
     pub fn remove_config(&mut self, path: &str) {
+        if self.systems.remove(path).is_some() {
+            self.tasks.clear();
+            self.members.clear();
+        }
         if self.configs.remove(path).is_some() {
             self.tasks.clear();
             self.members.clear();
@@ -205,6 +250,11 @@ impl Workspace {
         // so cached file and statement results are dropped when it changes.
         let config = config_hash(signals.as_ref(), &mecunits);
         let mut task = Task::new(key.clone(), units, signals);
+        let controller = self.controller_of_task(&key);
+        task.set_catalogue(&crate::catalogue::Selection::new(
+            controller.robotware,
+            controller.options,
+        ));
         task.mecunits = mecunits;
         task.interface ^= config;
         if let Some(controller) = controller_of(&key) {
@@ -408,8 +458,12 @@ fn parse_program(path: &str, xml: &str) -> Vec<String> {
 fn config_root(path: &str) -> &str {
     let dir = path.rsplit_once(['/', '\\']).map_or("", |(d, _)| d);
     match dir.rsplit_once(['/', '\\']) {
-        Some((parent, last)) if last.eq_ignore_ascii_case("syspar") => parent,
-        None if dir.eq_ignore_ascii_case("syspar") => "",
+        Some((parent, last))
+            if last.eq_ignore_ascii_case("syspar") || last.eq_ignore_ascii_case("backinfo") =>
+        {
+            parent
+        }
+        None if dir.eq_ignore_ascii_case("syspar") || dir.eq_ignore_ascii_case("backinfo") => "",
         _ => dir,
     }
 }

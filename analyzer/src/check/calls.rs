@@ -37,6 +37,9 @@ pub(super) struct Sig {
     required_groups: Vec<u32>,
     returns: Option<Ty>,
     kind: RoutineKind,
+    /// Only the name is known (an option routine without a public
+    /// signature): the arguments are not checked against parameters.
+    unchecked: bool,
 }
 
 /// The signature of a routine, made once per check context (a MoveL
@@ -97,6 +100,7 @@ fn make_signature(sym: RoutineSym<'_>) -> Sig {
             } else {
                 RoutineKind::Proc
             },
+            unchecked: !r.signature_known,
         },
         RoutineSym::User(d, _) => Sig {
             name: d.name.clone(),
@@ -120,6 +124,7 @@ fn make_signature(sym: RoutineSym<'_>) -> Sig {
             required_groups: Vec::new(),
             returns: d.returns.as_ref().map(|t| Ty::named(&t.name)),
             kind: d.kind,
+            unchecked: false,
         },
     }
 }
@@ -147,6 +152,7 @@ pub(super) fn procedure_call<'t>(cx: &mut Cx<'t>, node: Node<'t>) {
     }
     match cx.resolve_routine(name, false) {
         Some(sym) => {
+            cx.routine_used(&sym, name_node.byte_range());
             let sig = signature(cx, sym);
             match sig.kind {
                 RoutineKind::Func => cx.report(
@@ -190,6 +196,7 @@ pub(super) fn function_call<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Ty {
     }
     match cx.resolve_routine(name, true) {
         Some(sym) => {
+            cx.routine_used(&sym, name_node.byte_range());
             let sig = signature(cx, sym);
             if sig.kind != RoutineKind::Func {
                 cx.report(
@@ -270,6 +277,10 @@ fn conditional<'t>(cx: &mut Cx<'t>, c: Node<'t>) {
 }
 
 fn check_args<'t>(cx: &mut Cx<'t>, sig: &Sig, args: Option<Node<'t>>, call: Range<usize>) {
+    if sig.unchecked {
+        check_args_unknown(cx, args);
+        return;
+    }
     let required: Vec<usize> = sig
         .params
         .iter()

@@ -46,7 +46,10 @@ pub(super) fn expr<'t>(cx: &mut Cx<'t>, node: Node<'t>, expected: Option<&Ty>) -
 fn identifier<'t>(cx: &mut Cx<'t>, node: Node<'t>, expected: Option<&Ty>) -> Ty {
     let name = cx.node_text(node);
     match cx.resolve_data(name) {
-        Some(sym) => sym.ty(&cx.types),
+        Some(sym) => {
+            cx.data_used(&sym, node.byte_range());
+            sym.ty(&cx.types)
+        }
         None => {
             if let Some(exp) = expected.filter(|e| is_configured(cx, e)) {
                 unknown_signal(cx, node, name, exp);

@@ -5,6 +5,7 @@
 //! routine's scope (parameters, routine data, `FOR` variables), the module,
 //! the task's globals and the built-in catalogue, in that order.
 
+mod availability;
 mod calls;
 mod decls;
 mod exprs;
@@ -18,7 +19,7 @@ use std::sync::Arc;
 
 use tree_sitter::Node;
 
-use crate::catalogue::{Catalogue, Datum, DatumKind, Mode, Routine, catalogue};
+use crate::catalogue::{Catalogue, Datum, DatumKind, Mode, Routine};
 use crate::diagnostic::{Diagnostic, Related, Rule};
 use crate::items::{DataDecl, Module, ParamDecl, RoutineDecl, Storage};
 use crate::names::{NameMap, fold, with_folded};
@@ -314,6 +315,7 @@ fn finish(mut diags: Vec<Diagnostic>) -> Vec<Diagnostic> {
         !std::ptr::eq(d.rule, &crate::rules::unconfigured_signal::RULE)
             || seen.insert(d.message.clone())
     });
+    availability::once_per_name(&mut diags);
     diags
 }
 
@@ -515,7 +517,7 @@ impl<'t> Cx<'t> {
             unit_idx,
             text: &unit.text,
             types: task.types(),
-            cat: catalogue(),
+            cat: task.catalogue,
             module: None,
             routine: None,
             diags: Vec::new(),
@@ -895,18 +897,6 @@ impl<'t> Cx<'t> {
             self.report_with(d);
             return;
         }
-        if what == "routine"
-            && let Some(o) = option_routine(name)
-        {
-            {
-                let message = format!(
-                    "`{name}` belongs to {}; its arguments are not checked",
-                    o.package
-                );
-                self.report(&crate::rules::option_routine::RULE, range, message);
-                return;
-            }
-        }
         let mut message = format!("no {what} named `{name}` is declared in this task or built in");
         let key = fold(name);
         let close = match self.close_memo.get(&key) {
@@ -1026,20 +1016,6 @@ pub(crate) fn is_read_only_system_datum(d: &Datum) -> bool {
     ["ERRNO", "INTNO", "ERRSTR"]
         .iter()
         .any(|n| d.name.eq_ignore_ascii_case(n))
-}
-
-/// A routine of an option or vendor package, from the reviewed list.
-pub(crate) fn option_routine(name: &str) -> Option<&'static crate::catalogue::OptionRoutine> {
-    static LIST: std::sync::OnceLock<HashMap<String, crate::catalogue::OptionRoutine>> =
-        std::sync::OnceLock::new();
-    LIST.get_or_init(|| {
-        crate::catalogue::option_routines()
-            .unwrap_or_default()
-            .into_iter()
-            .map(|o| (fold(&o.name), o))
-            .collect()
-    })
-    .get(&fold(name))
 }
 
 /// The task's global name closest to `key` within `limit` edits, memoised

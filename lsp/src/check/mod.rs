@@ -445,7 +445,7 @@ pub fn check_files(
     // on a thread that parsing leaves idle (a single large file is parsed
     // on one thread).
     rayon::spawn(|| {
-        let _ = rapid_analyzer::catalogue::catalogue();
+        let _ = rapid_analyzer::catalogue::base();
     });
     // Read, decode and parse each file in one parallel pass, largest files
     // first so that no big module is left to one thread at the end.

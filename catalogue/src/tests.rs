@@ -141,12 +141,12 @@ const MANUAL_DATATYPES: &[&str] = &[
 fn sources_parse() {
     let cat = Catalogue::load();
     assert!(cat.is_ok(), "{:?}", cat.err());
-    assert!(!catalogue().functions.is_empty());
+    assert!(!base().functions.is_empty());
 }
 
 #[test]
 fn catalogue_is_consistent() {
-    assert_eq!(catalogue().check(), Vec::<String>::new());
+    assert_eq!(base().check(), Vec::<String>::new());
 }
 
 #[test]
@@ -163,7 +163,7 @@ fn check_reports_broken_entries() {
         switch: false,
         array: 0,
         alt_group: Some(9),
-        later: false,
+        since: None,
     });
     bad.alt_groups.push(AltGroup {
         id: 9,
@@ -175,10 +175,15 @@ fn check_reports_broken_entries() {
         ty: "nosuchtype".into(),
         kind: DatumKind::Const,
         value: None,
-        source: Source::Other,
-        section: None,
+        origin: Origin {
+            since: Version::FIRST,
+            until: None,
+            package: Some("nosuchpackage".into()),
+            source: Source::Reference,
+            section: None,
+            note: None,
+        },
         summary: String::new(),
-        note: None,
     });
     let problems = cat.check().join("\n");
     assert!(problems.contains("`ABS`: name already used"), "{problems}");
@@ -188,36 +193,47 @@ fn check_reports_broken_entries() {
         "{problems}"
     );
     assert!(problems.contains("datum zz: unknown type"), "{problems}");
+    assert!(
+        problems.contains("zz: unknown package `nosuchpackage`"),
+        "{problems}"
+    );
 }
 
 #[test]
 fn manual_functions_are_exactly_the_manuals() {
-    let cat = catalogue();
+    let cat = base();
     let manual: Vec<&str> = cat
         .functions
         .iter()
-        .filter(|f| f.source == Source::Manual)
+        .filter(|f| f.origin.source == Source::Manual)
         .map(|f| f.name.as_str())
         .collect();
     assert_eq!(manual, MANUAL_FUNCTIONS);
     assert_eq!(manual.len(), 80);
-    for f in cat.functions.iter().filter(|f| f.source == Source::Manual) {
-        assert!(f.section.is_some(), "{} lacks a section", f.name);
+    for f in cat
+        .functions
+        .iter()
+        .filter(|f| f.origin.source == Source::Manual)
+    {
+        assert!(f.origin.section.is_some(), "{} lacks a section", f.name);
     }
 }
 
 #[test]
 fn manual_datatypes_are_present() {
-    let cat = catalogue();
+    let cat = base();
     for name in MANUAL_DATATYPES {
         let t = cat.datatype(name);
-        assert!(t.is_some_and(|t| t.source == Source::Manual), "{name}");
+        assert!(
+            t.is_some_and(|t| t.origin.source == Source::Manual),
+            "{name}"
+        );
     }
 }
 
 #[test]
 fn lookups_ignore_case() {
-    let cat = catalogue();
+    let cat = base();
     assert_eq!(
         cat.function("strpart").map(|f| f.name.as_str()),
         Some("StrPart")
@@ -238,10 +254,10 @@ fn lookups_ignore_case() {
 
 #[test]
 fn manual_function_signatures() {
-    let text: String = catalogue()
+    let text: String = base()
         .functions
         .iter()
-        .filter(|f| f.source == Source::Manual)
+        .filter(|f| f.origin.source == Source::Manual)
         .map(|f| {
             format!(
                 "{}{}\n",
@@ -255,59 +271,13 @@ fn manual_function_signatures() {
 
 #[test]
 fn manual_datatype_shapes() {
-    let text: String = catalogue()
+    let text: String = base()
         .datatypes
         .iter()
-        .filter(|t| t.source == Source::Manual)
+        .filter(|t| t.origin.source == Source::Manual)
         .map(|t| format!("{}\n", t.signature()))
         .collect();
     insta::assert_snapshot!(text);
-}
-
-#[test]
-fn option_routines_are_not_catalogued() {
-    let list = option_routines();
-    assert!(list.is_ok(), "{:?}", list.err());
-    let cat = catalogue();
-    let mut seen = std::collections::HashSet::new();
-    for r in list.unwrap_or_default() {
-        assert!(
-            cat.routine(&r.name).is_none(),
-            "{} is both catalogued and an option routine",
-            r.name
-        );
-        assert!(
-            seen.insert(r.name.to_lowercase()),
-            "{} listed twice",
-            r.name
-        );
-        assert!(!r.package.is_empty() && !r.reason.is_empty(), "{}", r.name);
-    }
-}
-
-#[test]
-fn pure_functions_have_an_evaluator_implementation() {
-    let implemented: std::collections::HashSet<String> = rapid_evaluator::FUNCTIONS
-        .iter()
-        .map(|f| f.to_lowercase())
-        .collect();
-    let missing: Vec<&str> = catalogue()
-        .functions
-        .iter()
-        .filter(|f| f.pure && !implemented.contains(&f.name.to_lowercase()))
-        .map(|f| f.name.as_str())
-        .collect();
-    assert_eq!(
-        missing,
-        Vec::<&str>::new(),
-        "pure functions the evaluator lacks"
-    );
-    for name in rapid_evaluator::FUNCTIONS {
-        assert!(
-            catalogue().function(name).is_some(),
-            "evaluator function {name} is not catalogued"
-        );
-    }
 }
 
 /// Splits a RAPID aggregate `[a, [b, c], "d"]` into its top-level elements; `None` when
@@ -377,7 +347,7 @@ fn value_fits(cat: &Catalogue, ty: &str, value: &str) -> Result<(), String> {
 
 #[test]
 fn predefined_values_match_their_types() {
-    let cat = catalogue();
+    let cat = base();
     let mut problems = Vec::new();
     for d in &cat.data {
         if let Some(v) = &d.value
@@ -394,13 +364,13 @@ fn predefined_values_match_their_types() {
 
 #[test]
 fn every_entry_is_documented() {
-    let cat = catalogue();
+    let cat = base();
     let mut missing = Vec::new();
     for r in cat.functions.iter().chain(&cat.instructions) {
         if r.summary.trim().is_empty() || r.summary.contains('\n') || r.doc.trim().is_empty() {
             missing.push(r.name.as_str());
         }
-        if r.source == Source::Manual && r.section.is_none() {
+        if r.origin.source == Source::Manual && r.origin.section.is_none() {
             missing.push(r.name.as_str());
         }
     }
