@@ -37,6 +37,7 @@ pub const SOURCES: &[(&str, &str)] = &[
     ),
     ("datatypes.toml", include_str!("../data/datatypes.toml")),
     ("data.toml", include_str!("../data/data.toml")),
+    ("listed.toml", include_str!("../data/listed.toml")),
 ];
 
 /// The TOML sources of the option packages, one file per package.

@@ -259,10 +259,21 @@ fn manual_function_signatures() {
         .iter()
         .filter(|f| f.origin.source == Source::Manual)
         .map(|f| {
+            // Parameters later RobotWare added are not the manual's: marked.
+            let later: Vec<String> = f
+                .params
+                .iter()
+                .filter_map(|p| p.since.map(|v| format!("{} {v}", p.name)))
+                .collect();
             format!(
-                "{}{}\n",
+                "{}{}{}\n",
                 f.signature(),
-                if f.pure { "  [pure]" } else { "" }
+                if f.pure { "  [pure]" } else { "" },
+                if later.is_empty() {
+                    String::new()
+                } else {
+                    format!("  [later: {}]", later.join(", "))
+                }
             )
         })
         .collect();
