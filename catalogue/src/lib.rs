@@ -600,3 +600,55 @@ fn lookup<'a, T>(map: &HashMap<String, usize>, items: &'a [T], name: &str) -> Op
 
 #[cfg(test)]
 mod tests;
+
+impl Catalogue {
+    /// The reference page `docs/catalogue.md`: one line per entry (name,
+    /// kind, RobotWare versions, package), then the packages.
+    pub fn reference_page(&self) -> String {
+        let mut out = String::from(
+            "# Catalogue reference\n\n\
+             Generated from `catalogue/data/` by `Catalogue::reference_page`; do not edit \
+             (`RAPID_BLESS=1 cargo test -p rapid-catalogue reference_page` rewrites it). \
+             Versions are RobotWare versions: `5.00-` means from 5.0 (or earlier) on; \
+             `-7.0` means removed in 7.0. `rapid builtins NAME` shows an entry in full.\n\n\
+             | Name | Kind | RobotWare | Package |\n|---|---|---|---|\n",
+        );
+        let mut rows: Vec<(String, &str, &Origin)> = Vec::new();
+        for r in &self.functions {
+            rows.push((r.name.clone(), "function", &r.origin));
+        }
+        for r in &self.instructions {
+            rows.push((r.name.clone(), "instruction", &r.origin));
+        }
+        for t in &self.datatypes {
+            rows.push((t.name.clone(), "data type", &t.origin));
+        }
+        for d in &self.data {
+            rows.push((d.name.clone(), d.kind.keyword(), &d.origin));
+        }
+        rows.sort_by(|a, b| {
+            a.0.to_lowercase()
+                .cmp(&b.0.to_lowercase())
+                .then(a.1.cmp(b.1))
+        });
+        for (name, kind, o) in rows {
+            let _ = writeln!(
+                out,
+                "| `{name}` | {kind} | {} | {} |",
+                o.versions(),
+                o.package.as_deref().unwrap_or("base")
+            );
+        }
+        out.push_str("\n## Packages\n\n| Id | Option | Found in a backup by |\n|---|---|---|\n");
+        for p in &self.packages {
+            let _ = writeln!(
+                out,
+                "| `{}` | {} | {} |",
+                p.id,
+                p.name,
+                p.matches.join(", ")
+            );
+        }
+        out
+    }
+}

@@ -397,3 +397,51 @@ fn every_entry_is_documented() {
     }
     assert_eq!(missing, Vec::<&str>::new());
 }
+
+#[test]
+fn reference_page_is_current() {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/catalogue.md");
+    let page = base().reference_page();
+    if std::env::var_os("RAPID_BLESS").is_some() {
+        std::fs::write(path, &page).expect("write docs/catalogue.md");
+        return;
+    }
+    let current = std::fs::read_to_string(path).unwrap_or_default();
+    assert!(
+        current == page,
+        "docs/catalogue.md is stale: run `RAPID_BLESS=1 cargo test -p rapid-catalogue reference_page`"
+    );
+}
+
+#[test]
+fn views_keep_every_name_and_drop_later_parameters() {
+    let old = view(&Selection::new(Some(Version::new(5, 15)), []));
+    // EGM came with RobotWare 6: still known, but newer than 5.15.
+    let egm = old
+        .instruction("EGMReset")
+        .map(|r| old.availability(&r.origin));
+    assert!(matches!(egm, Some(Availability::Newer { .. })), "{egm:?}");
+    // A parameter added in 6.07 is not in 6.05's EGMSetupUC.
+    let v605 = view(&Selection::new(
+        Some(Version::new(6, 5)),
+        ["egm".to_string()],
+    ));
+    let uc = v605.instruction("EGMSetupUC").map(|r| r.params.len());
+    let full = base().instruction("EGMSetupUC").map(|r| r.params.len());
+    assert_eq!(uc.zip(full).map(|(a, b)| b - a), Some(2));
+    assert_eq!(
+        v605.instruction("EGMReset")
+            .map(|r| v605.availability(&r.origin)),
+        Some(Availability::Yes)
+    );
+    // Without the option, an option routine is known and needs its package.
+    let arc = base()
+        .instruction("ArcLStart")
+        .map(|r| base().availability(&r.origin));
+    assert!(matches!(arc, Some(Availability::NeedsOption(p)) if p.id == "arc"));
+    assert_eq!(
+        base().packages_named_in("689-1 Externally Guided Motion"),
+        vec!["egm"]
+    );
+    assert!(base().packages_named_in("ArcCell 7").is_empty());
+}
