@@ -24,7 +24,7 @@ use rapid_evaluator::{
 };
 use tree_sitter::{Node, TreeCursor};
 
-use crate::catalogue::{Datum, DatumKind, Mode, TypeKind, catalogue};
+use crate::catalogue::{Catalogue, Datum, DatumKind, Mode, TypeKind};
 use crate::check::{Cx, DataSym, RoutineSym};
 use crate::items::{DataDecl, ParamDecl, Storage};
 use crate::lower::{is_expression, lower_with};
@@ -300,7 +300,7 @@ impl<'t> Shared<'t> {
                     .collect(),
             ),
             Some(UserType::Alias(_)) => None,
-            None => catalogue_layout(name),
+            None => catalogue_layout(self.task.catalogue, name),
         }
     }
 
@@ -308,7 +308,7 @@ impl<'t> Shared<'t> {
         match self.types().user(name) {
             Some(UserType::Alias(a)) => a.of.as_ref().map(|t| Type::named(&t.name)),
             Some(UserType::Record(_)) => None,
-            None => catalogue_alias(name),
+            None => catalogue_alias(self.task.catalogue, name),
         }
     }
 
@@ -322,8 +322,8 @@ impl<'t> Shared<'t> {
     }
 }
 
-fn catalogue_layout(name: &str) -> Option<Vec<(String, Type)>> {
-    let t = catalogue().datatype(name)?;
+fn catalogue_layout(cat: &Catalogue, name: &str) -> Option<Vec<(String, Type)>> {
+    let t = cat.datatype(name)?;
     (t.kind == TypeKind::Record).then(|| {
         t.components
             .iter()
@@ -332,9 +332,8 @@ fn catalogue_layout(name: &str) -> Option<Vec<(String, Type)>> {
     })
 }
 
-fn catalogue_alias(name: &str) -> Option<Type> {
-    catalogue()
-        .datatype(name)
+fn catalogue_alias(cat: &Catalogue, name: &str) -> Option<Type> {
+    cat.datatype(name)
         .and_then(|t| t.alias_of.as_deref())
         .map(Type::named)
 }
@@ -436,7 +435,7 @@ impl Env for ModuleScope<'_, '_> {
 /// Names the task does not declare: the catalogue's predefined data and
 /// configured signals.
 fn outside_the_task<'a>(task: &Task, name: &str, options: EnvOptions) -> Lookup<'a> {
-    if let Some(d) = catalogue().datum(name) {
+    if let Some(d) = task.catalogue.datum(name) {
         return catalogue_lookup(d, options);
     }
     let key = fold(name);
@@ -451,7 +450,8 @@ fn outside_the_task<'a>(task: &Task, name: &str, options: EnvOptions) -> Lookup<
     Lookup::Unknown
 }
 
-/// The predefined data of the catalogue, whose values are RAPID literals.
+/// The predefined data of the catalogue, whose values are RAPID literals
+/// (the same in every view: it reads the whole catalogue).
 struct CatalogueEnv {
     options: EnvOptions,
 }
@@ -471,16 +471,16 @@ static CATALOGUE_ENV_INITIAL: CatalogueEnv = CatalogueEnv {
 
 impl Env for CatalogueEnv {
     fn lookup(&self, name: &str) -> Lookup<'_> {
-        match catalogue().datum(name) {
+        match crate::catalogue::base().datum(name) {
             Some(d) => catalogue_lookup(d, self.options),
             None => Lookup::Unknown,
         }
     }
     fn record_layout(&self, type_name: &str) -> Option<Vec<(String, Type)>> {
-        catalogue_layout(type_name)
+        catalogue_layout(crate::catalogue::base(), type_name)
     }
     fn alias_of(&self, type_name: &str) -> Option<Type> {
-        catalogue_alias(type_name)
+        catalogue_alias(crate::catalogue::base(), type_name)
     }
 }
 

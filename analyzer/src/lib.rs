@@ -5,6 +5,7 @@
 pub mod catalogue;
 pub mod check;
 pub mod consteval;
+pub mod controller;
 pub mod diagnostic;
 pub mod format;
 pub mod ide;

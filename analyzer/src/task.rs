@@ -414,6 +414,10 @@ pub struct Task {
     /// (empty outside a backup's `RAPID/TASKn` folders): the controller
     /// shares them, so their types must agree. Set with [`Task::set_shared`].
     pub shared: Arc<SharedMap>,
+    /// The catalogue as this task's controller has it (its RobotWare
+    /// version and options; the union of every version when unknown). Set
+    /// with [`Task::set_catalogue`].
+    pub catalogue: &'static crate::catalogue::Catalogue,
     /// Memo of "did you mean" suggestions among the globals, by folded name.
     pub(crate) close_names: std::sync::Mutex<HashMap<String, Option<(usize, String)>>>,
     /// How the modules were grouped (set by the workspace).
@@ -483,6 +487,7 @@ impl Task {
             interface,
             constants,
             shared: Arc::default(),
+            catalogue: crate::catalogue::base(),
             close_names: Default::default(),
             grouping: Grouping::Folder,
             complete: false,
@@ -490,6 +495,16 @@ impl Task {
             excluded: Vec::new(),
             clashing: Default::default(),
         }
+    }
+
+    /// Sets [`Task::catalogue`] to the view of `selection`: the interface
+    /// hash covers it, so cached results are dropped when it changes.
+    pub fn set_catalogue(&mut self, selection: &crate::catalogue::Selection) {
+        use std::hash::{Hash, Hasher};
+        let mut h = std::hash::DefaultHasher::new();
+        selection.hash(&mut h);
+        self.interface ^= h.finish().rotate_left(17);
+        self.catalogue = crate::catalogue::view(selection);
     }
 
     /// Is this task a task folder of a controller backup (so its modules
@@ -569,14 +584,17 @@ impl Task {
     /// The types of the task: every record and alias, global or local (a
     /// local type used from another module is reported by name resolution).
     pub fn types(&self) -> Types<'_> {
-        Types::new(self.units.iter().flat_map(|u| {
-            u.items.modules.iter().flat_map(|m| {
-                m.records
-                    .iter()
-                    .map(UserType::Record)
-                    .chain(m.aliases.iter().map(UserType::Alias))
-            })
-        }))
+        Types::new(
+            self.units.iter().flat_map(|u| {
+                u.items.modules.iter().flat_map(|m| {
+                    m.records
+                        .iter()
+                        .map(UserType::Record)
+                        .chain(m.aliases.iter().map(UserType::Alias))
+                })
+            }),
+            self.catalogue,
+        )
     }
 }
 

@@ -241,12 +241,15 @@ pub fn is_rapid_file_name(name: &str) -> bool {
 
 /// Is this a controller configuration file the analyzer reads (`EIO.cfg`
 /// for I/O signals, `MOC.cfg` for mechanical units, `SYS.cfg` for the tasks
-/// and the modules they load), in any letter case?
+/// and the modules they load, `BACKINFO/backinfo.txt` and
+/// `BACKINFO/system.xml` for the RobotWare version and options), in any
+/// letter case?
 pub fn is_controller_config_name(name: &str) -> bool {
     let base = name.rsplit(['/', '\\']).next().unwrap_or(name);
     ["eio.cfg", "moc.cfg", "sys.cfg"]
         .iter()
         .any(|n| base.eq_ignore_ascii_case(n))
+        || crate::controller::is_controller_info_name(name)
 }
 
 /// Is this a program file (`.pgf`, an XML list of a task's modules)?

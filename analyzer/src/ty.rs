@@ -6,7 +6,7 @@ use std::collections::HashMap;
 use std::fmt;
 use std::rc::Rc;
 
-use crate::catalogue::{Catalogue, TypeKind, ValueClass, catalogue};
+use crate::catalogue::{Catalogue, TypeKind, ValueClass};
 use crate::items::{AliasDecl, RecordDecl};
 use crate::names::{NameHasher, fold, same, with_folded};
 
@@ -123,6 +123,8 @@ pub type Components = Rc<[(String, Ty)]>;
 #[derive(Clone, Copy)]
 struct Info {
     exists: bool,
+    /// A built-in type known by name only (its layout is not documented).
+    opaque: bool,
     numeric: bool,
     signal: bool,
     boolean: bool,
@@ -150,7 +152,10 @@ const SIGNALS: &[&str] = &[
 ];
 
 impl<'a> Types<'a> {
-    pub fn new(user: impl IntoIterator<Item = UserType<'a>>) -> Types<'a> {
+    pub fn new(
+        user: impl IntoIterator<Item = UserType<'a>>,
+        catalogue: &'static Catalogue,
+    ) -> Types<'a> {
         let mut map = HashMap::new();
         for t in user {
             let name = match t {
@@ -161,7 +166,7 @@ impl<'a> Types<'a> {
         }
         Types {
             user: map,
-            catalogue: catalogue(),
+            catalogue,
             memo: RefCell::default(),
         }
     }
@@ -177,11 +182,15 @@ impl<'a> Types<'a> {
             || name.eq_ignore_ascii_case("switch")
     }
 
-    /// Is this a type the task knows (an unresolved type name is reported
-    /// where it is declared, and behaves as unknown everywhere else)?
+    /// Is this a type the task knows, with a known layout (an unresolved
+    /// type name is reported where it is declared, and behaves as unknown
+    /// everywhere else; so does a built-in type known by name only)?
     pub fn is_known(&self, ty: &Ty) -> bool {
         match ty.element() {
-            Ty::Named(n) => self.exists(n),
+            Ty::Named(n) => {
+                let info = self.info(n);
+                info.exists && !info.opaque
+            }
             _ => false,
         }
     }
@@ -199,10 +208,13 @@ impl<'a> Types<'a> {
                     let next = match self.user(&current) {
                         Some(UserType::Alias(a)) => a.of.as_ref().map(|t| t.name.clone()),
                         Some(UserType::Record(_)) => None,
-                        None => self
-                            .catalogue
-                            .datatype(&current)
-                            .and_then(|t| t.alias_of.clone()),
+                        None => match self.catalogue.datatype(&current) {
+                            // A type known by name only: its data are not
+                            // type-checked.
+                            Some(t) if !t.layout_known => return Ty::Unknown,
+                            Some(t) => t.alias_of.clone(),
+                            None => None,
+                        },
                     };
                     match next {
                         Some(n) => current = n,
@@ -346,6 +358,7 @@ impl<'a> Types<'a> {
             drop(memo);
             Info {
                 exists: self.exists_uncached(name),
+                opaque: matches!(base, Ty::Unknown),
                 numeric: self.is_numeric_uncached(&ty),
                 signal: self.is_signal_uncached(&ty),
                 boolean: base.is("bool"),
@@ -415,7 +428,7 @@ mod tests {
 
     #[test]
     fn aliases_are_their_base_type() {
-        let types = Types::new([]);
+        let types = Types::new([], crate::catalogue::base());
         assert!(types.assignable(&Ty::named("errnum"), &Ty::num()));
         assert!(types.assignable(&Ty::num(), &Ty::named("ERRNUM")));
         assert!(!types.assignable(&Ty::string(), &Ty::num()));
@@ -426,7 +439,7 @@ mod tests {
 
     #[test]
     fn records_have_components() {
-        let types = Types::new([]);
+        let types = Types::new([], crate::catalogue::base());
         let pos = types.components(&Ty::named("pos")).unwrap_or_default();
         let names: Vec<_> = pos.iter().map(|(n, _)| n.as_str()).collect();
         assert_eq!(names, ["x", "y", "z"]);

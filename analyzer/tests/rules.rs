@@ -42,7 +42,8 @@ impl Fixture {
         let mut ws = Workspace::new();
         for (path, text) in &self.files {
             let lower = path.to_ascii_lowercase();
-            if lower.ends_with(".cfg") {
+            if lower.ends_with(".cfg") || rapid_analyzer::controller::is_controller_info_name(path)
+            {
                 ws.set_config(path, text);
             } else if lower.ends_with(".pgf") {
                 ws.set_program(path, text);

@@ -4,7 +4,7 @@
 use std::io::Write as _;
 use std::process::ExitCode;
 
-use rapid_analyzer::catalogue::{Catalogue, DataType, Datum, Routine, Source, catalogue};
+use rapid_analyzer::catalogue::{Catalogue, DataType, Datum, Origin, Routine, Selection, Version};
 
 /// Show the built-in routines, data types and predefined data of RAPID.
 #[derive(Debug, clap::Args)]
@@ -15,6 +15,14 @@ pub struct BuiltinsArgs {
     /// Output format.
     #[arg(long, value_enum, default_value = "human")]
     pub format: Format,
+    /// Show the catalogue of one RobotWare version (e.g. 6.15): entries it
+    /// lacks are left out and signatures are that version's.
+    #[arg(long, value_name = "VERSION")]
+    pub robotware: Option<String>,
+    /// With --robotware: also list the entries of these option packages
+    /// (comma-separated ids, e.g. arc,egm); without it, every package.
+    #[arg(long, value_name = "IDS", value_delimiter = ',')]
+    pub options: Option<Vec<String>>,
 }
 
 /// Output format of `rapid builtins`.
@@ -26,9 +34,39 @@ pub enum Format {
     Json,
 }
 
+/// The catalogue `args` ask for: the whole one, or one version's with its
+/// options (entries it lacks are left out).
+fn catalogue_for(args: &BuiltinsArgs) -> Result<Catalogue, String> {
+    let base = rapid_analyzer::catalogue::base();
+    let Some(text) = &args.robotware else {
+        if args.options.is_some() {
+            return Err("rapid builtins: --options needs --robotware".into());
+        }
+        return Ok(base.select(&Selection::default()));
+    };
+    let version = Version::parse(text).map_err(|e| format!("rapid builtins: {e}"))?;
+    let options = match &args.options {
+        Some(o) => o.clone(),
+        None => base.packages.iter().map(|p| p.id.clone()).collect(),
+    };
+    for o in &options {
+        if base.package(o).is_none() {
+            return Err(format!("rapid builtins: no option package `{o}`"));
+        }
+    }
+    Ok(base.only_available(&Selection::new(Some(version), options)))
+}
+
 /// Runs `rapid builtins`.
 pub fn run(args: BuiltinsArgs) -> ExitCode {
-    let cat = catalogue();
+    let cat = match catalogue_for(&args) {
+        Ok(c) => c,
+        Err(message) => {
+            let _ = writeln!(std::io::stderr().lock(), "{message}");
+            return ExitCode::FAILURE;
+        }
+    };
+    let cat = &cat;
     let result = match &args.name {
         None => match args.format {
             Format::Human => Ok(list_human(cat)),
@@ -109,13 +147,10 @@ fn describe(cat: &Catalogue, name: &str) -> Result<String, String> {
                     .collect();
                 facts.push(format!("one of {} is required", members.join(", ")));
             }
-            push_facts(
-                &mut out,
-                &facts,
-                r.source,
-                r.section.as_deref(),
-                r.note.as_deref(),
-            );
+            if !r.signature_known {
+                facts.push("arguments not documented publicly, not checked".into());
+            }
+            push_facts(cat, &mut out, &facts, &r.origin);
         }
         Entry::DataType(t) => {
             out.push_str(&t.signature());
@@ -134,26 +169,14 @@ fn describe(cat: &Catalogue, name: &str) -> Result<String, String> {
                     .into(),
                 );
             }
-            push_facts(
-                &mut out,
-                &facts,
-                t.source,
-                t.section.as_deref(),
-                t.note.as_deref(),
-            );
+            push_facts(cat, &mut out, &facts, &t.origin);
         }
         Entry::Datum(d) => {
             out.push_str(&d.signature());
             out.push_str("\n\n");
             out.push_str(&d.summary);
             out.push('\n');
-            push_facts(
-                &mut out,
-                &["predefined data".into()],
-                d.source,
-                d.section.as_deref(),
-                d.note.as_deref(),
-            );
+            push_facts(cat, &mut out, &["predefined data".into()], &d.origin);
         }
     }
     Ok(out)
@@ -167,24 +190,26 @@ fn push_para(out: &mut String, text: &str) {
     }
 }
 
-fn push_facts(
-    out: &mut String,
-    facts: &[String],
-    source: Source,
-    section: Option<&str>,
-    note: Option<&str>,
-) {
+fn push_facts(cat: &Catalogue, out: &mut String, facts: &[String], origin: &Origin) {
     out.push('\n');
     out.push_str(&facts.join("; "));
-    out.push_str(match source {
-        Source::Manual => "; from the RAPID reference manual part 2",
-        Source::Other => "; from other RobotWare manuals",
-    });
-    if let Some(section) = section {
+    out.push('\n');
+    out.push_str(&format!("RobotWare {}", origin.versions()));
+    match origin.package.as_deref() {
+        Some(id) => {
+            let name = cat.package(id).map_or(id, |p| p.name.as_str());
+            out.push_str(&format!("; option {name} (`{id}`)"));
+        }
+        None => out.push_str("; base language"),
+    }
+    out.push('\n');
+    out.push_str("From ");
+    out.push_str(origin.source.describe());
+    if let Some(section) = &origin.section {
         out.push_str(&format!(", section {section}"));
     }
     out.push('\n');
-    if let Some(note) = note {
+    if let Some(note) = &origin.note {
         out.push_str("Note: ");
         out.push_str(note);
         out.push('\n');
@@ -276,26 +301,30 @@ fn edit_distance(a: &str, b: &str) -> usize {
 mod tests {
     use super::*;
 
+    fn base_view() -> Catalogue {
+        rapid_analyzer::catalogue::base().select(&Selection::default())
+    }
+
     #[test]
     fn describe_function() {
-        insta::assert_snapshot!(describe(catalogue(), "round").unwrap_or_else(|e| e));
+        insta::assert_snapshot!(describe(&base_view(), "round").unwrap_or_else(|e| e));
     }
 
     #[test]
     fn describe_instruction_with_alternatives() {
-        insta::assert_snapshot!(describe(catalogue(), "MoveL").unwrap_or_else(|e| e));
+        insta::assert_snapshot!(describe(&base_view(), "MoveL").unwrap_or_else(|e| e));
     }
 
     #[test]
     fn describe_required_alternatives_and_note() {
-        insta::assert_snapshot!(describe(catalogue(), "EulerZYX").unwrap_or_else(|e| e));
+        insta::assert_snapshot!(describe(&base_view(), "EulerZYX").unwrap_or_else(|e| e));
     }
 
     #[test]
     fn describe_type_and_datum() {
         let text = [
-            describe(catalogue(), "robtarget"),
-            describe(catalogue(), "v100"),
+            describe(&base_view(), "robtarget"),
+            describe(&base_view(), "v100"),
         ]
         .into_iter()
         .map(|r| r.unwrap_or_else(|e| e))
@@ -306,13 +335,13 @@ mod tests {
 
     #[test]
     fn unknown_name_suggests_close_matches() {
-        let err = describe(catalogue(), "MoveLL").err().unwrap_or_default();
+        let err = describe(&base_view(), "MoveLL").err().unwrap_or_default();
         insta::assert_snapshot!(err);
     }
 
     #[test]
     fn json_has_the_documented_shape() {
-        let text = whole_json(catalogue()).unwrap_or_default();
+        let text = whole_json(&base_view()).unwrap_or_default();
         let v: serde_json::Value = serde_json::from_str(&text).unwrap_or_default();
         for key in ["functions", "instructions", "datatypes", "data"] {
             assert!(v[key].is_array(), "{key}");

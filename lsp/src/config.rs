@@ -56,6 +56,54 @@ pub struct Config {
     pub format: FormatConfig,
     /// `[lint]`: which rules `rapid check` reports, and how severely.
     pub lint: LintConfig,
+    /// `[controller]`: the RobotWare version and options the code runs on.
+    pub controller: ControllerConfig,
+}
+
+/// `[controller]`: what a backup's `BACKINFO` would say; each key set here
+/// wins over the backup's.
+#[derive(Clone, Debug, Default, PartialEq, Eq, Deserialize)]
+#[serde(default, deny_unknown_fields, rename_all = "kebab-case")]
+pub struct ControllerConfig {
+    /// The RobotWare version, e.g. "6.15": calls are checked against its
+    /// signatures and newer built-ins are reported. Unset: every version's
+    /// built-ins and signatures are accepted.
+    pub robotware: Option<String>,
+    /// The enabled option packages by id ("arc", "egm"...; `rapid builtins`
+    /// lists them). Unset: the backup's, else none.
+    pub options: Option<Vec<String>>,
+}
+
+impl ControllerConfig {
+    /// The analyzer's form; the first problem (key, why) when a value is
+    /// not a RobotWare version or not a known option.
+    pub fn resolve(
+        &self,
+    ) -> Result<rapid_analyzer::controller::ControllerOverride, (String, String)> {
+        let robotware = match &self.robotware {
+            Some(v) => Some(
+                rapid_analyzer::catalogue::Version::parse(v)
+                    .map_err(|e| ("robotware".to_string(), e))?,
+            ),
+            None => None,
+        };
+        let cat = rapid_analyzer::catalogue::base();
+        if let Some(options) = &self.options {
+            for o in options {
+                if cat.package(o).is_none() {
+                    let ids: Vec<&str> = cat.packages.iter().map(|p| p.id.as_str()).collect();
+                    return Err((
+                        o.clone(),
+                        format!("`{o}` is not an option package; known: {}", ids.join(", ")),
+                    ));
+                }
+            }
+        }
+        Ok(rapid_analyzer::controller::ControllerOverride {
+            robotware,
+            options: self.options.clone(),
+        })
+    }
 }
 
 /// `[lint]`.
@@ -253,6 +301,13 @@ pub fn parse(text: &str, path: &Path) -> Result<Config, ConfigError> {
             });
         }
     }
+    if let Err((key, why)) = config.controller.resolve() {
+        return Err(ConfigError {
+            path: path.to_owned(),
+            line: key_line(text, &key).or_else(|| value_line(text, &key)),
+            message: format!("[controller]: {why}"),
+        });
+    }
     if let Some((value, message)) = config.lint.problems().into_iter().next() {
         return Err(ConfigError {
             path: path.to_owned(),
@@ -327,6 +382,29 @@ mod tests {
 
     fn check(text: &str) -> Result<Config, String> {
         parse(text, Path::new("rapid.toml")).map_err(|e| e.to_string())
+    }
+
+    #[test]
+    fn controller_section_is_checked() {
+        let ok = check("[controller]\nrobotware = \"6.15\"\noptions = [\"arc\", \"egm\"]\n");
+        let sel = ok.map(|c| c.controller.resolve());
+        assert!(
+            matches!(sel, Ok(Ok(ref o)) if o.robotware.map(|v| v.to_string()).as_deref() == Some("6.15"))
+        );
+        let bad = check("[controller]\nrobotware = \"six\"\n")
+            .err()
+            .unwrap_or_default();
+        assert!(
+            bad.contains(":2: [controller]") && bad.contains("not a RobotWare version"),
+            "{bad}"
+        );
+        let bad = check("[controller]\noptions = [\"arcc\"]\n")
+            .err()
+            .unwrap_or_default();
+        assert!(
+            bad.contains(":2: [controller]: `arcc` is not an option package"),
+            "{bad}"
+        );
     }
 
     #[test]

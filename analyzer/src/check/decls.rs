@@ -306,6 +306,8 @@ pub(super) fn check_routine_part_at<'t>(
 fn check_type_name(cx: &mut Cx<'_>, name: &str, range: Range<usize>) {
     if !cx.type_exists(name) {
         cx.unresolved(name, range, "data type");
+    } else {
+        cx.type_used(name, range);
     }
 }
 

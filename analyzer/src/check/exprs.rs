@@ -48,7 +48,10 @@ pub(super) fn expr<'t>(cx: &mut Cx<'t>, node: Node<'t>, expected: Option<&Ty>) -
 fn identifier<'t>(cx: &mut Cx<'t>, node: Node<'t>, expected: Option<&Ty>) -> Ty {
     let name = cx.node_text(node);
     match cx.resolve_data(name) {
-        Some(sym) => sym.ty(&cx.types),
+        Some(sym) => {
+            cx.data_used(&sym, node.byte_range());
+            sym.ty(&cx.types)
+        }
         None => {
             if let Some(exp) = expected.filter(|e| is_configured(cx, e)) {
                 unknown_signal(cx, node, name, exp);
@@ -172,7 +175,7 @@ fn aggregate<'t>(cx: &mut Cx<'t>, node: Node<'t>, expected: &Ty, sizes: &[Option
                 check_sized(cx, e, &inner, rest, "an array element");
             }
         }
-        Ty::Named(name) if cx.types.exists(name) => {
+        Ty::Named(_) if cx.types.is_known(expected) => {
             let Some(components) = cx.types.components(expected) else {
                 report_not_aggregate(cx, node.byte_range(), expected);
                 for e in elements {
@@ -299,7 +302,7 @@ fn literal_aggregate_check(
                 literal_check(cx, e, &inner, rest, What::ArrayElement);
             }
         }
-        Ty::Named(name) if cx.types.exists(name) => {
+        Ty::Named(_) if cx.types.is_known(expected) => {
             let Some(components) = cx.types.components_shared(expected) else {
                 report_not_aggregate(cx, range, expected);
                 return;

@@ -5,6 +5,7 @@
 //! routine's scope (parameters, routine data, `FOR` variables), the module,
 //! the task's globals and the built-in catalogue, in that order.
 
+mod availability;
 mod calls;
 mod decls;
 mod exprs;
@@ -18,7 +19,7 @@ use std::sync::Arc;
 
 use tree_sitter::Node;
 
-use crate::catalogue::{Catalogue, Datum, DatumKind, Mode, Routine, catalogue};
+use crate::catalogue::{Catalogue, Datum, DatumKind, Mode, Routine};
 use crate::diagnostic::{Diagnostic, Related, Rule};
 use crate::items::{DataDecl, Module, ParamDecl, RoutineDecl, Storage};
 use crate::names::{NameMap, fold, with_folded};
@@ -306,18 +307,14 @@ pub fn merge_unit_check(task: &Task, unit: usize, results: Vec<ShareResult>) -> 
 
 /// Sorts a unit's findings by position and reports each name once: an
 /// unresolved name at its first use, with the other uses as related
-/// locations; an unconfigured signal or an option routine at its first use.
+/// locations; an unconfigured signal at its first use; a built-in that needs
+/// an option or another RobotWare as [`availability::once_per_name`] does.
 fn finish(mut diags: Vec<Diagnostic>, text: &str) -> Vec<Diagnostic> {
-    use crate::rules::{option_routine, unconfigured_signal, unresolved_name};
+    use crate::rules::{unconfigured_signal, unresolved_name};
     diags.sort_by_key(|d| (d.range.start, d.range.end));
     let once = |d: &Diagnostic| {
-        [
-            &unresolved_name::RULE,
-            &unconfigured_signal::RULE,
-            &option_routine::RULE,
-        ]
-        .iter()
-        .any(|r| std::ptr::eq(d.rule, *r))
+        std::ptr::eq(d.rule, &unresolved_name::RULE)
+            || std::ptr::eq(d.rule, &unconfigured_signal::RULE)
     };
     // The first diagnostic of each (rule, name), by index into `diags`.
     let mut first: HashMap<(&'static str, String), usize> = HashMap::new();
@@ -351,6 +348,7 @@ fn finish(mut diags: Vec<Diagnostic>, text: &str) -> Vec<Diagnostic> {
     }
     let mut keep = keep.into_iter();
     diags.retain(|_| keep.next().unwrap_or(true));
+    availability::once_per_name(&mut diags);
     diags
 }
 
@@ -555,7 +553,7 @@ impl<'t> Cx<'t> {
             unit_idx,
             text: &unit.text,
             types: task.types(),
-            cat: catalogue(),
+            cat: task.catalogue,
             module: None,
             routine: None,
             diags: Vec::new(),
@@ -935,18 +933,6 @@ impl<'t> Cx<'t> {
             self.report_with(d);
             return;
         }
-        if what == "routine"
-            && let Some(o) = option_routine(name)
-        {
-            {
-                let message = format!(
-                    "`{name}` belongs to {}; its arguments are not checked",
-                    o.package
-                );
-                self.report(&crate::rules::option_routine::RULE, range, message);
-                return;
-            }
-        }
         let mut message = format!("no {what} named `{name}` is declared in this task or built in");
         let kind = Kind::of(what);
         let memo_key = (kind, fold(name));
@@ -1091,20 +1077,6 @@ pub(crate) fn is_read_only_system_datum(d: &Datum) -> bool {
     ["ERRNO", "INTNO", "ERRSTR"]
         .iter()
         .any(|n| d.name.eq_ignore_ascii_case(n))
-}
-
-/// A routine of an option or vendor package, from the reviewed list.
-pub(crate) fn option_routine(name: &str) -> Option<&'static crate::catalogue::OptionRoutine> {
-    static LIST: std::sync::OnceLock<HashMap<String, crate::catalogue::OptionRoutine>> =
-        std::sync::OnceLock::new();
-    LIST.get_or_init(|| {
-        crate::catalogue::option_routines()
-            .unwrap_or_default()
-            .into_iter()
-            .map(|o| (fold(&o.name), o))
-            .collect()
-    })
-    .get(&fold(name))
 }
 
 /// The task's global name closest to `key` within `limit` edits, memoised

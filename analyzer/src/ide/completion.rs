@@ -4,19 +4,19 @@
 //! strings. The context comes from the text before the cursor, so
 //! half-written code works.
 
-use std::collections::HashSet;
+use std::collections::{HashMap, HashSet};
 
 use super::context::{Before, before, call_at, partial, statement_start, words};
 use super::signature::{Sig, active, sig_of};
 use super::{CompletionItem, CompletionKind};
-use crate::catalogue::catalogue;
+use crate::catalogue::Catalogue;
 use crate::check::{Cx, RoutineSym};
 use crate::items::{RoutineKind, Storage};
 use crate::names::{fold, same};
 use crate::task::{Item, Task};
 use crate::ty::Ty;
 
-/// The catalogue's names (folded) and signatures, computed once.
+/// A catalogue view's names (folded) and signatures, computed once per view.
 struct Builtins {
     instructions: Vec<(String, String)>,
     functions: Vec<(String, String)>,
@@ -24,40 +24,50 @@ struct Builtins {
     data: Vec<(String, String)>,
 }
 
-fn builtins() -> &'static Builtins {
-    static CACHE: std::sync::OnceLock<Builtins> = std::sync::OnceLock::new();
-    CACHE.get_or_init(|| {
-        let cat = catalogue();
-        Builtins {
-            instructions: cat
-                .instructions
-                .iter()
-                .map(|r| (fold(&r.name), r.signature()))
-                .collect(),
-            functions: cat
-                .functions
-                .iter()
-                .map(|r| (fold(&r.name), r.signature()))
-                .collect(),
-            datatypes: cat
-                .datatypes
-                .iter()
-                .map(|t| (fold(&t.name), t.signature()))
-                .collect(),
-            data: cat
-                .data
-                .iter()
-                .map(|d| (fold(&d.name), d.signature()))
-                .collect(),
-        }
-    })
+fn builtins(cat: &'static Catalogue) -> std::sync::Arc<Builtins> {
+    type Cache = std::sync::Mutex<HashMap<usize, std::sync::Arc<Builtins>>>;
+    static CACHE: std::sync::OnceLock<Cache> = std::sync::OnceLock::new();
+    let cache = CACHE.get_or_init(Default::default);
+    // Views are interned for the life of the process: the address is the key.
+    let key = std::ptr::from_ref(cat) as usize;
+    if let Ok(map) = cache.lock()
+        && let Some(b) = map.get(&key)
+    {
+        return b.clone();
+    }
+    let built = std::sync::Arc::new(Builtins {
+        instructions: cat
+            .instructions
+            .iter()
+            .map(|r| (fold(&r.name), r.signature()))
+            .collect(),
+        functions: cat
+            .functions
+            .iter()
+            .map(|r| (fold(&r.name), r.signature()))
+            .collect(),
+        datatypes: cat
+            .datatypes
+            .iter()
+            .map(|t| (fold(&t.name), t.signature()))
+            .collect(),
+        data: cat
+            .data
+            .iter()
+            .map(|d| (fold(&d.name), d.signature()))
+            .collect(),
+    });
+    if let Ok(mut map) = cache.lock() {
+        map.insert(key, built.clone());
+    }
+    built
 }
 
 /// Builds what every completion list shares (the built-ins with their
 /// signatures) ahead of the first request, which would otherwise pay for
 /// it. A server calls this while it indexes.
 pub fn prepare_completions() {
-    builtins();
+    builtins(crate::catalogue::base());
 }
 
 /// Snippets: label, body.
@@ -316,11 +326,8 @@ fn statement_start_items(cx: &mut Cx<'_>) -> Vec<CompletionItem> {
             out.push(item(name, kind, Some(detail), "1"));
         }
     });
-    for (r, (key, sig)) in catalogue()
-        .instructions
-        .iter()
-        .zip(&builtins().instructions)
-    {
+    let builtins = builtins(cx.cat);
+    for (r, (key, sig)) in cx.cat.instructions.iter().zip(&builtins.instructions) {
         if seen.insert(key.clone()) {
             out.push(item(
                 &r.name,
@@ -383,7 +390,7 @@ fn types(cx: &mut Cx<'_>) -> Vec<CompletionItem> {
     for refs in cx.task.locals.values() {
         refs.iter().for_each(|r| user(*r, true));
     }
-    for (t, (key, sig)) in catalogue().datatypes.iter().zip(&builtins().datatypes) {
+    for (t, (key, sig)) in cx.cat.datatypes.iter().zip(&builtins(cx.cat).datatypes) {
         if seen.insert(key.clone()) {
             out.push(item(&t.name, CompletionKind::Type, Some(sig.clone()), "1"));
         }
@@ -517,7 +524,7 @@ fn data_items(cx: &mut Cx<'_>, expected: Option<&str>, out: &mut Vec<CompletionI
             );
         }
     }
-    for (d, (_, sig)) in catalogue().data.iter().zip(&builtins().data) {
+    for (d, (_, sig)) in cx.cat.data.iter().zip(&builtins(cx.cat).data) {
         let kind = match d.kind {
             crate::catalogue::DatumKind::Const => CompletionKind::Constant,
             crate::catalogue::DatumKind::Pers => CompletionKind::Persistent,
@@ -560,7 +567,7 @@ fn expression_items(cx: &mut Cx<'_>, expected: Option<&str>) -> Vec<CompletionIt
             ));
         }
     }
-    for (r, (key, sig)) in catalogue().functions.iter().zip(&builtins().functions) {
+    for (r, (key, sig)) in cx.cat.functions.iter().zip(&builtins(cx.cat).functions) {
         if seen.insert(key.clone()) {
             let first = if returns_expected(r.returns.as_deref()) {
                 "1"
@@ -729,7 +736,7 @@ fn chain_type(cx: &mut Cx<'_>, chain: &str) -> Option<Ty> {
 
 /// Documentation of a completion item, looked up when the client asks.
 pub fn completion_documentation(label: &str, kind: CompletionKind) -> Option<String> {
-    let cat = catalogue();
+    let cat = crate::catalogue::base();
     let doc = |summary: &str, doc: &str| {
         let mut s = summary.to_owned();
         if !doc.is_empty() {

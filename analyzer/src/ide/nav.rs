@@ -421,7 +421,7 @@ pub fn rename(
     }
     let def = def_at(task, unit, offset).ok_or("there is no name here to rename")?;
     let old = def.name(task);
-    let cat = crate::catalogue::catalogue();
+    let cat = task.catalogue;
     if !same(&old, new_name)
         && (cat.routine(new_name).is_some()
             || cat.datatype(new_name).is_some()

@@ -5,7 +5,7 @@ use std::ops::Range;
 
 use tree_sitter::{Node, Tree};
 
-use crate::catalogue::{DataType, Datum, Routine, catalogue};
+use crate::catalogue::{DataType, Datum, Routine};
 use crate::check::{Cx, DataSym, RoutineSym};
 use crate::items::{DataDecl, ParamDecl, RoutineDecl};
 use crate::names::{fold, same};
@@ -388,7 +388,7 @@ pub(crate) fn type_def<'t>(cx: &mut Cx<'t>, name: &str) -> Option<Def<'t>> {
             return Some(Def::Item(r));
         }
     }
-    catalogue().datatype(name).map(Def::BuiltinType)
+    cx.cat.datatype(name).map(Def::BuiltinType)
 }
 
 /// Component `name` of a value of type `ty`.
@@ -410,7 +410,7 @@ pub(crate) fn component_def<'t>(cx: &mut Cx<'t>, ty: &Ty, name: &str) -> Option<
             .position(|c| same(&c.0, name))?;
         return Some(Def::Component(r, i));
     }
-    let t = catalogue().datatype(&base)?;
+    let t = cx.cat.datatype(&base)?;
     let i = t.components.iter().position(|c| same(&c.name, name))?;
     Some(Def::BuiltinComponent(t, i))
 }

@@ -11,7 +11,7 @@ use super::resolve::is_name;
 use super::{
     MOD_DECLARATION, MOD_DEFAULT_LIBRARY, MOD_READONLY, MOD_STATIC, SemanticToken, TokenType,
 };
-use crate::catalogue::{DatumKind, catalogue};
+use crate::catalogue::DatumKind;
 use crate::check::{Cx, DataSym, RoutineSym};
 use crate::items::Storage;
 use crate::names::same;
@@ -215,7 +215,7 @@ fn classify(
 ) -> Option<(TokenType, u32)> {
     let name = text.get(n.byte_range())?;
     let parent = *ancestors.last()?;
-    let cat = catalogue();
+    let cat = scopes.task.catalogue;
     let decl = MOD_DECLARATION;
     Some(match (parent.kind(), field) {
         ("module", Some("name")) => (TokenType::Namespace, decl),

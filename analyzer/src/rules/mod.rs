@@ -10,6 +10,7 @@ pub mod argument_count;
 pub mod argument_mode;
 pub mod array_argument;
 pub mod assign_to_constant;
+pub mod builtin_version;
 pub mod call_kind_mismatch;
 pub mod condition_not_bool;
 pub mod conditional_argument;
@@ -100,6 +101,7 @@ pub static RULES: &[&Rule] = &[
     &option_routine::RULE,
     &unconfigured_signal::RULE,
     &unresolved_name::RULE,
+    &builtin_version::RULE,
     &unused_data::RULE,
     &unused_parameter::RULE,
     &unused_routine::RULE,

@@ -1,13 +1,19 @@
 crate::declare_rule! {
-    /// A routine from a RobotWare option or vendor package that the catalogue lists but does not check.
+    /// A built-in of a RobotWare option that is not enabled.
     ///
     /// ### What it checks
-    /// A call of a routine that belongs to an option or a vendor package (see
-    /// `analyzer/catalogue/option_routines.toml`). Its signature is not known, so
-    /// its arguments are not checked.
+    /// A use of a routine, data type or datum that an option package brings
+    /// (Arc welding, EGM, Force Control...; see `catalogue/data/options/`)
+    /// while the option is not listed in `[controller] options` of
+    /// `rapid.toml` nor installed according to the backup's `BACKINFO`.
+    /// Reported once per name and file, with the other uses as related
+    /// locations. The name is known, so it is never reported as unresolved,
+    /// and its arguments are checked where the option's documentation gives
+    /// the signature.
     ///
     /// ### Why
-    /// Says why a call is not checked, without calling the name unknown.
+    /// Says which option the code needs, so a controller without it is not a
+    /// surprise.
     ///
     /// ### Example
     /// ```rapid

@@ -4,78 +4,58 @@
 //! A controller loads one module of each name into a task, so two files of
 //! one task that declare the same module are two versions of it. In a plain
 //! folder, whose grouping is only a guess, modules that declare the same
-//! global name (the same entry routine `main`, the same targets) are taken
-//! for alternative versions too: real folders hold a program next to its
-//! earlier versions. Each such module is checked in a view of the task
-//! without the modules it clashes with, so neither version's names are
-//! "ambiguous" and each is checked against the rest of the folder.
+//! entry routine (`main`) are taken for alternative programs too: real
+//! folders hold a program next to its earlier versions, or several
+//! exercises side by side. Each such module is checked in a view of the
+//! task without the modules it clashes with, so neither version's names are
+//! "ambiguous" and each is checked against the rest of the folder (the
+//! shared modules a program is meant to run with). Other names declared
+//! twice are still reported, as warnings in a plain folder.
 
 use std::collections::HashMap;
 use std::sync::Arc;
 
-use crate::items::Storage;
 use crate::layout::Grouping;
 use crate::names::fold;
-use crate::task::{Excluded, Unit, module_items};
+use crate::task::{Excluded, Unit};
 
-/// A declaration of a global name: its unit, and for a persistent its type
-/// (folded) and rank (one name may declare one persistent in several
-/// modules).
-type Global = (usize, Option<(String, usize)>);
+/// The entry routine a program starts from unless configured otherwise.
+const ENTRY: &str = "main";
 
 /// For each unit of a group (by index) that clashes with others, the units
-/// it clashes with, in order.
+/// it clashes with, in order: units that declare the same module, and in a
+/// plain folder units that both declare the entry routine.
 pub(super) fn clashes(units: &[Arc<Unit>], grouping: Grouping) -> HashMap<usize, Vec<usize>> {
     // Folded names to the units that declare them.
     let mut modules: HashMap<String, Vec<usize>> = HashMap::new();
-    let mut globals: HashMap<String, Vec<Global>> = HashMap::new();
+    let mut entries: Vec<usize> = Vec::new();
     for (u, unit) in units.iter().enumerate() {
         for module in &unit.items.modules {
             modules.entry(fold(&module.name)).or_default().push(u);
-            if grouping != Grouping::Folder {
-                continue;
-            }
-            for (name, local, item) in module_items(module) {
-                if local {
-                    continue;
-                }
-                let pers = match item {
-                    crate::task::Item::Data(i) => module
-                        .data
-                        .get(i)
-                        .filter(|d| d.storage == Storage::Pers)
-                        .and_then(|d| Some((fold(&d.ty.as_ref()?.name), d.dims.len()))),
-                    _ => None,
-                };
-                globals.entry(fold(name)).or_default().push((u, pers));
+            let entry = module
+                .routines
+                .iter()
+                .any(|r| !r.local && r.name.eq_ignore_ascii_case(ENTRY));
+            if grouping == Grouping::Folder && entry {
+                entries.push(u);
             }
         }
     }
     let mut out: HashMap<usize, Vec<usize>> = HashMap::new();
-    let mut clash = |a: usize, b: usize| {
-        if a != b {
-            out.entry(a).or_default().push(b);
-            out.entry(b).or_default().push(a);
-        }
-    };
-    for list in modules.values() {
+    let mut clash = |list: &[usize]| {
         for (i, &a) in list.iter().enumerate() {
             for &b in &list[i + 1..] {
-                clash(a, b);
-            }
-        }
-    }
-    for list in globals.values() {
-        for (i, (a, pa)) in list.iter().enumerate() {
-            for (b, pb) in &list[i + 1..] {
-                // One persistent declared in two modules is one object.
-                let same_persistent = pa.is_some() && pa == pb;
-                if !same_persistent {
-                    clash(*a, *b);
+                if a != b {
+                    out.entry(a).or_default().push(b);
+                    out.entry(b).or_default().push(a);
                 }
             }
         }
+    };
+    for list in modules.values() {
+        clash(list);
     }
+    clash(&entries);
     for list in out.values_mut() {
         list.sort_unstable();
         list.dedup();

@@ -16,6 +16,9 @@ use std::collections::{BTreeMap, HashMap, HashSet};
 use std::sync::Arc;
 
 use crate::check::StmtCache;
+use crate::controller::{
+    ControllerInfo, ControllerOverride, is_controller_info_name, parse_controller_info,
+};
 use crate::diagnostic::Diagnostic;
 use crate::layout::{Grouping, locate};
 use crate::task::{
@@ -54,6 +57,10 @@ pub struct Workspace {
     /// its files was replaced, in the task's order: rebuilding it needs no
     /// search for its members (their set did not change).
     members: HashMap<String, Vec<Arc<Unit>>>,
+    /// What backups say about their controllers (`BACKINFO`), by file path.
+    systems: BTreeMap<String, ControllerInfo>,
+    /// The controller as the project configuration describes it.
+    controller: ControllerOverride,
 }
 
 struct Checked {
@@ -205,13 +212,49 @@ impl Workspace {
     /// signals) or `MOC.cfg` (mechanical units); other `.cfg` files are read
     /// for the same sections. It applies to the tasks below its folder (below
     /// the backup for `SYSPAR/*.cfg`).
+    /// `BACKINFO/backinfo.txt` and `BACKINFO/system.xml` name the RobotWare
+    /// version and options of the backup's controller.
     pub fn set_config(&mut self, path: &str, text: &str) {
-        self.configs.insert(path.to_owned(), parse_config(text));
+        if is_controller_info_name(path) {
+            let info = parse_controller_info(path, text, crate::catalogue::base());
+            self.systems.insert(path.to_owned(), info);
+        } else {
+            self.configs.insert(path.to_owned(), parse_config(text));
+        }
         self.forget_all_tasks();
         self.refresh_adoption();
     }
 
+    /// Sets the controller of the project configuration (`[controller]` of
+    /// `rapid.toml` or the editor's settings); each key it sets wins over
+    /// what a backup says.
+    pub fn set_controller(&mut self, controller: ControllerOverride) {
+        if self.controller != controller {
+            self.controller = controller;
+            self.forget_all_tasks();
+        }
+    }
+
+    /// What the backups and the project configuration say about the
+    /// controller of the task `key`.
+    pub fn controller_of_task(&self, key: &str) -> ControllerInfo {
+        let mut info = ControllerInfo::default();
+        for (path, system) in &self.systems {
+            if key.starts_with(config_root(path)) {
+                info.merge(system);
+            }
+        }
+        let sel = info.selection(&self.controller);
+        ControllerInfo {
+            robotware: sel.robotware,
+            options: sel.options().to_vec(),
+        }
+    }
+
     pub fn remove_config(&mut self, path: &str) {
+        if self.systems.remove(path).is_some() {
+            self.forget_all_tasks();
+        }
         if self.configs.remove(path).is_some() {
             self.forget_all_tasks();
             self.refresh_adoption();
@@ -309,6 +352,11 @@ impl Workspace {
         let mut task = Task::new(key.clone(), units, signals);
         task.grouping = grouping;
         task.complete = complete;
+        let controller = self.controller_of_task(&key);
+        task.set_catalogue(&crate::catalogue::Selection::new(
+            controller.robotware,
+            controller.options,
+        ));
         task.mecunits = mecunits;
         task.interface ^= config;
         if let Some(controller) = controller_of(&key).filter(|_| grouping == Grouping::Backup) {
@@ -523,8 +571,12 @@ fn parse_program(path: &str, xml: &str) -> Vec<String> {
 fn config_root(path: &str) -> &str {
     let dir = path.rsplit_once(['/', '\\']).map_or("", |(d, _)| d);
     match dir.rsplit_once(['/', '\\']) {
-        Some((parent, last)) if last.eq_ignore_ascii_case("syspar") => parent,
-        None if dir.eq_ignore_ascii_case("syspar") => "",
+        Some((parent, last))
+            if last.eq_ignore_ascii_case("syspar") || last.eq_ignore_ascii_case("backinfo") =>
+        {
+            parent
+        }
+        None if dir.eq_ignore_ascii_case("syspar") || dir.eq_ignore_ascii_case("backinfo") => "",
         _ => dir,
     }
 }

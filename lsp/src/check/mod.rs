@@ -248,11 +248,13 @@ fn run_inner(args: CheckArgs, stderr: &mut impl Write) -> Result<ExitCode, Strin
 
     lap("configuration and discovery", &mut clock);
     let progress = progress_bar(found.files.len());
+    let controller = config.controller.resolve().unwrap_or_default();
     let mut outcomes = check_files(
         &found.files,
         &found.configs,
         &found.programs,
         &extra,
+        &controller,
         &progress,
     );
     let mut fixed = 0;
@@ -270,6 +272,7 @@ fn run_inner(args: CheckArgs, stderr: &mut impl Write) -> Result<ExitCode, Strin
                 &found.configs,
                 &found.programs,
                 &extra,
+                &controller,
                 &progress,
             );
         }
@@ -438,6 +441,7 @@ pub fn check_files(
     configs: &[PathBuf],
     programs: &[PathBuf],
     extra: &Discovery,
+    controller: &rapid_analyzer::controller::ControllerOverride,
     progress: &ProgressBar,
 ) -> Vec<Outcome> {
     let mut clock = std::time::Instant::now();
@@ -445,7 +449,7 @@ pub fn check_files(
     // on a thread that parsing leaves idle (a single large file is parsed
     // on one thread).
     rayon::spawn(|| {
-        let _ = rapid_analyzer::catalogue::catalogue();
+        let _ = rapid_analyzer::catalogue::base();
     });
     // Read, decode and parse each file in one parallel pass, largest files
     // first so that no big module is left to one thread at the end.
@@ -471,6 +475,7 @@ pub fn check_files(
     let (read, units): (Vec<_>, Vec<_>) = parsed.into_iter().map(|(_, r, u)| (r, u)).unzip();
     lap("reading, decoding, parsing and item trees", &mut clock);
     let mut workspace = Workspace::new();
+    workspace.set_controller(controller.clone());
     for path in programs {
         if let Ok(bytes) = std::fs::read(path) {
             workspace.set_program(&unit_path(path), &String::from_utf8_lossy(&bytes));

@@ -466,6 +466,7 @@ impl Backend {
         );
         problems.extend(more);
         self.mutate("applying settings", |s| {
+            s.ws.set_controller(settings.config.controller.resolve().unwrap_or_default());
             s.settings = settings;
             s.config_generation += 1;
         });
