@@ -11,6 +11,7 @@ pub mod ide;
 pub mod items;
 pub mod lower;
 pub mod names;
+pub mod nesting;
 pub mod rules;
 pub mod split_parse;
 pub mod syntax;

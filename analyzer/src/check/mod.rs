@@ -49,7 +49,7 @@ pub fn check_unit_cached(
     cx.cache.reused = 0;
     cx.cache_enabled = true;
     cx.check();
-    let diags = finish(std::mem::take(&mut cx.diags));
+    let diags = finish(u, std::mem::take(&mut cx.diags));
     let mut cache = std::mem::take(&mut cx.cache);
     // Keep only what this check met (as if the cache were made afresh).
     let generation = cache.generation;
@@ -301,12 +301,14 @@ pub fn merge_unit_check(task: &Task, unit: usize, results: Vec<ShareResult>) -> 
         }
         decls::check_unused_locals_of_module(&mut cx, module);
     }
-    finish(std::mem::take(&mut cx.diags))
+    finish(u, std::mem::take(&mut cx.diags))
 }
 
 /// Sorts a unit's findings by position and keeps the first report of each
-/// unconfigured signal.
-fn finish(mut diags: Vec<Diagnostic>) -> Vec<Diagnostic> {
+/// unconfigured signal, and none about text nested too deep to analyse
+/// ([`crate::nesting::keeps`]).
+fn finish(u: &Unit, mut diags: Vec<Diagnostic>) -> Vec<Diagnostic> {
+    diags.retain(|d| crate::nesting::keeps(&u.text, u.cuts(), d));
     diags.sort_by_key(|d| (d.range.start, d.range.end));
     // An unconfigured signal is reported once per name: at its first use.
     let mut seen = HashSet::new();
