@@ -314,10 +314,7 @@ pub fn task_key(path: &str) -> String {
     let normal = path.replace('\\', "/");
     let parts: Vec<&str> = normal.split('/').collect();
     for i in (0..parts.len().saturating_sub(1)).rev() {
-        let p = parts[i];
-        if p.len() > 4
-            && p[..4].eq_ignore_ascii_case("task")
-            && p[4..].bytes().all(|b| b.is_ascii_digit())
+        if is_task_folder(parts[i])
             && i > 0
             && parts[i - 1].eq_ignore_ascii_case("rapid")
         {
@@ -330,14 +327,21 @@ pub fn task_key(path: &str) -> String {
     }
 }
 
+/// Is this folder name a backup's task folder (`TASK` and digits, any
+/// case)? Compared as bytes: a folder name may be anything (`josé`, `机器人`).
+fn is_task_folder(name: &str) -> bool {
+    let b = name.as_bytes();
+    b.len() > 4
+        && b[..4].eq_ignore_ascii_case(b"task")
+        && b[4..].iter().all(u8::is_ascii_digit)
+}
+
 /// The controller a task belongs to: for the key of a backup's
 /// `RAPID/TASKn` folder ([`task_key`]), the key up to and including
 /// `RAPID/`; `None` for any other task.
 pub fn controller_of(key: &str) -> Option<&str> {
     let (parent, last) = key.rsplit_once('/')?;
-    let is_task = last.len() > 4
-        && last[..4].eq_ignore_ascii_case("task")
-        && last[4..].bytes().all(|b| b.is_ascii_digit());
+    let is_task = is_task_folder(last);
     let rapid = parent.rsplit('/').next()?;
     (is_task && rapid.eq_ignore_ascii_case("rapid")).then(|| &key[..=parent.len()])
 }
@@ -743,6 +747,24 @@ mod tests {
             task_key(r"c:\b\RAPID\TASK1\PROGMOD\a.mod"),
             "c:/b/RAPID/TASK1"
         );
+    }
+
+    #[test]
+    fn folder_names_in_any_script_are_grouped_without_a_panic() {
+        // Folder names whose fourth byte is inside a character.
+        for (path, key) in [
+            ("/home/josé/robot/Main.mod", "/home/josé/robot"),
+            ("/home/josé/RAPID/TASK1/Main.mod", "/home/josé/RAPID/TASK1"),
+            ("/机器人程序/RAPID/TASK1/PROGMOD/A.mod", "/机器人程序/RAPID/TASK1"),
+            ("/機械/RAPID/タスク1/A.mod", "/機械/RAPID/タスク1"),
+            ("/b/RAPID/TASKé/A.mod", "/b/RAPID/TASKé"),
+            ("/b/RAPID/tasK2/A.mod", "/b/RAPID/tasK2"),
+        ] {
+            assert_eq!(task_key(path), key, "{path}");
+        }
+        assert_eq!(controller_of("/机器人/RAPID/TASK1"), Some("/机器人/RAPID/"));
+        assert_eq!(controller_of("/b/RAPID/josé"), None);
+        assert_eq!(controller_of("/b/RAPID/机器人程"), None);
     }
 
     #[test]

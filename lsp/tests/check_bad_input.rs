@@ -150,3 +150,53 @@ fn a_50_mb_file_is_handled() {
     assert!(text(&out.stdout).is_empty(), "{}", show(&out));
     assert_eq!(out.status.code(), Some(0), "{}", show(&out));
 }
+
+#[test]
+fn fifos_and_devices_named_like_modules_are_skipped_with_a_word() {
+    let dir = scratch("fifo");
+    std::fs::write(dir.join("Good.mod"), GOOD).expect("written");
+    let fifo = |name: &str| {
+        let made = std::process::Command::new("mkfifo")
+            .arg(dir.join(name))
+            .status()
+            .expect("mkfifo runs");
+        assert!(made.success(), "mkfifo {name}");
+    };
+    fifo("Pipe.mod");
+    fifo("EIO.cfg");
+    std::os::unix::fs::symlink("/dev/null", dir.join("Null.sys")).expect("link");
+    // Reading any of them would block for ever or read nothing: each is
+    // named, the rest is checked, and the run is not held up.
+    let out = assert_rest_checked(&dir, "Pipe.mod: skipped: a FIFO (named pipe), not a file", 0);
+    let stderr = text(&out.stderr);
+    assert!(stderr.contains("EIO.cfg: skipped: a FIFO"), "{}", show(&out));
+    assert!(
+        stderr.contains("Null.sys: skipped: a character device"),
+        "{}",
+        show(&out)
+    );
+    // Named on the command line, too.
+    let out = check(&dir, &["Pipe.mod", "Good.mod", "--format", "concise"]);
+    assert!(text(&out.stderr).contains("Pipe.mod: skipped: a FIFO"), "{}", show(&out));
+    assert_eq!(out.status.code(), Some(0), "{}", show(&out));
+}
+
+#[test]
+fn folders_named_in_any_script_are_checked() {
+    // The fourth byte of `josé` and of `机器人程序` is inside a character
+    // (task grouping once sliced folder names there).
+    for folder in ["home/josé/robot", "机器人程序/RAPID/TASK1/PROGMOD", "Müller Straße"] {
+        let dir = scratch("non-ascii");
+        let at = dir.join(folder);
+        std::fs::create_dir_all(&at).expect("folder");
+        std::fs::write(at.join("Good.mod"), GOOD).expect("written");
+        let out = check(&dir, &["--format", "concise", folder]);
+        assert!(!text(&out.stderr).contains("panicked"), "{}", show(&out));
+        assert!(
+            text(&out.stdout).contains("Good.mod:3:9: warning[W101]"),
+            "{}",
+            show(&out)
+        );
+        assert_eq!(out.status.code(), Some(0), "{}", show(&out));
+    }
+}

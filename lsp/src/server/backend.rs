@@ -348,7 +348,7 @@ impl Backend {
         }
         self.mutate("indexing", |s| {
             for program in &found.programs {
-                if let Ok(bytes) = std::fs::read(program) {
+                if let Ok(bytes) = crate::source::read_regular(program) {
                     s.ws.set_program(&program.to_string_lossy(), &String::from_utf8_lossy(&bytes));
                 }
             }
@@ -452,7 +452,7 @@ impl Backend {
         let root = roots.first().cloned().unwrap_or_default();
         let mut problems = Vec::new();
         let file =
-            crate::config::find(&root).and_then(|path| match std::fs::read_to_string(&path) {
+            crate::config::find(&root).and_then(|path| match crate::config::read_text(&path) {
                 Ok(text) => Some((path, text)),
                 Err(e) => {
                     problems.push(format!("{}: {e}", path.display()));
