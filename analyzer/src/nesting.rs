@@ -10,8 +10,10 @@
 //!
 //! So the depth is bounded once, where a unit gets its tree: a tree deeper
 //! than [`MAX_DEPTH`] is parsed again from a copy of the text in which each
-//! over-deep part is replaced by a FlexPendant placeholder of the same
-//! syntactic kind (`<EXP>` for an expression, `<SMT>` for a statement),
+//! over-deep part (the outermost statement or expression around the
+//! deepest point: a routine's statement, a declaration's value) is replaced
+//! by a FlexPendant placeholder of the same syntactic kind (`<EXP>` for an
+//! expression, `<SMT>` for a statement),
 //! padded with blanks so that every byte offset, line and column stays where
 //! it was. The unit keeps its real text; its tree is that of the copy, and
 //! each replaced part (a [`Cut`]) is reported once as `nesting-too-deep`.
@@ -280,8 +282,8 @@ fn contains_word(hay: &[u8], word: &[u8]) -> bool {
     })
 }
 
-/// Walks `tree` without recursion: the parts to replace, each the deepest
-/// expression or statement above a node at [`MAX_DEPTH`] levels. Only
+/// Walks `tree` without recursion: the parts to replace, each the
+/// outermost expression or statement above a node at [`MAX_DEPTH`] levels. Only
 /// subtrees with enough nodes to reach that depth are entered (a node's
 /// count of descendants is stored in it), so a normal module costs a walk
 /// over its routines and large statements, not over every node.
@@ -293,13 +295,25 @@ fn survey(tree: &Tree) -> Vec<Cut> {
     let mut depth = 0;
     loop {
         if depth >= MAX_DEPTH {
-            // The deepest expression or statement above; if there is none
-            // (broken code), the top-level item, blanked.
+            // The outermost expression or statement above (its statement
+            // in a routine, or a declaration's value); if there is none
+            // (broken code), the top-level item, blanked. Not the
+            // innermost: each of hundreds of statements around it would
+            // still be read whole by the checks of its text.
             let mut up = cursor.clone();
             let mut levels = 0;
-            while cut_kind(kinds, up.node()).is_none() && levels + 1 < depth {
+            let mut outermost = None;
+            while levels + 1 < depth {
+                if cut_kind(kinds, up.node()).is_some() {
+                    outermost = Some(levels);
+                }
                 up.goto_parent();
                 levels += 1;
+            }
+            let levels = outermost.unwrap_or(levels);
+            let mut up = cursor.clone();
+            for _ in 0..levels {
+                up.goto_parent();
             }
             let cut = up.node();
             out.push(Cut {

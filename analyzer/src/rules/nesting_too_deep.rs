@@ -5,10 +5,11 @@ crate::declare_rule! {
     /// rapid reads at most 256 levels of nesting (a sum of hundreds of terms,
     /// calls inside calls, `IF` inside `IF` hundreds of times, nested
     /// aggregates). Real programs stay far below that; generated code may
-    /// not. The innermost expression or statement at the limit is left out of
-    /// the analysis, with everything it holds: no other finding is reported
-    /// inside it, and names written there count neither as uses nor as
-    /// unused. The rest of the module is checked as usual.
+    /// not. The statement of the routine that holds such nesting (or the
+    /// value of a declaration) is left out of the analysis, with everything
+    /// it holds: no other finding is reported inside it, and names written
+    /// there count neither as uses nor as unused. The rest of the module is
+    /// checked as usual.
     ///
     /// ### Why
     /// Deeper trees would exhaust the analyzer's stack and take the language
