@@ -442,4 +442,3 @@ fn cut_kind(kinds: &Kinds, node: Node<'_>) -> Option<CutKind> {
         None
     }
 }
-

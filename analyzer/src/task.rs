@@ -314,10 +314,7 @@ pub fn task_key(path: &str) -> String {
     let normal = path.replace('\\', "/");
     let parts: Vec<&str> = normal.split('/').collect();
     for i in (0..parts.len().saturating_sub(1)).rev() {
-        if is_task_folder(parts[i])
-            && i > 0
-            && parts[i - 1].eq_ignore_ascii_case("rapid")
-        {
+        if is_task_folder(parts[i]) && i > 0 && parts[i - 1].eq_ignore_ascii_case("rapid") {
             return parts[..=i].join("/");
         }
     }
@@ -331,9 +328,7 @@ pub fn task_key(path: &str) -> String {
 /// case)? Compared as bytes: a folder name may be anything (`josé`, `机器人`).
 fn is_task_folder(name: &str) -> bool {
     let b = name.as_bytes();
-    b.len() > 4
-        && b[..4].eq_ignore_ascii_case(b"task")
-        && b[4..].iter().all(u8::is_ascii_digit)
+    b.len() > 4 && b[..4].eq_ignore_ascii_case(b"task") && b[4..].iter().all(u8::is_ascii_digit)
 }
 
 /// The controller a task belongs to: for the key of a backup's
@@ -755,7 +750,10 @@ mod tests {
         for (path, key) in [
             ("/home/josé/robot/Main.mod", "/home/josé/robot"),
             ("/home/josé/RAPID/TASK1/Main.mod", "/home/josé/RAPID/TASK1"),
-            ("/机器人程序/RAPID/TASK1/PROGMOD/A.mod", "/机器人程序/RAPID/TASK1"),
+            (
+                "/机器人程序/RAPID/TASK1/PROGMOD/A.mod",
+                "/机器人程序/RAPID/TASK1",
+            ),
             ("/機械/RAPID/タスク1/A.mod", "/機械/RAPID/タスク1"),
             ("/b/RAPID/TASKé/A.mod", "/b/RAPID/TASKé"),
             ("/b/RAPID/tasK2/A.mod", "/b/RAPID/tasK2"),

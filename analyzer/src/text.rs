@@ -363,7 +363,11 @@ mod tests {
                     .rev()
                     .find(|m| m.0 <= at)
                     .map_or(start, |m| m.0.max(start));
-                assert!(at - mark < MARK_EVERY + 4, "{at} is {} from a mark", at - mark);
+                assert!(
+                    at - mark < MARK_EVERY + 4,
+                    "{at} is {} from a mark",
+                    at - mark
+                );
                 checked += 1;
             }
             at += 97;

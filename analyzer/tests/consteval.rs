@@ -318,7 +318,11 @@ fn deep_nesting_is_refused_without_a_crash() {
     let outer = value_at(&task, unit, offset - 1 - depth);
     assert_eq!(inner, None);
     assert_eq!(outer, None);
-    let codes: Vec<&str> = task.units[unit].syntax.iter().map(|d| d.rule.code).collect();
+    let codes: Vec<&str> = task.units[unit]
+        .syntax
+        .iter()
+        .map(|d| d.rule.code)
+        .collect();
     assert_eq!(codes, ["W001"]);
     let text = &task.units[unit].text;
     let y = text.rfind("2 + 3").map_or(0, |at| at + "2 + 3".len());

@@ -167,9 +167,17 @@ fn fifos_and_devices_named_like_modules_are_skipped_with_a_word() {
     std::os::unix::fs::symlink("/dev/null", dir.join("Null.sys")).expect("link");
     // Reading any of them would block for ever or read nothing: each is
     // named, the rest is checked, and the run is not held up.
-    let out = assert_rest_checked(&dir, "Pipe.mod: skipped: a FIFO (named pipe), not a file", 0);
+    let out = assert_rest_checked(
+        &dir,
+        "Pipe.mod: skipped: a FIFO (named pipe), not a file",
+        0,
+    );
     let stderr = text(&out.stderr);
-    assert!(stderr.contains("EIO.cfg: skipped: a FIFO"), "{}", show(&out));
+    assert!(
+        stderr.contains("EIO.cfg: skipped: a FIFO"),
+        "{}",
+        show(&out)
+    );
     assert!(
         stderr.contains("Null.sys: skipped: a character device"),
         "{}",
@@ -177,7 +185,11 @@ fn fifos_and_devices_named_like_modules_are_skipped_with_a_word() {
     );
     // Named on the command line, too.
     let out = check(&dir, &["Pipe.mod", "Good.mod", "--format", "concise"]);
-    assert!(text(&out.stderr).contains("Pipe.mod: skipped: a FIFO"), "{}", show(&out));
+    assert!(
+        text(&out.stderr).contains("Pipe.mod: skipped: a FIFO"),
+        "{}",
+        show(&out)
+    );
     assert_eq!(out.status.code(), Some(0), "{}", show(&out));
 }
 
@@ -185,7 +197,11 @@ fn fifos_and_devices_named_like_modules_are_skipped_with_a_word() {
 fn folders_named_in_any_script_are_checked() {
     // The fourth byte of `josé` and of `机器人程序` is inside a character
     // (task grouping once sliced folder names there).
-    for folder in ["home/josé/robot", "机器人程序/RAPID/TASK1/PROGMOD", "Müller Straße"] {
+    for folder in [
+        "home/josé/robot",
+        "机器人程序/RAPID/TASK1/PROGMOD",
+        "Müller Straße",
+    ] {
         let dir = scratch("non-ascii");
         let at = dir.join(folder);
         std::fs::create_dir_all(&at).expect("folder");
@@ -247,7 +263,10 @@ fn many_findings_on_one_long_line_cost_each_a_bounded_share() {
     assert!(stdout.contains(&last), "{last}");
     let out = check_within(&dir, &["--format", "human"], limit);
     assert_eq!(out.status.code(), Some(1), "{}", text(&out.stderr));
-    assert_eq!(text(&out.stdout).matches("[duplicate-declaration]").count(), n - 1);
+    assert_eq!(
+        text(&out.stdout).matches("[duplicate-declaration]").count(),
+        n - 1
+    );
     assert!(
         out.stdout.len() < n * 1200,
         "{} bytes of report for {n} findings",

@@ -205,7 +205,11 @@ fn a_program_in_a_folder_named_in_any_script() {
         for file in [&module, &dir] {
             let file = file.to_string_lossy();
             let (code, out, err) = eval(&["--file", &file, "k * 2"]);
-            assert_eq!((code, out.trim(), err.as_str()), (Some(0), "6", ""), "{file}");
+            assert_eq!(
+                (code, out.trim(), err.as_str()),
+                (Some(0), "6", ""),
+                "{file}"
+            );
         }
         let _ = std::fs::remove_dir_all(
             std::env::temp_dir().join(format!("rapid-eval-{}", std::process::id())),
@@ -218,7 +222,10 @@ fn an_expression_nested_too_deep_is_refused_with_a_message() {
     // (An argument holds at most 128 KB.)
     let deep = format!("{}1{}", "(".repeat(30_000), ")".repeat(30_000));
     let (code, out, err) = eval(&[&deep]);
-    assert!(!err.contains("overflow") && !err.contains("panicked"), "{err}");
+    assert!(
+        !err.contains("overflow") && !err.contains("panicked"),
+        "{err}"
+    );
     assert_eq!(code, Some(2), "{out}{err}");
     assert!(err.contains("nest"), "{err}");
 }

@@ -50,26 +50,71 @@ pub fn deep(depth: usize) -> Vec<Input> {
         format!("{}{inner}{}", open.repeat(d), close.repeat(d))
     };
     let cases: Vec<(&str, String)> = vec![
-        ("calls", module(var, &format!("    x := {};", nest("Abs(", "1", ")")))),
-        ("sum", module(var, &format!("    x := {}1;", "1+".repeat(d)))),
-        ("product", module(var, &format!("    x := 2{};", "*2".repeat(d)))),
-        ("parens", module(var, &format!("    x := {};", nest("(", "1", ")")))),
-        ("signs", module(var, &format!("    x := {}1;", "-".repeat(d)))),
-        ("not", module(var, &format!("    b := {}TRUE;", "NOT ".repeat(d)))),
-        ("indexes", module(var, &format!("    x := {};", nest("a{", "1", "}")))),
-        ("aggregates", module(var, &format!("    x := {};", nest("[", "1", "]")))),
-        ("components", module(var, &format!("    x := a{}.c;", ".c".repeat(d)))),
-        ("ifs", module(var, &nest("IF b THEN\n", "x := 1;\n", "ENDIF\n"))),
-        ("compact-ifs", module(var, &format!("    {}x := 1;", "IF b ".repeat(d)))),
-        ("whiles", module(var, &nest("WHILE b DO\n", "x := 1;\n", "ENDWHILE\n"))),
-        ("fors", module(var, &nest("FOR i FROM 1 TO 2 DO\n", "x := i;\n", "ENDFOR\n"))),
+        (
+            "calls",
+            module(var, &format!("    x := {};", nest("Abs(", "1", ")"))),
+        ),
+        (
+            "sum",
+            module(var, &format!("    x := {}1;", "1+".repeat(d))),
+        ),
+        (
+            "product",
+            module(var, &format!("    x := 2{};", "*2".repeat(d))),
+        ),
+        (
+            "parens",
+            module(var, &format!("    x := {};", nest("(", "1", ")"))),
+        ),
+        (
+            "signs",
+            module(var, &format!("    x := {}1;", "-".repeat(d))),
+        ),
+        (
+            "not",
+            module(var, &format!("    b := {}TRUE;", "NOT ".repeat(d))),
+        ),
+        (
+            "indexes",
+            module(var, &format!("    x := {};", nest("a{", "1", "}"))),
+        ),
+        (
+            "aggregates",
+            module(var, &format!("    x := {};", nest("[", "1", "]"))),
+        ),
+        (
+            "components",
+            module(var, &format!("    x := a{}.c;", ".c".repeat(d))),
+        ),
+        (
+            "ifs",
+            module(var, &nest("IF b THEN\n", "x := 1;\n", "ENDIF\n")),
+        ),
+        (
+            "compact-ifs",
+            module(var, &format!("    {}x := 1;", "IF b ".repeat(d))),
+        ),
+        (
+            "whiles",
+            module(var, &nest("WHILE b DO\n", "x := 1;\n", "ENDWHILE\n")),
+        ),
+        (
+            "fors",
+            module(
+                var,
+                &nest("FOR i FROM 1 TO 2 DO\n", "x := i;\n", "ENDFOR\n"),
+            ),
+        ),
         (
             "tests",
             module(var, &nest("TEST x\nCASE 1:\n", "x := 1;\n", "ENDTEST\n")),
         ),
         (
             "const-sum",
-            format!("MODULE Deep\n  CONST num c := {}1;\nENDMODULE\n", "1+".repeat(d)),
+            format!(
+                "MODULE Deep\n  CONST num c := {}1;\nENDMODULE\n",
+                "1+".repeat(d)
+            ),
         ),
         (
             "const-aggregate",
@@ -80,12 +125,24 @@ pub fn deep(depth: usize) -> Vec<Input> {
         ),
         (
             "routine-call-args",
-            module(var, &format!("    MoveL {}, v100, z10, tool0;", nest("Offs(", "p", ",0,0,0)"))),
+            module(
+                var,
+                &format!(
+                    "    MoveL {}, v100, z10, tool0;",
+                    nest("Offs(", "p", ",0,0,0)")
+                ),
+            ),
         ),
         // Unclosed: the parser recovers around errors at every level.
-        ("unclosed-parens", module(var, &format!("    x := {}1;", "(".repeat(d)))),
+        (
+            "unclosed-parens",
+            module(var, &format!("    x := {}1;", "(".repeat(d))),
+        ),
         ("unclosed-ifs", module(var, &"IF b THEN\n".repeat(d))),
-        ("stray-closers", module(var, &format!("    x := 1{};", ")]}".repeat(d)))),
+        (
+            "stray-closers",
+            module(var, &format!("    x := 1{};", ")]}".repeat(d))),
+        ),
     ];
     cases
         .into_iter()
@@ -123,13 +180,34 @@ pub fn chains(n: usize) -> Vec<Input> {
     );
     let odd = "\u{feff}MODULE Ödd\n  VAR string s := \"é\u{feff}机器人\";\n  PROC main()\n    s := s\u{feff}+ \"\\\\\";\n    TPWrite s;\r\n  ENDPROC\rENDMODULE\0tail";
     vec![
-        Input { name: format!("const-chain-{n}"), text: consts },
-        Input { name: format!("alias-chain-{n}"), text: aliases },
-        Input { name: format!("record-chain-{n}"), text: records },
-        Input { name: "cycles".to_owned(), text: cycle },
-        Input { name: format!("duplicates-{n}"), text: duplicates },
-        Input { name: format!("labels-{n}"), text: labels },
-        Input { name: "odd-text".to_owned(), text: odd.to_owned() },
+        Input {
+            name: format!("const-chain-{n}"),
+            text: consts,
+        },
+        Input {
+            name: format!("alias-chain-{n}"),
+            text: aliases,
+        },
+        Input {
+            name: format!("record-chain-{n}"),
+            text: records,
+        },
+        Input {
+            name: "cycles".to_owned(),
+            text: cycle,
+        },
+        Input {
+            name: format!("duplicates-{n}"),
+            text: duplicates,
+        },
+        Input {
+            name: format!("labels-{n}"),
+            text: labels,
+        },
+        Input {
+            name: "odd-text".to_owned(),
+            text: odd.to_owned(),
+        },
     ]
 }
 
@@ -137,8 +215,31 @@ pub fn chains(n: usize) -> Vec<Input> {
 pub fn mutate(text: &str, rng: &mut Rng) -> String {
     let mut bytes = text.as_bytes().to_vec();
     const TOKENS: &[&str] = &[
-        "(", ")", "[", "]", "{", "}", ";", ":=", "IF ", "ENDIF", "PROC ", "ENDPROC", "MODULE ",
-        "ENDMODULE", "\"", "!", "\\", "<EXP>", "é", "\u{feff}", "\r", "\n", "%", "GOTO ", "\0",
+        "(",
+        ")",
+        "[",
+        "]",
+        "{",
+        "}",
+        ";",
+        ":=",
+        "IF ",
+        "ENDIF",
+        "PROC ",
+        "ENDPROC",
+        "MODULE ",
+        "ENDMODULE",
+        "\"",
+        "!",
+        "\\",
+        "<EXP>",
+        "é",
+        "\u{feff}",
+        "\r",
+        "\n",
+        "%",
+        "GOTO ",
+        "\0",
     ];
     for _ in 0..1 + rng.below(4) {
         let at = rng.below(bytes.len() + 1);

@@ -28,7 +28,11 @@ fn on_worker<R: Send + 'static>(name: &str, f: impl FnOnce() -> R + Send + 'stat
 
 /// Everything the tools do with one file; returns the codes found.
 fn exercise(input: &Input, samples: usize) -> Vec<&'static str> {
-    let unit = Arc::new(Unit::new(format!("t/{}.mod", input.name), input.text.clone(), None));
+    let unit = Arc::new(Unit::new(
+        format!("t/{}.mod", input.name),
+        input.text.clone(),
+        None,
+    ));
     let task = Task::new("t".to_owned(), vec![unit.clone()], None);
     let diags = rapid_analyzer::workspace::diagnostics_of(&task, &unit);
     // As rapid check runs a large file: in shares, merged. Same findings.
@@ -39,12 +43,20 @@ fn exercise(input: &Input, samples: usize) -> Vec<&'static str> {
     split.sort_by_key(|d| (d.range.start, d.range.end));
     let mut whole = diags.clone();
     whole.sort_by_key(|d| (d.range.start, d.range.end));
-    assert_eq!(split, whole, "{}: shares differ from the whole check", input.name);
+    assert_eq!(
+        split, whole,
+        "{}: shares differ from the whole check",
+        input.name
+    );
     let len = input.text.len();
     let mut rng = Rng::new(len as u64);
     let mut offsets: Vec<usize> = (0..samples).map(|_| rng.below(len + 2)).collect();
     offsets.extend([0, len / 2, len, len + 5]);
-    let tasks = vec![Arc::new(Task::new("t".to_owned(), vec![unit.clone()], None))];
+    let tasks = vec![Arc::new(Task::new(
+        "t".to_owned(),
+        vec![unit.clone()],
+        None,
+    ))];
     // FIXME(issue 16): finding every use of a name resolves each use
     // through tree-sitter's parent links, whose cost grows with the width
     // of the nodes around it: thousands of uses of one name in one routine
@@ -84,7 +96,10 @@ fn deep_inputs_give_a_diagnostic_and_every_feature_survives() {
         // Every kind nests past the limit, except text the parser cannot
         // nest (unclosed or stray brackets, compact IFs inside compact IFs
         // make syntax errors, not depth).
-        if !["unclosed", "stray", "compact"].iter().any(|k| name.contains(k)) {
+        if !["unclosed", "stray", "compact"]
+            .iter()
+            .any(|k| name.contains(k))
+        {
             assert!(codes.contains(&"W001"), "{name}: {codes:?}");
         }
     }
@@ -96,7 +111,11 @@ fn chains_cycles_and_duplicates_survive() {
         let name = input.name.clone();
         let codes = on_worker(&name, move || exercise(&input, 12));
         if name.starts_with("duplicates") {
-            assert_eq!(codes.iter().filter(|c| **c == "E106").count(), 2_999, "{name}");
+            assert_eq!(
+                codes.iter().filter(|c| **c == "E106").count(),
+                2_999,
+                "{name}"
+            );
         }
     }
 }

@@ -60,7 +60,8 @@ pub fn discover_with(paths: &[PathBuf], excluded: Excluder) -> Discovery {
             }
             Ok(meta) if !meta.is_dir() => {
                 if !excluded(root, false) {
-                    out.warnings.push((root.clone(), not_a_file(&meta.file_type())));
+                    out.warnings
+                        .push((root.clone(), not_a_file(&meta.file_type())));
                 }
                 continue;
             }
@@ -88,7 +89,8 @@ pub fn discover_with(paths: &[PathBuf], excluded: Excluder) -> Discovery {
                         out.files.push(entry.into_path());
                     } else if is_file && is_controller_config_name(&name) {
                         out.configs.push(entry.into_path());
-                    } else if let Some(kind) = entry.file_type().filter(|t| !t.is_file() && !t.is_dir())
+                    } else if let Some(kind) =
+                        entry.file_type().filter(|t| !t.is_file() && !t.is_dir())
                         && (is_rapid_file_name(&name) || is_controller_config_name(&name))
                     {
                         // A FIFO, a socket or a device (or a link to one)

@@ -175,7 +175,10 @@ fn render_one(renderer: &Renderer, c: &Checked, d: &Diagnostic) -> String {
     let (mut before, mut after) = ("", "");
     if end - start > MOST_BYTES {
         let line_end = file.lines.line_range(first, &file.text).end;
-        let from = floor_boundary(&file.text, d.range.start.saturating_sub(MOST_BYTES / 4).max(start));
+        let from = floor_boundary(
+            &file.text,
+            d.range.start.saturating_sub(MOST_BYTES / 4).max(start),
+        );
         let to = floor_boundary(
             &file.text,
             (d.range.end.max(d.range.start) + MOST_BYTES / 4)

@@ -1,7 +1,7 @@
 //! The protocol handlers.
 
-use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::collections::{HashMap, HashSet};
+use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -487,7 +487,11 @@ impl Backend {
                         .await;
                 }
             }
-            if changed.is_empty() && new_files.is_empty() && new_configs.is_empty() && !settings_changed {
+            if changed.is_empty()
+                && new_files.is_empty()
+                && new_configs.is_empty()
+                && !settings_changed
+            {
                 continue;
             }
             self.mutate("reloading files", |s| {

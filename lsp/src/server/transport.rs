@@ -194,11 +194,7 @@ pub fn check_message(body: &[u8]) -> Result<(), Value> {
         && (id.is_string() || id.is_number())
         && !KNOWN_DOLLAR_REQUESTS.contains(&method)
     {
-        return Err(error(
-            id,
-            -32601,
-            format!("method not found: {method}"),
-        ));
+        return Err(error(id, -32601, format!("method not found: {method}")));
     }
     let is_request = serde_json::from_value::<Request>(value.clone()).is_ok();
     let is_response = !is_request && serde_json::from_value::<Response>(value).is_ok();
@@ -370,7 +366,10 @@ mod tests {
         assert_eq!(unknown["error"]["code"], -32601);
         assert_eq!(unknown["id"], "a");
         assert!(check_message(br#"{"jsonrpc":"2.0","method":"$/unknown"}"#).is_ok());
-        assert!(check_message(br#"{"jsonrpc":"2.0","method":"$/cancelRequest","params":{"id":1}}"#).is_ok());
+        assert!(
+            check_message(br#"{"jsonrpc":"2.0","method":"$/cancelRequest","params":{"id":1}}"#)
+                .is_ok()
+        );
         let invalid = check_message(br#"{"id":7,"hello":"world"}"#).expect_err("bad");
         assert_eq!(invalid["error"]["code"], -32600);
         assert_eq!(invalid["id"], 7);

@@ -156,4 +156,3 @@ pub fn file_uri(path: &Path) -> String {
         format!("file:///{path}")
     }
 }
-

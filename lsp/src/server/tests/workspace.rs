@@ -263,7 +263,10 @@ async fn without_file_watching_the_disk_is_polled() {
     );
     until_codes(&mut client, &main, &["W101"]).await;
     // A new module declares `helper` again.
-    write_files(&dir, &[("Helpers.mod", LIB.replace("Lib", "Helpers").as_str())]);
+    write_files(
+        &dir,
+        &[("Helpers.mod", LIB.replace("Lib", "Helpers").as_str())],
+    );
     until_codes(&mut client, &main, &[]).await;
     // It is renamed: still known, under its new name (the next check of
     // Main, after two rounds of polling, finds `helper`).
@@ -275,7 +278,10 @@ async fn without_file_watching_the_disk_is_polled() {
     // Deleted: unresolved; re-created: resolved.
     std::fs::remove_file(dir.join("Renamed.mod")).expect("removed");
     until_codes(&mut client, &main, &["W101"]).await;
-    write_files(&dir, &[("Renamed.mod", LIB.replace("Lib", "Renamed").as_str())]);
+    write_files(
+        &dir,
+        &[("Renamed.mod", LIB.replace("Lib", "Renamed").as_str())],
+    );
     until_codes(&mut client, &main, &[]).await;
     // The signal goes from EIO.cfg: unresolved.
     write_files(&dir, &[("EIO.cfg", "EIO:CFG_1.0:6:1::\n#\nEIO_SIGNAL:\n")]);
@@ -284,7 +290,13 @@ async fn without_file_watching_the_disk_is_polled() {
     write_files(&dir, &[("rapid.toml", "[lint]\nignore = [\"W101\"]\n")]);
     until_codes(&mut client, &main, &[]).await;
     std::thread::sleep(std::time::Duration::from_millis(20));
-    write_files(&dir, &[("rapid.toml", "[lint.severity]\nunresolved-name = \"error\"\n")]);
+    write_files(
+        &dir,
+        &[(
+            "rapid.toml",
+            "[lint.severity]\nunresolved-name = \"error\"\n",
+        )],
+    );
     let params = until_codes(&mut client, &main, &["W101"]).await;
     assert_eq!(params["diagnostics"][0]["severity"], 1, "{params}");
     client.shutdown().await;
