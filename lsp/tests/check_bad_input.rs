@@ -220,7 +220,7 @@ fn folders_named_in_any_script_are_checked() {
 /// `rapid check` with `args` in `dir`, killed after `limit` (a generous
 /// bound: the output is what the test looks at).
 fn check_within(dir: &Path, args: &[&str], limit: std::time::Duration) -> Output {
-    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_rapid"))
+    let child = std::process::Command::new(env!("CARGO_BIN_EXE_rapid"))
         .arg("check")
         .args(args)
         .current_dir(dir)

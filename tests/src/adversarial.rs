@@ -21,7 +21,7 @@ impl Rng {
         Rng(seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1)
     }
 
-    pub fn next(&mut self) -> u64 {
+    pub fn next_u64(&mut self) -> u64 {
         self.0 ^= self.0 >> 12;
         self.0 ^= self.0 << 25;
         self.0 ^= self.0 >> 27;
@@ -33,7 +33,7 @@ impl Rng {
         if n == 0 {
             0
         } else {
-            (self.next() % n as u64) as usize
+            (self.next_u64() % n as u64) as usize
         }
     }
 }
@@ -268,7 +268,7 @@ pub fn mutate(text: &str, rng: &mut Rng) -> String {
             }
             _ => {
                 if let Some(b) = bytes.get_mut(at) {
-                    *b = (rng.next() & 0xFF) as u8;
+                    *b = (rng.next_u64() & 0xFF) as u8;
                 }
             }
         }
