@@ -111,18 +111,11 @@ impl Editor {
         message
     }
 
+    /// Sends a request and returns its result (an error fails the test).
     pub fn call(&mut self, method: &str, params: Value) -> Value {
-        self.next_id += 1;
-        let id = self.next_id;
-        self.send(json!({"jsonrpc": "2.0", "id": id, "method": method, "params": params}));
-        loop {
-            let m = self.next();
-            if m["id"] == id && m.get("method").is_none() {
-                assert!(m.get("error").is_none(), "{method}: {m}");
-                return m["result"].clone();
-            }
-            self.queued.push(m);
-        }
+        let m = self.request(method, params);
+        assert!(m.get("error").is_none(), "{method}: {m}");
+        m["result"].clone()
     }
 
     pub fn wait_for(&mut self, pred: impl Fn(&Value) -> bool) -> Value {
