@@ -14,6 +14,7 @@ pub mod layout;
 pub mod lex;
 pub mod lower;
 pub mod names;
+pub mod nesting;
 pub mod rules;
 pub mod split_parse;
 pub mod syntax;

@@ -39,12 +39,18 @@ pub struct Unit {
     /// arrays (which constant evaluation reads; the interface leaves them out).
     pub constants: u64,
     pub syntax: Vec<Diagnostic>,
+    /// The parts of the text nested too deep to analyse: the tree is that
+    /// of a copy of the text with these replaced ([`crate::nesting`]).
+    cuts: Vec<crate::nesting::Cut>,
 }
 
 impl Unit {
     /// Parses and lowers `text`; `old` is the previous tree, already edited.
     pub fn new(path: String, text: String, old: Option<&Tree>) -> Unit {
         let mut parser = crate::syntax::parser();
+        // The tree of a unit with parts nested too deep is not that of its
+        // text ([`crate::nesting`]): never reuse it.
+        let old = old.filter(|t| !crate::nesting::is_copy(t));
         let tree = crate::syntax::parse(&mut parser, &text, old)
             .or_else(|| crate::syntax::parse(&mut parser, "", None));
         Unit::from_tree(path, text, tree)
@@ -52,6 +58,9 @@ impl Unit {
 
     /// Builds a unit from a tree parsed by the caller.
     pub fn from_tree(path: String, text: String, tree: Option<Tree>) -> Unit {
+        if tree.as_ref().is_some_and(crate::nesting::is_copy) {
+            return Unit::new(path, text, None);
+        }
         let Some(tree) = tree else {
             // Only a cancelled parse returns no tree; we never cancel. Keep
             // the file, empty, rather than fail.
@@ -59,8 +68,13 @@ impl Unit {
             let tree = parser.parse("", None);
             return Unit::empty(path, text, tree);
         };
+        let (tree, cuts) = crate::nesting::bound(&text, tree);
         let items = FileItems::lower(&tree, &text);
-        let syntax = crate::syntax::syntax_diagnostics(&tree, &text);
+        let mut syntax = crate::syntax::syntax_diagnostics(&tree, &text);
+        if !cuts.is_empty() {
+            syntax.extend(crate::nesting::diagnostics(&text, &cuts));
+            syntax.sort_by_key(|d| d.range.start);
+        }
         Unit {
             interface: items.interface_hash(),
             constants: constants_hash(&items, &text),
@@ -70,6 +84,7 @@ impl Unit {
             part: None,
             items,
             syntax,
+            cuts,
         }
     }
 
@@ -91,7 +106,12 @@ impl Unit {
         chunk: Range<usize>,
         kind: PartKind,
     ) -> Unit {
-        let Some(items) = split_items(&main, &part, &chunk, kind, &text) else {
+        let too_deep = crate::nesting::too_deep(&main) || crate::nesting::too_deep(&part);
+        let Some(items) = split_items(&main, &part, &chunk, kind, &text).filter(|_| !too_deep)
+        else {
+            if too_deep {
+                return Unit::new(path, text, None);
+            }
             let clean = if main.root_node().has_error() && !part.root_node().has_error() {
                 &part
             } else {
@@ -113,6 +133,7 @@ impl Unit {
             items,
             // Neither tree has an error.
             syntax: Vec::new(),
+            cuts: Vec::new(),
         }
     }
 
@@ -134,7 +155,18 @@ impl Unit {
     /// a file parsed as two parts, the tree of all but what the second tree
     /// holds ([`Unit::tree_at`] finds the tree of an offset).
     pub fn tree(&self) -> &Tree {
-        self.tree.get(&self.text)
+        if self.cuts.is_empty() {
+            self.tree.get(&self.text)
+        } else {
+            self.tree
+                .get_or_init(|| crate::nesting::parse_copy(&self.text, &self.cuts))
+        }
+    }
+
+    /// The parts of the text nested too deep to analyse (the tree has a
+    /// placeholder or blanks there); empty for almost every file.
+    pub fn cuts(&self) -> &[crate::nesting::Cut] {
+        &self.cuts
     }
 
     /// The tree that holds the text at `offset`.
@@ -189,6 +221,7 @@ impl Unit {
                 interface: 0,
                 constants: 0,
                 syntax: Vec::new(),
+                cuts: Vec::new(),
             },
             // No tree even for empty text means the grammar could not be
             // loaded at all, which the grammar's own tests rule out.
@@ -844,6 +877,29 @@ mod tests {
         assert_eq!(config.task_modules[0].home_path(), Some("user.sys"));
         assert_eq!(config.task_modules[1].home_path(), None);
         assert_eq!(config.task_modules[1].file_name(), "x.sys");
+    }
+
+    #[test]
+    fn folder_names_in_any_script_are_grouped_without_a_panic() {
+        // Folder names whose fourth byte is inside a character.
+        for (path, key) in [
+            ("/home/josé/robot/Main.mod", "/home/josé/robot"),
+            ("/home/josé/RAPID/TASK1/Main.mod", "/home/josé/RAPID/TASK1"),
+            (
+                "/机器人程序/RAPID/TASK1/PROGMOD/A.mod",
+                "/机器人程序/RAPID/TASK1",
+            ),
+            ("/機械/RAPID/タスク1/A.mod", "/機械/RAPID/タスク1"),
+            ("/b/RAPID/TASKé/A.mod", "/b/RAPID/TASKé"),
+            ("/b/RAPID/tasK2/A.mod", "/b/RAPID/tasK2"),
+        ] {
+            assert_eq!(task_key(path), key, "{path}");
+        }
+        assert_eq!(controller_of("/机器人/RAPID/TASK1"), Some("/机器人/RAPID/"));
+        // Any folder under `RAPID/` is a task folder (`T_ROB1`, `TASKé`).
+        assert_eq!(controller_of("/b/RAPID/josé"), Some("/b/RAPID/"));
+        assert_eq!(controller_of("/b/RAPID/机器人程"), Some("/b/RAPID/"));
+        assert_eq!(controller_of("/b/josé"), None);
     }
 
     #[test]

@@ -146,7 +146,16 @@ impl LineEnding {
 pub struct LineIndex {
     starts: Vec<usize>,
     len: usize,
+    /// Along lines longer than [`MARK_EVERY`] bytes, a mark at least every
+    /// that many bytes: (offset, characters from its line's start to it),
+    /// so that [`LineIndex::human`] counts at most that many bytes, however
+    /// long the line (generated modules have lines of megabytes, with a
+    /// finding every few bytes).
+    marks: Vec<(usize, usize)>,
 }
+
+/// How far apart the character-count marks of long lines are, in bytes.
+pub const MARK_EVERY: usize = 1024;
 
 /// A zero-based line and a zero-based byte column within it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
@@ -159,14 +168,27 @@ impl LineIndex {
     pub fn new(text: &str) -> LineIndex {
         let bytes = text.as_bytes();
         let mut starts = vec![0];
+        let mut marks = Vec::new();
+        // The last line start or mark, and the characters from the line's
+        // start to it.
+        let mut mark = (0, 0);
         let mut i = 0;
         while i < bytes.len() {
             match bytes[i] {
                 b'\r' if bytes.get(i + 1) == Some(&b'\n') => {
                     i += 1;
                     starts.push(i + 1);
+                    mark = (i + 1, 0);
                 }
-                b'\r' | b'\n' => starts.push(i + 1),
+                b'\r' | b'\n' => {
+                    starts.push(i + 1);
+                    mark = (i + 1, 0);
+                }
+                _ if i - mark.0 >= MARK_EVERY && text.is_char_boundary(i) => {
+                    let chars = mark.1 + text.get(mark.0..i).map_or(0, |s| s.chars().count());
+                    mark = (i, chars);
+                    marks.push(mark);
+                }
                 _ => {}
             }
             i += 1;
@@ -174,6 +196,7 @@ impl LineIndex {
         LineIndex {
             starts,
             len: text.len(),
+            marks,
         }
     }
 
@@ -221,9 +244,17 @@ impl LineIndex {
     pub fn human(&self, offset: usize, text: &str) -> (usize, usize) {
         let LineCol { line, col } = self.line_col(offset);
         let start = self.starts[line];
+        // Count from the nearest mark of the line before the offset.
+        let (from, before) = match self.marks.partition_point(|m| m.0 <= start + col) {
+            0 => (start, 0),
+            n => match self.marks[n - 1] {
+                (at, chars) if at >= start => (at, chars),
+                _ => (start, 0),
+            },
+        };
         let chars = text
-            .get(start..start + col)
-            .map_or(col, |s| s.chars().count());
+            .get(from..start + col)
+            .map_or(col, |s| before + s.chars().count());
         (line + 1, chars + 1)
     }
 }
@@ -313,6 +344,41 @@ mod tests {
         assert_eq!(index.line_col(99), LineCol { line: 3, col: 1 });
         assert_eq!(index.offset(LineCol { line: 1, col: 10 }, text), 4);
         assert_eq!(index.human(text.len(), text), (4, 2));
+    }
+
+    #[test]
+    fn human_columns_on_long_lines_count_from_a_nearby_mark() {
+        // A line of megabytes with characters of every width: the same
+        // columns as counting from the line's start, while each count
+        // reads at most MARK_EVERY bytes and a character (the marks are
+        // that close).
+        let piece = "a;é;€;𝄞;";
+        let line = piece.repeat(40_000);
+        let text = format!("x\r\n{line}\ny {line}");
+        let index = LineIndex::new(&text);
+        let mut at = 0;
+        let mut checked = 0;
+        while at <= text.len() {
+            if text.is_char_boundary(at) {
+                let start = index.starts[index.line_col(at).line];
+                let naive = text[start..at].chars().count() + 1;
+                assert_eq!(index.human(at, &text).1, naive, "at {at}");
+                let mark = index
+                    .marks
+                    .iter()
+                    .rev()
+                    .find(|m| m.0 <= at)
+                    .map_or(start, |m| m.0.max(start));
+                assert!(
+                    at - mark < MARK_EVERY + 4,
+                    "{at} is {} from a mark",
+                    at - mark
+                );
+                checked += 1;
+            }
+            at += 97;
+        }
+        assert!(checked > 3_000);
     }
 
     #[test]

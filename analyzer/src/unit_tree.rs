@@ -35,6 +35,11 @@ impl UnitTree {
         self.tree.take();
     }
 
+    /// The tree, made by `parse` if it was released.
+    pub fn get_or_init(&self, parse: impl FnOnce() -> Tree) -> &Tree {
+        self.tree.get_or_init(parse)
+    }
+
     /// Whether the tree is in memory (kept, or parsed again since it was
     /// released).
     pub fn is_loaded(&self) -> bool {

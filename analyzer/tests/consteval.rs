@@ -306,15 +306,26 @@ fn aggregates_and_numbers_take_the_type_of_their_target() {
 fn deep_nesting_is_refused_without_a_crash() {
     let depth = 3000;
     let fixture = format!(
-        "MODULE m\n  CONST num x := {}1$0{};\nENDMODULE\n",
+        "MODULE m\n  CONST num x := {}1$0{};\n  CONST num y := 2 + 3;\nENDMODULE\n",
         "(".repeat(depth),
         ")".repeat(depth)
     );
     let (task, unit, offset) = task_of(&fixture);
+    // The expression nests deeper than the analyzer reads (`nesting-too-
+    // deep`): neither its centre nor the whole has a value, and nothing
+    // overflows the stack; the module's other constants still have theirs.
     let inner = value_at(&task, unit, offset);
     let outer = value_at(&task, unit, offset - 1 - depth);
-    // The literal at the centre still has its value; the whole expression,
-    // deeper than the lowering goes, has none (and no stack overflow).
-    assert_eq!(inner.map(|v| v.value), Some("1".to_owned()));
+    assert_eq!(inner, None);
     assert_eq!(outer, None);
+    let codes: Vec<&str> = task.units[unit]
+        .syntax
+        .iter()
+        .map(|d| d.rule.code)
+        .collect();
+    assert_eq!(codes, ["W001"]);
+    let text = &task.units[unit].text;
+    let y = text.rfind("2 + 3").map_or(0, |at| at + "2 + 3".len());
+    let y = value_at(&task, unit, y);
+    assert_eq!(y.map(|v| v.value), Some("5".to_owned()));
 }

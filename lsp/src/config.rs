@@ -258,9 +258,17 @@ impl std::fmt::Display for ConfigError {
     }
 }
 
+/// The text of a configuration file (a regular file in UTF-8; a FIFO or a
+/// device is refused without blocking).
+pub fn read_text(path: &Path) -> std::io::Result<String> {
+    let bytes = crate::source::read_regular(path)?;
+    String::from_utf8(bytes)
+        .map_err(|_| std::io::Error::new(std::io::ErrorKind::InvalidData, "not UTF-8 text"))
+}
+
 /// Reads and checks a configuration file.
 pub fn load(path: &Path) -> Result<Config, ConfigError> {
-    let text = std::fs::read_to_string(path).map_err(|e| ConfigError {
+    let text = read_text(path).map_err(|e| ConfigError {
         path: path.to_owned(),
         line: None,
         message: format!("cannot read the configuration: {e}"),

@@ -265,7 +265,7 @@ fn program(path: &Path) -> Result<Program, String> {
     }
     let mut workspace = Workspace::new();
     for cfg in &found.configs {
-        if let Ok(bytes) = std::fs::read(cfg) {
+        if let Ok(bytes) = crate::source::read_regular(cfg) {
             workspace.set_config(&unit_path(cfg), &String::from_utf8_lossy(&bytes));
         }
     }

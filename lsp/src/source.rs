@@ -43,7 +43,7 @@ impl std::fmt::Display for Unreadable {
 
 impl SourceFile {
     pub fn read(path: &Path) -> Result<SourceFile, Unreadable> {
-        let bytes = std::fs::read(path).map_err(Unreadable::Io)?;
+        let bytes = read_regular(path).map_err(Unreadable::Io)?;
         SourceFile::from_bytes(path.to_owned(), &bytes)
     }
 
@@ -63,5 +63,58 @@ impl SourceFile {
     /// 1-based line and character column of a byte offset.
     pub fn human(&self, offset: usize) -> (usize, usize) {
         self.lines.human(offset, &self.text)
+    }
+}
+
+/// The bytes of a regular file. Anything else (a FIFO, a device, a folder,
+/// something swapped in after discovery) is an error naming what it is,
+/// found without blocking: the file is opened non-blocking and checked
+/// before it is read.
+pub fn read_regular(path: &Path) -> std::io::Result<Vec<u8>> {
+    use std::io::Read;
+    let mut options = std::fs::OpenOptions::new();
+    options.read(true);
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::OpenOptionsExt;
+        options.custom_flags(libc::O_NONBLOCK);
+    }
+    let mut file = options.open(path)?;
+    let meta = file.metadata()?;
+    if !meta.is_file() {
+        return Err(std::io::Error::other(format!(
+            "{}, not a file",
+            kind_of(&meta.file_type())
+        )));
+    }
+    let mut bytes = Vec::with_capacity(usize::try_from(meta.len()).unwrap_or(0));
+    file.read_to_end(&mut bytes)?;
+    Ok(bytes)
+}
+
+/// What a file-system entry that is not a regular file is, in words.
+pub fn kind_of(kind: &std::fs::FileType) -> &'static str {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::FileTypeExt;
+        if kind.is_fifo() {
+            return "a FIFO (named pipe)";
+        }
+        if kind.is_socket() {
+            return "a socket";
+        }
+        if kind.is_char_device() {
+            return "a character device";
+        }
+        if kind.is_block_device() {
+            return "a block device";
+        }
+    }
+    if kind.is_dir() {
+        "a folder"
+    } else if kind.is_file() {
+        "a file"
+    } else {
+        "not a regular file"
     }
 }

@@ -150,3 +150,130 @@ fn a_50_mb_file_is_handled() {
     assert!(text(&out.stdout).is_empty(), "{}", show(&out));
     assert_eq!(out.status.code(), Some(0), "{}", show(&out));
 }
+
+#[test]
+fn fifos_and_devices_named_like_modules_are_skipped_with_a_word() {
+    let dir = scratch("fifo");
+    std::fs::write(dir.join("Good.mod"), GOOD).expect("written");
+    let fifo = |name: &str| {
+        let made = std::process::Command::new("mkfifo")
+            .arg(dir.join(name))
+            .status()
+            .expect("mkfifo runs");
+        assert!(made.success(), "mkfifo {name}");
+    };
+    fifo("Pipe.mod");
+    fifo("EIO.cfg");
+    std::os::unix::fs::symlink("/dev/null", dir.join("Null.sys")).expect("link");
+    // Reading any of them would block for ever or read nothing: each is
+    // named, the rest is checked, and the run is not held up.
+    let out = assert_rest_checked(
+        &dir,
+        "Pipe.mod: skipped: a FIFO (named pipe), not a file",
+        0,
+    );
+    let stderr = text(&out.stderr);
+    assert!(
+        stderr.contains("EIO.cfg: skipped: a FIFO"),
+        "{}",
+        show(&out)
+    );
+    assert!(
+        stderr.contains("Null.sys: skipped: a character device"),
+        "{}",
+        show(&out)
+    );
+    // Named on the command line, too.
+    let out = check(&dir, &["Pipe.mod", "Good.mod", "--format", "concise"]);
+    assert!(
+        text(&out.stderr).contains("Pipe.mod: skipped: a FIFO"),
+        "{}",
+        show(&out)
+    );
+    assert_eq!(out.status.code(), Some(0), "{}", show(&out));
+}
+
+#[test]
+fn folders_named_in_any_script_are_checked() {
+    // The fourth byte of `josé` and of `机器人程序` is inside a character
+    // (task grouping once sliced folder names there).
+    for folder in [
+        "home/josé/robot",
+        "机器人程序/RAPID/TASK1/PROGMOD",
+        "Müller Straße",
+    ] {
+        let dir = scratch("non-ascii");
+        let at = dir.join(folder);
+        std::fs::create_dir_all(&at).expect("folder");
+        std::fs::write(at.join("Good.mod"), GOOD).expect("written");
+        let out = check(&dir, &["--format", "concise", folder]);
+        assert!(!text(&out.stderr).contains("panicked"), "{}", show(&out));
+        assert!(
+            text(&out.stdout).contains("Good.mod:3:9: warning[W101]"),
+            "{}",
+            show(&out)
+        );
+        assert_eq!(out.status.code(), Some(0), "{}", show(&out));
+    }
+}
+
+/// `rapid check` with `args` in `dir`, killed after `limit` (a generous
+/// bound: the output is what the test looks at).
+fn check_within(dir: &Path, args: &[&str], limit: std::time::Duration) -> Output {
+    let child = std::process::Command::new(env!("CARGO_BIN_EXE_rapid"))
+        .arg("check")
+        .args(args)
+        .current_dir(dir)
+        .env_remove("CI")
+        .stdin(std::process::Stdio::null())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("the rapid binary runs");
+    let id = child.id();
+    let (tx, rx) = std::sync::mpsc::channel::<()>();
+    let watchdog = std::thread::spawn(move || {
+        if rx.recv_timeout(limit).is_err() {
+            let _ = std::process::Command::new("kill")
+                .args(["-9", &id.to_string()])
+                .status();
+        }
+    });
+    let out = child.wait_with_output().expect("output");
+    let _ = tx.send(());
+    let _ = watchdog.join();
+    out
+}
+
+#[test]
+fn many_findings_on_one_long_line_cost_each_a_bounded_share() {
+    // 10,000 duplicate declarations on one line of 100 KB: each finding's
+    // column and snippet once read the whole line before it, and the human
+    // report printed the whole line with each (1 GB).
+    let dir = scratch("long-line");
+    let n = 10_000;
+    let module = format!("MODULE D\n{}\nENDMODULE\n", "VAR num a;".repeat(n));
+    std::fs::write(dir.join("D.mod"), &module).expect("written");
+    let limit = std::time::Duration::from_secs(120);
+    let out = check_within(&dir, &["--format", "concise"], limit);
+    let stdout = text(&out.stdout);
+    assert_eq!(out.status.code(), Some(1), "{}", show(&out));
+    assert_eq!(stdout.matches("[E106]").count(), n - 1);
+    let last = format!("D.mod:2:{}: error[E106]", (n - 1) * 10 + 9);
+    assert!(stdout.contains(&last), "{last}");
+    let out = check_within(&dir, &["--format", "human"], limit);
+    assert_eq!(out.status.code(), Some(1), "{}", text(&out.stderr));
+    assert_eq!(
+        text(&out.stdout).matches("[duplicate-declaration]").count(),
+        n - 1
+    );
+    assert!(
+        out.stdout.len() < n * 1200,
+        "{} bytes of report for {n} findings",
+        out.stdout.len()
+    );
+    let out = check_within(&dir, &["--format", "sarif"], limit);
+    let log: serde_json::Value = serde_json::from_slice(&out.stdout).expect("SARIF");
+    let results = log["runs"][0]["results"].as_array().map_or(0, Vec::len);
+    assert_eq!(results, n - 1);
+}

@@ -191,3 +191,41 @@ fn json_syntax_errors() {
     assert_eq!(v["error"]["code"], "syntax-error");
     assert_eq!(v["error"]["column"], 7);
 }
+
+#[test]
+fn a_program_in_a_folder_named_in_any_script() {
+    // Task grouping once sliced folder names inside a character.
+    for folder in ["josé/robot", "机器人程序/RAPID/TASK1/PROGMOD"] {
+        let dir = std::env::temp_dir()
+            .join(format!("rapid-eval-{}", std::process::id()))
+            .join(folder);
+        std::fs::create_dir_all(&dir).expect("folder");
+        let module = dir.join("Main.mod");
+        std::fs::write(&module, "MODULE Main\n  CONST num k := 3;\nENDMODULE\n").expect("written");
+        for file in [&module, &dir] {
+            let file = file.to_string_lossy();
+            let (code, out, err) = eval(&["--file", &file, "k * 2"]);
+            assert_eq!(
+                (code, out.trim(), err.as_str()),
+                (Some(0), "6", ""),
+                "{file}"
+            );
+        }
+        let _ = std::fs::remove_dir_all(
+            std::env::temp_dir().join(format!("rapid-eval-{}", std::process::id())),
+        );
+    }
+}
+
+#[test]
+fn an_expression_nested_too_deep_is_refused_with_a_message() {
+    // (An argument holds at most 128 KB.)
+    let deep = format!("{}1{}", "(".repeat(30_000), ")".repeat(30_000));
+    let (code, out, err) = eval(&[&deep]);
+    assert!(
+        !err.contains("overflow") && !err.contains("panicked"),
+        "{err}"
+    );
+    assert_eq!(code, Some(2), "{out}{err}");
+    assert!(err.contains("nest"), "{err}");
+}

@@ -50,7 +50,7 @@ pub fn check_unit_cached(
     cx.cache.reused = 0;
     cx.cache_enabled = true;
     cx.check();
-    let diags = finish(std::mem::take(&mut cx.diags), &u.text);
+    let diags = finish(u, std::mem::take(&mut cx.diags));
     let mut cache = std::mem::take(&mut cx.cache);
     // Keep only what this check met (as if the cache were made afresh).
     let generation = cache.generation;
@@ -302,15 +302,18 @@ pub fn merge_unit_check(task: &Task, unit: usize, results: Vec<ShareResult>) -> 
         }
         decls::check_unused_locals_of_module(&mut cx, module);
     }
-    finish(std::mem::take(&mut cx.diags), &u.text)
+    finish(u, std::mem::take(&mut cx.diags))
 }
 
-/// Sorts a unit's findings by position and reports each name once: an
+/// Sorts a unit's findings by position, drops those about text nested too
+/// deep to analyse ([`crate::nesting::keeps`]) and reports each name once: an
 /// unresolved name at its first use, with the other uses as related
 /// locations; an unconfigured signal at its first use; a built-in that needs
 /// an option or another RobotWare as [`availability::once_per_name`] does.
-fn finish(mut diags: Vec<Diagnostic>, text: &str) -> Vec<Diagnostic> {
+fn finish(u: &Unit, mut diags: Vec<Diagnostic>) -> Vec<Diagnostic> {
     use crate::rules::{unconfigured_signal, unresolved_name};
+    let text = &u.text;
+    diags.retain(|d| crate::nesting::keeps(text, u.cuts(), d));
     diags.sort_by_key(|d| (d.range.start, d.range.end));
     let once = |d: &Diagnostic| {
         std::ptr::eq(d.rule, &unresolved_name::RULE)

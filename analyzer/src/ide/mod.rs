@@ -17,7 +17,7 @@ mod inlay;
 mod nav;
 mod resolve;
 mod signature;
-mod structure;
+pub(crate) mod structure;
 mod symbols;
 mod tokens;
 mod value;

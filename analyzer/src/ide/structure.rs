@@ -178,7 +178,16 @@ pub fn selection_ranges(unit: &Unit, offsets: &[usize]) -> Vec<Vec<Range<usize>>
                 }
                 at = n.parent();
             }
+            // In deeply nested code, the innermost and the outermost
+            // ranges only: a chain is sent as nested JSON objects, which
+            // clients parse by recursion (serde_json stops at 128 levels).
+            if out.len() > MAX_SELECTION_CHAIN {
+                out.drain(MAX_SELECTION_CHAIN / 2..out.len() - MAX_SELECTION_CHAIN / 2);
+            }
             out
         })
         .collect()
 }
+
+/// The most ranges [`selection_ranges`] gives around one offset.
+pub const MAX_SELECTION_CHAIN: usize = 64;

@@ -34,6 +34,7 @@ pub mod missing_initializer;
 pub mod missing_return;
 pub mod missing_token;
 pub mod name_too_long;
+pub mod nesting_too_deep;
 pub mod non_numeric_index;
 pub mod not_a_routine;
 pub mod option_routine;
@@ -100,6 +101,7 @@ pub static RULES: &[&Rule] = &[
     &persistent_in_routine::RULE,
     &option_routine::RULE,
     &unconfigured_signal::RULE,
+    &nesting_too_deep::RULE,
     &unresolved_name::RULE,
     &builtin_version::RULE,
     &unused_data::RULE,

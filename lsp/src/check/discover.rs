@@ -18,7 +18,8 @@ pub struct Discovery {
     /// Paths that could not be walked, with the reason.
     pub errors: Vec<(PathBuf, String)>,
     /// Things worth saying that do not stop the run (a folder reached twice
-    /// through a link), with the path.
+    /// through a link, a FIFO or a device named like a module), with the
+    /// path.
     pub warnings: Vec<(PathBuf, String)>,
 }
 
@@ -57,6 +58,13 @@ pub fn discover_with(paths: &[PathBuf], excluded: Excluder) -> Discovery {
                 }
                 continue;
             }
+            Ok(meta) if !meta.is_dir() => {
+                if !excluded(root, false) {
+                    out.warnings
+                        .push((root.clone(), not_a_file(&meta.file_type())));
+                }
+                continue;
+            }
             Ok(_) => {}
         }
         if excluded(root, true) {
@@ -81,6 +89,14 @@ pub fn discover_with(paths: &[PathBuf], excluded: Excluder) -> Discovery {
                         out.files.push(entry.into_path());
                     } else if is_file && is_controller_config_name(&name) {
                         out.configs.push(entry.into_path());
+                    } else if let Some(kind) =
+                        entry.file_type().filter(|t| !t.is_file() && !t.is_dir())
+                        && (is_rapid_file_name(&name) || is_controller_config_name(&name))
+                    {
+                        // A FIFO, a socket or a device (or a link to one)
+                        // named like a module: never read (a FIFO would
+                        // block), and said.
+                        out.warnings.push((entry.into_path(), not_a_file(&kind)));
                     } else if is_file && is_program_file_name(&name) {
                         // Some tools write RAPID text into `.pgf` files.
                         if is_xml(entry.path()) {
@@ -121,6 +137,14 @@ pub fn discover_with(paths: &[PathBuf], excluded: Excluder) -> Discovery {
     out.programs.sort();
     out.programs.dedup();
     out
+}
+
+/// Why an entry named like a RAPID file is skipped.
+fn not_a_file(kind: &std::fs::FileType) -> String {
+    format!(
+        "skipped: {}, not a file that can be read",
+        crate::source::kind_of(kind)
+    )
 }
 
 /// Does the file start like XML (after a byte-order mark and blanks)? A

@@ -477,12 +477,12 @@ pub fn check_files(
     let mut workspace = Workspace::new();
     workspace.set_controller(controller.clone());
     for path in programs {
-        if let Ok(bytes) = std::fs::read(path) {
+        if let Ok(bytes) = crate::source::read_regular(path) {
             workspace.set_program(&unit_path(path), &String::from_utf8_lossy(&bytes));
         }
     }
     for path in configs {
-        if let Ok(bytes) = std::fs::read(path) {
+        if let Ok(bytes) = crate::source::read_regular(path) {
             let text = String::from_utf8_lossy(&bytes);
             workspace.set_config(&unit_path(path), &text);
         }
@@ -614,8 +614,11 @@ fn diagnostics_split(
 
 fn read_source(path: &Path) -> Result<SourceFile, Skip> {
     let meta = std::fs::metadata(path).map_err(|e| Skip::Unreadable(Unreadable::Io(e)))?;
-    if meta.is_dir() {
-        let e = std::io::Error::other("a folder, not a file");
+    if !meta.is_file() {
+        let e = std::io::Error::other(format!(
+            "{}, not a file",
+            crate::source::kind_of(&meta.file_type())
+        ));
         return Err(Skip::Unreadable(Unreadable::Io(e)));
     }
     if meta.len() > MAX_FILE_BYTES {
@@ -664,7 +667,7 @@ fn add_extra(
         }
     }
     for (i, path) in extra.configs.iter().enumerate() {
-        if let Ok(bytes) = std::fs::read(path) {
+        if let Ok(bytes) = crate::source::read_regular(path) {
             let text = String::from_utf8_lossy(&bytes);
             for key in checked_keys {
                 // Below `SYSPAR`, a configuration applies to the folder above.

@@ -1,6 +1,6 @@
 //! The report formats of `rapid check`.
 
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, HashMap};
 use std::fmt::Write as _;
 use std::io::{self, Write};
 use std::path::Path;
@@ -168,15 +168,38 @@ fn render_one(renderer: &Renderer, c: &Checked, d: &Diagnostic) -> String {
         .line_col(d.range.end)
         .line
         .min(first + MOST_LINES - 1);
-    let start = file.lines.line_range(first, &file.text).start;
-    let end = file.lines.line_range(last, &file.text).end;
-    let source = file.text.get(start..end).unwrap_or_default();
-    let span_start = d.range.start.saturating_sub(start).min(source.len());
-    let span_end = d
-        .range
-        .end
-        .saturating_sub(start)
-        .clamp(span_start, source.len());
+    let mut start = file.lines.line_range(first, &file.text).start;
+    let mut end = file.lines.line_range(last, &file.text).end;
+    // A long line (generated code has lines of megabytes) is shown around
+    // the finding only: the renderer reads what it is given, per finding.
+    let (mut before, mut after) = ("", "");
+    if end - start > MOST_BYTES {
+        let line_end = file.lines.line_range(first, &file.text).end;
+        let from = floor_boundary(
+            &file.text,
+            d.range.start.saturating_sub(MOST_BYTES / 4).max(start),
+        );
+        let to = floor_boundary(
+            &file.text,
+            (d.range.end.max(d.range.start) + MOST_BYTES / 4)
+                .min(d.range.start + MOST_BYTES / 2)
+                .min(line_end),
+        );
+        if from > start {
+            before = "…";
+        }
+        if to < end {
+            after = "…";
+        }
+        (start, end) = (from, to.max(from));
+    }
+    let source = format!(
+        "{before}{}{after}",
+        file.text.get(start..end).unwrap_or_default()
+    );
+    let span_start = (d.range.start.saturating_sub(start) + before.len()).min(source.len());
+    let span_end = (d.range.end.saturating_sub(start) + before.len())
+        .clamp(span_start, source.len() - after.len());
     let level = match d.severity {
         Severity::Error => Level::ERROR,
         Severity::Warning => Level::WARNING,
@@ -186,12 +209,25 @@ fn render_one(renderer: &Renderer, c: &Checked, d: &Diagnostic) -> String {
     let path = display_path(&file.path);
     let title = format!("{} [{}]", d.message, d.rule.name);
     let report = [level.primary_title(title).id(d.rule.code).element(
-        Snippet::source(source)
+        Snippet::source(&source)
             .line_start(first + 1)
             .path(path)
             .annotation(AnnotationKind::Primary.span(span_start..span_end)),
     )];
     renderer.render(&report)
+}
+
+/// The most bytes of source shown with one finding (a long line is cut
+/// around it).
+const MOST_BYTES: usize = 400;
+
+/// `at`, or the start of the character holding it.
+fn floor_boundary(text: &str, mut at: usize) -> usize {
+    at = at.min(text.len());
+    while !text.is_char_boundary(at) {
+        at -= 1;
+    }
+    at
 }
 
 /// A path as given on the command line, without a leading `./`.
@@ -331,8 +367,10 @@ fn encode_uri_path(path: &str) -> String {
 }
 
 /// A cheap, stable fingerprint: FNV-1a of the rule, the file and the
-/// trimmed text of the line, so the result survives lines moving.
-fn fingerprint(rule: &str, uri: &str, line_text: &str, nth: usize) -> String {
+/// trimmed text of the line, so the result survives lines moving (the
+/// fingerprint adds how many findings of the rule came before on such a
+/// line).
+fn line_hash(rule: &str, uri: &str, line_text: &str) -> u64 {
     let mut h: u64 = 0xcbf2_9ce4_8422_2325;
     for part in [rule, uri, line_text.trim()] {
         for b in part.bytes().chain([0]) {
@@ -340,7 +378,7 @@ fn fingerprint(rule: &str, uri: &str, line_text: &str, nth: usize) -> String {
             h = h.wrapping_mul(0x0100_0000_01b3);
         }
     }
-    format!("{h:016x}:{nth}")
+    h
 }
 
 /// SARIF 2.1.0, as GitHub code scanning reads it: every rule with its
@@ -348,7 +386,8 @@ fn fingerprint(rule: &str, uri: &str, line_text: &str, nth: usize) -> String {
 pub fn sarif(out: &mut impl Write, report: &Report, root: &Path) -> io::Result<()> {
     let rules: Vec<Value> = RULES.iter().map(|r| sarif_rule(r)).collect();
     let mut results = Vec::new();
-    let mut seen: BTreeMap<String, usize> = BTreeMap::new();
+    let mut seen: BTreeMap<u64, usize> = BTreeMap::new();
+    let mut hashes: HashMap<(*const Checked, &str, usize), u64> = HashMap::new();
     let by_path: std::collections::HashMap<String, &Checked> = report
         .checked
         .iter()
@@ -362,14 +401,20 @@ pub fn sarif(out: &mut impl Write, report: &Report, root: &Path) -> io::Result<(
             artifact["uriBaseId"] = json!("%SRCROOT%");
         }
         let line = c.file.lines.line_col(d.range.start).line;
-        let line_text = c
-            .file
-            .text
-            .get(c.file.lines.line_range(line, &c.file.text))
-            .unwrap_or_default();
-        let base = fingerprint(d.rule.code, &uri, line_text, 0);
-        let nth = seen.entry(base.clone()).or_default();
-        let print = fingerprint(d.rule.code, &uri, line_text, *nth);
+        // One hash per rule and line: findings on a long line would each
+        // hash it again.
+        let hash = *hashes
+            .entry((std::ptr::from_ref(c), d.rule.code, line))
+            .or_insert_with(|| {
+                let line_text = c
+                    .file
+                    .text
+                    .get(c.file.lines.line_range(line, &c.file.text))
+                    .unwrap_or_default();
+                line_hash(d.rule.code, &uri, line_text)
+            });
+        let nth = seen.entry(hash).or_default();
+        let print = format!("{hash:016x}:{nth}");
         *nth += 1;
         let mut result = json!({
             "ruleId": d.rule.code,

@@ -1,5 +1,6 @@
 //! The protocol handlers.
 
+use std::collections::{HashMap, HashSet};
 use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
@@ -348,7 +349,7 @@ impl Backend {
         }
         self.mutate("indexing", |s| {
             for program in &found.programs {
-                if let Ok(bytes) = std::fs::read(program) {
+                if let Ok(bytes) = crate::source::read_regular(program) {
                     s.ws.set_program(&program.to_string_lossy(), &String::from_utf8_lossy(&bytes));
                 }
             }
@@ -399,35 +400,102 @@ impl Backend {
         }
     }
 
-    /// For clients that cannot watch files: looks for files changed on
-    /// disk every two seconds.
+    /// For clients that cannot watch files: every two seconds, looks for
+    /// modules changed or gone on disk (their times), and walks the
+    /// workspace folders again for new, renamed and re-created modules and
+    /// for changed `EIO.cfg` and `rapid.toml` files. A walk that takes long
+    /// is made less often (at most a twentieth of the time goes to walks),
+    /// so a huge folder costs a bounded share of a core.
     async fn poll_disk(&self) {
+        // The configuration files seen at the last walk, with their times.
+        let mut configs: HashMap<PathBuf, Option<std::time::SystemTime>> = HashMap::new();
+        let mut next_walk = std::time::Instant::now();
+        let mut first = true;
         loop {
-            tokio::time::sleep(Duration::from_secs(2)).await;
-            let known: Vec<(PathBuf, Option<std::time::SystemTime>)> = {
+            if !first {
+                tokio::time::sleep(Duration::from_secs(2)).await;
+            }
+            let (known, roots, lint) = {
                 let s = self.shared.lock();
                 if s.shutdown {
                     return;
                 }
-                s.disk.iter().map(|(p, t)| (p.clone(), *t)).collect()
+                let known: Vec<(PathBuf, Option<std::time::SystemTime>)> =
+                    s.disk.iter().map(|(p, t)| (p.clone(), *t)).collect();
+                (known, s.roots.clone(), s.settings.lint.clone())
             };
-            let Ok(changed) = self
+            let walk = std::time::Instant::now() >= next_walk;
+            let Ok((changed, found)) = self
                 .blocking("polling files", move || {
-                    known
-                        .into_iter()
+                    let changed: Vec<PathBuf> = known
+                        .iter()
                         .filter(|(p, t)| super::state::mtime(p) != *t)
-                        .map(|(p, _)| p)
-                        .collect::<Vec<_>>()
+                        .map(|(p, _)| p.clone())
+                        .collect();
+                    let found = walk.then(|| {
+                        let started = std::time::Instant::now();
+                        let mut found = crate::check::discover_with(
+                            &roots,
+                            Arc::new(move |p: &Path, dir: bool| lint.is_excluded(p, dir)),
+                        );
+                        let known: HashSet<&PathBuf> = known.iter().map(|(p, _)| p).collect();
+                        found.files.retain(|p| !known.contains(p));
+                        let mut watched: HashMap<PathBuf, Option<std::time::SystemTime>> = found
+                            .configs
+                            .iter()
+                            .map(|p| (p.clone(), super::state::mtime(p)))
+                            .collect();
+                        if let Some(toml) = roots.first().and_then(|r| crate::config::find(r)) {
+                            let time = super::state::mtime(&toml);
+                            watched.insert(toml, time);
+                        }
+                        (found.files, watched, started.elapsed())
+                    });
+                    (changed, found)
                 })
                 .await
             else {
                 continue;
             };
-            if changed.is_empty() {
+            let mut new_files = Vec::new();
+            let mut new_configs = Vec::new();
+            let mut settings_changed = false;
+            if let Some((files, watched, took)) = found {
+                next_walk = std::time::Instant::now() + took * 20;
+                new_files = files;
+                if !first {
+                    for (path, time) in &watched {
+                        if configs.get(path) != Some(time) {
+                            if is_eio_cfg(&path.to_string_lossy()) {
+                                new_configs.push(path.clone());
+                            } else {
+                                settings_changed = true;
+                            }
+                        }
+                    }
+                    // A `rapid.toml` that went away changes the settings too.
+                    settings_changed |= configs
+                        .keys()
+                        .any(|p| !watched.contains_key(p) && !is_eio_cfg(&p.to_string_lossy()));
+                }
+                configs = watched;
+            }
+            first = false;
+            if settings_changed {
+                for p in self.reload_settings(None) {
+                    self.log(MessageType::WARNING, format!("settings: {p}"))
+                        .await;
+                }
+            }
+            if changed.is_empty()
+                && new_files.is_empty()
+                && new_configs.is_empty()
+                && !settings_changed
+            {
                 continue;
             }
             self.mutate("reloading files", |s| {
-                for p in &changed {
+                for p in changed.iter().chain(&new_files).chain(&new_configs) {
                     if p.exists() {
                         let _ = s.load_from_disk(p);
                     } else {
@@ -452,7 +520,7 @@ impl Backend {
         let root = roots.first().cloned().unwrap_or_default();
         let mut problems = Vec::new();
         let file =
-            crate::config::find(&root).and_then(|path| match std::fs::read_to_string(&path) {
+            crate::config::find(&root).and_then(|path| match crate::config::read_text(&path) {
                 Ok(text) => Some((path, text)),
                 Err(e) => {
                     problems.push(format!("{}: {e}", path.display()));
@@ -718,12 +786,16 @@ impl LanguageServer for Backend {
         if caps.watch_files_dynamically {
             let this = self.clone();
             tokio::spawn(async move { this.register_watchers().await });
-        } else {
-            let this = self.clone();
-            tokio::spawn(async move { this.poll_disk().await });
         }
         let this = self.clone();
-        tokio::spawn(async move { this.index_workspace().await });
+        tokio::spawn(async move {
+            this.index_workspace().await;
+            // Polling starts from the indexed workspace (its first walk
+            // would read every file again otherwise).
+            if !caps.watch_files_dynamically {
+                this.poll_disk().await;
+            }
+        });
     }
 
     async fn shutdown(&self) -> Result<()> {

@@ -410,7 +410,7 @@ impl State {
     pub fn load_from_disk(&mut self, path: &Path) -> Result<bool, Unreadable> {
         let name = path.to_string_lossy().into_owned();
         if is_eio_cfg(&name) {
-            let bytes = std::fs::read(path).map_err(Unreadable::Io)?;
+            let bytes = crate::source::read_regular(path).map_err(Unreadable::Io)?;
             self.ws.set_config(&name, &String::from_utf8_lossy(&bytes));
             self.config_generation += 1;
             return Ok(true);

@@ -114,7 +114,19 @@ impl Framer {
 
     /// The next complete frame's body, if any.
     pub fn next_frame(&mut self) -> Option<Frame> {
-        let end = find(&self.buf, b"\r\n\r\n")?;
+        let Some(end) = find(&self.buf[..self.buf.len().min(MAX_HEADER)], b"\r\n\r\n") else {
+            if self.buf.len() < MAX_HEADER {
+                return None;
+            }
+            // No header ends in the first bytes: junk. Drop it up to the
+            // next header (each byte is looked at once, however long the
+            // junk runs).
+            let next = find(&self.buf[1..], b"Content-Length").map_or(self.buf.len(), |i| i + 1);
+            self.buf.drain(..next);
+            return Some(Frame::BadHeader(format!(
+                "{next} bytes without a message header"
+            )));
+        };
         let header = String::from_utf8_lossy(&self.buf[..end]).into_owned();
         let length = header.split("\r\n").find_map(|line| {
             let (name, value) = line.split_once(':')?;
@@ -141,6 +153,9 @@ impl Framer {
     }
 }
 
+/// The longest header block looked for: real ones are under 100 bytes.
+const MAX_HEADER: usize = 8 * 1024;
+
 fn find(haystack: &[u8], needle: &[u8]) -> Option<usize> {
     haystack.windows(needle.len()).position(|w| w == needle)
 }
@@ -151,7 +166,12 @@ pub fn encode(body: &[u8]) -> Vec<u8> {
     out
 }
 
-/// Checks a message body; returns the error answer for a bad one.
+/// The `$/` requests the server answers itself (none: `$/cancelRequest`
+/// and `$/setTrace` are notifications).
+const KNOWN_DOLLAR_REQUESTS: &[&str] = &[];
+
+/// Checks a message body; returns the error answer for a bad one, or for a
+/// request the server would leave unanswered.
 pub fn check_message(body: &[u8]) -> Result<(), Value> {
     let error = |id: Value, code: i64, message: String| json!({"jsonrpc": "2.0", "id": id, "error": {"code": code, "message": message}});
     let Ok(text) = std::str::from_utf8(body) else {
@@ -166,6 +186,16 @@ pub fn check_message(body: &[u8]) -> Result<(), Value> {
         Err(e) => return Err(error(Value::Null, -32700, format!("parse error: {e}"))),
     };
     let id = value.get("id").cloned().unwrap_or(Value::Null);
+    // Requests whose method starts with `$/` are optional for a server,
+    // which must answer the ones it does not know with MethodNotFound (the
+    // server's framework leaves them unanswered); notifications are ignored.
+    if let Some(method) = value.get("method").and_then(Value::as_str)
+        && method.starts_with("$/")
+        && (id.is_string() || id.is_number())
+        && !KNOWN_DOLLAR_REQUESTS.contains(&method)
+    {
+        return Err(error(id, -32601, format!("method not found: {method}")));
+    }
     let is_request = serde_json::from_value::<Request>(value.clone()).is_ok();
     let is_response = !is_request && serde_json::from_value::<Response>(value).is_ok();
     if is_request || is_response {
@@ -231,7 +261,11 @@ pub async fn filter_input<R: AsyncRead + Unpin>(
                         }
                     }
                     Err(answer) => {
-                        eprintln!("rapid lsp: a malformed message was answered with an error");
+                        if answer["error"]["code"] == -32601 {
+                            eprintln!("rapid lsp: {}", answer["error"]["message"]);
+                        } else {
+                            eprintln!("rapid lsp: a malformed message was answered with an error");
+                        }
                         let _ = to_output.send(encode(answer.to_string().as_bytes()));
                     }
                 },
@@ -296,6 +330,27 @@ mod tests {
     }
 
     #[test]
+    fn junk_without_a_header_is_dropped_as_it_comes() {
+        let mut f = Framer::default();
+        // Megabytes of bytes that never end a header: dropped in pieces,
+        // each looked at a bounded number of times, and the next message
+        // still comes through.
+        let junk = vec![b'x'; 64 * 1024];
+        let mut dropped = 0;
+        for _ in 0..64 {
+            f.push(&junk);
+            while let Some(frame) = f.next_frame() {
+                assert!(matches!(frame, Frame::BadHeader(_)), "{frame:?}");
+                dropped += 1;
+            }
+            assert!(f.buf.len() < MAX_HEADER, "{}", f.buf.len());
+        }
+        assert!(dropped > 0);
+        f.push(b"Content-Length: 2\r\n\r\n{}");
+        assert_eq!(f.next_frame(), Some(Frame::Message(b"{}".to_vec())));
+    }
+
+    #[test]
     fn messages_are_checked() {
         assert!(
             check_message(br#"{"jsonrpc":"2.0","id":1,"method":"initialize","params":{}}"#).is_ok()
@@ -306,6 +361,15 @@ mod tests {
         assert_eq!(parse["error"]["code"], -32700);
         let utf8 = check_message(b"{\"a\":\"\xff\"}").expect_err("bad");
         assert_eq!(utf8["error"]["code"], -32700);
+        let unknown = check_message(br#"{"jsonrpc":"2.0","id":"a","method":"$/unknown"}"#)
+            .expect_err("unanswered otherwise");
+        assert_eq!(unknown["error"]["code"], -32601);
+        assert_eq!(unknown["id"], "a");
+        assert!(check_message(br#"{"jsonrpc":"2.0","method":"$/unknown"}"#).is_ok());
+        assert!(
+            check_message(br#"{"jsonrpc":"2.0","method":"$/cancelRequest","params":{"id":1}}"#)
+                .is_ok()
+        );
         let invalid = check_message(br#"{"id":7,"hello":"world"}"#).expect_err("bad");
         assert_eq!(invalid["error"]["code"], -32600);
         assert_eq!(invalid["id"], 7);

@@ -5,8 +5,10 @@
 use std::path::Path;
 use std::process::{Command, Output, Stdio};
 
+pub mod editor;
 // The binary's in-process server tests use the same file.
 mod scratch;
+#[allow(unused_imports)]
 pub use scratch::*;
 
 /// Writes `files` (`path`, text) below `dir`, making folders as needed.

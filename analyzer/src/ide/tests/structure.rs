@@ -109,3 +109,27 @@ fn selection_expands_outwards() {
             && shown.contains(&"MODULE m")
     );
 }
+
+#[test]
+fn a_deep_selection_chain_keeps_its_innermost_and_outermost_ranges() {
+    // 100 parentheses: about 200 ranges around the literal, under the
+    // nesting limit.
+    let src = format!(
+        "MODULE m\n  PROC main()\n    VAR num n;\n    n := {}1$0{};\n  ENDPROC\nENDMODULE\n",
+        "(".repeat(100),
+        ")".repeat(100)
+    );
+    let (task, unit, offset) = fixture(&src);
+    assert!(task.units[unit].syntax.is_empty());
+    let text = &task.units[unit].text;
+    let ranges = &selection_ranges(&task.units[unit], &[offset])[0];
+    assert_eq!(ranges.len(), crate::ide::structure::MAX_SELECTION_CHAIN);
+    assert_eq!(&text[ranges[0].clone()], "1");
+    assert_eq!(&text[ranges[1].clone()], "(1)");
+    assert_eq!(ranges.last(), Some(&(0..text.len())));
+    assert!(
+        ranges
+            .windows(2)
+            .all(|w| w[1].start <= w[0].start && w[0].end <= w[1].end && w[0] != w[1])
+    );
+}

@@ -56,6 +56,11 @@ async fn malformed_messages_and_unknown_methods() {
     let response = client.request("rapid/noSuchMethod", json!({})).await;
     assert_eq!(error_code(&response), -32601);
     client.notify("rapid/noSuchNotification", json!({}));
+    // The same for the optional `$/` methods (the framework used to leave
+    // such a request unanswered).
+    let response = client.request("$/noSuchRequest", json!({})).await;
+    assert_eq!(error_code(&response), -32601, "{response}");
+    client.notify("$/noSuchNotification", json!({}));
     // Wrong parameters for a known method.
     let response = client
         .request("textDocument/hover", json!({"nonsense": true}))

@@ -262,6 +262,43 @@ async fn without_file_watching_the_disk_is_polled() {
         )],
     );
     until_codes(&mut client, &main, &["W101"]).await;
+    // A new module declares `helper` again.
+    write_files(
+        &dir,
+        &[("Helpers.mod", LIB.replace("Lib", "Helpers").as_str())],
+    );
+    until_codes(&mut client, &main, &[]).await;
+    // It is renamed: still known, under its new name (the next check of
+    // Main, after two rounds of polling, finds `helper`).
+    std::fs::rename(dir.join("Helpers.mod"), dir.join("Renamed.mod")).expect("renamed");
+    std::thread::sleep(std::time::Duration::from_secs(5));
+    client.change(&main, 2, json!([{"range": {"start": {"line": 0, "character": 0}, "end": {"line": 0, "character": 0}}, "text": "! renamed\n"}]));
+    let params = client.diagnostics_at(&main, 2).await;
+    assert_eq!(codes(&params), Vec::<String>::new(), "{params}");
+    // Deleted: unresolved; re-created: resolved.
+    std::fs::remove_file(dir.join("Renamed.mod")).expect("removed");
+    until_codes(&mut client, &main, &["W101"]).await;
+    write_files(
+        &dir,
+        &[("Renamed.mod", LIB.replace("Lib", "Renamed").as_str())],
+    );
+    until_codes(&mut client, &main, &[]).await;
+    // The signal goes from EIO.cfg: unresolved.
+    write_files(&dir, &[("EIO.cfg", "EIO:CFG_1.0:6:1::\n#\nEIO_SIGNAL:\n")]);
+    until_codes(&mut client, &main, &["W101"]).await;
+    // A rapid.toml appears and ignores the rule; then it is edited.
+    write_files(&dir, &[("rapid.toml", "[lint]\nignore = [\"W101\"]\n")]);
+    until_codes(&mut client, &main, &[]).await;
+    std::thread::sleep(std::time::Duration::from_millis(20));
+    write_files(
+        &dir,
+        &[(
+            "rapid.toml",
+            "[lint.severity]\nunresolved-name = \"error\"\n",
+        )],
+    );
+    let params = until_codes(&mut client, &main, &["W101"]).await;
+    assert_eq!(params["diagnostics"][0]["severity"], 1, "{params}");
     client.shutdown().await;
 }
 

@@ -1,0 +1,151 @@
+//! A language-server client over stdio, for the end-to-end tests: starts
+//! `rapid lsp`, frames messages, accepts the server's requests.
+
+use std::io::{BufRead, BufReader, Read, Write};
+use std::path::Path;
+use std::process::{Child, ChildStdin, Command, Stdio};
+use std::sync::mpsc::{Receiver, channel};
+use std::time::Duration;
+
+use serde_json::{Value, json};
+
+pub struct Editor {
+    pub child: Child,
+    stdin: ChildStdin,
+    messages: Receiver<Value>,
+    next_id: i64,
+    queued: Vec<Value>,
+}
+
+impl Editor {
+    pub fn start() -> Editor {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_rapid"))
+            .args(["lsp", "--stdio"])
+            .stdin(Stdio::piped())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::inherit())
+            .spawn()
+            .expect("rapid lsp starts");
+        let stdin = child.stdin.take().expect("stdin");
+        let stdout = child.stdout.take().expect("stdout");
+        let (tx, rx) = channel();
+        std::thread::spawn(move || {
+            let mut reader = BufReader::new(stdout);
+            loop {
+                let mut length = None;
+                loop {
+                    let mut line = String::new();
+                    if reader.read_line(&mut line).unwrap_or(0) == 0 {
+                        return;
+                    }
+                    let line = line.trim_end();
+                    if line.is_empty() {
+                        break;
+                    }
+                    if let Some(v) = line.strip_prefix("Content-Length: ") {
+                        length = v.parse::<usize>().ok();
+                    }
+                }
+                let mut body = vec![0; length.expect("a Content-Length header")];
+                reader.read_exact(&mut body).expect("body");
+                let value: Value = serde_json::from_slice(&body).expect("JSON");
+                if tx.send(value).is_err() {
+                    return;
+                }
+            }
+        });
+        Editor {
+            child,
+            stdin,
+            messages: rx,
+            next_id: 0,
+            queued: Vec::new(),
+        }
+    }
+
+    pub fn send(&mut self, message: Value) {
+        let body = message.to_string();
+        write!(self.stdin, "Content-Length: {}\r\n\r\n{body}", body.len()).expect("write");
+        self.stdin.flush().expect("flush");
+    }
+
+    /// Sends bytes as they are (bad frames).
+    pub fn send_raw(&mut self, bytes: &[u8]) {
+        self.stdin.write_all(bytes).expect("write");
+        self.stdin.flush().expect("flush");
+    }
+
+    /// Sends a request and returns its whole answer (result or error).
+    pub fn request(&mut self, method: &str, params: Value) -> Value {
+        self.next_id += 1;
+        let id = self.next_id;
+        self.send(json!({"jsonrpc": "2.0", "id": id, "method": method, "params": params}));
+        loop {
+            let m = self.next();
+            if m["id"] == id && m.get("method").is_none() {
+                return m;
+            }
+            self.queued.push(m);
+        }
+    }
+
+    /// Whether the server process still runs.
+    pub fn alive(&mut self) -> bool {
+        matches!(self.child.try_wait(), Ok(None))
+    }
+
+    pub fn notify(&mut self, method: &str, params: Value) {
+        self.send(json!({"jsonrpc": "2.0", "method": method, "params": params}));
+    }
+
+    pub fn next(&mut self) -> Value {
+        let message = self
+            .messages
+            .recv_timeout(Duration::from_secs(30))
+            .expect("a message from the server");
+        if message.get("method").is_some() && message.get("id").is_some() {
+            // A request from the server (progress, registration): accept it.
+            let id = message["id"].clone();
+            self.send(json!({"jsonrpc": "2.0", "id": id, "result": null}));
+        }
+        message
+    }
+
+    /// Sends a request and returns its result (an error fails the test).
+    pub fn call(&mut self, method: &str, params: Value) -> Value {
+        let m = self.request(method, params);
+        assert!(m.get("error").is_none(), "{method}: {m}");
+        m["result"].clone()
+    }
+
+    pub fn wait_for(&mut self, pred: impl Fn(&Value) -> bool) -> Value {
+        if let Some(i) = self.queued.iter().position(&pred) {
+            return self.queued.remove(i);
+        }
+        loop {
+            let m = self.next();
+            if pred(&m) {
+                return m;
+            }
+            self.queued.push(m);
+        }
+    }
+
+    pub fn diagnostics(&mut self, uri: &str, version: i64) -> Value {
+        self.wait_for(|m| {
+            m["method"] == "textDocument/publishDiagnostics"
+                && m["params"]["uri"] == uri
+                && m["params"]["version"].as_i64() >= Some(version)
+        })["params"]["diagnostics"]
+            .clone()
+    }
+}
+
+pub fn file_uri(path: &Path) -> String {
+    let path = path.to_string_lossy().replace('\\', "/");
+    if path.starts_with('/') {
+        format!("file://{path}")
+    } else {
+        format!("file:///{path}")
+    }
+}
