@@ -245,7 +245,7 @@ type Program = (Arc<Task>, Option<(usize, usize)>);
 fn program(path: &Path) -> Result<Program, String> {
     let meta = std::fs::metadata(path).map_err(|e| e.to_string())?;
     let is_file = meta.is_file();
-    let unit_path = |p: &Path| p.to_string_lossy().into_owned();
+    let unit_path = |p: &Path| crate::source::analyzer_path(p);
     // The folder the task is grouped by (a backup's RAPID/TASKn, or the
     // module's folder), walked as `rapid check` would walk it.
     let root = if is_file {

@@ -37,6 +37,16 @@ pub fn discover(paths: &[PathBuf]) -> Discovery {
 /// says what to leave out, named explicitly or not (so a pre-commit hook,
 /// which names files, honours the exclude list too).
 pub fn discover_with(paths: &[PathBuf], excluded: Excluder) -> Discovery {
+    discover_to_depth(paths, excluded, None)
+}
+
+/// [`discover_with`], walking folders at most `max_depth` levels down
+/// (`Some(1)`: the files of the folders themselves).
+pub fn discover_to_depth(
+    paths: &[PathBuf],
+    excluded: Excluder,
+    max_depth: Option<usize>,
+) -> Discovery {
     let mut out = Discovery::default();
     for root in paths {
         match std::fs::metadata(root) {
@@ -67,6 +77,7 @@ pub fn discover_with(paths: &[PathBuf], excluded: Excluder) -> Discovery {
             .hidden(false)
             .follow_links(true)
             .require_git(false)
+            .max_depth(max_depth)
             .filter_entry(move |entry| {
                 entry.file_name() != ".git"
                     && !excluded(entry.path(), entry.file_type().is_some_and(|t| t.is_dir()))
