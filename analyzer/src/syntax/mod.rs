@@ -40,6 +40,10 @@ pub fn parse(parser: &mut Parser, text: &str, old: Option<&Tree>) -> Option<Tree
 pub fn syntax_diagnostics(tree: &Tree, text: &str) -> Vec<Diagnostic> {
     let mut out = Vec::new();
     let root = tree.root_node();
+    if let Some(d) = no_module(root, text) {
+        out.push(d);
+        return out;
+    }
     if !root.has_error() {
         return out;
     }
@@ -62,6 +66,54 @@ pub fn syntax_diagnostics(tree: &Tree, text: &str) -> Vec<Diagnostic> {
         }
     });
     out
+}
+
+/// A file without a module: empty, only comments, or declarations and
+/// routines written without `MODULE name` around them. A controller loads
+/// none of these; everything else wrong in such a file follows from it, so
+/// this is the only diagnostic.
+fn no_module(root: Node<'_>, text: &str) -> Option<Diagnostic> {
+    let mut cursor = root.walk();
+    if root.children(&mut cursor).any(|c| c.kind() == "module") {
+        return None;
+    }
+    const MODULE: &str = "a module starts with `MODULE name` and ends with `ENDMODULE`";
+    if text.trim_start_matches('\u{feff}').trim().is_empty() {
+        return Some(Diagnostic::new(
+            &syntax_error::RULE,
+            0..0,
+            format!("the file is empty: {MODULE}"),
+        ));
+    }
+    let mut first = None;
+    crate::syntax_util::walk_pruned(root, &mut |n| {
+        if first.is_some() {
+            return false;
+        }
+        if n.kind() == "comment" {
+            return false;
+        }
+        if n.child_count() == 0 && n.end_byte() > n.start_byte() {
+            first = Some(n);
+            return false;
+        }
+        true
+    });
+    Some(match first {
+        None => Diagnostic::new(
+            &syntax_error::RULE,
+            0..0,
+            format!("the file holds no module: {MODULE}"),
+        ),
+        Some(token) => Diagnostic::new(
+            &syntax_error::RULE,
+            token.byte_range(),
+            format!(
+                "expected `MODULE name` before `{}`: declarations and routines go inside a module",
+                snippet(text, token.byte_range())
+            ),
+        ),
+    })
 }
 
 /// `=` written for `:=` in an error: either the error starts with `=` right
