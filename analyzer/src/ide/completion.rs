@@ -589,7 +589,9 @@ fn lookup_return(cx: &mut Cx<'_>, name: &str) -> Option<String> {
 }
 
 /// After `\`: the optional parameters of the call not yet given (nor an
-/// alternative of one given).
+/// alternative of one given). Those that can come next (between the last
+/// argument given and the next required parameter) come first, in order;
+/// then the later ones; those whose place is already past come last.
 fn optional_args(cx: &mut Cx<'_>, bf: &Before) -> Vec<CompletionItem> {
     let Some(call) = call_at(bf) else {
         return Vec::new();
@@ -605,6 +607,14 @@ fn optional_args(cx: &mut Cx<'_>, bf: &Before) -> Vec<CompletionItem> {
         .filter(|p| given.iter().any(|g| same(g, &p.name)))
         .filter_map(|p| p.alt_group)
         .collect();
+    let at = super::signature::next_position(&sig, &call);
+    let next_required = sig
+        .params
+        .iter()
+        .enumerate()
+        .skip(at)
+        .find(|(_, p)| !p.optional)
+        .map_or(sig.params.len(), |(i, _)| i);
     let mut out = Vec::new();
     for (i, p) in sig.params.iter().enumerate() {
         if !p.optional
@@ -613,6 +623,13 @@ fn optional_args(cx: &mut Cx<'_>, bf: &Before) -> Vec<CompletionItem> {
         {
             continue;
         }
+        let place = if i < at {
+            2
+        } else if i < next_required {
+            0
+        } else {
+            1
+        };
         let detail = if p.switch {
             format!("\\{} (switch)", p.name)
         } else {
@@ -624,7 +641,7 @@ fn optional_args(cx: &mut Cx<'_>, bf: &Before) -> Vec<CompletionItem> {
             detail: Some(detail),
             insert_text: (!p.switch).then(|| format!("{}:=", p.name)),
             is_snippet: false,
-            sort_text: Some(format!("{i:03}")),
+            sort_text: Some(format!("{place}{i:03}")),
         });
     }
     out

@@ -126,33 +126,80 @@ fn documentation_is_resolved_lazily() {
     assert!(completion_documentation("nothing", CompletionKind::Procedure).is_none());
 }
 
+/// The label of the active parameter of the signature help at `$0`.
+fn active_label(src: &str) -> String {
+    let (task, unit, offset) = fixture(src);
+    let help = signature_help(&task, unit, offset).unwrap_or_else(|| panic!("no help"));
+    let active = help
+        .active_parameter
+        .unwrap_or_else(|| panic!("no active parameter in {}", help.label));
+    help.label[help.parameters[active].0.clone()].to_owned()
+}
+
 #[test]
-fn signature_help_marks_the_active_parameter() {
+fn signature_help_marks_the_active_parameter_and_shows_types() {
     let (task, unit, offset) = fixture(&in_proc("    MoveL pHome, $0"));
     let help = signature_help(&task, unit, offset).unwrap_or_else(|| panic!("no help"));
     assert!(
-        help.label
-            .starts_with("MoveL [\\Conc] ToPoint [\\ID] Speed [\\V] | [\\T] Zone"),
+        help.label.starts_with(
+            "MoveL [\\switch Conc], robtarget ToPoint, [\\identno ID], speeddata Speed, \
+             [\\num V] | [\\num T], zonedata Zone, [\\num Z], [\\stoppointdata Inpos], \
+             PERS tooldata Tool, [\\PERS wobjdata WObj]"
+        ),
         "{}",
         help.label
     );
-    let active = help.active_parameter.unwrap_or(99);
-    assert_eq!(&help.label[help.parameters[active].0.clone()], "Speed");
-    let (task, unit, offset) = fixture(&in_proc("    MoveL pHome, vSlow \\T:=$0"));
-    let help = signature_help(&task, unit, offset).unwrap_or_else(|| panic!("no help"));
     assert_eq!(
-        &help.label[help.parameters[help.active_parameter.unwrap_or(99)]
-            .0
-            .clone()],
-        "[\\T]"
+        active_label(&in_proc("    MoveL pHome, $0")),
+        "speeddata Speed"
+    );
+    assert_eq!(
+        active_label(&in_proc("    MoveL pHome, vSlow \\T:=$0")),
+        "[\\num T]"
+    );
+    // After `\`, the optional parameter that can come there, not the first
+    // one of the routine.
+    assert_eq!(
+        active_label(&in_proc("    MoveL pHome, vSlow, fine, tool0 \\$0")),
+        "[\\PERS wobjdata WObj]"
+    );
+    assert_eq!(
+        active_label(&in_proc("    MoveL pHome, vSlow, fine, tool0 \\Co$0")),
+        "[\\switch Corr]"
+    );
+    assert_eq!(active_label(&in_proc("    MoveL \\$0")), "[\\switch Conc]");
+    assert_eq!(
+        active_label(&in_proc("    MoveL \\Conc, pHome, vSlow \\V:=100, z10, $0")),
+        "PERS tooldata Tool"
     );
     let (task, unit, offset) = fixture(&in_proc("    count := Round(count \\Dec:=1$0"));
     let help = signature_help(&task, unit, offset).unwrap_or_else(|| panic!("no help"));
-    assert!(help.label.starts_with("Round("), "{}", help.label);
+    assert_eq!(help.label, "Round(num Val, [\\num Dec])");
     let (task, unit, offset) = fixture(&in_proc("    Grip $0"));
     let help = signature_help(&task, unit, offset).unwrap_or_else(|| panic!("no help"));
-    assert_eq!(help.label, "Grip force");
+    assert_eq!(help.label, "Grip num force");
     assert_eq!(help.active_parameter, Some(0));
+}
+
+#[test]
+fn after_backslash_the_parameters_that_can_come_next_first() {
+    let first = |src: &str| -> Vec<String> {
+        labels(&in_proc(src))
+            .into_iter()
+            .take(3)
+            .map(|(l, _)| l)
+            .collect()
+    };
+    assert_eq!(
+        first("    MoveL pHome, vSlow, fine, tool0 \\$0"),
+        ["WObj", "Corr", "TLoad"]
+    );
+    assert_eq!(first("    MoveL pHome, vSlow \\$0"), ["V", "T", "Z"]);
+    assert_eq!(first("    MoveL pHome \\$0"), ["ID", "V", "T"]);
+    assert_eq!(first("    MoveL \\$0"), ["Conc", "ID", "V"]);
+    // Those whose place is past come last.
+    let all = labels(&in_proc("    MoveL pHome, vSlow, fine, tool0 \\$0"));
+    assert_eq!(all.last().map(|(l, _)| l.as_str()), Some("Inpos"));
 }
 
 #[test]
