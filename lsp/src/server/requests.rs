@@ -509,22 +509,27 @@ pub fn selection_ranges(snap: &Snapshot, positions: &[Position]) -> Vec<Selectio
 
 pub fn inlay_hints(snap: &Snapshot, range: lsp::Range) -> Vec<lsp::InlayHint> {
     let map = snap.map();
-    ide::inlay_hints(&snap.task, snap.unit_idx, map.offset_range(range))
-        .into_iter()
-        .map(|h| {
-            let parameter = h.kind == ide::InlayKind::Parameter;
-            lsp::InlayHint {
-                position: map.position(h.offset),
-                label: InlayHintLabel::String(h.label),
-                kind: parameter.then_some(InlayHintKind::PARAMETER),
-                text_edits: None,
-                tooltip: None,
-                padding_left: Some(!parameter),
-                padding_right: Some(parameter),
-                data: None,
-            }
-        })
-        .collect()
+    ide::inlay_hints(
+        &snap.task,
+        snap.unit_idx,
+        map.offset_range(range),
+        snap.settings.parameter_hints,
+    )
+    .into_iter()
+    .map(|h| {
+        let parameter = h.kind == ide::InlayKind::Parameter;
+        lsp::InlayHint {
+            position: map.position(h.offset),
+            label: InlayHintLabel::String(h.label),
+            kind: parameter.then_some(InlayHintKind::PARAMETER),
+            text_edits: None,
+            tooltip: None,
+            padding_left: Some(!parameter),
+            padding_right: Some(parameter),
+            data: None,
+        }
+    })
+    .collect()
 }
 
 /// Quick fixes: the fixes the analyzer's diagnostics carry, then the

@@ -1,4 +1,4 @@
-//! Publishing diagnostics: versions, codes and links, tags, configuration,
+//! Publishing diagnostics: versions, codes (no links), tags, configuration,
 //! incremental edits, debouncing, cross-file invalidation, pull diagnostics.
 
 use serde_json::{Value, json};
@@ -23,7 +23,7 @@ fn no_delay() -> Value {
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
-async fn opened_files_get_diagnostics_with_version_code_link_and_tags() {
+async fn opened_files_get_diagnostics_with_version_code_and_tags() {
     let dir = temp_dir("diag-open");
     let mut client = TestClient::new(dir.to_path_buf(), no_delay()).await;
     let text = "MODULE Main\n  PROC main()\n    VAR num unused;\n    x = 1;\n    nothere;\n  ENDPROC\n  PROC main()\n  ENDPROC\nENDMODULE\n";
