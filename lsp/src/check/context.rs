@@ -18,6 +18,41 @@ use rapid_analyzer::task::{controller_of, task_key};
 use super::discover::{Discovery, Excluder, discover_to_depth};
 use super::unit_path;
 
+/// The folders that hold the task of a file (named by `path`, as the
+/// analyzer names it).
+#[derive(Debug, Default, PartialEq, Eq)]
+pub struct TaskFolders {
+    /// The task's folder when it is a backup's `RAPID/TASKn`: its modules
+    /// are in it and its subfolders (`SYSMOD`, `PROGMOD`).
+    pub deep: Option<PathBuf>,
+    /// Folders whose own files belong to the task: the file's folder
+    /// outside a backup; the backup's `SYSPAR` (configuration) inside one.
+    pub shallow: Vec<PathBuf>,
+}
+
+/// Where the rest of the task of the file `path` lives.
+pub fn task_folders(path: &str) -> TaskFolders {
+    let key = task_key(path);
+    if key.is_empty() {
+        return TaskFolders::default();
+    }
+    match controller_of(&key) {
+        Some(controller) => TaskFolders {
+            deep: Some(PathBuf::from(&key)),
+            shallow: Path::new(controller)
+                .parent()
+                .map(|root| root.join("SYSPAR"))
+                .filter(|s| s.is_dir())
+                .into_iter()
+                .collect(),
+        },
+        None => TaskFolders {
+            deep: None,
+            shallow: vec![PathBuf::from(key)],
+        },
+    }
+}
+
 /// The files of the tasks of `files` that walking `given` (the paths named
 /// on the command line) did not reach: modules, programs and configuration.
 pub fn task_context(files: &[PathBuf], given: &[PathBuf], excluded: Excluder) -> Discovery {
@@ -27,47 +62,25 @@ pub fn task_context(files: &[PathBuf], given: &[PathBuf], excluded: Excluder) ->
         .map(|p| PathBuf::from(unit_path(p)))
         .collect();
     let covered = |dir: &Path| walked.iter().any(|w| dir.starts_with(w));
-    let mut tasks = BTreeSet::new();
-    let mut folders = BTreeSet::new();
-    let mut syspar = BTreeSet::new();
+    let mut deep = BTreeSet::new();
+    let mut shallow = BTreeSet::new();
     for file in files {
-        let key = task_key(&unit_path(file));
-        if key.is_empty() {
-            continue;
-        }
-        let dir = PathBuf::from(&key);
-        match controller_of(&key) {
-            Some(controller) => {
-                if let Some(root) = Path::new(controller).parent() {
-                    let configs = root.join("SYSPAR");
-                    if !covered(&configs) && configs.is_dir() {
-                        syspar.insert(configs);
-                    }
-                }
-                if !covered(&dir) {
-                    tasks.insert(dir);
-                }
-            }
-            None if !covered(&dir) => {
-                folders.insert(dir);
-            }
-            None => {}
-        }
+        let folders = task_folders(&unit_path(file));
+        deep.extend(folders.deep.filter(|d| !covered(d)));
+        shallow.extend(folders.shallow.into_iter().filter(|d| !covered(d)));
     }
     let list = |set: BTreeSet<PathBuf>| set.into_iter().collect::<Vec<_>>();
-    let mut out = discover_to_depth(&list(tasks), excluded.clone(), None);
-    let plain = discover_to_depth(&list(folders), excluded.clone(), Some(1));
-    let configs = discover_to_depth(&list(syspar), excluded, Some(1));
-    out.files.extend(plain.files);
-    out.programs.extend(plain.programs);
-    out.configs.extend(plain.configs);
-    out.configs.extend(configs.configs);
-    for list in [&mut out.files, &mut out.programs, &mut out.configs] {
-        list.sort();
-        list.dedup();
-    }
+    let mut out = discover_folders(&list(deep), &list(shallow), excluded);
     // What cannot be walked here is not the run's problem: it was not named.
     out.errors.clear();
     out.warnings.clear();
+    out
+}
+
+/// The files of the `deep` folders and their subfolders, and of the
+/// `shallow` folders themselves.
+pub fn discover_folders(deep: &[PathBuf], shallow: &[PathBuf], excluded: Excluder) -> Discovery {
+    let mut out = discover_to_depth(deep, excluded.clone(), None);
+    out.extend(discover_to_depth(shallow, excluded, Some(1)));
     out
 }

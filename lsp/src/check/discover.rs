@@ -22,6 +22,22 @@ pub struct Discovery {
     pub warnings: Vec<(PathBuf, String)>,
 }
 
+impl Discovery {
+    /// Adds what `other` found (files, configuration, programs; errors and
+    /// warnings), keeping each list sorted and without duplicates.
+    pub fn extend(&mut self, other: Discovery) {
+        self.files.extend(other.files);
+        self.configs.extend(other.configs);
+        self.programs.extend(other.programs);
+        self.errors.extend(other.errors);
+        self.warnings.extend(other.warnings);
+        for list in [&mut self.files, &mut self.configs, &mut self.programs] {
+            list.sort();
+            list.dedup();
+        }
+    }
+}
+
 /// Says whether a path (a folder when the flag is set) is left out.
 pub type Excluder = Arc<dyn Fn(&Path, bool) -> bool + Send + Sync>;
 

@@ -8,7 +8,7 @@
 //! again, and print the report in the chosen format.
 
 mod baseline;
-mod context;
+pub mod context;
 mod discover;
 mod fix;
 mod output;
