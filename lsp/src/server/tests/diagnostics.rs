@@ -170,7 +170,10 @@ async fn an_interface_change_republishes_the_other_open_files_of_the_task() {
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn pull_diagnostics_report_unchanged_results() {
     let dir = temp_dir("diag-pull");
-    let capabilities = json!({"textDocument": {"diagnostic": {"dynamicRegistration": false}}});
+    let capabilities = json!({
+        "textDocument": {"diagnostic": {"dynamicRegistration": false}},
+        "workspace": {"diagnostics": {"refreshSupport": true}},
+    });
     let mut client =
         TestClient::with_capabilities(dir.to_path_buf(), capabilities, no_delay()).await;
     let uri = client.open(&dir.join("Main.mod"), MAIN);

@@ -3,6 +3,7 @@
 
 mod diagnostics;
 mod features;
+mod reports;
 mod robustness;
 mod workspace;
 
