@@ -4,7 +4,7 @@
 //! strings. The context comes from the text before the cursor, so
 //! half-written code works.
 
-use std::collections::HashSet;
+use std::collections::{HashMap, HashSet};
 
 use super::context::{Before, before, call_at, partial, statement_start, words};
 use super::signature::{Sig, active, sig_of};
@@ -53,11 +53,68 @@ fn builtins() -> &'static Builtins {
     })
 }
 
+/// How much real programs call each built-in: a rank (0 = called most)
+/// for the instructions and functions in `usage.txt`, by folded name.
+struct Usage {
+    instructions: HashMap<String, usize>,
+    functions: HashMap<String, usize>,
+}
+
+fn usage() -> &'static Usage {
+    static CACHE: std::sync::OnceLock<Usage> = std::sync::OnceLock::new();
+    CACHE.get_or_init(|| {
+        let mut usage = Usage {
+            instructions: HashMap::new(),
+            functions: HashMap::new(),
+        };
+        let mut section = None;
+        for line in include_str!("usage.txt").lines().map(str::trim) {
+            match line {
+                "" => {}
+                l if l.starts_with('#') => {}
+                "[instructions]" => section = Some(&mut usage.instructions),
+                "[functions]" => section = Some(&mut usage.functions),
+                name => {
+                    if let Some(map) = section.as_mut() {
+                        let rank = map.len();
+                        map.entry(fold(name)).or_insert(rank);
+                    }
+                }
+            }
+        }
+        usage
+    })
+}
+
+/// The instructions offered before the program's own procedures at a
+/// statement start: the most called ones.
+const TOP_INSTRUCTIONS: usize = 10;
+
+/// The sort key of a built-in instruction at a statement start: the most
+/// called first (before the program's procedures, `1`), then the other
+/// ranked ones by rank, then the rest.
+fn instruction_rank(key: &str) -> String {
+    match usage().instructions.get(key) {
+        Some(&r) if r < TOP_INSTRUCTIONS => format!("0{r:03}"),
+        Some(&r) => format!("2{r:03}"),
+        None => "2999".to_owned(),
+    }
+}
+
+/// The rank part of a built-in function's sort key.
+fn function_rank(key: &str) -> String {
+    match usage().functions.get(key) {
+        Some(&r) => format!("{r:03}"),
+        None => "999".to_owned(),
+    }
+}
+
 /// Builds what every completion list shares (the built-ins with their
 /// signatures) ahead of the first request, which would otherwise pay for
 /// it. A server calls this while it indexes.
 pub fn prepare_completions() {
     builtins();
+    usage();
 }
 
 /// Snippets: label, body.
@@ -326,7 +383,7 @@ fn statement_start_items(cx: &mut Cx<'_>) -> Vec<CompletionItem> {
                 &r.name,
                 CompletionKind::Procedure,
                 Some(sig.clone()),
-                "2",
+                &instruction_rank(key),
             ));
         }
     }
@@ -571,7 +628,7 @@ fn expression_items(cx: &mut Cx<'_>, expected: Option<&str>) -> Vec<CompletionIt
                 &r.name,
                 CompletionKind::Function,
                 Some(sig.clone()),
-                &format!("{first}2"),
+                &format!("{first}2{}", function_rank(key)),
             ));
         }
     }

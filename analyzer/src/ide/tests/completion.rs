@@ -46,6 +46,48 @@ fn statement_start_offers_instructions_procedures_keywords_and_snippets() {
 }
 
 #[test]
+fn the_most_called_instructions_come_first_at_a_statement_start() {
+    let items = labels(&in_proc("    $0"));
+    assert_eq!(
+        items.first().map(|i| i.0.as_str()),
+        Some("MoveL"),
+        "{:?}",
+        &items[..5]
+    );
+    let moves: Vec<&str> = items
+        .iter()
+        .map(|i| i.0.as_str())
+        .filter(|l| l.starts_with("Move"))
+        .take(3)
+        .collect();
+    assert_eq!(moves, ["MoveL", "MoveJ", "MoveAbsJ"]);
+    // The program's own procedures come before the rarer built-ins.
+    let at = |label: &str| items.iter().position(|i| i.0 == label);
+    assert!(at("Grip") < at("MotionSup"), "{items:?}");
+    // Functions too, within what fits the expected type.
+    let items = labels(&in_proc("    MoveL $0"));
+    let at = |label: &str| items.iter().position(|i| i.0 == label);
+    assert!(at("Offs") < at("MirPos"), "{items:?}");
+}
+
+#[test]
+fn the_usage_table_names_only_built_ins() {
+    let cat = crate::catalogue::catalogue();
+    let mut section = "";
+    for line in include_str!("../usage.txt").lines() {
+        match line.trim() {
+            "" => {}
+            l if l.starts_with('#') => {}
+            l if l.starts_with('[') => section = l,
+            name if section == "[instructions]" => {
+                assert!(cat.instruction(name).is_some(), "{name} is no instruction");
+            }
+            name => assert!(cat.function(name).is_some(), "{name} is no function"),
+        }
+    }
+}
+
+#[test]
 fn arguments_offer_data_of_the_expected_type_first() {
     let items = labels(&in_proc("    MoveL $0"));
     assert_eq!(
