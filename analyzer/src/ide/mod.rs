@@ -23,7 +23,7 @@ mod tokens;
 mod value;
 
 pub use actions::code_actions;
-pub use completion::{completion_documentation, completions, prepare_completions};
+pub use completion::{completion_documentation, completions, completions_for, prepare_completions};
 pub use hover::hover;
 pub use inlay::{ParameterHints, inlay_hints};
 pub use nav::{

@@ -43,7 +43,7 @@ fn markdown(value: String) -> MarkupContent {
 /// [`resolve_completion`] adds to the item the user looks at.
 pub fn completion(snap: &Snapshot, pos: Position, lazy_detail: bool) -> Vec<lsp::CompletionItem> {
     let offset = snap.map().offset(pos);
-    ide::completions(&snap.task, snap.unit_idx, offset)
+    ide::completions_for(&snap.task, snap.unit_idx, offset, !lazy_detail)
         .into_iter()
         .map(|c| lsp::CompletionItem {
             kind: Some(completion_kind(c.kind)),

@@ -71,6 +71,33 @@ fn the_most_called_instructions_come_first_at_a_statement_start() {
 }
 
 #[test]
+fn lists_without_details_are_the_lists_with_their_details_left_out() {
+    for src in [
+        in_proc("    $0"),
+        in_proc("    MoveL $0"),
+        in_proc("    count := $0"),
+        "MODULE m\n  TRAP t\n  ENDTRAP\n  PROC main()\n    CONNECT i WITH $0\n  ENDPROC\nENDMODULE\n".to_owned(),
+    ] {
+        let (task, unit, offset) = fixture(&src);
+        let mut full = crate::ide::completions(&task, unit, offset);
+        assert!(full.iter().any(|i| i.detail.is_some()), "{src}");
+        let lean = crate::ide::completions_for(&task, unit, offset, false);
+        for (f, l) in full.iter_mut().zip(&lean) {
+            if l.detail.is_none() {
+                f.detail = None;
+            }
+        }
+        assert_eq!(full, lean, "{src}");
+        assert!(
+            lean.iter()
+                .filter(|i| i.kind != crate::ide::CompletionKind::Snippet)
+                .all(|i| i.detail.is_none()),
+            "{src}"
+        );
+    }
+}
+
+#[test]
 fn the_usage_table_names_only_built_ins() {
     let cat = crate::catalogue::catalogue();
     let mut section = "";
