@@ -17,7 +17,6 @@ use std::time::Duration;
 
 use rapid_analyzer::task::{Task, Unit};
 use rapid_analyzer::workspace::diagnostics_of;
-use rayon::prelude::*;
 use tower_lsp_server::ls_types::{
     Diagnostic, FullDocumentDiagnosticReport, PreviousResultId, UnchangedDocumentDiagnosticReport,
     Uri, WorkspaceDiagnosticParams, WorkspaceDiagnosticReport, WorkspaceDiagnosticReportResult,
@@ -96,7 +95,8 @@ impl State {
             let current = self
                 .ws
                 .unit(&snap.path)
-                .is_some_and(|u| Arc::ptr_eq(u, &snap.unit));
+                .is_some_and(|u| Arc::ptr_eq(u, &snap.unit))
+                && self.ws.task_of(&snap.path).interface == snap.task.interface;
             if !current
                 || self.docs.contains_key(&snap.path)
                 || snap.config_generation != self.config_generation
@@ -120,12 +120,13 @@ impl State {
 }
 
 /// Checks the stale files, task by task, each on a copy of its task whose
-/// closed files are parsed for the check; `None` when `superseded` says a
-/// newer run started.
+/// closed files are parsed for the check. Stops when `superseded` says a
+/// newer run started: gives what it checked so far, and whether that is
+/// all.
 fn check_stale(
     stale: Stale,
     superseded: &(dyn Fn() -> bool + Sync),
-) -> Option<Vec<(Snapshot, Vec<Diagnostic>)>> {
+) -> (Vec<(Snapshot, Vec<Diagnostic>)>, bool) {
     let mut by_task: HashMap<*const Task, Vec<Snapshot>> = HashMap::new();
     for snap in stale.snapshots {
         by_task
@@ -136,25 +137,27 @@ fn check_stale(
     let mut out = Vec::new();
     for (_, snaps) in by_task {
         if superseded() {
-            return None;
+            return (out, false);
         }
         let Some(task) = snaps.first().map(|s| s.task.clone()) else {
             continue;
         };
         let checking = with_trees(&task, &stale.open);
-        let found: Vec<(Snapshot, Vec<Diagnostic>)> = snaps
-            .into_par_iter()
-            .map(|snap| {
-                let items = match checking.units.get(snap.unit_idx) {
-                    Some(unit) => convert_diagnostics(&snap, &diagnostics_of(&checking, unit)),
-                    None => Vec::new(),
-                };
-                (snap, items)
-            })
-            .collect();
-        out.extend(found);
+        // One file after the other, on one thread: this runs in the
+        // background, and the other core stays free for the editor's
+        // requests. A newer run makes this one stop between two files.
+        for snap in snaps {
+            if superseded() {
+                return (out, false);
+            }
+            let items = match checking.units.get(snap.unit_idx) {
+                Some(unit) => convert_diagnostics(&snap, &diagnostics_of(&checking, unit)),
+                None => Vec::new(),
+            };
+            out.push((snap, items));
+        }
     }
-    Some(out)
+    (out, true)
 }
 
 /// A copy of `task` whose files that are not open are parsed again (their
@@ -162,7 +165,7 @@ fn check_stale(
 fn with_trees(task: &Task, open: &HashSet<String>) -> Task {
     let units: Vec<Arc<Unit>> = task
         .units
-        .par_iter()
+        .iter()
         .map(|u| {
             if open.contains(&u.path) {
                 u.clone()
@@ -189,13 +192,18 @@ impl Backend {
             let shared: Arc<Shared> = self.shared.clone();
             let superseded =
                 move || generation.is_some_and(|g| shared.lock().closed_generation != g);
-            let fresh = self
+            let (fresh, complete) = self
                 .blocking("reporting the workspace", move || {
                     check_stale(stale, &superseded)
                 })
                 .await
-                .ok()??;
+                .ok()?;
+            // What a superseded run checked is kept (the next run has less
+            // to do); the next run publishes.
             self.mutate("reporting the workspace", |s| s.keep_reports(fresh));
+            if !complete {
+                return None;
+            }
         }
         Some(gone)
     }
