@@ -13,6 +13,8 @@ use crate::diagnostic::Diagnostic;
 use crate::diagnostic::{Edit, Fix};
 use crate::rules::{equals_for_assignment, missing_token, syntax_error};
 
+mod typos;
+
 /// The RAPID language of the tree-sitter grammar.
 pub fn language() -> Language {
     tree_sitter_rapid::LANGUAGE.into()
@@ -48,14 +50,34 @@ pub fn syntax_diagnostics(tree: &Tree, text: &str) -> Vec<Diagnostic> {
         return out;
     }
     let language = tree.language();
+    // Strings left open first: the errors around them are theirs.
+    let mut errors = Vec::new();
+    crate::syntax_util::walk_pruned(root, &mut |node| {
+        if node.is_error() || node.is_missing() {
+            errors.push(node.byte_range());
+            false
+        } else {
+            node.has_error()
+        }
+    });
+    out.extend(typos::unterminated_strings(text, &errors));
+    let quotes: Vec<usize> = out.iter().map(|d| d.range.start).collect();
     // Only nodes with an error below them are entered.
     crate::syntax_util::walk_pruned(root, &mut |node| {
         if node.is_error() {
+            if quotes
+                .iter()
+                .any(|&q| node.start_byte() <= q && q < node.end_byte())
+            {
+                return false;
+            }
             let equals = equals_for_assignment(node, text);
-            if equals.is_empty() {
-                out.push(error_diagnostic(node, text, &language));
-            } else {
+            if !equals.is_empty() {
                 out.extend(equals);
+            } else if let Some(typo) = typos::explain(node, text, &language) {
+                out.push(typo);
+            } else {
+                out.push(error_diagnostic(node, text, &language));
             }
             false
         } else if node.is_missing() {
@@ -65,6 +87,7 @@ pub fn syntax_diagnostics(tree: &Tree, text: &str) -> Vec<Diagnostic> {
             node.has_error()
         }
     });
+    out.sort_by_key(|d| (d.range.start, d.range.end));
     out
 }
 
