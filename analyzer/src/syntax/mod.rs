@@ -100,6 +100,15 @@ fn no_module(root: Node<'_>, text: &str) -> Option<Diagnostic> {
     if root.children(&mut cursor).any(|c| c.kind() == "module") {
         return None;
     }
+    // A `MODULE` the parser could not make a module of: its errors say why.
+    let mut keyword = false;
+    crate::syntax_util::walk_pruned(root, &mut |n| {
+        keyword |= n.kind() == "module";
+        !keyword
+    });
+    if keyword {
+        return None;
+    }
     const MODULE: &str = "a module starts with `MODULE name` and ends with `ENDMODULE`";
     if text.trim_start_matches('\u{feff}').trim().is_empty() {
         return Some(Diagnostic::new(
