@@ -312,6 +312,36 @@ pub fn doc_pos(uri: &str, position: Value) -> Value {
 }
 
 impl TestClient {
+    /// Publications until each file of `want` had the codes it wants (in
+    /// any order: the files' publications interleave); the last of each.
+    pub async fn until_all(&mut self, want: &[(&str, &[&str])]) -> Vec<Value> {
+        let codes = |p: &Value| -> Vec<String> {
+            p["diagnostics"]
+                .as_array()
+                .map(|a| {
+                    a.iter()
+                        .map(|d| d["code"].as_str().unwrap_or("?").to_owned())
+                        .collect()
+                })
+                .unwrap_or_default()
+        };
+        let mut last: Vec<Option<Value>> = vec![None; want.len()];
+        for _ in 0..100 {
+            if want
+                .iter()
+                .zip(&last)
+                .all(|((_, wanted), got)| got.as_ref().is_some_and(|p| codes(p) == *wanted))
+            {
+                return last.into_iter().flatten().collect();
+            }
+            let n = self.notification("textDocument/publishDiagnostics").await;
+            if let Some(i) = want.iter().position(|(u, _)| n["params"]["uri"] == *u) {
+                last[i] = Some(n["params"].clone());
+            }
+        }
+        panic!("diagnostics never became {want:?}: {last:?}");
+    }
+
     /// The diagnostics published for `uri` at `version` or later.
     pub async fn diagnostics_at(&mut self, uri: &str, version: i64) -> Value {
         loop {

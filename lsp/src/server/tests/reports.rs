@@ -81,6 +81,28 @@ async fn a_client_that_cannot_be_told_to_pull_again_gets_pushed_diagnostics() {
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_file_opened_while_indexing_is_reported_again_once_its_task_is_known() {
+    let dir = temp_dir("rep-early");
+    write_files(&dir, &[("Lib.mod", LIB)]);
+    let mut client = TestClient::start(dir.to_path_buf());
+    let response = client
+        .request(
+            "initialize",
+            json!({"processId": null, "rootUri": uri(&dir), "capabilities": neovim_caps(),
+                   "initializationOptions": {"diagnosticsDelay": 0}}),
+        )
+        .await;
+    assert!(response.get("result").is_some(), "{response}");
+    // Opened before the workspace is indexed: helper may be unknown at
+    // first; once Lib is read, Main's diagnostics are pushed again.
+    client.notify("initialized", json!({}));
+    let main = client.open(&dir.join("Main.mod"), MAIN);
+    let params = until_codes(&mut client, &main, &["W201"]).await;
+    assert_eq!(params["version"], 1);
+    client.shutdown().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn pull_diagnostics_are_declared_only_to_clients_that_take_refreshes() {
     for (caps, pulls) in [(neovim_caps(), false), (vscode_caps(), true)] {
         let dir = temp_dir("rep-caps");
@@ -110,11 +132,15 @@ async fn after_indexing_every_file_is_reported_and_edits_reach_the_closed_ones()
     );
     let mut client = TestClient::new(dir.to_path_buf(), json!({"diagnosticsDelay": 0})).await;
     let other = uri(&dir.join("Other.mod"));
-    // Not open: reported from disk, without a version.
-    let params = until_codes(&mut client, &other, &["W101"]).await;
-    assert_eq!(params["version"], Value::Null, "{params}");
     let main = uri(&dir.join("Main.mod"));
-    until_codes(&mut client, &main, &["W201"]).await;
+    // Not open: reported from disk, without a version.
+    let reported = client
+        .until_all(&[(&other, &["W101"]), (&main, &["W201"])])
+        .await;
+    assert!(
+        reported.iter().all(|p| p["version"] == Value::Null),
+        "{reported:?}"
+    );
     // Renaming helper in the open Lib: the closed Other and Main follow.
     let lib = client.open(&dir.join("Lib.mod"), LIB);
     client.change(
