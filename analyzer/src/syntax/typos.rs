@@ -161,6 +161,30 @@ fn missing_then_before(error: Node<'_>, text: &str) -> Option<Diagnostic> {
     ))
 }
 
+/// Is `leaf` part of a statement or declaration that ends with `;`?
+fn in_statement(leaf: Node<'_>) -> bool {
+    let mut at = leaf.parent();
+    while let Some(n) = at {
+        match n.kind() {
+            "data_declaration" | "record_component" | "alias_declaration" | "assignment"
+            | "procedure_call" | "goto_statement" | "return_statement" | "raise_statement"
+            | "connect_statement" => return true,
+            "module"
+            | "procedure_declaration"
+            | "function_declaration"
+            | "trap_declaration"
+            | "source_file" => return false,
+            _ => at = n.parent(),
+        }
+    }
+    false
+}
+
+/// Can a token of this kind end a statement (before its `;`)?
+fn ends_statement(node: Node<'_>) -> bool {
+    ends_argument(node) || node.kind() == "%"
+}
+
 /// Can a token of this kind end an argument?
 fn ends_argument(node: Node<'_>) -> bool {
     matches!(
@@ -192,10 +216,13 @@ fn missing_comma(error: Node<'_>, text: &str) -> Option<Diagnostic> {
                 .get(r)
                 .is_some_and(|s| s.chars().all(|c| c == ' ' || c == '\t'))
     };
-    // After the previous argument (not the routine's name).
+    // After the previous argument (not the routine's name, nor a token that
+    // starts a line without a `,` at the end of the line before: that is a
+    // statement of its own after a missing `;`).
     if let Some(prev) = super::previous_leaf(error)
         && ends_argument(prev)
         && !is_routine_name(prev)
+        && !starts_statement_line(prev)
         && blank(prev.end_byte()..error.start_byte())
     {
         return Some(comma(
@@ -204,9 +231,10 @@ fn missing_comma(error: Node<'_>, text: &str) -> Option<Diagnostic> {
             &word(error.byte_range()),
         ));
     }
-    // Before the next argument.
+    // Before the next argument (the error not first on a line of its own).
     let next = error.next_sibling()?;
     if matches!(next.kind(), "argument_list" | "argument")
+        && !first_leaf(error).is_some_and(starts_statement_line)
         && let Some(last) = last_leaf(error)
         && ends_argument(last)
         && blank(error.end_byte()..next.start_byte())
@@ -224,6 +252,14 @@ fn missing_comma(error: Node<'_>, text: &str) -> Option<Diagnostic> {
         ));
     }
     None
+}
+
+/// Does `leaf` start its line, after a line that does not end with `,`
+/// (the line before ends a statement, or should)?
+fn starts_statement_line(leaf: Node<'_>) -> bool {
+    super::previous_leaf(leaf).is_some_and(|before| {
+        before.end_position().row < leaf.start_position().row && before.kind() != ","
+    })
 }
 
 fn comma(gap: Range<usize>, before: &str, after: &str) -> Diagnostic {
@@ -273,11 +309,32 @@ fn last_leaf(node: Node<'_>) -> Option<Node<'_>> {
 }
 
 /// A statement whose `;` is missing at the end of its line: the parser
-/// goes on into the next line and fails there. Told at the end of the
-/// line where the `;` belongs.
+/// goes on into the next line and fails there, at its start or after
+/// taking its first words as more arguments. Told at the end of the line
+/// where the `;` belongs.
 fn missing_semicolon(error: Node<'_>, language: &Language) -> Option<Diagnostic> {
-    let prev = super::previous_leaf(error)?;
-    if error.start_position().row <= prev.end_position().row || !ends_argument(prev) {
+    let mut prev = super::previous_leaf(error)?;
+    if error.start_position().row == prev.end_position().row {
+        // The error is not first on its line: the line's first token, if
+        // the statement of the line before swallowed it.
+        let mut first = prev;
+        while let Some(before) = super::previous_leaf(first)
+            && before.end_position().row == error.start_position().row
+        {
+            first = before;
+        }
+        if first.start_position().row != error.start_position().row {
+            return None;
+        }
+        prev = super::previous_leaf(first)?;
+        if !starts_statement_line(first) {
+            return None;
+        }
+    }
+    if error.start_position().row <= prev.end_position().row
+        || !ends_statement(prev)
+        || !in_statement(prev)
+    {
         return None;
     }
     let state = prev.next_parse_state();
@@ -385,6 +442,18 @@ mod tests {
                 "1:32",
                 "E002",
                 "missing `;` at the end of the line",
+            ),
+            (
+                "    %Tablet%\n    Set do1;",
+                "1:13",
+                "E002",
+                "missing `;` at the end of the line",
+            ),
+            (
+                "    MoveL p10,\n      v100 z10, tool0;",
+                "2:11",
+                "E002",
+                "missing `,` between the arguments `v100` and `z10`",
             ),
             ("    n := 1\n    n := 2;", "1:11", "E002", "missing `;`"),
             (
