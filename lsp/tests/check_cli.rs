@@ -287,21 +287,26 @@ fn exit_codes_follow_the_flags() {
     let code = |args: &[&str]| rapid(&dir, args).status.code();
     assert_eq!(code(&["check"]), Some(1));
     assert_eq!(code(&["check", "--exit-zero"]), Some(0));
-    assert_eq!(code(&["check", "--ignore", "E003"]), Some(0));
+    // A syntax error (E003) cannot be ignored: the module would not load.
+    assert_eq!(code(&["check", "--ignore", "E003"]), Some(1));
+    // Lib alone has neither errors nor warnings (Main is its task's context).
+    assert_eq!(code(&["check", "prog/Lib.mod"]), Some(0));
     assert_eq!(
-        code(&["check", "--ignore", "E003", "--error-on-warnings"]),
-        Some(1)
+        code(&["check", "prog/Lib.mod", "--error-on-warnings"]),
+        Some(0)
     );
     assert_eq!(
         code(&[
             "check",
             "--select",
-            "E003,W201",
+            "W201",
             "--ignore",
-            "E,W",
-            "--error-on-warnings"
+            "W101",
+            "--error-on-warnings",
+            "--min-severity",
+            "error"
         ]),
-        Some(0)
+        Some(1)
     );
     assert_eq!(code(&["check", "--select", "E999"]), Some(2));
     assert_eq!(code(&["check", "no-such-folder"]), Some(2));
@@ -312,10 +317,14 @@ fn exit_codes_follow_the_flags() {
 fn select_ignore_and_severity_from_the_command_line_and_rapid_toml() {
     let dir = program("config");
     assert_eq!(codes(&findings(&dir, &[])), ["W201", "E003", "W101"]);
-    assert_eq!(codes(&findings(&dir, &["--select", "W"])), ["W201", "W101"]);
+    // Syntax errors (E003 here) are reported whatever the selection says.
+    assert_eq!(
+        codes(&findings(&dir, &["--select", "W"])),
+        ["W201", "E003", "W101"]
+    );
     assert_eq!(
         codes(&findings(&dir, &["--ignore", "unused-data,E0"])),
-        ["W101"]
+        ["E003", "W101"]
     );
     write(
         &dir,
@@ -348,8 +357,8 @@ fn per_path_overrides_and_excludes() {
             ("new/gen/Main.mod", MAIN),
             (
                 "rapid.toml",
-                "exclude = [\"backup_old/**\"]\n\n[[lint.overrides]]\npaths = [\"legacy/**\"]\nignore = [\"W\"]\n\
-                 [lint.overrides.severity]\nE003 = \"warning\"\n",
+                "exclude = [\"backup_old/**\"]\n\n[[lint.overrides]]\npaths = [\"legacy/**\"]\nignore = [\"W1\"]\n\
+                 [lint.overrides.severity]\nunused-data = \"error\"\n",
             ),
         ],
     );
@@ -436,11 +445,11 @@ fn inline_suppressions() {
     );
     let found = findings(&dir, &[]);
     assert!(
-        found
-            .iter()
-            .all(|(c, line)| c != "W101" && *line != 4 && *line != 6),
+        found.iter().all(|(c, line)| c != "W101" && *line != 4),
         "{found:?}"
     );
+    // A syntax error is reported even where a comment suppresses its rule.
+    assert!(found.contains(&("E003".to_owned(), 6)), "{found:?}");
     assert!(found.contains(&("E003".to_owned(), 9)), "{found:?}");
 }
 
