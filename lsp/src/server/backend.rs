@@ -1076,7 +1076,7 @@ impl LanguageServer for Backend {
                 requests::completion(s, pos, lazy)
             })
             .await?
-            .map(CompletionResponse::Array))
+            .map(CompletionResponse::List))
     }
 
     async fn completion_resolve(&self, item: CompletionItem) -> Result<CompletionItem> {
