@@ -44,11 +44,16 @@ struct Stale {
     open: HashSet<String>,
 }
 
+/// How many files' snapshots are taken under one hold of the state's lock
+/// (taking them may build their tasks): an edit or a request waits for one
+/// batch at most.
+const SNAPSHOTS_PER_LOCK: usize = 16;
+
 impl State {
-    /// Snapshots of the files that are not open and have no valid report;
-    /// forgets the reports of files that are open now or gone (and returns
-    /// the URIs of the gone ones).
-    fn stale_reports(&mut self) -> (Stale, Vec<Uri>) {
+    /// The files that are not open, and the open ones; forgets the reports
+    /// of files that are open now or gone (and returns the URIs of the gone
+    /// ones).
+    fn closed_files(&mut self) -> (Vec<String>, HashSet<String>, Vec<Uri>) {
         let open: HashSet<String> = self.docs.keys().cloned().collect();
         let paths: Vec<String> = self
             .ws
@@ -67,16 +72,25 @@ impl State {
             }
             keep
         });
+        (paths, open, gone)
+    }
+
+    /// Snapshots of those of `paths` that are still not open and have no
+    /// valid report.
+    fn stale_snapshots(&mut self, paths: &[String]) -> Vec<Snapshot> {
         let mut snapshots = Vec::new();
         for path in paths {
-            let Some(uri) = uri_of(&HashMap::new(), &path) else {
+            if self.docs.contains_key(path) {
+                continue;
+            }
+            let Some(uri) = uri_of(&HashMap::new(), path) else {
                 continue;
             };
-            let Some(unit) = self.ws.unit(&path).cloned() else {
+            let Some(unit) = self.ws.unit(path).cloned() else {
                 continue;
             };
-            let task = self.ws.task_of(&path);
-            let valid = self.closed.get(&path).is_some_and(|r| {
+            let task = self.ws.task_of(path);
+            let valid = self.closed.get(path).is_some_and(|r| {
                 Arc::ptr_eq(&r.unit, &unit)
                     && r.interface == task.interface
                     && r.config_generation == self.config_generation
@@ -85,7 +99,7 @@ impl State {
                 snapshots.push(snap);
             }
         }
-        (Stale { snapshots, open }, gone)
+        snapshots
     }
 
     /// Keeps fresh reports (those still for the workspace's text, task and
@@ -187,17 +201,18 @@ impl Backend {
     /// `generation`: stop (and give `None`) once a newer push run is
     /// scheduled.
     async fn refresh_reports(&self, generation: Option<u64>) -> Option<Vec<Uri>> {
-        let (stale, gone) = self.mutate("reporting the workspace", State::stale_reports)?;
+        let (paths, open, gone) = self.mutate("reporting the workspace", State::closed_files)?;
+        let mut snapshots = Vec::new();
+        for batch in paths.chunks(SNAPSHOTS_PER_LOCK) {
+            snapshots.extend(self.mutate("reporting the workspace", |s| s.stale_snapshots(batch))?);
+            tokio::task::yield_now().await;
+        }
+        let stale = Stale { snapshots, open };
         if !stale.snapshots.is_empty() {
             let shared: Arc<Shared> = self.shared.clone();
             let superseded =
                 move || generation.is_some_and(|g| shared.lock().closed_generation != g);
-            let (fresh, complete) = self
-                .blocking("reporting the workspace", move || {
-                    check_stale(stale, &superseded)
-                })
-                .await
-                .ok()?;
+            let (fresh, complete) = in_background(move || check_stale(stale, &superseded)).await?;
             // What a superseded run checked is kept (the next run has less
             // to do); the next run publishes.
             self.mutate("reporting the workspace", |s| s.keep_reports(fresh));
@@ -305,6 +320,43 @@ impl Backend {
         WorkspaceDiagnosticReportResult::Report(WorkspaceDiagnosticReport { items })
     }
 }
+
+/// Runs `f` on a thread of its own at the lowest scheduling priority, so
+/// that the report of the whole workspace (seconds of work on a large
+/// one) never delays the editor's requests and the open files'
+/// diagnostics; `None` if it panicked or no thread could be started.
+async fn in_background<R: Send + 'static>(f: impl FnOnce() -> R + Send + 'static) -> Option<R> {
+    let (tx, rx) = tokio::sync::oneshot::channel();
+    let spawned = std::thread::Builder::new()
+        .name("rapid-workspace-report".to_owned())
+        .spawn(move || {
+            lowest_priority();
+            let result = std::panic::catch_unwind(std::panic::AssertUnwindSafe(f));
+            if result.is_err() {
+                eprintln!("rapid lsp: the workspace report panicked");
+            }
+            let _ = tx.send(result.ok());
+        });
+    if spawned.is_err() {
+        return None;
+    }
+    rx.await.ok().flatten()
+}
+
+/// Gives the calling thread the lowest priority (nice 19; per thread on
+/// Linux). On a machine where every core is busy, the editor's requests
+/// then run first.
+#[cfg(target_os = "linux")]
+#[allow(unsafe_code)]
+fn lowest_priority() {
+    // SAFETY: setpriority takes plain integers; with PRIO_PROCESS and 0 it
+    // changes the nice value of the calling thread only, which affects
+    // scheduling and nothing in memory.
+    let _ = unsafe { libc::setpriority(libc::PRIO_PROCESS, 0, 19) };
+}
+
+#[cfg(not(target_os = "linux"))]
+fn lowest_priority() {}
 
 fn full(uri: Uri, result_id: String, items: Vec<Diagnostic>) -> WorkspaceDocumentDiagnosticReport {
     WorkspaceDocumentDiagnosticReport::Full(WorkspaceFullDocumentDiagnosticReport {
