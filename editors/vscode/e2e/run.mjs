@@ -433,6 +433,45 @@ try {
     assert(first === "MoveL", `the first row is ${first}`);
   });
 
+  await step("one file opened without its folder gets its task from its place (a backup's SYSMOD and SYSPAR)", async () => {
+    const backup = path.join(tmp, "lone", "BACKUP");
+    const write = (rel, text) => {
+      fs.mkdirSync(path.dirname(path.join(backup, rel)), { recursive: true });
+      fs.writeFileSync(path.join(backup, rel), text);
+    };
+    write("BACKINFO/backinfo.txt", "backup\n");
+    write("SYSPAR/EIO.cfg", 'EIO:CFG_1.0:6:1::\n#\nEIO_SIGNAL:\n\n      -Name "diGo" -SignalType "DI" -Device "d652"\n');
+    write(
+      "RAPID/TASK1/PROGMOD/Lone.mod",
+      "MODULE Lone\n    PROC main()\n        VAR num nUnused;\n        LibHelper;\n        WaitDI diGo, 1;\n    ENDPROC\nENDMODULE\n",
+    );
+    write("RAPID/TASK1/SYSMOD/Lib.sys", "MODULE Lib(SYSMODULE)\n    PROC LibHelper()\n    ENDPROC\nENDMODULE\n");
+    const lone = path.join(backup, "RAPID/TASK1/PROGMOD/Lone.mod");
+    const want = JSON.parse(
+      spawnSync(rapid, ["check", lone, "--format", "json"], { encoding: "utf8" }).stdout,
+    ).map((d) => `${d.code}@${d.line}`);
+    assert(want.join(" ") === "W201@3", `rapid check says ${want.join(" ")}`);
+    // an empty window (no folder), then File: Open File... with the path
+    await page.goto(`http://127.0.0.1:${port}/?ew=true`);
+    await page.waitForSelector(".monaco-workbench");
+    await page.waitForTimeout(1500);
+    await runCommand("File: Open File...");
+    const input = page.locator(".quick-input-widget input");
+    await input.waitFor({ state: "visible" });
+    await input.fill(lone);
+    await page.waitForTimeout(500);
+    await page.keyboard.press("Enter");
+    await page.locator(".tabs-container .tab", { hasText: "Lone.mod" }).first().waitFor({ state: "visible" });
+    await runCommand("View: Focus Problems");
+    const row = page.locator(".markers-panel .monaco-list-row", { hasText: "W201" });
+    await row.first().waitFor({ state: "visible", timeout: TIMEOUT });
+    // the task's routine and the backup's signal are known: only W201
+    await page.waitForTimeout(2000);
+    const rows = (await page.locator(".markers-panel .monaco-list-row").allInnerTexts()).join("\n");
+    await page.screenshot({ path: path.join(out, "vscode-lone-file.png") });
+    assert(!/W101|I103/.test(rows), `Problems: ${rows}`);
+  });
+
   await step("a missing server binary gives a message with a link to the install instructions", async () => {
     const machine = path.join(data, "Machine", "settings.json");
     const bogus = path.join(tmp, "no-such-dir", "rapid");
