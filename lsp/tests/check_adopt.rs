@@ -3,19 +3,9 @@
 //! whatever folder the command runs from, and files that hold no module.
 
 use std::path::Path;
-use std::process::Output;
 
 mod support;
 use support::*;
-
-fn show(out: &Output) -> String {
-    format!(
-        "exit {}\n--- stdout\n{}--- stderr\n{}",
-        out.status.code().unwrap_or(-1),
-        text(&out.stdout),
-        text(&out.stderr)
-    )
-}
 
 /// (file name, line, code) of each finding of `rapid check ARGS --format
 /// json` run in `dir`, sorted.

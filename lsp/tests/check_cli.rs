@@ -2,20 +2,9 @@
 //! programs written into scratch folders.
 
 use std::path::Path;
-use std::process::Output;
 
 mod support;
 use support::*;
-
-/// `code: stdout` then stderr, for snapshots and messages.
-fn show(out: &Output) -> String {
-    format!(
-        "exit {}\n--- stdout\n{}--- stderr\n{}",
-        out.status.code().unwrap_or(-1),
-        text(&out.stdout),
-        text(&out.stderr)
-    )
-}
 
 const MAIN: &str = "MODULE Main\n\
     PROC main()\n\

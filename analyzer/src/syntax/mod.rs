@@ -301,7 +301,12 @@ fn previous_leaf(node: Node<'_>) -> Option<Node<'_>> {
         }
         at = at.parent()?;
     };
-    let mut leaf = prev;
+    Some(last_leaf(prev))
+}
+
+/// The last token of `node` (the node itself when it has no children).
+fn last_leaf(node: Node<'_>) -> Node<'_> {
+    let mut leaf = node;
     while let Some(last) = leaf
         .child_count()
         .checked_sub(1)
@@ -309,7 +314,7 @@ fn previous_leaf(node: Node<'_>) -> Option<Node<'_>> {
     {
         leaf = last;
     }
-    Some(leaf)
+    leaf
 }
 
 /// At most 40 characters of `range`, on one line.

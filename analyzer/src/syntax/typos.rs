@@ -235,8 +235,7 @@ fn missing_comma(error: Node<'_>, text: &str) -> Option<Diagnostic> {
     let next = error.next_sibling()?;
     if matches!(next.kind(), "argument_list" | "argument")
         && !first_leaf(error).is_some_and(starts_statement_line)
-        && let Some(last) = last_leaf(error)
-        && ends_argument(last)
+        && ends_argument(super::last_leaf(error))
         && blank(error.end_byte()..next.start_byte())
     {
         let first = next.named_child(0).unwrap_or(next);
@@ -294,18 +293,6 @@ fn argument_around(leaf: Node<'_>) -> Node<'_> {
         at = p;
     }
     at
-}
-
-fn last_leaf(node: Node<'_>) -> Option<Node<'_>> {
-    let mut node = node;
-    while let Some(last) = node
-        .child_count()
-        .checked_sub(1)
-        .and_then(|i| node.child(i))
-    {
-        node = last;
-    }
-    (node.child_count() == 0).then_some(node)
 }
 
 /// A statement whose `;` is missing at the end of its line: the parser

@@ -348,11 +348,16 @@ check('hover over a built-in call shows its signature', function()
   expect(text:find(wait_time_signature, 1, true), 'hover %q lacks %q', text, wait_time_signature)
 end)
 
-check('hover over a constant expression shows its value', function()
-  local result = request('textDocument/hover', position('\\Num:=nSlots', 8))
+--- Expects the hover at `needle` (+ `offset`) to show the value 24.
+local function hover_shows_24(needle, offset)
+  local result = request('textDocument/hover', position(needle, offset))
   expect(result and result.contents, 'no hover')
   local text = markup_text(result.contents)
   expect(text:find('%f[%d]24%f[%D]'), 'hover %q does not show the value 24', text)
+end
+
+check('hover over a constant expression shows its value', function()
+  hover_shows_24('\\Num:=nSlots', 8)
 end)
 
 check('definition: a routine in the same module, a tool in the other module', function()
@@ -506,10 +511,7 @@ check('MoveL ranks first at the start of a statement', function()
 end)
 
 check('hover on a constant\'s declaration shows its value, as on its use', function()
-  local result = request('textDocument/hover', position('CONST num nSlots', 12))
-  expect(result and result.contents, 'no hover')
-  local text = markup_text(result.contents)
-  expect(text:find('%f[%d]24%f[%D]'), 'hover %q does not show the value 24', text)
+  hover_shows_24('CONST num nSlots', 12)
 end)
 
 check('parameter names are hinted before literals, not before names', function()

@@ -3,20 +3,11 @@
 
 use serde_json::{Value, json};
 
-use super::{TestClient, temp_dir};
+use super::{TestClient, codes, temp_dir};
 
 const MAIN: &str =
     "MODULE Main\n  PROC main()\n    VAR num unused;\n    helper;\n  ENDPROC\nENDMODULE\n";
 const LIB: &str = "MODULE Lib\n  PROC helper()\n  ENDPROC\nENDMODULE\n";
-
-fn codes(params: &Value) -> Vec<String> {
-    params["diagnostics"]
-        .as_array()
-        .expect("diagnostics")
-        .iter()
-        .map(|d| d["code"].as_str().unwrap_or("?").to_owned())
-        .collect()
-}
 
 fn no_delay() -> Value {
     json!({"diagnosticsDelay": 0})

@@ -307,6 +307,27 @@ pub fn pos(text: &str, needle: &str, shift: usize) -> Value {
     json!({"line": line, "character": character})
 }
 
+/// The codes of published diagnostics, in order.
+pub fn codes(params: &Value) -> Vec<String> {
+    params["diagnostics"]
+        .as_array()
+        .expect("diagnostics")
+        .iter()
+        .map(|d| d["code"].as_str().unwrap_or("?").to_owned())
+        .collect()
+}
+
+/// Diagnostics published for `uri` until they have the codes `want`.
+pub async fn until_codes(client: &mut TestClient, uri: &str, want: &[&str]) -> Value {
+    for _ in 0..20 {
+        let params = client.diagnostics_for(uri).await;
+        if codes(&params) == want {
+            return params;
+        }
+    }
+    panic!("diagnostics of {uri} never became {want:?}");
+}
+
 pub fn doc_pos(uri: &str, position: Value) -> Value {
     json!({"textDocument": {"uri": uri}, "position": position})
 }
@@ -315,16 +336,6 @@ impl TestClient {
     /// Publications until each file of `want` had the codes it wants (in
     /// any order: the files' publications interleave); the last of each.
     pub async fn until_all(&mut self, want: &[(&str, &[&str])]) -> Vec<Value> {
-        let codes = |p: &Value| -> Vec<String> {
-            p["diagnostics"]
-                .as_array()
-                .map(|a| {
-                    a.iter()
-                        .map(|d| d["code"].as_str().unwrap_or("?").to_owned())
-                        .collect()
-                })
-                .unwrap_or_default()
-        };
         let mut last: Vec<Option<Value>> = vec![None; want.len()];
         for _ in 0..100 {
             if want

@@ -6,33 +6,13 @@
 
 use serde_json::{Value, json};
 
-use super::{TestClient, doc_pos, pos, temp_dir, uri, write_files};
+use super::{TestClient, doc_pos, pos, temp_dir, until_codes, uri, write_files};
 
 const MAIN: &str =
     "MODULE Main\n  PROC main()\n    VAR num unused;\n    helper;\n  ENDPROC\nENDMODULE\n";
 const LIB: &str = "MODULE Lib\n  PROC helper()\n  ENDPROC\nENDMODULE\n";
 const OTHER: &str =
     "MODULE Other\n  PROC other()\n    helper;\n    missing;\n  ENDPROC\nENDMODULE\n";
-
-fn codes(params: &Value) -> Vec<String> {
-    params["diagnostics"]
-        .as_array()
-        .expect("diagnostics")
-        .iter()
-        .map(|d| d["code"].as_str().unwrap_or("?").to_owned())
-        .collect()
-}
-
-/// Diagnostics published for `uri` until they have the codes `want`.
-async fn until_codes(client: &mut TestClient, uri: &str, want: &[&str]) -> Value {
-    for _ in 0..20 {
-        let params = client.diagnostics_for(uri).await;
-        if codes(&params) == want {
-            return params;
-        }
-    }
-    panic!("diagnostics of {uri} never became {want:?}");
-}
 
 /// What Neovim 0.11 declares: pull diagnostics, no refresh.
 fn neovim_caps() -> Value {
