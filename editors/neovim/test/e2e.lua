@@ -380,18 +380,28 @@ check('definition: a routine in the same module, a tool in the other module', fu
     tostring(cell[line + 1]))
 end)
 
-check('completion after \\ lists the optional arguments', function()
+--- Inserts `code` (indented as the statements of PickBox) as a new line
+--- after `WaitTime 0.2;`, asks for completion at its end (with `context`),
+--- removes it again; returns the items sorted by sortText and the position.
+local function completion_on_new_line(code, context)
   local row, l = line_of('WaitTime 0.2;')
-  local indent = l:match('^%s*')
-  local text = indent .. 'MoveL pPickAbove, v300, fine, tGripper\\'
+  local text = l:match('^%s*') .. code
   vim.api.nvim_buf_set_lines(buf, row + 1, row + 1, false, { text })
-  local params = {
-    textDocument = { uri = vim.uri_from_bufnr(buf) },
-    position = { line = row + 1, character = #text },
-    context = { triggerKind = 2, triggerCharacter = '\\' },
-  }
-  local result = request('textDocument/completion', params)
+  local at = { textDocument = { uri = vim.uri_from_bufnr(buf) }, position = { line = row + 1, character = #text } }
+  local ok, result = pcall(request, 'textDocument/completion', vim.tbl_extend('force', at, { context = context }))
+  local help = ok and code:sub(-1) == '\\' and request('textDocument/signatureHelp', at) or nil
+  vim.api.nvim_buf_set_lines(buf, row + 1, row + 2, false, {})
+  expect(ok, '%s', tostring(result))
   local items = result and (result.items or result) or {}
+  table.sort(items, function(a, b)
+    return (a.sortText or a.label) < (b.sortText or b.label)
+  end)
+  return items, help
+end
+
+check('completion after \\ lists the optional arguments', function()
+  local items = completion_on_new_line('MoveL pPickAbove, v300, fine, tGripper\\',
+    { triggerKind = 2, triggerCharacter = '\\' })
   local labels, known = {}, 0
   for _, item in ipairs(items) do
     local label = item.label:gsub('^\\', ''):match('^[%w_]+') or item.label
@@ -403,7 +413,6 @@ check('completion after \\ lists the optional arguments', function()
   local total = vim.tbl_count(movel_optionals)
   expect(known == total, 'completion lists %d of the %d optional arguments of MoveL: %s', known, total,
     table.concat(labels, ' '))
-  vim.api.nvim_buf_set_lines(buf, row + 1, row + 2, false, {})
 end)
 
 check('indentation is the formatter\'s: 4 spaces, or [format] indent-width of rapid.toml', function()
@@ -473,19 +482,8 @@ check('an edit in one module updates the diagnostics of the other open module of
 end)
 
 check('completion after \\ offers first what can come next; signature help marks it, with types', function()
-  local row, l = line_of('WaitTime 0.2;')
-  local indent = l:match('^%s*')
-  local text = indent .. 'MoveL pPickAbove, v300, fine, tGripper\\'
-  vim.api.nvim_buf_set_lines(buf, row + 1, row + 1, false, { text })
-  local at = { textDocument = { uri = vim.uri_from_bufnr(buf) }, position = { line = row + 1, character = #text } }
-  local result = request('textDocument/completion', vim.tbl_extend('force', at,
-    { context = { triggerKind = 2, triggerCharacter = '\\' } }))
-  local items = result and (result.items or result) or {}
-  table.sort(items, function(a, b)
-    return (a.sortText or a.label) < (b.sortText or b.label)
-  end)
-  local help = request('textDocument/signatureHelp', at)
-  vim.api.nvim_buf_set_lines(buf, row + 1, row + 2, false, {})
+  local items, help = completion_on_new_line('MoveL pPickAbove, v300, fine, tGripper\\',
+    { triggerKind = 2, triggerCharacter = '\\' })
   expect(items[1] and items[1].label == 'WObj', 'first item %s', items[1] and items[1].label or 'none')
   local sig = help and help.signatures and help.signatures[1]
   expect(sig, 'no signature help')
@@ -497,16 +495,7 @@ check('completion after \\ offers first what can come next; signature help marks
 end)
 
 check('MoveL ranks first at the start of a statement', function()
-  local row, l = line_of('WaitTime 0.2;')
-  local indent = l:match('^%s*')
-  vim.api.nvim_buf_set_lines(buf, row + 1, row + 1, false, { indent })
-  local result = request('textDocument/completion',
-    { textDocument = { uri = vim.uri_from_bufnr(buf) }, position = { line = row + 1, character = #indent } })
-  vim.api.nvim_buf_set_lines(buf, row + 1, row + 2, false, {})
-  local items = result and (result.items or result) or {}
-  table.sort(items, function(a, b)
-    return (a.sortText or a.label) < (b.sortText or b.label)
-  end)
+  local items = completion_on_new_line('', { triggerKind = 1 })
   expect(items[1] and items[1].label == 'MoveL', 'first item %s', items[1] and items[1].label or 'none')
 end)
 
