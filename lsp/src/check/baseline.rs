@@ -11,7 +11,8 @@
 //! copy of the line is new.
 //!
 //! The file is JSON, sorted, one entry per distinct finding, so that its
-//! changes read well in a review.
+//! changes read well in a review. Syntax errors are neither recorded nor
+//! left out: a module with one does not load, whatever its age.
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -20,6 +21,7 @@ use rapid_analyzer::diagnostic::Diagnostic;
 use serde::{Deserialize, Serialize};
 
 use super::Checked;
+use super::settings::is_syntax_rule;
 use crate::source::SourceFile;
 
 /// The format's version, written in the file.
@@ -111,6 +113,9 @@ impl Baseline {
             let file = relative(&self.dir, &c.file.path);
             let source = &c.file;
             c.diagnostics.retain(|d| {
+                if is_syntax_rule(d.rule) {
+                    return true;
+                }
                 let key = key_of(&file, source, d);
                 match left.get_mut(&key) {
                     Some(n) if *n > 0 => {
@@ -137,7 +142,7 @@ pub fn record(path: &Path, checked: &[Checked]) -> Result<usize, String> {
     let mut total = 0;
     for c in checked {
         let file = relative(&dir, &c.file.path);
-        for d in &c.diagnostics {
+        for d in c.diagnostics.iter().filter(|d| !is_syntax_rule(d.rule)) {
             let entry = entries
                 .entry(key_of(&file, &c.file, d))
                 .or_insert_with(|| (d.rule.name.to_owned(), 0));
@@ -260,6 +265,16 @@ mod tests {
         )];
         assert_eq!(baseline.filter(&mut fixed), Filtered { known: 1, gone: 1 });
         assert_eq!(fixed[0].diagnostics.len(), 1);
+        // A syntax error is never recorded, so never left out.
+        let broken = [("W101", "Foo", 0), ("E002", "Foo", 1)];
+        assert_eq!(
+            record(&base, &[checked(&a, before, &broken)]).expect("w"),
+            1
+        );
+        let baseline = Baseline::read(&base).expect("valid").expect("there");
+        let mut again = vec![checked(&a, before, &broken)];
+        assert_eq!(baseline.filter(&mut again), Filtered { known: 1, gone: 0 });
+        assert_eq!(again[0].diagnostics[0].rule.code, "E002");
         std::fs::write(&base, "{\"rapid-baseline\": 7, \"findings\": []}").expect("w");
         let err = Baseline::read(&base).expect_err("a future format");
         assert!(err.contains("format 7"), "{err}");
