@@ -157,9 +157,9 @@ fn check_stale(
             continue;
         };
         let checking = with_trees(&task, &stale.open);
-        // One file after the other, on one thread: this runs in the
-        // background, and the other core stays free for the editor's
-        // requests. A newer run makes this one stop between two files.
+        // One file after the other, on one low-priority thread (see
+        // `in_background`); a newer run makes this one stop between two
+        // files.
         for snap in snaps {
             if superseded() {
                 return (out, false);
@@ -265,6 +265,10 @@ impl Backend {
                     .map(|(p, r)| (p.clone(), r.uri.clone(), r.items.clone()))
                     .collect();
                 for (path, uri, items) in reports {
+                    // Opened since: the open document's diagnostics count.
+                    if s.docs.contains_key(&path) {
+                        continue;
+                    }
                     if s.should_publish(&path, None, &items, false) {
                         sends.push((uri, items.to_vec()));
                     }
