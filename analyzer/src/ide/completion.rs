@@ -4,10 +4,11 @@
 //! strings. The context comes from the text before the cursor, so
 //! half-written code works.
 
-use std::collections::{HashMap, HashSet};
+use std::collections::HashSet;
 
 use super::context::{Before, before, call_at, partial, statement_start, words};
 use super::signature::{Sig, active, sig_of};
+use super::usage::{function_rank, instruction_rank};
 use super::{CompletionItem, CompletionKind};
 use crate::catalogue::catalogue;
 use crate::check::{Cx, RoutineSym};
@@ -53,68 +54,12 @@ fn builtins() -> &'static Builtins {
     })
 }
 
-/// How much real programs call each built-in: a rank (0 = called most)
-/// for the instructions and functions in `usage.txt`, by folded name.
-struct Usage {
-    instructions: HashMap<String, usize>,
-    functions: HashMap<String, usize>,
-}
-
-fn usage() -> &'static Usage {
-    static CACHE: std::sync::OnceLock<Usage> = std::sync::OnceLock::new();
-    CACHE.get_or_init(|| {
-        let mut usage = Usage {
-            instructions: HashMap::new(),
-            functions: HashMap::new(),
-        };
-        let mut section = None;
-        for line in include_str!("usage.txt").lines().map(str::trim) {
-            match line {
-                "" => {}
-                l if l.starts_with('#') => {}
-                "[instructions]" => section = Some(&mut usage.instructions),
-                "[functions]" => section = Some(&mut usage.functions),
-                name => {
-                    if let Some(map) = section.as_mut() {
-                        let rank = map.len();
-                        map.entry(fold(name)).or_insert(rank);
-                    }
-                }
-            }
-        }
-        usage
-    })
-}
-
-/// The instructions offered before the program's own procedures at a
-/// statement start: the most called ones.
-const TOP_INSTRUCTIONS: usize = 10;
-
-/// The sort key of a built-in instruction at a statement start: the most
-/// called first (before the program's procedures, `1`), then the other
-/// ranked ones by rank, then the rest.
-fn instruction_rank(key: &str) -> String {
-    match usage().instructions.get(key) {
-        Some(&r) if r < TOP_INSTRUCTIONS => format!("0{r:03}"),
-        Some(&r) => format!("2{r:03}"),
-        None => "2999".to_owned(),
-    }
-}
-
-/// The rank part of a built-in function's sort key.
-fn function_rank(key: &str) -> String {
-    match usage().functions.get(key) {
-        Some(&r) => format!("{r:03}"),
-        None => "999".to_owned(),
-    }
-}
-
 /// Builds what every completion list shares (the built-ins with their
 /// signatures) ahead of the first request, which would otherwise pay for
 /// it. A server calls this while it indexes.
 pub fn prepare_completions() {
     builtins();
-    usage();
+    super::usage::prepare();
 }
 
 /// Snippets: label, body.

@@ -20,6 +20,7 @@ mod signature;
 mod structure;
 mod symbols;
 mod tokens;
+mod usage;
 mod value;
 
 pub use actions::code_actions;
