@@ -324,17 +324,9 @@ end
 check(('a diagnostic appears for the seeded error (%s)'):format(expected[1] and expected[1].code or '?'), function()
   expect(#expected > 0, 'rapid check found no error in the seeded file')
   local want = expected[1]
-  local found
-  vim.wait(TIMEOUT, function()
-    for _, d in ipairs(vim.diagnostic.get(buf)) do
-      if d.code == want.code then
-        found = d
-        return true
-      end
-    end
-    return false
-  end, 50)
-  expect(found, 'no %s diagnostic; got %s', want.code, vim.inspect(vim.diagnostic.get(buf)))
+  local found = wait_diagnostic(buf, function(d)
+    return d.code == want.code
+  end, want.code)
   expect(found.lnum == want.line - 1 and found.col == want.column - 1,
     'at %d:%d, rapid check says %d:%d', found.lnum + 1, found.col + 1, want.line, want.column)
   expect(found.severity == vim.diagnostic.severity.ERROR, 'severity %s', tostring(found.severity))
