@@ -1,6 +1,7 @@
 // The workspace that the editors' end-to-end tests open: a copy of
-// examples/palletizer (two modules and an EIO.cfg) with one seeded error and
-// a constant whose value hovers show.
+// examples/palletizer (two modules and an EIO.cfg) with one seeded error, a
+// constant whose value hovers show, and a seeded warning in Cell.sys (a file
+// the tests do not open: the editor must show it all the same).
 //
 //   node editors/e2e-workspace.mjs DEST      (prints DEST/MainModule.mod)
 import * as fs from "node:fs";
@@ -20,18 +21,28 @@ export const EDITS = [
   ["    PROC GoHome()\n", '    PROC GoHome()\n        nPlaced := "none";\n'],
 ];
 
+export const CELL_EDITS = [
+  // the seeded warning of a file that is not open: an unused routine datum
+  ["\nENDMODULE", "\n    PROC CheckCell()\n        VAR num nUnchecked;\n    ENDPROC\n\nENDMODULE"],
+];
+
+function edit(file, edits) {
+  let text = fs.readFileSync(file, "latin1");
+  for (const [from, to] of edits) {
+    if (!text.includes(from)) {
+      throw new Error(`${file} changed: cannot find ${JSON.stringify(from)}`);
+    }
+    text = text.replace(from, to);
+  }
+  fs.writeFileSync(file, text, "latin1");
+}
+
 /** Creates the workspace in `dest` (which must not exist); returns the seeded file. */
 export function makeWorkspace(dest) {
   fs.cpSync(path.join(repo, "examples/palletizer"), dest, { recursive: true });
   const main = path.join(dest, "MainModule.mod");
-  let text = fs.readFileSync(main, "latin1");
-  for (const [from, to] of EDITS) {
-    if (!text.includes(from)) {
-      throw new Error(`examples/palletizer/MainModule.mod changed: cannot find ${JSON.stringify(from)}`);
-    }
-    text = text.replace(from, to);
-  }
-  fs.writeFileSync(main, text, "latin1");
+  edit(main, EDITS);
+  edit(path.join(dest, "Cell.sys"), CELL_EDITS);
   return main;
 }
 

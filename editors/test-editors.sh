@@ -59,8 +59,18 @@ if want static || want vscode; then
     node test/agreement.mjs "$tools/agreement"
     npx vscode-tmgrammar-test -g syntaxes/rapid.tmLanguage.json "$tools/agreement/*.mod"
     rm -f rapid.vsix
-    npx vsce package --no-dependencies --out rapid.vsix
+    npx vsce package --no-dependencies --allow-missing-repository --out rapid.vsix
     [ -s rapid.vsix ] || die "vsce produced no rapid.vsix"
+    # the licence texts ship in the package, and no link to a fake home
+    python3 - rapid.vsix <<'PY' || die "rapid.vsix: licence texts or links wrong"
+import sys, zipfile
+z = zipfile.ZipFile(sys.argv[1])
+lic = z.read("extension/LICENSE.txt").decode()
+assert "Permission is hereby granted" in lic and "Apache License" in lic, "LICENSE.txt lacks a licence text"
+for name in z.namelist():
+    assert b"example.invalid" not in z.read(name), f"{name} links to example.invalid"
+print(f"rapid.vsix: {len(z.namelist())} files, LICENSE.txt with the MIT and Apache-2.0 texts")
+PY
   )
 fi
 

@@ -14,7 +14,9 @@ const EIO: &str = include_str!("seeded/EIO.cfg");
 const SEEDS: &[(&str, &str, &str)] = &[
     ("level := l;", "level = l;", "equals-for-assignment"),
     ("ClkReset clock1;", "ClkReset clock1", "missing-token"),
-    ("WaitTime 0.3;", "WaitTime 0.3 0.1;", "syntax-error"),
+    ("WaitTime 0.3;", "WaitTime 0.3 0.1;", "missing-token"),
+    ("WaitTime 0.3;", "WaitTime 0.3 \\;", "syntax-error"),
+    ("WaitTime 0.3;", "TPWrite \"waiting;", "syntax-error"),
     (
         "IF stopRequested THEN",
         "IF placed THEN",

@@ -1131,7 +1131,21 @@ fn decimal_of(v: &Value) -> f64 {
 fn round_dec(x: f64, dec: i32) -> f64 {
     let m = 10f64.powi(dec);
     let y = x * m;
-    (y * (1.0 + 1e-12)).round() / m
+    // A half written in decimal may be stored just below it (2.675 is
+    // 2.67499999999999982236431605997495353221893310546875 in binary): it
+    // rounds up, as the decimal says. Only a few units in the last place
+    // count as such a half; a relative nudge of its own would move large
+    // values by whole units (16777216e6 printed as 16777216000017).
+    // (Past about 1e14 a unit in the last place is a sizeable part of one:
+    // no nudge there.)
+    let half = y.abs().fract();
+    let tolerance = 8.0 * f64::EPSILON * y.abs();
+    let r = if tolerance < 0.25 && (half - 0.5).abs() <= tolerance {
+        (y.abs().trunc() + 1.0).copysign(y)
+    } else {
+        y.round()
+    };
+    r / m
 }
 
 /// Truncates towards zero to `dec` decimals.

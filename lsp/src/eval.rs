@@ -190,12 +190,13 @@ struct SyntaxError {
 }
 
 fn check_syntax(unit: &Unit, expr: &str) -> Result<(), SyntaxError> {
+    check_brackets(expr)?;
     if let Some(d) = unit.syntax.first() {
         let offset = d.range.start.saturating_sub(PREFIX.len()).min(expr.len());
         let column = expr.get(..offset).map_or(offset, |s| s.chars().count()) + 1;
         return Err(SyntaxError {
             column: Some(column),
-            message: d.message.clone(),
+            message: in_expression_words(&d.message, offset >= expr.len(), expr),
         });
     }
     if expression_node(unit, expr).is_none() {
@@ -205,6 +206,116 @@ fn check_syntax(unit: &Unit, expr: &str) -> Result<(), SyntaxError> {
         });
     }
     Ok(())
+}
+
+/// Brackets and strings, checked before the grammar: an unclosed `(` is
+/// told with its place and what may follow it, where the grammar would
+/// speak of the synthetic module around the expression.
+fn check_brackets(expr: &str) -> Result<(), SyntaxError> {
+    let chars: Vec<char> = expr.chars().collect();
+    let err = |column: usize, message: String| SyntaxError {
+        column: Some(column),
+        message,
+    };
+    let closing = |open: char| match open {
+        '(' => ')',
+        '[' => ']',
+        _ => '}',
+    };
+    let mut open: Vec<(char, usize)> = Vec::new();
+    let mut string: Option<usize> = None;
+    let mut i = 0;
+    while i < chars.len() {
+        let (c, column) = (chars[i], i + 1);
+        if string.is_some() {
+            if c == '"' {
+                // `""` is a quote inside the string.
+                if chars.get(i + 1) == Some(&'"') {
+                    i += 1;
+                } else {
+                    string = None;
+                }
+            }
+            i += 1;
+            continue;
+        }
+        let next = chars[i + 1..].iter().find(|c| !c.is_whitespace());
+        match c {
+            '"' => string = Some(column),
+            '(' | '[' | '{' => open.push((c, column)),
+            ')' | ']' | '}' => match open.pop() {
+                None => {
+                    return Err(err(
+                        column,
+                        format!("unexpected `{c}`: no bracket before it to close"),
+                    ));
+                }
+                Some((o, at)) if closing(o) != c => {
+                    return Err(err(
+                        column,
+                        format!(
+                            "expected `{}` to close the `{o}` of column {at}, found `{c}`",
+                            closing(o)
+                        ),
+                    ));
+                }
+                Some(_) => {}
+            },
+            ',' if matches!(next, Some(')' | ']' | '}')) => {
+                return Err(err(
+                    column,
+                    format!(
+                        "expected an argument after `,`, found `{}`",
+                        next.copied().unwrap_or(')')
+                    ),
+                ));
+            }
+            _ => {}
+        }
+        i += 1;
+    }
+    if let Some(at) = string {
+        return Err(err(at, "this string has no closing `\"`".to_owned()));
+    }
+    if let Some(&(o, at)) = open.last() {
+        let what = if chars[at..].iter().all(|c| c.is_whitespace()) {
+            match o {
+                '(' => "an argument or `)`".to_owned(),
+                '[' => "a value or `]`".to_owned(),
+                _ => "an index or `}`".to_owned(),
+            }
+        } else {
+            format!("`{}`", closing(o))
+        };
+        return Err(err(
+            chars.len() + 1,
+            format!(
+                "expected {what} after the `{o}` of column {at}, found the end of the expression"
+            ),
+        ));
+    }
+    Ok(())
+}
+
+/// A syntax message about the synthetic module, said of the expression:
+/// its `;` and `ENDMODULE` are the expression's end.
+fn in_expression_words(message: &str, at_end: bool, expr: &str) -> String {
+    if at_end {
+        let last = expr
+            .trim_end()
+            .chars()
+            .last()
+            .map(|c| format!(" after `{c}`"))
+            .unwrap_or_default();
+        if message.starts_with("missing a name") || message.starts_with("missing a number") {
+            return format!("expected an operand{last}, found the end of the expression");
+        }
+        return format!("the expression ends too early{last}: {message}");
+    }
+    match message.strip_prefix("expected `;`, found ") {
+        Some(found) => format!("unexpected {found}: the expression is complete before it"),
+        None => message.replace("`ENDMODULE`", "the end of the expression"),
+    }
 }
 
 /// Reports an expression that does not parse; exit code 2.
@@ -245,7 +356,7 @@ type Program = (Arc<Task>, Option<(usize, usize)>);
 fn program(path: &Path) -> Result<Program, String> {
     let meta = std::fs::metadata(path).map_err(|e| e.to_string())?;
     let is_file = meta.is_file();
-    let unit_path = |p: &Path| p.to_string_lossy().into_owned();
+    let unit_path = |p: &Path| crate::source::analyzer_path(p);
     // The folder the task is grouped by (a backup's RAPID/TASKn, or the
     // module's folder), walked as `rapid check` would walk it.
     let root = if is_file {

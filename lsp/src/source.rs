@@ -41,6 +41,25 @@ impl std::fmt::Display for Unreadable {
     }
 }
 
+/// The name the analyzer knows a file by: its real place on disk (absolute,
+/// links resolved), so that a file is grouped into the same task and read
+/// once whatever path named it and whatever folder the command runs from
+/// (`PROGMOD/A.mod` from inside `RAPID/TASK1` and
+/// `RAPID/TASK1/PROGMOD/A.mod` from its parent are the same file of the
+/// same task). A path that cannot be resolved (a file that is gone) is made
+/// absolute without touching the file system.
+pub fn analyzer_path(path: &Path) -> String {
+    let real = std::fs::canonicalize(path)
+        .or_else(|_| std::path::absolute(path).map(|p| crate::check::normalize(&p)))
+        .unwrap_or_else(|_| path.to_owned());
+    let s = real.to_string_lossy();
+    // Windows: `\\?\C:\x` (what canonicalize gives) is `C:\x`.
+    match s.strip_prefix(r"\\?\") {
+        Some(rest) if rest.as_bytes().get(1) == Some(&b':') => rest.to_owned(),
+        _ => s.into_owned(),
+    }
+}
+
 impl SourceFile {
     pub fn read(path: &Path) -> Result<SourceFile, Unreadable> {
         let bytes = read_regular(path).map_err(Unreadable::Io)?;

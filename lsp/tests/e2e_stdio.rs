@@ -79,7 +79,7 @@ fn an_editor_session_on_the_palletizer_example() {
         "textDocument/completion",
         json!({"textDocument": {"uri": main}, "position": {"line": line, "character": 8}}),
     );
-    let labels: Vec<&str> = completion
+    let labels: Vec<&str> = completion["items"]
         .as_array()
         .into_iter()
         .flatten()

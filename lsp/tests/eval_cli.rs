@@ -174,6 +174,61 @@ fn expressions_that_do_not_parse_say_where() {
 }
 
 #[test]
+fn parse_errors_say_what_was_expected_in_the_expression() {
+    for (expr, said) in [
+        (
+            "Sqrt(",
+            "column 6: expected an argument or `)` after the `(` of column 5, found the end of the expression",
+        ),
+        (
+            "1 +",
+            "column 4: expected an operand after `+`, found the end of the expression",
+        ),
+        (
+            "Abs(-3))",
+            "column 8: unexpected `)`: no bracket before it to close",
+        ),
+        (
+            "Offs(p, 1, 2,)",
+            "column 13: expected an argument after `,`, found `)`",
+        ),
+        (
+            "Sqrt(2]",
+            "column 7: expected `)` to close the `(` of column 5, found `]`",
+        ),
+        ("\"abc", "column 1: this string has no closing `\"`"),
+        (
+            "Max(1 2)",
+            "column 6: missing `,` between the arguments `1` and `2`",
+        ),
+        (
+            "1 2",
+            "column 3: unexpected `2`: the expression is complete before it",
+        ),
+    ] {
+        let (code, _, stderr) = eval(&[expr]);
+        assert_eq!(code, Some(2), "{expr}: {stderr}");
+        assert!(stderr.contains(said), "{expr}: {stderr}");
+        assert!(
+            !stderr.contains("MODULE") && !stderr.contains("`;`"),
+            "the synthetic module shows through: {stderr}"
+        );
+    }
+}
+
+#[test]
+fn dnum_values_keep_their_digits_to_the_output() {
+    for (expr, out) in [
+        ("DnumToStr(16777216e6, 0)", "\"16777216000000\"\n"),
+        ("DnumToStr(1234567890123, 0)", "\"1234567890123\"\n"),
+        ("DnumToStr(2.675, 2)", "\"2.68\"\n"),
+    ] {
+        let (code, stdout, stderr) = eval(&[expr]);
+        assert_eq!((code, stdout.as_str()), (Some(0), out), "{expr}: {stderr}");
+    }
+}
+
+#[test]
 fn usage_errors_exit_2() {
     let (code, _, stderr) = eval(&["--file", "no/such/file.mod", "1"]);
     assert_eq!(code, Some(2));

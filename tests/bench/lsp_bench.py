@@ -257,7 +257,9 @@ def run(binary, root, path, label, delay, n_keys=100, n_req=200):
     for _ in range(n_req):
         ms, m = s.request("textDocument/completion", {"textDocument": {"uri": uri}, "position": {"line": line, "character": indent}})
         completions.append(ms)
-    n_items = len(m.get("result") or [])
+    result = m.get("result") or []
+    # A list (`CompletionList`, cut when long) or a plain array.
+    n_items = len(result["items"]) if isinstance(result, dict) else len(result)
     rss, hwm = s.rss_mb()
     s.stop()
     return {

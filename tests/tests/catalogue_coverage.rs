@@ -377,6 +377,7 @@ struct Count {
 }
 
 #[test]
+#[cfg_attr(no_corpus, ignore = "no corpus: set RAPID_CORPUS (see the README)")]
 fn every_called_builtin_is_catalogued_or_a_reviewed_option_routine() {
     let Some(dir) = rapid_tests::corpus_dir() else {
         println!("catalogue_coverage: no corpus (set RAPID_CORPUS); skipped");
@@ -473,6 +474,7 @@ fn every_called_builtin_is_catalogued_or_a_reviewed_option_routine() {
 /// Every argument passed by name (`\Name` or `Name :=`) to a catalogued routine names one
 /// of its parameters.
 #[test]
+#[cfg_attr(no_corpus, ignore = "no corpus: set RAPID_CORPUS (see the README)")]
 fn named_arguments_of_builtins_are_parameters() {
     let Some(dir) = rapid_tests::corpus_dir() else {
         println!("catalogue_coverage: no corpus (set RAPID_CORPUS); skipped");

@@ -21,6 +21,7 @@ use rapid_analyzer::workspace::Workspace;
 use rapid_evaluator::Expr;
 
 #[test]
+#[cfg_attr(no_corpus, ignore = "no corpus: set RAPID_CORPUS (see the README)")]
 fn every_corpus_constant_evaluates_without_panic() {
     let Some(files) = rapid_tests::corpus_files() else {
         println!("no corpus: skipped");

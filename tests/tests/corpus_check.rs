@@ -81,6 +81,7 @@ fn is_damaged(syntax_errors: usize) -> bool {
 }
 
 #[test]
+#[cfg_attr(no_corpus, ignore = "no corpus: set RAPID_CORPUS (see the README)")]
 fn corpus_errors_are_true_defects() {
     let Some(dir) = rapid_tests::corpus_dir() else {
         eprintln!("corpus_check skipped: no corpus (set RAPID_CORPUS)");

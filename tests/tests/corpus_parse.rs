@@ -119,6 +119,7 @@ fn syntax_errors(tree: &tree_sitter::Tree) -> Vec<String> {
 }
 
 #[test]
+#[cfg_attr(no_corpus, ignore = "no corpus: set RAPID_CORPUS (see the README)")]
 fn every_rapid_file_of_the_corpus_parses_clean() {
     let Some(dir) = rapid_tests::corpus_dir() else {
         println!("corpus_parse: no corpus (set RAPID_CORPUS); skipped");

@@ -92,6 +92,7 @@ fn comment_places(tree: &Tree, text: &str) -> Vec<(String, Option<String>)> {
 }
 
 #[test]
+#[cfg_attr(no_corpus, ignore = "no corpus: set RAPID_CORPUS (see the README)")]
 fn formatting_the_corpus_is_safe_and_stable() {
     let Some(files) = rapid_tests::corpus_files() else {
         println!("format corpus test skipped: no corpus (set RAPID_CORPUS)");

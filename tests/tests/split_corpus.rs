@@ -27,6 +27,7 @@ fn alone(unit: Unit) -> Vec<(&'static str, std::ops::Range<usize>, String)> {
 }
 
 #[test]
+#[cfg_attr(no_corpus, ignore = "no corpus: set RAPID_CORPUS (see the README)")]
 fn corpus_files_parsed_in_two_parts_check_as_parsed_whole() {
     let Some(files) = rapid_tests::corpus_files() else {
         println!("no corpus: skipped");

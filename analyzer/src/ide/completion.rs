@@ -8,6 +8,7 @@ use std::collections::{HashMap, HashSet};
 
 use super::context::{Before, before, call_at, partial, statement_start, words};
 use super::signature::{Sig, active, sig_of};
+use super::usage::{function_rank, instruction_rank};
 use super::{CompletionItem, CompletionKind};
 use crate::catalogue::Catalogue;
 use crate::check::{Cx, RoutineSym};
@@ -68,6 +69,7 @@ fn builtins(cat: &'static Catalogue) -> std::sync::Arc<Builtins> {
 /// it. A server calls this while it indexes.
 pub fn prepare_completions() {
     builtins(crate::catalogue::base());
+    super::usage::prepare();
 }
 
 /// Snippets: label, body.
@@ -162,6 +164,19 @@ fn snippet(label: &str, body: &str) -> CompletionItem {
 /// shows. All candidates of the context are returned (the client filters);
 /// `sort_text` orders the likely ones first.
 pub fn completions(task: &Task, unit: usize, offset: usize) -> Vec<CompletionItem> {
+    completions_for(task, unit, offset, true)
+}
+
+/// [`completions`]; without `details`, the routines', data's and built-ins'
+/// items have no `detail` (their signatures and declarations, the most of
+/// a statement start's list to build: clients that resolve an item's detail
+/// when they show it do not need them in the list).
+pub fn completions_for(
+    task: &Task,
+    unit: usize,
+    offset: usize,
+    details: bool,
+) -> Vec<CompletionItem> {
     let Some(u) = task.units.get(unit) else {
         return Vec::new();
     };
@@ -196,7 +211,7 @@ pub fn completions(task: &Task, unit: usize, offset: usize) -> Vec<CompletionIte
         if !in_header {
             if stmt_text.windows(2).any(|p| p == b":=") {
                 let ty = w.get(i + 1).cloned();
-                return expression_items(&mut cx, ty.as_deref());
+                return expression_items(&mut cx, ty.as_deref(), details);
             }
             return if w.len() == i + 1 {
                 types(&mut cx)
@@ -209,9 +224,9 @@ pub fn completions(task: &Task, unit: usize, offset: usize) -> Vec<CompletionIte
         Some("goto") if w.len() == 1 => return labels(&cx),
         Some("connect") if w.iter().any(|w| w == "with") => {
             let mut out = Vec::new();
-            visible_routines(&mut cx, &mut |name, kind, detail| {
+            visible_routines(&mut cx, details, &mut |name, kind, detail| {
                 if kind == CompletionKind::Trap {
-                    out.push(item(name, kind, Some(detail), "0"));
+                    out.push(item(name, kind, detail(), "0"));
                 }
             });
             return out;
@@ -242,7 +257,7 @@ pub fn completions(task: &Task, unit: usize, offset: usize) -> Vec<CompletionIte
     }
     if stmt_text.iter().all(u8::is_ascii_whitespace) {
         return if in_routine {
-            statement_start_items(&mut cx)
+            statement_start_items(&mut cx, details)
         } else {
             module_items(&mut cx)
         };
@@ -258,11 +273,11 @@ pub fn completions(task: &Task, unit: usize, offset: usize) -> Vec<CompletionIte
         if call.current.name.is_some() && !call.current.has_value && call.current.optional {
             return optional_args(&mut cx, &bf);
         }
-        return expression_items(&mut cx, expected.as_deref());
+        return expression_items(&mut cx, expected.as_deref(), details);
     }
     // After `:=`: the left side's type is expected.
     let expected = assignment_target(&mut cx, stmt_text);
-    expression_items(&mut cx, expected.as_deref())
+    expression_items(&mut cx, expected.as_deref(), details)
 }
 
 /// The labels of the routine around the cursor.
@@ -318,12 +333,12 @@ fn assignment_target(cx: &mut Cx<'_>, stmt: &[u8]) -> Option<String> {
     }
 }
 
-fn statement_start_items(cx: &mut Cx<'_>) -> Vec<CompletionItem> {
+fn statement_start_items(cx: &mut Cx<'_>, details: bool) -> Vec<CompletionItem> {
     let mut out = Vec::new();
     let mut seen = HashSet::new();
-    visible_routines(cx, &mut |name, kind, detail| {
+    visible_routines(cx, details, &mut |name, kind, detail| {
         if kind == CompletionKind::Procedure && seen.insert(fold(name)) {
-            out.push(item(name, kind, Some(detail), "1"));
+            out.push(item(name, kind, detail(), "1"));
         }
     });
     let builtins = builtins(cx.cat);
@@ -332,8 +347,8 @@ fn statement_start_items(cx: &mut Cx<'_>) -> Vec<CompletionItem> {
             out.push(item(
                 &r.name,
                 CompletionKind::Procedure,
-                Some(sig.clone()),
-                "2",
+                details.then(|| sig.clone()),
+                &instruction_rank(key),
             ));
         }
     }
@@ -344,7 +359,7 @@ fn statement_start_items(cx: &mut Cx<'_>) -> Vec<CompletionItem> {
         out.push(snippet(label, body));
     }
     // Assignments start with a name: the data in scope.
-    data_items(cx, None, &mut out);
+    data_items(cx, None, details, &mut out);
     out
 }
 
@@ -398,41 +413,45 @@ fn types(cx: &mut Cx<'_>) -> Vec<CompletionItem> {
     out
 }
 
-/// Routines visible here: (name, kind, detail).
-fn visible_routines(cx: &mut Cx<'_>, f: &mut impl FnMut(&str, CompletionKind, String)) {
+/// Routines visible here: `f(name, kind, detail)`, where `detail()` gives
+/// the routine's header (`None` without `details`).
+fn visible_routines(
+    cx: &mut Cx<'_>,
+    details: bool,
+    f: &mut impl FnMut(&str, CompletionKind, &dyn Fn() -> Option<String>),
+) {
     let module = cx.module.map(|(i, _)| i);
-    let text_of = |r: crate::task::ItemRef| -> Option<(String, CompletionKind, String)> {
-        let d = cx.task.routine(r)?;
-        let u = cx.task.units.get(r.unit)?;
+    let task = cx.task;
+    let mut visit = |r: &crate::task::ItemRef| {
+        let (Some(d), Some(u)) = (task.routine(*r), task.units.get(r.unit)) else {
+            return;
+        };
         let kind = match d.kind {
             RoutineKind::Proc => CompletionKind::Procedure,
             RoutineKind::Func => CompletionKind::Function,
             RoutineKind::Trap => CompletionKind::Trap,
         };
-        Some((
-            d.name.clone(),
-            kind,
-            super::hover::routine_header(&u.text, d),
-        ))
+        f(&d.name, kind, &|| {
+            details.then(|| super::hover::routine_header(&u.text, d))
+        });
     };
-    let mut found = Vec::new();
-    for refs in cx.task.globals.values() {
-        found.extend(refs.iter().filter_map(|r| text_of(*r)));
+    for refs in task.globals.values() {
+        refs.iter().for_each(&mut visit);
     }
-    for refs in cx.task.locals.values() {
-        found.extend(
-            refs.iter()
-                .filter(|r| r.unit == cx.unit_idx && Some(r.module) == module)
-                .filter_map(|r| text_of(*r)),
-        );
-    }
-    for (n, k, d) in found {
-        f(&n, k, d);
+    for refs in task.locals.values() {
+        refs.iter()
+            .filter(|r| r.unit == cx.unit_idx && Some(r.module) == module)
+            .for_each(&mut visit);
     }
 }
 
 /// Data in scope; those of type `expected` sort first.
-fn data_items(cx: &mut Cx<'_>, expected: Option<&str>, out: &mut Vec<CompletionItem>) {
+fn data_items(
+    cx: &mut Cx<'_>,
+    expected: Option<&str>,
+    details: bool,
+    out: &mut Vec<CompletionItem>,
+) {
     let types = cx.task.types();
     let expected_base = expected.map(|e| types.base(&Ty::named(e)));
     let matches = |ty: Option<&str>| -> bool {
@@ -442,14 +461,22 @@ fn data_items(cx: &mut Cx<'_>, expected: Option<&str>, out: &mut Vec<CompletionI
         }
     };
     let mut seen = HashSet::new();
-    let mut push =
-        |name: &str, kind: CompletionKind, ty: Option<&str>, detail: String, rank: u8| {
-            if !seen.insert(fold(name)) {
-                return;
-            }
-            let first = if matches(ty) { "0" } else { "5" };
-            out.push(item(name, kind, Some(detail), &format!("{first}{rank}")));
-        };
+    let mut push = |name: &str,
+                    kind: CompletionKind,
+                    ty: Option<&str>,
+                    detail: &dyn Fn() -> String,
+                    rank: u8| {
+        if !seen.insert(fold(name)) {
+            return;
+        }
+        let first = if matches(ty) { "0" } else { "5" };
+        out.push(item(
+            name,
+            kind,
+            details.then(detail),
+            &format!("{first}{rank}"),
+        ));
+    };
     let storage_kind = |s: Storage| match s {
         Storage::Var => CompletionKind::Variable,
         Storage::Pers => CompletionKind::Persistent,
@@ -461,7 +488,7 @@ fn data_items(cx: &mut Cx<'_>, expected: Option<&str>, out: &mut Vec<CompletionI
                 v,
                 CompletionKind::Variable,
                 Some("num"),
-                "num (FOR)".to_owned(),
+                &|| "num (FOR)".to_owned(),
                 0,
             );
         }
@@ -471,7 +498,7 @@ fn data_items(cx: &mut Cx<'_>, expected: Option<&str>, out: &mut Vec<CompletionI
                 &p.name,
                 CompletionKind::Parameter,
                 ty,
-                format!("{} {}", ty.unwrap_or("?"), p.name),
+                &|| format!("{} {}", ty.unwrap_or("?"), p.name),
                 0,
             );
         }
@@ -481,7 +508,7 @@ fn data_items(cx: &mut Cx<'_>, expected: Option<&str>, out: &mut Vec<CompletionI
                 &d.name,
                 storage_kind(d.storage),
                 ty,
-                format!("{} {} {}", d.storage.keyword(), ty.unwrap_or("?"), d.name),
+                &|| format!("{} {} {}", d.storage.keyword(), ty.unwrap_or("?"), d.name),
                 0,
             );
         }
@@ -506,7 +533,7 @@ fn data_items(cx: &mut Cx<'_>, expected: Option<&str>, out: &mut Vec<CompletionI
                 &d.name,
                 storage_kind(d.storage),
                 ty,
-                format!("{} {} {}", d.storage.keyword(), ty.unwrap_or("?"), d.name),
+                &|| format!("{} {} {}", d.storage.keyword(), ty.unwrap_or("?"), d.name),
                 rank,
             );
         }
@@ -519,7 +546,7 @@ fn data_items(cx: &mut Cx<'_>, expected: Option<&str>, out: &mut Vec<CompletionI
                 name,
                 CompletionKind::Variable,
                 Some(ty),
-                format!("{ty} {name}"),
+                &|| format!("{ty} {name}"),
                 3,
             );
         }
@@ -530,14 +557,14 @@ fn data_items(cx: &mut Cx<'_>, expected: Option<&str>, out: &mut Vec<CompletionI
             crate::catalogue::DatumKind::Pers => CompletionKind::Persistent,
             crate::catalogue::DatumKind::Var => CompletionKind::Variable,
         };
-        push(&d.name, kind, Some(&d.ty), sig.clone(), 4);
+        push(&d.name, kind, Some(&d.ty), &|| sig.clone(), 4);
     }
 }
 
 /// Data and functions for an expression.
-fn expression_items(cx: &mut Cx<'_>, expected: Option<&str>) -> Vec<CompletionItem> {
+fn expression_items(cx: &mut Cx<'_>, expected: Option<&str>, details: bool) -> Vec<CompletionItem> {
     let mut out = Vec::new();
-    data_items(cx, expected, &mut out);
+    data_items(cx, expected, details, &mut out);
     let types = cx.task.types();
     let expected_base = expected.map(|e| types.base(&Ty::named(e)));
     let returns_expected = |ret: Option<&str>| match (expected, &expected_base, ret) {
@@ -546,9 +573,9 @@ fn expression_items(cx: &mut Cx<'_>, expected: Option<&str>) -> Vec<CompletionIt
     };
     let mut seen = HashSet::new();
     let mut user = Vec::new();
-    visible_routines(cx, &mut |name, kind, detail| {
+    visible_routines(cx, details, &mut |name, kind, detail| {
         if kind == CompletionKind::Function {
-            user.push((name.to_owned(), detail));
+            user.push((name.to_owned(), detail()));
         }
     });
     for (name, detail) in user {
@@ -562,7 +589,7 @@ fn expression_items(cx: &mut Cx<'_>, expected: Option<&str>) -> Vec<CompletionIt
             out.push(item(
                 &name,
                 CompletionKind::Function,
-                Some(detail),
+                detail,
                 &format!("{first}1"),
             ));
         }
@@ -577,8 +604,8 @@ fn expression_items(cx: &mut Cx<'_>, expected: Option<&str>) -> Vec<CompletionIt
             out.push(item(
                 &r.name,
                 CompletionKind::Function,
-                Some(sig.clone()),
-                &format!("{first}2"),
+                details.then(|| sig.clone()),
+                &format!("{first}2{}", function_rank(key)),
             ));
         }
     }
@@ -596,7 +623,9 @@ fn lookup_return(cx: &mut Cx<'_>, name: &str) -> Option<String> {
 }
 
 /// After `\`: the optional parameters of the call not yet given (nor an
-/// alternative of one given).
+/// alternative of one given). Those that can come next (between the last
+/// argument given and the next required parameter) come first, in order;
+/// then the later ones; those whose place is already past come last.
 fn optional_args(cx: &mut Cx<'_>, bf: &Before) -> Vec<CompletionItem> {
     let Some(call) = call_at(bf) else {
         return Vec::new();
@@ -612,6 +641,14 @@ fn optional_args(cx: &mut Cx<'_>, bf: &Before) -> Vec<CompletionItem> {
         .filter(|p| given.iter().any(|g| same(g, &p.name)))
         .filter_map(|p| p.alt_group)
         .collect();
+    let at = super::signature::next_position(&sig, &call);
+    let next_required = sig
+        .params
+        .iter()
+        .enumerate()
+        .skip(at)
+        .find(|(_, p)| !p.optional)
+        .map_or(sig.params.len(), |(i, _)| i);
     let mut out = Vec::new();
     for (i, p) in sig.params.iter().enumerate() {
         if !p.optional
@@ -620,6 +657,13 @@ fn optional_args(cx: &mut Cx<'_>, bf: &Before) -> Vec<CompletionItem> {
         {
             continue;
         }
+        let place = if i < at {
+            2
+        } else if i < next_required {
+            0
+        } else {
+            1
+        };
         let detail = if p.switch {
             format!("\\{} (switch)", p.name)
         } else {
@@ -631,7 +675,7 @@ fn optional_args(cx: &mut Cx<'_>, bf: &Before) -> Vec<CompletionItem> {
             detail: Some(detail),
             insert_text: (!p.switch).then(|| format!("{}:=", p.name)),
             is_snippet: false,
-            sort_text: Some(format!("{i:03}")),
+            sort_text: Some(format!("{place}{i:03}")),
         });
     }
     out

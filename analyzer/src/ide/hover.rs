@@ -34,8 +34,10 @@ pub fn hover(task: &Task, unit: usize, offset: usize) -> Option<HoverResult> {
             if data
                 && !literal_initialiser(task, &def)
                 && let Some(v) = super::value::value_at(task, unit, offset)
-                && v.range.start <= node.start_byte()
-                && node.end_byte() <= v.range.end
+                    .filter(|v| {
+                        v.range.start <= node.start_byte() && node.end_byte() <= v.range.end
+                    })
+                    .or_else(|| declared_value(task, unit, node.byte_range(), &def))
             {
                 markdown.push_str("\n\n---\n\n");
                 markdown.push_str(&value_markdown(&v));
@@ -431,6 +433,25 @@ fn value_markdown(v: &super::value::ConstValue) -> String {
         );
     }
     out
+}
+
+/// On the name of a constant's declaration, the value of its initialiser
+/// (on a use, [`super::value::value_at`] evaluates the name itself).
+fn declared_value(
+    task: &Task,
+    unit: usize,
+    name: std::ops::Range<usize>,
+    def: &Def<'_>,
+) -> Option<super::value::ConstValue> {
+    let (at, decl) = match def {
+        Def::Item(r) => (r.unit, task.data(*r)?),
+        Def::Local { unit, decl, .. } => (*unit, decl),
+        _ => return None,
+    };
+    if at != unit || decl.name_range != name || decl.storage != crate::items::Storage::Const {
+        return None;
+    }
+    super::value::value_of_range(task, unit, decl.init.clone()?)
 }
 
 /// Is the data's initial value a literal (so its value is in the

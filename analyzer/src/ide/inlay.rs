@@ -15,10 +15,44 @@ use crate::task::Task;
 /// Longest value shown in a hint.
 const MAX_VALUE: usize = 48;
 
+/// Which positional arguments get their parameter's name as a hint.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum ParameterHints {
+    /// None.
+    None,
+    /// Arguments that do not name themselves: literals, aggregates,
+    /// operations and function calls (`MoveL p10, v100, fine, tool0` needs
+    /// no hint; `SetDO doGrip, 1` says `Value:` before the `1`).
+    #[default]
+    Literals,
+    /// Every positional argument, names of data too.
+    All,
+}
+
+impl ParameterHints {
+    /// `none`, `literals` or `all` (any case).
+    pub fn parse(s: &str) -> Option<ParameterHints> {
+        [
+            ("none", ParameterHints::None),
+            ("literals", ParameterHints::Literals),
+            ("all", ParameterHints::All),
+        ]
+        .into_iter()
+        .find(|(name, _)| name.eq_ignore_ascii_case(s))
+        .map(|(_, v)| v)
+    }
+}
+
 /// Parameter names before positional arguments (calls with two or more
-/// required parameters) and `= value` after `CONST` initialisers that are
-/// not literals, within `range`, sorted by offset.
-pub fn inlay_hints(task: &Task, unit: usize, range: Range<usize>) -> Vec<InlayHint> {
+/// required parameters; which arguments, `parameters` says) and `= value`
+/// after `CONST` initialisers that are not literals, within `range`,
+/// sorted by offset.
+pub fn inlay_hints(
+    task: &Task,
+    unit: usize,
+    range: Range<usize>,
+    parameters: ParameterHints,
+) -> Vec<InlayHint> {
     let Some(u) = task.units.get(unit) else {
         return Vec::new();
     };
@@ -33,7 +67,9 @@ pub fn inlay_hints(task: &Task, unit: usize, range: Range<usize>) -> Vec<InlayHi
             return false;
         }
         match n.kind() {
-            "procedure_call" | "function_call" => calls.push(n),
+            "procedure_call" | "function_call" if parameters != ParameterHints::None => {
+                calls.push(n);
+            }
             "data_declaration" => consts.push(n),
             _ => {}
         }
@@ -83,7 +119,9 @@ pub fn inlay_hints(task: &Task, unit: usize, range: Range<usize>) -> Vec<InlayHi
                 continue;
             };
             let v = text.get(value.byte_range()).unwrap_or_default();
-            if same(v.trim(), &p.name) {
+            if same(v.trim(), &p.name)
+                || (parameters == ParameterHints::Literals && names_itself(value))
+            {
                 continue;
             }
             if a.start_byte() >= range.start && a.start_byte() <= range.end {
@@ -119,6 +157,21 @@ pub fn inlay_hints(task: &Task, unit: usize, range: Range<usize>) -> Vec<InlayHi
     }
     out.sort_by_key(|h| h.offset);
     out
+}
+
+/// A reference to named data (`p10`, `tool.tframe`, `pts{i}`), which says
+/// what it is without a hint.
+fn names_itself(value: Node<'_>) -> bool {
+    match value.kind() {
+        "identifier" => true,
+        "component_access" | "index_expression" => value
+            .child_by_field_name("object")
+            .is_some_and(names_itself),
+        "parenthesized_expression" => value
+            .child_by_field_name("expression")
+            .is_some_and(names_itself),
+        _ => false,
+    }
 }
 
 fn is_optional(arg: Node<'_>) -> bool {

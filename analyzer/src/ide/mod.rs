@@ -20,12 +20,13 @@ mod signature;
 pub(crate) mod structure;
 mod symbols;
 mod tokens;
+mod usage;
 mod value;
 
 pub use actions::code_actions;
-pub use completion::{completion_documentation, completions, prepare_completions};
+pub use completion::{completion_documentation, completions, completions_for, prepare_completions};
 pub use hover::hover;
-pub use inlay::inlay_hints;
+pub use inlay::{ParameterHints, inlay_hints};
 pub use nav::{
     definition, document_highlights, prepare_rename, references, rename, type_definition,
 };

@@ -81,33 +81,90 @@ pub(crate) fn call_sig(task: &Task, unit: usize, offset: usize) -> Option<(Sig, 
     Some((sig_of(sym), call))
 }
 
-/// The index of the parameter the current argument goes to.
+/// Where the next argument of the call goes: the index of the first
+/// parameter after those the arguments before it filled (arguments come in
+/// the order of the parameters; a positional argument fills the next
+/// required parameter, a named one its own).
+pub(crate) fn next_position(sig: &Sig, call: &CallCx) -> usize {
+    let mut at = 0;
+    for arg in &call.done {
+        let named = arg
+            .name
+            .as_ref()
+            .and_then(|n| sig.params.iter().position(|p| same(&p.name, n)));
+        let filled = match named {
+            Some(i) => Some(i),
+            None if arg.optional => None,
+            None => sig
+                .params
+                .iter()
+                .enumerate()
+                .skip(at)
+                .find(|(_, p)| !p.optional)
+                .map(|(i, _)| i),
+        };
+        if let Some(i) = filled {
+            at = at.max(i + 1);
+        }
+    }
+    at
+}
+
+/// The index of the parameter the current argument goes to: a named one's
+/// own; after `\`, the first optional parameter from the call's position
+/// on whose name starts with what is typed; else the next required one.
 pub(crate) fn active(sig: &Sig, call: &CallCx) -> Option<usize> {
     if let Some(name) = &call.current.name
         && (call.current.optional || call.current.has_value)
+        && let Some(i) = sig.params.iter().position(|p| same(&p.name, name))
     {
-        if let Some(i) = sig.params.iter().position(|p| same(&p.name, name)) {
-            return Some(i);
-        }
-        if call.current.optional {
-            return None;
-        }
+        return Some(i);
     }
+    let at = next_position(sig, call);
     if call.current.optional {
-        // `\` with a name still being typed: the first optional left.
-        return None;
+        let typed = call.current.name.as_deref().unwrap_or_default();
+        let starts = |p: &&P| {
+            p.optional
+                && p.name
+                    .get(..typed.len())
+                    .is_some_and(|head| same(head, typed))
+        };
+        return sig
+            .params
+            .iter()
+            .enumerate()
+            .skip(at)
+            .find(|(_, p)| starts(p))
+            .or_else(|| sig.params.iter().enumerate().find(|(_, p)| starts(p)))
+            .map(|(i, _)| i);
     }
-    // Positional: count the required arguments already given.
-    let given = call.done.iter().filter(|a| !a.optional).count();
     sig.params
         .iter()
         .enumerate()
-        .filter(|(_, p)| !p.optional)
-        .nth(given)
+        .skip(at)
+        .find(|(_, p)| !p.optional)
         .map(|(i, _)| i)
 }
 
-/// `MoveL [\Conc] ToPoint [\ID] Speed [\V] | [\T] Zone ...` and each
+/// A parameter as the signature shows it: `[\switch Conc]`, `robtarget
+/// ToPoint`, `PERS tooldata Tool`, `[\PERS wobjdata WObj]`.
+fn param_label(p: &P) -> String {
+    let mode = if p.mode == Mode::In {
+        String::new()
+    } else {
+        format!("{} ", p.mode.keyword())
+    };
+    let ty = if p.switch { "switch" } else { p.ty.as_str() };
+    let ty = if ty.is_empty() { "?" } else { ty };
+    if p.optional {
+        format!("[\\{mode}{ty} {}]", p.name)
+    } else {
+        format!("{mode}{ty} {}", p.name)
+    }
+}
+
+/// `MoveL [\switch Conc], robtarget ToPoint, [\identno ID], speeddata
+/// Speed, [\num V] | [\num T], ...` (a function's in parentheses) and each
 /// parameter's range in it.
 pub(crate) fn label(sig: &Sig) -> (String, Vec<Range<usize>>) {
     let mut out = sig.name.clone();
@@ -119,18 +176,12 @@ pub(crate) fn label(sig: &Sig) -> (String, Vec<Range<usize>>) {
             if p.alt_group.is_some() && p.alt_group == prev_group {
                 out.push_str(" | ");
             } else {
-                out.push(' ');
+                out.push_str(", ");
             }
         }
         prev_group = p.alt_group;
         let start = out.len();
-        if p.optional {
-            out.push_str("[\\");
-            out.push_str(&p.name);
-            out.push(']');
-        } else {
-            out.push_str(&p.name);
-        }
+        out.push_str(&param_label(p));
         ranges.push(start..out.len());
     }
     if sig.is_function {

@@ -4,9 +4,13 @@ crate::declare_rule! {
     /// ### What it checks
     /// The parser could not fit some text into any RAPID construct: a
     /// misspelt keyword, a stray character, a statement where a declaration
-    /// belongs. The message names what the grammar expected there and what it
-    /// found instead. The parser recovers, so one mistake yields one local
-    /// diagnostic and the rest of the module is still checked.
+    /// belongs, a string without its closing `"` (strings end on the line
+    /// they start), a file that holds no module (empty, or declarations
+    /// without `MODULE name` around them). The message names what the
+    /// grammar expected there and what it found instead. The parser
+    /// recovers, so one mistake yields one local diagnostic and the rest of
+    /// the module is still checked. Syntax errors are always reported, as
+    /// errors: no selection, severity setting or suppression hides them.
     ///
     /// ### Why
     /// The controller refuses to load a module with a syntax error, and all of
@@ -15,7 +19,7 @@ crate::declare_rule! {
     /// ### Example
     /// ```rapid
     /// PROC main()
-    ///     reg1 = 5;     ! `=` is a comparison; assignment is `:=`
+    ///     TPWrite "Cycle done;     ! the string is never closed
     /// ENDPROC
     /// ```
     pub static RULE = ("E001", "syntax-error", Error);

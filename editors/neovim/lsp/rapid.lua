@@ -3,6 +3,8 @@
 return {
   cmd = { 'rapid', 'lsp' },
   filetypes = { 'rapid' },
-  root_markers = { 'rapid.toml', 'EIO.cfg', 'eio.cfg', '.git' },
+  -- a controller backup has BACKINFO, SYSPAR and RAPID; require('rapid')
+  -- also takes a folder with a .pgf program as a root
+  root_markers = { 'rapid.toml', 'EIO.cfg', 'eio.cfg', 'BACKINFO', 'SYSPAR', 'RAPID', '.git' },
   settings = {},
 }

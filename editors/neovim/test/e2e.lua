@@ -74,9 +74,12 @@ end
 
 local check_json = run({ rapid_bin, 'check', ws, '--format', 'json' })
 local expected = {}
+local cell_expected = {}
 for _, d in ipairs(vim.json.decode(check_json)) do
   if d.severity == 'error' and vim.fs.basename(d.file) == 'MainModule.mod' then
     table.insert(expected, d)
+  elseif vim.fs.basename(d.file) == 'Cell.sys' then
+    table.insert(cell_expected, d)
   end
 end
 local function signature(name)
@@ -224,14 +227,90 @@ check('the language server attaches', function()
   expect(ok, 'no rapid client attached to the buffer within %d ms', TIMEOUT)
 end)
 
-local function request(method, params)
+local function request(method, params, bufnr)
   expect(client ~= nil, 'no client')
-  local results, err = vim.lsp.buf_request_sync(buf, method, params, TIMEOUT)
+  local results, err = vim.lsp.buf_request_sync(bufnr or buf, method, params, TIMEOUT)
   expect(results ~= nil, '%s: %s', method, tostring(err))
   for _, r in pairs(results) do
     expect(r.error == nil, '%s: %s', method, vim.inspect(r.error))
     return r.result
   end
+end
+
+--- Waits for a diagnostic of buffer `b` that `pred` accepts; returns it.
+local function wait_diagnostic(b, pred, what)
+  local found
+  local ok = vim.wait(TIMEOUT, function()
+    for _, d in ipairs(vim.diagnostic.get(b)) do
+      if pred(d) then
+        found = d
+        return true
+      end
+    end
+    return false
+  end, 50)
+  expect(ok, 'no diagnostic %s for %s; got %s', what, vim.api.nvim_buf_get_name(b), vim.inspect(vim.diagnostic.get(b)))
+  return found
+end
+
+--- Writes `files` (path relative to `dir`, lines) below `dir`.
+local function write_tree(dir, files)
+  for name, content in pairs(files) do
+    local path = dir .. '/' .. name
+    vim.fn.mkdir(vim.fs.dirname(path), 'p')
+    vim.fn.writefile(content, path)
+  end
+end
+
+--- Closes a buffer opened by a check, and the rapid client it started
+--- (unless the seeded module's client).
+local function close_buffer(b)
+  vim.cmd('buffer ' .. buf)
+  for _, c in ipairs(vim.lsp.get_clients({ bufnr = b, name = 'rapid' })) do
+    if not vim.lsp.buf_is_attached(buf, c.id) then
+      c:stop(true)
+    end
+  end
+  vim.api.nvim_buf_delete(b, { force = true })
+end
+
+--- The rapid clients attached to buffer `b` (waiting for one).
+local function client_of(b)
+  local c
+  vim.wait(TIMEOUT, function()
+    c = vim.lsp.get_clients({ bufnr = b, name = 'rapid' })[1]
+    return c ~= nil and c.initialized
+  end, 50)
+  expect(c ~= nil, 'no rapid client for %s', vim.api.nvim_buf_get_name(b))
+  return c
+end
+
+--- (code, 0-based line) of what `rapid check --format json ARGS` says of the file named `name`.
+local function check_findings(args, name)
+  local cmd = { rapid_bin, 'check', '--format', 'json' }
+  vim.list_extend(cmd, args)
+  local out = {}
+  for _, d in ipairs(vim.json.decode((run(cmd)))) do
+    if vim.fs.basename(d.file) == name then
+      table.insert(out, d.code .. '@' .. (d.line - 1))
+    end
+  end
+  table.sort(out)
+  return out
+end
+
+--- The same of Neovim's diagnostics of buffer `b`, once they equal `want`.
+local function wait_findings(b, want)
+  local got
+  local ok = vim.wait(TIMEOUT, function()
+    got = {}
+    for _, d in ipairs(vim.diagnostic.get(b)) do
+      table.insert(got, d.code .. '@' .. d.lnum)
+    end
+    table.sort(got)
+    return vim.deep_equal(got, want)
+  end, 50)
+  expect(ok, 'diagnostics %s, rapid check says %s', vim.inspect(got), vim.inspect(want))
 end
 
 local function position(needle, offset)
@@ -245,17 +324,9 @@ end
 check(('a diagnostic appears for the seeded error (%s)'):format(expected[1] and expected[1].code or '?'), function()
   expect(#expected > 0, 'rapid check found no error in the seeded file')
   local want = expected[1]
-  local found
-  vim.wait(TIMEOUT, function()
-    for _, d in ipairs(vim.diagnostic.get(buf)) do
-      if d.code == want.code then
-        found = d
-        return true
-      end
-    end
-    return false
-  end, 50)
-  expect(found, 'no %s diagnostic; got %s', want.code, vim.inspect(vim.diagnostic.get(buf)))
+  local found = wait_diagnostic(buf, function(d)
+    return d.code == want.code
+  end, want.code)
   expect(found.lnum == want.line - 1 and found.col == want.column - 1,
     'at %d:%d, rapid check says %d:%d', found.lnum + 1, found.col + 1, want.line, want.column)
   expect(found.severity == vim.diagnostic.severity.ERROR, 'severity %s', tostring(found.severity))
@@ -269,11 +340,16 @@ check('hover over a built-in call shows its signature', function()
   expect(text:find(wait_time_signature, 1, true), 'hover %q lacks %q', text, wait_time_signature)
 end)
 
-check('hover over a constant expression shows its value', function()
-  local result = request('textDocument/hover', position('\\Num:=nSlots', 8))
+--- Expects the hover at `needle` (+ `offset`) to show the value 24.
+local function hover_shows_24(needle, offset)
+  local result = request('textDocument/hover', position(needle, offset))
   expect(result and result.contents, 'no hover')
   local text = markup_text(result.contents)
   expect(text:find('%f[%d]24%f[%D]'), 'hover %q does not show the value 24', text)
+end
+
+check('hover over a constant expression shows its value', function()
+  hover_shows_24('\\Num:=nSlots', 8)
 end)
 
 check('definition: a routine in the same module, a tool in the other module', function()
@@ -296,18 +372,28 @@ check('definition: a routine in the same module, a tool in the other module', fu
     tostring(cell[line + 1]))
 end)
 
-check('completion after \\ lists the optional arguments', function()
+--- Inserts `code` (indented as the statements of PickBox) as a new line
+--- after `WaitTime 0.2;`, asks for completion at its end (with `context`),
+--- removes it again; returns the items sorted by sortText and the position.
+local function completion_on_new_line(code, context)
   local row, l = line_of('WaitTime 0.2;')
-  local indent = l:match('^%s*')
-  local text = indent .. 'MoveL pPickAbove, v300, fine, tGripper\\'
+  local text = l:match('^%s*') .. code
   vim.api.nvim_buf_set_lines(buf, row + 1, row + 1, false, { text })
-  local params = {
-    textDocument = { uri = vim.uri_from_bufnr(buf) },
-    position = { line = row + 1, character = #text },
-    context = { triggerKind = 2, triggerCharacter = '\\' },
-  }
-  local result = request('textDocument/completion', params)
+  local at = { textDocument = { uri = vim.uri_from_bufnr(buf) }, position = { line = row + 1, character = #text } }
+  local ok, result = pcall(request, 'textDocument/completion', vim.tbl_extend('force', at, { context = context }))
+  local help = ok and code:sub(-1) == '\\' and request('textDocument/signatureHelp', at) or nil
+  vim.api.nvim_buf_set_lines(buf, row + 1, row + 2, false, {})
+  expect(ok, '%s', tostring(result))
   local items = result and (result.items or result) or {}
+  table.sort(items, function(a, b)
+    return (a.sortText or a.label) < (b.sortText or b.label)
+  end)
+  return items, help
+end
+
+check('completion after \\ lists the optional arguments', function()
+  local items = completion_on_new_line('MoveL pPickAbove, v300, fine, tGripper\\',
+    { triggerKind = 2, triggerCharacter = '\\' })
   local labels, known = {}, 0
   for _, item in ipairs(items) do
     local label = item.label:gsub('^\\', ''):match('^[%w_]+') or item.label
@@ -319,7 +405,161 @@ check('completion after \\ lists the optional arguments', function()
   local total = vim.tbl_count(movel_optionals)
   expect(known == total, 'completion lists %d of the %d optional arguments of MoveL: %s', known, total,
     table.concat(labels, ' '))
-  vim.api.nvim_buf_set_lines(buf, row + 1, row + 2, false, {})
+end)
+
+check('indentation is the formatter\'s: 4 spaces, or [format] indent-width of rapid.toml', function()
+  expect(vim.bo[buf].shiftwidth == 4 and vim.bo[buf].softtabstop == 4 and vim.bo[buf].expandtab,
+    'shiftwidth %d, softtabstop %d, expandtab %s (Neovim\'s indent/rapid.vim sets 2)', vim.bo[buf].shiftwidth,
+    vim.bo[buf].softtabstop, tostring(vim.bo[buf].expandtab))
+  -- = reindents a statement of a routine as rapid fmt writes it (two levels)
+  local row, l = line_of('WaitTime 0.2;')
+  vim.api.nvim_buf_set_lines(buf, row, row + 1, false, { 'WaitTime 0.2;' })
+  vim.api.nvim_win_set_cursor(0, { row + 1, 0 })
+  vim.cmd('normal! ==')
+  local got = vim.api.nvim_buf_get_lines(buf, row, row + 1, false)[1]
+  vim.api.nvim_buf_set_lines(buf, row, row + 1, false, { l })
+  expect(got == l, 'reindented to %q, rapid fmt writes %q', got, l)
+  local dir = vim.fn.tempname()
+  write_tree(dir, { ['rapid.toml'] = { '[lint]', 'ignore = []', '', '[format]', 'indent-width = 3' },
+    ['sub/A.mod'] = { 'MODULE A', 'ENDMODULE' } })
+  vim.cmd('edit ' .. vim.fn.fnameescape(dir .. '/sub/A.mod'))
+  local other = vim.api.nvim_get_current_buf()
+  local sw = vim.bo[other].shiftwidth
+  close_buffer(other)
+  expect(sw == 3, 'shiftwidth %d below a rapid.toml with indent-width = 3', sw)
+end)
+
+check('a file that is not open has its diagnostics too (Cell.sys, as rapid check says)', function()
+  expect(#cell_expected > 0, 'rapid check found nothing in Cell.sys')
+  local cell = vim.fn.bufadd(ws .. '/Cell.sys')
+  local want = cell_expected[1]
+  local d = wait_diagnostic(cell, function(d)
+    return d.code == want.code
+  end, want.code)
+  expect(d.lnum == want.line - 1 and d.col == want.column - 1, 'at %d:%d, rapid check says %d:%d', d.lnum + 1,
+    d.col + 1, want.line, want.column)
+  expect(not vim.api.nvim_buf_is_loaded(cell), 'Cell.sys was loaded')
+end)
+
+check('an edit in one module updates the diagnostics of the other open module of the task', function()
+  vim.cmd('edit ' .. vim.fn.fnameescape(ws .. '/Cell.sys'))
+  local cell = vim.api.nvim_get_current_buf()
+  client_of(cell)
+  local cell_lines = vim.api.nvim_buf_get_lines(cell, 0, -1, false)
+  local row
+  for i, l in ipairs(cell_lines) do
+    if l:find('PERS tooldata tGripper', 1, true) then
+      row = i - 1
+    end
+  end
+  expect(row ~= nil, 'no tGripper in Cell.sys')
+  local before = cell_lines[row + 1]
+  -- rename the tool in Cell.sys (unsaved): MainModule, not edited, now
+  -- uses a name that does not exist
+  vim.api.nvim_buf_set_lines(cell, row, row + 1, false, { (before:gsub('tGripper', 'tGripperRenamed')) })
+  wait_diagnostic(buf, function(d)
+    return d.message:find('tGripper', 1, true) ~= nil
+  end, 'about tGripper in MainModule.mod')
+  vim.api.nvim_buf_set_lines(cell, row, row + 1, false, { before })
+  local ok = vim.wait(TIMEOUT, function()
+    for _, d in ipairs(vim.diagnostic.get(buf)) do
+      if d.message:find('tGripper', 1, true) then
+        return false
+      end
+    end
+    return true
+  end, 50)
+  expect(ok, 'MainModule.mod keeps %s', vim.inspect(vim.diagnostic.get(buf)))
+  vim.cmd('buffer ' .. buf)
+end)
+
+check('completion after \\ offers first what can come next; signature help marks it, with types', function()
+  local items, help = completion_on_new_line('MoveL pPickAbove, v300, fine, tGripper\\',
+    { triggerKind = 2, triggerCharacter = '\\' })
+  expect(items[1] and items[1].label == 'WObj', 'first item %s', items[1] and items[1].label or 'none')
+  local sig = help and help.signatures and help.signatures[1]
+  expect(sig, 'no signature help')
+  local active = help.activeParameter or sig.activeParameter
+  local range = sig.parameters[active + 1].label
+  local label = type(range) == 'string' and range or sig.label:sub(range[1] + 1, range[2])
+  expect(label == '[\\PERS wobjdata WObj]', 'active parameter %q in %s', label, sig.label)
+  expect(sig.label:find('robtarget ToPoint', 1, true), 'no types in %s', sig.label)
+end)
+
+check('MoveL ranks first at the start of a statement', function()
+  local items = completion_on_new_line('', { triggerKind = 1 })
+  expect(items[1] and items[1].label == 'MoveL', 'first item %s', items[1] and items[1].label or 'none')
+end)
+
+check('hover on a constant\'s declaration shows its value, as on its use', function()
+  hover_shows_24('CONST num nSlots', 12)
+end)
+
+check('parameter names are hinted before literals, not before names', function()
+  local result = request('textDocument/inlayHint', { textDocument = { uri = vim.uri_from_bufnr(buf) },
+    range = { start = { line = 0, character = 0 }, ['end'] = { line = #lines, character = 0 } } }) or {}
+  local hints = {}
+  for _, h in ipairs(result) do
+    local label = type(h.label) == 'string' and h.label or h.label[1].value
+    local text = vim.api.nvim_buf_get_lines(buf, h.position.line, h.position.line + 1, false)[1] or ''
+    hints[#hints + 1] = label .. ' ' .. text:sub(h.position.character + 1):match('^[^,;)]*')
+  end
+  local has = function(s)
+    return vim.tbl_contains(hints, s)
+  end
+  expect(has('Value: 1') and has('ZOffset: 100'), 'hints %s', vim.inspect(hints))
+  for _, h in ipairs(hints) do
+    expect(not h:find('ToPoint: pPickAbove', 1, true) and not h:find('Tool:', 1, true), 'hint %s', h)
+  end
+end)
+
+check('a controller backup is a project root (BACKINFO, SYSPAR, RAPID): its task and configuration load', function()
+  local backup = vim.fn.tempname() .. '/BACKUP'
+  write_tree(backup, {
+    ['BACKINFO/backinfo.txt'] = { 'backup' },
+    ['SYSPAR/EIO.cfg'] = { 'EIO:CFG_1.0:6:1::', '#', 'EIO_SIGNAL:', '', '      -Name "diGo" -SignalType "DI" -Device "d652"' },
+    ['RAPID/TASK1/PROGMOD/Main.mod'] = { 'MODULE Main', '    PROC main()', '        VAR num nUnused;',
+      '        LibHelper;', '        WaitDI diGo, 1;', '    ENDPROC', 'ENDMODULE' },
+    ['RAPID/TASK1/SYSMOD/Lib.sys'] = { 'MODULE Lib(SYSMODULE)', '    PROC LibHelper()', '    ENDPROC', 'ENDMODULE' },
+  })
+  local main = backup .. '/RAPID/TASK1/PROGMOD/Main.mod'
+  expect(require('rapid').find_root(main) == backup, 'root %s', tostring(require('rapid').find_root(main)))
+  local want = check_findings({ backup }, 'Main.mod')
+  expect(vim.deep_equal(want, { 'W201@2' }), 'rapid check says %s', vim.inspect(want))
+  vim.cmd('edit ' .. vim.fn.fnameescape(main))
+  local b = vim.api.nvim_get_current_buf()
+  local c = client_of(b)
+  if c.root_dir ~= backup then
+    close_buffer(b)
+    error(('the client\'s root is %s'):format(tostring(c.root_dir)))
+  end
+  wait_findings(b, want)
+  local found = request('textDocument/definition',
+    { textDocument = { uri = vim.uri_from_bufnr(b) }, position = { line = 3, character = 10 } }, b)
+  local loc = found and (found.uri and found or found[1])
+  close_buffer(b)
+  expect(loc and vim.uri_to_fname(loc.uri or loc.targetUri):find('SYSMOD/Lib.sys', 1, true), 'definition %s',
+    vim.inspect(found))
+end)
+
+check('a file outside any project gets its task from its folder', function()
+  local dir = vim.fn.tempname() .. '/loose'
+  write_tree(dir, {
+    ['A.mod'] = { 'MODULE A', '    PROC main()', '        VAR num nUnused;', '        BHelper;', '    ENDPROC', 'ENDMODULE' },
+    ['B.mod'] = { 'MODULE B', '    PROC BHelper()', '    ENDPROC', 'ENDMODULE' },
+  })
+  expect(require('rapid').find_root(dir .. '/A.mod') == nil, 'a root above %s: %s', dir,
+    tostring(require('rapid').find_root(dir .. '/A.mod')))
+  local want = check_findings({ dir .. '/A.mod' }, 'A.mod')
+  expect(vim.deep_equal(want, { 'W201@2' }), 'rapid check says %s', vim.inspect(want))
+  vim.cmd('edit ' .. vim.fn.fnameescape(dir .. '/A.mod'))
+  local b = vim.api.nvim_get_current_buf()
+  local c = client_of(b)
+  local root = c.root_dir
+  local ok, err = pcall(wait_findings, b, want)
+  close_buffer(b)
+  expect(root == nil, 'the client\'s root is %s', tostring(root))
+  expect(ok, '%s', tostring(err))
 end)
 
 check(':RapidRestart starts a new server that publishes the diagnostics again', function()

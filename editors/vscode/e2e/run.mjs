@@ -47,9 +47,12 @@ const lineOf = (needle) => {
 // What the rapid binary says about the workspace: the editor must show it.
 const check = spawnSync(rapid, ["check", ws, "--format", "json"], { encoding: "utf8" });
 if (check.error) throw check.error;
-const expected = JSON.parse(check.stdout).filter(
+const findings = JSON.parse(check.stdout);
+const expected = findings.filter(
   (d) => d.severity === "error" && path.basename(d.file) === "MainModule.mod",
 );
+// a file the test never opens
+const cellExpected = findings.filter((d) => path.basename(d.file) === "Cell.sys");
 if (expected.length === 0) {
   throw new Error(`rapid check found no error in the seeded file:\n${check.stdout}${check.stderr}`);
 }
@@ -272,6 +275,24 @@ try {
     await page.locator(".monaco-editor textarea").first().focus();
   });
 
+  await step(`a file that is not open is in the Problems panel too (Cell.sys: ${cellExpected[0]?.code})`, async () => {
+    assert(cellExpected.length > 0, "rapid check found nothing in Cell.sys");
+    await runCommand("View: Focus Problems");
+    const want = cellExpected[0];
+    const row = page.locator(".markers-panel .monaco-list-row", { hasText: want.code }).filter({
+      hasText: want.message.slice(0, 20),
+    });
+    await row.first().waitFor({ state: "visible", timeout: TIMEOUT });
+    const text = await row.first().innerText();
+    assert(text.includes(`[Ln ${want.line}, Col ${want.column}]`), `problem row: ${text}`);
+    const file = page.locator(".markers-panel .monaco-list-row", { hasText: "Cell.sys" });
+    assert((await file.count()) > 0, "no Cell.sys row in the Problems panel");
+    const tabs = (await page.locator(".tabs-container .tab").allInnerTexts()).join(" ");
+    assert(!tabs.includes("Cell.sys"), `Cell.sys is open: ${tabs}`);
+    await page.screenshot({ path: path.join(out, "vscode-problems.png") });
+    await page.locator(".monaco-editor textarea").first().focus();
+  });
+
   await step("RAPID: Restart Language Server starts a new server", async () => {
     const starts = () => {
       let n = 0;
@@ -309,6 +330,30 @@ try {
     const line = lineOf("\\Num:=nSlots");
     const text = await showHoverAt(line, lines[line - 1].indexOf("nSlots") + 3);
     assert(/\b24\b/.test(text), `hover: ${text}`);
+  });
+
+  await step("hover over a constant's declaration shows its value too", async () => {
+    const line = lineOf("CONST num nSlots");
+    const text = await showHoverAt(line, lines[line - 1].indexOf("nSlots") + 3);
+    assert(/\b24\b/.test(text), `hover: ${text}`);
+  });
+
+  await step("parameter names are hinted before literals, not before names", async () => {
+    await page.keyboard.press("Escape");
+    const line = lineOf("SetDO doVacuum, 1;");
+    await goTo(line, 1);
+    const view = page.locator(".view-line", { hasText: "SetDO" }).first();
+    const deadline = Date.now() + TIMEOUT;
+    let text = "";
+    while (Date.now() < deadline) {
+      text = (await view.innerText()).replace(/\u00a0/g, " ");
+      if (/Value:\s*1/.test(text)) break;
+      await page.waitForTimeout(200);
+    }
+    assert(/Value:\s*1/.test(text), `the SetDO line shows ${JSON.stringify(text)}`);
+    assert(!/Signal:/.test(text), `a hint before a name: ${JSON.stringify(text)}`);
+    const move = (await page.locator(".view-line", { hasText: "MoveL pPickAbove" }).first().innerText()).replace(/\u00a0/g, " ");
+    assert(!/ToPoint:|Tool:/.test(move), `hints before names: ${JSON.stringify(move)}`);
   });
 
   await step("semantic tokens from the server colour a user routine call", async () => {
@@ -349,12 +394,82 @@ try {
     const labels = (await rows.allInnerTexts()).map((t) => t.trim().split(/\s/)[0].replace(/^\\/, ""));
     const known = labels.filter((l) => moveLOptionals.some((o) => o.toLowerCase() === l.toLowerCase()));
     assert(known.length >= Math.min(3, moveLOptionals.length), `completion rows: ${labels.join(", ")}`);
+    // what can come after the Tool argument first
+    assert(labels[0] === "WObj", `the first row after tGripper\\ is ${labels[0]}: ${labels.join(", ")}`);
+    // signature help marks that parameter, with its type
+    await page.keyboard.press("Escape");
+    await page.keyboard.press("Control+Shift+Space");
+    const hints = page.locator(".parameter-hints-widget");
+    await hints.waitFor({ state: "visible" });
+    const active = (await hints.locator(".parameter.active").first().innerText()).trim();
+    const signature = (await hints.locator(".signature .code").first().innerText()).trim();
+    await page.screenshot({ path: path.join(out, "vscode-signature.png") });
+    await page.keyboard.press("Escape");
+    assert(active === "[\\PERS wobjdata WObj]", `active parameter ${JSON.stringify(active)} in ${signature}`);
+    assert(signature.includes("robtarget ToPoint"), `no types in ${signature}`);
+    await page.keyboard.press("Control+Space");
+    await rows.first().waitFor({ state: "visible" });
     await page.keyboard.type("WOb", { delay: 20 });
     await page.waitForTimeout(500);
     const first = (await rows.first().innerText()).trim();
     assert(/^\\?WObj\b/.test(first), `after \\WOb the first row is ${first}`);
     await page.screenshot({ path: path.join(out, "vscode-completion.png") });
     await page.keyboard.press("Escape");
+  });
+
+  await step("MoveL ranks first at the start of a statement", async () => {
+    await page.keyboard.press("Escape");
+    const line = lineOf("WaitTime 0.2;");
+    await goTo(line, lines[line - 1].length + 1);
+    await page.keyboard.press("End");
+    await page.keyboard.press("Enter");
+    await page.keyboard.press("Control+Space");
+    const rows = page.locator(".suggest-widget.visible .monaco-list-row");
+    await rows.first().waitFor({ state: "visible" });
+    await page.waitForTimeout(500);
+    const first = (await rows.first().innerText()).trim().split(/\s/)[0];
+    await page.keyboard.press("Escape");
+    await page.keyboard.press("Control+Z");
+    assert(first === "MoveL", `the first row is ${first}`);
+  });
+
+  await step("one file opened without its folder gets its task from its place (a backup's SYSMOD and SYSPAR)", async () => {
+    const backup = path.join(tmp, "lone", "BACKUP");
+    const write = (rel, text) => {
+      fs.mkdirSync(path.dirname(path.join(backup, rel)), { recursive: true });
+      fs.writeFileSync(path.join(backup, rel), text);
+    };
+    write("BACKINFO/backinfo.txt", "backup\n");
+    write("SYSPAR/EIO.cfg", 'EIO:CFG_1.0:6:1::\n#\nEIO_SIGNAL:\n\n      -Name "diGo" -SignalType "DI" -Device "d652"\n');
+    write(
+      "RAPID/TASK1/PROGMOD/Lone.mod",
+      "MODULE Lone\n    PROC main()\n        VAR num nUnused;\n        LibHelper;\n        WaitDI diGo, 1;\n    ENDPROC\nENDMODULE\n",
+    );
+    write("RAPID/TASK1/SYSMOD/Lib.sys", "MODULE Lib(SYSMODULE)\n    PROC LibHelper()\n    ENDPROC\nENDMODULE\n");
+    const lone = path.join(backup, "RAPID/TASK1/PROGMOD/Lone.mod");
+    const want = JSON.parse(
+      spawnSync(rapid, ["check", lone, "--format", "json"], { encoding: "utf8" }).stdout,
+    ).map((d) => `${d.code}@${d.line}`);
+    assert(want.join(" ") === "W201@3", `rapid check says ${want.join(" ")}`);
+    // an empty window (no folder), then File: Open File... with the path
+    await page.goto(`http://127.0.0.1:${port}/?ew=true`);
+    await page.waitForSelector(".monaco-workbench");
+    await page.waitForTimeout(1500);
+    await runCommand("File: Open File...");
+    const input = page.locator(".quick-input-widget input");
+    await input.waitFor({ state: "visible" });
+    await input.fill(lone);
+    await page.waitForTimeout(500);
+    await page.keyboard.press("Enter");
+    await page.locator(".tabs-container .tab", { hasText: "Lone.mod" }).first().waitFor({ state: "visible" });
+    await runCommand("View: Focus Problems");
+    const row = page.locator(".markers-panel .monaco-list-row", { hasText: "W201" });
+    await row.first().waitFor({ state: "visible", timeout: TIMEOUT });
+    // the task's routine and the backup's signal are known: only W201
+    await page.waitForTimeout(2000);
+    const rows = (await page.locator(".markers-panel .monaco-list-row").allInnerTexts()).join("\n");
+    await page.screenshot({ path: path.join(out, "vscode-lone-file.png") });
+    assert(!/W101|I103/.test(rows), `Problems: ${rows}`);
   });
 
   await step("a missing server binary gives a message with a link to the install instructions", async () => {
@@ -367,6 +482,11 @@ try {
     await page.screenshot({ path: path.join(out, "vscode-missing-server.png") });
     assert(/does not exist or cannot be run/.test(text), `notification: ${text}`);
     assert(/How to install/.test(text), `notification without the install link: ${text}`);
+    // the instructions are the extension's own README (no web page yet)
+    await toast.first().locator(".monaco-button", { hasText: "How to install" }).click();
+    const preview = page.locator(".tabs-container .tab", { hasText: "README" });
+    await preview.first().waitFor({ state: "visible" });
+    await page.screenshot({ path: path.join(out, "vscode-install-readme.png") });
     fs.writeFileSync(machine, settings);
   });
 } catch (err) {

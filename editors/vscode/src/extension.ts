@@ -10,13 +10,14 @@ import {
   TransportKind,
 } from "vscode-languageclient/node";
 
-const INSTALL_URL = "https://example.invalid/rapid#install";
-
 let client: LanguageClient | undefined;
+/// The extension's folder: its README says how to install the server.
+let extensionUri: vscode.Uri | undefined;
 let log: vscode.OutputChannel | undefined;
 let traceLog: vscode.OutputChannel | undefined;
 
 export async function activate(context: vscode.ExtensionContext): Promise<void> {
+  extensionUri = context.extensionUri;
   log = vscode.window.createOutputChannel("RAPID Language Server");
   traceLog = vscode.window.createOutputChannel("RAPID Language Server Trace");
   context.subscriptions.push(log, traceLog);
@@ -74,7 +75,11 @@ async function startServer(): Promise<void> {
     synchronize: {
       // EIO.cfg declares the I/O signals that programs use by name.
       fileEvents: vscode.workspace.createFileSystemWatcher("**/*.{cfg,CFG,toml}"),
+      // The server reads its settings from the `rapid` section (it ignores
+      // `rapid.server` and `rapid.trace`, which are the extension's).
+      configurationSection: "rapid",
     },
+    initializationOptions: { rapid: settingsForServer() },
   };
 
   client = new LanguageClient("rapid", "RAPID Language Server", serverOptions, clientOptions);
@@ -104,17 +109,27 @@ async function reportMissingServer(configured: string): Promise<void> {
   const what = configured
     ? `The rapid binary set in 'rapid.server.path' (${configured}) does not exist or cannot be run.`
     : "The rapid binary was not found on PATH.";
-  log?.appendLine(`${what} Install it with 'cargo install --path lsp' (see ${INSTALL_URL}).`);
+  log?.appendLine(`${what} Install it with 'cargo install --path lsp' in a clone of rapid (see the extension's README).`);
   const choice = await vscode.window.showErrorMessage(
     `${what} RAPID diagnostics, hover and completion need it.`,
     "How to install",
     "Set path",
   );
-  if (choice === "How to install") {
-    await vscode.env.openExternal(vscode.Uri.parse(INSTALL_URL));
+  if (choice === "How to install" && extensionUri) {
+    // The project has no public home yet: its README, shipped with the
+    // extension, says how to install the server.
+    await vscode.commands.executeCommand(
+      "markdown.showPreview",
+      vscode.Uri.joinPath(extensionUri, "README.md"),
+    );
   } else if (choice === "Set path") {
     await vscode.commands.executeCommand("workbench.action.openSettings", "rapid.server.path");
   }
+}
+
+/// The `rapid` settings as plain JSON, for the server's initialization.
+function settingsForServer(): unknown {
+  return JSON.parse(JSON.stringify(vscode.workspace.getConfiguration("rapid")));
 }
 
 function expandHome(file: string): string {

@@ -23,6 +23,22 @@ pub struct Discovery {
     pub warnings: Vec<(PathBuf, String)>,
 }
 
+impl Discovery {
+    /// Adds what `other` found (files, configuration, programs; errors and
+    /// warnings), keeping each list sorted and without duplicates.
+    pub fn extend(&mut self, other: Discovery) {
+        self.files.extend(other.files);
+        self.configs.extend(other.configs);
+        self.programs.extend(other.programs);
+        self.errors.extend(other.errors);
+        self.warnings.extend(other.warnings);
+        for list in [&mut self.files, &mut self.configs, &mut self.programs] {
+            list.sort();
+            list.dedup();
+        }
+    }
+}
+
 /// Says whether a path (a folder when the flag is set) is left out.
 pub type Excluder = Arc<dyn Fn(&Path, bool) -> bool + Send + Sync>;
 
@@ -38,6 +54,16 @@ pub fn discover(paths: &[PathBuf]) -> Discovery {
 /// says what to leave out, named explicitly or not (so a pre-commit hook,
 /// which names files, honours the exclude list too).
 pub fn discover_with(paths: &[PathBuf], excluded: Excluder) -> Discovery {
+    discover_to_depth(paths, excluded, None)
+}
+
+/// [`discover_with`], walking folders at most `max_depth` levels down
+/// (`Some(1)`: the files of the folders themselves).
+pub fn discover_to_depth(
+    paths: &[PathBuf],
+    excluded: Excluder,
+    max_depth: Option<usize>,
+) -> Discovery {
     let mut out = Discovery::default();
     for root in paths {
         match std::fs::metadata(root) {
@@ -75,6 +101,7 @@ pub fn discover_with(paths: &[PathBuf], excluded: Excluder) -> Discovery {
             .hidden(false)
             .follow_links(true)
             .require_git(false)
+            .max_depth(max_depth)
             .filter_entry(move |entry| {
                 entry.file_name() != ".git"
                     && !excluded(entry.path(), entry.file_type().is_some_and(|t| t.is_dir()))

@@ -7,6 +7,8 @@
 //! ([`LintSettings::apply`]), optionally apply the safe fixes and check
 //! again, and print the report in the chosen format.
 
+mod baseline;
+pub mod context;
 mod discover;
 mod fix;
 mod output;
@@ -87,12 +89,28 @@ pub struct CheckArgs {
     /// Apply the safe fixes, write the files back, and report what remains.
     #[arg(long)]
     pub fix: bool,
+    /// Report only findings at least this severe (error, warning, info or
+    /// hint). Syntax errors are always reported.
+    #[arg(long, value_name = "LEVEL", value_parser = parse_severity)]
+    pub min_severity: Option<Severity>,
+    /// Report only findings that are not in this baseline file. When the
+    /// file does not exist, it is written with today's findings and none is
+    /// reported (see the README: adopting the linter on a project).
+    #[arg(long, value_name = "FILE")]
+    pub baseline: Option<PathBuf>,
+    /// With `--baseline`: write the file again with today's findings.
+    #[arg(long, requires = "baseline")]
+    pub update_baseline: bool,
     /// Threads to check with (default: one per core).
     #[arg(long, value_name = "N")]
     pub threads: Option<usize>,
     /// Print the time each phase took to stderr (for benchmarks).
     #[arg(long, hide = true)]
     pub timings: bool,
+}
+
+fn parse_severity(s: &str) -> Result<Severity, String> {
+    Severity::parse(s).ok_or_else(|| format!("`{s}` is not error, warning, info or hint"))
 }
 
 /// Phase timings of the last run, for `--timings`.
@@ -160,6 +178,8 @@ pub struct Report {
     pub skipped: Vec<(PathBuf, String)>,
     /// Fixes applied by `--fix`.
     pub fixed: usize,
+    /// Findings left out because the baseline holds them.
+    pub baselined: usize,
 }
 
 pub fn run(args: CheckArgs) -> ExitCode {
@@ -206,15 +226,18 @@ fn run_inner(args: CheckArgs, stderr: &mut impl Write) -> Result<ExitCode, Strin
             select: args.select.clone(),
             ignore: args.ignore.clone(),
             exclude: args.exclude.clone(),
+            min_severity: args.min_severity,
         },
     )
     .map_err(|e| e.to_string())?;
     let settings = Arc::new(settings);
     let for_walk = settings.clone();
-    let found = discover_with(
+    let mut found = discover_with(
         &paths,
         Arc::new(move |p: &Path, dir: bool| for_walk.is_excluded(p, dir)),
     );
+    // A file named twice (`rapid check . PROGMOD`, a link) is checked once.
+    found.files = distinct_files(std::mem::take(&mut found.files));
     let mut failed = false;
     for (path, why) in &found.errors {
         let _ = writeln!(stderr, "rapid: {}: {why}", output::display_path(path));
@@ -230,6 +253,12 @@ fn run_inner(args: CheckArgs, stderr: &mut impl Write) -> Result<ExitCode, Strin
         .chain(args.extra_path.iter().cloned())
         .collect();
     let extra = discover(&extra_paths);
+    let for_context = settings.clone();
+    let context = context::task_context(
+        &found.files,
+        &paths,
+        Arc::new(move |p: &Path, dir: bool| for_context.is_excluded(p, dir)),
+    );
     for (path, why) in &extra.errors {
         let _ = writeln!(stderr, "rapid: {} (extra path): {why}", path.display());
         failed = true;
@@ -249,14 +278,7 @@ fn run_inner(args: CheckArgs, stderr: &mut impl Write) -> Result<ExitCode, Strin
     lap("configuration and discovery", &mut clock);
     let progress = progress_bar(found.files.len());
     let controller = config.controller.resolve().unwrap_or_default();
-    let mut outcomes = check_files(
-        &found.files,
-        &found.configs,
-        &found.programs,
-        &extra,
-        &controller,
-        &progress,
-    );
+    let mut outcomes = check_files(&found, &context, &extra, &controller, &progress);
     let mut fixed = 0;
     if args.fix {
         // A fix can make room for another (or reveal one): a few passes.
@@ -267,14 +289,7 @@ fn run_inner(args: CheckArgs, stderr: &mut impl Write) -> Result<ExitCode, Strin
             if n == 0 {
                 break;
             }
-            outcomes = check_files(
-                &found.files,
-                &found.configs,
-                &found.programs,
-                &extra,
-                &controller,
-                &progress,
-            );
+            outcomes = check_files(&found, &context, &extra, &controller, &progress);
         }
     }
     progress.finish_and_clear();
@@ -284,6 +299,7 @@ fn run_inner(args: CheckArgs, stderr: &mut impl Write) -> Result<ExitCode, Strin
         checked: Vec::with_capacity(outcomes.len()),
         skipped: Vec::new(),
         fixed,
+        baselined: 0,
     };
     for outcome in outcomes {
         match outcome {
@@ -301,6 +317,9 @@ fn run_inner(args: CheckArgs, stderr: &mut impl Write) -> Result<ExitCode, Strin
         }
     }
 
+    if let Some(path) = &args.baseline {
+        apply_baseline(path, args.update_baseline, &mut report, stderr)?;
+    }
     lap("selection and suppressions", &mut clock);
     // Colours as the real stdout allows, through a buffer: stdout is
     // line-buffered even into a pipe, a system call for every line of the
@@ -360,6 +379,46 @@ fn run_inner(args: CheckArgs, stderr: &mut impl Write) -> Result<ExitCode, Strin
     } else {
         ExitCode::SUCCESS
     })
+}
+
+/// `--baseline`: leaves out the findings the file holds, or records them
+/// in it when it does not exist yet (or `update` says so).
+fn apply_baseline(
+    path: &Path,
+    update: bool,
+    report: &mut Report,
+    stderr: &mut impl Write,
+) -> Result<(), String> {
+    let shown = output::display_path(path);
+    match baseline::Baseline::read(path)? {
+        Some(known) if !update => {
+            let filtered = known.filter(&mut report.checked);
+            report.baselined = filtered.known;
+            if filtered.gone > 0 {
+                let s = if filtered.gone == 1 { "" } else { "s" };
+                let _ = writeln!(
+                    stderr,
+                    "rapid: {} finding{s} of the baseline {shown} no longer found; \
+                     `--update-baseline` records the baseline again",
+                    filtered.gone
+                );
+            }
+        }
+        _ => {
+            let n = baseline::record(path, &report.checked)?;
+            let s = if n == 1 { "" } else { "s" };
+            let _ = writeln!(
+                stderr,
+                "rapid: recorded {n} finding{s} in {shown}; runs with `--baseline {shown}` \
+                 report only findings that are not in it"
+            );
+            report.baselined = n;
+            for c in &mut report.checked {
+                c.diagnostics.clear();
+            }
+        }
+    }
+    Ok(())
 }
 
 /// Applies the safe fixes of the reported diagnostics to each file and
@@ -429,21 +488,23 @@ fn progress_bar(files: usize) -> ProgressBar {
     bar
 }
 
-/// Reads and checks every file, in parallel, keeping the order of `files`.
-/// Files are grouped into tasks as the analyzer does; `configs` are the I/O
-/// configuration files whose signals and mechanical units the tasks below
-/// them may use; `programs` are `.pgf` files that group modules into a task. The
-/// modules and configuration of `extra` join the tasks (the tasks they
-/// belong to when those are checked, else every checked task) but are not
-/// reported. Diagnostics are the analyzer's, unfiltered.
+/// Reads and checks every file of `found`, in parallel, keeping the order
+/// of its files. Files are grouped into tasks as the analyzer does; its
+/// `configs` are the I/O configuration files whose signals and mechanical
+/// units the tasks below them may use; its `programs` are `.pgf` files that
+/// group modules into a task. The rest of the checked files' tasks
+/// (`context`, [`context::task_context`]) and the modules and configuration
+/// of `extra` join the tasks (the tasks they belong to when those are
+/// checked, else, for `extra`, every checked task) but are not reported.
+/// Diagnostics are the analyzer's, unfiltered.
 pub fn check_files(
-    files: &[PathBuf],
-    configs: &[PathBuf],
-    programs: &[PathBuf],
+    found: &Discovery,
+    context: &Discovery,
     extra: &Discovery,
     controller: &rapid_analyzer::controller::ControllerOverride,
     progress: &ProgressBar,
 ) -> Vec<Outcome> {
+    let files = &found.files;
     let mut clock = std::time::Instant::now();
     // The checker needs the catalogue (some milliseconds to load): load it
     // on a thread that parsing leaves idle (a single large file is parsed
@@ -472,16 +533,21 @@ pub fn check_files(
         })
         .collect();
     parsed.sort_by_key(|(i, _, _)| *i);
+    // The analyzer's name of each file read, to find its diagnostics.
+    let names: Vec<Option<String>> = parsed
+        .iter()
+        .map(|(_, _, u)| u.as_ref().map(|u| u.path.clone()))
+        .collect();
     let (read, units): (Vec<_>, Vec<_>) = parsed.into_iter().map(|(_, r, u)| (r, u)).unzip();
     lap("reading, decoding, parsing and item trees", &mut clock);
     let mut workspace = Workspace::new();
     workspace.set_controller(controller.clone());
-    for path in programs {
+    for path in found.programs.iter().chain(&context.programs) {
         if let Ok(bytes) = crate::source::read_regular(path) {
             workspace.set_program(&unit_path(path), &String::from_utf8_lossy(&bytes));
         }
     }
-    for path in configs {
+    for path in found.configs.iter().chain(&context.configs) {
         if let Ok(bytes) = crate::source::read_regular(path) {
             let text = String::from_utf8_lossy(&bytes);
             workspace.set_config(&unit_path(path), &text);
@@ -501,6 +567,7 @@ pub fn check_files(
         .collect();
     // Skipped files are not checked: the second half of the bar is shorter.
     progress.set_length((files.len() + checked_paths.len()) as u64);
+    add_context(&mut workspace, context, &checked_paths, &checked_keys);
     add_extra(&mut workspace, extra, &checked_paths, &checked_keys);
     for unit in units.into_iter().flatten() {
         workspace.set_unit(unit);
@@ -542,9 +609,12 @@ pub fn check_files(
     std::mem::forget(workspace);
     read.into_iter()
         .zip(files)
-        .map(|(r, path)| match r {
+        .zip(names)
+        .map(|((r, path), name)| match r {
             Ok(file) => {
-                let diagnostics = by_path.remove(&unit_path(&file.path)).unwrap_or_default();
+                let diagnostics = name
+                    .and_then(|name| by_path.remove(&name))
+                    .unwrap_or_default();
                 Outcome::Checked(Checked { file, diagnostics })
             }
             Err(why) => Outcome::Skipped(path.clone(), why),
@@ -627,6 +697,31 @@ fn read_source(path: &Path) -> Result<SourceFile, Skip> {
     SourceFile::read(path).map_err(Skip::Unreadable)
 }
 
+/// Adds the modules of the checked files' tasks that were not checked
+/// themselves (their programs and configuration are in already).
+fn add_context(
+    workspace: &mut Workspace,
+    context: &Discovery,
+    checked_paths: &HashSet<String>,
+    checked_keys: &BTreeSet<String>,
+) {
+    let units: Vec<Unit> = context
+        .files
+        .par_iter()
+        .filter_map(|p| {
+            let path = unit_path(p);
+            if checked_paths.contains(&path) || !checked_keys.contains(&workspace.task_key(&path)) {
+                return None;
+            }
+            let file = read_source(p).ok()?;
+            Some(Unit::new(path, file.text, None))
+        })
+        .collect();
+    for unit in units {
+        workspace.set_unit(unit);
+    }
+}
+
 /// Adds the modules and I/O configuration of the extra paths. A module
 /// whose own task is checked joins it; any other joins every checked task,
 /// under a path of its own inside the task (its diagnostics are not
@@ -677,7 +772,20 @@ fn add_extra(
     }
 }
 
-/// The path of a file as the analyzer sees it (it groups tasks by it).
-fn unit_path(path: &Path) -> String {
-    path.to_string_lossy().into_owned()
+/// `files` without those that are the same file as an earlier one.
+fn distinct_files(files: Vec<PathBuf>) -> Vec<PathBuf> {
+    let names: Vec<String> = files.par_iter().map(|p| unit_path(p)).collect();
+    let mut seen = HashSet::with_capacity(files.len());
+    files
+        .into_iter()
+        .zip(names)
+        .filter_map(|(file, name)| seen.insert(name).then_some(file))
+        .collect()
+}
+
+/// The path of a file as the analyzer sees it (it groups tasks by it): its
+/// real place, whatever path named it ([`crate::source::analyzer_path`]).
+/// Reports show the path as given.
+pub fn unit_path(path: &Path) -> String {
+    crate::source::analyzer_path(path)
 }

@@ -151,6 +151,13 @@ pub fn human(out: &mut impl Write, report: &Report, styled: bool) -> io::Result<
     if report.fixed > 0 {
         let _ = write!(line, " Fixed {}.", plural(report.fixed, "problem"));
     }
+    if report.baselined > 0 {
+        let _ = write!(
+            line,
+            " {} in the baseline not shown.",
+            plural(report.baselined, "finding")
+        );
+    }
     if fixable > 0 {
         let _ = write!(line, " {fixable} fixable with `--fix`.");
     }
@@ -391,7 +398,7 @@ pub fn sarif(out: &mut impl Write, report: &Report, root: &Path) -> io::Result<(
     let by_path: std::collections::HashMap<String, &Checked> = report
         .checked
         .iter()
-        .map(|c| (c.file.path.to_string_lossy().into_owned(), c))
+        .map(|c| (super::unit_path(&c.file.path), c))
         .collect();
     for (c, d) in all(report) {
         let l = locate(c, d);

@@ -20,6 +20,23 @@ pub struct Overrides {
     pub ignore: Vec<String>,
     /// Added to `exclude`.
     pub exclude: Vec<String>,
+    /// Findings less severe than this (after the configured severities)
+    /// are not reported.
+    pub min_severity: Option<Severity>,
+}
+
+/// Syntax errors: the controller does not load a module that has one, so
+/// no selection, severity or suppression hides them or makes them less
+/// than errors.
+pub fn is_syntax_rule(rule: &rapid_analyzer::diagnostic::Rule) -> bool {
+    use rapid_analyzer::rules::{equals_for_assignment, missing_token, syntax_error};
+    [
+        &syntax_error::RULE,
+        &missing_token::RULE,
+        &equals_for_assignment::RULE,
+    ]
+    .iter()
+    .any(|r| r.code == rule.code)
 }
 
 /// The rules on, with their severity, for one file.
@@ -121,6 +138,7 @@ pub struct LintSettings {
     /// Ignored on the command line: applied last, whatever the overrides say.
     cli_ignore: Vec<String>,
     exclude: GlobSet,
+    min_severity: Option<Severity>,
 }
 
 #[derive(Debug)]
@@ -192,6 +210,7 @@ impl LintSettings {
             overrides: parts,
             cli_ignore: cli.ignore.clone(),
             exclude: globs(&exclude).map_err(SettingsError)?,
+            min_severity: cli.min_severity,
         })
     }
 
@@ -230,7 +249,9 @@ impl LintSettings {
     }
 
     /// Keeps the diagnostics of `path` that are selected and not
-    /// suppressed in its `text`, at their configured severity.
+    /// suppressed in its `text`, at their configured severity, and at least
+    /// as severe as the floor. Syntax errors are always kept, as errors
+    /// ([`is_syntax_rule`]).
     pub fn apply(
         &self,
         path: &Path,
@@ -246,12 +267,19 @@ impl LintSettings {
         diagnostics
             .into_iter()
             .filter_map(|mut d| {
+                if is_syntax_rule(d.rule) {
+                    d.severity = Severity::Error;
+                    return Some(d);
+                }
                 let configured = rules.of(d.rule.code)?;
                 if suppressions.suppresses(lines.line_col(d.range.start).line, d.rule) {
                     return None;
                 }
                 if let Some(severity) = configured {
                     d.severity = severity;
+                }
+                if self.min_severity.is_some_and(|floor| d.severity < floor) {
+                    return None;
                 }
                 Some(d)
             })
@@ -356,6 +384,7 @@ mod tests {
                 select: vec!["W".into()],
                 ignore: vec!["unused-routine".into()],
                 exclude: vec![],
+                min_severity: None,
             },
         );
         assert_eq!(severity(&s, "/proj/a.mod", "W201"), Some("hint"));
@@ -364,6 +393,63 @@ mod tests {
         assert_eq!(severity(&s, "/proj/a.mod", "E001"), None);
         assert_eq!(severity(&s, "/proj/legacy/a.mod", "unused-routine"), None);
         assert_eq!(severity(&s, "/proj/a.mod", "unused-routine"), None);
+    }
+
+    /// The codes and severities `apply` keeps of one finding per rule.
+    fn kept(s: &LintSettings, codes: &[&str], text: &str) -> Vec<(String, &'static str)> {
+        let lines = rapid_analyzer::text::LineIndex::new(text);
+        let found = codes
+            .iter()
+            .map(|c| Diagnostic::new(find(c).expect("rule"), 0..1, "x"))
+            .collect();
+        s.apply(Path::new("/proj/a.mod"), text, &lines, found)
+            .into_iter()
+            .map(|d| (d.rule.code.to_owned(), d.severity.as_str()))
+            .collect()
+    }
+
+    #[test]
+    fn syntax_errors_cannot_be_hidden_or_lowered() {
+        let s = settings(
+            "[lint]\nignore = [\"E002\"]\n[lint.severity]\nE001 = \"hint\"\n",
+            Overrides {
+                select: vec!["W".into()],
+                ignore: vec!["syntax-error".into(), "E003".into()],
+                ..Overrides::default()
+            },
+        );
+        let codes = ["E001", "E002", "E003", "E201", "W101"];
+        let text = "x ! rapid: ignore\n";
+        assert_eq!(
+            kept(&s, &codes, text),
+            [
+                ("E001".to_owned(), "error"),
+                ("E002".to_owned(), "error"),
+                ("E003".to_owned(), "error"),
+            ],
+            "W101 is suppressed in the text, E201 not selected"
+        );
+        assert_eq!(kept(&s, &codes, "x\n").len(), 4);
+    }
+
+    #[test]
+    fn the_severity_floor_drops_what_is_below_it() {
+        let s = settings(
+            "[lint.severity]\nunused-data = \"error\"\n",
+            Overrides {
+                min_severity: Some(Severity::Warning),
+                ..Overrides::default()
+            },
+        );
+        let codes = ["W101", "W201", "I102", "E201"];
+        assert_eq!(
+            kept(&s, &codes, "x\n"),
+            [
+                ("W101".to_owned(), "warning"),
+                ("W201".to_owned(), "error"),
+                ("E201".to_owned(), "error"),
+            ]
+        );
     }
 
     #[test]

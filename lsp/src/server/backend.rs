@@ -28,6 +28,11 @@ use super::state::{
     ClientCaps, Shared, Snapshot, State, closed_unit, is_eio_cfg, make_unit, path_of,
 };
 
+/// How long after an edit that changed a module's interface the files that
+/// are not open are checked again (each is a whole check: not on every
+/// keystroke).
+const CLOSED_FILES_DELAY: Duration = Duration::from_millis(600);
+
 /// The extensions of RAPID files, in the letter cases seen in practice, for
 /// file watchers (LSP glob patterns are case-sensitive).
 const WATCH_GLOBS: &[&str] = &[
@@ -41,8 +46,8 @@ const WATCH_GLOBS: &[&str] = &[
 /// The handle every handler and background job shares.
 #[derive(Clone)]
 pub struct Backend {
-    client: Client,
-    shared: Arc<Shared>,
+    pub(super) client: Client,
+    pub(super) shared: Arc<Shared>,
     shut_down: Arc<AtomicBool>,
 }
 
@@ -87,7 +92,7 @@ impl Backend {
 
     /// Runs a mutation of the state, catching panics (the state is left as
     /// it was at the panic, which is always consistent enough to go on).
-    fn mutate<R>(&self, what: &str, f: impl FnOnce(&mut State) -> R) -> Option<R> {
+    pub(super) fn mutate<R>(&self, what: &str, f: impl FnOnce(&mut State) -> R) -> Option<R> {
         let mut state = self.shared.lock();
         match catch_unwind(AssertUnwindSafe(|| f(&mut state))) {
             Ok(r) => Some(r),
@@ -131,7 +136,7 @@ impl Backend {
             .map(GotoDefinitionResponse::Array))
     }
 
-    async fn blocking<R: Send + 'static>(
+    pub(super) async fn blocking<R: Send + 'static>(
         &self,
         what: &'static str,
         f: impl FnOnce() -> R + Send + 'static,
@@ -160,7 +165,7 @@ impl Backend {
         let jobs = self
             .mutate("scheduling diagnostics", |s| {
                 let delay = delay.unwrap_or(s.settings.delay);
-                let push = !s.caps.pull_diagnostics;
+                let push = !s.caps.pulls();
                 paths
                     .into_iter()
                     .filter_map(|p| {
@@ -184,8 +189,9 @@ impl Backend {
             .mutate("listing documents", |s| s.docs.keys().cloned().collect())
             .unwrap_or_default();
         self.schedule(paths, Some(Duration::ZERO));
+        self.schedule_workspace_report(Duration::ZERO);
         let caps = self.shared.lock().caps;
-        if caps.pull_diagnostics && caps.diagnostic_refresh {
+        if caps.pulls() {
             let client = self.client.clone();
             tokio::spawn(async move { client.workspace_diagnostic_refresh().await });
         }
@@ -274,11 +280,11 @@ impl Backend {
     /// Reads every RAPID file and `EIO.cfg` under the workspace folders and
     /// the extra paths, reporting progress.
     async fn index_workspace(&self) {
-        let (roots, progress_supported, lint) = {
+        let (roots, lint) = {
             let s = self.shared.lock();
             let mut roots = s.roots.clone();
             roots.extend(s.settings.extra_paths());
-            (roots, s.caps.work_done_progress, s.settings.lint.clone())
+            (roots, s.settings.lint.clone())
         };
         if roots.is_empty() {
             return;
@@ -294,6 +300,13 @@ impl Backend {
         else {
             return;
         };
+        self.index(found).await;
+    }
+
+    /// Reads the files found (RAPID files, programs, configuration) into the
+    /// workspace, reporting progress, then publishes diagnostics again.
+    pub(super) async fn index(&self, found: crate::check::Discovery) {
+        let progress_supported = self.shared.lock().caps.work_done_progress;
         let progress = if progress_supported && !found.files.is_empty() {
             let token = NumberOrString::String("rapid/indexing".to_owned());
             match self.client.create_work_done_progress(token.clone()).await {
@@ -580,7 +593,7 @@ fn read_units(
         .collect()
 }
 
-fn convert_diagnostics(
+pub(super) fn convert_diagnostics(
     snap: &Snapshot,
     raw: &[rapid_analyzer::diagnostic::Diagnostic],
 ) -> Vec<Diagnostic> {
@@ -666,7 +679,7 @@ fn workspace_roots(params: &InitializeParams) -> Vec<PathBuf> {
     roots
 }
 
-fn server_capabilities(encoding: PosEncoding) -> ServerCapabilities {
+fn server_capabilities(encoding: PosEncoding, caps: ClientCaps) -> ServerCapabilities {
     let token_types = ide::TOKEN_TYPES
         .iter()
         .map(|t| SemanticTokenType::new(t))
@@ -739,12 +752,16 @@ fn server_capabilities(encoding: PosEncoding) -> ServerCapabilities {
             }),
             file_operations: None,
         }),
-        diagnostic_provider: Some(DiagnosticServerCapabilities::Options(DiagnosticOptions {
-            identifier: Some("rapid".to_owned()),
-            inter_file_dependencies: true,
-            workspace_diagnostics: false,
-            work_done_progress_options: WorkDoneProgressOptions::default(),
-        })),
+        // Pull diagnostics only for clients that can be told to pull again
+        // (see ClientCaps::pulls); the others get them pushed.
+        diagnostic_provider: caps.pulls().then(|| {
+            DiagnosticServerCapabilities::Options(DiagnosticOptions {
+                identifier: Some("rapid".to_owned()),
+                inter_file_dependencies: true,
+                workspace_diagnostics: true,
+                work_done_progress_options: WorkDoneProgressOptions::default(),
+            })
+        }),
         ..ServerCapabilities::default()
     }
 }
@@ -758,9 +775,10 @@ impl LanguageServer for Backend {
                 .as_ref()
                 .and_then(|g| g.position_encodings.as_deref()),
         );
+        let caps = client_caps(&params);
         self.mutate("initializing", |s| {
             s.encoding = encoding;
-            s.caps = client_caps(&params);
+            s.caps = caps;
             s.roots = workspace_roots(&params);
         });
         let options = params.initialization_options.clone().unwrap_or(Value::Null);
@@ -770,7 +788,7 @@ impl LanguageServer for Backend {
                 .await;
         }
         Ok(InitializeResult {
-            capabilities: server_capabilities(encoding),
+            capabilities: server_capabilities(encoding, caps),
             server_info: Some(ServerInfo {
                 name: "rapid".to_owned(),
                 version: Some(env!("CARGO_PKG_VERSION").to_owned()),
@@ -840,9 +858,17 @@ impl LanguageServer for Backend {
                 })
             })
             .flatten();
-        self.schedule(vec![path], Some(Duration::ZERO));
+        self.schedule(vec![path.clone()], Some(Duration::ZERO));
         if let Some(others) = others {
             self.schedule(others, None);
+        }
+        // Outside every workspace folder: the rest of its task, from its place.
+        if let Some(folders) = self
+            .mutate("opening", |s| s.unloaded_task_of(&path))
+            .flatten()
+        {
+            let this = self.clone();
+            tokio::spawn(async move { this.load_task_of(folders).await });
         }
     }
 
@@ -877,19 +903,22 @@ impl LanguageServer for Backend {
             doc.unit = unit;
             doc.version = version;
             Some(if changed {
-                s.open_in_task(&path)
+                (true, s.open_in_task(&path))
             } else {
-                Vec::new()
+                (false, Vec::new())
             })
         });
         match outcome {
-            Some(Some(others)) => {
+            Some(Some((interface_changed, others))) => {
                 self.schedule(vec![path], None);
                 let caps = self.shared.lock().caps;
-                if !others.is_empty() && caps.pull_diagnostics && caps.diagnostic_refresh {
+                if !others.is_empty() && caps.pulls() {
                     // Pulling clients ask again for the other files.
                     let client = self.client.clone();
                     tokio::spawn(async move { client.workspace_diagnostic_refresh().await });
+                }
+                if interface_changed {
+                    self.schedule_workspace_report(CLOSED_FILES_DELAY);
                 }
                 self.schedule(others, None);
             }
@@ -954,10 +983,16 @@ impl LanguageServer for Backend {
                 })
             })
             .flatten();
-        let push = !self.shared.lock().caps.pull_diagnostics;
-        if push {
+        let (push, on_disk) = {
+            let s = self.shared.lock();
+            (!s.caps.pulls(), s.ws.unit(&path).is_some())
+        };
+        if push && !on_disk {
             self.client.publish_diagnostics(uri, Vec::new(), None).await;
         }
+        // The file as it is on disk is reported with the other files that
+        // are not open (and they may see another interface now).
+        self.schedule_workspace_report(Duration::ZERO);
         if let Some(others) = others {
             self.schedule(others, None);
         }
@@ -1081,6 +1116,13 @@ impl LanguageServer for Backend {
         Ok(DocumentDiagnosticReportResult::Report(report))
     }
 
+    async fn workspace_diagnostic(
+        &self,
+        params: WorkspaceDiagnosticParams,
+    ) -> Result<WorkspaceDiagnosticReportResult> {
+        Ok(self.workspace_report(params).await)
+    }
+
     async fn hover(&self, params: HoverParams) -> Result<Option<Hover>> {
         let p = params.text_document_position_params;
         let pos = p.position;
@@ -1107,7 +1149,7 @@ impl LanguageServer for Backend {
                 requests::completion(s, pos, lazy)
             })
             .await?
-            .map(CompletionResponse::Array))
+            .map(CompletionResponse::List))
     }
 
     async fn completion_resolve(&self, item: CompletionItem) -> Result<CompletionItem> {

@@ -45,7 +45,10 @@ pub fn to_lsp(
                 range: map.range(d.range.clone()),
                 severity: Some(lsp_severity(d.severity)),
                 code: Some(NumberOrString::String(d.rule.code.to_owned())),
-                code_description: docs_href(&settings.docs_url, d.rule)
+                code_description: settings
+                    .docs_url
+                    .as_deref()
+                    .and_then(|base| docs_href(base, d.rule))
                     .map(|href| CodeDescription { href }),
                 source: Some("rapid".to_owned()),
                 message: d.message.clone(),

@@ -17,6 +17,7 @@
 mod backend;
 mod diagnostics;
 mod document;
+mod implicit;
 mod position;
 mod requests;
 mod settings;
@@ -24,6 +25,7 @@ mod state;
 #[cfg(test)]
 mod tests;
 mod transport;
+mod workspace_report;
 
 use std::process::ExitCode;
 use std::sync::Arc;

@@ -38,12 +38,22 @@ fn markdown(value: String) -> MarkupContent {
     }
 }
 
+/// The most items a completion list carries. A statement start in a large
+/// module offers thousands (every built-in, every datum of the task); the
+/// editor shows a dozen, and what the user types next narrows the list.
+/// Longer lists are cut to their best items and marked incomplete, so the
+/// editor asks again as the user types, and the server filters by what is
+/// typed.
+pub const MOST_COMPLETIONS: usize = 400;
+
 /// The completion list at `pos`; with `lazy_detail`, without the items'
 /// details (signatures and declarations, most of the list's size), which
 /// [`resolve_completion`] adds to the item the user looks at.
-pub fn completion(snap: &Snapshot, pos: Position, lazy_detail: bool) -> Vec<lsp::CompletionItem> {
+pub fn completion(snap: &Snapshot, pos: Position, lazy_detail: bool) -> lsp::CompletionList {
     let offset = snap.map().offset(pos);
-    ide::completions(&snap.task, snap.unit_idx, offset)
+    let mut found = ide::completions_for(&snap.task, snap.unit_idx, offset, !lazy_detail);
+    let complete = cut_list(&mut found, typed_before(&snap.unit.text, offset));
+    let items = found
         .into_iter()
         .map(|c| lsp::CompletionItem {
             kind: Some(completion_kind(c.kind)),
@@ -57,7 +67,49 @@ pub fn completion(snap: &Snapshot, pos: Position, lazy_detail: bool) -> Vec<lsp:
             label: c.label,
             ..lsp::CompletionItem::default()
         })
-        .collect()
+        .collect();
+    lsp::CompletionList {
+        is_incomplete: !complete,
+        items,
+    }
+}
+
+/// The name being typed before `offset` (possibly empty).
+fn typed_before(text: &str, offset: usize) -> &str {
+    let before = text.get(..offset).unwrap_or_default();
+    let start = before
+        .rfind(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+        .map_or(0, |i| i + 1);
+    &before[start..]
+}
+
+/// Cuts a list longer than [`MOST_COMPLETIONS`]: the items whose label holds
+/// the letters typed, in order (the editor's own filter keeps fewer), then
+/// the best by sort order. Returns whether the list is whole.
+fn cut_list(items: &mut Vec<ide::CompletionItem>, typed: &str) -> bool {
+    if items.len() <= MOST_COMPLETIONS {
+        return true;
+    }
+    if !typed.is_empty() {
+        let typed: Vec<char> = typed.chars().map(|c| c.to_ascii_lowercase()).collect();
+        items.retain(|i| {
+            let mut want = typed.iter().peekable();
+            for c in i.label.chars() {
+                if want.peek() == Some(&&c.to_ascii_lowercase()) {
+                    want.next();
+                }
+            }
+            want.peek().is_none()
+        });
+    }
+    if items.len() > MOST_COMPLETIONS {
+        // The best ones, in no particular order (the editor sorts them).
+        items.select_nth_unstable_by(MOST_COMPLETIONS - 1, |a, b| {
+            a.sort_text.cmp(&b.sort_text).then(a.label.cmp(&b.label))
+        });
+        items.truncate(MOST_COMPLETIONS);
+    }
+    false
 }
 
 /// `completionItem/resolve`: documentation, looked up only for the item the
@@ -509,22 +561,27 @@ pub fn selection_ranges(snap: &Snapshot, positions: &[Position]) -> Vec<Selectio
 
 pub fn inlay_hints(snap: &Snapshot, range: lsp::Range) -> Vec<lsp::InlayHint> {
     let map = snap.map();
-    ide::inlay_hints(&snap.task, snap.unit_idx, map.offset_range(range))
-        .into_iter()
-        .map(|h| {
-            let parameter = h.kind == ide::InlayKind::Parameter;
-            lsp::InlayHint {
-                position: map.position(h.offset),
-                label: InlayHintLabel::String(h.label),
-                kind: parameter.then_some(InlayHintKind::PARAMETER),
-                text_edits: None,
-                tooltip: None,
-                padding_left: Some(!parameter),
-                padding_right: Some(parameter),
-                data: None,
-            }
-        })
-        .collect()
+    ide::inlay_hints(
+        &snap.task,
+        snap.unit_idx,
+        map.offset_range(range),
+        snap.settings.parameter_hints,
+    )
+    .into_iter()
+    .map(|h| {
+        let parameter = h.kind == ide::InlayKind::Parameter;
+        lsp::InlayHint {
+            position: map.position(h.offset),
+            label: InlayHintLabel::String(h.label),
+            kind: parameter.then_some(InlayHintKind::PARAMETER),
+            text_edits: None,
+            tooltip: None,
+            padding_left: Some(!parameter),
+            padding_right: Some(parameter),
+            data: None,
+        }
+    })
+    .collect()
 }
 
 /// Quick fixes: the fixes the analyzer's diagnostics carry, then the

@@ -13,15 +13,20 @@
 //!   "extra-paths": ["/opt/robot/shared-modules"],
 //!   "rules": { "W101": "off", "unused-data": "hint" },
 //!   "diagnosticsDelay": 80,
-//!   "docsBaseUrl": "https://example.invalid/rapid/blob/main/docs/diagnostics.md"
+//!   "docsBaseUrl": "https://docs.example.com/rapid/diagnostics.html",
+//!   "inlayHints": { "parameterNames": "literals" }
 //! }
 //! ```
 //!
 //! `rules` (rule code or name to `error`, `warning`, `info`, `hint` or
 //! `off`) is a shorthand mapped onto `lint.severity` and `lint.ignore`;
 //! `extraPaths` is accepted for `extra-paths`. `diagnosticsDelay` (ms, 0
-//! for none) and `docsBaseUrl` are the server's own. Bad values are
-//! reported (as log messages) and skipped, so a typo never stops the server.
+//! for none), `docsBaseUrl` (where diagnostic codes link to, `#code-name`
+//! appended; no link without it) and `inlayHints.parameterNames` (`none`,
+//! `literals`, `all`: which arguments show their parameter's name) are the
+//! server's own; `server` and `trace` (the VS Code extension's settings) are
+//! ignored. Bad values are reported (as log messages) and skipped, so a typo
+//! never stops the server.
 
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
@@ -29,13 +34,10 @@ use std::time::Duration;
 
 use serde_json::{Map, Value};
 
+use rapid_analyzer::ide::ParameterHints;
+
 use crate::check::{LintSettings, Overrides};
 use crate::config::Config;
-
-/// Where diagnostics' `codeDescription` links point by default: the
-/// reference page in the repository (`repository` of the workspace's
-/// `Cargo.toml`).
-pub const DEFAULT_DOCS_URL: &str = "https://example.invalid/rapid/blob/main/docs/diagnostics.md";
 
 /// Default pause after the last keystroke before diagnostics are published.
 pub const DEFAULT_DELAY: Duration = Duration::from_millis(75);
@@ -51,8 +53,12 @@ pub struct Settings {
     pub lint: Arc<LintSettings>,
     /// Debounce of diagnostics while typing (0: publish at once).
     pub delay: Duration,
-    /// The reference page that diagnostic codes link to.
-    pub docs_url: String,
+    /// The reference page that diagnostic codes link to (`None`: no link;
+    /// the rule's documentation is in the hover of the diagnostic, in
+    /// `rapid rules CODE` and in docs/diagnostics.md).
+    pub docs_url: Option<String>,
+    /// Which positional arguments show their parameter's name.
+    pub parameter_hints: ParameterHints,
 }
 
 impl Default for Settings {
@@ -71,7 +77,8 @@ impl Settings {
     ) -> (Settings, Vec<String>) {
         let mut problems = Vec::new();
         let mut delay = DEFAULT_DELAY;
-        let mut docs_url = DEFAULT_DOCS_URL.to_owned();
+        let mut docs_url = None;
+        let mut parameter_hints = ParameterHints::default();
         let mut root = root.to_owned();
         let mut merged = Value::Object(Map::new());
         if let Some((path, text)) = file {
@@ -101,10 +108,25 @@ impl Settings {
                 }
                 if let Some(v) = obj.remove("docsBaseUrl") {
                     match v.as_str() {
-                        Some(s) => s.clone_into(&mut docs_url),
+                        Some("") => docs_url = None,
+                        Some(s) => docs_url = Some(s.to_owned()),
                         None => problems.push(format!("docsBaseUrl: expected a URL, found {v}")),
                     }
                 }
+                if let Some(v) = obj.remove("inlayHints") {
+                    match v.get("parameterNames").map(|p| (p, p.as_str())) {
+                        None => {}
+                        Some((_, Some(name))) if ParameterHints::parse(name).is_some() => {
+                            parameter_hints = ParameterHints::parse(name).unwrap_or_default();
+                        }
+                        Some((p, _)) => problems.push(format!(
+                            "inlayHints.parameterNames: expected \"none\", \"literals\" or \"all\", found {p}"
+                        )),
+                    }
+                }
+                // The VS Code extension's own settings, sent with the rest.
+                obj.remove("server");
+                obj.remove("trace");
                 if let Some(v) = obj.remove("extraPaths") {
                     obj.insert("extra-paths".to_owned(), v);
                 }
@@ -140,6 +162,7 @@ impl Settings {
                 lint: Arc::new(lint),
                 delay,
                 docs_url,
+                parameter_hints,
             },
             problems,
         )
@@ -263,19 +286,48 @@ mod tests {
             Path::new("/w"),
         );
         assert_eq!(problems.len(), 2, "{problems:?}");
-        // The client's `lint.ignore` (from `rules`) replaces the file's list.
+        // The client's `lint.ignore` (from `rules`) replaces the file's list;
+        // a syntax error stays an error whatever the settings say.
         assert_eq!(
             severities(&s, &["W201", "W101", "W202", "E001", "E002"]),
             [
                 Some(Severity::Hint),
                 None,
                 Some(Severity::Hint),
-                Some(Severity::Warning),
+                Some(Severity::Error),
                 Some(Severity::Error)
             ]
         );
         assert_eq!(s.extra_paths(), vec![PathBuf::from("/p/shared")]);
         assert_eq!(s.delay, Duration::ZERO);
+    }
+
+    #[test]
+    fn the_servers_own_keys_and_the_editors_keys_are_not_lint_settings() {
+        let (s, problems) = Settings::resolve(
+            &json!({"rapid": {
+                "inlayHints": {"parameterNames": "all"},
+                "docsBaseUrl": "https://docs.example.com/rules.html",
+                "server": {"path": "/opt/rapid", "extraArgs": []},
+                "trace": {"server": "off"}
+            }}),
+            None,
+            Path::new("/w"),
+        );
+        assert!(problems.is_empty(), "{problems:?}");
+        assert_eq!(s.parameter_hints, ParameterHints::All);
+        assert_eq!(
+            s.docs_url.as_deref(),
+            Some("https://docs.example.com/rules.html")
+        );
+        let (s, problems) = Settings::resolve(
+            &json!({"inlayHints": {"parameterNames": "some"}}),
+            None,
+            Path::new("/w"),
+        );
+        assert_eq!(problems.len(), 1, "{problems:?}");
+        assert_eq!(s.parameter_hints, ParameterHints::Literals);
+        assert_eq!(s.docs_url, None, "no link by default");
     }
 
     #[test]

@@ -36,6 +36,17 @@ pub struct ClientCaps {
     pub resolve_completion_detail: bool,
 }
 
+impl ClientCaps {
+    /// Whether the client is served pull diagnostics: it pulls them and can
+    /// be told to pull again when another file's edit changes them (VS
+    /// Code). A client that pulls but cannot be told (Neovim 0.11) would
+    /// show stale diagnostics for every file but the one being edited: it
+    /// gets them pushed, as a client that does not pull at all.
+    pub fn pulls(&self) -> bool {
+        self.pull_diagnostics && self.diagnostic_refresh
+    }
+}
+
 #[derive(Default)]
 pub struct State {
     pub ws: Workspace,
@@ -74,6 +85,15 @@ pub struct State {
     /// for polling when the client cannot watch files.
     pub disk: HashMap<PathBuf, Option<std::time::SystemTime>>,
     pub shutdown: bool,
+    /// The diagnostics of the files that are not open, as last reported
+    /// (see [`super::workspace_report`]).
+    pub closed: HashMap<String, super::workspace_report::ClosedReport>,
+    /// Bumped when a report of the files that are not open is scheduled: a
+    /// run for an older one stops.
+    pub closed_generation: u64,
+    /// Folders indexed because a file outside every workspace folder was
+    /// opened (the rest of its task).
+    pub implicit_roots: Vec<PathBuf>,
 }
 
 pub struct CachedDiagnostics {

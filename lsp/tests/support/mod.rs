@@ -20,6 +20,16 @@ pub fn write(dir: &Path, files: &[(&str, &str)]) {
     }
 }
 
+/// `exit CODE`, then stdout and stderr, for snapshots and messages.
+pub fn show(out: &Output) -> String {
+    format!(
+        "exit {}\n--- stdout\n{}--- stderr\n{}",
+        out.status.code().unwrap_or(-1),
+        text(&out.stdout),
+        text(&out.stderr)
+    )
+}
+
 /// Output bytes as text.
 pub fn text(bytes: &[u8]) -> String {
     String::from_utf8_lossy(bytes).into_owned()

@@ -1,5 +1,5 @@
 use super::fixture;
-use crate::ide::{CodeAction, code_actions, inlay_hints};
+use crate::ide::{CodeAction, ParameterHints, code_actions, inlay_hints};
 use crate::workspace::diagnostics_of;
 
 /// The text after applying the first action for the diagnostic `code`.
@@ -71,25 +71,29 @@ fn missing_return_is_added_before_endfunc() {
     );
 }
 
-#[test]
-fn parameter_name_hints_for_positional_arguments() {
-    let src = "MODULE m\n  PROC main()\n    MoveL p10, v100, fine, tool0;\n    MoveL ToPoint, v100 \\T:=2, z10, tool0;\n    TPWrite \"only one\";\n  ENDPROC\nENDMODULE\n";
+/// (the argument's text up to its end, the hint) of each parameter hint.
+fn parameter_hints(src: &str, which: ParameterHints) -> Vec<(String, String)> {
     let (task, unit, _) = fixture(src);
-    let hints: Vec<(String, String)> = inlay_hints(&task, unit, 0..src.len())
+    inlay_hints(&task, unit, 0..src.len(), which)
         .into_iter()
         .map(|h| {
             (
                 src[h.offset..]
-                    .split([',', ';'])
+                    .split([',', ';', ')'])
                     .next()
                     .unwrap_or("")
                     .to_owned(),
                 h.label,
             )
         })
-        .collect();
+        .collect()
+}
+
+#[test]
+fn parameter_name_hints_for_positional_arguments() {
+    let src = "MODULE m\n  PROC main()\n    MoveL p10, v100, fine, tool0;\n    MoveL ToPoint, v100 \\T:=2, z10, tool0;\n    TPWrite \"only one\";\n  ENDPROC\nENDMODULE\n";
     assert_eq!(
-        hints,
+        parameter_hints(src, ParameterHints::All),
         vec![
             ("p10".into(), "ToPoint:".into()),
             ("v100".into(), "Speed:".into()),
@@ -100,13 +104,30 @@ fn parameter_name_hints_for_positional_arguments() {
             ("tool0".into(), "Tool:".into()),
         ]
     );
+    assert!(parameter_hints(src, ParameterHints::None).is_empty());
+}
+
+#[test]
+fn by_default_parameter_hints_only_where_the_argument_does_not_name_itself() {
+    let src = "MODULE m\n  VAR robtarget pts{2};\n  PROC main()\n    MoveL p10, v100, fine, tool0;\n    MoveL pts{1}, v100, z10, tool0.tframe;\n    MoveL Offs(p10, 0, 0, 50), [100, 10, 500, 50], z10, (tool0);\n    SetDO doGrip, 1;\n    TPWrite \"only one\";\n  ENDPROC\nENDMODULE\n";
+    assert_eq!(
+        parameter_hints(src, ParameterHints::default()),
+        vec![
+            ("Offs(p10".into(), "ToPoint:".into()),
+            ("0".into(), "XOffset:".into()),
+            ("0".into(), "YOffset:".into()),
+            ("50".into(), "ZOffset:".into()),
+            ("[100".into(), "Speed:".into()),
+            ("1".into(), "Value:".into()),
+        ]
+    );
 }
 
 #[test]
 fn value_hints_after_computed_constants() {
     let src = "MODULE m\n  CONST num a := 5;\n  CONST num b := a * 1.5;\n  CONST num c := 3;\n  VAR num v := a + 1;\nENDMODULE\n";
     let (task, unit, _) = fixture(src);
-    let hints: Vec<(usize, String)> = inlay_hints(&task, unit, 0..src.len())
+    let hints: Vec<(usize, String)> = inlay_hints(&task, unit, 0..src.len(), ParameterHints::All)
         .into_iter()
         .map(|h| (h.offset, h.label))
         .collect();

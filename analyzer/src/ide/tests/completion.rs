@@ -46,6 +46,75 @@ fn statement_start_offers_instructions_procedures_keywords_and_snippets() {
 }
 
 #[test]
+fn the_most_called_instructions_come_first_at_a_statement_start() {
+    let items = labels(&in_proc("    $0"));
+    assert_eq!(
+        items.first().map(|i| i.0.as_str()),
+        Some("MoveL"),
+        "{:?}",
+        &items[..5]
+    );
+    let moves: Vec<&str> = items
+        .iter()
+        .map(|i| i.0.as_str())
+        .filter(|l| l.starts_with("Move"))
+        .take(3)
+        .collect();
+    assert_eq!(moves, ["MoveL", "MoveJ", "MoveAbsJ"]);
+    // The program's own procedures come before the rarer built-ins.
+    let at = |label: &str| items.iter().position(|i| i.0 == label);
+    assert!(at("Grip") < at("MotionSup"), "{items:?}");
+    // Functions too, within what fits the expected type.
+    let items = labels(&in_proc("    MoveL $0"));
+    let at = |label: &str| items.iter().position(|i| i.0 == label);
+    assert!(at("Offs") < at("MirPos"), "{items:?}");
+}
+
+#[test]
+fn lists_without_details_are_the_lists_with_their_details_left_out() {
+    for src in [
+        in_proc("    $0"),
+        in_proc("    MoveL $0"),
+        in_proc("    count := $0"),
+        "MODULE m\n  TRAP t\n  ENDTRAP\n  PROC main()\n    CONNECT i WITH $0\n  ENDPROC\nENDMODULE\n".to_owned(),
+    ] {
+        let (task, unit, offset) = fixture(&src);
+        let mut full = crate::ide::completions(&task, unit, offset);
+        assert!(full.iter().any(|i| i.detail.is_some()), "{src}");
+        let lean = crate::ide::completions_for(&task, unit, offset, false);
+        for (f, l) in full.iter_mut().zip(&lean) {
+            if l.detail.is_none() {
+                f.detail = None;
+            }
+        }
+        assert_eq!(full, lean, "{src}");
+        assert!(
+            lean.iter()
+                .filter(|i| i.kind != crate::ide::CompletionKind::Snippet)
+                .all(|i| i.detail.is_none()),
+            "{src}"
+        );
+    }
+}
+
+#[test]
+fn the_usage_table_names_only_built_ins() {
+    let cat = crate::catalogue::catalogue();
+    let mut section = "";
+    for line in include_str!("../usage.txt").lines() {
+        match line.trim() {
+            "" => {}
+            l if l.starts_with('#') => {}
+            l if l.starts_with('[') => section = l,
+            name if section == "[instructions]" => {
+                assert!(cat.instruction(name).is_some(), "{name} is no instruction");
+            }
+            name => assert!(cat.function(name).is_some(), "{name} is no function"),
+        }
+    }
+}
+
+#[test]
 fn arguments_offer_data_of_the_expected_type_first() {
     let items = labels(&in_proc("    MoveL $0"));
     assert_eq!(
@@ -126,33 +195,80 @@ fn documentation_is_resolved_lazily() {
     assert!(completion_documentation("nothing", CompletionKind::Procedure).is_none());
 }
 
+/// The label of the active parameter of the signature help at `$0`.
+fn active_label(src: &str) -> String {
+    let (task, unit, offset) = fixture(src);
+    let help = signature_help(&task, unit, offset).unwrap_or_else(|| panic!("no help"));
+    let active = help
+        .active_parameter
+        .unwrap_or_else(|| panic!("no active parameter in {}", help.label));
+    help.label[help.parameters[active].0.clone()].to_owned()
+}
+
 #[test]
-fn signature_help_marks_the_active_parameter() {
+fn signature_help_marks_the_active_parameter_and_shows_types() {
     let (task, unit, offset) = fixture(&in_proc("    MoveL pHome, $0"));
     let help = signature_help(&task, unit, offset).unwrap_or_else(|| panic!("no help"));
     assert!(
-        help.label
-            .starts_with("MoveL [\\Conc] ToPoint [\\ID] Speed [\\V] | [\\T] Zone"),
+        help.label.starts_with(
+            "MoveL [\\switch Conc], robtarget ToPoint, [\\identno ID], speeddata Speed, \
+             [\\num V] | [\\num T], zonedata Zone, [\\num Z], [\\stoppointdata Inpos], \
+             PERS tooldata Tool, [\\PERS wobjdata WObj]"
+        ),
         "{}",
         help.label
     );
-    let active = help.active_parameter.unwrap_or(99);
-    assert_eq!(&help.label[help.parameters[active].0.clone()], "Speed");
-    let (task, unit, offset) = fixture(&in_proc("    MoveL pHome, vSlow \\T:=$0"));
-    let help = signature_help(&task, unit, offset).unwrap_or_else(|| panic!("no help"));
     assert_eq!(
-        &help.label[help.parameters[help.active_parameter.unwrap_or(99)]
-            .0
-            .clone()],
-        "[\\T]"
+        active_label(&in_proc("    MoveL pHome, $0")),
+        "speeddata Speed"
+    );
+    assert_eq!(
+        active_label(&in_proc("    MoveL pHome, vSlow \\T:=$0")),
+        "[\\num T]"
+    );
+    // After `\`, the optional parameter that can come there, not the first
+    // one of the routine.
+    assert_eq!(
+        active_label(&in_proc("    MoveL pHome, vSlow, fine, tool0 \\$0")),
+        "[\\PERS wobjdata WObj]"
+    );
+    assert_eq!(
+        active_label(&in_proc("    MoveL pHome, vSlow, fine, tool0 \\Co$0")),
+        "[\\switch Corr]"
+    );
+    assert_eq!(active_label(&in_proc("    MoveL \\$0")), "[\\switch Conc]");
+    assert_eq!(
+        active_label(&in_proc("    MoveL \\Conc, pHome, vSlow \\V:=100, z10, $0")),
+        "PERS tooldata Tool"
     );
     let (task, unit, offset) = fixture(&in_proc("    count := Round(count \\Dec:=1$0"));
     let help = signature_help(&task, unit, offset).unwrap_or_else(|| panic!("no help"));
-    assert!(help.label.starts_with("Round("), "{}", help.label);
+    assert_eq!(help.label, "Round(num Val, [\\num Dec])");
     let (task, unit, offset) = fixture(&in_proc("    Grip $0"));
     let help = signature_help(&task, unit, offset).unwrap_or_else(|| panic!("no help"));
-    assert_eq!(help.label, "Grip force");
+    assert_eq!(help.label, "Grip num force");
     assert_eq!(help.active_parameter, Some(0));
+}
+
+#[test]
+fn after_backslash_the_parameters_that_can_come_next_first() {
+    let first = |src: &str| -> Vec<String> {
+        labels(&in_proc(src))
+            .into_iter()
+            .take(3)
+            .map(|(l, _)| l)
+            .collect()
+    };
+    assert_eq!(
+        first("    MoveL pHome, vSlow, fine, tool0 \\$0"),
+        ["WObj", "Corr", "TLoad"]
+    );
+    assert_eq!(first("    MoveL pHome, vSlow \\$0"), ["V", "T", "Z"]);
+    assert_eq!(first("    MoveL pHome \\$0"), ["ID", "V", "T"]);
+    assert_eq!(first("    MoveL \\$0"), ["Conc", "ID", "V"]);
+    // Those whose place is past come last.
+    let all = labels(&in_proc("    MoveL pHome, vSlow, fine, tool0 \\$0"));
+    assert_eq!(all.last().map(|(l, _)| l.as_str()), Some("Inpos"));
 }
 
 #[test]

@@ -97,6 +97,35 @@ fn constant_expressions_show_their_value() {
 }
 
 #[test]
+fn a_constants_value_shows_on_its_declaration_too() {
+    let src = |decl: &str| {
+        format!(
+            "MODULE m\n  CONST num rows := 3;\n  {decl}\n  PROC main()\n    CONST num twi$0ce := rows * 2;\n    TPWrite \"\"\\Num:=slots;\n  ENDPROC\nENDMODULE\n"
+        )
+    };
+    // The module constant, hovered at its declaration.
+    let h = hover_text(
+        &src("CONST num slots := rows * 4;")
+            .replace("twi$0ce", "twice")
+            .replace("num slots", "num sl$0ots"),
+    );
+    assert!(
+        h.contains("CONST num slots := rows * 4;") && h.contains("`= 12` (num)"),
+        "{h}"
+    );
+    // A routine's constant, at its declaration.
+    let h = hover_text(&src("CONST num slots := rows * 4;"));
+    assert!(h.contains("`= 6` (num)"), "{h}");
+    // Data that are not constant show no value at their declaration.
+    let h = hover_text(
+        &src("VAR num slots := rows * 4;")
+            .replace("twi$0ce", "twice")
+            .replace("num slots", "num sl$0ots"),
+    );
+    assert!(h.contains("VAR num slots") && !h.contains("`= 12`"), "{h}");
+}
+
+#[test]
 fn literal_initial_values_are_not_repeated() {
     let h = hover_text(
         "MODULE m\n  CONST num k := 2;\n  PROC main()\n    TPWrite \"\"\\Num:=k$0;\n  ENDPROC\nENDMODULE\n",

@@ -31,7 +31,7 @@ fn no_feature_panics_anywhere() {
             let _ = ide::document_highlights(&task, unit, offset);
             let _ = ide::prepare_rename(&task, unit, offset);
             let _ = ide::rename(&task, unit, offset, "fresh");
-            let _ = ide::inlay_hints(&task, unit, offset..len + 2);
+            let _ = ide::inlay_hints(&task, unit, offset..len + 2, ide::ParameterHints::All);
             let _ = ide::semantic_tokens(&task, unit, Some(offset..len + 2));
         }
         let u = &task.units[unit];

@@ -6,6 +6,8 @@
 --     lsp = true,                 -- start it for RAPID buffers
 --     highlight = true,           -- vim.treesitter.start() when the parser is built
 --     folds = false,              -- fold with the tree-sitter folds query
+--     indent_width = nil,         -- spaces per level; nil: [format] indent-width
+--                                 -- of the rapid.toml above the file, else 4
 --   })
 local M = {}
 
@@ -14,7 +16,10 @@ local defaults = {
   lsp = true,
   highlight = true,
   folds = false,
-  root_markers = { 'rapid.toml', 'EIO.cfg', 'eio.cfg', '.git' },
+  -- A project's root holds one of these; a controller backup has BACKINFO,
+  -- SYSPAR and RAPID (and no .git). A folder with a .pgf program is one too.
+  root_markers = { 'rapid.toml', 'EIO.cfg', 'eio.cfg', 'BACKINFO', 'SYSPAR', 'RAPID', '.git' },
+  indent_width = nil,
   grammar_dir = nil, -- default: tree-sitter-rapid/ of the repository holding this plugin
 }
 
@@ -29,6 +34,86 @@ end
 M.root = plugin_root()
 
 local lsp_group = vim.api.nvim_create_augroup('rapid_lsp', { clear = true })
+local indent_group = vim.api.nvim_create_augroup('rapid_indent', { clear = true })
+
+--- Is a folder entry named `name` a root marker (one of `root_markers`, or
+--- a `.pgf` program file in any case)?
+local function is_root_marker(name)
+  for _, m in ipairs(M.config.root_markers) do
+    if name == m then
+      return true
+    end
+  end
+  return name:lower():match('%.pgf$') ~= nil
+end
+
+--- The project root of a file (or buffer): the nearest folder above it that
+--- holds a root marker; nil when none does (the server then finds the
+--- file's task from its place).
+---@param source string|integer a path or a buffer number
+---@return string|nil
+function M.find_root(source)
+  return vim.fs.root(source, function(name)
+    return is_root_marker(name)
+  end)
+end
+
+--- Spaces per indentation level, as `rapid fmt` indents: `indent_width` of
+--- the setup, else `[format] indent-width` of the nearest rapid.toml above
+--- `path`, else 4.
+---@param path string
+---@return integer
+function M.indent_width(path)
+  if M.config.indent_width then
+    return M.config.indent_width
+  end
+  local found = vim.fs.find('rapid.toml', { upward = true, path = vim.fs.dirname(path), type = 'file' })[1]
+  local width
+  if found then
+    local section
+    for _, line in ipairs(vim.fn.readfile(found)) do
+      local name = line:match('^%s*%[%s*([%w%.%-_]+)%s*%]')
+      if name then
+        section = name
+      elseif section == 'format' then
+        local n = line:match('^%s*indent%-width%s*=%s*(%d+)')
+        if n then
+          width = tonumber(n)
+        end
+      end
+    end
+  end
+  if width and width >= 1 and width <= 16 then
+    return width
+  end
+  return 4
+end
+
+--- Indentation as the formatter writes it. Runs after Neovim's own
+--- indent/rapid.vim (which sets 2).
+local function set_indentation(bufnr)
+  local name = vim.api.nvim_buf_get_name(bufnr)
+  local width = M.indent_width(name ~= '' and name or (vim.uv.cwd() .. '/x.mod'))
+  vim.bo[bufnr].shiftwidth = width
+  vim.bo[bufnr].softtabstop = width
+  vim.bo[bufnr].expandtab = true
+end
+
+local function setup_indent()
+  vim.api.nvim_clear_autocmds({ group = indent_group })
+  vim.api.nvim_create_autocmd('FileType', {
+    group = indent_group,
+    pattern = 'rapid',
+    callback = function(args)
+      set_indentation(args.buf)
+    end,
+  })
+  for _, buf in ipairs(vim.api.nvim_list_bufs()) do
+    if vim.api.nvim_buf_is_loaded(buf) and vim.bo[buf].filetype == 'rapid' then
+      set_indentation(buf)
+    end
+  end
+end
 
 local function setup_lsp()
   vim.api.nvim_clear_autocmds({ group = lsp_group })
@@ -40,8 +125,15 @@ local function setup_lsp()
     return
   end
   if has_enable then
-    -- Neovim 0.11: lsp/rapid.lua on 'runtimepath' holds the defaults.
-    vim.lsp.config('rapid', { cmd = M.config.cmd, root_markers = M.config.root_markers })
+    -- Neovim 0.11: lsp/rapid.lua on 'runtimepath' holds the defaults. A
+    -- file outside any project starts the server without a root: it finds
+    -- the file's task (a backup's RAPID/TASKn, or its folder) itself.
+    vim.lsp.config('rapid', {
+      cmd = M.config.cmd,
+      root_dir = function(bufnr, on_dir)
+        on_dir(M.find_root(bufnr))
+      end,
+    })
     vim.lsp.enable('rapid')
     return
   end
@@ -50,11 +142,7 @@ local function setup_lsp()
     group = lsp_group,
     pattern = 'rapid',
     callback = function(args)
-      local name = vim.api.nvim_buf_get_name(args.buf)
-      local root = vim.fs.root(args.buf, M.config.root_markers)
-        or (name ~= '' and vim.fs.dirname(name))
-        or vim.uv.cwd()
-      vim.lsp.start({ name = 'rapid', cmd = M.config.cmd, root_dir = root }, { bufnr = args.buf })
+      vim.lsp.start({ name = 'rapid', cmd = M.config.cmd, root_dir = M.find_root(args.buf) }, { bufnr = args.buf })
     end,
   })
 end
@@ -168,6 +256,7 @@ function M.setup(opts)
   M.config = vim.tbl_deep_extend('force', vim.deepcopy(defaults), opts or {})
   require('rapid.filetype').register()
   vim.treesitter.language.register('rapid', 'rapid')
+  setup_indent()
   setup_lsp()
 end
 

@@ -12,8 +12,10 @@ M.default_config = {
   settings = {},
 }
 
+--- The project root of a file (see require('rapid').find_root); outside
+--- any project, the file's folder.
 function M.root_dir(fname)
-  return vim.fs.root(fname, { 'rapid.toml', 'EIO.cfg', 'eio.cfg', '.git' }) or vim.fs.dirname(fname)
+  return require('rapid').find_root(fname) or vim.fs.dirname(fname)
 end
 
 --- Adds `rapid` to lspconfig's server configurations (no-op when present).

@@ -1,29 +1,20 @@
-//! Publishing diagnostics: versions, codes and links, tags, configuration,
+//! Publishing diagnostics: versions, codes (no links), tags, configuration,
 //! incremental edits, debouncing, cross-file invalidation, pull diagnostics.
 
 use serde_json::{Value, json};
 
-use super::{TestClient, temp_dir};
+use super::{TestClient, codes, temp_dir};
 
 const MAIN: &str =
     "MODULE Main\n  PROC main()\n    VAR num unused;\n    helper;\n  ENDPROC\nENDMODULE\n";
 const LIB: &str = "MODULE Lib\n  PROC helper()\n  ENDPROC\nENDMODULE\n";
-
-fn codes(params: &Value) -> Vec<String> {
-    params["diagnostics"]
-        .as_array()
-        .expect("diagnostics")
-        .iter()
-        .map(|d| d["code"].as_str().unwrap_or("?").to_owned())
-        .collect()
-}
 
 fn no_delay() -> Value {
     json!({"diagnosticsDelay": 0})
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
-async fn opened_files_get_diagnostics_with_version_code_link_and_tags() {
+async fn opened_files_get_diagnostics_with_version_code_and_tags() {
     let dir = temp_dir("diag-open");
     let mut client = TestClient::new(dir.to_path_buf(), no_delay()).await;
     let text = "MODULE Main\n  PROC main()\n    VAR num unused;\n    x = 1;\n    nothere;\n  ENDPROC\n  PROC main()\n  ENDPROC\nENDMODULE\n";
@@ -170,7 +161,10 @@ async fn an_interface_change_republishes_the_other_open_files_of_the_task() {
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn pull_diagnostics_report_unchanged_results() {
     let dir = temp_dir("diag-pull");
-    let capabilities = json!({"textDocument": {"diagnostic": {"dynamicRegistration": false}}});
+    let capabilities = json!({
+        "textDocument": {"diagnostic": {"dynamicRegistration": false}},
+        "workspace": {"diagnostics": {"refreshSupport": true}},
+    });
     let mut client =
         TestClient::with_capabilities(dir.to_path_buf(), capabilities, no_delay()).await;
     let uri = client.open(&dir.join("Main.mod"), MAIN);

@@ -45,10 +45,15 @@ async fn hover_completion_and_signature_help() {
 
     // Completion at the start of a statement offers the task's routines.
     let at = pos(MAIN, "count := count", 0);
-    let items = client
+    let list = client
         .call("textDocument/completion", doc_pos(&main, at))
         .await;
-    let items = items.as_array().cloned().unwrap_or_default();
+    let items = list["items"].as_array().cloned().unwrap_or_default();
+    // The whole list would be every built-in and datum: cut to the best,
+    // and said to be incomplete so that the editor asks again as the user
+    // types.
+    assert_eq!(list["isIncomplete"], true, "{}", items.len());
+    assert_eq!(items.len(), super::super::requests::MOST_COMPLETIONS);
     let helper = items
         .iter()
         .find(|i| i["label"] == "helper")
@@ -98,25 +103,28 @@ async fn completion_detail_on_resolve() {
         TestClient::with_capabilities(dir.to_path_buf(), lazy, json!({"diagnosticsDelay": 0}))
             .await;
     let main = client.open(&dir.join("Main.mod"), MAIN);
-    let at = pos(MAIN, "count := count", 0);
-    let items = client
-        .call("textDocument/completion", doc_pos(&main, at.clone()))
-        .await;
-    let items = items.as_array().cloned().unwrap_or_default();
-    assert!(items.len() > 100, "{}", items.len());
-    assert!(items.iter().all(|i| i.get("detail").is_none()), "{items:?}");
     let mut eager = TestClient::new(dir.to_path_buf(), json!({"diagnosticsDelay": 0})).await;
     let main2 = eager.open(&dir.join("Main.mod"), MAIN);
-    let full = eager
-        .call("textDocument/completion", doc_pos(&main2, at))
-        .await;
-    eager.shutdown().await;
-    for label in ["helper", "MoveL", "count", "v100"] {
+    // Each label where the first two letters of it are typed.
+    for (label, at) in [
+        ("helper", pos(MAIN, "helper 100", 2)),
+        ("MoveL", pos(MAIN, "MoveL p10", 2)),
+        ("count", pos(MAIN, "count := count", 2)),
+        ("v100", pos(MAIN, "v100, fine", 2)),
+    ] {
+        let list = client
+            .call("textDocument/completion", doc_pos(&main, at.clone()))
+            .await;
+        let items = list["items"].as_array().cloned().unwrap_or_default();
+        assert!(items.iter().all(|i| i.get("detail").is_none()), "{items:?}");
         let item = items
             .iter()
             .find(|i| i["label"] == label)
             .unwrap_or_else(|| panic!("{label} offered: {items:?}"));
-        let expected = full
+        let full = eager
+            .call("textDocument/completion", doc_pos(&main2, at))
+            .await;
+        let expected = full["items"]
             .as_array()
             .into_iter()
             .flatten()
@@ -127,6 +135,49 @@ async fn completion_detail_on_resolve() {
         let resolved = client.call("completionItem/resolve", item.clone()).await;
         assert_eq!(resolved["detail"], expected, "{label}: {resolved}");
     }
+    eager.shutdown().await;
+    client.shutdown().await;
+}
+
+/// A long list is cut to the items that hold the letters typed; a short
+/// one is whole.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn long_completion_lists_are_cut_by_what_is_typed() {
+    let (mut client, main, _) = setup("feat-cut").await;
+    let list = client
+        .call(
+            "textDocument/completion",
+            doc_pos(&main, pos(MAIN, "MoveL p10", 3)),
+        )
+        .await;
+    let labels: Vec<&str> = list["items"]
+        .as_array()
+        .into_iter()
+        .flatten()
+        .filter_map(|i| i["label"].as_str())
+        .collect();
+    assert_eq!(list["isIncomplete"], true);
+    assert!(
+        labels.contains(&"MoveL") && labels.contains(&"MoveAbsJ"),
+        "{labels:?}"
+    );
+    assert!(
+        labels.iter().all(|l| {
+            let l = l.to_ascii_lowercase();
+            let (m, o) = (l.find('m'), l.rfind('v'));
+            m.is_some() && o.is_some() && m < o
+        }),
+        "{labels:?}"
+    );
+    // After `box.`: the record's components, all of them.
+    let list = client
+        .call(
+            "textDocument/completion",
+            doc_pos(&main, pos(MAIN, "box.weight", 4)),
+        )
+        .await;
+    assert_eq!(list["isIncomplete"], false, "{list}");
+    assert_eq!(list["items"][0]["label"], "weight", "{list}");
     client.shutdown().await;
 }
 

@@ -3,6 +3,7 @@
 
 mod diagnostics;
 mod features;
+mod reports;
 mod robustness;
 mod workspace;
 
@@ -306,11 +307,52 @@ pub fn pos(text: &str, needle: &str, shift: usize) -> Value {
     json!({"line": line, "character": character})
 }
 
+/// The codes of published diagnostics, in order.
+pub fn codes(params: &Value) -> Vec<String> {
+    params["diagnostics"]
+        .as_array()
+        .expect("diagnostics")
+        .iter()
+        .map(|d| d["code"].as_str().unwrap_or("?").to_owned())
+        .collect()
+}
+
+/// Diagnostics published for `uri` until they have the codes `want`.
+pub async fn until_codes(client: &mut TestClient, uri: &str, want: &[&str]) -> Value {
+    for _ in 0..20 {
+        let params = client.diagnostics_for(uri).await;
+        if codes(&params) == want {
+            return params;
+        }
+    }
+    panic!("diagnostics of {uri} never became {want:?}");
+}
+
 pub fn doc_pos(uri: &str, position: Value) -> Value {
     json!({"textDocument": {"uri": uri}, "position": position})
 }
 
 impl TestClient {
+    /// Publications until each file of `want` had the codes it wants (in
+    /// any order: the files' publications interleave); the last of each.
+    pub async fn until_all(&mut self, want: &[(&str, &[&str])]) -> Vec<Value> {
+        let mut last: Vec<Option<Value>> = vec![None; want.len()];
+        for _ in 0..100 {
+            if want
+                .iter()
+                .zip(&last)
+                .all(|((_, wanted), got)| got.as_ref().is_some_and(|p| codes(p) == *wanted))
+            {
+                return last.into_iter().flatten().collect();
+            }
+            let n = self.notification("textDocument/publishDiagnostics").await;
+            if let Some(i) = want.iter().position(|(u, _)| n["params"]["uri"] == *u) {
+                last[i] = Some(n["params"].clone());
+            }
+        }
+        panic!("diagnostics never became {want:?}: {last:?}");
+    }
+
     /// The diagnostics published for `uri` at `version` or later.
     pub async fn diagnostics_at(&mut self, uri: &str, version: i64) -> Value {
         loop {

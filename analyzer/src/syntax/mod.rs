@@ -13,6 +13,8 @@ use crate::diagnostic::Diagnostic;
 use crate::diagnostic::{Edit, Fix};
 use crate::rules::{equals_for_assignment, missing_token, syntax_error};
 
+mod typos;
+
 /// The RAPID language of the tree-sitter grammar.
 pub fn language() -> Language {
     tree_sitter_rapid::LANGUAGE.into()
@@ -40,18 +42,42 @@ pub fn parse(parser: &mut Parser, text: &str, old: Option<&Tree>) -> Option<Tree
 pub fn syntax_diagnostics(tree: &Tree, text: &str) -> Vec<Diagnostic> {
     let mut out = Vec::new();
     let root = tree.root_node();
+    if let Some(d) = no_module(root, text) {
+        out.push(d);
+        return out;
+    }
     if !root.has_error() {
         return out;
     }
     let language = tree.language();
+    // Strings left open first: the errors around them are theirs.
+    let mut errors = Vec::new();
+    crate::syntax_util::walk_pruned(root, &mut |node| {
+        if node.is_error() || node.is_missing() {
+            errors.push(node.byte_range());
+            false
+        } else {
+            node.has_error()
+        }
+    });
+    out.extend(typos::unterminated_strings(text, &errors));
+    let quotes: Vec<usize> = out.iter().map(|d| d.range.start).collect();
     // Only nodes with an error below them are entered.
     crate::syntax_util::walk_pruned(root, &mut |node| {
         if node.is_error() {
+            if quotes
+                .iter()
+                .any(|&q| node.start_byte() <= q && q < node.end_byte())
+            {
+                return false;
+            }
             let equals = equals_for_assignment(node, text);
-            if equals.is_empty() {
-                out.push(error_diagnostic(node, text, &language));
-            } else {
+            if !equals.is_empty() {
                 out.extend(equals);
+            } else if let Some(typo) = typos::explain(node, text, &language) {
+                out.push(typo);
+            } else {
+                out.push(error_diagnostic(node, text, &language));
             }
             false
         } else if node.is_missing() {
@@ -61,7 +87,65 @@ pub fn syntax_diagnostics(tree: &Tree, text: &str) -> Vec<Diagnostic> {
             node.has_error()
         }
     });
+    out.sort_by_key(|d| (d.range.start, d.range.end));
     out
+}
+
+/// A file without a module: empty, only comments, or declarations and
+/// routines written without `MODULE name` around them. A controller loads
+/// none of these; everything else wrong in such a file follows from it, so
+/// this is the only diagnostic.
+fn no_module(root: Node<'_>, text: &str) -> Option<Diagnostic> {
+    let mut cursor = root.walk();
+    if root.children(&mut cursor).any(|c| c.kind() == "module") {
+        return None;
+    }
+    // A `MODULE` the parser could not make a module of: its errors say why.
+    let mut keyword = false;
+    crate::syntax_util::walk_pruned(root, &mut |n| {
+        keyword |= n.kind() == "module";
+        !keyword
+    });
+    if keyword {
+        return None;
+    }
+    const MODULE: &str = "a module starts with `MODULE name` and ends with `ENDMODULE`";
+    if text.trim_start_matches('\u{feff}').trim().is_empty() {
+        return Some(Diagnostic::new(
+            &syntax_error::RULE,
+            0..0,
+            format!("the file is empty: {MODULE}"),
+        ));
+    }
+    let mut first = None;
+    crate::syntax_util::walk_pruned(root, &mut |n| {
+        if first.is_some() {
+            return false;
+        }
+        if n.kind() == "comment" {
+            return false;
+        }
+        if n.child_count() == 0 && n.end_byte() > n.start_byte() {
+            first = Some(n);
+            return false;
+        }
+        true
+    });
+    Some(match first {
+        None => Diagnostic::new(
+            &syntax_error::RULE,
+            0..0,
+            format!("the file holds no module: {MODULE}"),
+        ),
+        Some(token) => Diagnostic::new(
+            &syntax_error::RULE,
+            token.byte_range(),
+            format!(
+                "expected `MODULE name` before `{}`: declarations and routines go inside a module",
+                snippet(text, token.byte_range())
+            ),
+        ),
+    })
 }
 
 /// `=` written for `:=` in an error: either the error starts with `=` right
@@ -217,7 +301,12 @@ fn previous_leaf(node: Node<'_>) -> Option<Node<'_>> {
         }
         at = at.parent()?;
     };
-    let mut leaf = prev;
+    Some(last_leaf(prev))
+}
+
+/// The last token of `node` (the node itself when it has no children).
+fn last_leaf(node: Node<'_>) -> Node<'_> {
+    let mut leaf = node;
     while let Some(last) = leaf
         .child_count()
         .checked_sub(1)
@@ -225,7 +314,7 @@ fn previous_leaf(node: Node<'_>) -> Option<Node<'_>> {
     {
         leaf = last;
     }
-    Some(leaf)
+    leaf
 }
 
 /// At most 40 characters of `range`, on one line.

@@ -1,0 +1,86 @@
+//! The rest of each checked file's task: what `rapid check` loads besides
+//! the files it was given, so that a file's findings depend on its place on
+//! disk and not on the paths named or the folder the command runs from.
+//!
+//! A file's task is where it lives ([`task_key`] of its real path): in a
+//! controller backup, its `RAPID/TASKn` folder (with its `SYSMOD` and
+//! `PROGMOD`) and the backup's `SYSPAR` configuration; elsewhere, the
+//! modules, programs (`.pgf`) and configuration of its own folder. Checking
+//! `PROGMOD/Main.mod` from inside `RAPID/TASK1` thus sees the system
+//! modules of `SYSMOD` as a check of the whole backup does. The task's other
+//! files are analysed with it but not reported.
+
+use std::collections::BTreeSet;
+use std::path::{Path, PathBuf};
+
+use rapid_analyzer::task::{controller_of, task_key};
+
+use super::discover::{Discovery, Excluder, discover_to_depth};
+use super::unit_path;
+
+/// The folders that hold the task of a file (named by `path`, as the
+/// analyzer names it).
+#[derive(Debug, Default, PartialEq, Eq)]
+pub struct TaskFolders {
+    /// The task's folder when it is a backup's `RAPID/TASKn`: its modules
+    /// are in it and its subfolders (`SYSMOD`, `PROGMOD`).
+    pub deep: Option<PathBuf>,
+    /// Folders whose own files belong to the task: the file's folder
+    /// outside a backup; the backup's `SYSPAR` (configuration) inside one.
+    pub shallow: Vec<PathBuf>,
+}
+
+/// Where the rest of the task of the file `path` lives.
+pub fn task_folders(path: &str) -> TaskFolders {
+    let key = task_key(path);
+    if key.is_empty() {
+        return TaskFolders::default();
+    }
+    match controller_of(&key) {
+        Some(controller) => TaskFolders {
+            deep: Some(PathBuf::from(&key)),
+            shallow: Path::new(controller)
+                .parent()
+                .map(|root| root.join("SYSPAR"))
+                .filter(|s| s.is_dir())
+                .into_iter()
+                .collect(),
+        },
+        None => TaskFolders {
+            deep: None,
+            shallow: vec![PathBuf::from(key)],
+        },
+    }
+}
+
+/// The files of the tasks of `files` that walking `given` (the paths named
+/// on the command line) did not reach: modules, programs and configuration.
+pub fn task_context(files: &[PathBuf], given: &[PathBuf], excluded: Excluder) -> Discovery {
+    let walked: Vec<PathBuf> = given
+        .iter()
+        .filter(|p| p.is_dir())
+        .map(|p| PathBuf::from(unit_path(p)))
+        .collect();
+    let covered = |dir: &Path| walked.iter().any(|w| dir.starts_with(w));
+    let mut deep = BTreeSet::new();
+    let mut shallow = BTreeSet::new();
+    for file in files {
+        let folders = task_folders(&unit_path(file));
+        deep.extend(folders.deep.filter(|d| !covered(d)));
+        shallow.extend(folders.shallow.into_iter().filter(|d| !covered(d)));
+    }
+    let list = |set: BTreeSet<PathBuf>| set.into_iter().collect::<Vec<_>>();
+    let mut out = discover_folders(&list(deep), &list(shallow), excluded);
+    // What cannot be walked here is not the run's problem: it was not named.
+    out.errors.clear();
+    out.warnings.clear();
+    out
+}
+
+/// The files of the `deep` folders and their subfolders, and of the
+/// `shallow` folders themselves.
+pub fn discover_folders(deep: &[PathBuf], shallow: &[PathBuf], excluded: Excluder) -> Discovery {
+    let mut out = discover_to_depth(deep, excluded.clone(), None);
+    out.extend(discover_to_depth(shallow, excluded, Some(1)));
+    out
+}
