@@ -15,6 +15,8 @@ use rapid_analyzer::text::{Decoded, decode};
 #[path = "../../lsp/src/alloc.rs"]
 pub mod alloc;
 
+pub mod layout;
+
 /// The corpus folder, if there is one.
 pub fn corpus_dir() -> Option<PathBuf> {
     if let Some(dir) = std::env::var_os("RAPID_CORPUS") {
