@@ -7,7 +7,7 @@
 
 use std::path::{Path, PathBuf};
 
-use rapid_analyzer::format::{FormatOptions, Style, format, verify};
+use rapid_analyzer::format::{FormatError, FormatOptions, Style, format, verify};
 
 fn options(input: &str) -> FormatOptions {
     let mut options = FormatOptions::default();
@@ -250,4 +250,44 @@ fn blanks_between_tokens_do_not_matter() {
         }
     }
     assert!(tried >= 5, "too few fixtures in the styles that set blanks");
+}
+
+/// Generated code can nest deeper than anything the formatter lays out:
+/// 100,000 nested expressions, statements, calls, indexes or aggregates are
+/// left as they are with a message, in every style, without exhausting the
+/// stack (the test threads' stacks are the default 2 MiB).
+#[test]
+fn very_deep_nesting_is_left_alone_with_a_message() {
+    let n = 100_000;
+    let wrap = |open: &str, close: &str| format!("{}1{}", open.repeat(n), close.repeat(n));
+    let statement = |s: String| format!("MODULE M\nPROC p()\n{s}\nENDPROC\nENDMODULE\n");
+    let cases = [
+        (
+            "expressions",
+            statement(format!("x := {};", wrap("(", ")"))),
+        ),
+        ("calls", statement(format!("x := {};", wrap("Abs(", ")")))),
+        ("indexes", statement(format!("x := {};", wrap("a{", "}")))),
+        ("aggregates", statement(format!("x := {};", wrap("[", "]")))),
+        (
+            "statements",
+            statement(format!(
+                "{}x := 1;\n{}",
+                "IF a THEN\n".repeat(n),
+                "ENDIF\n".repeat(n)
+            )),
+        ),
+    ];
+    for (what, text) in cases {
+        for style in [Style::AsWritten, Style::Tight, Style::Spaced] {
+            let options = FormatOptions {
+                style,
+                ..FormatOptions::default()
+            };
+            match format(&text, &options) {
+                Err(e) => assert!(matches!(e, FormatError::Unsupported { .. }), "{what}: {e}"),
+                Ok(_) => panic!("{what}: formatted"),
+            }
+        }
+    }
 }

@@ -135,9 +135,11 @@ pub(super) struct Tok<'t> {
     pub proc_name: bool,
     /// A number literal (a `.` after it could read as its decimal point).
     pub number: bool,
-    /// The blanks before this token are kept as written in every style: it
-    /// is in a `PERS` declaration after the name, whose value the controller
-    /// writes in its own form whenever it saves the module.
+    /// In a `PERS` declaration after the name: the controller writes the
+    /// value in its own form (tight, elements of an array on lines of their
+    /// own at the declaration's column) whenever it saves the module, so
+    /// its continuation lines keep their place in every style, and the
+    /// `spaced` style keeps its blanks.
     pub keep_gap: bool,
 }
 

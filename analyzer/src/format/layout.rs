@@ -196,29 +196,26 @@ pub(super) fn layout(toks: &[Tok<'_>], text: &str, options: &FormatOptions) -> V
         }
         item[i] = items;
     }
-    let units = match options.indent_width {
-        Some(width) => vec![Unit::spaces(width); items + 1],
-        None if options.style != Style::AsWritten => vec![Unit::spaces(4); items + 1],
-        None => {
-            // the file's unit, then for each item whether its module body
-            // step and its cases are indented
-            let file = indent::detect(lines.iter().map(|&(_, d, s)| (d, s)));
-            let mut units = vec![file.clone(); items + 1];
-            let mut from = 0;
-            while from < lines.len() {
-                let it = lines[from].0;
-                let to = from + lines[from..].iter().take_while(|l| l.0 == it).count();
-                units[it] = indent::refine(&file, lines[from..to].iter().map(|&(_, d, s)| (d, s)));
-                from = to;
-            }
-            units
-        }
+    let file = match options.indent_width {
+        Some(width) => Unit::spaces(width),
+        None => indent::detect(lines.iter().map(|&(_, d, s)| (d, s))),
     };
+    let mut units = vec![file.clone(); items + 1];
+    if options.indent_width.is_none() {
+        // each item that consistently follows another unit keeps it
+        let mut from = 0;
+        while from < lines.len() {
+            let it = lines[from].0;
+            let to = from + lines[from..].iter().take_while(|l| l.0 == it).count();
+            units[it] = indent::refine(&file, lines[from..to].iter().map(|&(_, d, s)| (d, s)));
+            from = to;
+        }
+    }
     let mut l = Layout {
         toks,
         orig,
         style: options.style,
-        unit: units[0].clone(),
+        unit: file,
         units,
         item,
         indent: vec![None; n],
@@ -304,7 +301,7 @@ impl Layout<'_, '_> {
                     blank,
                     indent,
                 }
-            } else if !self.normalise() || tok.keep_gap {
+            } else if !self.normalise() || tok.keep_gap && self.style == Style::Spaced {
                 Gap::Keep(gap_range.clone())
             } else if spacing::spaced(&toks[i - 1], tok, self.style)
                 || !spacing::joinable(&toks[i - 1], tok)
@@ -385,6 +382,20 @@ impl Layout<'_, '_> {
         }
     }
 
+    /// The indentation that reaches `col`: in a text indented with tabs,
+    /// tabs and spaces for the rest; else `base` (an indentation) and
+    /// spaces after it, or spaces alone when `col` is left of `base`'s end.
+    fn render(&self, col: usize, base: &str) -> String {
+        let width = columns(base);
+        if self.unit.tabs {
+            self.unit.render(col)
+        } else if col >= width {
+            format!("{base}{}", " ".repeat(col - width))
+        } else {
+            " ".repeat(col)
+        }
+    }
+
     /// Can a continuation line of statement `s` be aligned under token `t`?
     /// The first argument of a call or the first element of a bracket
     /// (after the procedure name or an opening bracket), or the first token
@@ -423,12 +434,12 @@ impl Layout<'_, '_> {
         let aligned = || {
             self.anchors
                 .get(&self.orig.col[i])
-                .map(|&t| render(self.col[t], base))
+                .map(|&t| self.render(self.col[t], base))
         };
         if !self.normalise() || self.toks[i].keep_gap {
             return same_distance().or_else(aligned).unwrap_or_else(|| {
                 let distance = self.orig.col[i].saturating_sub(self.orig.col[s]);
-                render(self.col[s] + distance, base)
+                self.render(self.col[s] + distance, base)
             });
         }
         aligned().unwrap_or_else(|| {
@@ -534,23 +545,12 @@ impl Layout<'_, '_> {
             } else if let (Some(j), Some(old)) = (next, next_indent) {
                 let new_next = self.indent[j].as_deref().unwrap_or("");
                 let col = (columns(new_next) + columns(here)).saturating_sub(columns(old));
-                Some(render(col, new_next))
+                Some(self.render(col, new_next))
             } else {
                 None
             };
             *indent = new.unwrap_or_else(|| here.to_owned());
         }
-    }
-}
-
-/// The indentation that reaches `col`: `base` (an indentation) and spaces
-/// after it, or spaces alone when `col` is left of `base`'s end.
-fn render(col: usize, base: &str) -> String {
-    let width = columns(base);
-    if col >= width {
-        format!("{base}{}", " ".repeat(col - width))
-    } else {
-        " ".repeat(col)
     }
 }
 

@@ -41,8 +41,10 @@ pub(super) fn spaced(prev: &Tok<'_>, next: &Tok<'_>, style: Style) -> bool {
 }
 
 /// RobotStudio's form: `reg1:=reg1+1;`, `MoveL p10,v1000,z50,tool0\WObj:=wobj0;`,
-/// `StopMove\Quick;`. Keywords stand apart (`IF a=b THEN`, `NOT (a)`),
-/// as do two words and a procedure name from its first argument.
+/// `StopMove\Quick;`. Keywords stand apart (`IF a=b THEN`, `NOT (a)`)
+/// except after a comma, `:=` or an operator (`(num a,INOUT num b)`,
+/// `ok:=NOT done`), as do two words and a procedure name from its first
+/// argument.
 fn tight(prev: &Tok<'_>, next: &Tok<'_>) -> bool {
     use Class::*;
     if prev.proc_name || prev.class == PercentClose {
@@ -54,7 +56,9 @@ fn tight(prev: &Tok<'_>, next: &Tok<'_>) -> bool {
     };
     let keyword = |t: &Tok<'_>| t.class == Keyword && !boolean(t);
     let word = |t: &Tok<'_>| t.class == Word || boolean(t);
-    keyword(prev) || keyword(next) || (word(prev) || prev.class == Close) && word(next)
+    keyword(prev)
+        || keyword(next) && !matches!(prev.class, Comma | AssignWide | Operator)
+        || (word(prev) || prev.class == Close) && word(next)
 }
 
 /// Can two tokens touch without becoming one token (or a different one)?
