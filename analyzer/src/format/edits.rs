@@ -75,8 +75,9 @@ pub(super) fn hunks(old: &str, new: &str) -> Vec<Edit> {
     merge(line_changes(old, new))
 }
 
-/// The edits that turn `old` into `new` as whole changed lines ([`hunks`]),
-/// or one edit of the whole text when more than half of its lines change
+/// The edits that turn `old` into `new` as whole changed lines, one per
+/// run of them, or one edit of the whole text when more than half of its
+/// lines change
 /// (an editor applies one large edit faster than thousands of small ones).
 /// None when the texts are equal.
 pub fn line_edits(old: &str, new: &str) -> Vec<Edit> {

@@ -1,69 +1,42 @@
-//! The canonical layout of RAPID code, as `rapid fmt` and the language
-//! server's formatting requests produce it. Text in, text (or edits) out.
+//! The layout of RAPID code, as `rapid fmt` and the language server's
+//! formatting requests produce it. Text in, text (or edits) out. The layout
+//! is described, with examples, in `docs/formatting.md`.
 //!
 //! # The layout
 //!
-//! - Indentation by levels of [`FormatOptions::indent_width`] spaces: the
-//!   module body one level; routine bodies one more; the bodies of `IF`,
-//!   `FOR`, `WHILE` one more; `CASE` and `DEFAULT` one level inside `TEST`
-//!   and their statements one more; `ERROR`, `UNDO` and `BACKWARD` at the
-//!   level of their routine with their statements one deeper; record
-//!   components one level inside `RECORD`.
-//! - Keywords in upper case; names keep their spelling.
-//! - One statement per line: a line break before every statement,
-//!   declaration, clause and end keyword. Line breaks that the user wrote
-//!   inside a statement or declaration (a long aggregate over several lines,
-//!   arguments one per line) are kept, as continuation lines indented one
-//!   level deeper than the statement, or one level deeper than the line that
-//!   opened the innermost bracket still open; a closing bracket that starts a
-//!   line goes back to the level of the line that opened it.
-//! - Spaces around binary operators and `:=`, after commas, none inside
-//!   brackets; `Name:=value`, `\Opt:=value`, `\Switch` and `\Opt?var` in
-//!   arguments are tight, as RAPID writes them (`MoveL p10, v100, fine,
-//!   tool0\WObj:=wobj0;`), except that a `\` right after the procedure name or
-//!   after a comma is preceded by a space (`StopMove \Quick;`). In parameter
-//!   lists `\` follows a space and `|` is spaced (`(num a, \switch On |
-//!   switch Off)`).
-//! - Wrapping: only the arguments of a procedure call are wrapped. When such
-//!   a line is longer than [`FormatOptions::line_width`] characters (a
-//!   trailing comment not counted), it is broken after the commas that
-//!   separate the arguments, filling each line as far as it goes, with
-//!   continuation lines one level deeper; but only if every resulting line
-//!   then fits: a call whose first argument alone is too long (a `MoveL`
-//!   with a `robtarget` literal) stays on its line. Aggregates, declarations
-//!   and expressions are never wrapped: long `robtarget` literals stay on
-//!   the line the user put them on.
-//! - Blank lines: exactly one between two routines, and between two modules
-//!   of a file (a blank line is added after the first one's end keyword if
-//!   there is none, comments between them stay with the second); elsewhere
-//!   runs of blank lines collapse to one, and a single blank line is kept
-//!   where the user put one. Blank lines before the first token go.
-//! - Comments stay where they are: a trailing comment stays at the end of its
-//!   line with the blanks before it kept; a comment on its own line keeps its
-//!   line, indented like the statement after it or, when the next line
-//!   closes or splits a block (`ENDIF`, `ELSE`, `CASE`, `ERROR`...), like a
-//!   statement of the block body before it (so commented-out code at the end
-//!   of a body stays in the body). Trailing blanks in comments are removed.
-//! - The `%%%` header: `%%%` lines at column 0, each entry on its own line
-//!   indented by two spaces (`  VERSION:1`), as RobotStudio writes it.
-//! - Text after an `ENDMODULE` that is not RAPID (trailing junk, which the
-//!   grammar calls `trailing_text`) is kept byte for byte, with the blanks
-//!   and line breaks around it.
-//! - Line endings: the text's most frequent line ending is used for every
-//!   line break. A file that ends with a line break ends with exactly one; a
-//!   file without a final line break (as controllers write them) keeps
-//!   having none. Encoding is the caller's business: the text is returned as
-//!   text, with no character added but spaces and line breaks.
+//! - [`Style::AsWritten`] (the default) decides only where lines start:
+//!   structure lines by their depth, in the indentation unit the text
+//!   already follows (`indent.rs`: columns per level, module body and
+//!   `CASE` indented or not, tabs or spaces; per routine when one follows
+//!   another unit; 4 spaces when none fits), continuation lines at their
+//!   distance from their statement, own-line comments after the code line
+//!   they were indented like (`layout.rs`). A line already at its column
+//!   keeps its blanks; the content of lines, blank lines and line breaks
+//!   between statements are kept.
+//! - [`Style::Tight`] and [`Style::Spaced`] also set the blanks between
+//!   tokens (`spacing.rs`), keyword case, one statement per line, blank
+//!   lines and trailing blanks; continuation lines stay aligned under the
+//!   token they were aligned under, else go one level deeper. The blanks of
+//!   a `PERS` value (the controller's) are kept by `spaced`.
+//! - With a line width, long procedure calls on one line are wrapped
+//!   (`wrap.rs`).
+//! - The `%%%` header's entries are indented by two spaces; text after
+//!   `ENDMODULE` that is not RAPID is kept byte for byte; every line break
+//!   is written with the text's most frequent line ending; a gap holding
+//!   anything but spaces, tabs and line breaks (a U+FEFF) is kept as it is.
 //!
 //! # Safety
 //!
-//! A text with syntax errors is never formatted ([`FormatError::Syntax`]).
-//! The formatter only rewrites the blanks between tokens and the case of
-//! keywords (and drops trailing blanks of comments); two tokens are never
-//! made to touch if they could then read as one. [`verify`] checks a result
-//! independently, by parsing it again and comparing its tokens with the
-//! original's (`rapid fmt --verify` does it for every file; the corpus test
-//! makes the same check, with its own code, on every file of the corpus).
+//! A text with syntax errors is never formatted ([`FormatError::Syntax`]),
+//! nor one that nests deeper than 1500 levels
+//! ([`FormatError::Unsupported`]). The formatter only rewrites the blanks
+//! and line breaks between tokens, and in the styles that normalise the
+//! case of keywords and the trailing blanks of comments; two tokens are
+//! never made to touch if they could then read as one. [`verify`] checks a
+//! result independently, by parsing it again and comparing its tokens with
+//! the original's (`rapid fmt --verify` does it for every file; the corpus
+//! test makes the same check, with its own code, on every file of the
+//! corpus, in every style).
 
 mod collect;
 mod edits;
