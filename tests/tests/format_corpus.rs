@@ -19,6 +19,7 @@
 #![allow(clippy::print_stdout)]
 
 use std::collections::BTreeMap;
+use std::path::Path;
 use std::time::{Duration, Instant};
 
 use rapid_analyzer::format::{FormatOptions, Style, format};
@@ -188,13 +189,38 @@ fn stable(out: &str, options: &FormatOptions) -> Option<String> {
     }
 }
 
-#[test]
-fn formatting_the_corpus_is_safe_stable_and_keeps_backups_as_they_are() {
-    let Some(files) = rapid_tests::corpus_files() else {
-        println!("format corpus test skipped: no corpus (set RAPID_CORPUS)");
-        return;
-    };
-    let styles = [
+/// What the files of one share of the corpus gave.
+#[derive(Default)]
+struct Tally {
+    unchanged: usize,
+    formatted: usize,
+    skipped: usize,
+    time: Duration,
+    failures: Vec<String>,
+    /// By origin: files, files changed, changed lines.
+    figures: BTreeMap<Origin, (usize, usize, LineChanges)>,
+}
+
+impl Tally {
+    fn add(&mut self, other: Tally) {
+        self.unchanged += other.unchanged;
+        self.formatted += other.formatted;
+        self.skipped += other.skipped;
+        self.time += other.time;
+        self.failures.extend(other.failures);
+        for (origin, (files, changed, lines)) in other.figures {
+            let entry = self.figures.entry(origin).or_default();
+            entry.0 += files;
+            entry.1 += changed;
+            entry.2.add(&lines);
+        }
+    }
+}
+
+/// Every style (the first is the default) and narrow settings, where far
+/// more calls are wrapped.
+fn styles() -> [FormatOptions; 4] {
+    [
         FormatOptions::default(),
         FormatOptions {
             style: Style::Tight,
@@ -204,91 +230,133 @@ fn formatting_the_corpus_is_safe_stable_and_keeps_backups_as_they_are() {
             style: Style::Spaced,
             ..FormatOptions::default()
         },
-        // narrow settings wrap far more calls
         FormatOptions {
             style: Style::Spaced,
             indent_width: Some(2),
             line_width: Some(60),
         },
-    ];
-    let (mut unchanged, mut formatted, mut skipped) = (0, 0, 0);
-    let mut time = Duration::ZERO;
-    let mut failures = Vec::new();
-    let mut figures: BTreeMap<Origin, (usize, usize, LineChanges)> = BTreeMap::new();
-    for (path, bytes) in &files {
-        let Decoded::Text { text, .. } = decode(bytes) else {
-            skipped += 1;
-            continue;
-        };
-        let tree = parse(&text);
-        if tree.root_node().has_error() {
-            skipped += 1;
-            assert!(
-                format(&text, &FormatOptions::default()).is_err(),
+    ]
+}
+
+/// Formats one file in every style and checks each result.
+fn one_file(path: &Path, bytes: &[u8], tally: &mut Tally) {
+    let Decoded::Text { text, .. } = decode(bytes) else {
+        tally.skipped += 1;
+        return;
+    };
+    let tree = parse(&text);
+    if tree.root_node().has_error() {
+        tally.skipped += 1;
+        if format(&text, &FormatOptions::default()).is_ok() {
+            tally.failures.push(format!(
                 "{}: a file with errors was formatted",
                 path.display()
-            );
-            continue;
+            ));
         }
-        let original = Original {
-            text: &text,
-            bytes,
-            tokens: tokens(&tree, &text),
-            comments: comment_places(&tree, &text),
-            ink: ink(&text, false),
-            ink_folded: ink(&text, true),
-        };
-        for (n, options) in styles.iter().enumerate() {
-            let start = Instant::now();
-            let result = format(&text, options);
-            time += start.elapsed();
-            let out = match result {
-                Ok(out) => out,
-                Err(e) => {
-                    failures.push(format!("{} ({:?}): {e}", path.display(), options.style));
-                    continue;
-                }
-            };
-            // the narrow settings only for stability (they differ from the
-            // spaced style only where calls are wrapped)
-            let mut problems = if options.line_width.is_some() {
-                Vec::new()
-            } else {
-                check(&original, &out, options)
-            };
-            problems.extend(stable(&out, options));
-            for failure in problems {
-                failures.push(format!("{} ({options:?}): {failure}", path.display()));
-            }
-            if n > 0 {
+        return;
+    }
+    let original = Original {
+        text: &text,
+        bytes,
+        tokens: tokens(&tree, &text),
+        comments: comment_places(&tree, &text),
+        ink: ink(&text, false),
+        ink_folded: ink(&text, true),
+    };
+    for (n, options) in styles().iter().enumerate() {
+        let start = Instant::now();
+        let result = format(&text, options);
+        tally.time += start.elapsed();
+        let out = match result {
+            Ok(out) => out,
+            Err(e) => {
+                tally
+                    .failures
+                    .push(format!("{} ({options:?}): {e}", path.display()));
                 continue;
             }
-            if out == text {
-                unchanged += 1;
-            } else {
-                formatted += 1;
-            }
-            let origin = origin(path, &text);
-            let entry = figures.entry(origin).or_default();
-            entry.0 += 1;
-            entry.1 += usize::from(out != text);
-            let changes = line_changes(&text, &out, |line, old, new, _| {
-                if origin == Origin::Backup && new.is_none_or(|n| n.trim() != old.trim()) {
-                    failures.push(format!(
-                        "{}:{}: a backup's line changed other than in its indentation",
-                        path.display(),
-                        line + 1
-                    ));
-                }
-            });
-            entry.2.add(&changes);
+        };
+        // the narrow settings only for stability (they differ from the
+        // spaced style only where calls are wrapped)
+        let mut problems = if options.line_width.is_some() {
+            Vec::new()
+        } else {
+            check(&original, &out, options)
+        };
+        problems.extend(stable(&out, options));
+        for failure in problems {
+            tally
+                .failures
+                .push(format!("{} ({options:?}): {failure}", path.display()));
         }
+        if n > 0 {
+            continue;
+        }
+        if out == text {
+            tally.unchanged += 1;
+        } else {
+            tally.formatted += 1;
+        }
+        let origin = origin(path, &text);
+        let mut not_indentation = Vec::new();
+        let changes = line_changes(&text, &out, |line, old, new, _| {
+            if origin == Origin::Backup && new.is_none_or(|n| n.trim() != old.trim()) {
+                not_indentation.push(format!(
+                    "{}:{}: a backup's line changed other than in its indentation",
+                    path.display(),
+                    line + 1
+                ));
+            }
+        });
+        tally.failures.extend(not_indentation);
+        let entry = tally.figures.entry(origin).or_default();
+        entry.0 += 1;
+        entry.1 += usize::from(out != text);
+        entry.2.add(&changes);
     }
+}
+
+#[test]
+fn formatting_the_corpus_is_safe_stable_and_keeps_backups_as_they_are() {
+    let Some(files) = rapid_tests::corpus_files() else {
+        println!("format corpus test skipped: no corpus (set RAPID_CORPUS)");
+        return;
+    };
+    // the files in shares, one thread each
+    let threads = std::thread::available_parallelism().map_or(2, |n| n.get().min(4));
+    let mut tally = Tally::default();
+    std::thread::scope(|scope| {
+        let shares: Vec<_> = (0..threads)
+            .map(|k| {
+                let files = &files;
+                scope.spawn(move || {
+                    let mut tally = Tally::default();
+                    for (path, bytes) in files.iter().skip(k).step_by(threads) {
+                        one_file(path, bytes, &mut tally);
+                    }
+                    tally
+                })
+            })
+            .collect();
+        for share in shares {
+            tally.add(share.join().expect("a share of the corpus"));
+        }
+    });
+    tally.failures.sort();
+    let Tally {
+        unchanged,
+        formatted,
+        skipped,
+        time,
+        failures,
+        figures,
+    } = tally;
     println!(
         "format corpus: {} files: {formatted} changed by the default style, {unchanged} \
-         unchanged, {skipped} skipped (syntax errors or not text); {} formattings took {:.3} s",
+         unchanged, {skipped} skipped (syntax errors or not text); {} formattings took {:.3} s \
+         ({threads} threads)",
         files.len(),
-        styles.len(),
+        styles().len(),
         time.as_secs_f64()
     );
     for (origin, (files, changed, c)) in &figures {
