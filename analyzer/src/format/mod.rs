@@ -468,6 +468,25 @@ mod tests {
         }
     }
 
+    /// A long statement broken inside a call's arguments reaches its fixed
+    /// point in one run, whatever the line width (its continuation line
+    /// once moved from 4 to 8 columns on the second run).
+    #[test]
+    fn a_long_call_broken_inside_its_arguments_is_stable() {
+        let text = "MODULE M\nPROC p()\nMoveL Offs(pHome, 100, 200, 300), v1000, z50, tGripper\\WObj:=wobjTable, \\TLoad:=load0,\n    \\Corr;\nTPWrite \"a message\" + NumToStr(reg1, 0) + \" and more text that goes on\",\n\\Num:=reg2;\nENDPROC\nENDMODULE\n";
+        for style in [Style::AsWritten, Style::Tight, Style::Spaced] {
+            for line_width in [None, Some(40), Some(60), Some(120)] {
+                let options = FormatOptions {
+                    style,
+                    indent_width: None,
+                    line_width,
+                };
+                let once = format(text, &options).expect("formats");
+                assert_eq!(format(&once, &options), Ok(once.clone()), "{options:?}");
+            }
+        }
+    }
+
     #[test]
     fn verify_notices_a_changed_token() {
         let err = verify("MODULE M\nENDMODULE\n", "MODULE N\nENDMODULE\n");
