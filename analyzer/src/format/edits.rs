@@ -99,17 +99,19 @@ pub fn line_edits(old: &str, new: &str) -> Vec<Edit> {
     edits
 }
 
+/// `text` with `edits` (in order, not overlapping) applied.
+#[cfg(test)]
+pub(super) fn apply(text: &str, edits: &[Edit]) -> String {
+    let mut out = text.to_owned();
+    for e in edits.iter().rev() {
+        out.replace_range(e.range.clone(), &e.replacement);
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    fn apply(text: &str, edits: &[Edit]) -> String {
-        let mut out = text.to_owned();
-        for e in edits.iter().rev() {
-            out.replace_range(e.range.clone(), &e.replacement);
-        }
-        out
-    }
 
     #[test]
     fn changed_lines_become_one_edit_per_run() {

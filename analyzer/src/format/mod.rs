@@ -331,6 +331,7 @@ fn collect_leaves(root: Node<'_>, out: &mut Vec<(Range<usize>, bool, bool)>) {
 
 #[cfg(test)]
 mod tests {
+    use super::edits::apply;
     use super::*;
 
     fn fmt(text: &str) -> String {
@@ -343,14 +344,6 @@ mod tests {
             ..FormatOptions::default()
         };
         format(text, &options).expect("formats")
-    }
-
-    fn apply(text: &str, edits: &[Edit]) -> String {
-        let mut out = text.to_owned();
-        for e in edits.iter().rev() {
-            out.replace_range(e.range.clone(), &e.replacement);
-        }
-        out
     }
 
     #[test]

@@ -383,13 +383,7 @@ async fn formatting_sends_line_edits() {
         body.join("\n")
     );
     let uri = client.open(&dir.join("Big.mod"), &text);
-    let options = json!({"tabSize": 4, "insertSpaces": true});
-    let edits = client
-        .call(
-            "textDocument/formatting",
-            json!({"textDocument": {"uri": uri}, "options": options}),
-        )
-        .await;
+    let edits = format_document(&mut client, &uri).await;
     let list = edits.as_array().cloned().unwrap_or_default();
     assert_eq!(list.len(), 2, "{edits}");
     for e in &list {
@@ -411,12 +405,7 @@ async fn formatting_sends_line_edits() {
             .join("\n")
     );
     let uri = client.open(&dir.join("Flat.mod"), &flat);
-    let edits = client
-        .call(
-            "textDocument/formatting",
-            json!({"textDocument": {"uri": uri}, "options": options}),
-        )
-        .await;
+    let edits = format_document(&mut client, &uri).await;
     let list = edits.as_array().cloned().unwrap_or_default();
     assert_eq!(list.len(), 1, "{edits}");
     assert_eq!(
@@ -427,6 +416,17 @@ async fn formatting_sends_line_edits() {
     assert!(formatted.contains("\n    y7 := 7;\n"), "{formatted}");
     client.keep(dir);
     client.shutdown().await;
+}
+
+/// The edits of a whole-document formatting request.
+async fn format_document(client: &mut TestClient, uri: &str) -> Value {
+    let options = json!({"tabSize": 4, "insertSpaces": true});
+    client
+        .call(
+            "textDocument/formatting",
+            json!({"textDocument": {"uri": uri}, "options": options}),
+        )
+        .await
 }
 
 /// Applies LSP text edits to an ASCII text.
