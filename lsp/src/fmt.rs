@@ -1,4 +1,4 @@
-//! `rapid fmt`: rewrite RAPID files in the canonical layout.
+//! `rapid fmt`: lay RAPID files out as `docs/formatting.md` describes.
 //!
 //! Files are found as `rapid check` finds them (honouring `.gitignore` and
 //! the `exclude` globs of `rapid.toml`). Files keep their encoding (Latin-1
