@@ -10,8 +10,9 @@
 //! extra-paths = ["../controller"] # modules and EIO.cfg the program uses, not reported
 //!
 //! [format]
-//! indent-width = 4   # spaces per indentation level
-//! line-width = 120   # procedure-call arguments are wrapped past this width
+//! style = "spaced"   # blanks inside lines: "as-written" (default), "tight", "spaced"
+//! indent-width = 4   # spaces per level (default: each file's own indentation)
+//! line-width = 100   # procedure calls wrapped past this width (default: never)
 //!
 //! [lint]
 //! select = ["E", "W101"]      # rules by code, code prefix or name (default: all)
@@ -33,7 +34,7 @@ use std::path::{Path, PathBuf};
 use std::collections::BTreeMap;
 
 use rapid_analyzer::diagnostic::{Rule, Severity};
-use rapid_analyzer::format::FormatOptions;
+use rapid_analyzer::format::{FormatOptions, Style};
 use rapid_analyzer::rules::RULES;
 use serde::Deserialize;
 
@@ -211,29 +212,36 @@ impl LintConfig {
 }
 
 /// `[format]`.
-#[derive(Clone, Debug, PartialEq, Eq, Deserialize)]
+#[derive(Clone, Debug, Default, PartialEq, Eq, Deserialize)]
 #[serde(default, deny_unknown_fields, rename_all = "kebab-case")]
 pub struct FormatConfig {
-    /// Spaces per indentation level (1 to 16; default 4).
-    pub indent_width: usize,
-    /// The width past which procedure-call arguments are wrapped (at least
-    /// 20; default 120).
-    pub line_width: usize,
+    /// How the blanks inside lines are written.
+    pub style: StyleName,
+    /// Spaces per indentation level (1 to 16); unset: each file's own.
+    pub indent_width: Option<usize>,
+    /// The width past which procedure calls are wrapped (at least 20);
+    /// unset: lines are never broken.
+    pub line_width: Option<usize>,
 }
 
-impl Default for FormatConfig {
-    fn default() -> FormatConfig {
-        let options = FormatOptions::default();
-        FormatConfig {
-            indent_width: options.indent_width,
-            line_width: options.line_width,
-        }
-    }
+/// The values of `[format] style`.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum StyleName {
+    #[default]
+    AsWritten,
+    Tight,
+    Spaced,
 }
 
 impl FormatConfig {
     pub fn options(&self) -> FormatOptions {
         FormatOptions {
+            style: match self.style {
+                StyleName::AsWritten => Style::AsWritten,
+                StyleName::Tight => Style::Tight,
+                StyleName::Spaced => Style::Spaced,
+            },
             indent_width: self.indent_width,
             line_width: self.line_width,
         }
@@ -294,10 +302,14 @@ pub fn parse(text: &str, path: &Path) -> Result<Config, ConfigError> {
         line: key_line(text, key),
         message: format!("`{key}` {why}"),
     };
-    if !(1..=16).contains(&config.format.indent_width) {
+    if config
+        .format
+        .indent_width
+        .is_some_and(|w| !(1..=16).contains(&w))
+    {
         return Err(invalid("indent-width", "must be between 1 and 16"));
     }
-    if config.format.line_width < 20 {
+    if config.format.line_width.is_some_and(|w| w < 20) {
         return Err(invalid("line-width", "must be at least 20"));
     }
     for glob in &config.exclude {
@@ -423,14 +435,19 @@ mod tests {
 
     #[test]
     fn format_settings_are_read() {
-        let config = check("[format]\nindent-width = 2\nline-width = 80\n").expect("valid");
+        let config = check("[format]\nstyle = \"tight\"\nindent-width = 2\nline-width = 80\n")
+            .expect("valid");
         assert_eq!(
             config.format.options(),
             FormatOptions {
-                indent_width: 2,
-                line_width: 80
+                style: Style::Tight,
+                indent_width: Some(2),
+                line_width: Some(80)
             }
         );
+        let defaults = check("[format]\n").expect("valid").format.options();
+        assert_eq!(defaults, FormatOptions::default());
+        assert_eq!(defaults.style, Style::AsWritten);
     }
 
     #[test]
@@ -469,7 +486,7 @@ mod tests {
         let config: Config = serde_json::from_str(json).expect("valid");
         assert_eq!(config.exclude, ["a/**"]);
         assert_eq!(config.lint.ignore, ["W2"]);
-        assert_eq!(config.format.line_width, 100);
+        assert_eq!(config.format.line_width, Some(100));
         assert!(serde_json::from_str::<Config>(r#"{"lint": {"slect": []}}"#).is_err());
     }
 
@@ -526,5 +543,12 @@ mod tests {
         assert_eq!(err, "rapid.toml:3: `indent-width` must be between 1 and 16");
         let err = check("[format]\nline-width = \"wide\"\n").expect_err("invalid");
         assert!(err.starts_with("rapid.toml:2: invalid type"), "{err}");
+        let err = check("[format]\nline-width = 10\n").expect_err("invalid");
+        assert_eq!(err, "rapid.toml:2: `line-width` must be at least 20");
+        let err = check("[format]\n\nstyle = \"loose\"\n").expect_err("invalid");
+        assert!(
+            err.starts_with("rapid.toml:3: unknown variant `loose`, expected one of `as-written`, `tight`, `spaced`"),
+            "{err}"
+        );
     }
 }

@@ -8,7 +8,8 @@ mod support;
 use support::*;
 
 const UNFORMATTED: &str = "MODULE M\nVAR num a:=1;\nENDMODULE\n";
-const FORMATTED: &str = "MODULE M\n    VAR num a := 1;\nENDMODULE\n";
+/// The default layout: only the indentation changes.
+const FORMATTED: &str = "MODULE M\n    VAR num a:=1;\nENDMODULE\n";
 
 fn rapid(dir: &Path, args: &[&str], stdin: Option<&[u8]>) -> Output {
     let mut child = Command::new(env!("CARGO_BIN_EXE_rapid"))
@@ -43,7 +44,10 @@ fn rewrites_files_in_place() {
         std::fs::read_to_string(dir.join("b.mod")).expect("read"),
         FORMATTED
     );
-    assert_eq!(text(&out.stderr), "1 file reformatted, 1 left unchanged\n");
+    assert_eq!(
+        text(&out.stderr),
+        "1 file reformatted (1 line), 1 left unchanged\n"
+    );
 }
 
 #[test]
@@ -51,11 +55,25 @@ fn check_lists_files_that_would_change_and_exits_1() {
     let dir = scratch("check");
     std::fs::write(dir.join("a.mod"), UNFORMATTED).expect("written");
     std::fs::write(dir.join("b.mod"), FORMATTED).expect("written");
+    // two lines typed out of place in a module indented by 4
+    std::fs::write(
+        dir.join("c.mod"),
+        "MODULE C\n    PROC p()\n    x:=1;\n        y:=2;\n      z:=3;\n    ENDPROC\nENDMODULE\n",
+    )
+    .expect("written");
     let out = rapid(&dir, &["--check", "."], None);
     assert_eq!(out.status.code(), Some(1));
     assert_eq!(
         text(&out.stdout),
-        format!("{}\n", Path::new(".").join("a.mod").display())
+        format!(
+            "{}: 1 line would change\n{}: 2 lines would change\n",
+            Path::new(".").join("a.mod").display(),
+            Path::new(".").join("c.mod").display()
+        )
+    );
+    assert_eq!(
+        text(&out.stderr),
+        "2 files would be reformatted (3 lines), 1 left unchanged\n"
     );
     assert_eq!(
         std::fs::read_to_string(dir.join("a.mod")).expect("read"),
@@ -75,7 +93,7 @@ fn diff_prints_a_unified_diff_and_exits_1() {
     assert_eq!(out.status.code(), Some(1));
     assert_eq!(
         text(&out.stdout),
-        "--- a/a.mod\n+++ b/a.mod\n@@ -1,3 +1,3 @@\n MODULE M\n-VAR num a:=1;\n+    VAR num a := 1;\n ENDMODULE\n"
+        "--- a/a.mod\n+++ b/a.mod\n@@ -1,3 +1,3 @@\n MODULE M\n-VAR num a:=1;\n+    VAR num a:=1;\n ENDMODULE\n"
     );
     assert_eq!(
         std::fs::read_to_string(dir.join("a.mod")).expect("read"),
@@ -92,7 +110,7 @@ fn dash_reads_stdin_and_writes_stdout() {
 
     let out = rapid(&dir, &["--check", "-"], Some(UNFORMATTED.as_bytes()));
     assert_eq!(out.status.code(), Some(1));
-    assert_eq!(text(&out.stdout), "");
+    assert_eq!(text(&out.stdout), "<stdin>: 1 line would change\n");
 
     // broken input goes through unchanged, with the error on stderr
     let broken = b"MODULE M\nPROC p()\nx := ;\nENDPROC\nENDMODULE\n";
@@ -116,7 +134,7 @@ fn encoding_and_line_endings_are_kept() {
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     assert_eq!(
         std::fs::read(dir.join("a.mod")).expect("read"),
-        b"MODULE M\r\n    ! Gr\xF6\xDFe\r\n    VAR num a := 1;\r\nENDMODULE"
+        b"MODULE M\r\n    ! Gr\xF6\xDFe\r\n    VAR num a:=1;\r\nENDMODULE"
     );
 }
 
@@ -145,7 +163,11 @@ fn files_with_syntax_errors_are_left_untouched() {
 fn rapid_toml_sets_the_layout() {
     let dir = scratch("config");
     std::fs::create_dir_all(dir.join("src")).expect("folder");
-    std::fs::write(dir.join("rapid.toml"), "[format]\nindent-width = 2\n").expect("written");
+    std::fs::write(
+        dir.join("rapid.toml"),
+        "[format]\nstyle = \"spaced\"\nindent-width = 2\n",
+    )
+    .expect("written");
     std::fs::write(dir.join("src/a.mod"), UNFORMATTED).expect("written");
     let out = rapid(&dir, &["src"], None);
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
@@ -194,4 +216,32 @@ fn excluded_files_are_left_alone() {
         std::fs::read_to_string(dir.join("b.mod")).expect("read"),
         FORMATTED
     );
+}
+
+#[test]
+fn the_styles_that_normalise_set_the_blanks_inside_lines() {
+    let dir = scratch("styles");
+    let input = "MODULE M\nPROC p()\nreg1 := reg1+1; MoveL p10, v1000,z50,tool0\\WObj := wobj0;\nENDPROC\nENDMODULE\n";
+    for (style, line) in [
+        (
+            "tight",
+            "reg1:=reg1+1;\n        MoveL p10,v1000,z50,tool0\\WObj:=wobj0;",
+        ),
+        (
+            "spaced",
+            "reg1 := reg1 + 1;\n        MoveL p10, v1000, z50, tool0\\WObj:=wobj0;",
+        ),
+    ] {
+        std::fs::write(
+            dir.join("rapid.toml"),
+            format!("[format]\nstyle = \"{style}\"\n"),
+        )
+        .expect("written");
+        let out = rapid(&dir, &["-"], Some(input.as_bytes()));
+        assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+        assert_eq!(
+            text(&out.stdout),
+            format!("MODULE M\n    PROC p()\n        {line}\n    ENDPROC\nENDMODULE\n")
+        );
+    }
 }

@@ -16,6 +16,7 @@ use rapid_analyzer::text::{Decoded, decode};
 pub mod alloc;
 
 pub mod adversarial;
+pub mod layout;
 
 /// The corpus folder, if there is one.
 pub fn corpus_dir() -> Option<PathBuf> {

@@ -50,26 +50,81 @@ pub(super) enum Class {
     Verbatim,
 }
 
+/// How deep a line is, in steps of indentation of three kinds: RAPID code
+/// is written both ways for two of them.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub(super) struct Depth {
+    /// The module body: one level in, or at the module's column.
+    pub module: usize,
+    /// `CASE` and `DEFAULT` inside `TEST`: one level in, or at `TEST`'s
+    /// column.
+    pub cases: usize,
+    /// Every other step: routine and block bodies, record components.
+    pub blocks: usize,
+}
+
+impl Depth {
+    fn module(self) -> Depth {
+        Depth {
+            module: self.module + 1,
+            ..self
+        }
+    }
+
+    fn case(self) -> Depth {
+        Depth {
+            cases: self.cases + 1,
+            ..self
+        }
+    }
+
+    fn block(self) -> Depth {
+        Depth {
+            blocks: self.blocks + 1,
+            ..self
+        }
+    }
+
+    /// A module's own first and last line.
+    pub fn is_zero(self) -> bool {
+        self == Depth::default()
+    }
+
+    /// A line of the module body itself (a declaration or a routine's
+    /// first and last lines).
+    pub fn is_module_body(self) -> bool {
+        self == Depth::default().module()
+    }
+}
+
+/// Where the structure puts a token that starts a line.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Start {
+    /// At this depth.
+    Level(Depth),
+    /// At this column whatever the indentation (`%%%` header lines).
+    Column(usize),
+}
+
 /// One token and its layout facts.
 #[derive(Debug)]
 pub(super) struct Tok<'t> {
     /// Where the token is in the original text.
     pub range: Range<usize>,
-    /// What to write: the original text, keywords in upper case, comments
-    /// without trailing blanks.
+    /// What to write: the original text, or (in the styles that normalise)
+    /// keywords in upper case and comments without trailing blanks.
     pub text: Cow<'t, str>,
     pub class: Class,
-    /// The structure puts this token first on a line, at this column.
-    pub line_start: Option<usize>,
+    /// The structure puts this token first on a line.
+    pub start: Option<Start>,
     /// A line-starting token that closes or splits a block (`ENDIF`, `ELSE`,
-    /// `ERROR`, `CASE`...): a comment just before it belongs to the block
-    /// body and is indented one level deeper.
+    /// `ERROR`, `CASE`...).
     pub closer: bool,
     /// A line-starting token that opens a block (`PROC`, `IF`, `ELSE`,
-    /// `TEST`, `CASE`, `ERROR`...): the lines after it are one level deeper.
-    pub opens: bool,
+    /// `TEST`, `CASE`, `ERROR`...): the depth of the lines inside.
+    pub opens: Option<Depth>,
     /// First token of a routine (or module) that follows another one: the two
-    /// are separated by exactly one blank line.
+    /// are separated by a blank line in the styles that normalise.
     pub unit_start_after_unit: bool,
     /// The line may be broken before this token when it is too long (an
     /// argument of a procedure call after its comma).
@@ -78,6 +133,14 @@ pub(super) struct Tok<'t> {
     pub no_blank: bool,
     /// The name of a called procedure: spaced from its arguments.
     pub proc_name: bool,
+    /// A number literal (a `.` after it could read as its decimal point).
+    pub number: bool,
+    /// In a `PERS` declaration after the name: the controller writes the
+    /// value in its own form (tight, elements of an array on lines of their
+    /// own at the declaration's column) whenever it saves the module, so
+    /// its continuation lines keep their place in every style, and the
+    /// `spaced` style keeps its blanks.
+    pub keep_gap: bool,
 }
 
 /// Node kinds that start a line at their parent's level.
@@ -120,44 +183,61 @@ const ROUTINES: &[&str] = &[
 
 #[derive(Clone, Copy, Default)]
 struct Pending {
-    line_start: Option<usize>,
+    start: Option<Start>,
     closer: bool,
-    opens: bool,
+    opens: Option<Depth>,
     no_blank: bool,
     unit_start_after_unit: bool,
     wrap_point: bool,
 }
 
+/// What the walk knows of a node whose children it is visiting.
+struct Frame<'n> {
+    node: Node<'n>,
+    flags: u32,
+    /// The flags of the node's parent.
+    parent_flags: u32,
+    /// The depth of the node's own lines.
+    level: Depth,
+    index: usize,
+    previous_routine: bool,
+    after_comma: bool,
+    /// A `PERS` declaration: the gaps after its name are kept.
+    pers: bool,
+    /// Its name has been seen.
+    after_name: bool,
+    /// This frame has started keeping gaps (counted in `Collector::keeping`).
+    keeping: bool,
+}
+
 pub(super) struct Collector<'t> {
     text: &'t str,
-    indent_width: usize,
+    normalise: bool,
     pub toks: Vec<Tok<'t>>,
     pending: Pending,
-    depth: usize,
-    too_deep: bool,
+    /// Frames that keep the gaps of their tokens.
+    keeping: usize,
     /// The next leaf is the name of a called procedure.
     next_is_proc_name: bool,
 }
 
-/// How deep the tree may nest: the walk is recursive, and a formatter
-/// thread's stack must hold it (real code nests a few dozen levels; a
-/// generated expression of thousands of terms nests as deep as it is long).
+/// How deep the tree may nest before the text is left as it is: real code
+/// nests a few dozen levels; a generated expression of thousands of terms
+/// nests as deep as it is long, and thousands of nested blocks would be
+/// indented by megabytes of blanks. (The walk itself has no depth limit of
+/// its own: it keeps its frames on the heap.)
 pub(super) const MAX_DEPTH: usize = 1500;
 
 /// The tokens of a tree without errors; `None` if it nests deeper than
-/// [`MAX_DEPTH`].
-pub(super) fn collect<'t>(
-    root: Node<'_>,
-    text: &'t str,
-    indent_width: usize,
-) -> Option<Vec<Tok<'t>>> {
+/// [`MAX_DEPTH`]. `normalise`: keywords in upper case and comments without
+/// trailing blanks (otherwise tokens are written as they are).
+pub(super) fn collect<'t>(root: Node<'_>, text: &'t str, normalise: bool) -> Option<Vec<Tok<'t>>> {
     let mut c = Collector {
         text,
-        indent_width,
+        normalise,
         toks: Vec::new(),
         pending: Pending::default(),
-        depth: 0,
-        too_deep: false,
+        keeping: 0,
         next_is_proc_name: false,
     };
     let mut cursor = root.walk();
@@ -166,12 +246,14 @@ pub(super) fn collect<'t>(
         match child.kind() {
             "module" => {
                 c.pending = Pending {
-                    line_start: Some(0),
-                    opens: true,
+                    start: Some(Start::Level(Depth::default())),
+                    opens: Some(Depth::default().module()),
                     unit_start_after_unit: previous_module,
                     ..Pending::default()
                 };
-                c.node(child, root, 0);
+                if !c.walk(child, root) {
+                    return None;
+                }
                 previous_module = true;
             }
             "comment" => c.leaf(child, root),
@@ -183,105 +265,162 @@ pub(super) fn collect<'t>(
             }
         }
     }
-    (!c.too_deep).then_some(c.toks)
+    Some(c.toks)
 }
 
 impl<'t> Collector<'t> {
-    /// Emits the tokens of `node`, whose own line (if it starts one) is at
-    /// column `indent`.
-    fn node(&mut self, node: Node<'_>, parent: Node<'_>, indent: usize) {
+    /// Emits the tokens of `top` (a module, at level 0), visiting the tree
+    /// with a cursor and a stack of frames. False when it nests deeper than
+    /// [`MAX_DEPTH`].
+    fn walk<'n>(&mut self, top: Node<'n>, parent: Node<'n>) -> bool {
         let k = kinds();
-        let flags = k.flags(node);
-        if is_atomic_with(node, flags) {
-            self.leaf(node, parent);
-            return;
+        let top_flags = k.flags(top);
+        if is_atomic_with(top, top_flags) {
+            self.leaf(top, parent);
+            return true;
         }
-        if self.depth >= MAX_DEPTH {
-            self.too_deep = true;
-            return;
-        }
-        let mut cursor = node.walk();
+        let mut cursor = top.walk();
         if !cursor.goto_first_child() {
-            return;
+            return true;
         }
-        self.depth += 1;
-        let mut index = 0;
-        let mut previous_routine = false;
-        let mut after_comma = false;
-        let wrap_args = flags & ARGUMENT_LIST != 0 && k.flags(parent) & PROCEDURE_CALL != 0;
-        let is_call = flags & PROCEDURE_CALL != 0;
+        let mut stack = vec![Frame::new(
+            top,
+            top_flags,
+            k.flags(parent),
+            Depth::default(),
+        )];
         loop {
             let child = cursor.node();
             let child_flags = k.flags(child);
+            let Some(frame) = stack.last_mut() else {
+                return true;
+            };
+            let node = frame.node;
+            let mut descend = None;
             if child.is_extra() || child_flags & COMMENT != 0 {
                 self.leaf(child, node);
             } else {
-                let child_indent = self.place(&cursor, flags, child_flags, index, indent);
+                if frame.after_name && !frame.keeping {
+                    frame.keeping = true;
+                    self.keeping += 1;
+                }
+                let is_name = cursor.field_id().is_some() && cursor.field_id() == k.name_field;
+                frame.after_name |= frame.pers && is_name;
+                let (index, level, flags) = (frame.index, frame.level, frame.flags);
+                let wrap_args =
+                    flags & ARGUMENT_LIST != 0 && frame.parent_flags & PROCEDURE_CALL != 0;
                 if flags & MODULE != 0 && k.is_body(&cursor) {
                     let routine = child_flags & ROUTINE != 0;
-                    self.pending.unit_start_after_unit = routine && previous_routine;
-                    previous_routine = routine;
+                    let after_routine = routine && frame.previous_routine;
+                    frame.previous_routine = routine;
+                    self.pending.unit_start_after_unit = after_routine;
                 }
-                if wrap_args && after_comma {
+                if wrap_args && frame.after_comma {
                     self.pending.wrap_point = true;
                 }
-                after_comma = wrap_args && child_flags & COMMA != 0;
-                self.next_is_proc_name = is_call
-                    && cursor.field_id().is_some()
-                    && cursor.field_id() == k.name_field
-                    && child.child_count() == 0;
-                self.node(child, node, child_indent);
+                frame.after_comma = wrap_args && child_flags & COMMA != 0;
+                let child_level = self.place(&cursor, flags, child_flags, index, level);
+                self.next_is_proc_name =
+                    flags & PROCEDURE_CALL != 0 && is_name && child.child_count() == 0;
+                if is_atomic_with(child, child_flags) {
+                    self.leaf(child, node);
+                } else {
+                    descend = Some((child_level, flags));
+                }
             }
-            index += 1;
-            if !cursor.goto_next_sibling() {
-                break;
+            if let Some((level, flags)) = descend
+                && cursor.goto_first_child()
+            {
+                if stack.len() >= MAX_DEPTH {
+                    return false;
+                }
+                stack.push(Frame::new(child, child_flags, flags, level));
+                continue;
+            }
+            // the next sibling, or back up to the first ancestor that has one
+            loop {
+                let Some(frame) = stack.last_mut() else {
+                    return true;
+                };
+                frame.index += 1;
+                if cursor.goto_next_sibling() {
+                    break;
+                }
+                if let Some(done) = stack.pop()
+                    && done.keeping
+                {
+                    self.keeping -= 1;
+                }
+                if stack.is_empty() || !cursor.goto_parent() {
+                    return true;
+                }
             }
         }
-        self.depth -= 1;
     }
 
     /// Decides whether the child under `cursor` starts a line (setting the
-    /// pending line start), and returns the indentation of its own lines.
+    /// pending line start), and returns the depth of its own lines.
     fn place(
         &mut self,
         cursor: &TreeCursor<'_>,
         parent_flags: u32,
         flags: u32,
         index: usize,
-        indent: usize,
-    ) -> usize {
-        let iw = self.indent_width;
-        let opens = flags & BLOCK != 0;
-        let mut start = |column: usize, closer: bool, no_blank: bool| {
-            self.pending.line_start = Some(column);
+        level: Depth,
+    ) -> Depth {
+        let opens = |depth: Depth| {
+            (flags & BLOCK != 0).then(|| {
+                if flags & TEST != 0 {
+                    depth.case()
+                } else {
+                    depth.block()
+                }
+            })
+        };
+        let mut start = |start: Start, closer: bool, no_blank: bool, opens: Option<Depth>| {
+            self.pending.start = Some(start);
             self.pending.closer = closer;
             self.pending.no_blank = no_blank;
             self.pending.opens = opens;
         };
         if parent_flags & COMPACT_IF != 0 {
-            indent
+            level
         } else if parent_flags & MODULE_HEADER != 0 {
             if flags & HEADER_MARK != 0 {
-                start(0, false, index != 0);
+                start(Start::Column(0), false, index != 0, None);
             } else if flags & HEADER_ENTRY != 0 {
-                start(2, false, true);
+                start(Start::Column(2), false, true, None);
             }
-            indent
+            level
         } else if parent_flags & MODULE != 0 && flags & MODULE_KEYWORD != 0 {
-            start(indent, false, false);
-            self.pending.opens = true;
-            indent
+            start(Start::Level(level), false, false, Some(level.module()));
+            level
         } else if flags & (END_KEYWORD | SAME_LEVEL) != 0 {
-            start(indent, true, false);
-            indent
+            start(Start::Level(level), true, false, opens(level));
+            level
         } else if flags & DEEPER != 0 {
-            start(indent + iw, flags & RECORD_COMPONENT == 0, false);
-            indent + iw
+            let deeper = if flags & RECORD_COMPONENT != 0 {
+                level.block()
+            } else {
+                level.case()
+            };
+            start(
+                Start::Level(deeper),
+                flags & RECORD_COMPONENT == 0,
+                false,
+                opens(deeper),
+            );
+            deeper
         } else if flags & NAMED != 0 && kinds().is_body(cursor) {
-            start(indent + iw, false, false);
-            indent + iw
+            let deeper = if parent_flags & MODULE != 0 {
+                level.module()
+            } else {
+                level.block()
+            };
+            start(Start::Level(deeper), false, false, opens(deeper));
+            deeper
         } else {
-            indent
+            level
         }
     }
 
@@ -295,8 +434,10 @@ impl<'t> Collector<'t> {
         let raw = self.text.get(range.clone()).unwrap_or_default();
         let class = classify(node, parent);
         let text = match class {
-            Class::Keyword => Cow::Owned(raw.to_ascii_uppercase()),
-            Class::Comment => Cow::Borrowed(raw.trim_end_matches([' ', '\t', '\u{c}'])),
+            Class::Keyword if self.normalise => Cow::Owned(raw.to_ascii_uppercase()),
+            Class::Comment if self.normalise => {
+                Cow::Borrowed(raw.trim_end_matches([' ', '\t', '\u{c}']))
+            }
             _ => Cow::Borrowed(raw),
         };
         let pending = if class == Class::Comment {
@@ -308,14 +449,37 @@ impl<'t> Collector<'t> {
             range,
             text,
             class,
-            line_start: pending.line_start,
+            start: pending.start,
             closer: pending.closer,
             opens: pending.opens,
             unit_start_after_unit: pending.unit_start_after_unit,
             wrap_point: pending.wrap_point,
             no_blank: pending.no_blank,
             proc_name: proc_name && class != Class::Comment,
+            number: node.kind() == "number",
+            keep_gap: self.keeping > 0 && class != Class::Comment,
         });
+    }
+}
+
+impl<'n> Frame<'n> {
+    fn new(node: Node<'n>, flags: u32, parent_flags: u32, level: Depth) -> Frame<'n> {
+        let pers = flags & DATA_DECLARATION != 0
+            && node
+                .child_by_field_name("storage")
+                .is_some_and(|s| s.kind() == "pers");
+        Frame {
+            node,
+            flags,
+            parent_flags,
+            level,
+            index: 0,
+            previous_routine: false,
+            after_comma: false,
+            pers,
+            after_name: false,
+            keeping: false,
+        }
     }
 }
 
@@ -354,6 +518,8 @@ const BLOCK: u32 = 1 << 19;
 const ROUTINE: u32 = 1 << 20;
 const RECORD_COMPONENT: u32 = 1 << 21;
 const COMMA: u32 = 1 << 22;
+const DATA_DECLARATION: u32 = 1 << 23;
+const TEST: u32 = 1 << 24;
 
 struct Kinds {
     flags: Vec<u32>,
@@ -423,6 +589,8 @@ fn kind_flags(name: &str, named: bool) -> u32 {
         set(BLOCKS.contains(&name), BLOCK);
         set(ROUTINES.contains(&name), ROUTINE);
         set(name == "record_component", RECORD_COMPONENT);
+        set(name == "data_declaration", DATA_DECLARATION);
+        set(name == "test_statement", TEST);
     } else {
         let keyword = !name.is_empty() && name.bytes().all(|b| b.is_ascii_alphabetic());
         set(keyword, KEYWORD);

@@ -1,72 +1,49 @@
-//! The canonical layout of RAPID code, as `rapid fmt` and the language
-//! server's formatting requests produce it. Text in, text (or edits) out.
+//! The layout of RAPID code, as `rapid fmt` and the language server's
+//! formatting requests produce it. Text in, text (or edits) out. The layout
+//! is described, with examples, in `docs/formatting.md`.
 //!
 //! # The layout
 //!
-//! - Indentation by levels of [`FormatOptions::indent_width`] spaces: the
-//!   module body one level; routine bodies one more; the bodies of `IF`,
-//!   `FOR`, `WHILE` one more; `CASE` and `DEFAULT` one level inside `TEST`
-//!   and their statements one more; `ERROR`, `UNDO` and `BACKWARD` at the
-//!   level of their routine with their statements one deeper; record
-//!   components one level inside `RECORD`.
-//! - Keywords in upper case; names keep their spelling.
-//! - One statement per line: a line break before every statement,
-//!   declaration, clause and end keyword. Line breaks that the user wrote
-//!   inside a statement or declaration (a long aggregate over several lines,
-//!   arguments one per line) are kept, as continuation lines indented one
-//!   level deeper than the statement, or one level deeper than the line that
-//!   opened the innermost bracket still open; a closing bracket that starts a
-//!   line goes back to the level of the line that opened it.
-//! - Spaces around binary operators and `:=`, after commas, none inside
-//!   brackets; `Name:=value`, `\Opt:=value`, `\Switch` and `\Opt?var` in
-//!   arguments are tight, as RAPID writes them (`MoveL p10, v100, fine,
-//!   tool0\WObj:=wobj0;`), except that a `\` right after the procedure name or
-//!   after a comma is preceded by a space (`StopMove \Quick;`). In parameter
-//!   lists `\` follows a space and `|` is spaced (`(num a, \switch On |
-//!   switch Off)`).
-//! - Wrapping: only the arguments of a procedure call are wrapped. When such
-//!   a line is longer than [`FormatOptions::line_width`] characters (a
-//!   trailing comment not counted), it is broken after the commas that
-//!   separate the arguments, filling each line as far as it goes, with
-//!   continuation lines one level deeper; but only if every resulting line
-//!   then fits: a call whose first argument alone is too long (a `MoveL`
-//!   with a `robtarget` literal) stays on its line. Aggregates, declarations
-//!   and expressions are never wrapped: long `robtarget` literals stay on
-//!   the line the user put them on.
-//! - Blank lines: exactly one between two routines, and between two modules
-//!   of a file (a blank line is added after the first one's end keyword if
-//!   there is none, comments between them stay with the second); elsewhere
-//!   runs of blank lines collapse to one, and a single blank line is kept
-//!   where the user put one. Blank lines before the first token go.
-//! - Comments stay where they are: a trailing comment stays at the end of its
-//!   line with the blanks before it kept; a comment on its own line keeps its
-//!   line, indented like the statement after it or, when the next line
-//!   closes or splits a block (`ENDIF`, `ELSE`, `CASE`, `ERROR`...), like a
-//!   statement of the block body before it (so commented-out code at the end
-//!   of a body stays in the body). Trailing blanks in comments are removed.
-//! - The `%%%` header: `%%%` lines at column 0, each entry on its own line
-//!   indented by two spaces (`  VERSION:1`), as RobotStudio writes it.
-//! - Text after an `ENDMODULE` that is not RAPID (trailing junk, which the
-//!   grammar calls `trailing_text`) is kept byte for byte, with the blanks
-//!   and line breaks around it.
-//! - Line endings: the text's most frequent line ending is used for every
-//!   line break. A file that ends with a line break ends with exactly one; a
-//!   file without a final line break (as controllers write them) keeps
-//!   having none. Encoding is the caller's business: the text is returned as
-//!   text, with no character added but spaces and line breaks.
+//! - [`Style::AsWritten`] (the default) decides only where lines start:
+//!   structure lines by their depth, in the indentation unit the text
+//!   already follows (`indent.rs`: columns per level, module body and
+//!   `CASE` indented or not, tabs or spaces; per routine when one follows
+//!   another unit; 4 spaces when none fits), continuation lines at their
+//!   distance from their statement, own-line comments after the code line
+//!   they were indented like (`layout.rs`). A line already at its column
+//!   keeps its blanks; the content of lines, blank lines and line breaks
+//!   between statements are kept.
+//! - [`Style::Tight`] and [`Style::Spaced`] also set the blanks between
+//!   tokens (`spacing.rs`), keyword case, one statement per line, blank
+//!   lines and trailing blanks; continuation lines stay aligned under the
+//!   token they were aligned under, else go one level deeper. The blanks of
+//!   a `PERS` value (the controller's) are kept by `spaced`.
+//! - With a line width, long procedure calls on one line are wrapped
+//!   (`wrap.rs`).
+//! - The `%%%` header's entries are indented by two spaces; text after
+//!   `ENDMODULE` that is not RAPID is kept byte for byte; every line break
+//!   is written with the text's most frequent line ending; a gap holding
+//!   anything but spaces, tabs and line breaks (a U+FEFF) is kept as it is.
 //!
 //! # Safety
 //!
-//! A text with syntax errors is never formatted ([`FormatError::Syntax`]).
-//! The formatter only rewrites the blanks between tokens and the case of
-//! keywords (and drops trailing blanks of comments); two tokens are never
-//! made to touch if they could then read as one. [`verify`] checks a result
-//! independently, by parsing it again and comparing its tokens with the
-//! original's (`rapid fmt --verify` does it for every file; the corpus test
-//! makes the same check, with its own code, on every file of the corpus).
+//! A text with syntax errors is never formatted ([`FormatError::Syntax`]),
+//! nor one that nests deeper than 1500 levels
+//! ([`FormatError::Unsupported`]). The formatter only rewrites the blanks
+//! and line breaks between tokens, and in the styles that normalise the
+//! case of keywords and the trailing blanks of comments; two tokens are
+//! never made to touch if they could then read as one. [`verify`] checks a
+//! result independently, by parsing it again and comparing its tokens with
+//! the original's (`rapid fmt --verify` does it for every file; the corpus
+//! test makes the same check, with its own code, on every file of the
+//! corpus, in every style).
 
 mod collect;
+mod edits;
+mod indent;
 mod layout;
+mod spacing;
+mod wrap;
 
 use std::cell::RefCell;
 use std::ops::Range;
@@ -76,22 +53,61 @@ use tree_sitter::{Node, Parser, Tree};
 use crate::diagnostic::Edit;
 use crate::text::{LineEnding, LineIndex};
 
-/// The settings of the formatter (`[format]` in `rapid.toml`).
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct FormatOptions {
-    /// Spaces per indentation level.
-    pub indent_width: usize,
-    /// The longest line before procedure-call arguments are wrapped.
-    pub line_width: usize,
+pub use edits::line_edits;
+
+/// How the blanks inside a line are written.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Style {
+    /// As the author wrote them: only where lines start and how far they
+    /// are indented is the formatter's business (and blank lines, keyword
+    /// case and trailing blanks stay as written). A module saved by a
+    /// controller is already in this layout, up to lines typed with
+    /// another indentation.
+    #[default]
+    AsWritten,
+    /// RobotStudio's form: `reg1:=reg1+1;`,
+    /// `MoveL p10,v1000,z50,tool0\WObj:=wobj0;`.
+    Tight,
+    /// Spaces around `:=` and binary operators, after commas:
+    /// `reg1 := reg1 + 1;`, `MoveL p10, v1000, z50, tool0\WObj:=wobj0;`.
+    Spaced,
 }
 
-impl Default for FormatOptions {
-    fn default() -> FormatOptions {
-        FormatOptions {
-            indent_width: 4,
-            line_width: 120,
-        }
+impl Style {
+    /// The names of `[format] style` in `rapid.toml`.
+    pub const NAMES: [(&'static str, Style); 3] = [
+        ("as-written", Style::AsWritten),
+        ("tight", Style::Tight),
+        ("spaced", Style::Spaced),
+    ];
+
+    pub fn from_name(name: &str) -> Option<Style> {
+        Style::NAMES
+            .iter()
+            .find(|(n, _)| *n == name)
+            .map(|&(_, s)| s)
     }
+
+    pub fn name(self) -> &'static str {
+        Style::NAMES
+            .iter()
+            .find(|(_, s)| *s == self)
+            .map_or("as-written", |(n, _)| n)
+    }
+}
+
+/// The settings of the formatter (`[format]` in `rapid.toml`).
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct FormatOptions {
+    /// The blanks inside lines.
+    pub style: Style,
+    /// Spaces per indentation level; `None`: the text's own indentation
+    /// (the unit most of its lines follow: a tab or some spaces, with the
+    /// module body indented or not), 4 spaces when it has none.
+    pub indent_width: Option<usize>,
+    /// Procedure calls on lines longer than this are wrapped; `None`: lines
+    /// are never broken.
+    pub line_width: Option<usize>,
 }
 
 /// Why a text was left as it is.
@@ -137,40 +153,36 @@ impl std::error::Error for FormatError {}
 
 /// Formats a whole text.
 pub fn format(text: &str, options: &FormatOptions) -> Result<String, FormatError> {
-    Ok(run(text, options, false)?.output)
+    run(text, options)
 }
 
-/// Formats a whole text, as the smallest edits that turn `text` into
-/// [`format()`]'s result: non-overlapping, in order, on the original byte
-/// offsets.
+/// Formats a whole text, as edits of whole lines that turn `text` into
+/// [`format()`]'s result (see [`line_edits`]).
 pub fn format_edits(text: &str, options: &FormatOptions) -> Result<Vec<Edit>, FormatError> {
-    Ok(run(text, options, true)?.edits)
+    let formatted = run(text, options)?;
+    Ok(line_edits(text, &formatted))
 }
 
-/// The edits of [`format_edits`] for the lines of `range` (a byte range of
-/// `text`, extended to whole lines): those that end on these lines, so the
-/// line break and indentation before a line belong to it. The whole text
-/// must parse.
+/// The edits of [`format_edits`] that touch the lines of `range` (a byte
+/// range of `text`, extended to whole lines). The whole text must parse.
 pub fn format_range(
     text: &str,
     range: Range<usize>,
     options: &FormatOptions,
 ) -> Result<Vec<Edit>, FormatError> {
-    let edits = run(text, options, true)?.edits;
+    let formatted = run(text, options)?;
     let index = LineIndex::new(text);
     let first = index.line_col(range.start).line;
     let last = index.line_col(range.end.max(range.start)).line;
     let start = index.line_range(first, text).start;
-    let end = index.line_range(last, text).end;
-    Ok(edits
-        .into_iter()
-        .filter(|e| e.range.end >= start && e.range.end <= end)
-        .collect())
-}
-
-struct Formatted {
-    output: String,
-    edits: Vec<Edit>,
+    // the start of the line after the range
+    let end = index.line_range(last + 1, text).start;
+    Ok(edits::merge(
+        edits::line_changes(text, &formatted)
+            .into_iter()
+            .filter(|e| e.range.start < end && (e.range.end > start || e.range.start == start))
+            .collect(),
+    ))
 }
 
 thread_local! {
@@ -181,9 +193,10 @@ fn parse(text: &str) -> Option<Tree> {
     PARSER.with(|p| p.borrow_mut().parse(text, None))
 }
 
-fn run(text: &str, options: &FormatOptions, want_edits: bool) -> Result<Formatted, FormatError> {
+fn run(text: &str, options: &FormatOptions) -> Result<String, FormatError> {
     let options = FormatOptions {
-        indent_width: options.indent_width.min(16),
+        style: options.style,
+        indent_width: options.indent_width.map(|w| w.clamp(1, 16)),
         line_width: options.line_width,
     };
     let Some(tree) = parse(text) else {
@@ -193,62 +206,40 @@ fn run(text: &str, options: &FormatOptions, want_edits: bool) -> Result<Formatte
     if root.has_error() {
         return Err(syntax_error(&tree, text));
     }
-    let Some(toks) = collect::collect(root, text, options.indent_width) else {
+    let normalise = options.style != Style::AsWritten;
+    let Some(toks) = collect::collect(root, text, normalise) else {
         return Err(FormatError::Unsupported {
-            message: format!("the code nests deeper than {} levels", collect::MAX_DEPTH),
+            message: format!(
+                "the code nests deeper than {} levels, the file is left as it is",
+                collect::MAX_DEPTH
+            ),
         });
     };
     if toks.is_empty() {
-        return Ok(Formatted {
-            output: text.to_owned(),
-            edits: Vec::new(),
-        });
+        return Ok(text.to_owned());
     }
     let gaps = layout::layout(&toks, text, &options);
     let line_ending = LineEnding::detect(text).as_str();
 
     let mut output = String::with_capacity(text.len() + text.len() / 8);
-    // no capacity: no edits wanted (see `push_edit`)
-    let mut edits = if want_edits {
-        Vec::with_capacity(toks.len() / 2 + 1)
-    } else {
-        Vec::new()
-    };
-    let mut rendered = String::new();
     let mut prev_end = 0;
     for (tok, gap) in toks.iter().zip(&gaps) {
-        rendered.clear();
-        layout::render(gap, text, line_ending, &mut rendered);
-        let before = prev_end..tok.range.start;
-        push_edit(&mut edits, text, before, &rendered);
-        output.push_str(&rendered);
-        push_edit(&mut edits, text, tok.range.clone(), &tok.text);
+        layout::render_gap(gap, text, line_ending, &mut output);
         output.push_str(&tok.text);
         prev_end = tok.range.end;
     }
     let tail = text.get(prev_end..).unwrap_or_default();
-    let end = if toks
+    let verbatim_end = toks
         .last()
-        .is_some_and(|t| t.class == collect::Class::Verbatim)
-    {
-        tail
+        .is_some_and(|t| t.class == collect::Class::Verbatim);
+    if verbatim_end {
+        output.push_str(tail);
+    } else if !normalise {
+        layout::push_kept(tail, line_ending, &mut output);
     } else if tail.contains(['\n', '\r']) {
-        line_ending
-    } else {
-        ""
-    };
-    push_edit(&mut edits, text, prev_end..text.len(), end);
-    output.push_str(end);
-    Ok(Formatted { output, edits })
-}
-
-fn push_edit(edits: &mut Vec<Edit>, text: &str, range: Range<usize>, new: &str) {
-    if edits.capacity() > 0 && text.get(range.clone()) != Some(new) {
-        edits.push(Edit {
-            range,
-            replacement: new.to_owned(),
-        });
+        output.push_str(line_ending);
     }
+    Ok(output)
 }
 
 fn internal(message: impl Into<String>) -> FormatError {
@@ -340,49 +331,61 @@ fn collect_leaves(root: Node<'_>, out: &mut Vec<(Range<usize>, bool, bool)>) {
 
 #[cfg(test)]
 mod tests {
+    use super::edits::apply;
     use super::*;
 
     fn fmt(text: &str) -> String {
         format(text, &FormatOptions::default()).expect("formats")
     }
 
-    fn apply(text: &str, edits: &[Edit]) -> String {
-        let mut out = text.to_owned();
-        for e in edits.iter().rev() {
-            out.replace_range(e.range.clone(), &e.replacement);
-        }
-        out
+    fn spaced(text: &str) -> String {
+        let options = FormatOptions {
+            style: Style::Spaced,
+            ..FormatOptions::default()
+        };
+        format(text, &options).expect("formats")
     }
 
     #[test]
     fn line_endings_are_kept() {
         let crlf = "MODULE M\r\nVAR num a:=1;\r\nENDMODULE\r\n";
+        assert_eq!(fmt(crlf), "MODULE M\r\n    VAR num a:=1;\r\nENDMODULE\r\n");
         assert_eq!(
-            fmt(crlf),
+            spaced(crlf),
             "MODULE M\r\n    VAR num a := 1;\r\nENDMODULE\r\n"
         );
         let cr = "MODULE M\rVAR num a:=1;\rENDMODULE\r";
-        assert_eq!(fmt(cr), "MODULE M\r    VAR num a := 1;\rENDMODULE\r");
+        assert_eq!(spaced(cr), "MODULE M\r    VAR num a := 1;\rENDMODULE\r");
         let lf = "MODULE M\nPROC p() x:=1; ENDPROC ENDMODULE";
         assert_eq!(
-            fmt(lf),
+            spaced(lf),
             "MODULE M\n    PROC p()\n        x := 1;\n    ENDPROC\nENDMODULE"
         );
+        // as written: the lines are the author's
+        assert_eq!(fmt(lf), "MODULE M\n    PROC p() x:=1; ENDPROC ENDMODULE");
     }
 
     #[test]
     fn final_line_breaks_collapse_to_one_and_none_stays_none() {
-        assert_eq!(fmt("MODULE M\nENDMODULE\n\n\n"), "MODULE M\nENDMODULE\n");
-        assert_eq!(fmt("MODULE M\nENDMODULE   "), "MODULE M\nENDMODULE");
-        assert_eq!(fmt("\n\n  MODULE M\nENDMODULE"), "MODULE M\nENDMODULE");
+        assert_eq!(spaced("MODULE M\nENDMODULE\n\n\n"), "MODULE M\nENDMODULE\n");
+        assert_eq!(spaced("MODULE M\nENDMODULE   "), "MODULE M\nENDMODULE");
+        assert_eq!(spaced("\n\n  MODULE M\nENDMODULE"), "MODULE M\nENDMODULE");
+        // as written, blank lines and blanks at line ends stay
+        for text in ["MODULE M\nENDMODULE\n\n\n", "\n\nMODULE M\nENDMODULE   "] {
+            assert_eq!(fmt(text), text);
+        }
     }
 
     #[test]
     fn latin1_text_and_identifier_case_are_untouched() {
         let text = "MODULE m\n! Größe °C\nvar NUM MyVar;\nENDMODULE\n";
         assert_eq!(
-            fmt(text),
+            spaced(text),
             "MODULE m\n    ! Größe °C\n    VAR NUM MyVar;\nENDMODULE\n"
+        );
+        assert_eq!(
+            fmt(text),
+            "MODULE m\n    ! Größe °C\n    var NUM MyVar;\nENDMODULE\n"
         );
     }
 
@@ -402,20 +405,40 @@ mod tests {
     #[test]
     fn edits_rebuild_the_formatted_text() {
         let text = "MODULE M\nPROC p()\nif a then b:=1; endif\nENDPROC\nENDMODULE\n";
-        let edits = format_edits(text, &FormatOptions::default()).expect("formats");
-        assert_eq!(apply(text, &edits), fmt(text));
-        assert!(edits.windows(2).all(|w| w[0].range.end <= w[1].range.start));
+        for options in [
+            FormatOptions::default(),
+            FormatOptions {
+                style: Style::Tight,
+                ..FormatOptions::default()
+            },
+        ] {
+            let edits = format_edits(text, &options).expect("formats");
+            let formatted = format(text, &options).expect("formats");
+            assert_eq!(apply(text, &edits), formatted);
+            assert!(edits.windows(2).all(|w| w[0].range.end <= w[1].range.start));
+        }
     }
 
     #[test]
     fn range_formatting_touches_only_the_lines_asked_for() {
         let text = "MODULE M\nPROC p()\nx:=1;\ny:=2;\nENDPROC\nENDMODULE\n";
         let y = text.find("y:=").expect("y");
-        let edits = format_range(text, y..y + 1, &FormatOptions::default()).expect("formats");
-        assert_eq!(
-            apply(text, &edits),
-            "MODULE M\nPROC p()\nx:=1;\n        y := 2;\nENDPROC\nENDMODULE\n"
-        );
+        for (options, line) in [
+            (FormatOptions::default(), "        y:=2;\n"),
+            (
+                FormatOptions {
+                    style: Style::Spaced,
+                    ..FormatOptions::default()
+                },
+                "        y := 2;\n",
+            ),
+        ] {
+            let edits = format_range(text, y..y + 1, &options).expect("formats");
+            assert_eq!(
+                apply(text, &edits),
+                format!("MODULE M\nPROC p()\nx:=1;\n{line}ENDPROC\nENDMODULE\n")
+            );
+        }
     }
 
     #[test]
@@ -426,9 +449,34 @@ mod tests {
             "MODULE M\nPROC p()\n! only a comment\nENDPROC\nENDMODULE",
             "! file comment\n\n\nMODULE M\nENDMODULE\n! end\n",
         ] {
-            let once = fmt(text);
-            assert_eq!(fmt(&once), once, "{text:?}");
-            assert_eq!(verify(text, &once), Ok(()));
+            for style in [Style::AsWritten, Style::Tight, Style::Spaced] {
+                let options = FormatOptions {
+                    style,
+                    ..FormatOptions::default()
+                };
+                let once = format(text, &options).expect("formats");
+                assert_eq!(format(&once, &options), Ok(once.clone()), "{text:?}");
+                assert_eq!(verify(text, &once), Ok(()));
+            }
+        }
+    }
+
+    /// A long statement broken inside a call's arguments reaches its fixed
+    /// point in one run, whatever the line width (its continuation line
+    /// once moved from 4 to 8 columns on the second run).
+    #[test]
+    fn a_long_call_broken_inside_its_arguments_is_stable() {
+        let text = "MODULE M\nPROC p()\nMoveL Offs(pHome, 100, 200, 300), v1000, z50, tGripper\\WObj:=wobjTable, \\TLoad:=load0,\n    \\Corr;\nTPWrite \"a message\" + NumToStr(reg1, 0) + \" and more text that goes on\",\n\\Num:=reg2;\nENDPROC\nENDMODULE\n";
+        for style in [Style::AsWritten, Style::Tight, Style::Spaced] {
+            for line_width in [None, Some(40), Some(60), Some(120)] {
+                let options = FormatOptions {
+                    style,
+                    indent_width: None,
+                    line_width,
+                };
+                let once = format(text, &options).expect("formats");
+                assert_eq!(format(&once, &options), Ok(once.clone()), "{options:?}");
+            }
         }
     }
 
@@ -457,8 +505,25 @@ mod tests {
     #[test]
     fn tokens_never_merge() {
         // names stay apart even where the spacing rules would join them
-        let out = fmt("MODULE M\nPROC p()\nFoo a\\B;\nx:=a.b{1};\nENDPROC\nENDMODULE\n");
-        assert!(out.contains("Foo a\\B;"), "{out}");
-        assert!(out.contains("x := a.b{1};"), "{out}");
+        for style in [Style::Tight, Style::Spaced] {
+            let options = FormatOptions {
+                style,
+                ..FormatOptions::default()
+            };
+            let out = format(
+                "MODULE M\nPROC p()\nFoo a\\B;\nx:=a.b{1}-(-1);\nENDPROC\nENDMODULE\n",
+                &options,
+            )
+            .expect("formats");
+            assert!(out.contains("Foo a\\B;"), "{out}");
+            assert!(out.contains("a.b{1}"), "{out}");
+            assert_eq!(
+                verify(
+                    "MODULE M\nPROC p()\nFoo a\\B;\nx:=a.b{1}-(-1);\nENDPROC\nENDMODULE\n",
+                    &out
+                ),
+                Ok(())
+            );
+        }
     }
 }

@@ -1,3 +1,4 @@
+! fmt: style=spaced
 MODULE BlankLines
 
     VAR num a;

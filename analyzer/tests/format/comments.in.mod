@@ -1,3 +1,4 @@
+! fmt: style=spaced
 MODULE Comments
 ! own-line comment at module level
     VAR num a:=1;   ! trailing comment keeps its blanks   

@@ -1,5 +1,6 @@
+! fmt: style=spaced
 MODULE Comments
-    ! own-line comment at module level
+! own-line comment at module level
     VAR num a := 1;   ! trailing comment keeps its blanks
     PROC main()
         ! before a statement

@@ -1,3 +1,4 @@
+! fmt: style=spaced
 MODULE Continuation
     CONST robtarget pts{2} := [
         [[1, 2, 3], [1, 0, 0, 0], [0, 0, 0, 0], [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]],

@@ -1,3 +1,4 @@
+! fmt: style=spaced
 MODULE Handlers
     PROC main()
         x := 1;

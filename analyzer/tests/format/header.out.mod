@@ -1,3 +1,4 @@
+! fmt: style=spaced
 %%%
   VERSION:1
   LANGUAGE:ENGLISH

@@ -1,4 +1,4 @@
-! fmt: indent-width=2
+! fmt: style=spaced indent-width=2
 MODULE IndentWidth
 PROC main()
 WHILE TRUE DO

@@ -1,3 +1,4 @@
+! fmt: style=spaced
 Module KeywordCase (SysModule, NoStepIn)
     Local Var Num MyCounter := 0;
     Pers Bool bFlag := True;

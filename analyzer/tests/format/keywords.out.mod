@@ -1,3 +1,4 @@
+! fmt: style=spaced
 MODULE KeywordCase(SYSMODULE, NOSTEPIN)
     LOCAL VAR Num MyCounter := 0;
     PERS Bool bFlag := TRUE;

@@ -1,3 +1,4 @@
+! fmt: style=spaced indent-width=4
 %%%
 VERSION:1
       LANGUAGE:ENGLISH

@@ -1,3 +1,4 @@
+! fmt: style=spaced indent-width=4
 %%%
   VERSION:1
   LANGUAGE:ENGLISH
@@ -5,7 +6,7 @@
 MODULE Layout(SYSMODULE, NOVIEW)
     ! a module comment
     VAR num counter := 0;
-    PERS tooldata tGripper := [TRUE, [[0, 0, 100], [1, 0, 0, 0]], [1, [0, 0, 1], [1, 0, 0, 0], 0, 0, 0]];
+    PERS tooldata tGripper:=[TRUE,[[0,0,100],[1,0,0,0]],[1,[0,0,1],[1,0,0,0],0,0,0]];
     LOCAL CONST num limits{3} := [1, -2, 3 * 4];
     PROC main()
         VAR num i;

@@ -1,3 +1,4 @@
+! fmt: style=spaced
 MODULE Operators
     PROC main()
         x:=-1;

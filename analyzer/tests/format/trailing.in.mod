@@ -1,3 +1,4 @@
+! fmt: style=spaced
 MODULE Trailing
 VAR num a:=1;
 ENDMODULE

@@ -1,4 +1,4 @@
-! fmt: line-width=60
+! fmt: style=spaced line-width=60
 MODULE Wrapping
     CONST robtarget pLong:=[[100.5,200.25,300.125],[1,0,0,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
     PROC main()

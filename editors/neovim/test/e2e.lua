@@ -407,7 +407,7 @@ check('completion after \\ lists the optional arguments', function()
     table.concat(labels, ' '))
 end)
 
-check('indentation is the formatter\'s: 4 spaces, or [format] indent-width of rapid.toml', function()
+check('indentation is the formatter\'s: the file\'s own (4 spaces here), or [format] indent-width of rapid.toml', function()
   expect(vim.bo[buf].shiftwidth == 4 and vim.bo[buf].softtabstop == 4 and vim.bo[buf].expandtab,
     'shiftwidth %d, softtabstop %d, expandtab %s (Neovim\'s indent/rapid.vim sets 2)', vim.bo[buf].shiftwidth,
     vim.bo[buf].softtabstop, tostring(vim.bo[buf].expandtab))
@@ -427,6 +427,14 @@ check('indentation is the formatter\'s: 4 spaces, or [format] indent-width of ra
   local sw = vim.bo[other].shiftwidth
   close_buffer(other)
   expect(sw == 3, 'shiftwidth %d below a rapid.toml with indent-width = 3', sw)
+  -- without a configured width, a file indented by 2 keeps 2 (as rapid fmt does)
+  local plain = vim.fn.tempname()
+  write_tree(plain, { ['B.mod'] = { 'MODULE B', '  PROC p()', '    TPWrite "x";', '  ENDPROC', 'ENDMODULE' } })
+  vim.cmd('edit ' .. vim.fn.fnameescape(plain .. '/B.mod'))
+  local two = vim.api.nvim_get_current_buf()
+  local sw2, et = vim.bo[two].shiftwidth, vim.bo[two].expandtab
+  close_buffer(two)
+  expect(sw2 == 2 and et, 'shiftwidth %d, expandtab %s for a file indented by 2', sw2, tostring(et))
 end)
 
 check('a file that is not open has its diagnostics too (Cell.sys, as rapid check says)', function()

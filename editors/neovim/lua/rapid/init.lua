@@ -6,7 +6,7 @@
 --     lsp = true,                 -- start it for RAPID buffers
 --     highlight = true,           -- vim.treesitter.start() when the parser is built
 --     folds = false,              -- fold with the tree-sitter folds query
---     indent_width = nil,         -- spaces per level; nil: [format] indent-width
+--     indent_width = nil,         -- spaces per level; nil: [format] indent-width, else the file's own
 --                                 -- of the rapid.toml above the file, else 4
 --   })
 local M = {}
@@ -58,11 +58,12 @@ function M.find_root(source)
   end)
 end
 
---- Spaces per indentation level, as `rapid fmt` indents: `indent_width` of
---- the setup, else `[format] indent-width` of the nearest rapid.toml above
---- `path`, else 4.
+--- Spaces per indentation level when configured: `indent_width` of the
+--- setup, else `[format] indent-width` of the nearest rapid.toml above
+--- `path`; nil when neither sets it (then `rapid fmt` keeps each file's own
+--- indentation, see `own_indentation`).
 ---@param path string
----@return integer
+---@return integer?
 function M.indent_width(path)
   if M.config.indent_width then
     return M.config.indent_width
@@ -86,17 +87,53 @@ function M.indent_width(path)
   if width and width >= 1 and width <= 16 then
     return width
   end
-  return 4
+  return nil
 end
 
---- Indentation as the formatter writes it. Runs after Neovim's own
---- indent/rapid.vim (which sets 2).
+--- A buffer's own indentation, as `rapid fmt` finds it when no width is
+--- configured: tabs if indented lines start with one, else the most common
+--- step by which a line is indented deeper than the line before it (4 when
+--- the buffer has none). Looks at the first 2,000 lines.
+---@param bufnr integer
+---@return integer width, boolean tabs
+function M.own_indentation(bufnr)
+  local lines = vim.api.nvim_buf_get_lines(bufnr, 0, 2000, false)
+  local steps, previous = {}, 0
+  for _, line in ipairs(lines) do
+    if line:find('%S') then
+      local lead = line:match('^[ \t]*')
+      if lead:sub(1, 1) == '\t' then
+        return 4, true
+      end
+      local n = #lead
+      if n > previous then
+        steps[n - previous] = (steps[n - previous] or 0) + 1
+      end
+      previous = n
+    end
+  end
+  local best, count = 4, 0
+  for step, c in pairs(steps) do
+    if step <= 16 and (c > count or (c == count and step < best)) then
+      best, count = step, c
+    end
+  end
+  return best, false
+end
+
+--- Indentation as the formatter writes it: the configured width, else the
+--- buffer's own. Runs after Neovim's own indent/rapid.vim (which sets 2).
 local function set_indentation(bufnr)
   local name = vim.api.nvim_buf_get_name(bufnr)
   local width = M.indent_width(name ~= '' and name or (vim.uv.cwd() .. '/x.mod'))
+  local tabs = false
+  if not width then
+    width, tabs = M.own_indentation(bufnr)
+  end
   vim.bo[bufnr].shiftwidth = width
-  vim.bo[bufnr].softtabstop = width
-  vim.bo[bufnr].expandtab = true
+  vim.bo[bufnr].softtabstop = tabs and 0 or width
+  vim.bo[bufnr].tabstop = tabs and 4 or vim.bo[bufnr].tabstop
+  vim.bo[bufnr].expandtab = not tabs
 end
 
 local function setup_indent()

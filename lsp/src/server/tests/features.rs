@@ -418,6 +418,68 @@ async fn formatting_follows_rapid_toml() {
     client.shutdown().await;
 }
 
+/// Formatting answers with whole changed lines, one edit per run of them,
+/// not one edit per blank; and with one edit of the whole text when most
+/// of its lines change.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn formatting_sends_line_edits() {
+    let (mut client, _, _) = setup("feat-format-lines").await;
+    let dir = temp_dir("feat-format-lines-doc");
+    let mut body: Vec<String> = (0..300).map(|i| format!("    x{i} := {i};")).collect();
+    body[40] = "x40 := 40;".to_owned();
+    body[41] = "      x41 := 41;".to_owned();
+    body[200] = "   x200 := 200;".to_owned();
+    let text = format!(
+        "MODULE Big\n  PROC p()\n{}\n  ENDPROC\nENDMODULE\n",
+        body.join("\n")
+    );
+    let uri = client.open(&dir.join("Big.mod"), &text);
+    let edits = format_document(&mut client, &uri).await;
+    let list = edits.as_array().cloned().unwrap_or_default();
+    assert_eq!(list.len(), 2, "{edits}");
+    for e in &list {
+        assert_eq!(e["range"]["start"]["character"], 0, "{e}");
+        assert_eq!(e["range"]["end"]["character"], 0, "{e}");
+    }
+    assert_eq!(list[0]["range"]["start"]["line"], 42);
+    assert_eq!(list[0]["range"]["end"]["line"], 44);
+    assert_eq!(list[0]["newText"], "    x40 := 40;\n    x41 := 41;\n");
+    let formatted = apply(&text, &edits);
+    assert!(formatted.contains("\n    x200 := 200;\n"), "{formatted}");
+
+    // a text written flat changes on most lines: one edit
+    let flat = format!(
+        "MODULE Flat\nPROC p()\n{}\nENDPROC\nENDMODULE\n",
+        (0..300)
+            .map(|i| format!("y{i} := {i};"))
+            .collect::<Vec<_>>()
+            .join("\n")
+    );
+    let uri = client.open(&dir.join("Flat.mod"), &flat);
+    let edits = format_document(&mut client, &uri).await;
+    let list = edits.as_array().cloned().unwrap_or_default();
+    assert_eq!(list.len(), 1, "{edits}");
+    assert_eq!(
+        list[0]["range"]["start"],
+        json!({"line": 0, "character": 0})
+    );
+    let formatted = apply(&flat, &edits);
+    assert!(formatted.contains("\n    y7 := 7;\n"), "{formatted}");
+    client.keep(dir);
+    client.shutdown().await;
+}
+
+/// The edits of a whole-document formatting request.
+async fn format_document(client: &mut TestClient, uri: &str) -> Value {
+    let options = json!({"tabSize": 4, "insertSpaces": true});
+    client
+        .call(
+            "textDocument/formatting",
+            json!({"textDocument": {"uri": uri}, "options": options}),
+        )
+        .await
+}
+
 /// Applies LSP text edits to an ASCII text.
 fn apply(text: &str, edits: &Value) -> String {
     let lines: Vec<usize> = std::iter::once(0)
