@@ -566,7 +566,12 @@ impl Ctx {
     }
 
     /// Gives an untyped aggregate the record type of the other operand.
-    pub(crate) fn unify(&mut self, a: Value, b: Value, env: &dyn Env) -> Result<(Value, Value), EvalError> {
+    pub(crate) fn unify(
+        &mut self,
+        a: Value,
+        b: Value,
+        env: &dyn Env,
+    ) -> Result<(Value, Value), EvalError> {
         match (&a, &b) {
             (Value::Record { ty, .. }, Value::Array(_)) => {
                 let t = Type::named(ty.clone());

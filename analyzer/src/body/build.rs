@@ -88,6 +88,25 @@ fn is_routine(node: Node<'_>) -> bool {
     )
 }
 
+/// The expression of `unit` that spans exactly `range` (a data
+/// declaration's initial value or dimension, as [`crate::items`] records
+/// them), lowered.
+pub fn expression_at(unit: &Unit, range: std::ops::Range<usize>) -> Option<Expr> {
+    let tree = unit.tree_at(range.start);
+    let mut node = tree
+        .root_node()
+        .descendant_for_byte_range(range.start, range.end)?;
+    loop {
+        if node.byte_range() == range && crate::lower::is_expression(kind(node)) {
+            return Some(lower(node, &unit.text));
+        }
+        node = node.parent()?;
+        if node.start_byte() < range.start || node.end_byte() > range.end {
+            return None;
+        }
+    }
+}
+
 /// Parses `text` as one RAPID expression (for a debugger's evaluate, or a
 /// value given on a command line): the expression, or why it is not one.
 pub fn expression_of(text: &str) -> Result<Expr, String> {

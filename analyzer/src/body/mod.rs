@@ -34,7 +34,7 @@ use rapid_evaluator::Expr;
 
 use crate::items::{RoutineKind, Storage};
 
-pub use build::{expression_of, lower_routine, routine_bodies};
+pub use build::{expression_at, expression_of, lower_routine, routine_bodies};
 
 /// Deepest nesting of compound statements that is lowered; a statement
 /// deeper than this becomes [`StmtKind::Invalid`].

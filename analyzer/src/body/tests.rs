@@ -120,7 +120,11 @@ fn stmts(out: &mut String, stmts_: &[Stmt], depth: usize, line: &dyn Fn(usize) -
                 otherwise,
                 compact,
             } => {
-                let _ = writeln!(out, "{pad}{at}: IF{}", if *compact { " (compact)" } else { "" });
+                let _ = writeln!(
+                    out,
+                    "{pad}{at}: IF{}",
+                    if *compact { " (compact)" } else { "" }
+                );
                 for b in branches {
                     let _ = writeln!(out, "{pad}  when {}", expr(&b.cond));
                     stmts(out, &b.body, depth + 2, line);
