@@ -102,11 +102,15 @@ impl Machine {
             }
             Expr::Binary(op, a, b) => {
                 let a = self.eval(a)?;
-                let a = self.scalar(a)?;
                 let b = self.eval(b)?;
-                let b = self.scalar(b)?;
-                rapid_evaluator::apply_binary(*op, a, b, &TypesEnv(&self.prog.types))
-                    .or_else(|e| self.eval_error(e))
+                let (a, b) = match (a, b) {
+                    (a @ Value::Num(_), b @ Value::Num(_)) => (a, b),
+                    (a, b) => (self.scalar(a)?, self.scalar(b)?),
+                };
+                match rapid_evaluator::apply_binary(*op, a, b, &TypesEnv(&self.prog.types)) {
+                    Ok(v) => Ok(v),
+                    Err(e) => self.eval_error(e),
+                }
             }
             Expr::Call { routine, args } => match self.invoke(*routine, args)? {
                 Some(v) => Ok(v),
@@ -137,8 +141,16 @@ impl Machine {
     }
 
     /// A signal read as its value; any other value as it is.
+    #[inline(always)]
     pub(crate) fn scalar(&mut self, v: Value) -> R<Value> {
-        if matches!(v, Value::Record { .. }) && self.is_signal(&v) {
+        if let Value::Record { .. } = v {
+            return self.signal_or_record(v);
+        }
+        Ok(v)
+    }
+
+    fn signal_or_record(&mut self, v: Value) -> R<Value> {
+        if self.is_signal(&v) {
             return self.signal_value(&v).map(Value::Num);
         }
         Ok(v)

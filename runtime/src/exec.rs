@@ -228,6 +228,9 @@ impl Machine {
                         retries += 1;
                         let max = self.config.limits.max_retries;
                         if retries > max {
+                            if let Some(f) = self.frames.last_mut() {
+                                f.at = s.range.start;
+                            }
                             let mut g = Box::new(Fault {
                                 kind: named_error(
                                     &self.prog,

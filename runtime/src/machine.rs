@@ -471,7 +471,15 @@ impl Machine {
     }
 
     /// Makes a value fit its destination.
+    #[inline]
     pub(crate) fn convert(&mut self, v: Value, conv: &Conv) -> R<Value> {
+        match (conv, &v) {
+            (Conv::None, _) | (Conv::Num, Value::Num(_)) | (Conv::Dnum, Value::Dnum(_)) => Ok(v),
+            _ => self.convert_slow(v, conv),
+        }
+    }
+
+    fn convert_slow(&mut self, v: Value, conv: &Conv) -> R<Value> {
         match conv {
             Conv::None => Ok(v),
             Conv::Num => match v {

@@ -70,13 +70,9 @@ fn resolve(m: &Machine, name: &str, what: &'static str) -> R<PathBuf> {
     Ok(out)
 }
 
+/// `Open` fails with `ERR_FILEOPEN`, whatever the reason.
 fn file_error<T>(m: &Machine, name: &str, e: &std::io::Error) -> R<T> {
-    let code = if e.kind() == std::io::ErrorKind::NotFound {
-        "ERR_FILNOTFND"
-    } else {
-        "ERR_FILEOPEN"
-    };
-    fault(named_error(&m.prog, code, format!("{name}: {e}")))
+    fault(named_error(&m.prog, "ERR_FILEOPEN", format!("{name}: {e}")))
 }
 
 fn handle(m: &mut Machine, a: &Args<'_>) -> R<i32> {
@@ -345,9 +341,14 @@ fn fs_op(
     let name = m.string(a, param)?;
     let path = resolve(m, &name, a.name)?;
     op(&path).or_else(|e| {
+        let code = if e.kind() == std::io::ErrorKind::NotFound {
+            "ERR_FILNOTFND"
+        } else {
+            "ERR_FILEACC"
+        };
         fault(named_error(
             &m.prog,
-            "ERR_FILEACC",
+            code,
             format!("{}: {name}: {e}", a.name),
         ))
     })
