@@ -8,6 +8,7 @@ mod config;
 mod eval;
 mod fmt;
 mod rules_cmd;
+mod run;
 mod server;
 mod source;
 
@@ -40,6 +41,8 @@ enum Command {
     Rules(rules_cmd::RulesArgs),
     /// Run the language server (LSP over standard input and output).
     Lsp(server::LspArgs),
+    /// Run a task's entry routine on a simulated controller.
+    Run(run::RunArgs),
 }
 
 fn main() -> ExitCode {
@@ -62,5 +65,6 @@ fn main() -> ExitCode {
         Command::Builtins(args) => builtins::run(args),
         Command::Rules(args) => rules_cmd::run(args),
         Command::Lsp(args) => server::run(args),
+        Command::Run(args) => run::run(args),
     }
 }
