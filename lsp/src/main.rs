@@ -11,6 +11,7 @@ mod rules_cmd;
 mod run;
 mod server;
 mod source;
+mod test_cmd;
 
 use std::process::ExitCode;
 
@@ -43,6 +44,9 @@ enum Command {
     Lsp(server::LspArgs),
     /// Run a task's entry routine on a simulated controller.
     Run(run::RunArgs),
+    /// Run the test routines of RAPID programs (test_* procedures, modules
+    /// named *_test) on a simulated controller.
+    Test(test_cmd::TestArgs),
 }
 
 fn main() -> ExitCode {
@@ -66,5 +70,6 @@ fn main() -> ExitCode {
         Command::Rules(args) => rules_cmd::run(args),
         Command::Lsp(args) => server::run(args),
         Command::Run(args) => run::run(args),
+        Command::Test(args) => test_cmd::run(args),
     }
 }
