@@ -37,7 +37,10 @@ fn the_palletizer_example_runs_to_its_end() {
         repo(),
         &["run", "examples/palletizer", "--set", "diBoxPresent=1"],
     );
-    assert_eq!((code, out.as_str(), err.as_str()), (Some(0), "Pallet complete: 24\n", ""));
+    assert_eq!(
+        (code, out.as_str(), err.as_str()),
+        (Some(0), "Pallet complete: 24\n", "")
+    );
 }
 
 #[test]
@@ -70,7 +73,10 @@ fn an_unhandled_error_names_itself_its_line_and_the_routines() {
 #[test]
 fn usage_errors_exit_with_2() {
     let dir = scratch("run-usage");
-    write(&dir, &[("m.mod", "MODULE m\n  PROC main()\n  ENDPROC\nENDMODULE\n")]);
+    write(
+        &dir,
+        &[("m.mod", "MODULE m\n  PROC main()\n  ENDPROC\nENDMODULE\n")],
+    );
     let (code, _, err) = run(&dir, &["run", "m.mod", "--entry", "nothing"]);
     assert_eq!(code, Some(2));
     assert!(err.contains("no procedure nothing"), "{err}");
@@ -153,11 +159,17 @@ fn tests_pass_fail_and_err_with_their_lines() {
     assert_eq!(doc["tests"][0]["errno"]["name"], "ERR_ASSERT");
     assert_eq!(doc["tests"][0]["at"]["line"], 13);
     let (_, out, _) = run(&dir, &["test", "--format", "junit"]);
-    assert!(out.contains(r#"<testsuites name="rapid test" tests="4" failures="2" errors="1">"#), "{out}");
+    assert!(
+        out.contains(r#"<testsuites name="rapid test" tests="4" failures="2" errors="1">"#),
+        "{out}"
+    );
     assert!(out.contains(r#"<failure message="joined: expected &quot;abc&quot;, got &quot;ab&quot;" type="ERR_ASSERT">"#), "{out}");
     let (code, out, _) = run(&dir, &["test", "--filter", "adds"]);
     assert_eq!(code, Some(0));
-    assert!(out.ends_with("1 test: 1 passed, 0 failed, 0 errors\n"), "{out}");
+    assert!(
+        out.ends_with("1 test: 1 passed, 0 failed, 0 errors\n"),
+        "{out}"
+    );
 }
 
 #[test]
@@ -166,8 +178,14 @@ fn the_example_tests_pass_with_the_shipped_assertion_module() {
     assert_eq!(code, Some(0));
     let copy = std::fs::read_to_string(repo().join("examples/testing/RapidAssert.sys"))
         .expect("the example's copy");
-    assert_eq!(out, copy, "regenerate it: rapid test --assert-module > examples/testing/RapidAssert.sys");
+    assert_eq!(
+        out, copy,
+        "regenerate it: rapid test --assert-module > examples/testing/RapidAssert.sys"
+    );
     let (code, out, err) = run(repo(), &["test", "examples/testing"]);
     assert_eq!(code, Some(0), "{out}{err}");
-    assert!(out.ends_with("4 tests: 4 passed, 0 failed, 0 errors\n"), "{out}");
+    assert!(
+        out.ends_with("4 tests: 4 passed, 0 failed, 0 errors\n"),
+        "{out}"
+    );
 }

@@ -213,6 +213,16 @@ pub(crate) enum ArgValue {
 }
 
 impl Expr {
+    /// The reason a data reference cannot run (an unknown name in it).
+    pub(crate) fn failure(&self) -> Option<Failure> {
+        match self {
+            Expr::Fail(f) => Some(f.clone()),
+            Expr::Field(b, _) => b.failure(),
+            Expr::Index(b, ix) => b.failure().or_else(|| ix.iter().find_map(Expr::failure)),
+            _ => None,
+        }
+    }
+
     /// Is this a reference to stored data (which `VAR`/`INOUT` parameters
     /// and assignments need)?
     pub(crate) fn is_place(&self) -> bool {

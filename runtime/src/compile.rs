@@ -166,9 +166,9 @@ impl<'p> Compiler<'p> {
             S::Assign { target, value } => {
                 let target = self.expr(target, None);
                 if !target.is_place() {
-                    StmtKind::Fail(Failure::Invalid(
-                        "the left side of := is not a data reference".to_owned(),
-                    ))
+                    StmtKind::Fail(target.failure().unwrap_or_else(|| {
+                        Failure::Invalid("the left side of := is not a data reference".to_owned())
+                    }))
                 } else {
                     let ty = self.type_of(&target);
                     StmtKind::Assign {

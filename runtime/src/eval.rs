@@ -49,10 +49,7 @@ impl Machine {
                             None => invalid(format!("{ty} has no component {name}")),
                         }
                     }
-                    other => invalid(format!(
-                        "{} has no components",
-                        crate::machine::describe(&other)
-                    )),
+                    other => no_components(&other, name),
                 }
             }
             Expr::Index(base, ix) => {
@@ -223,12 +220,7 @@ impl Machine {
                             None => return invalid(format!("{ty} has no component {name}")),
                         }
                     }
-                    Some(other) => {
-                        return invalid(format!(
-                            "{} has no components",
-                            crate::machine::describe(other)
-                        ));
-                    }
+                    Some(other) => return no_components(other, name),
                     None => return invalid("a reference to data that no longer exists"),
                 };
                 p.path.push(Step::Field(i as u16));
@@ -318,5 +310,18 @@ impl Machine {
             Failure::Unsupported(name) => fault(FaultKind::Unsupported(name.clone())),
             Failure::Invalid(why) => invalid(why.clone()),
         }
+    }
+}
+
+/// The fault of `.name` on a value that is not a record.
+fn no_components<T>(v: &Value, name: &str) -> R<T> {
+    match v {
+        Value::Array(_) => invalid(format!(
+            ".{name}: the data is an array, or an aggregate of a type the task does not declare (is its RECORD in another task?)"
+        )),
+        other => invalid(format!(
+            ".{name}: {} has no components",
+            crate::machine::describe(other)
+        )),
     }
 }

@@ -13,7 +13,7 @@ use crate::types::TypesEnv;
 use crate::{Config, Debugger, Output};
 
 /// How a run ended.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Status {
     /// The entry routine returned.
     Finished,

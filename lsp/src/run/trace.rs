@@ -46,8 +46,7 @@ pub fn html(moves: &[Move], title: &str) -> String {
         .replace('&', "&amp;")
         .replace('<', "&lt;")
         .replace('>', "&gt;");
-    PAGE.replace("{{TITLE}}", &title)
-        .replace("{{DATA}}", &data)
+    PAGE.replace("{{TITLE}}", &title).replace("{{DATA}}", &data)
 }
 
 const PAGE: &str = r#"<!DOCTYPE html>

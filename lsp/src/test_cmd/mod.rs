@@ -184,8 +184,7 @@ pub fn discover(program: &Program, filter: Option<&str>) -> Vec<Test> {
         .filter(|r| {
             let name = r.name.to_ascii_lowercase();
             let in_test_module = r.module.to_ascii_lowercase().ends_with("_test");
-            name.starts_with("test_")
-                || (in_test_module && name != "setup" && name != "teardown")
+            name.starts_with("test_") || (in_test_module && name != "setup" && name != "teardown")
         })
         .filter(|r| {
             filter.as_ref().is_none_or(|f| {
