@@ -5,6 +5,7 @@ mod alloc;
 mod builtins;
 mod check;
 mod config;
+mod dap;
 mod eval;
 mod fmt;
 mod rules_cmd;
@@ -44,6 +45,9 @@ enum Command {
     Lsp(server::LspArgs),
     /// Run a task's entry routine on a simulated controller.
     Run(run::RunArgs),
+    /// Run the debug adapter (Debug Adapter Protocol over standard input
+    /// and output) for RAPID programs on a simulated controller.
+    Dap(dap::DapArgs),
     /// Run the test routines of RAPID programs (test_* procedures, modules
     /// named *_test) on a simulated controller.
     Test(test_cmd::TestArgs),
@@ -71,5 +75,6 @@ fn main() -> ExitCode {
         Command::Lsp(args) => server::run(args),
         Command::Run(args) => run::run(args),
         Command::Test(args) => test_cmd::run(args),
+        Command::Dap(args) => dap::run(args),
     }
 }
