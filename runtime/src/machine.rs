@@ -366,6 +366,18 @@ impl Machine {
             }
             sizes.push(n as usize);
         }
+        let total = sizes.iter().try_fold(1usize, |t, &n| t.checked_mul(n));
+        if total.is_none_or(|t| t > crate::types::MAX_ELEMENTS) {
+            return invalid(format!(
+                "an array of {} elements is larger than the simulation holds ({})",
+                sizes
+                    .iter()
+                    .map(ToString::to_string)
+                    .collect::<Vec<_>>()
+                    .join(" x "),
+                crate::types::MAX_ELEMENTS
+            ));
+        }
         let ty = rapid_evaluator::Type::array(ty_name, sizes);
         match init {
             Some(e) => {

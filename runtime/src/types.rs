@@ -161,7 +161,7 @@ impl Types {
     }
 }
 
-/// The largest array the interpreter makes (elements of one dimension).
+/// The largest array the interpreter makes (elements in all).
 pub(crate) const MAX_ELEMENTS: usize = 1 << 20;
 
 /// The starting value of a type the simulation keeps in its own form.

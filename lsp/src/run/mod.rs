@@ -94,6 +94,14 @@ fn run_inner(args: RunArgs) -> Result<ExitCode, String> {
             args.entry
         )
     })?;
+    if let Some(r) = program.routines().into_iter().find(|r| r.id == entry)
+        && (r.params > 0 || r.kind != rapid_analyzer::items::RoutineKind::Proc)
+    {
+        return Err(format!(
+            "{}: {} is not a procedure without parameters",
+            r.at, r.name
+        ));
+    }
     let sandbox = Sandbox::new(args.sandbox.clone())?;
     let config = Config {
         limits: args.limits.limits(),
