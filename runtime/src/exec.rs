@@ -664,6 +664,6 @@ fn clone_kind(k: &FaultKind) -> FaultKind {
         FaultKind::Invalid(s) => FaultKind::Invalid(s.clone()),
         FaultKind::Budget(s) => FaultKind::Budget(s.clone()),
         FaultKind::Deadlock(s) => FaultKind::Deadlock(s.clone()),
-        FaultKind::Halt(s) => FaultKind::Halt(s.clone()),
+        FaultKind::Halt(s) => FaultKind::Halt(*s),
     }
 }

@@ -7,6 +7,8 @@
 //! `cargo test -p rapid-tests --test corpus_run -- --nocapture` prints how
 //! the runs ended.
 
+#![allow(clippy::print_stdout)]
+
 use std::collections::{BTreeMap, HashSet};
 use std::sync::Arc;
 use std::time::{Duration, Instant};
@@ -136,7 +138,7 @@ fn every_corpus_module_runs_or_stops_with_a_reason_at_a_real_line() {
     }
     println!("not supported in simulation:");
     let mut top: Vec<_> = unsupported.into_iter().collect();
-    top.sort_by(|a, b| b.1.cmp(&a.1));
+    top.sort_by_key(|t| std::cmp::Reverse(t.1));
     for (k, n) in top.iter().take(25) {
         println!("{n:5}  {k}");
     }

@@ -208,9 +208,25 @@ mod tests {
         let s = parse_set("di1=1@2.5").expect("valid");
         assert_eq!((s.name.as_str(), s.value, s.at), ("di1", 1.0, 2.5));
         assert_eq!(parse_set("go_code=12").expect("valid").at, 0.0);
-        assert!(parse_set("di1").unwrap_err().contains("NAME=VALUE"));
-        assert!(parse_set("di1=x").unwrap_err().contains("not a number"));
-        assert!(parse_set("di1=1@-2").unwrap_err().contains("seconds"));
-        assert!(parse_set("a b=1").unwrap_err().contains("signal name"));
+        assert!(
+            parse_set("di1")
+                .expect_err("invalid")
+                .contains("NAME=VALUE")
+        );
+        assert!(
+            parse_set("di1=x")
+                .expect_err("invalid")
+                .contains("not a number")
+        );
+        assert!(
+            parse_set("di1=1@-2")
+                .expect_err("invalid")
+                .contains("seconds")
+        );
+        assert!(
+            parse_set("a b=1")
+                .expect_err("invalid")
+                .contains("signal name")
+        );
     }
 }
