@@ -282,13 +282,7 @@ impl<'p> Compiler<'p> {
 
     /// A routine of the program visible from this module.
     fn routine_named(&self, name: &str) -> Option<u32> {
-        let key = fold(name);
-        self.prog
-            .modules
-            .get(self.module)
-            .and_then(|m| m.routines.get(&key))
-            .or_else(|| self.prog.global_routines.get(&key))
-            .copied()
+        self.prog.routine_from(self.module, name)
     }
 
     fn call(&mut self, call: &body::Call) -> StmtKind {
@@ -339,19 +333,30 @@ impl<'p> Compiler<'p> {
         args.iter()
             .map(|a| {
                 let expected = params.and_then(|ps| {
-                    let i = match a.name {
-                        Some(n) => ps.iter().position(|p| p.name.eq_ignore_ascii_case(n))?,
-                        None => {
-                            let i = ps.iter().skip(next).position(|p| !p.optional)? + next;
-                            next = i + 1;
-                            i
-                        }
-                    };
-                    let p = ps.get(i)?;
+                    let named = ps.iter().map(|p| (p.name.as_str(), p.optional));
+                    let p = ps.get(bind_index(named, a.name, &mut next)?)?;
                     Some(Type::array(
                         p.ty.as_ref().map(|t| t.name.clone()).unwrap_or_default(),
                         vec![0; usize::from(p.dims)],
                     ))
+                });
+                Arg {
+                    name: a.name.map(Box::from),
+                    value: self.arg_value(&a.value, expected.as_ref()),
+                }
+            })
+            .collect()
+    }
+
+    /// Arguments typed by the catalogue's parameters, kept in source order
+    /// (the evaluator binds them itself).
+    fn typed_args(&self, sig: Option<&catalogue::Routine>, args: &[ArgIr<'_>]) -> Vec<Arg> {
+        let mut next = 0usize;
+        args.iter()
+            .map(|a| {
+                let expected = sig.and_then(|s| {
+                    let named = s.params.iter().map(|p| (p.name.as_str(), p.optional));
+                    catalogue_type(s.params.get(bind_index(named, a.name, &mut next)?)?)
                 });
                 Arg {
                     name: a.name.map(Box::from),
@@ -394,28 +399,15 @@ impl<'p> Compiler<'p> {
         let mut out: Vec<Option<ArgValue>> = sig.params.iter().map(|_| None).collect();
         let mut next = 0usize;
         for a in args {
-            let i = match a.name {
-                Some(n) => sig
-                    .params
-                    .iter()
-                    .position(|p| p.name.eq_ignore_ascii_case(n))
-                    .ok_or_else(|| format!("there is no parameter {n}"))?,
-                None => {
-                    let i = sig
-                        .params
-                        .iter()
-                        .skip(next)
-                        .position(|p| !p.optional)
-                        .map(|i| i + next)
-                        .ok_or("too many arguments")?;
-                    next = i + 1;
-                    i
-                }
-            };
-            let p = &sig.params[i];
-            let expected = (!p.switch && !p.ty.eq_ignore_ascii_case("anytype"))
-                .then(|| Type::array(p.ty.clone(), vec![0; usize::from(p.array)]));
-            out[i] = Some(self.arg_value(&a.value, expected.as_ref()));
+            let named = sig.params.iter().map(|p| (p.name.as_str(), p.optional));
+            let i = bind_index(named, a.name, &mut next).ok_or_else(|| match a.name {
+                Some(n) => format!("there is no parameter {n}"),
+                None => "too many arguments".to_owned(),
+            })?;
+            let expected = sig.params.get(i).and_then(catalogue_type);
+            if let Some(slot) = out.get_mut(i) {
+                *slot = Some(self.arg_value(&a.value, expected.as_ref()));
+            }
         }
         Ok(out)
     }
@@ -609,35 +601,9 @@ impl<'p> Compiler<'p> {
             };
         }
         if rapid_evaluator::is_function(name) {
-            // Typed by the catalogue's parameters, bound as the evaluator
-            // binds them.
-            let mut args_out = Vec::new();
-            let mut next = 0usize;
-            for a in &ir {
-                let expected = sig.and_then(|s| {
-                    let i = match a.name {
-                        Some(n) => s
-                            .params
-                            .iter()
-                            .position(|p| p.name.eq_ignore_ascii_case(n))?,
-                        None => {
-                            let i = s.params.iter().skip(next).position(|p| !p.optional)? + next;
-                            next = i + 1;
-                            i
-                        }
-                    };
-                    let p = s.params.get(i)?;
-                    (!p.switch && !p.ty.eq_ignore_ascii_case("anytype"))
-                        .then(|| Type::array(p.ty.clone(), vec![0; usize::from(p.array)]))
-                });
-                args_out.push(Arg {
-                    name: a.name.map(Box::from),
-                    value: self.arg_value(&a.value, expected.as_ref()),
-                });
-            }
             return Expr::Pure {
                 name: name.into(),
-                args: args_out,
+                args: self.typed_args(sig, &ir),
             };
         }
         match sig {
@@ -705,6 +671,35 @@ fn ir_args(args: &[body::CallArg]) -> Vec<ArgIr<'_>> {
             value: a.value.clone(),
         })
         .collect()
+}
+
+/// The parameter an argument binds to: a named one by its name, a
+/// positional one to the first required parameter after the last one
+/// bound by position (`next`, moved on). `params` gives each parameter's
+/// name and whether it is optional.
+pub(crate) fn bind_index<'a>(
+    mut params: impl Iterator<Item = (&'a str, bool)>,
+    name: Option<&str>,
+    next: &mut usize,
+) -> Option<usize> {
+    match name {
+        Some(n) => params.position(|(p, _)| p.eq_ignore_ascii_case(n)),
+        None => {
+            let (i, _) = params
+                .enumerate()
+                .skip(*next)
+                .find(|(_, (_, optional))| !optional)?;
+            *next = i + 1;
+            Some(i)
+        }
+    }
+}
+
+/// The type an argument of a built-in's parameter is computed as (none
+/// for switches and `anytype`).
+fn catalogue_type(p: &catalogue::Param) -> Option<Type> {
+    (!p.switch && !p.ty.eq_ignore_ascii_case("anytype"))
+        .then(|| Type::array(p.ty.clone(), vec![0; usize::from(p.array)]))
 }
 
 /// Is a parameter of this mode passed by reference?

@@ -30,14 +30,14 @@ impl Machine {
                     None => invalid("a global out of range"),
                 }
             }
-            Expr::Field(base, name) => {
-                if e.is_place() {
-                    let p = self.place(e)?;
-                    return self
-                        .get(&p)
-                        .cloned()
-                        .map_or_else(|| invalid("a reference to data that no longer exists"), Ok);
+            Expr::Field(..) | Expr::Index(..) if e.is_place() => {
+                let p = self.place(e)?;
+                match self.get(&p) {
+                    Some(v) => Ok(v.clone()),
+                    None => invalid("a reference to data that no longer exists"),
                 }
+            }
+            Expr::Field(base, name) => {
                 let v = self.eval(base)?;
                 match v {
                     Value::Record { ty, mut fields } => {
@@ -53,13 +53,6 @@ impl Machine {
                 }
             }
             Expr::Index(base, ix) => {
-                if e.is_place() {
-                    let p = self.place(e)?;
-                    return self
-                        .get(&p)
-                        .cloned()
-                        .map_or_else(|| invalid("a reference to data that no longer exists"), Ok);
-                }
                 let mut v = self.eval(base)?;
                 for i in ix {
                     let k = self.index(i)?;

@@ -14,7 +14,7 @@ use rapid_analyzer::items::RoutineKind;
 use rapid_evaluator::{BinOp, Value};
 
 use crate::code::{Arg, ArgValue, Routine, Stmt, StmtKind};
-use crate::compile::by_reference;
+use crate::compile::{bind_index, by_reference};
 use crate::machine::{
     Fault, FaultKind, Frame, Machine, Place, R, Slot, Status, fault, invalid, named_error,
 };
@@ -52,18 +52,12 @@ impl Machine {
         let mut slots: Vec<Option<Slot>> = r.params.iter().map(|_| None).collect();
         let mut next = 0usize;
         for a in args {
-            let i = match &a.name {
-                Some(n) => match r.params.iter().position(|p| p.name.eq_ignore_ascii_case(n)) {
-                    Some(i) => i,
-                    None => return invalid(format!("{} has no parameter {n}", r.name)),
-                },
-                None => match r.params.iter().skip(next).position(|p| !p.optional) {
-                    Some(i) => {
-                        next += i + 1;
-                        next - 1
-                    }
-                    None => return invalid(format!("too many arguments for {}", r.name)),
-                },
+            let named = r.params.iter().map(|p| (p.name.as_str(), p.optional));
+            let Some(i) = bind_index(named, a.name.as_deref(), &mut next) else {
+                return invalid(match &a.name {
+                    Some(n) => format!("{} has no parameter {n}", r.name),
+                    None => format!("too many arguments for {}", r.name),
+                });
             };
             let p = &r.params[i];
             let slot = match &a.value {
@@ -286,10 +280,12 @@ impl Machine {
         }
         let depth = self.frames.len();
         let errno = match &f.kind {
-            FaultKind::Rapid { errno, .. } => *errno,
-            _ => return Err(f),
+            FaultKind::Rapid { errno, .. } => Some(*errno),
+            FaultKind::Halt(_) => return Err(f),
+            _ => None,
         };
-        if !f.reported && self.debugger.is_some() && !self.will_recover(&f, errno) {
+        if !f.reported && self.debugger.is_some() && errno.is_none_or(|e| !self.will_recover(&f, e))
+        {
             f.reported = true;
             let outcome = self.outcome_of(Fault {
                 kind: clone_kind(&f.kind),
@@ -300,6 +296,9 @@ impl Machine {
             });
             self.debug_error(&outcome);
         }
+        let Some(errno) = errno else {
+            return Err(f);
+        };
         if f.fatal || f.skip_depth == Some(depth) {
             return Err(f);
         }
@@ -619,13 +618,8 @@ impl Machine {
             .frames
             .last()
             .and_then(|f| self.prog.routines.get(f.routine.id as usize))
-            .map(|info| info.module);
-        let key = name.to_ascii_lowercase();
-        let id = module
-            .and_then(|m| self.prog.modules.get(m))
-            .and_then(|m| m.routines.get(&key))
-            .or_else(|| self.prog.global_routines.get(&key))
-            .copied();
+            .map_or(usize::MAX, |info| info.module);
+        let id = self.prog.routine_from(module, name);
         let Some(id) = id else {
             return fault(named_error(
                 &self.prog,

@@ -70,6 +70,20 @@ impl SignalKind {
         }
     }
 
+    /// The kind a signal's name suggests, for signals no configuration
+    /// declares: `di...`, `do...`, `ai...`, `ao...`, `gi...`, `go...`; a
+    /// digital input otherwise.
+    pub fn guess(name: &str) -> SignalKind {
+        match name.get(..2).map(str::to_ascii_lowercase).as_deref() {
+            Some("do") => SignalKind::DigitalOut,
+            Some("ai") => SignalKind::AnalogIn,
+            Some("ao") => SignalKind::AnalogOut,
+            Some("gi") => SignalKind::GroupIn,
+            Some("go") => SignalKind::GroupOut,
+            _ => SignalKind::DigitalIn,
+        }
+    }
+
     /// The kind of a RAPID signal type name.
     pub fn from_type(name: &str) -> Option<SignalKind> {
         Some(match fold(name).as_str() {
@@ -362,6 +376,17 @@ impl Program {
                 .iter()
                 .find_map(|m| m.routines.get(&key).copied())
         })
+    }
+
+    /// The routine `name` as module `module` sees it: its own (`LOCAL`
+    /// ones too), else a global one.
+    pub(crate) fn routine_from(&self, module: usize, name: &str) -> Option<u32> {
+        let key = fold(name);
+        self.modules
+            .get(module)
+            .and_then(|m| m.routines.get(&key))
+            .or_else(|| self.global_routines.get(&key))
+            .copied()
     }
 
     /// Every routine of the program, in the task's order.

@@ -62,17 +62,6 @@ fn parse(text: &str) -> Expect {
     e
 }
 
-fn kind_of(name: &str) -> SignalKind {
-    match name.get(..2).map(str::to_ascii_lowercase).as_deref() {
-        Some("do") => SignalKind::DigitalOut,
-        Some("ai") => SignalKind::AnalogIn,
-        Some("ao") => SignalKind::AnalogOut,
-        Some("gi") => SignalKind::GroupIn,
-        Some("go") => SignalKind::GroupOut,
-        _ => SignalKind::DigitalIn,
-    }
-}
-
 /// The outcome in the fixtures' words.
 fn brief(o: &Outcome) -> Option<String> {
     let line = o.at.as_ref().map_or(0, |l| l.line);
@@ -108,7 +97,7 @@ fn run(path: &std::path::Path) -> (Vec<String>, Option<String>, Outcome) {
     let signals: Vec<(String, SignalKind)> = e
         .signals
         .iter()
-        .map(|s| (s.name.clone(), kind_of(&s.name)))
+        .map(|s| (s.name.clone(), SignalKind::guess(&s.name)))
         .collect();
     let program = Arc::new(Program::new(task, &signals));
     let lines = Arc::new(Mutex::new(Vec::new()));

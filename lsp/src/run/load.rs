@@ -178,21 +178,10 @@ pub fn program(task: Arc<Task>, sets: &[SignalChange]) -> Arc<Program> {
     let mut extra: Vec<(String, SignalKind)> = Vec::new();
     for s in sets {
         if !configured(&s.name) && !extra.iter().any(|(n, _)| n.eq_ignore_ascii_case(&s.name)) {
-            extra.push((s.name.clone(), kind_by_name(&s.name)));
+            extra.push((s.name.clone(), SignalKind::guess(&s.name)));
         }
     }
     Arc::new(Program::new(task, &extra))
-}
-
-fn kind_by_name(name: &str) -> SignalKind {
-    match name.get(..2).map(str::to_ascii_lowercase).as_deref() {
-        Some("do") => SignalKind::DigitalOut,
-        Some("ai") => SignalKind::AnalogIn,
-        Some("ao") => SignalKind::AnalogOut,
-        Some("gi") => SignalKind::GroupIn,
-        Some("go") => SignalKind::GroupOut,
-        _ => SignalKind::DigitalIn,
-    }
 }
 
 fn unit_path(path: &Path) -> String {

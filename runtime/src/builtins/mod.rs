@@ -68,9 +68,9 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("IEnable", io::i_enable),
     ("ISleep", io::i_sleep),
     ("IWatch", io::i_watch),
-    ("MoveL", motion::move_l),
-    ("MoveJ", motion::move_j),
-    ("MoveC", motion::move_c),
+    ("MoveL", motion::move_to_point),
+    ("MoveJ", motion::move_to_point),
+    ("MoveC", motion::move_to_point),
     ("MoveAbsJ", motion::move_abs_j),
     ("MoveLDO", motion::move_do),
     ("MoveJDO", motion::move_do),
@@ -78,9 +78,9 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("SearchL", motion::search),
     ("SearchJ", motion::search),
     ("SearchC", motion::search),
-    ("TriggL", motion::move_l),
-    ("TriggJ", motion::move_j),
-    ("TriggC", motion::move_c),
+    ("TriggL", motion::move_to_point),
+    ("TriggJ", motion::move_to_point),
+    ("TriggC", motion::move_to_point),
     ("ConfL", motion::setting),
     ("ConfJ", motion::setting),
     ("SingArea", motion::setting),
@@ -192,6 +192,14 @@ impl<'a> Args<'a> {
     }
 }
 
+/// A required argument's value, or the fault that says it is missing.
+fn required<T>(a: &Args<'_>, param: &str, v: Option<T>) -> R<T> {
+    match v {
+        Some(v) => Ok(v),
+        None => invalid(format!("{}: the argument {param} is missing", a.name)),
+    }
+}
+
 impl Machine {
     /// Was `param` given (a switch set, an optional argument present)?
     pub(crate) fn given(&self, a: &Args<'_>, param: &str) -> bool {
@@ -224,10 +232,8 @@ impl Machine {
 
     /// The value of a required `param`.
     pub(crate) fn req(&mut self, a: &Args<'_>, param: &str) -> R<Value> {
-        match self.opt(a, param)? {
-            Some(v) => Ok(v),
-            None => invalid(format!("{}: the argument {param} is missing", a.name)),
-        }
+        let v = self.opt(a, param)?;
+        required(a, param, v)
     }
 
     /// A numeric argument (a signal gives its value).
@@ -247,10 +253,8 @@ impl Machine {
     }
 
     pub(crate) fn num(&mut self, a: &Args<'_>, param: &str) -> R<f64> {
-        match self.opt_num(a, param)? {
-            Some(x) => Ok(x),
-            None => invalid(format!("{}: the argument {param} is missing", a.name)),
-        }
+        let v = self.opt_num(a, param)?;
+        required(a, param, v)
     }
 
     pub(crate) fn opt_string(&mut self, a: &Args<'_>, param: &str) -> R<Option<String>> {
@@ -266,10 +270,8 @@ impl Machine {
     }
 
     pub(crate) fn string(&mut self, a: &Args<'_>, param: &str) -> R<String> {
-        match self.opt_string(a, param)? {
-            Some(s) => Ok(s),
-            None => invalid(format!("{}: the argument {param} is missing", a.name)),
-        }
+        let v = self.opt_string(a, param)?;
+        required(a, param, v)
     }
 
     /// The data `param` refers to (a `VAR`, `INOUT` or `PERS` argument).
@@ -292,10 +294,8 @@ impl Machine {
     }
 
     pub(crate) fn place_arg(&mut self, a: &Args<'_>, param: &str) -> R<Place> {
-        match self.opt_place(a, param)? {
-            Some(p) => Ok(p),
-            None => invalid(format!("{}: the argument {param} is missing", a.name)),
-        }
+        let v = self.opt_place(a, param)?;
+        required(a, param, v)
     }
 
     /// The name of the data an argument names directly (`p10`), for

@@ -149,44 +149,49 @@ fn move_to(m: &mut Machine, a: &Args<'_>, target: &str) -> R<()> {
         Some(c) => pose_of(&c).map(|p| compose(frame, p).0),
         None => None,
     };
-    let speed = m.opt(a, "Speed")?;
-    let zone = m.opt(a, "Zone")?;
     m.ctl.robot.tcp = world;
     m.ctl.robot.tool = tool;
     m.ctl.robot.robconf = to.field("robconf").cloned();
     m.ctl.robot.extax = to.field("extax").cloned();
-    if m.config.trace {
-        let record = crate::Move {
-            instruction: a.name.to_owned(),
-            target: m.arg_name(a, target),
-            at: m.here().unwrap_or_else(|| m.prog.location(0, 0)),
-            pos: Some(world.0),
-            orient: Some(world.1),
-            via,
-            joints: None,
-            speed: speed_of(speed.as_ref()),
-            speed_name: m.arg_name(a, "Speed"),
-            zone: zone_of(m, a, zone.as_ref()),
-            tool: m.arg_name(a, "Tool"),
-            wobj: m.arg_name(a, "WObj"),
-        };
-        m.ctl.moves.push(record);
+    record(m, a, target, Some(world), via, None)
+}
+
+/// Records a move for the trace (with [`crate::Config::trace`]); the
+/// speed and zone arguments are evaluated in any case.
+fn record(
+    m: &mut Machine,
+    a: &Args<'_>,
+    target: &str,
+    world: Option<Pose>,
+    via: Option<[f64; 3]>,
+    joints: Option<Vec<f64>>,
+) -> R<()> {
+    // Evaluated with or without a trace, so that a run fails the same way.
+    let speed = m.opt(a, "Speed")?;
+    let zone = m.opt(a, "Zone")?;
+    if !m.config.trace {
+        return Ok(());
     }
+    let record = crate::Move {
+        instruction: a.name.to_owned(),
+        target: m.arg_name(a, target),
+        at: m.here().unwrap_or_else(|| m.prog.location(0, 0)),
+        pos: world.map(|w| w.0),
+        orient: world.map(|w| w.1),
+        via,
+        joints,
+        speed: speed_of(speed.as_ref()),
+        speed_name: m.arg_name(a, "Speed"),
+        zone: zone_of(m, a, zone.as_ref()),
+        tool: m.arg_name(a, "Tool"),
+        wobj: m.arg_name(a, "WObj"),
+    };
+    m.ctl.moves.push(record);
     Ok(())
 }
 
-/// `MoveL` (and `TriggL`).
-pub(crate) fn move_l(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    move_to(m, a, "ToPoint")
-}
-
-/// `MoveJ` (and `TriggJ`).
-pub(crate) fn move_j(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    move_to(m, a, "ToPoint")
-}
-
-/// `MoveC` (and `TriggC`).
-pub(crate) fn move_c(m: &mut Machine, a: &Args<'_>) -> R<()> {
+/// `MoveL`, `MoveJ`, `MoveC` and the `Trigg` moves.
+pub(crate) fn move_to_point(m: &mut Machine, a: &Args<'_>) -> R<()> {
     move_to(m, a, "ToPoint")
 }
 
@@ -212,27 +217,8 @@ pub(crate) fn move_abs_j(m: &mut Machine, a: &Args<'_>) -> R<()> {
     if joints.is_none() {
         return invalid("MoveAbsJ: ToJointPos is not a jointtarget");
     }
-    let speed = m.opt(a, "Speed")?;
-    let zone = m.opt(a, "Zone")?;
     m.ctl.robot.joints = Some(to);
-    if m.config.trace {
-        let record = crate::Move {
-            instruction: a.name.to_owned(),
-            target: m.arg_name(a, "ToJointPos"),
-            at: m.here().unwrap_or_else(|| m.prog.location(0, 0)),
-            pos: None,
-            orient: None,
-            via: None,
-            joints: joints.map(|j| j.to_vec()),
-            speed: speed_of(speed.as_ref()),
-            speed_name: m.arg_name(a, "Speed"),
-            zone: zone_of(m, a, zone.as_ref()),
-            tool: m.arg_name(a, "Tool"),
-            wobj: m.arg_name(a, "WObj"),
-        };
-        m.ctl.moves.push(record);
-    }
-    Ok(())
+    record(m, a, "ToJointPos", None, None, joints.map(|j| j.to_vec()))
 }
 
 /// `SearchL`, `SearchJ`, `SearchC`: the search hits when its signal is 1
