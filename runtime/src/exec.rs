@@ -619,7 +619,18 @@ impl Machine {
             .last()
             .and_then(|f| self.prog.routines.get(f.routine.id as usize))
             .map_or(usize::MAX, |info| info.module);
-        let id = self.prog.routine_from(module, name);
+        // `Module:Routine` names a routine of that module, LOCAL ones too.
+        let id = match name.split_once(':') {
+            Some((m, r)) => self
+                .prog
+                .modules
+                .iter()
+                .position(|md| md.name.eq_ignore_ascii_case(m.trim()))
+                .and_then(|m| self.prog.modules.get(m))
+                .and_then(|md| md.routines.get(&r.trim().to_ascii_lowercase()))
+                .copied(),
+            None => self.prog.routine_from(module, name),
+        };
         let Some(id) = id else {
             return fault(named_error(
                 &self.prog,

@@ -5,7 +5,8 @@
 //! simulation, or when a budget runs out; never a panic, never a hang.
 //!
 //! `cargo test -p rapid-tests --test corpus_run -- --nocapture` prints how
-//! the runs ended.
+//! the runs ended; with `RAPID_RUN_ALL=1` every procedure without
+//! parameters of every module runs, not only the entry points.
 
 #![allow(clippy::print_stdout)]
 
@@ -66,69 +67,83 @@ fn every_corpus_module_runs_or_stops_with_a_reason_at_a_real_line() {
                     .iter()
                     .find(|r| r.at.path == *path && r.kind == RoutineKind::Proc && r.params == 0)
             });
-        let Some(entry) = entry else {
+        // RAPID_RUN_ALL=1: every procedure without parameters of each
+        // module, not only the entry point (a deeper, slower sweep).
+        let entries: Vec<_> = if std::env::var_os("RAPID_RUN_ALL").is_some() {
+            routines
+                .iter()
+                .filter(|r| r.at.path == *path && r.kind == RoutineKind::Proc && r.params == 0)
+                .collect()
+        } else {
+            entry.into_iter().collect()
+        };
+        if entries.is_empty() {
             *by_status.entry("no entry routine".to_owned()).or_default() += 1;
             continue;
-        };
-        if !done.insert((task.key.clone(), entry.name.to_ascii_lowercase())) {
-            continue;
         }
-        runs += 1;
-        let config = Config {
-            limits: limits.clone(),
-            sandbox: Some(sandbox.clone()),
-            ..Config::default()
-        };
-        let id = entry.id;
-        let p = program.clone();
-        let started = Instant::now();
-        let outcome = rapid_runtime::on_large_stack(move || {
-            let mut m = Machine::new(p, config, Box::new(|_, _: &str| {}));
-            m.run(id)
-        });
-        let took = started.elapsed();
-        let what = format!("{path} ({})", entry.name);
-        if took > slowest.0 {
-            slowest = (took, what.clone());
-        }
-        let Some(outcome) = outcome else {
-            problems.push(format!("{what}: the interpreter panicked"));
-            continue;
-        };
-        let key = match outcome.status {
-            Status::Finished | Status::Exited | Status::Stopped => format!("{:?}", outcome.status),
-            Status::Error => format!(
-                "Error {}",
-                outcome.errno.as_ref().map_or("?", |(_, n)| n.as_str())
-            ),
-            other => format!("{other:?}"),
-        };
-        *by_status.entry(key).or_default() += 1;
-        if outcome.status == Status::Unsupported {
-            *unsupported.entry(outcome.message.clone()).or_default() += 1;
-        }
-        if std::env::var_os("RAPID_RUN_VERBOSE").is_some() && !outcome.is_success() {
-            println!(
-                "{what}: {:?} {} at {:?}",
-                outcome.status,
-                outcome.message,
-                outcome.at.as_ref().map(|a| a.line)
-            );
-        }
-        if !outcome.is_success() || outcome.status == Status::Stopped {
-            match &outcome.at {
-                Some(at)
-                    if lines
-                        .get(at.path.as_str())
-                        .is_some_and(|&n| at.line >= 1 && at.line <= n) => {}
-                other => problems.push(format!(
-                    "{what}: {:?} ({}) at no real line: {other:?}",
-                    outcome.status, outcome.message
-                )),
+        for entry in entries {
+            if !done.insert((task.key.clone(), entry.name.to_ascii_lowercase())) {
+                continue;
             }
-        }
-        if took > Duration::from_secs(20) {
-            problems.push(format!("{what}: took {took:?}"));
+            runs += 1;
+            let config = Config {
+                limits: limits.clone(),
+                sandbox: Some(sandbox.clone()),
+                ..Config::default()
+            };
+            let id = entry.id;
+            let p = program.clone();
+            let started = Instant::now();
+            let outcome = rapid_runtime::on_large_stack(move || {
+                let mut m = Machine::new(p, config, Box::new(|_, _: &str| {}));
+                m.run(id)
+            });
+            let took = started.elapsed();
+            let what = format!("{path} ({})", entry.name);
+            if took > slowest.0 {
+                slowest = (took, what.clone());
+            }
+            let Some(outcome) = outcome else {
+                problems.push(format!("{what}: the interpreter panicked"));
+                continue;
+            };
+            let key = match outcome.status {
+                Status::Finished | Status::Exited | Status::Stopped => {
+                    format!("{:?}", outcome.status)
+                }
+                Status::Error => format!(
+                    "Error {}",
+                    outcome.errno.as_ref().map_or("?", |(_, n)| n.as_str())
+                ),
+                other => format!("{other:?}"),
+            };
+            *by_status.entry(key).or_default() += 1;
+            if outcome.status == Status::Unsupported {
+                *unsupported.entry(outcome.message.clone()).or_default() += 1;
+            }
+            if std::env::var_os("RAPID_RUN_VERBOSE").is_some() && !outcome.is_success() {
+                println!(
+                    "{what}: {:?} {} at {:?}",
+                    outcome.status,
+                    outcome.message,
+                    outcome.at.as_ref().map(|a| a.line)
+                );
+            }
+            if !outcome.is_success() || outcome.status == Status::Stopped {
+                match &outcome.at {
+                    Some(at)
+                        if lines
+                            .get(at.path.as_str())
+                            .is_some_and(|&n| at.line >= 1 && at.line <= n) => {}
+                    other => problems.push(format!(
+                        "{what}: {:?} ({}) at no real line: {other:?}",
+                        outcome.status, outcome.message
+                    )),
+                }
+            }
+            if took > Duration::from_secs(20) {
+                problems.push(format!("{what}: took {took:?}"));
+            }
         }
     }
     let _ = std::fs::remove_dir_all(&sandbox);

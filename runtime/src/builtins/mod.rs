@@ -286,6 +286,7 @@ impl Machine {
                     _ => self.place(&Expr::Local(s)).map(Some),
                 }
             }
+            Some(ArgValue::Expr(e)) if let Some(f) = e.failure() => self.failure(&f),
             Some(_) => invalid(format!(
                 "{}: {param} must be a variable or a persistent",
                 a.name
