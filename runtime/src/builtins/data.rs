@@ -351,3 +351,35 @@ pub(crate) fn get_time(m: &mut Machine, a: &Args<'_>) -> R<Value> {
 pub(crate) fn get_task_name(_: &mut Machine, _: &Args<'_>) -> R<Value> {
     Ok(Value::Str("T_ROB1".to_owned()))
 }
+
+/// `RobOS()`: `FALSE`, as on a virtual controller.
+pub(crate) fn rob_os(_: &mut Machine, _: &Args<'_>) -> R<Value> {
+    Ok(Value::Bool(false))
+}
+
+/// `OpMode()`: automatic mode (`OP_AUTO`).
+pub(crate) fn op_mode(m: &mut Machine, _: &Args<'_>) -> R<Value> {
+    system_constant(m, "OP_AUTO")
+}
+
+/// `RunMode()`: continuous (`RUN_CONT_CYCLE`).
+pub(crate) fn run_mode(m: &mut Machine, _: &Args<'_>) -> R<Value> {
+    system_constant(m, "RUN_CONT_CYCLE")
+}
+
+/// `IsStopMoveAct()`: `FALSE`: nothing stops the simulated motion.
+pub(crate) fn is_stop_move_act(_: &mut Machine, _: &Args<'_>) -> R<Value> {
+    Ok(Value::Bool(false))
+}
+
+/// The value of a predefined constant of the catalogue.
+fn system_constant(m: &mut Machine, name: &str) -> R<Value> {
+    let Some(&g) = m.prog.global_data.get(&name.to_ascii_lowercase()) else {
+        return invalid(format!("the constant {name} is not in the catalogue"));
+    };
+    m.ensure_global(g)?;
+    Ok(m.globals
+        .get(g as usize)
+        .cloned()
+        .unwrap_or(Value::Num(0.0)))
+}

@@ -175,6 +175,22 @@ pub(crate) fn alias_io(m: &mut Machine, a: &Args<'_>) -> R<()> {
     )
 }
 
+/// `AliasIOReset Signal`: the signal variable stands for no signal again.
+pub(crate) fn alias_io_reset(m: &mut Machine, a: &Args<'_>) -> R<()> {
+    let p = m.place_arg(a, "Signal")?;
+    let ty = match m.get(&p) {
+        Some(v @ Value::Record { ty, .. }) if m.is_signal(v) => ty.clone(),
+        _ => return invalid("AliasIOReset: Signal must be a signal variable"),
+    };
+    m.store(
+        &p,
+        Value::Record {
+            ty,
+            fields: vec![("name".to_owned(), Value::Str(String::new()))],
+        },
+    )
+}
+
 /// `DInput`, `DOutput`, `AInput`, `AOutput`, `GInput`, `GOutput`: the
 /// signal's value.
 pub(crate) fn input(m: &mut Machine, a: &Args<'_>) -> R<Value> {
