@@ -2,6 +2,7 @@
 //! checking and diagnostics. A plain library: text in, plain results with byte
 //! ranges out; no IO, no protocol types, no async; never panics on any input.
 
+pub mod body;
 pub mod catalogue;
 pub mod check;
 pub mod consteval;

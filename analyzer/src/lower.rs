@@ -4,9 +4,10 @@
 //! Lowering is purely syntactic: names stay names (the evaluator resolves
 //! them through an [`rapid_evaluator::Env`]), literals keep their source
 //! text. Anything that is not a well-formed expression (a placeholder, a
-//! syntax error, a `*` argument, a conditional argument `\Dec?x`, nesting
-//! deeper than [`MAX_DEPTH`]) becomes [`Expr::Unknown`], which the evaluator
-//! reports as not computable. Never panics.
+//! syntax error, a `*` argument, nesting deeper than [`MAX_DEPTH`]) becomes
+//! [`Expr::Unknown`], which the evaluator reports as not computable; a
+//! conditional argument `\Dec?x` becomes [`Expr::Conditional`], which only
+//! a running program can resolve. Never panics.
 
 use rapid_evaluator::{Arg, BinOp, Expr, UnOp};
 use tree_sitter::Node;
@@ -178,10 +179,10 @@ impl Lowering<'_> {
                 if arg_name.as_deref() == Some("") {
                     return Expr::Unknown;
                 }
-                let value = if field(a, "conditional").is_some() {
+                let value = if let Some(c) = field(a, "conditional") {
                     // `\Dec?x` passes an optional parameter on: its presence
                     // is only known at run time.
-                    Some(Expr::Unknown)
+                    Some(conditional(c, self.text))
                 } else {
                     field(a, "value").map(|v| self.expr(v, depth))
                 };
@@ -199,6 +200,17 @@ impl Lowering<'_> {
             name: name.to_owned(),
             args,
         }
+    }
+}
+
+/// The argument of a conditional argument `\Opt?x`: the name of the
+/// optional parameter `x` passed on, or [`Expr::Unknown`] when it is not a
+/// name.
+pub fn conditional(node: Node<'_>, text: &str) -> Expr {
+    if crate::syntax_util::kind(node) == "identifier" && !node.is_missing() {
+        Expr::Conditional(text_of(node, text).to_owned())
+    } else {
+        Expr::Unknown
     }
 }
 
@@ -335,7 +347,7 @@ mod tests {
         );
         assert_eq!(
             lowered(r"Round(x\Dec?d)"),
-            r#"Call { name: "Round", args: [Arg { name: None, value: Some(Name("x")) }, Arg { name: Some("Dec"), value: Some(Unknown) }] }"#
+            r#"Call { name: "Round", args: [Arg { name: None, value: Some(Name("x")) }, Arg { name: Some("Dec"), value: Some(Conditional("d")) }] }"#
         );
         assert_eq!(lowered("Now()"), r#"Call { name: "Now", args: [] }"#);
     }

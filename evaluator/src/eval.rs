@@ -58,17 +58,7 @@ pub(crate) fn run(
     env: &dyn Env,
     opts: &Options,
 ) -> Result<Evaluation, EvalError> {
-    let mut ctx = Ctx {
-        steps: 0,
-        max_steps: opts.max_steps,
-        depth: 0,
-        max_depth: opts.max_depth,
-        allow_initial: opts.allow_initial_values,
-        initial_used: Vec::new(),
-        in_progress: Vec::new(),
-        cache: HashMap::new(),
-        kinds: RefCell::new(Vec::new()),
-    };
+    let mut ctx = Ctx::new(opts);
     let value = ctx.eval(expr, expected, env)?;
     Ok(Evaluation {
         value,
@@ -159,6 +149,20 @@ fn resolve_kind(name: &str, env: &dyn Env) -> Kind {
 }
 
 impl Ctx {
+    pub(crate) fn new(opts: &Options) -> Ctx {
+        Ctx {
+            steps: 0,
+            max_steps: opts.max_steps,
+            depth: 0,
+            max_depth: opts.max_depth,
+            allow_initial: opts.allow_initial_values,
+            initial_used: Vec::new(),
+            in_progress: Vec::new(),
+            cache: HashMap::new(),
+            kinds: RefCell::new(Vec::new()),
+        }
+    }
+
     /// Counts `n` units of work against the budget.
     pub(crate) fn step(&mut self, n: u64) -> Result<(), EvalError> {
         self.steps = self.steps.saturating_add(n);
@@ -255,7 +259,10 @@ impl Ctx {
             Expr::Call { name, args } => crate::functions::call(self, name, args, env),
             Expr::Component(base, field) => self.component(base, field, env),
             Expr::Index(base, indices) => self.index(base, indices, env),
-            Expr::Unknown => err(ErrorCode::Unsupported, "the expression cannot be evaluated"),
+            Expr::Value(v) => Ok(v.clone()),
+            Expr::Conditional(_) | Expr::Unknown => {
+                err(ErrorCode::Unsupported, "the expression cannot be evaluated")
+            }
         }
     }
 
@@ -559,7 +566,12 @@ impl Ctx {
     }
 
     /// Gives an untyped aggregate the record type of the other operand.
-    fn unify(&mut self, a: Value, b: Value, env: &dyn Env) -> Result<(Value, Value), EvalError> {
+    pub(crate) fn unify(
+        &mut self,
+        a: Value,
+        b: Value,
+        env: &dyn Env,
+    ) -> Result<(Value, Value), EvalError> {
         match (&a, &b) {
             (Value::Record { ty, .. }, Value::Array(_)) => {
                 let t = Type::named(ty.clone());

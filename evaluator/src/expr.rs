@@ -43,6 +43,15 @@ pub enum Expr {
     Component(Box<Expr>, String),
     /// Array indexing `expr{i, j}` (1-based).
     Index(Box<Expr>, Vec<Expr>),
+    /// A conditional argument `\Dec?d` of a call: the optional parameter
+    /// `d` of the calling routine, passed on only when it is present. Its
+    /// presence is known only when a program runs: the evaluator reports it
+    /// as [`crate::ErrorCode::Unsupported`]; an interpreter resolves it.
+    Conditional(String),
+    /// A value computed elsewhere (by an interpreter that evaluates the
+    /// arguments of a function itself): evaluates to itself, made a value
+    /// of the expected type as any other value is.
+    Value(crate::Value),
     /// Something the analyzer could not lower (a syntax error, an unsupported
     /// construct). Evaluates to an [`crate::ErrorCode::Unsupported`] error.
     Unknown,

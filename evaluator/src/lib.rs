@@ -142,6 +142,33 @@ pub fn eval_as(expr: &Expr, expected: Option<&Type>, env: &dyn Env) -> Result<Va
     eval_with(expr, expected, env, &Options::default()).map(|e| e.value)
 }
 
+/// Applies a binary operator to two values, with the typing rules of an
+/// expression (an untyped aggregate takes the record type of the other
+/// operand; `num` with `dnum` gives `dnum`). For interpreters, which
+/// evaluate the operands themselves.
+pub fn apply_binary(op: BinOp, a: Value, b: Value, env: &dyn Env) -> Result<Value, EvalError> {
+    if matches!(a, Value::Array(_)) != matches!(b, Value::Array(_)) {
+        let mut ctx = eval::Ctx::new(&Options::default());
+        let (a, b) = ctx.unify(a, b, env)?;
+        return eval::binary(op, a, b);
+    }
+    eval::binary(op, a, b)
+}
+
+/// Applies a unary operator to a value.
+pub fn apply_unary(op: UnOp, v: Value) -> Result<Value, EvalError> {
+    eval::unary(op, v)
+}
+
+/// Makes `v` a value of type `ty`, as an assignment or a parameter does:
+/// an untyped aggregate becomes the record or array, `num` widens to
+/// `dnum` (and a `dnum` in range narrows to `num`); other mismatches are
+/// [`ErrorCode::TypeMismatch`]. Types the environment does not know pass
+/// unchanged.
+pub fn coerce(v: Value, ty: &Type, env: &dyn Env) -> Result<Value, EvalError> {
+    eval::Ctx::new(&Options::default()).coerce(v, ty, env)
+}
+
 /// Evaluates with explicit [`Options`].
 pub fn eval_with(
     expr: &Expr,

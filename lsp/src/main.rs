@@ -5,11 +5,14 @@ mod alloc;
 mod builtins;
 mod check;
 mod config;
+mod dap;
 mod eval;
 mod fmt;
 mod rules_cmd;
+mod run;
 mod server;
 mod source;
+mod test_cmd;
 
 use std::process::ExitCode;
 
@@ -40,6 +43,14 @@ enum Command {
     Rules(rules_cmd::RulesArgs),
     /// Run the language server (LSP over standard input and output).
     Lsp(server::LspArgs),
+    /// Run a task's entry routine on a simulated controller.
+    Run(run::RunArgs),
+    /// Run the debug adapter (Debug Adapter Protocol over standard input
+    /// and output) for RAPID programs on a simulated controller.
+    Dap(dap::DapArgs),
+    /// Run the test routines of RAPID programs (test_* procedures, modules
+    /// named *_test) on a simulated controller.
+    Test(test_cmd::TestArgs),
 }
 
 fn main() -> ExitCode {
@@ -62,5 +73,8 @@ fn main() -> ExitCode {
         Command::Builtins(args) => builtins::run(args),
         Command::Rules(args) => rules_cmd::run(args),
         Command::Lsp(args) => server::run(args),
+        Command::Run(args) => run::run(args),
+        Command::Test(args) => test_cmd::run(args),
+        Command::Dap(args) => dap::run(args),
     }
 }

@@ -16,7 +16,7 @@
 use std::collections::HashMap;
 use std::process::ExitCode;
 
-use rapid_analyzer::catalogue::catalogue;
+use rapid_analyzer::catalogue::base as catalogue;
 use rapid_analyzer::names::fold;
 use rapid_analyzer::text::{Decoded, decode};
 

@@ -76,7 +76,12 @@ fn exercise(input: &Input, samples: usize) -> Vec<&'static str> {
             let _ = ide::document_highlights(&task, 0, offset);
             let _ = ide::rename(&task, 0, offset, "fresh");
         }
-        let _ = ide::inlay_hints(&task, 0, offset..(offset + 400).min(len));
+        let _ = ide::inlay_hints(
+            &task,
+            0,
+            offset..(offset + 400).min(len),
+            ide::ParameterHints::All,
+        );
         let _ = rapid_analyzer::consteval::value_at(&task, 0, offset);
     }
     let _ = ide::semantic_tokens(&task, 0, None);

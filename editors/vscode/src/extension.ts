@@ -40,6 +40,17 @@ export async function activate(context: vscode.ExtensionContext): Promise<void> 
   );
 
   context.subscriptions.push({ dispose: () => void stopServer() });
+  // The `rapid` debugger: `rapid dap`, found as the server is.
+  context.subscriptions.push(
+    vscode.debug.registerDebugAdapterDescriptorFactory("rapid", {
+      createDebugAdapterDescriptor() {
+        const config = vscode.workspace.getConfiguration("rapid");
+        const configured = (config.get<string>("server.path") ?? "").trim();
+        const command = configured ? expandHome(configured) : (findOnPath("rapid") ?? "rapid");
+        return new vscode.DebugAdapterExecutable(command, ["dap"]);
+      },
+    }),
+  );
   await startServer();
 }
 

@@ -1,0 +1,308 @@
+//! `rapid test`: finds the test routines of the tasks under the paths and
+//! runs each on a fresh simulated controller.
+//!
+//! The convention: a test is a procedure without parameters that is named
+//! `test_...` (any letter case), or any procedure without parameters in a
+//! module whose name ends with `_test`. A module's procedure `setup` runs
+//! before each of its tests and `teardown` after each (also when the test
+//! failed). The assertion module `RapidAssert` (`RapidAssert.sys`, shipped
+//! inside `rapid`) is loaded with every task that does not declare its
+//! routines itself.
+//!
+//! A test passes when it returns (or `EXIT`s); it fails on an error no
+//! handler takes (an assertion's `ERR_ASSERT` among them), with its line
+//! and `ERRNO`; anything else (an unsupported instruction, a budget run
+//! out, `Stop`, a program that cannot run) is an error. Exit status: 0
+//! when every test passed, 1 when one failed or had an error (or none was
+//! found), 2 for usage errors.
+
+mod report;
+
+use std::io::Write;
+use std::path::PathBuf;
+use std::process::ExitCode;
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant};
+
+use rapid_analyzer::items::RoutineKind;
+use rapid_runtime::{Config, Machine, Outcome, Program, SignalChange, Status, Stream};
+
+use crate::run::{LimitArgs, Sandbox, load};
+
+/// The assertion module shipped with `rapid test`.
+pub const ASSERT_MODULE: &str = include_str!("RapidAssert.sys");
+/// The path the assertion module is known by in messages.
+pub const ASSERT_PATH: &str = "<rapid>/RapidAssert.sys";
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Format {
+    /// A line per test, the failures explained, a summary.
+    Human,
+    /// One JSON document with every test.
+    Json,
+    /// JUnit XML, for CI dashboards.
+    Junit,
+}
+
+#[derive(Debug, clap::Args)]
+pub struct TestArgs {
+    /// Modules and folders (default: the current folder).
+    pub paths: Vec<PathBuf>,
+    /// Print the assertion module (RapidAssert.sys) and exit: save it with
+    /// your tests so that `rapid check` and the editor know its routines.
+    #[arg(long)]
+    pub assert_module: bool,
+    /// How to report.
+    #[arg(long, value_enum, default_value_t = Format::Human)]
+    pub format: Format,
+    /// Run only the tests whose name (or `module.name`) contains this text
+    /// (any letter case).
+    #[arg(long, value_name = "TEXT")]
+    pub filter: Option<String>,
+    /// Set a signal for every test: NAME=VALUE[@SECONDS] (repeatable).
+    #[arg(long = "set", value_name = "SIG=V[@T]")]
+    pub set: Vec<String>,
+    /// The folder file instructions work in (default: a fresh temporary
+    /// folder per test).
+    #[arg(long, value_name = "DIR")]
+    pub sandbox: Option<PathBuf>,
+    #[command(flatten)]
+    pub limits: LimitArgs,
+}
+
+/// What happened to one test.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Verdict {
+    Pass,
+    Fail,
+    Error,
+}
+
+pub struct TestResult {
+    pub module: String,
+    pub name: String,
+    pub at: rapid_runtime::Location,
+    pub verdict: Verdict,
+    pub outcome: Outcome,
+    /// A sentence for a failure or an error (the assertion's message for
+    /// `ERR_ASSERT`).
+    pub message: String,
+    /// Where it failed: the innermost line outside the assertion module.
+    pub failed_at: Option<rapid_runtime::Location>,
+    pub output: Vec<String>,
+    pub duration: Duration,
+}
+
+pub fn run(args: TestArgs) -> ExitCode {
+    match run_inner(args) {
+        Ok(code) => code,
+        Err(message) => {
+            let _ = writeln!(anstream::stderr(), "rapid: test: {message}");
+            ExitCode::from(2)
+        }
+    }
+}
+
+fn run_inner(args: TestArgs) -> Result<ExitCode, String> {
+    if args.assert_module {
+        let mut out = std::io::stdout().lock();
+        return match out.write_all(ASSERT_MODULE.as_bytes()) {
+            Ok(()) => Ok(ExitCode::SUCCESS),
+            Err(e) => Err(format!("cannot write the module: {e}")),
+        };
+    }
+    let sets = args
+        .set
+        .iter()
+        .map(|s| load::parse_set(s))
+        .collect::<Result<Vec<_>, _>>()?;
+    let paths = if args.paths.is_empty() {
+        vec![PathBuf::from(".")]
+    } else {
+        args.paths.clone()
+    };
+    let found = load::tasks(&paths)?;
+    for (path, why) in &found.skipped {
+        let _ = writeln!(anstream::stderr(), "rapid: test: {}: {why}", path.display());
+    }
+    let mut results = Vec::new();
+    for task in &found.tasks {
+        let task = load::with_modules(task, &[(ASSERT_PATH, ASSERT_MODULE)]);
+        let program = load::program(task, &sets);
+        for test in discover(&program, args.filter.as_deref()) {
+            results.push(run_test(&program, &test, &sets, &args)?);
+        }
+    }
+    let stdout = std::io::stdout();
+    let mut out = stdout.lock();
+    let written = match args.format {
+        Format::Human => report::human(&mut out, &results),
+        Format::Json => report::json(&mut out, &results),
+        Format::Junit => report::junit(&mut out, &results),
+    };
+    if let Err(e) = written.and_then(|()| out.flush())
+        && e.kind() != std::io::ErrorKind::BrokenPipe
+    {
+        return Err(format!("cannot write the report: {e}"));
+    }
+    let all_passed = !results.is_empty() && results.iter().all(|r| r.verdict == Verdict::Pass);
+    Ok(if all_passed {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    })
+}
+
+/// A test routine, with the module's `setup` and `teardown`.
+pub struct Test {
+    pub id: u32,
+    pub name: String,
+    pub module: String,
+    pub at: rapid_runtime::Location,
+    pub setup: Option<u32>,
+    pub teardown: Option<u32>,
+}
+
+/// The tests of a program, by the convention above, in the task's order.
+pub fn discover(program: &Program, filter: Option<&str>) -> Vec<Test> {
+    let routines = program.routines();
+    let hook = |module: &str, name: &str| {
+        routines
+            .iter()
+            .find(|r| {
+                r.module == module
+                    && r.kind == RoutineKind::Proc
+                    && r.params == 0
+                    && r.name.eq_ignore_ascii_case(name)
+            })
+            .map(|r| r.id)
+    };
+    let filter = filter.map(str::to_ascii_lowercase);
+    routines
+        .iter()
+        .filter(|r| r.kind == RoutineKind::Proc && r.params == 0 && r.at.path != ASSERT_PATH)
+        .filter(|r| {
+            let name = r.name.to_ascii_lowercase();
+            let in_test_module = r.module.to_ascii_lowercase().ends_with("_test");
+            name.starts_with("test_") || (in_test_module && name != "setup" && name != "teardown")
+        })
+        .filter(|r| {
+            filter.as_ref().is_none_or(|f| {
+                format!("{}.{}", r.module, r.name)
+                    .to_ascii_lowercase()
+                    .contains(f.as_str())
+            })
+        })
+        .map(|r| Test {
+            id: r.id,
+            name: r.name.clone(),
+            module: r.module.clone(),
+            at: r.at.clone(),
+            setup: hook(&r.module, "setup"),
+            teardown: hook(&r.module, "teardown"),
+        })
+        .collect()
+}
+
+fn run_test(
+    program: &Arc<Program>,
+    test: &Test,
+    sets: &[SignalChange],
+    args: &TestArgs,
+) -> Result<TestResult, String> {
+    let sandbox = Sandbox::new(args.sandbox.clone())?;
+    let config = Config {
+        limits: args.limits.limits(),
+        signals: sets.to_vec(),
+        sandbox: Some(sandbox.path.clone()),
+        trace: false,
+    };
+    let lines: Arc<Mutex<Vec<(Stream, String)>>> = Arc::default();
+    let sink = lines.clone();
+    let program2 = program.clone();
+    let (id, setup, teardown) = (test.id, test.setup, test.teardown);
+    let started = Instant::now();
+    let outcome = rapid_runtime::on_large_stack(move || {
+        let out = move |s: Stream, line: &str| {
+            if let Ok(mut l) = sink.lock() {
+                l.push((s, line.to_owned()));
+            }
+        };
+        let mut m = Machine::new(program2, config, Box::new(out));
+        let mut outcome = match setup {
+            Some(s) => m.run(s),
+            None => m.run(id),
+        };
+        if setup.is_some() && outcome.is_success() {
+            outcome = m.run(id);
+        }
+        if let Some(t) = teardown {
+            let after = m.run(t);
+            if outcome.is_success() {
+                outcome = after;
+            }
+        }
+        outcome
+    })
+    .ok_or_else(|| "the interpreter failed (this is a bug in rapid)".to_owned())?;
+    let duration = started.elapsed();
+    drop(sandbox);
+    let lines = lines.lock().map(|l| l.clone()).unwrap_or_default();
+    Ok(judge(test, outcome, lines, duration))
+}
+
+fn judge(
+    test: &Test,
+    outcome: Outcome,
+    lines: Vec<(Stream, String)>,
+    duration: Duration,
+) -> TestResult {
+    let verdict = match outcome.status {
+        Status::Finished | Status::Exited => Verdict::Pass,
+        Status::Error => Verdict::Fail,
+        _ => Verdict::Error,
+    };
+    let assertion = outcome
+        .errno
+        .as_ref()
+        .is_some_and(|(_, n)| n.eq_ignore_ascii_case("ERR_ASSERT"));
+    let message = match verdict {
+        Verdict::Pass => String::new(),
+        _ if assertion => lines
+            .iter()
+            .rev()
+            .find(|(s, _)| *s == Stream::EventLog)
+            .map(|(_, l)| {
+                l.split_once("Assertion failed: ")
+                    .map_or(l.as_str(), |(_, m)| m)
+                    .to_owned()
+            })
+            .unwrap_or_else(|| "assertion failed".to_owned()),
+        _ => match (&outcome.status, &outcome.errno) {
+            (Status::Stopped, _) => "the test stopped (Stop)".to_owned(),
+            (_, Some((_, name))) => format!("{name}: {}", outcome.message),
+            _ => outcome.message.clone(),
+        },
+    };
+    let failed_at = outcome
+        .stack
+        .iter()
+        .find(|f| f.at.path != ASSERT_PATH)
+        .map(|f| f.at.clone())
+        .or_else(|| outcome.at.clone());
+    TestResult {
+        module: test.module.clone(),
+        name: test.name.clone(),
+        at: test.at.clone(),
+        verdict,
+        message,
+        failed_at: if verdict == Verdict::Pass {
+            None
+        } else {
+            failed_at
+        },
+        output: lines.into_iter().map(|(_, l)| l).collect(),
+        outcome,
+        duration,
+    }
+}

@@ -1,0 +1,299 @@
+//! `rapid dap` at the protocol level: a client drives the built binary
+//! over stdin and stdout through a debugging session (breakpoint with a
+//! condition, stack, scopes, variables, evaluate, set variable, step over,
+//! step out, continue, a run-time error stopping at its line, pause).
+
+mod support;
+
+use std::io::{BufRead, BufReader, Write};
+use std::process::{Child, ChildStdin, Command, Stdio};
+use std::sync::mpsc::{Receiver, channel};
+use std::time::Duration;
+
+use serde_json::{Value, json};
+use support::{scratch, write};
+
+struct Client {
+    child: Child,
+    stdin: ChildStdin,
+    messages: Receiver<Value>,
+    seq: i64,
+    /// Events received while waiting for something else.
+    events: Vec<Value>,
+}
+
+fn read_message(input: &mut impl BufRead) -> Option<Value> {
+    let mut length = 0;
+    loop {
+        let mut line = String::new();
+        if input.read_line(&mut line).ok()? == 0 {
+            return None;
+        }
+        let line = line.trim();
+        if line.is_empty() {
+            break;
+        }
+        if let Some(n) = line.strip_prefix("Content-Length:") {
+            length = n.trim().parse().ok()?;
+        }
+    }
+    let mut body = vec![0; length];
+    input.read_exact(&mut body).ok()?;
+    serde_json::from_slice(&body).ok()
+}
+
+impl Client {
+    fn start() -> Client {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_rapid"))
+            .arg("dap")
+            .stdin(Stdio::piped())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::inherit())
+            .spawn()
+            .expect("rapid dap starts");
+        let stdin = child.stdin.take().expect("stdin");
+        let stdout = child.stdout.take().expect("stdout");
+        let (tx, rx) = channel();
+        std::thread::spawn(move || {
+            let mut input = BufReader::new(stdout);
+            while let Some(m) = read_message(&mut input) {
+                if tx.send(m).is_err() {
+                    break;
+                }
+            }
+        });
+        Client {
+            child,
+            stdin,
+            messages: rx,
+            seq: 0,
+            events: Vec::new(),
+        }
+    }
+
+    fn next(&mut self) -> Value {
+        self.messages
+            .recv_timeout(Duration::from_secs(30))
+            .expect("a message from the adapter within 30 s")
+    }
+
+    /// Sends a request and returns its response (events meanwhile are kept).
+    fn request(&mut self, command: &str, arguments: Value) -> Value {
+        self.seq += 1;
+        let body =
+            json!({"seq": self.seq, "type": "request", "command": command, "arguments": arguments})
+                .to_string();
+        write!(self.stdin, "Content-Length: {}\r\n\r\n{body}", body.len()).expect("written");
+        self.stdin.flush().expect("flushed");
+        loop {
+            let m = self.next();
+            if m["type"] == "response" && m["request_seq"] == self.seq {
+                assert_eq!(m["command"], command);
+                return m;
+            }
+            self.events.push(m);
+        }
+    }
+
+    fn ok(&mut self, command: &str, arguments: Value) -> Value {
+        let r = self.request(command, arguments);
+        assert_eq!(r["success"], true, "{r}");
+        r["body"].clone()
+    }
+
+    /// Waits for an event (or takes one received earlier).
+    fn event(&mut self, name: &str) -> Value {
+        if let Some(i) = self.events.iter().position(|e| e["event"] == name) {
+            return self.events.remove(i)["body"].clone();
+        }
+        loop {
+            let m = self.next();
+            if m["type"] == "event" && m["event"] == name {
+                return m["body"].clone();
+            }
+            self.events.push(m);
+        }
+    }
+
+    fn top_line(&mut self) -> (String, u64) {
+        let st = self.ok("stackTrace", json!({"threadId": 1}));
+        let f = &st["stackFrames"][0];
+        (
+            f["name"].as_str().unwrap_or("").to_owned(),
+            f["line"].as_u64().unwrap_or(0),
+        )
+    }
+
+    /// The variables of a scope of frame 0, as name = value.
+    fn scope(&mut self, name: &str) -> Vec<String> {
+        let scopes = self.ok("scopes", json!({"frameId": 0}));
+        let r = scopes["scopes"]
+            .as_array()
+            .and_then(|s| s.iter().find(|s| s["name"] == name))
+            .map(|s| s["variablesReference"].clone())
+            .expect("the scope");
+        let vars = self.ok("variables", json!({"variablesReference": r}));
+        vars["variables"]
+            .as_array()
+            .expect("variables")
+            .iter()
+            .map(|v| {
+                format!(
+                    "{} = {}",
+                    v["name"].as_str().unwrap_or(""),
+                    v["value"].as_str().unwrap_or("")
+                )
+            })
+            .collect()
+    }
+}
+
+impl Drop for Client {
+    fn drop(&mut self) {
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+    }
+}
+
+const PROGRAM: &str = "MODULE dbg
+  VAR num total := 0;
+  PROC main()
+    VAR num i := 0;
+    FOR k FROM 1 TO 3 DO
+      total := Add2(total, k);
+    ENDFOR
+    TPWrite \"total \"\\Num:=total;
+    i := 1 / (total - 28);
+  ENDPROC
+  FUNC num Add2(num a, num b)
+    VAR num r;
+    r := a + b * 2;
+    RETURN r;
+  ENDFUNC
+ENDMODULE
+";
+
+#[test]
+fn a_debugging_session_breaks_inspects_changes_steps_and_stops_on_errors() {
+    let dir = scratch("dap-session");
+    write(&dir, &[("dbg.mod", PROGRAM)]);
+    let path = std::fs::canonicalize(dir.join("dbg.mod")).expect("the module");
+    let path = path.to_string_lossy().into_owned();
+    let mut c = Client::start();
+    let caps = c.ok("initialize", json!({"adapterID": "rapid"}));
+    assert_eq!(caps["supportsConditionalBreakpoints"], true);
+    c.event("initialized");
+    c.ok("launch", json!({"program": path}));
+    let bps = c.ok(
+        "setBreakpoints",
+        json!({"source": {"path": path}, "breakpoints": [{"line": 13, "condition": "b = 2"}]}),
+    );
+    assert_eq!(bps["breakpoints"][0]["verified"], true);
+    c.ok("configurationDone", json!({}));
+
+    // The breakpoint in Add2, on its second call.
+    assert_eq!(c.event("stopped")["reason"], "breakpoint");
+    let st = c.ok("stackTrace", json!({"threadId": 1}));
+    let frames: Vec<(String, u64)> = st["stackFrames"]
+        .as_array()
+        .expect("frames")
+        .iter()
+        .map(|f| {
+            (
+                f["name"].as_str().unwrap_or("").to_owned(),
+                f["line"].as_u64().unwrap_or(0),
+            )
+        })
+        .collect();
+    assert_eq!(
+        frames,
+        vec![("Add2".to_owned(), 13), ("main".to_owned(), 6)]
+    );
+    assert_eq!(st["stackFrames"][0]["source"]["path"], path.as_str());
+    assert_eq!(c.scope("Locals"), vec!["a = 2", "b = 2", "r = 0"]);
+    assert_eq!(c.scope("Module"), vec!["total = 2"]);
+    let e = c.ok(
+        "evaluate",
+        json!({"expression": "a + b * 10", "frameId": 0}),
+    );
+    assert_eq!(e["result"], "22");
+    let e = c.ok("evaluate", json!({"expression": "k", "frameId": 1}));
+    assert_eq!(e["result"], "2");
+    let bad = c.request(
+        "evaluate",
+        json!({"expression": "nothing + 1", "frameId": 0}),
+    );
+    assert_eq!(bad["success"], false);
+    let scopes = c.ok("scopes", json!({"frameId": 0}));
+    let locals = scopes["scopes"][0]["variablesReference"].clone();
+    let set = c.ok(
+        "setVariable",
+        json!({"variablesReference": locals, "name": "b", "value": "10"}),
+    );
+    assert_eq!(set["value"], "10");
+
+    // Step over: the RETURN, with r computed from the changed b.
+    c.ok("next", json!({"threadId": 1}));
+    assert_eq!(c.event("stopped")["reason"], "step");
+    assert_eq!(c.top_line(), ("Add2".to_owned(), 14));
+    assert_eq!(c.scope("Locals"), vec!["a = 2", "b = 10", "r = 22"]);
+
+    // Step out: back in main, at the loop's next call.
+    c.ok("stepOut", json!({"threadId": 1}));
+    c.event("stopped");
+    assert_eq!(c.top_line(), ("main".to_owned(), 6));
+    assert_eq!(c.scope("Module"), vec!["total = 22"]);
+    let vars = c.scope("Locals");
+    assert!(vars.contains(&"k = 3".to_owned()), "{vars:?}");
+
+    // Continue: the output, then the division by zero stops at its line.
+    c.ok("continue", json!({"threadId": 1}));
+    let stopped = c.event("stopped");
+    assert_eq!(stopped["reason"], "exception");
+    assert!(
+        stopped["text"]
+            .as_str()
+            .unwrap_or("")
+            .starts_with("ERR_DIVZERO"),
+        "{stopped}"
+    );
+    assert_eq!(c.top_line(), ("main".to_owned(), 9));
+    let out = c.event("output");
+    assert_eq!(out["output"], "total 28\n");
+    c.ok("continue", json!({"threadId": 1}));
+    assert_eq!(c.event("exited")["exitCode"], 1);
+    c.event("terminated");
+    c.ok("disconnect", json!({}));
+}
+
+#[test]
+fn a_running_program_pauses_and_ends_on_disconnect() {
+    let dir = scratch("dap-pause");
+    write(
+        &dir,
+        &[(
+            "spin.mod",
+            "MODULE spin\n  PROC main()\n    VAR num n := 0;\n    WHILE TRUE DO\n      n := n + 1;\n    ENDWHILE\n  ENDPROC\nENDMODULE\n",
+        )],
+    );
+    let path = dir.join("spin.mod").to_string_lossy().into_owned();
+    let mut c = Client::start();
+    c.ok("initialize", json!({"adapterID": "rapid"}));
+    c.ok(
+        "launch",
+        json!({"program": path, "stopOnEntry": true, "maxSteps": 1_000_000_000_000u64}),
+    );
+    c.ok("configurationDone", json!({}));
+    assert_eq!(c.event("stopped")["reason"], "entry");
+    assert_eq!(c.top_line(), ("main".to_owned(), 4));
+    c.ok("continue", json!({"threadId": 1}));
+    std::thread::sleep(Duration::from_millis(200));
+    c.ok("pause", json!({"threadId": 1}));
+    assert_eq!(c.event("stopped")["reason"], "pause");
+    let (name, line) = c.top_line();
+    assert_eq!(name, "main");
+    assert!(line == 4 || line == 5, "{line}");
+    c.ok("disconnect", json!({}));
+    let status = c.child.wait().expect("the adapter ends");
+    assert!(status.success());
+}

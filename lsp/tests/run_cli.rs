@@ -1,0 +1,191 @@
+//! `rapid run` and `rapid test` end to end: the built binary, its output,
+//! its files and its exit codes.
+
+mod support;
+
+use std::path::Path;
+
+use support::{rapid, scratch, text, write};
+
+fn repo() -> &'static Path {
+    Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
+}
+
+/// (exit code, stdout, stderr) of `rapid ARGS` in `dir`.
+fn run(dir: &Path, args: &[&str]) -> (Option<i32>, String, String) {
+    let out = rapid(dir, args);
+    (out.status.code(), text(&out.stdout), text(&out.stderr))
+}
+
+/// Test timings vary: `(1.2 ms)` becomes `(T ms)`, `"ms":1.2` `"ms":T`.
+fn untimed(s: &str) -> String {
+    let mut out = String::new();
+    let mut rest = s;
+    while let Some(i) = rest.find(" ms)") {
+        let start = rest[..i].rfind('(').unwrap_or(i);
+        out.push_str(&rest[..start]);
+        out.push_str("(T ms)");
+        rest = &rest[i + 4..];
+    }
+    out.push_str(rest);
+    out
+}
+
+#[test]
+fn the_palletizer_example_runs_to_its_end() {
+    let (code, out, err) = run(
+        repo(),
+        &["run", "examples/palletizer", "--set", "diBoxPresent=1"],
+    );
+    assert_eq!(
+        (code, out.as_str(), err.as_str()),
+        (Some(0), "Pallet complete: 24\n", "")
+    );
+}
+
+#[test]
+fn a_box_that_never_comes_ends_in_retries() {
+    let (code, out, err) = run(repo(), &["run", "examples/palletizer/MainModule.mod"]);
+    assert_eq!(code, Some(1));
+    assert_eq!(out.lines().count(), 5, "{out}");
+    assert!(out.lines().all(|l| l == "No box arrived within 30 s"));
+    insta::assert_snapshot!(err);
+}
+
+#[test]
+fn an_unhandled_error_names_itself_its_line_and_the_routines() {
+    let dir = scratch("run-error");
+    write(
+        &dir,
+        &[(
+            "m.mod",
+            "MODULE m\n  VAR num zero := 0;\n  PROC main()\n    TPWrite \"start\";\n    Divide 1;\n  ENDPROC\n  PROC Divide(num x)\n    x := x / zero;\n  ENDPROC\nENDMODULE\n",
+        )],
+    );
+    let (code, out, err) = run(&dir, &["run", "m.mod"]);
+    assert_eq!((code, out.as_str()), (Some(1), "start\n"));
+    assert_eq!(
+        err,
+        "error: ERR_DIVZERO: division by zero\n  --> m.mod:8:5\n  in Divide (m.mod:8)\n  in main (m.mod:5)\n"
+    );
+}
+
+#[test]
+fn usage_errors_exit_with_2() {
+    let dir = scratch("run-usage");
+    write(
+        &dir,
+        &[("m.mod", "MODULE m\n  PROC main()\n  ENDPROC\nENDMODULE\n")],
+    );
+    let (code, _, err) = run(&dir, &["run", "m.mod", "--entry", "nothing"]);
+    assert_eq!(code, Some(2));
+    assert!(err.contains("no procedure nothing"), "{err}");
+    let (code, _, err) = run(&dir, &["run", "m.mod", "--set", "di1"]);
+    assert_eq!(code, Some(2));
+    assert!(err.contains("NAME=VALUE"), "{err}");
+    let (code, _, err) = run(&dir, &["run", "missing.mod"]);
+    assert_eq!(code, Some(2));
+    assert!(err.contains("missing.mod"), "{err}");
+}
+
+#[test]
+fn the_trace_and_the_plot_hold_every_move() {
+    let dir = scratch("run-trace");
+    let (code, _, err) = run(
+        repo(),
+        &[
+            "run",
+            "examples/palletizer",
+            "--set",
+            "diBoxPresent=1",
+            "--trace",
+            &dir.join("t.json").to_string_lossy(),
+            "--plot",
+            &dir.join("p.html").to_string_lossy(),
+        ],
+    );
+    assert_eq!(code, Some(0), "{err}");
+    let trace: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("t.json")).expect("a trace"))
+            .expect("JSON");
+    let moves = trace["moves"].as_array().expect("moves");
+    // 24 boxes: 3 moves to pick, 3 to place; home at the start and the end.
+    assert_eq!(moves.len(), 24 * 6 + 2);
+    assert_eq!(moves[1]["instruction"], "MoveJ");
+    assert_eq!(moves[1]["line"], 55);
+    assert_eq!(moves[2]["target"], "pPickAbove");
+    let page = std::fs::read_to_string(dir.join("p.html")).expect("a page");
+    assert!(page.contains("\"pPickAbove\"") && page.contains("<canvas"));
+}
+
+const TESTS: &str = "MODULE Calc_test
+  VAR num calls := 0;
+
+  PROC setup()
+    calls := calls + 1;
+  ENDPROC
+
+  PROC adds()
+    AssertEqual 1 + 2, 3;
+  ENDPROC
+
+  PROC compares_strings()
+    AssertEqualStr \"a\" + \"b\", \"abc\"\\Message:=\"joined\";
+  ENDPROC
+
+  PROC divides()
+    VAR num x;
+    x := 1 / (calls - 1);
+  ENDPROC
+
+  PROC talks()
+    SocketClose sock;
+  ENDPROC
+
+  VAR socketdev sock;
+ENDMODULE
+";
+
+#[test]
+fn tests_pass_fail_and_err_with_their_lines() {
+    let dir = scratch("test-report");
+    write(&dir, &[("Calc_test.mod", TESTS)]);
+    let (code, out, err) = run(&dir, &["test"]);
+    assert_eq!(code, Some(1), "{err}");
+    insta::assert_snapshot!(untimed(&out));
+    let (_, out, _) = run(&dir, &["test", "--format", "json", "--filter", "strings"]);
+    let doc: serde_json::Value = serde_json::from_str(&out).expect("JSON");
+    assert_eq!(doc["failed"], 1);
+    assert_eq!(doc["tests"][0]["errno"]["name"], "ERR_ASSERT");
+    assert_eq!(doc["tests"][0]["at"]["line"], 13);
+    let (_, out, _) = run(&dir, &["test", "--format", "junit"]);
+    assert!(
+        out.contains(r#"<testsuites name="rapid test" tests="4" failures="2" errors="1">"#),
+        "{out}"
+    );
+    assert!(out.contains(r#"<failure message="joined: expected &quot;abc&quot;, got &quot;ab&quot;" type="ERR_ASSERT">"#), "{out}");
+    let (code, out, _) = run(&dir, &["test", "--filter", "adds"]);
+    assert_eq!(code, Some(0));
+    assert!(
+        out.ends_with("1 test: 1 passed, 0 failed, 0 errors\n"),
+        "{out}"
+    );
+}
+
+#[test]
+fn the_example_tests_pass_with_the_shipped_assertion_module() {
+    let (code, out, _) = run(repo(), &["test", "--assert-module"]);
+    assert_eq!(code, Some(0));
+    let copy = std::fs::read_to_string(repo().join("examples/testing/RapidAssert.sys"))
+        .expect("the example's copy");
+    assert_eq!(
+        out, copy,
+        "regenerate it: rapid test --assert-module > examples/testing/RapidAssert.sys"
+    );
+    let (code, out, err) = run(repo(), &["test", "examples/testing"]);
+    assert_eq!(code, Some(0), "{out}{err}");
+    assert!(
+        out.ends_with("4 tests: 4 passed, 0 failed, 0 errors\n"),
+        "{out}"
+    );
+}

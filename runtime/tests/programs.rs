@@ -1,0 +1,195 @@
+//! Runs every program of `tests/programs/` and compares what it prints
+//! and how it ends with the expectations written in it:
+//!
+//! - `!> text`: the next line of output (`TPWrite`, `ErrWrite`);
+//! - `!! outcome`: how the run ends, when not normally: `ERR_DIVZERO at 12`
+//!   (an unhandled error and its line), `stopped at 7`, `exited`,
+//!   `unsupported: NAME at 9`, `invalid at 4`, `budget at 3`,
+//!   `deadlock at 5`;
+//! - `!set NAME=VALUE[@SECONDS]`: a scripted signal change (a signal of
+//!   that name is declared: `di*`/`do*`/`ai*`/`ao*`/`gi*`/`go*` by its
+//!   prefix);
+//! - `!entry NAME`: the routine to run (default `main`);
+//! - `!steps N`: the step budget.
+//!
+//! `UPDATE_EXPECT=1` rewrites the `!>` and `!!` lines with what the runs
+//! give (review the diff).
+
+use std::sync::{Arc, Mutex};
+
+use rapid_analyzer::task::{Task, Unit};
+use rapid_runtime::{Config, Machine, Outcome, Program, SignalChange, SignalKind, Status};
+
+struct Expect {
+    lines: Vec<String>,
+    outcome: Option<String>,
+    signals: Vec<SignalChange>,
+    entry: String,
+    steps: Option<u64>,
+}
+
+fn parse(text: &str) -> Expect {
+    let mut e = Expect {
+        lines: Vec::new(),
+        outcome: None,
+        signals: Vec::new(),
+        entry: "main".to_owned(),
+        steps: None,
+    };
+    for line in text.lines() {
+        let t = line.trim_start();
+        if let Some(rest) = t
+            .strip_prefix("!> ")
+            .or(t.strip_prefix("!>").filter(|r| r.is_empty()))
+        {
+            e.lines.push(rest.to_owned());
+        } else if let Some(rest) = t.strip_prefix("!! ") {
+            e.outcome = Some(rest.trim().to_owned());
+        } else if let Some(rest) = t.strip_prefix("!set ") {
+            let (name, value) = rest.trim().split_once('=').expect("!set NAME=VALUE");
+            let (value, at) = value.split_once('@').unwrap_or((value, "0"));
+            e.signals.push(SignalChange {
+                name: name.to_owned(),
+                value: value.parse().expect("a number"),
+                at: at.parse().expect("seconds"),
+            });
+        } else if let Some(rest) = t.strip_prefix("!entry ") {
+            e.entry = rest.trim().to_owned();
+        } else if let Some(rest) = t.strip_prefix("!steps ") {
+            e.steps = Some(rest.trim().parse().expect("a number"));
+        }
+    }
+    e
+}
+
+/// The outcome in the fixtures' words.
+fn brief(o: &Outcome) -> Option<String> {
+    let line = o.at.as_ref().map_or(0, |l| l.line);
+    Some(match o.status {
+        Status::Finished => return None,
+        Status::Exited => "exited".to_owned(),
+        Status::Stopped => format!("stopped at {line}"),
+        Status::Error => format!(
+            "{} at {line}",
+            o.errno.as_ref().map_or("?", |(_, n)| n.as_str())
+        ),
+        Status::Unsupported => format!(
+            "{} at {line}",
+            o.message
+                .replace("not supported in simulation", "unsupported")
+        ),
+        Status::Invalid => format!("invalid at {line}"),
+        Status::Budget => format!("budget at {line}"),
+        Status::Deadlock => format!("deadlock at {line}"),
+    })
+}
+
+fn run(path: &std::path::Path) -> (Vec<String>, Option<String>, Outcome) {
+    let text = std::fs::read_to_string(path).expect("a fixture");
+    let e = parse(&text);
+    let name = path
+        .file_name()
+        .unwrap_or_default()
+        .to_string_lossy()
+        .into_owned();
+    let unit = Arc::new(Unit::new(name, text, None));
+    let task = Arc::new(Task::new(String::new(), vec![unit], None));
+    let signals: Vec<(String, SignalKind)> = e
+        .signals
+        .iter()
+        .map(|s| (s.name.clone(), SignalKind::guess(&s.name)))
+        .collect();
+    let program = Arc::new(Program::new(task, &signals));
+    let lines = Arc::new(Mutex::new(Vec::new()));
+    let sink = lines.clone();
+    let mut config = Config {
+        signals: e.signals.clone(),
+        trace: true,
+        ..Config::default()
+    };
+    if let Some(n) = e.steps {
+        config.limits.max_steps = n;
+    }
+    let sandbox = std::env::temp_dir().join(format!(
+        "rapid-runtime-test-{}-{}",
+        std::process::id(),
+        path.file_stem().unwrap_or_default().to_string_lossy()
+    ));
+    let _ = std::fs::remove_dir_all(&sandbox);
+    std::fs::create_dir_all(&sandbox).expect("a sandbox");
+    config.sandbox = Some(sandbox.clone());
+    let entry = e.entry.clone();
+    let outcome = rapid_runtime::on_large_stack(move || {
+        let out = move |_: rapid_runtime::Stream, line: &str| {
+            sink.lock().expect("the output").push(line.to_owned())
+        };
+        let mut m = Machine::new(program.clone(), config, Box::new(out));
+        let id = program.find_routine(&entry).expect("the entry routine");
+        m.run(id)
+    })
+    .expect("no panic");
+    let _ = std::fs::remove_dir_all(&sandbox);
+    let lines = lines.lock().expect("the output").clone();
+    (lines, brief(&outcome), outcome)
+}
+
+fn rewrite(path: &std::path::Path, lines: &[String], outcome: &Option<String>) {
+    let text = std::fs::read_to_string(path).expect("a fixture");
+    let mut out: Vec<String> = text
+        .lines()
+        .filter(|l| {
+            let t = l.trim_start();
+            !(t.starts_with("!>") || t.starts_with("!! "))
+        })
+        .map(str::to_owned)
+        .collect();
+    while out.last().is_some_and(|l| l.trim().is_empty()) {
+        out.pop();
+    }
+    for l in lines {
+        out.push(if l.is_empty() {
+            "!>".to_owned()
+        } else {
+            format!("!> {l}")
+        });
+    }
+    if let Some(o) = outcome {
+        out.push(format!("!! {o}"));
+    }
+    std::fs::write(path, out.join("\n") + "\n").expect("written");
+}
+
+#[test]
+fn programs_print_and_end_as_their_expectations_say() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/programs");
+    let mut paths: Vec<_> = std::fs::read_dir(&dir)
+        .expect("the fixtures")
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|e| e == "mod"))
+        .collect();
+    paths.sort();
+    assert!(!paths.is_empty());
+    let update = std::env::var_os("UPDATE_EXPECT").is_some();
+    let mut failures = Vec::new();
+    for path in &paths {
+        let text = std::fs::read_to_string(path).expect("a fixture");
+        let e = parse(&text);
+        let (lines, outcome, full) = run(path);
+        if update {
+            rewrite(path, &lines, &outcome);
+            continue;
+        }
+        if lines != e.lines || outcome != e.outcome {
+            failures.push(format!(
+                "{}:\n  expected output {:?}\n  got      output {:?}\n  expected end {:?}\n  got      end {:?} ({})",
+                path.display(),
+                e.lines,
+                lines,
+                e.outcome,
+                outcome,
+                full.message
+            ));
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}

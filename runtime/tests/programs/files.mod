@@ -1,0 +1,41 @@
+MODULE files
+  ! Files in the sandbox folder: write, read back, end of file, errors.
+  PROC main()
+    VAR iodev f;
+    VAR string line;
+    VAR num n;
+    Open "HOME:" \File:="log.txt", f\Write;
+    Write f, "first line";
+    Write f, "count "\Num:=3;
+    Write f, "42";
+    Close f;
+    Open "HOME:/log.txt", f\Append;
+    Write f, "appended";
+    Close f;
+    Open "HOME:/log.txt", f\Read;
+    line := ReadStr(f);
+    TPWrite "read: " + line;
+    line := ReadStr(f);
+    TPWrite "read: " + line;
+    n := ReadNum(f);
+    TPWrite "number "\Num:=n + 1;
+    TPWrite "read: " + ReadStr(f);
+    TPWrite "end: " + ReadStr(f);
+    Close f;
+    TPWrite "exists "\Bool:=IsFile("HOME:/log.txt");
+    Open "HOME:/missing.txt", f\Read;
+    TPWrite "not reached";
+  ERROR
+    IF ERRNO = ERR_FILEOPEN THEN
+      TPWrite "cannot open the missing file";
+      RETURN;
+    ENDIF
+  ENDPROC
+ENDMODULE
+!> read: first line
+!> read: count 3
+!> number 43
+!> read: appended
+!> end: EOF
+!> exists TRUE
+!> cannot open the missing file
