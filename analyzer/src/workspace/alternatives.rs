@@ -6,8 +6,12 @@
 //! folder, whose grouping is only a guess, modules that declare the same
 //! entry routine (`main`) are taken for alternative programs too: real
 //! folders hold a program next to its earlier versions, or several
-//! exercises side by side. Each such module is checked in a view of the
-//! task without the modules it clashes with, so neither version's names are
+//! exercises side by side. Modules of a plain folder that declare largely
+//! the same globals (at least [`COPY_SHARED`] of them, and at least half of
+//! the globals of the one with fewer) are copies of one module for
+//! different tasks or cells (a left and a right arm's driver): no task can
+//! load both, as every shared name would be ambiguous. Each such module is
+//! checked in a view of the task without the modules it clashes with, so neither version's names are
 //! "ambiguous" and each is checked against the rest of the folder (the
 //! shared modules a program is meant to run with). Other names declared
 //! twice are still reported, as warnings in a plain folder.
@@ -22,9 +26,68 @@ use crate::task::{Excluded, Unit};
 /// The entry routine a program starts from unless configured otherwise.
 const ENTRY: &str = "main";
 
+/// The fewest shared globals that make two modules of a plain folder copies
+/// of one module (one or two shared names are more likely a real clash).
+const COPY_SHARED: usize = 3;
+
+/// The folded names of a module's global declarations.
+fn globals(module: &crate::items::Module) -> std::collections::HashSet<String> {
+    use crate::items::Scope;
+    let data = module
+        .data
+        .iter()
+        .filter(|d| d.scope != Scope::Local)
+        .map(|d| &d.name);
+    let routines = module.routines.iter().filter(|r| !r.local).map(|r| &r.name);
+    let records = module.records.iter().filter(|r| !r.local).map(|r| &r.name);
+    let aliases = module.aliases.iter().filter(|a| !a.local).map(|a| &a.name);
+    data.chain(routines)
+        .chain(records)
+        .chain(aliases)
+        .map(|n| fold(n))
+        .collect()
+}
+
+/// Pairs of units of a plain folder that are copies of one module
+/// ([`COPY_SHARED`]). Counted through the names (each unit pair that shares
+/// one), not by comparing every pair of units; a name more than
+/// [`MOST_SHARING`] units declare is left out of the count.
+fn copies(units: &[Arc<Unit>]) -> Vec<(usize, usize)> {
+    let sets: Vec<std::collections::HashSet<String>> = units
+        .iter()
+        .map(|u| u.items.modules.iter().flat_map(globals).collect())
+        .collect();
+    let mut declaring: HashMap<&str, Vec<usize>> = HashMap::new();
+    for (u, set) in sets.iter().enumerate() {
+        for name in set {
+            declaring.entry(name).or_default().push(u);
+        }
+    }
+    let mut shared: HashMap<(usize, usize), usize> = HashMap::new();
+    for list in declaring.values().filter(|l| l.len() <= MOST_SHARING) {
+        for (i, &a) in list.iter().enumerate() {
+            for &b in &list[i + 1..] {
+                *shared.entry((a.min(b), a.max(b))).or_default() += 1;
+            }
+        }
+    }
+    let mut out: Vec<(usize, usize)> = shared
+        .into_iter()
+        .filter(|&((a, b), n)| n >= COPY_SHARED && 2 * n >= sets[a].len().min(sets[b].len()))
+        .map(|(pair, _)| pair)
+        .collect();
+    out.sort_unstable();
+    out
+}
+
+/// The most units a name may be declared in and still count towards
+/// [`copies`] (bounds the pairs counted in a folder of thousands of files).
+const MOST_SHARING: usize = 256;
+
 /// For each unit of a group (by index) that clashes with others, the units
 /// it clashes with, in order: units that declare the same module, and in a
-/// plain folder units that both declare the entry routine.
+/// plain folder units that both declare the entry routine or are copies of
+/// one module.
 pub(super) fn clashes(units: &[Arc<Unit>], grouping: Grouping) -> HashMap<usize, Vec<usize>> {
     // Folded names to the units that declare them.
     let mut modules: HashMap<String, Vec<usize>> = HashMap::new();
@@ -56,6 +119,11 @@ pub(super) fn clashes(units: &[Arc<Unit>], grouping: Grouping) -> HashMap<usize,
         clash(list);
     }
     clash(&entries);
+    if grouping == Grouping::Folder {
+        for (a, b) in copies(units) {
+            clash(&[a, b]);
+        }
+    }
     for list in out.values_mut() {
         list.sort_unstable();
         list.dedup();
@@ -100,6 +168,25 @@ mod tests {
 
     fn unit(path: &str, text: &str) -> Arc<Unit> {
         Arc::new(Unit::new(path.into(), text.into(), None))
+    }
+
+    #[test]
+    fn copies_of_one_module_in_a_plain_folder_clash() {
+        let left = "MODULE HandL\n  VAR num a;\n  VAR num b;\n  PROC c()\n  ENDPROC\n  PROC d()\n  ENDPROC\nENDMODULE\n";
+        let right = left.replace("HandL", "HandR");
+        // shares one global of its two: a real clash, not a copy
+        let other = "MODULE Other\n  VAR num a;\n  VAR num e;\nENDMODULE\n";
+        let units = [
+            unit("f/l.sys", left),
+            unit("f/r.sys", &right),
+            unit("f/o.mod", other),
+        ];
+        let found = clashes(&units, Grouping::Folder);
+        assert_eq!(found.get(&0), Some(&vec![1]));
+        assert_eq!(found.get(&1), Some(&vec![0]));
+        assert_eq!(found.get(&2), None);
+        // a backup's task loads what it has: never guessed
+        assert!(clashes(&units, Grouping::Backup).is_empty());
     }
 
     #[test]
