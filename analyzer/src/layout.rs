@@ -87,20 +87,17 @@ pub fn controller_of(key: &str) -> Option<&str> {
 }
 
 /// The backup folder (the one holding `RAPID/`, `HOME/`, `SYSPAR/`) of a
-/// task key of a backup, or of a path inside a backup's `HOME/`.
+/// task key of a backup, or of a path inside a backup's `HOME/`: the path
+/// before its innermost `RAPID` or `HOME` folder.
 pub fn backup_root(path: &str) -> Option<&str> {
-    let lower = path.to_ascii_lowercase();
-    for marker in ["/rapid/", "/home/"] {
-        if let Some(at) = lower.rfind(marker) {
-            return path.get(..at);
-        }
-    }
-    for marker in ["/rapid", "/home"] {
-        if lower.ends_with(marker) {
-            return path.get(..path.len() - marker.len());
-        }
-    }
-    None
+    let normal = path.replace('\\', "/");
+    let parts: Vec<&str> = normal.split('/').collect();
+    let at = (0..parts.len())
+        .rev()
+        .find(|&i| parts[i].eq_ignore_ascii_case("rapid") || is_controller_home(&parts, i))?;
+    // `\` and `/` are one byte each: offsets in `normal` are offsets in `path`.
+    let end = parts[..at].iter().map(|p| p.len() + 1).sum::<usize>();
+    path.get(..end.saturating_sub(1))
 }
 
 /// Is this file inside a `HOME/` folder (the controller's file area, from
@@ -109,7 +106,15 @@ pub fn in_home(path: &str) -> bool {
     let normal = path.replace('\\', "/");
     let mut parts: Vec<&str> = normal.split('/').collect();
     parts.pop();
-    parts.iter().any(|p| p.eq_ignore_ascii_case("home"))
+    (0..parts.len()).any(|i| is_controller_home(&parts, i))
+}
+
+/// Is folder `i` of a path's `parts` a controller's `HOME` folder? A
+/// folder of that name in any case but all lowercase: controllers write
+/// `HOME`, and `home` is where Unix systems keep their users' folders
+/// (`/home/NAME/...`, where projects and backups are kept).
+fn is_controller_home(parts: &[&str], i: usize) -> bool {
+    parts[i].eq_ignore_ascii_case("home") && parts[i] != "home"
 }
 
 /// The file names (lowercase, without folders) of the modules a text names
@@ -176,6 +181,32 @@ mod tests {
             task_key(r"c:\b\RAPID\TASK1\PROGMOD\a.mod"),
             "c:/b/RAPID/TASK1"
         );
+    }
+
+    #[test]
+    fn a_unix_home_folder_is_not_a_controller_home() {
+        assert!(!in_home("/home/runner/proj/Main.mod"));
+        assert!(!in_home("/home/runner/b/RAPID/TASK1/PROGMOD/Main.mod"));
+        assert!(in_home("/home/runner/b/HOME/Part1.mod"));
+        assert!(in_home("b/HOME/Lib/Part1.mod"));
+        assert!(in_home("b/Home/Part1.mod"));
+        assert!(!in_home("home/josé/robot/Main.mod"));
+        assert!(in_home(r"C:\Backups\b\HOME\Part1.mod"));
+        assert_eq!(backup_root("/home/runner/proj/Main.mod"), None);
+        assert_eq!(
+            backup_root("/home/runner/b/HOME/P.mod"),
+            Some("/home/runner/b")
+        );
+        assert_eq!(
+            backup_root("/home/runner/b/RAPID/TASK1"),
+            Some("/home/runner/b")
+        );
+        // the innermost marker: a backup kept in a folder named `rapid`
+        assert_eq!(backup_root("/w/rapid/b/HOME/P.mod"), Some("/w/rapid/b"));
+        assert_eq!(backup_root(r"C:\w\b\RAPID\TASK1"), Some(r"C:\w\b"));
+        // run inside the backup folder
+        assert_eq!(backup_root("RAPID/TASK1"), Some(""));
+        assert_eq!(backup_root("HOME/P.mod"), Some(""));
     }
 
     #[test]

@@ -459,6 +459,11 @@ pub struct Task {
     /// every module is here: a name nothing declares would stop the
     /// controller from loading it, so it is an error, not a warning.
     pub complete: bool,
+    /// Modules of a controller's `HOME/` folder that no task here loads: a
+    /// program loads them at run time into a task that is not among the
+    /// checked files, so the names they use from it cannot be checked (an
+    /// unresolved name is a note, not a warning).
+    pub loaded_elsewhere: bool,
     /// A view made for one unit (its index): the task as that unit sees it,
     /// without the modules that cannot be loaded with it ([`Task::excluded`]).
     /// `None` for a whole group.
@@ -524,6 +529,7 @@ impl Task {
             close_names: Default::default(),
             grouping: Grouping::Folder,
             complete: false,
+            loaded_elsewhere: false,
             owner: None,
             excluded: Vec::new(),
             clashing: Default::default(),

@@ -147,3 +147,41 @@ fn unresolved_names_are_errors_only_in_a_complete_backup() {
         "{out}"
     );
 }
+
+#[test]
+fn a_name_the_task_lacks_is_one_finding_with_every_use_related() {
+    let dir = scratch("once-per-task");
+    let a = "MODULE A\n  PROC main()\n    Missing;\n    Missing;\n  ENDPROC\nENDMODULE\n";
+    let b = "MODULE B\n  PROC other()\n    Missing;\n    TPWrite nLost;\n  ENDPROC\nENDMODULE\n";
+    write(&dir, &[("prog/A.mod", a), ("prog/B.mod", b)]);
+    let (code, out) = check(&dir);
+    assert_eq!(code, Some(0), "{out}");
+    insta::assert_snapshot!(out, @r"
+    prog/A.mod:3:5: warning[W101] no routine named `Missing` is declared in this task or built in (unresolved-name)
+    prog/B.mod:4:13: warning[W101] no data named `nLost` is declared in this task or built in (if it is an I/O signal, give the controller's EIO.cfg) (unresolved-name)
+    ");
+    // The human report names the other uses, in this file and the other.
+    let out = rapid(&dir, &["check", "prog"]);
+    let human = String::from_utf8_lossy(&out.stdout).replace('\\', "/");
+    assert!(
+        human.contains("= note: used here too: 4:5, prog/B.mod:3:5"),
+        "{human}"
+    );
+}
+
+#[test]
+fn modules_of_a_controller_home_that_no_task_loads_have_notes_not_warnings() {
+    let dir = scratch("home-notes");
+    let spare = "MODULE Spare\n  PROC spare()\n    MoveJ pFromTask, v1000, fine, tool0;\n  ENDPROC\nENDMODULE\n";
+    // A user's folder named `home` is not a controller's HOME.
+    write(
+        &dir,
+        &[("b/HOME/Spare.mod", spare), ("home/u/Spare.mod", spare)],
+    );
+    let (code, out) = check(&dir);
+    assert_eq!(code, Some(0), "{out}");
+    insta::assert_snapshot!(out, @r"
+    b/HOME/Spare.mod:3:11: info[W101] no data named `pFromTask` is declared in this task or built in (if it is an I/O signal, give the controller's EIO.cfg) (unresolved-name)
+    home/u/Spare.mod:3:11: warning[W101] no data named `pFromTask` is declared in this task or built in (if it is an I/O signal, give the controller's EIO.cfg) (unresolved-name)
+    ");
+}

@@ -9,7 +9,8 @@
 use std::collections::BTreeMap;
 use std::path::Path;
 
-use rapid_analyzer::diagnostic::Severity;
+use rapid_analyzer::check::once::{FileFindings, per_task};
+use rapid_analyzer::diagnostic::{Diagnostic, Severity};
 use rapid_analyzer::rules::RULES;
 use rapid_analyzer::text::LineIndex;
 use rapid_analyzer::workspace::Workspace;
@@ -73,6 +74,234 @@ const TRUE_DEFECTS: &[(&str, &str, usize, &str)] = &[
     ),
 ];
 
+/// Warnings of the sample ([`in_sample`]) reviewed by hand: (path suffix,
+/// code, line, true?, why).
+const WARNING_SAMPLE: &[(&str, &str, usize, bool, &str)] = &[
+    (
+        "HOME/__RELBO__/FOUNDRY.mod",
+        "W101",
+        1017,
+        true,
+        "declared in the system module `HOME/__MODULI__/TEXT.sys`, which this program (its `.pgf`) does not list: the task's system modules are not here",
+    ),
+    (
+        "6700-132308_BACKUP_2022-12-15_STARTUP/RAPID/TASK4/SYSMOD/RRC_Control_Rx.sys",
+        "W101",
+        58,
+        true,
+        "`b_RRC_Com`, `n_RRC_R1_ChaNr`: declared in RRC_DataGlobal modules that other tasks of this backup have and TASK4 lacks; `r_RRC_CheckAndRecFrmClient` is declared nowhere in the corpus",
+    ),
+    (
+        "Camille_BACKUP_2023-01-11/RAPID/TASK6/SYSMOD/RRC_DataTask_Tx.sysx",
+        "W101",
+        93,
+        true,
+        "the record `RRC_Protocol` is declared in RRC_DataRecord, which this task lacks",
+    ),
+    (
+        "SDEBEUL__Kraker1/RAPID/TASK1/PROGMOD/mStation.mod",
+        "W101",
+        156,
+        true,
+        "an I/O signal: the corpus has no EIO.cfg, as the message says",
+    ),
+    (
+        "SDEBEUL__Kraker1/RAPID/TASK1/SYSMOD/mSettings_Gripper.sys",
+        "W101",
+        346,
+        true,
+        "two analog input signals: the corpus has no EIO.cfg, as the message says",
+    ),
+    (
+        "RW6-13_BACKUP/RAPID/TASK2/PROGMOD/RFL_Control_12.mod",
+        "W101",
+        159,
+        true,
+        "declared in RFL_GlobalData of TASK1 and TASK4; TASK2 has no module declaring it",
+    ),
+    (
+        "RW6-13_BACKUP/RAPID/TASK4/SYSMOD/RRC_DataGlobal_Ctrl.sys",
+        "W101",
+        130,
+        true,
+        "the record `RRC_Channel` is declared in TASK1's RRC_DataRecord; TASK4 has no such module",
+    ),
+    (
+        "RW6-13_BACKUP/RAPID/TASK5/PROGMOD/A042_Control_Tx.mod",
+        "W101",
+        66,
+        true,
+        "a `syncident` declared in the A042 data modules of TASK1 and TASK4; TASK5 has none",
+    ),
+    (
+        "RW6-13_BACKUP/RAPID/TASK5/PROGMOD/A067_Control_Sen.mod",
+        "W101",
+        96,
+        true,
+        "a `syncident` TASK5 declares in no module",
+    ),
+    (
+        "RW6-13_BACKUP/RAPID/TASK5/PROGMOD/A082_Control_Tx.mod",
+        "W101",
+        129,
+        true,
+        "a `syncident` TASK5 declares in no module",
+    ),
+    (
+        "RW6-13_BACKUP/RAPID/TASK5/PROGMOD/A083_Control_Tx.mod",
+        "W101",
+        108,
+        true,
+        "a `syncident` TASK5 declares in no module",
+    ),
+    (
+        "mjkkirschner__TORO/ClassLibrary1/ClassLibrary1/extra/robarchSetup.mod",
+        "E107",
+        18,
+        false,
+        "the folder holds generated test programs (`test0N_001.prg`) side by side with a setup module: not one task, so the shared `j1` is no clash",
+    ),
+    (
+        "1200-526406_BACKUP_2026-02-11-1959/RAPID/TASK8/PROGMOD/Head_MainModule.mod",
+        "W101",
+        226,
+        true,
+        "declared in Head_Camera.mod, which an earlier backup's TASK8 has and this one lacks",
+    ),
+    (
+        "1840_B3/RAPID/TASK2/PROGMOD/Rob2_MainModule.mod",
+        "W101",
+        1583,
+        true,
+        "declared in Rob2_TeachingData.mod, which other backups' TASK2 have and this one lacks",
+    ),
+    (
+        "beforeplanC/RAPID/TASK8/PROGMOD/Head_Command.mod",
+        "W101",
+        43,
+        true,
+        "`fnCoordToJoint` and `fnPoseToExtax` are declared in Head_Function.mod, which this backup's TASK8 lacks",
+    ),
+    (
+        "beforeplanC/RAPID/TASK8/PROGMOD/Head_MainModule.mod",
+        "W101",
+        225,
+        true,
+        "declared in Head_Camera.mod, which this backup's TASK8 lacks",
+    ),
+    (
+        "beforeplanC/RAPID/TASK8/PROGMOD/Head_MoveControl.mod",
+        "W101",
+        129,
+        true,
+        "declared in Head_Function.mod, which this backup's TASK8 lacks",
+    ),
+    (
+        "beforeplanC/RAPID/TASK9/PROGMOD/Static.mod",
+        "W101",
+        316,
+        false,
+        "`\\MecUnit:=ELM_X` names a mechanical unit (MOC.cfg); `GetMotorTorque`'s parameters are not in the catalogue, so the name is not known to be one and is not the note (I103) it should be",
+    ),
+    (
+        "T_ROB1/TCSupport/tcdevice.sys",
+        "W101",
+        103,
+        true,
+        "an I/O signal: the corpus has no EIO.cfg",
+    ),
+    (
+        "T_ROB1/TCSupport/tcdevice.sys",
+        "W101",
+        136,
+        true,
+        "an I/O signal: the corpus has no EIO.cfg",
+    ),
+    (
+        "RAPID/T_POS1/CalibDataModule.mod",
+        "W101",
+        50,
+        true,
+        "declared in T_ROB1's GlobalDataModule; T_POS1 has no module declaring it",
+    ),
+    (
+        "RAPID/T_POS1/TaskModule.mod",
+        "W101",
+        50,
+        true,
+        "the record is declared in T_ROB1's modules only; T_POS1 lacks it",
+    ),
+    (
+        "RAPID/T_ROB2/ErrorHandlingModule.mod",
+        "W101",
+        45,
+        true,
+        "declared nowhere in the corpus: declared in a module of the program that the checked files lack",
+    ),
+    (
+        "REHM/Source/RAPID/TASK5/PROGMOD/REHMProcessControlModule.mod",
+        "W101",
+        33,
+        true,
+        "declared nowhere in this add-in: declared in a module of the program that the checked files lack",
+    ),
+    (
+        "ZhongXun/Source/RAPID/TASK1/PROGMOD/ServiceModule.mod",
+        "W101",
+        183,
+        true,
+        "declared nowhere in the corpus: declared in a module of the program that the checked files lack",
+    ),
+    (
+        "ZhongXun/Source/RAPID/TASK1/PROGMOD/TestAutoCal.mod",
+        "W101",
+        19,
+        true,
+        "the record `caldata` is declared nowhere in the corpus: declared in a module of the program that the checked files lack",
+    ),
+    (
+        "zwj12__ZhongXunRapid/ApplSys/GoSafeUsr.sys",
+        "W101",
+        474,
+        true,
+        "declared nowhere in the corpus: declared in a module of the program that the checked files lack",
+    ),
+    (
+        "RAATCfg/RAPID/TASK1/PROGMOD/TestModule.mod",
+        "W101",
+        143,
+        true,
+        "declared nowhere in the corpus: declared in a module of the program that the checked files lack",
+    ),
+    (
+        "RAATCfg/RAPID/TASK1/PROGMOD/TestModule.mod",
+        "W101",
+        257,
+        true,
+        "declared nowhere in the corpus: declared in a module of the program that the checked files lack",
+    ),
+    (
+        "RAATCfg/RAPID/TASK1/SYSMOD/AutoCal2b.sys",
+        "W101",
+        171,
+        true,
+        "declared nowhere in the corpus: declared in a module of the program that the checked files lack",
+    ),
+];
+
+/// Is the finding at this place in the sample of warnings triaged by hand?
+/// One place in forty, by a hash of the place: the sample does not move
+/// when other findings come or go.
+fn in_sample(path: &str, line: usize, code: &str) -> bool {
+    // FNV-1a, 64 bits
+    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+    for b in format!("{path}:{line}:{code}").bytes() {
+        h ^= u64::from(b);
+        h = h.wrapping_mul(0x0000_0100_0000_01b3);
+    }
+    h % 40 == 0
+}
+
 /// Files whose text is not a valid RAPID module (truncated, merged or
 /// otherwise damaged): their syntax errors are real, and the checks that
 /// follow from them are not triaged one by one.
@@ -99,13 +328,36 @@ fn corpus_errors_are_true_defects() {
         ws.set_file(p, t.clone());
     }
     let lines: usize = loaded.modules.iter().map(|(_, t)| t.lines().count()).sum();
+    // Each file's findings, then each name a task lacks once per task, as
+    // `rapid check` reports them.
+    let keys: Vec<String> = loaded.modules.iter().map(|(p, _)| ws.task_key(p)).collect();
+    let mut all: Vec<Vec<Diagnostic>> = loaded
+        .modules
+        .iter()
+        .map(|(p, _)| ws.diagnostics(p).as_ref().clone())
+        .collect();
+    let mut files: Vec<FileFindings<'_>> = loaded
+        .modules
+        .iter()
+        .zip(&keys)
+        .zip(all.iter_mut())
+        .map(|(((path, text), task), diagnostics)| FileFindings {
+            task,
+            path,
+            text,
+            diagnostics,
+        })
+        .collect();
+    per_task(&mut files);
+    drop(files);
     let mut per_code: BTreeMap<(&str, Severity), (usize, usize)> = BTreeMap::new();
     let mut in_damaged = Vec::new();
     let mut damaged = Vec::new();
     let mut true_defects = Vec::new();
     let mut untriaged = Vec::new();
-    for (path, text) in &loaded.modules {
-        let diags = ws.diagnostics(path);
+    let mut default_warnings = 0;
+    let mut sample = Vec::new();
+    for ((path, text), diags) in loaded.modules.iter().zip(&all) {
         let syntax = diags
             .iter()
             .filter(|d| matches!(d.rule.code, "E001" | "E002" | "E003"))
@@ -118,10 +370,16 @@ fn corpus_errors_are_true_defects() {
         for d in diags.iter() {
             let entry = per_code.entry((d.rule.code, d.severity)).or_default();
             entry.0 += 1;
+            let (line, _) = index.human(d.range.start, text);
+            if d.severity == Severity::Warning && d.rule.default_on {
+                default_warnings += 1;
+                if in_sample(path, line, d.rule.code) {
+                    sample.push((path.as_str(), line, d.rule.code, d.message.clone()));
+                }
+            }
             if d.severity != Severity::Error {
                 continue;
             }
-            let (line, _) = index.human(d.range.start, text);
             if broken {
                 if !matches!(d.rule.code, "E001" | "E002" | "E003") {
                     in_damaged.push(format!(
@@ -159,14 +417,15 @@ fn corpus_errors_are_true_defects() {
          analyzer and the test fails.\n\n",
     );
     page.push_str(&format!(
-        "- files: {}\n- lines: {lines}\n- damaged files (syntax errors; their other findings are not triaged): {}\n- error-level findings outside damaged files: {} (true defects: {}, untriaged: {})\n\n",
+        "- files: {}\n- lines: {lines}\n- damaged files (syntax errors; their other findings are not triaged): {}\n- error-level findings outside damaged files: {} (true defects: {}, untriaged: {})\n- warnings of the rules on by default: {default_warnings} ({:.2} per 1,000 lines; the target is at most 5)\n\n",
         loaded.modules.len(),
         damaged.len(),
         true_defects.len() + untriaged.len(),
         true_defects.len(),
         untriaged.len(),
+        per_kloc(default_warnings),
     ));
-    page.push_str("Counts are per code and the severity reported (ambiguous globals are errors in a backup's task and warnings in a plain folder, whose grouping is a guess).\n\n| code | name | severity | count | per 1,000 lines | true defects (errors outside damaged files) |\n| --- | --- | --- | ---: | ---: | ---: |\n");
+    page.push_str("Counts are per code and the severity reported, as `rapid check` reports them (a name a task lacks once per task; ambiguous globals are errors in a backup's task and warnings in a plain folder, whose grouping is a guess; an unresolved name is a note in a `HOME/` module that no task here loads). Rules that are off by default are counted too, and marked.\n\n| code | name | on by default | severity | count | per 1,000 lines | true defects (errors outside damaged files) |\n| --- | --- | --- | --- | ---: | ---: | ---: |\n");
     for rule in RULES {
         for sev in [
             Severity::Error,
@@ -178,9 +437,10 @@ fn corpus_errors_are_true_defects() {
                 continue;
             };
             page.push_str(&format!(
-                "| {} | `{}` | {} | {n} | {:.2} | {} |\n",
+                "| {} | `{}` | {} | {} | {n} | {:.2} | {} |\n",
                 rule.code,
                 rule.name,
+                if rule.default_on { "yes" } else { "no" },
                 sev.as_str(),
                 per_kloc(*n),
                 if sev == Severity::Error {
@@ -190,6 +450,33 @@ fn corpus_errors_are_true_defects() {
                 }
             ));
         }
+    }
+    // The sample of warnings, each with its verdict.
+    let mut sampled = Vec::new();
+    let mut unjudged = Vec::new();
+    let mut true_in_sample = 0;
+    for (path, line, code, message) in &sample {
+        let judged = WARNING_SAMPLE
+            .iter()
+            .find(|(p, c, l, _, _)| path.ends_with(p) && c == code && l == line);
+        let row = format!("`{path}:{line}` {code}: {message}");
+        match judged {
+            Some((_, _, _, verdict, why)) => {
+                true_in_sample += usize::from(*verdict);
+                let verdict = if *verdict { "true" } else { "**false**" };
+                sampled.push(format!("{row} — {verdict}: {why}"));
+            }
+            None => unjudged.push(row),
+        }
+    }
+    page.push_str(&format!(
+        "\n## A sample of warnings, triaged\n\nThe warnings of the rules on by default whose place (file, line, code) hashes into one fortieth of the space: a sample that stays the same when other findings come or go. {} of {} are true ({:.0}%); the target is 9 in 10.\n\n",
+        true_in_sample,
+        sampled.len(),
+        100.0 * true_in_sample as f64 / sampled.len().max(1) as f64,
+    ));
+    for row in &sampled {
+        page.push_str(&format!("- {row}\n"));
     }
     page.push_str("\n## True defects\n\n");
     if true_defects.is_empty() {
@@ -226,6 +513,35 @@ fn corpus_errors_are_true_defects() {
             "docs/corpus-triage.md is stale: run `RAPID_BLESS=1 cargo test -p rapid-tests --test corpus_check`"
         );
     }
+    assert!(
+        unjudged.is_empty(),
+        "sampled warnings without a verdict in WARNING_SAMPLE:\n{}",
+        unjudged.join("\n")
+    );
+    let stale_sample: Vec<String> = WARNING_SAMPLE
+        .iter()
+        .filter(|(p, c, l, _, _)| {
+            !sample
+                .iter()
+                .any(|(path, line, code, _)| path.ends_with(p) && code == c && line == l)
+        })
+        .map(|(p, c, l, _, _)| format!("{p}:{l} {c}"))
+        .collect();
+    assert!(
+        stale_sample.is_empty(),
+        "WARNING_SAMPLE entries no longer in the sample (remove them):\n{}",
+        stale_sample.join("\n")
+    );
+    assert!(
+        per_kloc(default_warnings) <= 5.0,
+        "{default_warnings} warnings of the default rules: {:.2} per 1,000 lines, more than 5",
+        per_kloc(default_warnings)
+    );
+    assert!(
+        10 * true_in_sample >= 9 * sampled.len(),
+        "{true_in_sample} of {} sampled warnings are true: fewer than 9 in 10",
+        sampled.len()
+    );
     assert!(
         untriaged.is_empty(),
         "error-level findings not triaged as true defects:\n{}",

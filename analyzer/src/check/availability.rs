@@ -1,13 +1,11 @@
 //! Built-ins the task's controller may not have: an option that is not
 //! enabled (rule I102, once per name, with the other uses as related
-//! locations) or a RobotWare version that lacks them (rule W102).
+//! locations: [`super::once`]) or a RobotWare version that lacks them (rule W102).
 
-use std::collections::HashMap;
 use std::ops::Range;
 
 use super::{Cx, DataSym, RoutineSym};
 use crate::catalogue::{Availability, Origin};
-use crate::diagnostic::{Diagnostic, Related};
 use crate::rules;
 
 impl Cx<'_> {
@@ -55,46 +53,4 @@ impl Cx<'_> {
             }
         }
     }
-}
-
-/// Keeps the first report of each built-in that needs an option or another
-/// RobotWare (the diagnostics are sorted by position); the later uses become
-/// its related locations.
-pub(crate) fn once_per_name(diags: &mut Vec<Diagnostic>) {
-    let noted = |d: &Diagnostic| {
-        std::ptr::eq(d.rule, &rules::option_routine::RULE)
-            || std::ptr::eq(d.rule, &rules::builtin_version::RULE)
-    };
-    if !diags.iter().any(noted) {
-        return;
-    }
-    let mut first: HashMap<String, usize> = HashMap::new();
-    let mut later: Vec<(usize, Range<usize>)> = Vec::new();
-    let mut keep = Vec::with_capacity(diags.len());
-    for (i, d) in diags.iter().enumerate() {
-        if noted(d) {
-            match first.get(&d.message) {
-                Some(&f) => {
-                    later.push((f, d.range.clone()));
-                    keep.push(false);
-                    continue;
-                }
-                None => {
-                    first.insert(d.message.clone(), i);
-                }
-            }
-        }
-        keep.push(true);
-    }
-    for (f, range) in later {
-        if let Some(d) = diags.get_mut(f) {
-            d.related.push(Related {
-                file: None,
-                range,
-                message: "also used here".into(),
-            });
-        }
-    }
-    let mut k = keep.into_iter();
-    diags.retain(|_| k.next().unwrap_or(true));
 }

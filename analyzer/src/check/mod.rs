@@ -9,6 +9,7 @@ mod availability;
 mod calls;
 mod decls;
 mod exprs;
+pub mod once;
 mod shared;
 mod stmts;
 
@@ -306,52 +307,12 @@ pub fn merge_unit_check(task: &Task, unit: usize, results: Vec<ShareResult>) -> 
 }
 
 /// Sorts a unit's findings by position, drops those about text nested too
-/// deep to analyse ([`crate::nesting::keeps`]) and reports each name once: an
-/// unresolved name at its first use, with the other uses as related
-/// locations; an unconfigured signal at its first use; a built-in that needs
-/// an option or another RobotWare as [`availability::once_per_name`] does.
+/// deep to analyse ([`crate::nesting::keeps`]) and reports each name once
+/// ([`once::within_file`]).
 fn finish(u: &Unit, mut diags: Vec<Diagnostic>) -> Vec<Diagnostic> {
-    use crate::rules::{unconfigured_signal, unresolved_name};
-    let text = &u.text;
-    diags.retain(|d| crate::nesting::keeps(text, u.cuts(), d));
+    diags.retain(|d| crate::nesting::keeps(&u.text, u.cuts(), d));
     diags.sort_by_key(|d| (d.range.start, d.range.end));
-    let once = |d: &Diagnostic| {
-        std::ptr::eq(d.rule, &unresolved_name::RULE)
-            || std::ptr::eq(d.rule, &unconfigured_signal::RULE)
-    };
-    // The first diagnostic of each (rule, name), by index into `diags`.
-    let mut first: HashMap<(&'static str, String), usize> = HashMap::new();
-    let mut keep = vec![true; diags.len()];
-    let mut uses: Vec<(usize, Range<usize>)> = Vec::new();
-    for (i, d) in diags.iter().enumerate() {
-        if !once(d) {
-            continue;
-        }
-        let name = fold(text.get(d.range.clone()).unwrap_or_default());
-        match first.entry((d.rule.code, name)) {
-            std::collections::hash_map::Entry::Occupied(e) => {
-                keep[i] = false;
-                if std::ptr::eq(d.rule, &unresolved_name::RULE) {
-                    uses.push((*e.get(), d.range.clone()));
-                }
-            }
-            std::collections::hash_map::Entry::Vacant(e) => {
-                e.insert(i);
-            }
-        }
-    }
-    for (at, range) in uses {
-        if let Some(d) = diags.get_mut(at) {
-            d.related.push(Related {
-                file: None,
-                range,
-                message: "used here too".to_owned(),
-            });
-        }
-    }
-    let mut keep = keep.into_iter();
-    diags.retain(|_| keep.next().unwrap_or(true));
-    availability::once_per_name(&mut diags);
+    once::within_file(&mut diags, &u.text);
     diags
 }
 
@@ -957,12 +918,16 @@ impl<'t> Cx<'t> {
 
     /// Reports a name nothing declares: an error in a complete backup's
     /// task (every module is here, so the controller would refuse to load
-    /// it), a warning anywhere else (the declaration may be in a module or
-    /// an option that is not part of the checked files).
+    /// it), a note in `HOME/` modules that no task here loads (the task
+    /// they are loaded into is not here), a warning anywhere else (the
+    /// declaration may be in a module or an option that is not part of the
+    /// checked files).
     pub(crate) fn report_unresolved(&mut self, range: Range<usize>, message: String) {
         let mut d = Diagnostic::new(&crate::rules::unresolved_name::RULE, range, message);
         if self.task.complete {
             d.severity = crate::diagnostic::Severity::Error;
+        } else if self.task.loaded_elsewhere {
+            d.severity = crate::diagnostic::Severity::Info;
         }
         self.report_with(d);
     }

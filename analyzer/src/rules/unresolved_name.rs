@@ -6,10 +6,13 @@ crate::declare_rule! {
     /// modules, in the built-in catalogue, or (for signals) in the I/O
     /// configuration. It may be a typing mistake, or it may be declared in a module
     /// or a RobotWare option that is not part of the checked files; this is why it
-    /// is a warning, reported once per name and file with its other uses as related
-    /// locations. In a task of a complete controller backup (the backup has its
-    /// `SYSPAR`, every module of the task could be read, and every module `SYS.cfg`
-    /// loads into the task is there) nothing can be missing, and it is an error.
+    /// is a warning, reported once per name with its other uses as related
+    /// locations (once per file in the editor, once per task in `rapid check`). In
+    /// a task of a complete controller backup (the backup has its `SYSPAR`, every
+    /// module of the task could be read, and every module `SYS.cfg` loads into the
+    /// task is there) nothing can be missing, and it is an error. In a module of a
+    /// controller's `HOME/` folder that no task here loads, the task it is loaded
+    /// into at run time is not among the checked files, and it is a note.
     /// The message proposes close matches of the same kind when there are any.
     ///
     /// ### Why

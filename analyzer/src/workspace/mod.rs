@@ -349,9 +349,13 @@ impl Workspace {
         // so cached file and statement results are dropped when it changes.
         let config = config_hash(signals.as_ref(), &mecunits);
         let complete = grouping == Grouping::Backup && self.is_complete(&key);
+        let loaded_elsewhere = grouping == Grouping::Folder
+            && !units.is_empty()
+            && units.iter().all(|u| crate::layout::in_home(&u.path));
         let mut task = Task::new(key.clone(), units, signals);
         task.grouping = grouping;
         task.complete = complete;
+        task.loaded_elsewhere = loaded_elsewhere;
         let controller = self.controller_of_task(&key);
         task.set_catalogue(&crate::catalogue::Selection::new(
             controller.robotware,

@@ -601,6 +601,32 @@ pub fn check_files(
             d
         })
         .collect();
+    // A name the checked files lack is one finding per task, with every
+    // other use as a related location.
+    {
+        let mut findings: Vec<(
+            &Arc<rapid_analyzer::task::Task>,
+            &Arc<Unit>,
+            Vec<Diagnostic>,
+        )> = jobs
+            .iter()
+            .filter_map(|(task, u)| Some((*task, *u, by_path.remove(&u.path)?)))
+            .collect();
+        let mut files: Vec<rapid_analyzer::check::once::FileFindings<'_>> = findings
+            .iter_mut()
+            .map(
+                |(task, u, diagnostics)| rapid_analyzer::check::once::FileFindings {
+                    task: &task.key,
+                    path: &u.path,
+                    text: &u.text,
+                    diagnostics,
+                },
+            )
+            .collect();
+        rapid_analyzer::check::once::per_task(&mut files);
+        drop(files);
+        by_path.extend(findings.into_iter().map(|(_, u, d)| (u.path.clone(), d)));
+    }
     lap("checking (analyzer)", &mut clock);
     // Freeing every tree and index costs tens of milliseconds on a large
     // project and the process ends soon after: let the exit reclaim them.

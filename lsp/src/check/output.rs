@@ -128,10 +128,11 @@ pub fn human(out: &mut impl Write, report: &Report, styled: bool) -> io::Result<
     };
     let mut counts = [0usize; 4];
     let mut fixable = 0;
+    let by_path = checked_by_path(report);
     for (c, d) in all(report) {
         counts[d.severity as usize] += 1;
         fixable += usize::from(d.fix.as_ref().is_some_and(|f| f.safe));
-        let rendered = render_one(&renderer, c, d);
+        let rendered = render_one(&renderer, c, d, &related_note(&by_path, c, d));
         writeln!(out, "{rendered}\n")?;
     }
     let [hints, infos, warnings, errors] = counts;
@@ -166,7 +167,7 @@ pub fn human(out: &mut impl Write, report: &Report, styled: bool) -> io::Result<
 
 /// One diagnostic with the source lines it covers (at most a few), so a
 /// 9,000-line module is not handed whole to the renderer for each finding.
-fn render_one(renderer: &Renderer, c: &Checked, d: &Diagnostic) -> String {
+fn render_one(renderer: &Renderer, c: &Checked, d: &Diagnostic, note: &str) -> String {
     const MOST_LINES: usize = 6;
     let file = &c.file;
     let first = file.lines.line_col(d.range.start).line;
@@ -215,13 +216,68 @@ fn render_one(renderer: &Renderer, c: &Checked, d: &Diagnostic) -> String {
     };
     let path = display_path(&file.path);
     let title = format!("{} [{}]", d.message, d.rule.name);
-    let report = [level.primary_title(title).id(d.rule.code).element(
+    let mut group = level.primary_title(title).id(d.rule.code).element(
         Snippet::source(&source)
             .line_start(first + 1)
             .path(path)
             .annotation(AnnotationKind::Primary.span(span_start..span_end)),
-    )];
-    renderer.render(&report)
+    );
+    if !note.is_empty() {
+        group = group.element(Level::NOTE.message(note));
+    }
+    renderer.render(&[group])
+}
+
+/// The checked files by the name the analyzer knows them by (for related
+/// locations in other files).
+fn checked_by_path(report: &Report) -> HashMap<String, &Checked> {
+    report
+        .checked
+        .iter()
+        .map(|c| (super::unit_path(&c.file.path), c))
+        .collect()
+}
+
+/// The related locations of a finding as one note: `used here too: 12:5,
+/// Lib.mod:40:9 and 7 more` (a place in the finding's own file is its line
+/// and column); places in files that were not checked are left out.
+fn related_note(by_path: &HashMap<String, &Checked>, c: &Checked, d: &Diagnostic) -> String {
+    const SHOWN: usize = 3;
+    let mut groups: Vec<(&str, Vec<String>)> = Vec::new();
+    for r in &d.related {
+        let target = match &r.file {
+            None => c,
+            Some(path) => match by_path.get(path.as_str()) {
+                Some(t) => t,
+                None => continue,
+            },
+        };
+        let (line, column) = target.file.human(r.range.start);
+        // In the finding's own file, the line and column say enough.
+        let place = if std::ptr::eq(target, c) {
+            format!("{line}:{column}")
+        } else {
+            format!("{}:{line}:{column}", display_path(&target.file.path))
+        };
+        match groups.iter_mut().find(|(m, _)| *m == r.message) {
+            Some((_, places)) => places.push(place),
+            None => groups.push((&r.message, vec![place])),
+        }
+    }
+    let mut notes = Vec::new();
+    for (message, places) in groups {
+        let more = places.len().saturating_sub(SHOWN);
+        let mut shown = places
+            .into_iter()
+            .take(SHOWN)
+            .collect::<Vec<_>>()
+            .join(", ");
+        if more > 0 {
+            let _ = write!(shown, " and {more} more");
+        }
+        notes.push(format!("{message}: {shown}"));
+    }
+    notes.join("; ")
 }
 
 /// The most bytes of source shown with one finding (a long line is cut
@@ -395,11 +451,7 @@ pub fn sarif(out: &mut impl Write, report: &Report, root: &Path) -> io::Result<(
     let mut results = Vec::new();
     let mut seen: BTreeMap<u64, usize> = BTreeMap::new();
     let mut hashes: HashMap<(*const Checked, &str, usize), u64> = HashMap::new();
-    let by_path: std::collections::HashMap<String, &Checked> = report
-        .checked
-        .iter()
-        .map(|c| (super::unit_path(&c.file.path), c))
-        .collect();
+    let by_path = checked_by_path(report);
     for (c, d) in all(report) {
         let l = locate(c, d);
         let (uri, relative) = relative_uri(&c.file.path, root);

@@ -1,0 +1,138 @@
+//! Findings about a name rather than a place are reported once: an
+//! unresolved name, an unconfigured signal, a built-in that needs an option
+//! or another RobotWare. The first use carries the finding; for an
+//! unresolved name, the other uses are its related locations (where to
+//! fix them all). Within a file ([`within_file`],
+//! part of every check) and, for a whole task's report, across its files
+//! ([`per_task`]).
+
+use std::collections::HashMap;
+use std::ops::Range;
+
+use crate::diagnostic::{Diagnostic, Related};
+use crate::names::fold;
+use crate::rules;
+
+/// Is this a finding about a name, reported once?
+fn is_about_a_name(d: &Diagnostic) -> bool {
+    [
+        &rules::unresolved_name::RULE,
+        &rules::unconfigured_signal::RULE,
+        &rules::option_routine::RULE,
+        &rules::builtin_version::RULE,
+    ]
+    .iter()
+    .any(|r| std::ptr::eq(d.rule, *r))
+}
+
+fn is_unresolved(d: &Diagnostic) -> bool {
+    std::ptr::eq(d.rule, &rules::unresolved_name::RULE)
+}
+
+/// What makes two findings one: the rule and the name (the text of the
+/// finding's range, case folded).
+fn key(d: &Diagnostic, text: &str) -> (&'static str, String) {
+    (
+        d.rule.code,
+        fold(text.get(d.range.clone()).unwrap_or_default()),
+    )
+}
+
+/// The later use of a name, as a related location of its finding.
+fn also_here(file: Option<String>, range: Range<usize>) -> Related {
+    Related {
+        file,
+        range,
+        message: "used here too".to_owned(),
+    }
+}
+
+/// Keeps the first finding of each name in a unit's findings (sorted by
+/// position); the later uses become its related locations.
+pub(crate) fn within_file(diags: &mut Vec<Diagnostic>, text: &str) {
+    let mut first: HashMap<(&'static str, String), usize> = HashMap::new();
+    let mut keep = vec![true; diags.len()];
+    let mut uses: Vec<(usize, Range<usize>)> = Vec::new();
+    for (i, d) in diags.iter().enumerate() {
+        if !is_about_a_name(d) {
+            continue;
+        }
+        match first.entry(key(d, text)) {
+            std::collections::hash_map::Entry::Occupied(e) => {
+                keep[i] = false;
+                if is_unresolved(d) {
+                    uses.push((*e.get(), d.range.clone()));
+                }
+            }
+            std::collections::hash_map::Entry::Vacant(e) => {
+                e.insert(i);
+            }
+        }
+    }
+    for (at, range) in uses {
+        if let Some(d) = diags.get_mut(at) {
+            d.related.push(also_here(None, range));
+        }
+    }
+    let mut keep = keep.into_iter();
+    diags.retain(|_| keep.next().unwrap_or(true));
+}
+
+/// One checked file of a task report: its task's key, its path and text,
+/// and its findings ([`within_file`] already applied).
+pub struct FileFindings<'a> {
+    pub task: &'a str,
+    pub path: &'a str,
+    pub text: &'a str,
+    pub diagnostics: &'a mut Vec<Diagnostic>,
+}
+
+/// Keeps the first finding of each name per task, the files taken in path
+/// order: a finding of a later file becomes related locations (its own
+/// place and its related ones) of the first file's. `rapid check` reports
+/// this way, so that a name a partial project lacks is one finding, not one
+/// per file.
+pub fn per_task(files: &mut [FileFindings<'_>]) {
+    files.sort_by(|a, b| (a.task, a.path).cmp(&(b.task, b.path)));
+    // (task, rule, name) -> (file index, diagnostic index)
+    let mut first: HashMap<(&str, &'static str, String), (usize, usize)> = HashMap::new();
+    let mut moved: Vec<((usize, usize), Vec<Related>)> = Vec::new();
+    for (f, file) in files.iter_mut().enumerate() {
+        let path = file.path;
+        let mut i = 0;
+        while i < file.diagnostics.len() {
+            let d = &file.diagnostics[i];
+            if !is_about_a_name(d) {
+                i += 1;
+                continue;
+            }
+            let (code, name) = key(d, file.text);
+            match first.entry((file.task, code, name)) {
+                std::collections::hash_map::Entry::Occupied(e) => {
+                    let d = file.diagnostics.remove(i);
+                    if !is_unresolved(&d) {
+                        continue;
+                    }
+                    let mut related = vec![also_here(Some(path.to_owned()), d.range)];
+                    related.extend(d.related.into_iter().map(|r| Related {
+                        file: r.file.or_else(|| Some(path.to_owned())),
+                        ..r
+                    }));
+                    moved.push((*e.get(), related));
+                }
+                std::collections::hash_map::Entry::Vacant(e) => {
+                    e.insert((f, i));
+                    i += 1;
+                }
+            }
+        }
+    }
+    for ((f, i), related) in moved {
+        if let Some(d) = files
+            .get_mut(f)
+            .and_then(|file| file.diagnostics.get_mut(i))
+        {
+            d.related.extend(related);
+        }
+    }
+}
