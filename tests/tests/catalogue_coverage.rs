@@ -652,9 +652,12 @@ enum Space {
     Routine,
 }
 
-/// The reviewed data and type names: (repository, namespace, lower-case name) -> group;
+/// A reviewed name: (repository, namespace, lower-case name).
+type Key = (String, Space, String);
+
+/// The reviewed data and type names: key -> group;
 /// and the list's defects (a name listed twice, a group without a note or names).
-fn reviewed_index() -> (BTreeMap<(String, Space, String), usize>, Vec<String>) {
+fn reviewed_index() -> (BTreeMap<Key, usize>, Vec<String>) {
     let mut index = BTreeMap::new();
     let mut twice = Vec::new();
     for (i, group) in REVIEWED.iter().enumerate() {
@@ -706,7 +709,7 @@ fn unresolved_names_are_reviewed_gaps_never_builtins() {
     let mut total = 0usize;
     let mut builtin = BTreeMap::new();
     let mut unaccounted: BTreeMap<String, usize> = BTreeMap::new();
-    let mut matched: BTreeMap<(String, Space, String), usize> = BTreeMap::new();
+    let mut matched: BTreeMap<Key, usize> = BTreeMap::new();
     let mut routine_repos: BTreeMap<&str, usize> = BTreeMap::new();
     for (path, _) in &loaded.modules {
         let repo = path.split('/').next().unwrap_or_default();
