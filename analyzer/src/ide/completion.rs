@@ -17,7 +17,8 @@ use crate::names::{fold, same};
 use crate::task::{Item, Task};
 use crate::ty::Ty;
 
-/// A catalogue view's names (folded) and signatures, computed once per view.
+/// A catalogue view's names (folded) and details (signatures and origin
+/// notes), computed once per view.
 struct Builtins {
     instructions: Vec<(String, String)>,
     functions: Vec<(String, String)>,
@@ -40,28 +41,39 @@ fn builtins(cat: &'static Catalogue) -> std::sync::Arc<Builtins> {
         instructions: cat
             .instructions
             .iter()
-            .map(|r| (fold(&r.name), r.signature()))
+            .map(|r| (fold(&r.name), detail_of(cat, r.signature(), &r.origin)))
             .collect(),
         functions: cat
             .functions
             .iter()
-            .map(|r| (fold(&r.name), r.signature()))
+            .map(|r| (fold(&r.name), detail_of(cat, r.signature(), &r.origin)))
             .collect(),
         datatypes: cat
             .datatypes
             .iter()
-            .map(|t| (fold(&t.name), t.signature()))
+            .map(|t| (fold(&t.name), detail_of(cat, t.signature(), &t.origin)))
             .collect(),
         data: cat
             .data
             .iter()
-            .map(|d| (fold(&d.name), d.signature()))
+            .map(|d| (fold(&d.name), detail_of(cat, d.signature(), &d.origin)))
             .collect(),
     });
     if let Ok(mut map) = cache.lock() {
         map.insert(key, built.clone());
     }
     built
+}
+
+/// A built-in's detail: its signature, then where it comes from when that
+/// matters (a later RobotWare, an option, what this controller lacks).
+fn detail_of(cat: &Catalogue, signature: String, origin: &crate::catalogue::Origin) -> String {
+    let notes = super::hover::origin_notes(cat, origin);
+    if notes.is_empty() {
+        signature
+    } else {
+        format!("{signature}  ({})", notes.join("; "))
+    }
 }
 
 /// Builds what every completion list shares (the built-ins with their

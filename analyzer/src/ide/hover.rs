@@ -7,6 +7,7 @@ use tree_sitter::Node;
 
 use super::HoverResult;
 use super::resolve::{Def, name_at, resolve};
+use crate::catalogue::{Availability, Catalogue, Origin, Version};
 use crate::items::RoutineKind;
 use crate::task::{Item, Task};
 
@@ -89,6 +90,7 @@ pub(crate) fn describe(task: &Task, def: &Def<'_>) -> Option<String> {
         Def::BuiltinRoutine(r) => {
             out.push_str(&code(&r.signature()));
             push_doc(&mut out, &r.summary, &r.doc);
+            push_origin(&mut out, task.catalogue, &r.origin);
         }
         Def::BuiltinParam(r, i) => {
             let p = r.params.get(*i)?;
@@ -99,19 +101,23 @@ pub(crate) fn describe(task: &Task, def: &Def<'_>) -> Option<String> {
             let opt = if p.optional { "\\" } else { "" };
             out.push_str(&code(&format!("{opt}{mode}{} {}", p.ty, p.name)));
             let _ = write!(out, "\n\nparameter of `{}`", r.name);
+            push_added(&mut out, p.since);
         }
         Def::BuiltinDatum(d) => {
             out.push_str(&code(&d.signature()));
             push_doc(&mut out, &d.summary, "");
+            push_origin(&mut out, task.catalogue, &d.origin);
         }
         Def::BuiltinType(t) => {
             out.push_str(&code(&t.signature()));
             push_doc(&mut out, &t.summary, &t.doc);
+            push_origin(&mut out, task.catalogue, &t.origin);
         }
         Def::BuiltinComponent(t, i) => {
             let c = t.components.get(*i)?;
             out.push_str(&code(&format!("{} {}", c.ty, c.name)));
             let _ = write!(out, "\n\ncomponent of `{}`", t.name);
+            push_added(&mut out, c.since);
         }
         Def::Signal(name, ty) => {
             out.push_str(&code(&format!("{ty} {name}")));
@@ -187,6 +193,60 @@ pub(crate) fn describe(task: &Task, def: &Def<'_>) -> Option<String> {
         }
     }
     Some(out)
+}
+
+/// Where a built-in comes from, for people: its RobotWare versions when it is
+/// not in every version, the option package that brings it, and what the
+/// task's controller (`[controller]` in `rapid.toml`, or a backup's
+/// `BACKINFO`) lacks of it. Empty for a base built-in of every version.
+pub(crate) fn origin_notes(cat: &Catalogue, origin: &Origin) -> Vec<String> {
+    let mut notes = Vec::new();
+    if origin.since > BASELINE {
+        notes.push(format!("RobotWare {} and later", origin.since));
+    }
+    if let Some(until) = origin.until {
+        notes.push(format!("removed in RobotWare {until}"));
+    }
+    let availability = cat.availability(origin);
+    if let Some(id) = &origin.package {
+        let name = cat.package(id).map_or(id.as_str(), |p| p.name.as_str());
+        if matches!(availability, Availability::NeedsOption(_)) {
+            notes.push(format!("option {name}, not enabled here"));
+        } else {
+            notes.push(format!("option {name}"));
+        }
+    }
+    match availability {
+        Availability::Newer { since, selected } => {
+            notes.push(format!("not in RobotWare {selected}: added in {since}"));
+        }
+        Availability::Removed { until, selected } => {
+            notes.push(format!("not in RobotWare {selected}: removed in {until}"));
+        }
+        Availability::Yes | Availability::NeedsOption(_) => {}
+    }
+    notes
+}
+
+/// The first version of the catalogue's entries whose first RobotWare is not
+/// established (`since = "5.0"`): not worth saying.
+const BASELINE: Version = Version::new(5, 0);
+
+fn push_origin(out: &mut String, cat: &Catalogue, origin: &Origin) {
+    let notes = origin_notes(cat, origin);
+    if !notes.is_empty() {
+        out.push_str("\n\n*");
+        out.push_str(&notes.join("; "));
+        out.push('*');
+    }
+}
+
+/// A parameter or component that a later RobotWare added. (A view of an
+/// older controller has no such parameter or component.)
+fn push_added(out: &mut String, since: Option<Version>) {
+    if let Some(since) = since {
+        let _ = write!(out, "\n\n*added in RobotWare {since}*");
+    }
 }
 
 fn push_doc(out: &mut String, summary: &str, doc: &str) {

@@ -292,3 +292,44 @@ fn labels_traps_and_declaration_values() {
     let items = labels(&in_proc("    VAR speeddata s := $0"));
     assert_eq!(items.first().map(|i| i.0.as_str()), Some("vSlow"));
 }
+
+#[test]
+fn builtin_details_say_their_robotware_versions_and_option() {
+    let (mut task, unit, offset) = fixture(&in_proc("    count := $0"));
+    let detail = |task: &crate::task::Task, label: &str| -> String {
+        completions(task, unit, offset)
+            .into_iter()
+            .find(|i| i.label == label)
+            .and_then(|i| i.detail)
+            .unwrap_or_default()
+    };
+    assert_eq!(detail(&task, "Abs"), "FUNC num Abs(num Input)");
+    assert!(
+        detail(&task, "StrFormat").ends_with("  (RobotWare 7.0 and later)"),
+        "{}",
+        detail(&task, "StrFormat")
+    );
+    assert!(
+        detail(&task, "EGMGetState").ends_with(
+            "  (RobotWare 6.00 and later; option Externally Guided Motion (EGM), not enabled here)"
+        ),
+        "{}",
+        detail(&task, "EGMGetState")
+    );
+    task.set_catalogue(&crate::catalogue::Selection::new(
+        Some(crate::catalogue::Version::new(6, 8)),
+        Vec::new(),
+    ));
+    assert!(
+        detail(&task, "StrFormat").ends_with("; not in RobotWare 6.08: added in 7.0)"),
+        "{}",
+        detail(&task, "StrFormat")
+    );
+    assert!(
+        detail(&task, "EGMGetState").ends_with(
+            "(RobotWare 6.00 and later; option Externally Guided Motion (EGM), not enabled here)"
+        ),
+        "{}",
+        detail(&task, "EGMGetState")
+    );
+}

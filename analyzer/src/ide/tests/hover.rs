@@ -135,3 +135,68 @@ fn literal_initial_values_are_not_repeated() {
         "{h}"
     );
 }
+
+/// The hover of `src` in a task whose controller runs `robotware` with `options`.
+fn hover_on(src: &str, robotware: Option<(u16, u16)>, options: &[&str]) -> String {
+    let (mut task, unit, offset) = fixture(src);
+    task.set_catalogue(&crate::catalogue::Selection::new(
+        robotware.map(|(major, minor)| crate::catalogue::Version::new(major, minor)),
+        options.iter().map(|o| (*o).to_owned()),
+    ));
+    hover(&task, unit, offset)
+        .map(|h| h.markdown)
+        .unwrap_or_default()
+}
+
+#[test]
+fn builtins_say_their_robotware_versions_and_option() {
+    // A base built-in of every version says nothing of versions.
+    let h = hover_text(
+        "MODULE m\n  PROC main()\n    Mo$0veL p, v100, fine, tool0;\n  ENDPROC\nENDMODULE\n",
+    );
+    assert!(!h.contains("RobotWare") && !h.contains("option"), "{h}");
+    let format =
+        "MODULE m\n  PROC main()\n    TPWrite StrFor$0mat(\"{1}\");\n  ENDPROC\nENDMODULE\n";
+    let h = hover_text(format);
+    assert!(h.ends_with("\n\n*RobotWare 7.0 and later*"), "{h}");
+    let h = hover_on(format, Some((6, 8)), &[]);
+    assert!(
+        h.ends_with("\n\n*RobotWare 7.0 and later; not in RobotWare 6.08: added in 7.0*"),
+        "{h}"
+    );
+    assert_eq!(
+        hover_on(format, Some((7, 1)), &[]),
+        hover_text(format),
+        "a controller that has it"
+    );
+    let egm =
+        "MODULE m\n  VAR egmident id;\n  PROC main()\n    EGMRe$0set id;\n  ENDPROC\nENDMODULE\n";
+    let h = hover_text(egm);
+    assert!(
+        h.ends_with(
+            "\n\n*RobotWare 6.00 and later; option Externally Guided Motion (EGM), not enabled here*"
+        ),
+        "{h}"
+    );
+    let h = hover_on(egm, Some((6, 15)), &["arc"]);
+    assert!(h.ends_with("(EGM), not enabled here*"), "{h}");
+    let h = hover_on(egm, Some((6, 15)), &["egm"]);
+    assert!(
+        h.ends_with("\n\n*RobotWare 6.00 and later; option Externally Guided Motion (EGM)*"),
+        "{h}"
+    );
+}
+
+#[test]
+fn parameters_added_later_say_so() {
+    let src = "MODULE m\n  VAR egmident id;\n  PROC main()\n    EGMSetupUC ROB_1, id, \"default\", \"dev\" \\AP$0TR;\n  ENDPROC\nENDMODULE\n";
+    let h = hover_text(src);
+    assert!(
+        h.contains("parameter of `EGMSetupUC`") && h.ends_with("\n\n*added in RobotWare 6.07*"),
+        "{h}"
+    );
+    // A controller that has it says the same; an older one has no such
+    // parameter (its view drops it).
+    let h = hover_on(src, Some((6, 15)), &["egm"]);
+    assert!(h.ends_with("\n\n*added in RobotWare 6.07*"), "{h}");
+}
