@@ -437,6 +437,10 @@ pub struct Task {
     /// Mechanical units configured for this task (`MOC.cfg`), folded; they
     /// are `mecunit` data.
     pub mecunits: std::collections::HashSet<String>,
+    /// The `taskid` data RobotWare declares for each task of the controller
+    /// (the task's name and `Id`: `T_ROB1Id`), folded: from `SYS.cfg`'s
+    /// tasks and the backup's task folders named after their task.
+    pub task_ids: std::collections::HashSet<String>,
     /// Combined interface hash of every unit, for cache invalidation.
     pub interface: u64,
     /// Combined [`Unit::constants`] of every unit.
@@ -530,6 +534,7 @@ impl Task {
             grouping: Grouping::Folder,
             complete: false,
             loaded_elsewhere: false,
+            task_ids: Default::default(),
             owner: None,
             excluded: Vec::new(),
             clashing: Default::default(),

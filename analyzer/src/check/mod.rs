@@ -842,6 +842,9 @@ impl<'t> Cx<'t> {
         if self.task.mecunits.contains(key) {
             return Some(DataSym::Signal("mecunit"));
         }
+        if self.task.task_ids.contains(key) {
+            return Some(DataSym::Signal("taskid"));
+        }
         None
     }
 

@@ -3,9 +3,11 @@ crate::declare_rule! {
     ///
     /// ### What it checks
     /// A data object, routine or data type that is declared nowhere in the task's
-    /// modules, in the built-in catalogue, or (for signals) in the I/O
-    /// configuration. It may be a typing mistake, or it may be declared in a module
-    /// or a RobotWare option that is not part of the checked files; this is why it
+    /// modules, in the built-in catalogue, or in the controller's configuration
+    /// (signals from `EIO.cfg`, mechanical units from `MOC.cfg`, the `taskid`
+    /// RobotWare declares for each task, such as `T_ROB1Id`, from `SYS.cfg` or the
+    /// backup's task folders). It may be a typing mistake, or it may be declared
+    /// in a module or a RobotWare option that is not part of the checked files; this is why it
     /// is a warning, reported once per name with its other uses as related
     /// locations (once per file in the editor, once per task in `rapid check`). In
     /// a task of a complete controller backup (the backup has its `SYSPAR`, every

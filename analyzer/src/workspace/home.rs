@@ -120,7 +120,7 @@ impl Workspace {
 
     /// The keys of the task folders of backup `root` that hold modules here,
     /// in order.
-    fn backup_task_keys(&self, root: &str) -> Vec<String> {
+    pub(super) fn backup_task_keys(&self, root: &str) -> Vec<String> {
         let mut keys: Vec<String> = self
             .units
             .keys()
@@ -182,7 +182,7 @@ impl Workspace {
 }
 
 /// The backup folder of a configuration file in its `SYSPAR/` folder.
-fn syspar_root(path: &str) -> Option<&str> {
+pub(super) fn syspar_root(path: &str) -> Option<&str> {
     let normal = path.replace('\\', "/");
     let (dir, _) = normal.rsplit_once('/')?;
     let (parent, last) = dir.rsplit_once('/').unwrap_or(("", dir));

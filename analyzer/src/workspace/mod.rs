@@ -362,6 +362,16 @@ impl Workspace {
             controller.options,
         ));
         task.mecunits = mecunits;
+        task.task_ids = self.task_ids_for(&key);
+        // Names resolve through them: the interface covers them too.
+        let mut ids: Vec<&String> = task.task_ids.iter().collect();
+        ids.sort();
+        task.interface ^= {
+            use std::hash::{Hash, Hasher};
+            let mut h = std::collections::hash_map::DefaultHasher::new();
+            ids.hash(&mut h);
+            h.finish()
+        };
         task.interface ^= config;
         if let Some(controller) = controller_of(&key).filter(|_| grouping == Grouping::Backup) {
             let (shared, hash) = match self.controllers.get(controller) {
@@ -420,6 +430,37 @@ impl Workspace {
                 }
             })
             .collect()
+    }
+
+    /// The `taskid` data of the controller a backup task `key` belongs to
+    /// (folded `<task name>id`): its `SYS.cfg` tasks, and its task folders
+    /// named after a task (`T_ROB1`; `TASKn` folders are numbered, not
+    /// named). Empty for a task outside a backup.
+    fn task_ids_for(&self, key: &str) -> HashSet<String> {
+        let mut ids = HashSet::new();
+        if crate::layout::controller_of(key).is_none() {
+            return ids;
+        }
+        let Some(root) = crate::layout::backup_root(key) else {
+            return ids;
+        };
+        let mut names: Vec<String> = self
+            .configs
+            .iter()
+            .filter(|(p, _)| home::syspar_root(p) == Some(root))
+            .flat_map(|(_, c)| c.tasks.iter().cloned())
+            .collect();
+        names.extend(self.backup_task_keys(root).iter().filter_map(|k| {
+            let last = k.rsplit('/').next()?;
+            let numbered = last.len() > 4
+                && last[..4].eq_ignore_ascii_case("task")
+                && last[4..].bytes().all(|b| b.is_ascii_digit());
+            (!numbered).then(|| last.to_owned())
+        }));
+        for name in names {
+            ids.insert(crate::names::fold(&format!("{name}Id")));
+        }
+        ids
     }
 
     /// The configuration that applies to a task: its signals (`None` when

@@ -146,3 +146,21 @@ fn results_are_reused_until_the_task_interface_changes() {
     assert_eq!(again.len(), 1, "{again:?}");
     assert_eq!(again[0].rule.name, "unresolved-name");
 }
+
+#[test]
+fn the_task_ids_of_a_backup_come_from_sys_cfg() {
+    let mut ws = Workspace::new();
+    ws.set_file(
+        "b/RAPID/TASK1/PROGMOD/M.mod",
+        "MODULE M\n  VAR taskid t;\n  PROC main()\n    t := T_PAINTId;\n    t := T_GLUEId;\n  ENDPROC\nENDMODULE\n".into(),
+    );
+    let before = ws.diagnostics("b/RAPID/TASK1/PROGMOD/M.mod");
+    assert_eq!(before.len(), 2, "{before:?}");
+    ws.set_config(
+        "b/SYSPAR/SYS.cfg",
+        "SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n\n  -Name \"T_PAINT\" -Type \"NORMAL\"\n",
+    );
+    let after = ws.diagnostics("b/RAPID/TASK1/PROGMOD/M.mod");
+    assert_eq!(after.len(), 1, "{after:?}");
+    assert!(after[0].message.contains("T_GLUEId"), "{after:?}");
+}
