@@ -68,17 +68,14 @@ export async function debugSteps(ctx) {
   await page.goto(`http://127.0.0.1:${port}/?folder=${encodeURIComponent(ws)}`);
   await page.waitForSelector(".monaco-workbench");
   await page.waitForTimeout(1500);
+  // from the Explorer, by mouse: a webview keeps the keys (Ctrl+P) it is given
   const open = async (name) => {
-    // not from a webview, which keeps the keys it is given
-    const editor = page.locator(".monaco-editor textarea");
-    if ((await editor.count()) > 0) await editor.first().focus();
-    await page.keyboard.press("Control+P");
-    const input = page.locator(".quick-input-widget input");
-    await input.waitFor({ state: "visible" });
-    await input.fill(name);
-    await page.waitForSelector(".quick-input-list .monaco-list-row");
-    await page.keyboard.press("Enter");
-    await page.locator(".tabs-container .tab.active", { hasText: name }).waitFor({ state: "visible" });
+    const explorer = page.locator(".explorer-folders-view");
+    if (!(await explorer.isVisible())) {
+      await page.locator(".activitybar .action-label[aria-label^='Explorer']").first().click();
+    }
+    await explorer.locator(".monaco-list-row", { hasText: name }).first().click();
+    await page.locator(".tabs-container .tab.active", { hasText: name }).first().waitFor({ state: "visible" });
     await page.locator(".monaco-editor textarea").first().focus();
   };
   const callStackTop = () => page.locator(".debug-call-stack .monaco-list-row", { hasText: "main" }).first();
