@@ -327,5 +327,8 @@ fn a_launch_with_plot_writes_the_path_page_when_the_program_ends() {
         html.contains(r#""instruction":"MoveJ""#) && html.contains(r#""instruction":"MoveL""#),
         "the moves are missing: {html}"
     );
-    assert!(html.contains("[100.0,50.0,300.0]"), "the MoveL target: {html}");
+    assert!(
+        html.contains("[100.0,50.0,300.0]"),
+        "the MoveL target: {html}"
+    );
 }

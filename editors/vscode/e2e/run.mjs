@@ -92,6 +92,9 @@ const settings = JSON.stringify(
       "chat.disableAIFeatures": true,
       "workbench.secondarySideBar.defaultVisibility": "hidden",
       "rapid.trace.server": "messages",
+      // unused data (W201, the seeded findings of Cell.sys and of the lone
+      // file) are hints by default, which the Problems panel does not list
+      "rapid.rules": { W201: "warning" },
       // code-server's extension host takes PATH from a login shell, not from
       // this process: name the binary (so the PATH lookup is not exercised here).
       "rapid.server.path": rapid,

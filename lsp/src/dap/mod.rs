@@ -306,10 +306,12 @@ fn prepare(args: &Value) -> Result<Launch, String> {
     }
     let program = load::program(task, &sets);
     let defaults = rapid_runtime::Limits::default();
-    let plot = args["plot"]
-        .as_str()
-        .filter(|p| !p.is_empty())
-        .map(|p| (std::path::PathBuf::from(p), format!("{} ({entry})", path.display())));
+    let plot = args["plot"].as_str().filter(|p| !p.is_empty()).map(|p| {
+        (
+            std::path::PathBuf::from(p),
+            format!("{} ({entry})", path.display()),
+        )
+    });
     let entry_id = program.find_routine(entry).ok_or_else(|| {
         format!(
             "{program}: no procedure {entry} in the task",
