@@ -1,7 +1,8 @@
 //! `rapid dap` at the protocol level: a client drives the built binary
 //! over stdin and stdout through a debugging session (breakpoint with a
 //! condition, stack, scopes, variables, evaluate, set variable, step over,
-//! step out, continue, a run-time error stopping at its line, pause).
+//! step out, continue, a run-time error stopping at its line, pause), and
+//! the path page a launch with `plot` writes.
 
 mod support;
 
@@ -296,4 +297,38 @@ fn a_running_program_pauses_and_ends_on_disconnect() {
     c.ok("disconnect", json!({}));
     let status = c.child.wait().expect("the adapter ends");
     assert!(status.success());
+}
+
+#[test]
+fn a_launch_with_plot_writes_the_path_page_when_the_program_ends() {
+    let dir = scratch("dap-plot");
+    write(
+        &dir,
+        &[(
+            "moves.mod",
+            "MODULE moves\n  CONST robtarget p1 := [[100, 0, 300], [1, 0, 0, 0], [0, 0, 0, 0], [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]];\n  PROC main()\n    MoveJ p1, v1000, z50, tool0;\n    MoveL Offs(p1, 0, 50, 0), v100, fine, tool0;\n  ENDPROC\nENDMODULE\n",
+        )],
+    );
+    let path = dir.join("moves.mod").to_string_lossy().into_owned();
+    let page = dir.join("path.html");
+    let mut c = Client::start();
+    c.ok("initialize", json!({"adapterID": "rapid"}));
+    c.ok(
+        "launch",
+        json!({"program": path, "plot": page.to_string_lossy()}),
+    );
+    c.ok("configurationDone", json!({}));
+    assert_eq!(c.event("exited")["exitCode"], 0);
+    c.event("terminated");
+    c.ok("disconnect", json!({}));
+    let html = std::fs::read_to_string(&page).expect("the path page");
+    assert!(html.contains("moves.mod (main)"), "no title");
+    assert!(
+        html.contains(r#""instruction":"MoveJ""#) && html.contains(r#""instruction":"MoveL""#),
+        "the moves are missing: {html}"
+    );
+    assert!(
+        html.contains("[100.0,50.0,300.0]"),
+        "the MoveL target: {html}"
+    );
 }

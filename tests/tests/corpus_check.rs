@@ -299,7 +299,7 @@ fn in_sample(path: &str, line: usize, code: &str) -> bool {
         h ^= u64::from(b);
         h = h.wrapping_mul(0x0000_0100_0000_01b3);
     }
-    h % 40 == 0
+    h.is_multiple_of(40)
 }
 
 /// Files whose text is not a valid RAPID module (truncated, merged or

@@ -1,4 +1,5 @@
-// The ABB RAPID extension: starts `rapid lsp` and connects VS Code to it.
+// The ABB RAPID extension: starts `rapid lsp` and connects VS Code to it;
+// the debugger and the path view are in run.ts.
 import * as fs from "node:fs";
 import * as path from "node:path";
 import * as vscode from "vscode";
@@ -9,6 +10,7 @@ import {
   type ServerOptions,
   TransportKind,
 } from "vscode-languageclient/node";
+import { registerRun } from "./run";
 
 let client: LanguageClient | undefined;
 /// The extension's folder: its README says how to install the server.
@@ -40,17 +42,13 @@ export async function activate(context: vscode.ExtensionContext): Promise<void> 
   );
 
   context.subscriptions.push({ dispose: () => void stopServer() });
-  // The `rapid` debugger: `rapid dap`, found as the server is.
-  context.subscriptions.push(
-    vscode.debug.registerDebugAdapterDescriptorFactory("rapid", {
-      createDebugAdapterDescriptor() {
-        const config = vscode.workspace.getConfiguration("rapid");
-        const configured = (config.get<string>("server.path") ?? "").trim();
-        const command = configured ? expandHome(configured) : (findOnPath("rapid") ?? "rapid");
-        return new vscode.DebugAdapterExecutable(command, ["dap"]);
-      },
-    }),
-  );
+  // The `rapid` debugger (`rapid dap`) and "Show path", with the binary
+  // found as the server's is.
+  registerRun(context, () => {
+    const config = vscode.workspace.getConfiguration("rapid");
+    const configured = (config.get<string>("server.path") ?? "").trim();
+    return configured ? expandHome(configured) : (findOnPath("rapid") ?? "rapid");
+  });
   await startServer();
 }
 

@@ -5,7 +5,10 @@
 //! (the procedure, `main` by default; a test routine too), `test` (load
 //! the assertion module as `rapid test` does), `stopOnEntry`, `signals`
 //! (`["di1=1@2.5"]`, as `rapid run --set`), `maxSteps` and `maxTime` (the
-//! budgets, as `rapid run`'s), `noDebug`. The program runs on
+//! budgets, as `rapid run`'s), `noDebug`, `plot` (a file: when the
+//! program ends, the page that `rapid run --plot` writes, drawing the
+//! run's motion; the VS Code extension's "Show path" opens it). The
+//! program runs on
 //! its own thread; it stops at line breakpoints (with conditions), steps
 //! (over, into, out), pauses, and stops at a run-time error that no
 //! handler takes. While stopped, the stack, the scopes (the routine's
@@ -38,6 +41,8 @@ struct Launch {
     config: Config,
     stop_on_entry: bool,
     debug: bool,
+    /// Where to write the path page at the end, and its title.
+    plot: Option<(std::path::PathBuf, String)>,
 }
 
 struct Session {
@@ -235,6 +240,15 @@ impl Session {
                     m.set_debugger(Box::new(debugger));
                 }
                 let outcome = m.run(launch.entry);
+                if let Some((file, title)) = &launch.plot {
+                    let page = crate::run::trace::html(m.moves(), title);
+                    if let Err(e) = std::fs::write(file, page) {
+                        writer.event(
+                            "output",
+                            json!({"category": "stderr", "output": format!("{}: {e}\n", file.display())}),
+                        );
+                    }
+                }
                 for line in crate::run::describe(&outcome) {
                     writer.event(
                         "output",
@@ -292,6 +306,12 @@ fn prepare(args: &Value) -> Result<Launch, String> {
     }
     let program = load::program(task, &sets);
     let defaults = rapid_runtime::Limits::default();
+    let plot = args["plot"].as_str().filter(|p| !p.is_empty()).map(|p| {
+        (
+            std::path::PathBuf::from(p),
+            format!("{} ({entry})", path.display()),
+        )
+    });
     let entry_id = program.find_routine(entry).ok_or_else(|| {
         format!(
             "{program}: no procedure {entry} in the task",
@@ -308,9 +328,11 @@ fn prepare(args: &Value) -> Result<Launch, String> {
                 max_time: args["maxTime"].as_f64().unwrap_or(defaults.max_time),
                 ..defaults
             },
+            trace: plot.is_some(),
             ..Config::default()
         },
         stop_on_entry: args["stopOnEntry"].as_bool().unwrap_or(false),
         debug: !args["noDebug"].as_bool().unwrap_or(false),
+        plot,
     })
 }
