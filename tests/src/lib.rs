@@ -81,6 +81,23 @@ pub struct Inputs {
     pub configs: Vec<(String, String)>,
 }
 
+impl Inputs {
+    /// A workspace holding every input (configuration, programs, modules).
+    pub fn workspace(&self) -> rapid_analyzer::workspace::Workspace {
+        let mut ws = rapid_analyzer::workspace::Workspace::new();
+        for (p, t) in &self.configs {
+            ws.set_config(p, t);
+        }
+        for (p, t) in &self.programs {
+            ws.set_program(p, t);
+        }
+        for (p, t) in &self.modules {
+            ws.set_file(p, t.clone());
+        }
+        ws
+    }
+}
+
 /// Reads the [`Inputs`] below `dir`.
 pub fn workspace_inputs(dir: &Path) -> Inputs {
     let mut inputs = Inputs::default();

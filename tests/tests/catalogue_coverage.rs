@@ -686,23 +686,13 @@ fn reviewed_index() -> (BTreeMap<Key, usize>, Vec<String>) {
 /// longer reported must leave the list.
 #[test]
 fn unresolved_names_are_reviewed_gaps_never_builtins() {
-    use rapid_analyzer::workspace::Workspace;
     let Some(dir) = rapid_tests::corpus_dir() else {
         println!("catalogue_coverage: no corpus (set RAPID_CORPUS); skipped");
         return;
     };
     let cat = base();
     let loaded = rapid_tests::workspace_inputs(&dir);
-    let mut ws = Workspace::new();
-    for (p, t) in &loaded.configs {
-        ws.set_config(p, t);
-    }
-    for (p, t) in &loaded.programs {
-        ws.set_program(p, t);
-    }
-    for (p, t) in &loaded.modules {
-        ws.set_file(p, t.clone());
-    }
+    let mut ws = loaded.workspace();
     let (index, twice) = reviewed_index();
     assert!(twice.is_empty(), "malformed reviewed list: {twice:?}");
 

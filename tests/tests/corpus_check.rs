@@ -13,7 +13,6 @@ use rapid_analyzer::check::once::{FileFindings, per_task};
 use rapid_analyzer::diagnostic::{Diagnostic, Severity};
 use rapid_analyzer::rules::RULES;
 use rapid_analyzer::text::LineIndex;
-use rapid_analyzer::workspace::Workspace;
 
 /// Error-level findings reviewed by hand and found to be real defects of
 /// the program: (path suffix, rule name, line, why).
@@ -317,16 +316,7 @@ fn corpus_errors_are_true_defects() {
         return;
     };
     let loaded = rapid_tests::workspace_inputs(&dir);
-    let mut ws = Workspace::new();
-    for (p, t) in &loaded.configs {
-        ws.set_config(p, t);
-    }
-    for (p, t) in &loaded.programs {
-        ws.set_program(p, t);
-    }
-    for (p, t) in &loaded.modules {
-        ws.set_file(p, t.clone());
-    }
+    let mut ws = loaded.workspace();
     let lines: usize = loaded.modules.iter().map(|(_, t)| t.lines().count()).sum();
     // Each file's findings, then each name a task lacks once per task, as
     // `rapid check` reports them.

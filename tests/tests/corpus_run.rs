@@ -15,7 +15,6 @@ use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use rapid_analyzer::items::RoutineKind;
-use rapid_analyzer::workspace::Workspace;
 use rapid_runtime::{Config, Limits, Machine, Program, Status};
 
 #[test]
@@ -25,16 +24,7 @@ fn every_corpus_module_runs_or_stops_with_a_reason_at_a_real_line() {
         return;
     };
     let loaded = rapid_tests::workspace_inputs(&dir);
-    let mut ws = Workspace::new();
-    for (p, t) in &loaded.configs {
-        ws.set_config(p, t);
-    }
-    for (p, t) in &loaded.programs {
-        ws.set_program(p, t);
-    }
-    for (p, t) in &loaded.modules {
-        ws.set_file(p, t.clone());
-    }
+    let mut ws = loaded.workspace();
     let lines: BTreeMap<&str, usize> = loaded
         .modules
         .iter()
