@@ -462,13 +462,25 @@ try {
     await page.goto(`http://127.0.0.1:${port}/?ew=true`);
     await page.waitForSelector(".monaco-workbench");
     await page.waitForTimeout(1500);
-    await runCommand("File: Open File...");
-    const input = page.locator(".quick-input-widget input");
-    await input.waitFor({ state: "visible" });
-    await input.fill(lone);
-    await page.waitForTimeout(500);
-    await page.keyboard.press("Enter");
-    await page.locator(".tabs-container .tab", { hasText: "Lone.mod" }).first().waitFor({ state: "visible" });
+    // The simple file dialog checks the typed path asynchronously: on a busy
+    // machine an Enter pressed too early is lost, so the dialog is tried
+    // again until the file's tab shows.
+    const tab = page.locator(".tabs-container .tab", { hasText: "Lone.mod" }).first();
+    for (let attempt = 1; ; attempt++) {
+      await runCommand("File: Open File...");
+      const input = page.locator(".quick-input-widget input");
+      await input.waitFor({ state: "visible" });
+      await input.fill(lone);
+      await page.waitForTimeout(1500 * attempt);
+      await page.keyboard.press("Enter");
+      try {
+        await tab.waitFor({ state: "visible", timeout: 20000 });
+        break;
+      } catch (e) {
+        if (attempt >= 3) throw e;
+        await page.keyboard.press("Escape");
+      }
+    }
     await runCommand("View: Focus Problems");
     const row = page.locator(".markers-panel .monaco-list-row", { hasText: "W201" });
     await row.first().waitFor({ state: "visible", timeout: TIMEOUT });
