@@ -150,8 +150,9 @@ pub struct LineIndex {
     /// that many bytes: (offset, characters from its line's start to it),
     /// so that [`LineIndex::human`] counts at most that many bytes, however
     /// long the line (generated modules have lines of megabytes, with a
-    /// finding every few bytes).
-    marks: Vec<(usize, usize)>,
+    /// finding every few bytes). With the UTF-16 code units from the line's
+    /// start to it, for [`LineIndex::utf16_col`].
+    marks: Vec<(usize, usize, usize)>,
 }
 
 /// How far apart the character-count marks of long lines are, in bytes.
@@ -169,24 +170,26 @@ impl LineIndex {
         let bytes = text.as_bytes();
         let mut starts = vec![0];
         let mut marks = Vec::new();
-        // The last line start or mark, and the characters from the line's
-        // start to it.
-        let mut mark = (0, 0);
+        // The last line start or mark, and the characters and UTF-16 units
+        // from the line's start to it.
+        let mut mark = (0, 0, 0);
         let mut i = 0;
         while i < bytes.len() {
             match bytes[i] {
                 b'\r' if bytes.get(i + 1) == Some(&b'\n') => {
                     i += 1;
                     starts.push(i + 1);
-                    mark = (i + 1, 0);
+                    mark = (i + 1, 0, 0);
                 }
                 b'\r' | b'\n' => {
                     starts.push(i + 1);
-                    mark = (i + 1, 0);
+                    mark = (i + 1, 0, 0);
                 }
                 _ if i - mark.0 >= MARK_EVERY && text.is_char_boundary(i) => {
-                    let chars = mark.1 + text.get(mark.0..i).map_or(0, |s| s.chars().count());
-                    mark = (i, chars);
+                    let piece = text.get(mark.0..i).unwrap_or_default();
+                    let chars = mark.1 + piece.chars().count();
+                    let units = mark.2 + piece.encode_utf16().count();
+                    mark = (i, chars, units);
                     marks.push(mark);
                 }
                 _ => {}
@@ -243,19 +246,35 @@ impl LineIndex {
     /// people and most tools count them.
     pub fn human(&self, offset: usize, text: &str) -> (usize, usize) {
         let LineCol { line, col } = self.line_col(offset);
-        let start = self.starts[line];
-        // Count from the nearest mark of the line before the offset.
-        let (from, before) = match self.marks.partition_point(|m| m.0 <= start + col) {
-            0 => (start, 0),
-            n => match self.marks[n - 1] {
-                (at, chars) if at >= start => (at, chars),
-                _ => (start, 0),
-            },
-        };
+        let (from, (before, _)) = self.mark_before(line, col);
         let chars = text
-            .get(from..start + col)
+            .get(from..from.max(offset.min(self.len)))
             .map_or(col, |s| before + s.chars().count());
         (line + 1, chars + 1)
+    }
+
+    /// The column of `offset` (a character boundary) in UTF-16 code units,
+    /// as the language server protocol counts by default; like
+    /// [`LineIndex::human`], it counts at most [`MARK_EVERY`] bytes.
+    pub fn utf16_col(&self, offset: usize, text: &str) -> usize {
+        let LineCol { line, col } = self.line_col(offset);
+        let (from, (_, before)) = self.mark_before(line, col);
+        text.get(from..from.max(offset.min(self.len)))
+            .map_or(col, |s| before + s.encode_utf16().count())
+    }
+
+    /// The nearest mark of `line` at or before byte column `col` (or the
+    /// line's start): its offset, and the characters and UTF-16 units
+    /// before it on the line.
+    fn mark_before(&self, line: usize, col: usize) -> (usize, (usize, usize)) {
+        let start = self.starts.get(line).copied().unwrap_or(self.len);
+        match self.marks.partition_point(|m| m.0 <= start + col) {
+            0 => (start, (0, 0)),
+            n => match self.marks.get(n - 1) {
+                Some(&(at, chars, units)) if at >= start => (at, (chars, units)),
+                _ => (start, (0, 0)),
+            },
+        }
     }
 }
 
@@ -347,7 +366,7 @@ mod tests {
     }
 
     #[test]
-    fn human_columns_on_long_lines_count_from_a_nearby_mark() {
+    fn human_and_utf16_columns_on_long_lines_count_from_a_nearby_mark() {
         // A line of megabytes with characters of every width: the same
         // columns as counting from the line's start, while each count
         // reads at most MARK_EVERY bytes and a character (the marks are
@@ -363,6 +382,8 @@ mod tests {
                 let start = index.starts[index.line_col(at).line];
                 let naive = text[start..at].chars().count() + 1;
                 assert_eq!(index.human(at, &text).1, naive, "at {at}");
+                let units = text[start..at].encode_utf16().count();
+                assert_eq!(index.utf16_col(at, &text), units, "at {at}");
                 let mark = index
                     .marks
                     .iter()

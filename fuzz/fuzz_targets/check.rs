@@ -36,6 +36,6 @@ fuzz_target!(|data: &[u8]| {
     let _ = ide::semantic_tokens(&task, 0, None);
     let _ = ide::folding_ranges(&unit);
     let _ = ide::document_symbols(&unit);
-    let _ = ide::inlay_hints(&task, 0, 0..len);
+    let _ = ide::inlay_hints(&task, 0, 0..len, ide::ParameterHints::All);
     let _ = ide::code_actions(&task, 0, 0..len, &diags);
 });

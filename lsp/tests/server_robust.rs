@@ -6,6 +6,7 @@
 
 use std::collections::BTreeMap;
 use std::path::Path;
+use std::time::Duration;
 
 use serde_json::{Value, json};
 
@@ -79,25 +80,11 @@ fn the_server_survives_anything_a_client_sends_and_still_answers_a_hover() {
     // that a debug build does not parse them twice at once), one after the
     // other.
     let outside = scratch("survive-deep");
-    // The kinds of the issue: calls, sums, IFs, WHILEs, indexes,
-    // aggregates, parentheses. FIXME(issue 16): on the generator's other
-    // inputs (unclosed or stray brackets, TEST and FOR nests, components)
-    // some position requests in a debug build take minutes: requests that
-    // walk parent links through very wide nodes (an error of 100,000
-    // tokens) are quadratic; see tests/tests/adversarial.rs.
-    let kinds = [
-        "calls",
-        "sum",
-        "ifs",
-        "whiles",
-        "indexes",
-        "aggregates",
-        "parens",
-    ];
-    for input in adversarial::deep(100_000)
-        .into_iter()
-        .filter(|i| kinds.iter().any(|k| i.name == format!("deep-{k}-100000")))
-    {
+    // Every kind of the generator: calls, sums, products, parentheses,
+    // signs, NOTs, indexes, aggregates, components, IFs (block and compact),
+    // WHILEs, FORs, TESTs, constant values, routine arguments, unclosed and
+    // stray brackets.
+    for input in adversarial::deep(100_000) {
         let folder = outside.join(&input.name);
         std::fs::create_dir_all(&folder).expect("folder");
         let uri = open(&mut editor, &folder.join("Deep.mod"), &input.text);
@@ -310,5 +297,61 @@ fn the_server_reports_what_rapid_check_reports_with_and_without_watching() {
         assert_eq!(editor.call("shutdown", Value::Null), Value::Null);
         editor.notify("exit", Value::Null);
         assert!(editor.child.wait().expect("exit").success());
+    }
+}
+
+/// Long enough for a debug build to finish what it is doing, far below
+/// "for ever": the server leaves requests still running after a short
+/// grace.
+const EXIT_LIMIT: Duration = Duration::from_secs(30);
+
+#[test]
+fn the_server_exits_when_its_input_closes_or_exit_comes_even_with_work_in_flight() {
+    let dir = scratch("exit");
+    std::fs::write(dir.join("Normal.mod"), NORMAL).expect("written");
+    // A heavy file (outside the workspace, so that only the cases that
+    // open it read it): requests on it are in flight when the client goes.
+    let heavy = adversarial::chains(40_000)
+        .into_iter()
+        .find(|i| i.name.starts_with("labels"))
+        .expect("labels");
+    let outside = scratch("exit-heavy");
+    for how in [
+        "eof",
+        "eof-in-flight",
+        "exit",
+        "exit-in-flight",
+        "exit-without-shutdown",
+    ] {
+        let mut editor = Editor::start();
+        initialize(&mut editor, &dir, false);
+        let normal = open(&mut editor, &dir.join("Normal.mod"), NORMAL);
+        assert!(hover_k(&mut editor, &normal).is_object(), "{how}");
+        if how.ends_with("in-flight") {
+            let uri = open(&mut editor, &outside.join("Heavy.mod"), &heavy.text);
+            for _ in 0..8 {
+                editor.notify_request(
+                    "textDocument/semanticTokens/full",
+                    json!({"textDocument": {"uri": uri}}),
+                );
+                editor.notify_request(
+                    "textDocument/references",
+                    json!({"textDocument": {"uri": uri}, "position": {"line": 2, "character": 3}, "context": {"includeDeclaration": true}}),
+                );
+            }
+        }
+        let clean = how.starts_with("exit") && how != "exit-without-shutdown";
+        if clean {
+            assert_eq!(editor.call("shutdown", Value::Null), Value::Null);
+        }
+        if how.starts_with("exit") {
+            // The input stays open: the exit alone must end the process.
+            editor.notify("exit", Value::Null);
+        } else {
+            editor.close_input();
+        }
+        let status = editor.exit_within(EXIT_LIMIT);
+        let status = status.unwrap_or_else(|| panic!("{how}: still running"));
+        assert_eq!(status.success(), clean, "{how}: {status}");
     }
 }

@@ -57,13 +57,6 @@ fn exercise(input: &Input, samples: usize) -> Vec<&'static str> {
         vec![unit.clone()],
         None,
     ))];
-    // FIXME(issue 16): finding every use of a name resolves each use
-    // through tree-sitter's parent links, whose cost grows with the width
-    // of the nodes around it: thousands of uses of one name in one routine
-    // (5,000 labels) or in one wide error make references, rename and
-    // highlights quadratic (minutes). They run here on inputs where they
-    // are not, until uses are resolved from one walk.
-    let name_search = len < 40_000;
     for &offset in &offsets {
         let _ = ide::hover(&task, 0, offset);
         let _ = ide::completions(&task, 0, offset);
@@ -71,11 +64,9 @@ fn exercise(input: &Input, samples: usize) -> Vec<&'static str> {
         let _ = ide::definition(&task, 0, offset);
         let _ = ide::type_definition(&task, 0, offset);
         let _ = ide::prepare_rename(&task, 0, offset);
-        if name_search {
-            let _ = ide::references(&task, 0, offset, true);
-            let _ = ide::document_highlights(&task, 0, offset);
-            let _ = ide::rename(&task, 0, offset, "fresh");
-        }
+        let _ = ide::references(&task, 0, offset, true);
+        let _ = ide::document_highlights(&task, 0, offset);
+        let _ = ide::rename(&task, 0, offset, "fresh");
         let _ = ide::inlay_hints(
             &task,
             0,

@@ -4,7 +4,9 @@ use std::collections::BTreeMap;
 use std::ops::Range;
 
 use super::Location;
-use super::resolve::{Def, name_at, names_spelt, resolve, type_def};
+use super::resolve::{
+    Def, DefKey, NamePath, for_each_name_spelt, name_at, resolve, resolve_at, type_def,
+};
 use crate::check::Cx;
 use crate::diagnostic::Edit;
 use crate::names::{fold, same};
@@ -122,51 +124,78 @@ pub(crate) fn uses(
             None => Some(root),
         };
         let Some(node) = node else { continue };
+        // The scope of each routine is made once; the FOR variables around
+        // a use (which it does not hold) come from the use's path.
         let mut scopes = super::tokens::Scopes::new(task, ui);
-        for n in names_spelt(node, &u.text, &name) {
-            // The scope of the routine is cached; FOR variables (which the
-            // cache does not see) resolve the slow way.
-            let d = if in_for_loop_of(n, &u.text, &name) {
-                resolve(task, ui, n)
-            } else {
-                scopes
-                    .at(n.start_byte())
-                    .and_then(|cx| super::resolve::resolve_in(cx, n))
+        // A label resolves the same in its whole routine: once per routine.
+        let mut label: Option<(usize, Option<DefKey>)> = None;
+        let mut lists = ArgLists::default();
+        for_each_name_spelt(node, &u.text, &name, |path| {
+            let Some(&[(parent, _), (n, field)]) = path.get(path.len().saturating_sub(2)..) else {
+                return;
             };
-            let Some(d) = d else {
-                continue;
+            let Some(cx) = scopes.at(n.start_byte()) else {
+                return;
             };
-            if d.key(task) == key {
-                let write = is_write(n) || passed_by_reference(task, ui, n);
-                out.push((ui, n.byte_range(), write));
+            let is_label = matches!(
+                (parent.kind(), field),
+                ("label", Some("name")) | ("goto_statement", Some("label"))
+            );
+            let routine = cx.routine.as_ref().map(|r| r.decl.range.start);
+            let d = match (&label, routine) {
+                (Some((at, d)), Some(r)) if is_label && *at == r => d.clone(),
+                _ => {
+                    let for_vars = for_vars_around(path, &u.text);
+                    let pushed = for_vars.len();
+                    if let Some(r) = cx.routine.as_mut() {
+                        r.for_vars.extend(for_vars);
+                    }
+                    let d = resolve_at(cx, n, parent, field, Some(path)).map(|d| d.key(task));
+                    let write = d.as_ref() == Some(&key)
+                        && (is_write(path) || passed_by_reference(cx, path, &mut lists));
+                    if let Some(r) = cx.routine.as_mut() {
+                        let keep = r.for_vars.len().saturating_sub(pushed);
+                        r.for_vars.truncate(keep);
+                    }
+                    if d.as_ref() == Some(&key) {
+                        out.push((ui, n.byte_range(), write));
+                    }
+                    if is_label && let Some(r) = routine {
+                        label = Some((r, d));
+                    }
+                    return;
+                }
+            };
+            if d.as_ref() == Some(&key) {
+                out.push((ui, n.byte_range(), false));
             }
-        }
+        });
     }
     out
 }
 
-/// Is `n` inside a FOR loop whose variable is spelt `name`?
-fn in_for_loop_of(n: tree_sitter::Node<'_>, text: &str, name: &str) -> bool {
-    let mut at = n.parent();
-    while let Some(p) = at {
-        if p.kind() == "for_statement"
-            && p.child_by_field_name("variable")
-                .and_then(|v| text.get(v.byte_range()))
-                .is_some_and(|v| same(v, name))
-        {
-            return true;
-        }
-        at = p.parent();
-    }
-    false
+/// The (folded) variables of the FOR loops around the end of `path`,
+/// innermost first, as [`Cx::at`] finds them.
+fn for_vars_around(path: &NamePath<'_>, text: &str) -> Vec<String> {
+    path.iter()
+        .rev()
+        .filter(|(n, _)| n.kind() == "for_statement")
+        .filter_map(|(n, _)| n.child_by_field_name("variable"))
+        .filter_map(|v| text.get(v.byte_range()))
+        .map(fold)
+        .collect()
 }
 
-/// Is this name written here: declared, assigned, a FOR variable?
-fn is_write(node: tree_sitter::Node<'_>) -> bool {
-    let field = super::resolve::field_in_parent(node);
-    let Some(parent) = node.parent() else {
+/// Is the name at the end of `path` written here: declared, assigned, a
+/// FOR variable?
+fn is_write(path: &NamePath<'_>) -> bool {
+    let Some((&(node, field), up)) = path.split_last() else {
         return false;
     };
+    let Some(&(parent, _)) = up.last() else {
+        return false;
+    };
+    let _ = node;
     if field == Some("name")
         && matches!(
             parent.kind(),
@@ -179,66 +208,96 @@ fn is_write(node: tree_sitter::Node<'_>) -> bool {
         return true;
     }
     // The root object of an assignment's left side.
-    let mut n = node;
-    loop {
-        let f = super::resolve::field_in_parent(n);
-        let Some(p) = n.parent() else {
+    for i in (1..path.len()).rev() {
+        let (Some(&(_, f)), Some(&(p, _))) = (path.get(i), path.get(i - 1)) else {
             return false;
         };
         match (p.kind(), f) {
             ("assignment", Some("left")) => return true,
-            ("component_access" | "index_expression", Some("object")) => n = p,
+            ("component_access" | "index_expression", Some("object")) => {}
             _ => return false,
         }
     }
+    false
 }
 
-/// Is this name (or the data it starts) an argument of a VAR, PERS or
-/// INOUT parameter, which the routine may change?
-fn passed_by_reference(task: &Task, unit: usize, node: tree_sitter::Node<'_>) -> bool {
-    let mut n = node;
+/// The arguments of the last argument list seen, by node id: the position
+/// of each unnamed one among the unnamed, and the names given.
+#[derive(Default)]
+struct ArgLists {
+    list: Option<usize>,
+    positional: std::collections::HashMap<usize, usize>,
+    named: Vec<String>,
+}
+
+impl ArgLists {
+    fn of(&mut self, list: tree_sitter::Node<'_>, text: &str) -> &ArgLists {
+        if self.list != Some(list.id()) {
+            self.list = Some(list.id());
+            self.positional.clear();
+            self.named.clear();
+            let mut k = 0;
+            for a in crate::syntax_util::fields(list, "argument") {
+                match a
+                    .child_by_field_name("name")
+                    .and_then(|n| text.get(n.byte_range()))
+                {
+                    Some(name) => self.named.push(name.to_owned()),
+                    None => {
+                        self.positional.insert(a.id(), k);
+                        k += 1;
+                    }
+                }
+            }
+        }
+        self
+    }
+}
+
+/// Is the name at the end of `path` (or the data it starts) an argument of
+/// a VAR, PERS or INOUT parameter, which the routine may change?
+fn passed_by_reference(cx: &mut Cx<'_>, path: &NamePath<'_>, lists: &mut ArgLists) -> bool {
+    let mut i = path.len().saturating_sub(1);
     let arg = loop {
-        let f = super::resolve::field_in_parent(n);
-        let Some(p) = n.parent() else {
+        let (Some(&(_, f)), Some(&(p, _))) =
+            (path.get(i), i.checked_sub(1).and_then(|j| path.get(j)))
+        else {
             return false;
         };
         match (p.kind(), f) {
-            ("argument", Some("value")) => break p,
-            ("component_access" | "index_expression", Some("object")) => n = p,
+            ("argument", Some("value")) => break i - 1,
+            ("component_access" | "index_expression", Some("object")) => i -= 1,
             _ => return false,
         }
     };
-    let Some(call) = super::resolve::call_of_argument(arg) else {
+    let (Some(&(arg, _)), Some(&(list, _)), Some(&(call, _))) = (
+        path.get(arg),
+        arg.checked_sub(1).and_then(|j| path.get(j)),
+        arg.checked_sub(2).and_then(|j| path.get(j)),
+    ) else {
         return false;
     };
-    let Some(mut cx) = Cx::at(task, unit, call.start_byte()) else {
+    if !matches!(call.kind(), "procedure_call" | "function_call") {
         return false;
-    };
-    let Some(sym) = super::resolve::call_routine(&mut cx, call) else {
+    }
+    let Some(sym) = super::resolve::call_routine(cx, call) else {
         return false;
     };
     let sig = super::signature::sig_of(sym);
     let text = cx.text;
-    let name_of = |a: tree_sitter::Node<'_>| {
-        a.child_by_field_name("name")
-            .and_then(|n| text.get(n.byte_range()))
-    };
-    let param = match name_of(arg) {
+    let param = match arg
+        .child_by_field_name("name")
+        .and_then(|n| text.get(n.byte_range()))
+    {
         Some(name) => sig.params.iter().find(|p| same(&p.name, name)),
         None => {
-            let Some(list) = arg.parent() else {
+            let lists = lists.of(list, text);
+            let Some(&k) = lists.positional.get(&arg.id()) else {
                 return false;
             };
-            let args = crate::syntax_util::fields(list, "argument");
-            let named: Vec<&str> = args.iter().filter_map(|a| name_of(*a)).collect();
-            let k = args
-                .iter()
-                .take_while(|a| a.id() != arg.id())
-                .filter(|a| name_of(**a).is_none())
-                .count();
             sig.params
                 .iter()
-                .filter(|p| !p.optional && !named.iter().any(|n| same(n, &p.name)))
+                .filter(|p| !p.optional && !lists.named.iter().any(|n| same(n, &p.name)))
                 .nth(k)
         }
     };
@@ -435,17 +494,24 @@ pub fn rename(
     if !same(&old, new_name) {
         let mut checked = std::collections::HashSet::new();
         for (u, range, _) in &uses {
-            let Some(mut cx) = Cx::at(task, *u, range.start) else {
-                continue;
-            };
-            let scope = (
-                *u,
-                cx.module.map(|(i, _)| i),
-                cx.routine.as_ref().map(|r| r.decl.range.start),
-            );
+            // Each scope once (entering one is not free: thousands of uses
+            // in one routine entered it thousands of times).
+            let within = |r: &Range<usize>| r.start <= range.start && range.start <= r.end;
+            let module = task.units.get(*u).and_then(|unit| {
+                unit.items
+                    .modules
+                    .iter()
+                    .enumerate()
+                    .find(|(_, m)| within(&m.range))
+            });
+            let routine = module.and_then(|(_, m)| m.routines.iter().find(|r| within(&r.range)));
+            let scope = (*u, module.map(|(i, _)| i), routine.map(|r| r.range.start));
             if !checked.insert(scope) {
                 continue;
             }
+            let Some(mut cx) = Cx::at(task, *u, range.start) else {
+                continue;
+            };
             if clashes(&mut cx, new_name) {
                 return Err(format!(
                     "`{new_name}` is already declared where `{old}` is used"

@@ -223,11 +223,27 @@ pub(crate) fn resolve<'t>(task: &'t Task, unit: usize, node: Node<'t>) -> Option
 }
 
 pub(crate) fn resolve_in<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Option<Def<'t>> {
+    let parent = node.parent()?;
+    let field = field_in_parent(node);
+    resolve_at(cx, node, parent, field, None)
+}
+
+/// [`resolve_in`] with what a walk down the tree already knows: the name's
+/// parent, the field under which it sits and, from a [`for_each_name_spelt`]
+/// walk, its path (so that nothing walks up parent links, which tree-sitter
+/// finds from the root at a cost that grows with the width of the nodes
+/// around: thousands of uses in one wide routine made finding them
+/// quadratic).
+pub(crate) fn resolve_at<'t>(
+    cx: &mut Cx<'t>,
+    node: Node<'t>,
+    parent: Node<'t>,
+    field: Option<&str>,
+    path: Option<&NamePath<'t>>,
+) -> Option<Def<'t>> {
     let task = cx.task;
     let unit = cx.unit_idx;
     let name = cx.text.get(node.byte_range())?.to_owned();
-    let parent = node.parent()?;
-    let field = field_in_parent(node);
     let routine_sym = |sym: RoutineSym<'t>| match sym {
         RoutineSym::User(_, r) => Def::Item(r),
         RoutineSym::Builtin(r, _) => Def::BuiltinRoutine(r),
@@ -360,17 +376,22 @@ pub(crate) fn resolve_in<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Option<Def<'t>>
         }),
         DataSym::Module(_, r) => Some(Def::Item(r)),
         DataSym::ForVar => {
+            let loop_of = |n: Node<'t>| {
+                let v = n.child_by_field_name("variable")?;
+                let spelt = cx.text.get(v.byte_range())?;
+                (n.kind() == "for_statement" && same(spelt, &name)).then(|| Def::ForVar {
+                    unit,
+                    name: spelt.to_owned(),
+                    range: v.byte_range(),
+                })
+            };
+            if let Some(path) = path {
+                return path.iter().rev().find_map(|(n, _)| loop_of(*n));
+            }
             let mut at = Some(node);
             while let Some(n) = at {
-                if n.kind() == "for_statement"
-                    && let Some(v) = n.child_by_field_name("variable")
-                    && cx.text.get(v.byte_range()).is_some_and(|t| same(t, &name))
-                {
-                    return Some(Def::ForVar {
-                        unit,
-                        name: cx.text.get(v.byte_range())?.to_owned(),
-                        range: v.byte_range(),
-                    });
+                if let Some(def) = loop_of(n) {
+                    return Some(def);
                 }
                 at = n.parent();
             }
@@ -439,11 +460,67 @@ fn item_declared_at(task: &Task, unit: usize, name: &str, range: Range<usize>) -
         .find(|r| r.unit == unit && task.item_name(*r).is_some_and(|(_, n)| n == range))
 }
 
-/// Every name node in `node` spelt `name` (case-insensitive), found by a
-/// search of the text (much cheaper than a walk over every node).
-pub(crate) fn names_spelt<'a>(node: Node<'a>, text: &str, name: &str) -> Vec<Node<'a>> {
+/// The path from a walk's start down to a name: each node with the field
+/// under which it sits in the one before it; the name is last.
+pub(crate) type NamePath<'a> = [(Node<'a>, Option<&'a str>)];
+
+/// Calls `f` with the path to every name node in `node` spelt `name`
+/// (case-insensitive): the text is searched first, then one walk down the
+/// tree enters only the nodes around a match, each at most once (linear
+/// in the nodes entered, where finding each match from the root and its
+/// parents was quadratic in a wide routine).
+pub(crate) fn for_each_name_spelt<'a>(
+    node: Node<'a>,
+    text: &str,
+    name: &str,
+    mut f: impl FnMut(&NamePath<'a>),
+) {
+    let spots = spelt_at(node.byte_range(), text, name);
+    // Is a match inside `n`? (matches are sorted and disjoint)
+    let inside = |n: Node<'a>| {
+        let i = spots.partition_point(|s| s.0 < n.start_byte());
+        spots.get(i).is_some_and(|s| s.1 <= n.end_byte())
+    };
+    if !inside(node) {
+        return;
+    }
+    let mut cursor = node.walk();
+    let mut path: Vec<(Node<'a>, Option<&'a str>)> = vec![(node, None)];
+    loop {
+        let n = cursor.node();
+        let mut enter = false;
+        if inside(n) {
+            if is_name(n) && spots.binary_search(&(n.start_byte(), n.end_byte())).is_ok() {
+                f(&path);
+            }
+            enter = true;
+        }
+        if enter && cursor.goto_first_child() {
+            path.push((cursor.node(), cursor.field_name()));
+            continue;
+        }
+        loop {
+            if path.len() <= 1 {
+                return;
+            }
+            if cursor.goto_next_sibling() {
+                if let Some(last) = path.last_mut() {
+                    *last = (cursor.node(), cursor.field_name());
+                }
+                break;
+            }
+            if !cursor.goto_parent() {
+                return;
+            }
+            path.pop();
+        }
+    }
+}
+
+/// Where `name` is spelt (case-insensitive, as a whole word) in `range` of
+/// `text`: sorted byte ranges.
+fn spelt_at(range: Range<usize>, text: &str, name: &str) -> Vec<(usize, usize)> {
     let mut out = Vec::new();
-    let range = node.byte_range();
     let Some(hay) = text.get(range.clone()) else {
         return out;
     };
@@ -465,14 +542,7 @@ pub(crate) fn names_spelt<'a>(node: Node<'a>, text: &str, name: &str) -> Vec<Nod
         if bytes.get(end).is_some_and(|b| is_ident(*b)) {
             continue;
         }
-        let (s, e) = (range.start + start, range.start + end);
-        if let Some(n) = node.descendant_for_byte_range(s, e)
-            && is_name(n)
-            && n.start_byte() == s
-            && n.end_byte() == e
-        {
-            out.push(n);
-        }
+        out.push((range.start + start, range.start + end));
     }
     out
 }

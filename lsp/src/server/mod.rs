@@ -113,6 +113,10 @@ where
     shut_down.load(Ordering::SeqCst)
 }
 
+/// How long requests still running when the input ends may take to answer
+/// before the server exits without them.
+const EXIT_GRACE: std::time::Duration = std::time::Duration::from_secs(2);
+
 /// Runs the service behind the hardened transport ([`transport`]).
 async fn run_service<I, O>(
     input: I,
@@ -133,13 +137,27 @@ async fn run_service<I, O>(
     ));
     let forwarder = tokio::spawn(transport::forward_frames(from_server, frames_tx));
     let writer = tokio::spawn(transport::write_output(output, frames_rx));
-    Server::new(server_in, server_out, socket)
-        .serve(service)
-        .await;
-    // The server is done: stop reading, send what is left.
+    let mut server = Box::pin(Server::new(server_in, server_out, socket).serve(service));
+    let mut reader = reader;
+    tokio::select! {
+        () = &mut server => {}
+        _ = &mut reader => {
+            // The input ended (the client is gone, or it sent `exit`):
+            // nothing more can be asked. The server's framework would wait
+            // for every request in flight, however long; they get a moment
+            // to answer, then the process leaves them behind.
+            let _ = tokio::time::timeout(EXIT_GRACE, &mut server).await;
+        }
+    }
+    // The server is done (dropping it closes its output): stop reading,
+    // send what is left, unless nobody reads it any more.
+    drop(server);
     reader.abort();
-    let _ = forwarder.await;
-    let _ = writer.await;
+    let _ = tokio::time::timeout(EXIT_GRACE, async {
+        let _ = forwarder.await;
+        let _ = writer.await;
+    })
+    .await;
 }
 
 /// [`serve`], with a method that panics on the blocking pool, to test that

@@ -67,13 +67,11 @@ impl<'a> LineMap<'a> {
             offset -= 1;
         }
         let LineCol { line, col } = self.index.line_col(offset);
-        let start = offset - col;
         let character = match self.encoding {
             PosEncoding::Utf8 => col,
-            PosEncoding::Utf16 => self
-                .text
-                .get(start..offset)
-                .map_or(col, |s| s.encode_utf16().count()),
+            // From the nearest mark: positions along a line of megabytes
+            // (generated code) cost at most a kilobyte each, not the line.
+            PosEncoding::Utf16 => self.index.utf16_col(offset, self.text),
         };
         Position::new(to_u32(line), to_u32(character))
     }

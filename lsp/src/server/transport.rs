@@ -237,8 +237,20 @@ async fn write_all<W: AsyncWrite + Unpin>(output: &mut W, mut data: &[u8]) -> st
     poll_fn(|cx| Pin::new(&mut *output).poll_flush(cx)).await
 }
 
+/// Is this message the `exit` notification? (Cheap: only short messages
+/// that spell it are parsed.)
+fn is_exit(body: &[u8]) -> bool {
+    body.len() < 256
+        && body.windows(6).any(|w| w == b"\"exit\"")
+        && serde_json::from_slice::<Value>(body).is_ok_and(|v| {
+            v.get("method").and_then(Value::as_str) == Some("exit") && v.get("id").is_none()
+        })
+}
+
 /// Reads `input`, passing well-formed messages to `to_server` and answering
-/// the others on `to_output`. Ends at the end of the input.
+/// the others on `to_output`. Ends at the end of the input, or after
+/// passing on the `exit` notification (a client need not close the input
+/// after it).
 pub async fn filter_input<R: AsyncRead + Unpin>(
     mut input: R,
     to_server: UnboundedSender<Vec<u8>>,
@@ -256,7 +268,7 @@ pub async fn filter_input<R: AsyncRead + Unpin>(
             match frame {
                 Frame::Message(body) => match check_message(&body) {
                     Ok(()) => {
-                        if to_server.send(encode(&body)).is_err() {
+                        if to_server.send(encode(&body)).is_err() || is_exit(&body) {
                             return;
                         }
                     }

@@ -9,9 +9,11 @@ use std::time::Duration;
 
 use serde_json::{Value, json};
 
+/// A client whose server process is killed when it is dropped, so that a
+/// failing test leaves no server behind.
 pub struct Editor {
     pub child: Child,
-    stdin: ChildStdin,
+    stdin: Option<ChildStdin>,
     messages: Receiver<Value>,
     next_id: i64,
     queued: Vec<Value>,
@@ -56,7 +58,7 @@ impl Editor {
         });
         Editor {
             child,
-            stdin,
+            stdin: Some(stdin),
             messages: rx,
             next_id: 0,
             queued: Vec::new(),
@@ -65,14 +67,41 @@ impl Editor {
 
     pub fn send(&mut self, message: Value) {
         let body = message.to_string();
-        write!(self.stdin, "Content-Length: {}\r\n\r\n{body}", body.len()).expect("write");
-        self.stdin.flush().expect("flush");
+        self.send_raw(format!("Content-Length: {}\r\n\r\n{body}", body.len()).as_bytes());
     }
 
     /// Sends bytes as they are (bad frames).
     pub fn send_raw(&mut self, bytes: &[u8]) {
-        self.stdin.write_all(bytes).expect("write");
-        self.stdin.flush().expect("flush");
+        let stdin = self.stdin.as_mut().expect("the input is open");
+        stdin.write_all(bytes).expect("write");
+        stdin.flush().expect("flush");
+    }
+
+    /// Sends a request without waiting for its answer.
+    pub fn notify_request(&mut self, method: &str, params: Value) {
+        self.next_id += 1;
+        let id = self.next_id;
+        self.send(json!({"jsonrpc": "2.0", "id": id, "method": method, "params": params}));
+    }
+
+    /// Closes the server's input, as a client that goes away does.
+    pub fn close_input(&mut self) {
+        self.stdin = None;
+    }
+
+    /// The server's exit status, waiting at most `limit` for it (`None`:
+    /// still running).
+    pub fn exit_within(&mut self, limit: Duration) -> Option<std::process::ExitStatus> {
+        let start = std::time::Instant::now();
+        loop {
+            if let Ok(Some(status)) = self.child.try_wait() {
+                return Some(status);
+            }
+            if start.elapsed() > limit {
+                return None;
+            }
+            std::thread::sleep(Duration::from_millis(20));
+        }
     }
 
     /// Sends a request and returns its whole answer (result or error).
@@ -147,5 +176,14 @@ pub fn file_uri(path: &Path) -> String {
         format!("file://{path}")
     } else {
         format!("file:///{path}")
+    }
+}
+
+impl Drop for Editor {
+    fn drop(&mut self) {
+        if matches!(self.child.try_wait(), Ok(None)) {
+            let _ = self.child.kill();
+            let _ = self.child.wait();
+        }
     }
 }

@@ -12,6 +12,7 @@ mod navigation;
 mod robustness;
 mod structure;
 mod tokens;
+mod uses_oracle;
 
 /// The task of a fixture, the index of the unit holding the cursor, and the
 /// cursor's offset.
