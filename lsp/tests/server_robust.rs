@@ -355,3 +355,27 @@ fn the_server_exits_when_its_input_closes_or_exit_comes_even_with_work_in_flight
         assert_eq!(status.success(), clean, "{how}: {status}");
     }
 }
+
+#[test]
+#[cfg(unix)]
+fn the_server_exits_when_the_process_that_started_it_is_gone() {
+    let dir = scratch("parent");
+    std::fs::write(dir.join("Normal.mod"), NORMAL).expect("written");
+    // The client process: it ends while the server's input stays open
+    // (an editor that crashed, with the pipe held by a grandchild).
+    let mut parent = std::process::Command::new("sleep")
+        .arg("5")
+        .spawn()
+        .expect("sleep starts");
+    let mut editor = Editor::start();
+    let init = editor.call(
+        "initialize",
+        json!({"processId": parent.id(), "rootUri": file_uri(&dir), "capabilities": {}}),
+    );
+    assert_eq!(init["serverInfo"]["name"], "rapid");
+    editor.notify("initialized", json!({}));
+    parent.wait().expect("sleep ends");
+    let status = editor.exit_within(EXIT_LIMIT);
+    let status = status.unwrap_or_else(|| panic!("the server runs on without its client"));
+    assert!(status.success(), "{status}");
+}

@@ -776,6 +776,9 @@ impl LanguageServer for Backend {
                 .and_then(|g| g.position_encodings.as_deref()),
         );
         let caps = client_caps(&params);
+        if let Some(pid) = params.process_id {
+            super::exit_with_parent(pid);
+        }
         self.mutate("initializing", |s| {
             s.encoding = encoding;
             s.caps = caps;

@@ -98,6 +98,50 @@ fn no_huge_pages() -> bool {
     false
 }
 
+/// How often the server looks whether the process that started it is
+/// still there.
+const PARENT_POLL: std::time::Duration = std::time::Duration::from_secs(3);
+
+/// Ends this process when the client process `pid` (the `processId` of
+/// `initialize`) is gone, as the protocol asks: an editor that crashed or
+/// was killed may leave the server's input open, and the server would run
+/// on, checking files for nobody. Nothing is lost: the server writes no
+/// files. A thread of its own, so a busy runtime cannot delay it. A pid
+/// this process cannot see at the start (a client on the host of a
+/// container the server runs in) is not watched.
+#[cfg(unix)]
+pub(crate) fn exit_with_parent(pid: u32) {
+    let Ok(pid) = libc::pid_t::try_from(pid) else {
+        return;
+    };
+    if !process_exists(pid) {
+        return;
+    }
+    let spawned = std::thread::Builder::new()
+        .name("parent-watch".to_owned())
+        .spawn(move || {
+            while process_exists(pid) {
+                std::thread::sleep(PARENT_POLL);
+            }
+            std::process::exit(0);
+        });
+    drop(spawned);
+}
+
+#[cfg(not(unix))]
+pub(crate) fn exit_with_parent(_pid: u32) {}
+
+/// Is there a process `pid` (alive, or a zombie not yet reaped)?
+#[cfg(unix)]
+#[allow(unsafe_code)]
+fn process_exists(pid: libc::pid_t) -> bool {
+    // SAFETY: signal 0 sends nothing; kill only checks that `pid` exists
+    // and may be signalled, and touches no memory of this process.
+    let sent = unsafe { libc::kill(pid, 0) } == 0;
+    // EPERM: it exists but belongs to someone else.
+    sent || std::io::Error::last_os_error().raw_os_error() == Some(libc::EPERM)
+}
+
 /// Serves one client until it sends `exit` or closes the input. Returns
 /// whether the exit was clean (`shutdown` came first), as the protocol
 /// wants the exit code to say.
