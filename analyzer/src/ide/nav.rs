@@ -189,13 +189,12 @@ fn for_vars_around(path: &NamePath<'_>, text: &str) -> Vec<String> {
 /// Is the name at the end of `path` written here: declared, assigned, a
 /// FOR variable?
 fn is_write(path: &NamePath<'_>) -> bool {
-    let Some((&(node, field), up)) = path.split_last() else {
+    let Some((&(_, field), up)) = path.split_last() else {
         return false;
     };
     let Some(&(parent, _)) = up.last() else {
         return false;
     };
-    let _ = node;
     if field == Some("name")
         && matches!(
             parent.kind(),

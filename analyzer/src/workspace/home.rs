@@ -124,7 +124,9 @@ impl Workspace {
         let mut keys: Vec<String> = self
             .units
             .keys()
-            .filter(|p| !in_home(p))
+            // A backup's files start with its folder: the others need no
+            // look (this runs for every task of every backup).
+            .filter(|p| starts_with_folder(p, root) && !in_home(p))
             .map(|p| locate(p))
             .filter(|(k, g)| *g == Grouping::Backup && backup_root(k) == Some(root))
             .map(|(k, _)| k)
@@ -181,6 +183,16 @@ impl Workspace {
     }
 }
 
+/// Does `path` start with `folder`, either written with `/` or `\`?
+fn starts_with_folder(path: &str, folder: &str) -> bool {
+    let sep = |b: u8| b == b'/' || b == b'\\';
+    path.len() >= folder.len()
+        && path
+            .bytes()
+            .zip(folder.bytes())
+            .all(|(a, b)| a == b || (sep(a) && sep(b)))
+}
+
 /// The backup folder of a configuration file in its `SYSPAR/` folder.
 pub(super) fn syspar_root(path: &str) -> Option<&str> {
     let normal = path.replace('\\', "/");
@@ -218,6 +230,8 @@ mod tests {
         assert_eq!(syspar_root("b/SYSPAR/SYS.cfg"), Some("b"));
         assert_eq!(syspar_root("b/x/SYS.cfg"), None);
         assert_eq!(below_home("b/HOME/Parts/P1.mod", "b"), "parts/p1.mod");
+        assert!(starts_with_folder(r"c:\b\RAPID\TASK1\M.mod", "c:/b"));
+        assert!(!starts_with_folder("c:/a/RAPID/TASK1/M.mod", "c:/b"));
         assert_eq!(below_home("b/RAPID/TASK1/a.mod", "b"), "");
     }
 }
