@@ -4,6 +4,8 @@ use std::cell::RefCell;
 use std::collections::HashMap;
 use std::rc::Rc;
 
+use rapid_catalogue::operators::{self, Op};
+
 use crate::env::{Env, Lookup, VarKind, predefined};
 use crate::error::{ErrorCode, EvalError, err};
 use crate::expr::{BinOp, Expr, Type, UnOp};
@@ -714,6 +716,18 @@ pub(crate) fn binary(op: BinOp, a: Value, b: Value) -> Result<Value, EvalError> 
     };
     let is_num = |v: &Value| matches!(v, Num(_) | Dnum(_));
     let any_dnum = matches!(a, Dnum(_)) || matches!(b, Dnum(_));
+    // The shared operator table says which operands an operator takes
+    // (equality compares any two values of one type: `values_equal`).
+    let op_in_table = table_op(op);
+    if !op_in_table.is_equality() {
+        let known = match (a.type_name(), b.type_name()) {
+            (Some(x), Some(y)) => operators::binary(op_in_table, x, y).is_some(),
+            _ => false,
+        };
+        if !known {
+            return mismatch(&a, &b);
+        }
+    }
     match op {
         BinOp::Eq => return Ok(Bool(values_equal(&a, &b)?)),
         BinOp::Ne => return Ok(Bool(!values_equal(&a, &b)?)),
@@ -798,12 +812,45 @@ pub(crate) fn binary(op: BinOp, a: Value, b: Value) -> Result<Value, EvalError> 
                 num_result(p[0] * q[1] - p[1] * q[0])?,
             ])
         }
+        (BinOp::Div, _, _) if is_record(&a, "pos") && is_num(&b) => {
+            let k = b.as_f64().unwrap_or(0.0);
+            if k == 0.0 {
+                return err(ErrorCode::DivZero, "division by zero");
+            }
+            let p = pos_of(&a)?.map(f64::from);
+            pos_value([
+                num_result(p[0] / k)?,
+                num_result(p[1] / k)?,
+                num_result(p[2] / k)?,
+            ])
+        }
         (BinOp::Mul, _, _) if is_record(&a, "orient") && is_record(&b, "orient") => {
             let p = crate::geometry::unit_quat(orient_of(&a)?)?;
             let q = crate::geometry::unit_quat(orient_of(&b)?)?;
             crate::geometry::orient_value(&(p * q), false)
         }
         _ => mismatch(&a, &b),
+    }
+}
+
+/// The operator in the shared table.
+pub(crate) fn table_op(op: BinOp) -> Op {
+    match op {
+        BinOp::Add => Op::Add,
+        BinOp::Sub => Op::Sub,
+        BinOp::Mul => Op::Mul,
+        BinOp::Div => Op::Div,
+        BinOp::IntDiv => Op::IntDiv,
+        BinOp::Mod => Op::Mod,
+        BinOp::Eq => Op::Eq,
+        BinOp::Ne => Op::Ne,
+        BinOp::Lt => Op::Lt,
+        BinOp::Le => Op::Le,
+        BinOp::Gt => Op::Gt,
+        BinOp::Ge => Op::Ge,
+        BinOp::And => Op::And,
+        BinOp::Or => Op::Or,
+        BinOp::Xor => Op::Xor,
     }
 }
 

@@ -3,6 +3,7 @@
 
 use std::ops::Range;
 
+use rapid_catalogue::operators::{self, Op};
 use tree_sitter::Node;
 
 use super::{Cx, Place, calls};
@@ -425,43 +426,42 @@ fn binary<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Ty {
     // compatible with everything: one mistake, one finding.
     let unknown = !t.is_known(&lt) || !t.is_known(&rt);
     let num = |x: &Ty| t.is_num_like(x);
-    let dnum = lb.is("dnum") || rb.is("dnum");
-    let numeric = if dnum { Ty::named("dnum") } else { Ty::num() };
+    let op = Op::parse(op);
     let result = match op {
-        "or" | "xor" | "and" => (t.is_bool(&lt) && t.is_bool(&rt)).then(Ty::bool),
         // Values of one type compare, arrays too (same element type and
         // number of dimensions: `stReact = ["Ready", "Ready", "Ready"]` for a
         // `string{3}` is loaded by real controllers).
-        "=" | "<>" => (unknown || t.assignable(&lt, &rt) || t.assignable(&rt, &lt)).then(Ty::bool),
-        "<" | ">" | "<=" | ">=" => (num(&lt) && num(&rt)).then(Ty::bool),
-        "+" if unknown => Some(known_side(&lt, &rt, t)),
-        "+" if num(&lt) && num(&rt) => Some(numeric),
-        "+" if lb.is("string") && rb.is("string") => Some(Ty::string()),
-        "+" | "-" if lb.is("pos") && rb.is("pos") => Some(Ty::named("pos")),
-        "-" if unknown => Some(known_side(&lt, &rt, t)),
-        "-" if num(&lt) && num(&rt) => Some(numeric),
+        Some(Op::Eq | Op::Ne) => {
+            (unknown || t.assignable(&lt, &rt) || t.assignable(&rt, &lt)).then(Ty::bool)
+        }
+        // With an unknown operand, say what the known one implies.
+        Some(Op::Add | Op::Sub) if unknown => Some(known_side(&lt, &rt, t)),
         // num * unknown may be num * pos: say nothing about the result.
-        "*" if unknown => Some(if lb.is("pos") || rb.is("pos") {
+        Some(Op::Mul) if unknown => Some(if lb.is("pos") || rb.is("pos") {
             Ty::named("pos")
         } else if lb.is("orient") || rb.is("orient") {
             Ty::named("orient")
         } else {
             Ty::Unknown
         }),
-        "*" if num(&lt) && num(&rt) => Some(numeric),
-        "*" if (lb.is("pos") && (num(&rt) || rb.is("pos"))) || (num(&lt) && rb.is("pos")) => {
-            Some(Ty::named("pos"))
+        Some(Op::Div) if unknown => Some(
+            match operators::binary_by(Op::Div, |l| lb.is(l), |r| r == "num") {
+                Some("pos") => Ty::named("pos"),
+                _ => Ty::Unknown,
+            },
+        ),
+        // The shared operator table; an operand of an unknown type is
+        // taken to be anything numeric or a bool.
+        Some(op) => {
+            let is = |x: &Ty, b: &Ty, name: &str| match name {
+                "num" => num(x) && !b.is("dnum"),
+                "dnum" => b.is("dnum"),
+                "bool" => t.is_bool(x),
+                other => b.is(other),
+            };
+            operators::binary_by(op, |l| is(&lt, &lb, l), |r| is(&rt, &rb, r)).map(Ty::named)
         }
-        "*" if lb.is("orient") && rb.is("orient") => Some(Ty::named("orient")),
-        "/" if unknown => Some(if lb.is("pos") {
-            Ty::named("pos")
-        } else {
-            Ty::Unknown
-        }),
-        "/" if num(&lt) && num(&rt) => Some(numeric),
-        "/" if lb.is("pos") && num(&rt) => Some(Ty::named("pos")),
-        "div" | "mod" => (num(&lt) && num(&rt)).then_some(numeric),
-        _ => None,
+        None => None,
     };
     match result {
         Some(ty) => {
@@ -502,7 +502,17 @@ fn binary<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Ty {
             );
             if matches!(
                 op,
-                "=" | "<>" | "<" | ">" | "<=" | ">=" | "and" | "or" | "xor"
+                Some(
+                    Op::Eq
+                        | Op::Ne
+                        | Op::Lt
+                        | Op::Gt
+                        | Op::Le
+                        | Op::Ge
+                        | Op::And
+                        | Op::Or
+                        | Op::Xor
+                )
             ) {
                 Ty::bool()
             } else {
