@@ -70,6 +70,14 @@ pub trait Env {
     fn alias_of(&self, _type_name: &str) -> Option<Type> {
         None
     }
+
+    /// The catalogue of built-ins the names resolve against: the signatures
+    /// of the pure functions come from it. The whole catalogue
+    /// ([`rapid_catalogue::base`]) unless the environment has a task's
+    /// versioned view.
+    fn catalogue(&self) -> &rapid_catalogue::Catalogue {
+        rapid_catalogue::base()
+    }
 }
 
 impl std::fmt::Debug for Lookup<'_> {

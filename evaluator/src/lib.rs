@@ -20,10 +20,18 @@
 //! - Angles are degrees; orientations are quaternions `[q1, q2, q3, q4]`
 //!   (scalar first), checked (`ERR_ILLQUAT`) and normalised before use.
 //!
+//! What RAPID knows as data comes from the catalogue crate
+//! (`rapid-catalogue`), through [`Env::catalogue`]: each pure function is an
+//! implementation registered under its catalogue name, and its arguments are
+//! bound by the catalogue's signature; which operands an operator takes is
+//! the catalogue's operator table (`rapid_catalogue::operators`), which the
+//! analyzer's checker types expressions with.
+//!
 //! Where the manual leaves a choice open, the evaluator decides as follows:
 //! - `pos * pos` is the cross product and `orient * orient` composes the
-//!   rotations (quaternion product); `pose * pose` and `pos / num` are not
-//!   operators (use `PoseMult`).
+//!   rotations (quaternion product); `pos / num` divides each coordinate
+//!   (not in the manuals' table, but in programs real controllers load);
+//!   `pose * pose` is not an operator (use `PoseMult`).
 //! - `DIV` truncates towards zero and `MOD` takes the sign of the dividend;
 //!   both need integer operands (`ERR_NOTINTVAL`) within the exact integer
 //!   range (`ERR_MAXINTVAL`: 8388608 for num, 2^52 for dnum).
