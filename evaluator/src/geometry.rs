@@ -5,7 +5,8 @@
 use nalgebra::{Isometry3, Matrix3, Quaternion, Rotation3, Translation3, UnitQuaternion, Vector3};
 
 use crate::error::{ErrorCode, EvalError, err};
-use crate::eval::{num_result, orient_of, pos_of};
+use crate::eval::num_result;
+use crate::operators::{orient_of, pos_of};
 use crate::value::Value;
 
 /// Normalisation error above which an orientation is unusable.

@@ -81,6 +81,7 @@ mod functions;
 mod geometry;
 mod literal;
 mod literal_value;
+mod operators;
 mod types;
 mod value;
 
@@ -158,14 +159,14 @@ pub fn apply_binary(op: BinOp, a: Value, b: Value, env: &dyn Env) -> Result<Valu
     if matches!(a, Value::Array(_)) != matches!(b, Value::Array(_)) {
         let mut ctx = eval::Ctx::new(&Options::default());
         let (a, b) = ctx.unify(a, b, env)?;
-        return eval::binary(op, a, b);
+        return operators::binary(op, a, b);
     }
-    eval::binary(op, a, b)
+    operators::binary(op, a, b)
 }
 
 /// Applies a unary operator to a value.
 pub fn apply_unary(op: UnOp, v: Value) -> Result<Value, EvalError> {
-    eval::unary(op, v)
+    operators::unary(op, v)
 }
 
 /// Makes `v` a value of type `ty`, as an assignment or a parameter does:

@@ -6,8 +6,9 @@ use nalgebra::{Isometry3, Vector3};
 
 use super::Args;
 use crate::error::{ErrorCode, EvalError, err};
-use crate::eval::{num_result, orient_of};
+use crate::eval::num_result;
 use crate::geometry as g;
+use crate::operators::orient_of;
 use crate::value::Value;
 
 type R = Result<Value, EvalError>;
