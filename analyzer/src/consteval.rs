@@ -1019,7 +1019,7 @@ fn component_types(ty: &Type, env: &dyn Env) -> Option<Vec<Type>> {
     let mut name = ty.name.clone();
     for _ in 0..16 {
         if let Some(layout) = rapid_evaluator::builtin_record_layout(&name) {
-            return Some(layout.iter().map(|(_, t)| Type::named(*t)).collect());
+            return Some(layout.iter().map(|c| Type::named(&c.ty)).collect());
         }
         if let Some(layout) = env.record_layout(&name) {
             return Some(layout.into_iter().map(|(_, t)| t).collect());

@@ -3,6 +3,8 @@
 use std::borrow::Cow;
 use std::collections::HashMap;
 
+use rapid_catalogue::{Catalogue, DatumKind};
+
 use crate::expr::{Expr, Type};
 use crate::value::Value;
 
@@ -200,48 +202,46 @@ impl Env for MapEnv {
     }
 }
 
-/// `STR_DIGIT`: the decimal digits.
-pub const STR_DIGIT: &str = "0123456789";
-/// `STR_UPPER`: upper-case letters of ISO 8859-1.
-pub const STR_UPPER: &str = "ABCDEFGHIJKLMNOPQRSTUVWXYZ\u{c0}\u{c1}\u{c2}\u{c3}\u{c4}\u{c5}\u{c6}\u{c7}\u{c8}\u{c9}\u{ca}\u{cb}\u{cc}\u{cd}\u{ce}\u{cf}\u{d0}\u{d1}\u{d2}\u{d3}\u{d4}\u{d5}\u{d6}\u{d8}\u{d9}\u{da}\u{db}\u{dc}\u{dd}\u{de}";
-/// `STR_LOWER`: lower-case letters of ISO 8859-1, in the same order as
-/// [`STR_UPPER`], followed by `ß` and `ÿ`, which have no upper-case form.
-pub const STR_LOWER: &str = "abcdefghijklmnopqrstuvwxyz\u{e0}\u{e1}\u{e2}\u{e3}\u{e4}\u{e5}\u{e6}\u{e7}\u{e8}\u{e9}\u{ea}\u{eb}\u{ec}\u{ed}\u{ee}\u{ef}\u{f0}\u{f1}\u{f2}\u{f3}\u{f4}\u{f5}\u{f6}\u{f8}\u{f9}\u{fa}\u{fb}\u{fc}\u{fd}\u{fe}\u{df}\u{ff}";
-/// `STR_WHITE`: the blank characters: space, tab, line feed, vertical tab,
-/// form feed and carriage return.
-pub const STR_WHITE: &str = " \t\n\u{b}\u{c}\r";
-
-/// Values of data predefined by the system that the evaluator knows itself:
-/// `pi`, `EOF_BIN`, `EOF_NUM`, the `STR_*` character sets, the `opnum`
-/// constants (`LT` .. `GT`), the `opcalc` constants (`OpAdd` .. `OpMod`,
-/// numbered 1 to 5 here) and the disk names. Case-insensitive.
+/// Values of the constants the system predefines, from their values in the
+/// whole catalogue (`pi`, `EOF_NUM`, the `STR_*` character sets, the `opnum`
+/// and `opcalc` constants, `v100`, ...). Case-insensitive. `VAR` and `PERS`
+/// data are not constants: `None`.
 pub fn predefined(name: &str) -> Option<Value> {
-    let lower = name.to_ascii_lowercase();
-    Some(match lower.as_str() {
-        // BASE declares pi with 8 digits, which is not f32::consts::PI.
-        #[allow(clippy::approx_constant)]
-        "pi" => Value::Num(3.141_592_6),
-        "eof_bin" => Value::Num(-1.0),
-        "eof_num" => Value::Num(9.998e36),
-        "str_digit" => Value::Str(STR_DIGIT.into()),
-        "str_upper" => Value::Str(STR_UPPER.into()),
-        "str_lower" => Value::Str(STR_LOWER.into()),
-        "str_white" => Value::Str(STR_WHITE.into()),
-        "lt" => Value::Num(1.0),
-        "lteq" => Value::Num(2.0),
-        "eq" => Value::Num(3.0),
-        "noteq" => Value::Num(4.0),
-        "gteq" => Value::Num(5.0),
-        "gt" => Value::Num(6.0),
-        "opadd" => Value::Num(1.0),
-        "opsub" => Value::Num(2.0),
-        "opmult" => Value::Num(3.0),
-        "opdiv" => Value::Num(4.0),
-        "opmod" => Value::Num(5.0),
-        "diskhome" | "ram1disk" => Value::Str("HOME:".into()),
-        "disktemp" => Value::Str("TEMP:".into()),
-        "flp1" => Value::Str("flp1:".into()),
-        "stempty" => Value::Str(String::new()),
-        _ => return None,
-    })
+    predefined_in(rapid_catalogue::base(), name)
+}
+
+/// The value of the predefined constant `name` in `cat`, evaluated as its
+/// type; names in it resolve to the catalogue's other constants.
+pub(crate) fn predefined_in(cat: &Catalogue, name: &str) -> Option<Value> {
+    let (ty, expr) = constant(cat, name)?;
+    let env = CatalogueEnv(cat);
+    crate::eval::run(&expr, Some(&ty), &env, &crate::Options::default())
+        .ok()
+        .map(|e| e.value)
+}
+
+fn constant(cat: &Catalogue, name: &str) -> Option<(Type, Expr)> {
+    let d = cat.datum(name).filter(|d| d.kind == DatumKind::Const)?;
+    let expr = crate::literal_value::parse_data_literal(d.value.as_deref()?)?;
+    Some((Type::named(&d.ty), expr))
+}
+
+/// The catalogue's constants as an environment, for evaluating the value of
+/// one that names others.
+struct CatalogueEnv<'c>(&'c Catalogue);
+
+impl Env for CatalogueEnv<'_> {
+    fn lookup(&self, name: &str) -> Lookup<'_> {
+        match constant(self.0, name) {
+            Some((ty, expr)) => Lookup::Constant {
+                expr: Cow::Owned(expr),
+                ty,
+                scope: None,
+            },
+            None => Lookup::Unknown,
+        }
+    }
+    fn catalogue(&self) -> &Catalogue {
+        self.0
+    }
 }

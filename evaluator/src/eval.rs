@@ -4,11 +4,12 @@ use std::cell::RefCell;
 use std::collections::HashMap;
 use std::rc::Rc;
 
-use crate::env::{Env, Lookup, VarKind, predefined};
+use rapid_catalogue::TypeKind;
+
+use crate::env::{Env, Lookup, VarKind};
 use crate::error::{ErrorCode, EvalError, err};
 use crate::expr::{BinOp, Expr, Type};
 use crate::literal::{MAX_STRING_LEN, parse_num_literal, parse_string_literal};
-use crate::types::{builtin_record_layout, is_builtin_num_alias, is_builtin_string_alias};
 use crate::value::Value;
 use crate::{Evaluation, Options};
 
@@ -116,25 +117,30 @@ fn primitive_kind(name: &str) -> Option<Kind> {
     }
 }
 
-/// Resolves a type name through built-in and user aliases.
+/// Resolves a type name through built-in (catalogue) and user aliases.
 fn resolve_kind(name: &str, env: &dyn Env) -> Kind {
+    let cat = env.catalogue();
     let mut name = name.to_owned();
     for _ in 0..16 {
         if let Some(k) = primitive_kind(&name) {
             return k;
         }
-        if is_builtin_num_alias(&name) {
-            return Kind::Num;
-        }
-        if is_builtin_string_alias(&name) {
-            return Kind::Str;
-        }
-        if let Some(layout) = builtin_record_layout(&name) {
-            let layout = layout
-                .iter()
-                .map(|(n, t)| ((*n).to_string(), Type::named(*t)))
-                .collect();
-            return Kind::Record(Rc::new((name.to_ascii_lowercase(), layout)));
+        if let Some(t) = cat.datatype(&name) {
+            match (t.kind, &t.alias_of) {
+                (TypeKind::Alias, Some(of)) => {
+                    name = of.clone();
+                    continue;
+                }
+                (TypeKind::Record, _) if !t.components.is_empty() => {
+                    let layout = t
+                        .components
+                        .iter()
+                        .map(|c| (c.name.clone(), Type::named(&c.ty)))
+                        .collect();
+                    return Kind::Record(Rc::new((name.to_ascii_lowercase(), layout)));
+                }
+                _ => {}
+            }
         }
         if let Some(layout) = env.record_layout(&name) {
             return Kind::Record(Rc::new((name, layout)));
@@ -360,7 +366,7 @@ impl Ctx {
                     ),
                 }
             }
-            Lookup::Unknown => match predefined(name) {
+            Lookup::Unknown => match crate::env::predefined_in(env.catalogue(), name) {
                 Some(v) => Ok(v),
                 None => err(ErrorCode::UnknownName, format!("`{name}` is not known")),
             },

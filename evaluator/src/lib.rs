@@ -85,9 +85,7 @@ mod operators;
 mod types;
 mod value;
 
-pub use env::{
-    EmptyEnv, Env, Lookup, MapEnv, STR_DIGIT, STR_LOWER, STR_UPPER, STR_WHITE, VarKind, predefined,
-};
+pub use env::{EmptyEnv, Env, Lookup, MapEnv, VarKind, predefined};
 pub use error::{ErrorCode, EvalError};
 pub use expr::{Arg, BinOp, Expr, Type, UnOp};
 pub use functions::{FUNCTIONS, is_function};

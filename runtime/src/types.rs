@@ -93,7 +93,7 @@ impl Types {
             if let Some(layout) = builtin_record_layout(&name) {
                 let fields = layout
                     .iter()
-                    .map(|(n, t)| ((*n).to_owned(), (*t).to_owned()))
+                    .map(|c| (c.name.clone(), c.ty.clone()))
                     .collect();
                 return Shape::Record(Arc::new((name, fields)));
             }
