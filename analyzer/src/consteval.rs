@@ -430,6 +430,11 @@ impl Env for ModuleScope<'_, '_> {
     fn alias_of(&self, type_name: &str) -> Option<Type> {
         self.shared.alias_of(type_name)
     }
+
+    /// The task's view: calls are bound with its RobotWare's signatures.
+    fn catalogue(&self) -> &crate::catalogue::Catalogue {
+        self.shared.task.catalogue
+    }
 }
 
 /// Names the task does not declare: the catalogue's predefined data and
@@ -700,6 +705,10 @@ impl Env for RoutineScope<'_, '_> {
 
     fn alias_of(&self, type_name: &str) -> Option<Type> {
         self.module.alias_of(type_name)
+    }
+
+    fn catalogue(&self) -> &crate::catalogue::Catalogue {
+        self.module.catalogue()
     }
 }
 
