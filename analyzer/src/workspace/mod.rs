@@ -61,6 +61,12 @@ pub struct Workspace {
     systems: BTreeMap<String, ControllerInfo>,
     /// The controller as the project configuration describes it.
     controller: ControllerOverride,
+    /// Modules that join a task whatever their place says (a project's
+    /// extra paths), by the task's key: see [`Workspace::attach_unit`].
+    attached: BTreeMap<String, Vec<Arc<Unit>>>,
+    /// Configuration that applies to a task whatever its place says (a
+    /// project's extra paths), by the task's key, in the order given.
+    attached_configs: BTreeMap<String, Vec<Config>>,
 }
 
 struct Checked {
@@ -185,6 +191,36 @@ impl Workspace {
         }
     }
 
+    /// Makes `unit` a member of the task `key` besides the modules its
+    /// place groups there (a module of a project's extra paths, which
+    /// belongs to every task that uses it). The unit keeps its own path: it
+    /// is found by it in related locations, and it is not one of the files
+    /// [`Workspace::checks`] and [`Workspace::diagnostics`] check. One unit
+    /// may join several tasks.
+    pub fn attach_unit(&mut self, key: &str, unit: Arc<Unit>) {
+        self.attached.entry(key.to_owned()).or_default().push(unit);
+        self.forget_task(key);
+        self.members.remove(key);
+        self.forget_sibling_tasks(key);
+    }
+
+    /// Makes the configuration `text` (`EIO.cfg` signals, `MOC.cfg`
+    /// mechanical units) apply to the task `key` besides what applies by
+    /// place (a project's extra paths). The task's own configuration wins
+    /// where both declare a signal.
+    pub fn attach_config(&mut self, key: &str, text: &str) {
+        self.attached_configs
+            .entry(key.to_owned())
+            .or_default()
+            .push(parse_config(text));
+        self.forget_all_tasks();
+    }
+
+    /// The units [`Workspace::attach_unit`] made members of the task `key`.
+    fn attached_to(&self, key: &str) -> impl Iterator<Item = &Arc<Unit>> {
+        self.attached.get(key).into_iter().flatten()
+    }
+
     pub fn remove_file(&mut self, path: &str) {
         if self.units.remove(path).is_some() {
             let key = self.task_key(path);
@@ -276,6 +312,14 @@ impl Workspace {
         }
     }
 
+    /// Is `unit` the workspace's file of its path (not a unit attached to
+    /// a task)?
+    fn is_own(&self, unit: &Arc<Unit>) -> bool {
+        self.units
+            .get(&unit.path)
+            .is_some_and(|u| Arc::ptr_eq(u, unit))
+    }
+
     pub fn unit(&self, path: &str) -> Option<&Arc<Unit>> {
         self.units.get(path)
     }
@@ -324,6 +368,7 @@ impl Workspace {
             .units
             .values()
             .filter(|u| self.task_key(&u.path) == key)
+            .chain(self.attached_to(&key))
             .cloned()
             .collect();
         self.build_task(key, units)
@@ -331,9 +376,11 @@ impl Workspace {
 
     /// Builds and caches the group task `key` of `units`.
     fn build_task(&mut self, key: String, units: Vec<Arc<Unit>>) -> Arc<Task> {
-        let grouping = units
-            .first()
-            .map_or(Grouping::Folder, |u| self.locate(&u.path).1);
+        let grouping = match units.first() {
+            Some(u) if self.units.contains_key(&u.path) => self.locate(&u.path).1,
+            // Only attached units: nothing places the task.
+            _ => Grouping::Folder,
+        };
         let mut task = self.make_task(key.clone(), units, grouping);
         task.clashing = alternatives::clashes(&task.units, grouping);
         let task = Arc::new(task);
@@ -377,8 +424,16 @@ impl Workspace {
             let (shared, hash) = match self.controllers.get(controller) {
                 Some(c) => c.clone(),
                 None => {
+                    let attached = self
+                        .attached
+                        .iter()
+                        .filter(|(k, _)| under(k, controller))
+                        .flat_map(|(_, units)| units);
                     let (map, hash) = shared_persistents(
-                        self.units.values().filter(|u| under(&u.path, controller)),
+                        self.units
+                            .values()
+                            .filter(|u| under(&u.path, controller))
+                            .chain(attached),
                     );
                     let c = (Arc::new(map), hash);
                     self.controllers.insert(controller.to_owned(), c.clone());
@@ -397,6 +452,10 @@ impl Workspace {
         let mut out = Vec::with_capacity(self.units.len());
         for group in self.tasks() {
             for (i, unit) in group.units.iter().enumerate() {
+                if !self.is_own(unit) {
+                    // Attached to the task, not one of the files checked.
+                    continue;
+                }
                 if group.owns(i) {
                     out.push((group.clone(), unit.clone()));
                 } else {
@@ -419,6 +478,12 @@ impl Workspace {
                 .entry(self.task_key(&unit.path))
                 .or_default()
                 .push(unit.clone());
+        }
+        for (key, units) in &self.attached {
+            groups
+                .entry(key.clone())
+                .or_default()
+                .extend(units.iter().cloned());
         }
         groups
             .into_iter()
@@ -468,15 +533,19 @@ impl Workspace {
     fn config_for(&self, key: &str) -> (Option<Signals>, HashSet<String>) {
         let mut signals: Option<Signals> = None;
         let mut mecunits = HashSet::new();
-        for (path, config) in &self.configs {
-            if key.starts_with(config_root(path)) {
-                if let Some(s) = &config.signals {
-                    signals
-                        .get_or_insert_with(Signals::new)
-                        .extend(s.iter().map(|(k, v)| (k.clone(), *v)));
-                }
-                mecunits.extend(config.mecunits.iter().cloned());
+        let attached = self.attached_configs.get(key).into_iter().flatten();
+        let by_place = self
+            .configs
+            .iter()
+            .filter(|(path, _)| key.starts_with(config_root(path)))
+            .map(|(_, config)| config);
+        for config in attached.chain(by_place) {
+            if let Some(s) = &config.signals {
+                signals
+                    .get_or_insert_with(Signals::new)
+                    .extend(s.iter().map(|(k, v)| (k.clone(), *v)));
             }
+            mecunits.extend(config.mecunits.iter().cloned());
         }
         (signals, mecunits)
     }

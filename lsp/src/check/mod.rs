@@ -8,14 +8,12 @@
 //! again, and print the report in the chosen format.
 
 mod baseline;
-pub mod context;
-mod discover;
 mod fix;
 mod output;
 mod settings;
 mod suppress;
 
-use std::collections::{BTreeSet, HashMap, HashSet};
+use std::collections::{HashMap, HashSet};
 use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -24,12 +22,12 @@ use std::sync::Arc;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rapid_analyzer::diagnostic::{Diagnostic, Severity};
 use rapid_analyzer::task::Unit;
-use rapid_analyzer::workspace::{Workspace, diagnostics_of};
+use rapid_analyzer::workspace::diagnostics_of;
 use rayon::prelude::*;
 
-use crate::source::{SourceFile, Unreadable};
+use crate::project::{Discovery, Disk, SourceFile, Sources, context, discover, discover_with};
 
-pub use discover::{Discovery, discover, discover_with};
+pub use crate::project::Skip;
 pub use fix::apply_safe_fixes;
 pub use settings::{LintSettings, Overrides, normalize};
 
@@ -126,42 +124,10 @@ fn lap(phase: &'static str, since: &mut std::time::Instant) {
     *since = now;
 }
 
-/// Files larger than this are not modules a controller would load; they are
-/// skipped with a message rather than parsed.
-pub const MAX_FILE_BYTES: u64 = 8 * 1024 * 1024;
-
 /// A file that was checked, with its diagnostics in source order.
 pub struct Checked {
     pub file: SourceFile,
     pub diagnostics: Vec<Diagnostic>,
-}
-
-/// Why a file was not checked.
-#[derive(Debug)]
-pub enum Skip {
-    Unreadable(Unreadable),
-    TooLarge(u64),
-}
-
-impl Skip {
-    /// An IO error fails the run (exit 2); an encrypted or binary file does not.
-    pub fn is_error(&self) -> bool {
-        matches!(self, Skip::Unreadable(Unreadable::Io(_)))
-    }
-}
-
-impl std::fmt::Display for Skip {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            Skip::Unreadable(why) => why.fmt(f),
-            Skip::TooLarge(bytes) => write!(
-                f,
-                "skipped: {:.1} MB is more than the {} MB a module may have here",
-                *bytes as f64 / 1e6,
-                MAX_FILE_BYTES / (1024 * 1024)
-            ),
-        }
-    }
 }
 
 /// What happened to each file: checked, or skipped with a reason.
@@ -255,6 +221,7 @@ fn run_inner(args: CheckArgs, stderr: &mut impl Write) -> Result<ExitCode, Strin
     let extra = discover(&extra_paths);
     let for_context = settings.clone();
     let context = context::task_context(
+        &Disk,
         &found.files,
         &paths,
         Arc::new(move |p: &Path, dir: bool| for_context.is_excluded(p, dir)),
@@ -512,66 +479,23 @@ pub fn check_files(
     rayon::spawn(|| {
         let _ = rapid_analyzer::catalogue::base();
     });
-    // Read, decode and parse each file in one parallel pass, largest files
-    // first so that no big module is left to one thread at the end.
-    let mut order: Vec<(u64, usize)> = files
-        .iter()
-        .enumerate()
-        .map(|(i, p)| (std::fs::metadata(p).map_or(0, |m| m.len()), i))
-        .collect();
-    order.sort_by(|a, b| b.0.cmp(&a.0).then(a.1.cmp(&b.1)));
-    let mut parsed: Vec<(usize, Result<SourceFile, Skip>, Option<Unit>)> = order
-        .par_iter()
-        .map(|&(_, i)| {
-            let read = read_source(&files[i]);
-            let unit = read
-                .as_ref()
-                .ok()
-                .map(|f| parse_unit(unit_path(&f.path), f.text.clone()));
-            progress.inc(1);
-            (i, read, unit)
-        })
-        .collect();
-    parsed.sort_by_key(|(i, _, _)| *i);
-    // The analyzer's name of each file read, to find its diagnostics.
-    let names: Vec<Option<String>> = parsed
-        .iter()
-        .map(|(_, _, u)| u.as_ref().map(|u| u.path.clone()))
-        .collect();
-    let (read, units): (Vec<_>, Vec<_>) = parsed.into_iter().map(|(_, r, u)| (r, u)).unzip();
+    let (read, units) =
+        crate::project::read_and_parse(&Disk, files, &parse_unit, &|| progress.inc(1));
     lap("reading, decoding, parsing and item trees", &mut clock);
-    let mut workspace = Workspace::new();
-    workspace.set_controller(controller.clone());
-    for path in found.programs.iter().chain(&context.programs) {
-        if let Ok(bytes) = crate::source::read_regular(path) {
-            workspace.set_program(&unit_path(path), &String::from_utf8_lossy(&bytes));
-        }
-    }
-    for path in found.configs.iter().chain(&context.configs) {
-        if let Ok(bytes) = crate::source::read_regular(path) {
-            let text = String::from_utf8_lossy(&bytes);
-            workspace.set_config(&unit_path(path), &text);
-        }
-    }
-    // A module that could not be read (encrypted, binary, too large)
-    // leaves its task incomplete.
-    for (r, path) in read.iter().zip(files) {
-        if r.is_err() {
-            workspace.set_unreadable(&unit_path(path));
-        }
-    }
-    let checked_paths: HashSet<String> = units.iter().flatten().map(|u| u.path.clone()).collect();
-    let checked_keys: BTreeSet<String> = checked_paths
-        .iter()
-        .map(|p| workspace.task_key(p))
-        .collect();
+    let sources = Sources {
+        found: Some(found),
+        context: Some(context),
+        extra: Some(extra),
+    };
+    let crate::project::Loaded {
+        mut workspace,
+        read,
+        names,
+        asked: checked_paths,
+        keys: checked_keys,
+    } = crate::project::assemble(&Disk, &sources, controller, read, units);
     // Skipped files are not checked: the second half of the bar is shorter.
     progress.set_length((files.len() + checked_paths.len()) as u64);
-    add_context(&mut workspace, context, &checked_paths, &checked_keys);
-    add_extra(&mut workspace, extra, &checked_paths, &checked_keys);
-    for unit in units.into_iter().flatten() {
-        workspace.set_unit(unit);
-    }
     let tasks = workspace.checks();
     lap("extra paths, configuration and task indexes", &mut clock);
     // One job per checked file, largest first (a task may be one big
@@ -708,96 +632,6 @@ fn diagnostics_split(
     out
 }
 
-fn read_source(path: &Path) -> Result<SourceFile, Skip> {
-    let meta = std::fs::metadata(path).map_err(|e| Skip::Unreadable(Unreadable::Io(e)))?;
-    if !meta.is_file() {
-        let e = std::io::Error::other(format!(
-            "{}, not a file",
-            crate::source::kind_of(&meta.file_type())
-        ));
-        return Err(Skip::Unreadable(Unreadable::Io(e)));
-    }
-    if meta.len() > MAX_FILE_BYTES {
-        return Err(Skip::TooLarge(meta.len()));
-    }
-    SourceFile::read(path).map_err(Skip::Unreadable)
-}
-
-/// Adds the modules of the checked files' tasks that were not checked
-/// themselves (their programs and configuration are in already).
-fn add_context(
-    workspace: &mut Workspace,
-    context: &Discovery,
-    checked_paths: &HashSet<String>,
-    checked_keys: &BTreeSet<String>,
-) {
-    let units: Vec<Unit> = context
-        .files
-        .par_iter()
-        .filter_map(|p| {
-            let path = unit_path(p);
-            if checked_paths.contains(&path) || !checked_keys.contains(&workspace.task_key(&path)) {
-                return None;
-            }
-            let file = read_source(p).ok()?;
-            Some(Unit::new(path, file.text, None))
-        })
-        .collect();
-    for unit in units {
-        workspace.set_unit(unit);
-    }
-}
-
-/// Adds the modules and I/O configuration of the extra paths. A module
-/// whose own task is checked joins it; any other joins every checked task,
-/// under a path of its own inside the task (its diagnostics are not
-/// computed, so the path is never shown).
-fn add_extra(
-    workspace: &mut Workspace,
-    extra: &Discovery,
-    checked_paths: &HashSet<String>,
-    checked_keys: &BTreeSet<String>,
-) {
-    let units: Vec<Unit> = extra
-        .files
-        .par_iter()
-        .filter(|p| !checked_paths.contains(&unit_path(p)))
-        .filter_map(|p| {
-            let file = read_source(p).ok()?;
-            Some(Unit::new(unit_path(&file.path), file.text, None))
-        })
-        .collect();
-    for (i, unit) in units.into_iter().enumerate() {
-        if checked_keys.contains(&workspace.task_key(&unit.path)) {
-            workspace.set_unit(unit);
-            continue;
-        }
-        let name = unit
-            .path
-            .rsplit(['/', '\\'])
-            .next()
-            .unwrap_or_default()
-            .to_owned();
-        for key in checked_keys {
-            let path = format!("{key}/extra-{i}-{name}");
-            workspace.set_unit(Unit::from_tree(
-                path,
-                unit.text.clone(),
-                Some(unit.tree().clone()),
-            ));
-        }
-    }
-    for (i, path) in extra.configs.iter().enumerate() {
-        if let Ok(bytes) = crate::source::read_regular(path) {
-            let text = String::from_utf8_lossy(&bytes);
-            for key in checked_keys {
-                // Below `SYSPAR`, a configuration applies to the folder above.
-                workspace.set_config(&format!("{key}/SYSPAR/extra-{i}-EIO.cfg"), &text);
-            }
-        }
-    }
-}
-
 /// `files` without those that are the same file as an earlier one.
 fn distinct_files(files: Vec<PathBuf>) -> Vec<PathBuf> {
     let names: Vec<String> = files.par_iter().map(|p| unit_path(p)).collect();
@@ -810,8 +644,8 @@ fn distinct_files(files: Vec<PathBuf>) -> Vec<PathBuf> {
 }
 
 /// The path of a file as the analyzer sees it (it groups tasks by it): its
-/// real place, whatever path named it ([`crate::source::analyzer_path`]).
+/// real place, whatever path named it ([`crate::project::source::analyzer_path`]).
 /// Reports show the path as given.
 pub fn unit_path(path: &Path) -> String {
-    crate::source::analyzer_path(path)
+    crate::project::source::analyzer_path(path)
 }

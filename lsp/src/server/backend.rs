@@ -291,7 +291,7 @@ impl Backend {
         }
         let Ok(found) = self
             .blocking("finding files", move || {
-                crate::check::discover_with(
+                crate::project::discover_with(
                     &roots,
                     Arc::new(move |p: &Path, dir: bool| lint.is_excluded(p, dir)),
                 )
@@ -305,7 +305,7 @@ impl Backend {
 
     /// Reads the files found (RAPID files, programs, configuration) into the
     /// workspace, reporting progress, then publishes diagnostics again.
-    pub(super) async fn index(&self, found: crate::check::Discovery) {
+    pub(super) async fn index(&self, found: crate::project::Discovery) {
         let progress_supported = self.shared.lock().caps.work_done_progress;
         let progress = if progress_supported && !found.files.is_empty() {
             let token = NumberOrString::String("rapid/indexing".to_owned());
@@ -362,7 +362,7 @@ impl Backend {
         }
         self.mutate("indexing", |s| {
             for program in &found.programs {
-                if let Ok(bytes) = crate::source::read_regular(program) {
+                if let Ok(bytes) = crate::project::source::read_regular(program) {
                     s.ws.set_program(&program.to_string_lossy(), &String::from_utf8_lossy(&bytes));
                 }
             }
@@ -447,7 +447,7 @@ impl Backend {
                         .collect();
                     let found = walk.then(|| {
                         let started = std::time::Instant::now();
-                        let mut found = crate::check::discover_with(
+                        let mut found = crate::project::discover_with(
                             &roots,
                             Arc::new(move |p: &Path, dir: bool| lint.is_excluded(p, dir)),
                         );
@@ -571,7 +571,7 @@ fn read_units(
     files
         .par_iter()
         .filter_map(|p| {
-            let read = crate::source::SourceFile::read(p)
+            let read = crate::project::source::SourceFile::read(p)
                 .map(|f| closed_unit(p.to_string_lossy().into_owned(), f.text));
             let mtime = super::state::mtime(p);
             let problem = {

@@ -16,12 +16,12 @@ use tower_lsp_server::ls_types::{Location, Position, Uri};
 use super::document::Document;
 use super::position::{LineMap, PosEncoding};
 use super::settings::Settings;
-use crate::source::{SourceFile, Unreadable};
+use crate::project::source::{SourceFile, Unreadable};
 
-/// Files larger than this are kept as text but not analysed: parsing tens
-/// of megabytes would stall every request behind it, and no RAPID module
-/// is that large.
-pub const MAX_ANALYSED_BYTES: usize = 8 * 1024 * 1024;
+/// Files larger than the project's limit ([`crate::project::MAX_FILE_BYTES`])
+/// are kept as text but not analysed: parsing tens of megabytes would stall
+/// every request behind it, and no RAPID module is that large.
+pub const MAX_ANALYSED_BYTES: usize = crate::project::MAX_FILE_BYTES as usize;
 
 /// What the client can do, as far as the server cares.
 #[derive(Clone, Copy, Debug, Default)]
@@ -430,7 +430,7 @@ impl State {
     pub fn load_from_disk(&mut self, path: &Path) -> Result<bool, Unreadable> {
         let name = path.to_string_lossy().into_owned();
         if is_eio_cfg(&name) {
-            let bytes = crate::source::read_regular(path).map_err(Unreadable::Io)?;
+            let bytes = crate::project::source::read_regular(path).map_err(Unreadable::Io)?;
             self.ws.set_config(&name, &String::from_utf8_lossy(&bytes));
             self.config_generation += 1;
             return Ok(true);
