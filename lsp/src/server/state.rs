@@ -8,7 +8,7 @@ use std::sync::{Arc, Mutex, MutexGuard, PoisonError};
 
 use rapid_analyzer::check::StmtCache;
 use rapid_analyzer::diagnostic::Diagnostic;
-use rapid_analyzer::task::{Task, Unit, task_key};
+use rapid_analyzer::task::{Task, Unit};
 use rapid_analyzer::text::LineIndex;
 use rapid_analyzer::workspace::{Workspace, diagnostics_cached, diagnostics_of};
 use tower_lsp_server::ls_types::{Location, Position, Uri};
@@ -415,12 +415,14 @@ impl State {
         true
     }
 
-    /// Open documents of the task of `path`, other than `path`.
+    /// Open documents of the task of `path`, other than `path`, grouped as
+    /// the workspace groups them (a `.pgf` program's modules may be in
+    /// several folders).
     pub fn open_in_task(&self, path: &str) -> Vec<String> {
-        let key = task_key(path);
+        let key = self.ws.task_key(path);
         self.docs
             .keys()
-            .filter(|p| *p != path && task_key(p) == key)
+            .filter(|p| *p != path && self.ws.task_key(p) == key)
             .cloned()
             .collect()
     }
