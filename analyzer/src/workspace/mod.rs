@@ -61,12 +61,12 @@ pub struct Workspace {
     systems: BTreeMap<String, ControllerInfo>,
     /// The controller as the project configuration describes it.
     controller: ControllerOverride,
-    /// Modules that join a task whatever their place says (a project's
-    /// extra paths), by the task's key: see [`Workspace::attach_unit`].
-    attached: BTreeMap<String, Vec<Arc<Unit>>>,
-    /// Configuration that applies to a task whatever its place says (a
-    /// project's extra paths), by the task's key, in the order given.
-    attached_configs: BTreeMap<String, Vec<Config>>,
+    /// Modules that join every task whatever their place says (a
+    /// project's extra paths): see [`Workspace::add_extra_unit`].
+    extras: Vec<Arc<Unit>>,
+    /// Configuration that applies to every task whatever its place says
+    /// (a project's extra paths), in the order given.
+    extra_configs: Vec<Config>,
 }
 
 struct Checked {
@@ -191,34 +191,34 @@ impl Workspace {
         }
     }
 
-    /// Makes `unit` a member of the task `key` besides the modules its
-    /// place groups there (a module of a project's extra paths, which
-    /// belongs to every task that uses it). The unit keeps its own path: it
-    /// is found by it in related locations, and it is not one of the files
-    /// [`Workspace::checks`] and [`Workspace::diagnostics`] check. One unit
-    /// may join several tasks.
-    pub fn attach_unit(&mut self, key: &str, unit: Arc<Unit>) {
-        self.attached.entry(key.to_owned()).or_default().push(unit);
-        self.forget_task(key);
-        self.members.remove(key);
-        self.forget_sibling_tasks(key);
+    /// Makes `unit` a member of every task besides the modules their
+    /// places group there: a module of a project's extra paths (a library
+    /// the program's tasks load from elsewhere). The unit keeps its own
+    /// path, by which related locations name it, and it is not one of the
+    /// files [`Workspace::checks`] and [`Workspace::diagnostics`] check.
+    pub fn add_extra_unit(&mut self, unit: Arc<Unit>) {
+        self.extras.push(unit);
+        self.forget_all_tasks();
+        self.controllers.clear();
     }
 
     /// Makes the configuration `text` (`EIO.cfg` signals, `MOC.cfg`
-    /// mechanical units) apply to the task `key` besides what applies by
-    /// place (a project's extra paths). The task's own configuration wins
-    /// where both declare a signal.
-    pub fn attach_config(&mut self, key: &str, text: &str) {
-        self.attached_configs
-            .entry(key.to_owned())
-            .or_default()
-            .push(parse_config(text));
+    /// mechanical units) apply to every task besides what applies by place
+    /// (a project's extra paths). A task's own configuration wins where
+    /// both declare a signal.
+    pub fn add_extra_config(&mut self, text: &str) {
+        self.extra_configs.push(parse_config(text));
         self.forget_all_tasks();
     }
 
-    /// The units [`Workspace::attach_unit`] made members of the task `key`.
-    fn attached_to(&self, key: &str) -> impl Iterator<Item = &Arc<Unit>> {
-        self.attached.get(key).into_iter().flatten()
+    /// Forgets the modules and configuration of the extra paths.
+    pub fn clear_extras(&mut self) {
+        if !self.extras.is_empty() || !self.extra_configs.is_empty() {
+            self.extras.clear();
+            self.extra_configs.clear();
+            self.forget_all_tasks();
+            self.controllers.clear();
+        }
     }
 
     pub fn remove_file(&mut self, path: &str) {
@@ -312,8 +312,7 @@ impl Workspace {
         }
     }
 
-    /// Is `unit` the workspace's file of its path (not a unit attached to
-    /// a task)?
+    /// Is `unit` the workspace's file of its path (not an extra unit)?
     fn is_own(&self, unit: &Arc<Unit>) -> bool {
         self.units
             .get(&unit.path)
@@ -368,7 +367,7 @@ impl Workspace {
             .units
             .values()
             .filter(|u| self.task_key(&u.path) == key)
-            .chain(self.attached_to(&key))
+            .chain(&self.extras)
             .cloned()
             .collect();
         self.build_task(key, units)
@@ -378,7 +377,7 @@ impl Workspace {
     fn build_task(&mut self, key: String, units: Vec<Arc<Unit>>) -> Arc<Task> {
         let grouping = match units.first() {
             Some(u) if self.units.contains_key(&u.path) => self.locate(&u.path).1,
-            // Only attached units: nothing places the task.
+            // Only extra units: nothing places the task.
             _ => Grouping::Folder,
         };
         let mut task = self.make_task(key.clone(), units, grouping);
@@ -424,16 +423,11 @@ impl Workspace {
             let (shared, hash) = match self.controllers.get(controller) {
                 Some(c) => c.clone(),
                 None => {
-                    let attached = self
-                        .attached
-                        .iter()
-                        .filter(|(k, _)| under(k, controller))
-                        .flat_map(|(_, units)| units);
                     let (map, hash) = shared_persistents(
                         self.units
                             .values()
                             .filter(|u| under(&u.path, controller))
-                            .chain(attached),
+                            .chain(&self.extras),
                     );
                     let c = (Arc::new(map), hash);
                     self.controllers.insert(controller.to_owned(), c.clone());
@@ -453,7 +447,7 @@ impl Workspace {
         for group in self.tasks() {
             for (i, unit) in group.units.iter().enumerate() {
                 if !self.is_own(unit) {
-                    // Attached to the task, not one of the files checked.
+                    // An extra unit, not one of the files checked.
                     continue;
                 }
                 if group.owns(i) {
@@ -479,11 +473,8 @@ impl Workspace {
                 .or_default()
                 .push(unit.clone());
         }
-        for (key, units) in &self.attached {
-            groups
-                .entry(key.clone())
-                .or_default()
-                .extend(units.iter().cloned());
+        for units in groups.values_mut() {
+            units.extend(self.extras.iter().cloned());
         }
         groups
             .into_iter()
@@ -533,13 +524,12 @@ impl Workspace {
     fn config_for(&self, key: &str) -> (Option<Signals>, HashSet<String>) {
         let mut signals: Option<Signals> = None;
         let mut mecunits = HashSet::new();
-        let attached = self.attached_configs.get(key).into_iter().flatten();
         let by_place = self
             .configs
             .iter()
             .filter(|(path, _)| key.starts_with(config_root(path)))
             .map(|(_, config)| config);
-        for config in attached.chain(by_place) {
+        for config in self.extra_configs.iter().chain(by_place) {
             if let Some(s) = &config.signals {
                 signals
                     .get_or_insert_with(Signals::new)
@@ -636,6 +626,11 @@ fn under(path: &str, folder: &str) -> bool {
 
 /// A path with `/` separators, `.` and `..` resolved, folded.
 fn normalize(path: &str) -> String {
+    resolve_dots(path).to_ascii_lowercase()
+}
+
+/// A path with `/` separators, `.` and `..` resolved.
+fn resolve_dots(path: &str) -> String {
     let mut parts: Vec<&str> = Vec::new();
     let unified = path.replace('\\', "/");
     for p in unified.split('/') {
@@ -647,13 +642,24 @@ fn normalize(path: &str) -> String {
             _ => parts.push(p),
         }
     }
-    parts.join("/").to_ascii_lowercase()
+    parts.join("/")
 }
 
 /// The folded paths of the modules a program file lists, resolved against
-/// the program file's folder. Reads `<Module>...</Module>` elements (any
-/// case); anything else in the XML is ignored.
+/// the program file's folder.
 fn parse_program(path: &str, xml: &str) -> Vec<String> {
+    program_modules(path, xml)
+        .iter()
+        .map(|m| m.to_ascii_lowercase())
+        .collect()
+}
+
+/// The paths of the modules a program file (`.pgf`) lists, resolved
+/// against the program file's folder (with `/` separators, in the case the
+/// program writes them), for a loader to read them. Reads
+/// `<Module>...</Module>` elements (any case); anything else in the XML is
+/// ignored.
+pub fn program_modules(path: &str, xml: &str) -> Vec<String> {
     let dir = path
         .replace('\\', "/")
         .rsplit_once('/')
@@ -673,7 +679,7 @@ fn parse_program(path: &str, xml: &str) -> Vec<String> {
             } else {
                 format!("{dir}/{name}")
             };
-            out.push(normalize(&full));
+            out.push(resolve_dots(&full));
         }
         at = start + len;
     }

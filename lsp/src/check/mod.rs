@@ -223,6 +223,7 @@ fn run_inner(args: CheckArgs, stderr: &mut impl Write) -> Result<ExitCode, Strin
     let context = context::task_context(
         &Disk,
         &found.files,
+        &found.programs,
         &paths,
         Arc::new(move |p: &Path, dir: bool| for_context.is_excluded(p, dir)),
     );

@@ -14,6 +14,7 @@ use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 
 use rapid_analyzer::task::{controller_of, task_key};
+use rapid_analyzer::workspace::program_modules;
 
 use super::discover::{Discovery, Excluder, discover_in};
 use super::{Disk, Environment, Kind};
@@ -59,10 +60,13 @@ pub fn task_folders_in(env: &dyn Environment, path: &str) -> TaskFolders {
 }
 
 /// The files of the tasks of `files` that walking `given` (the paths named
-/// on the command line) did not reach: modules, programs and configuration.
+/// on the command line) did not reach: modules, programs and configuration,
+/// and the modules that the programs found (`programs` and those of the
+/// tasks' folders) list in other folders.
 pub fn task_context(
     env: &dyn Environment,
     files: &[PathBuf],
+    programs: &[PathBuf],
     given: &[PathBuf],
     excluded: Excluder,
 ) -> Discovery {
@@ -80,10 +84,19 @@ pub fn task_context(
         shallow.extend(folders.shallow.into_iter().filter(|d| !covered(d)));
     }
     let list = |set: BTreeSet<PathBuf>| set.into_iter().collect::<Vec<_>>();
-    let mut out = discover_folders_in(env, &list(deep), &list(shallow), excluded);
+    let mut out = discover_folders_in(env, &list(deep), &list(shallow), excluded.clone());
     // What cannot be walked here is not the run's problem: it was not named.
     out.errors.clear();
     out.warnings.clear();
+    // The modules the programs list, wherever they are.
+    let listed = program_members(env, programs.iter().chain(&out.programs));
+    out.files.extend(
+        listed
+            .into_iter()
+            .filter(|m| !excluded(m, false) && !files.contains(m)),
+    );
+    out.files.sort();
+    out.files.dedup();
     out
 }
 
@@ -102,5 +115,29 @@ pub fn discover_folders_in(
 ) -> Discovery {
     let mut out = discover_in(env, deep, excluded.clone(), None);
     out.extend(discover_in(env, shallow, excluded, Some(1)));
+    out
+}
+
+/// The module files that the program files `programs` (`.pgf`) list and
+/// that exist.
+pub fn program_members<'a>(
+    env: &dyn Environment,
+    programs: impl Iterator<Item = &'a PathBuf>,
+) -> Vec<PathBuf> {
+    let mut out = Vec::new();
+    for pgf in programs {
+        let Ok(bytes) = env.read(pgf) else {
+            continue;
+        };
+        let xml = String::from_utf8_lossy(&bytes);
+        for module in program_modules(&pgf.to_string_lossy(), &xml) {
+            let path = PathBuf::from(module);
+            if matches!(env.kind(&path), Ok(Kind::File(_))) {
+                out.push(path);
+            }
+        }
+    }
+    out.sort();
+    out.dedup();
     out
 }

@@ -167,9 +167,9 @@ fn add_context(
 }
 
 /// Adds the modules and configuration of the extra paths. A module whose
-/// own task is asked for joins it; any other is attached to every task
-/// asked for, under its own name (its diagnostics are not computed), and
-/// so is every configuration.
+/// own task is asked for joins it; any other joins every task (all of them
+/// are tasks asked for), under its own name (its diagnostics are not
+/// computed), and so does every configuration.
 fn add_extra(
     env: &dyn Environment,
     workspace: &mut Workspace,
@@ -193,17 +193,11 @@ fn add_extra(
             workspace.set_unit(unit);
             continue;
         }
-        let unit = Arc::new(unit);
-        for key in keys {
-            workspace.attach_unit(key, unit.clone());
-        }
+        workspace.add_extra_unit(Arc::new(unit));
     }
     for path in &extra.configs {
         if let Ok(bytes) = env.read(path) {
-            let text = String::from_utf8_lossy(&bytes);
-            for key in keys {
-                workspace.attach_config(key, &text);
-            }
+            workspace.add_extra_config(&String::from_utf8_lossy(&bytes));
         }
     }
 }
@@ -245,7 +239,8 @@ pub fn load_around(
         }
     }
     let mut found = super::discover_in(env, &roots, Arc::new(|_, _| false), None);
-    for n in &named {
+    let listed = super::context::program_members(env, found.programs.iter());
+    for n in named.iter().chain(&listed) {
         if !found.files.contains(n) {
             found.files.push(n.clone());
         }

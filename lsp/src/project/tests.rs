@@ -166,7 +166,13 @@ fn checking_one_module_of_a_backup_loads_the_rest_of_its_task() {
     ]);
     let given = [PathBuf::from("/b/RAPID/TASK1/PROGMOD/Main.mod")];
     let found = discover_in(&env, &given, nothing_excluded(), None);
-    let context = context::task_context(&env, &found.files, &given, nothing_excluded());
+    let context = context::task_context(
+        &env,
+        &found.files,
+        &found.programs,
+        &given,
+        nothing_excluded(),
+    );
     assert_eq!(context.configs, [PathBuf::from("/b/SYSPAR/EIO.cfg")]);
     let sources = Sources {
         found: Some(&found),
@@ -202,6 +208,21 @@ fn a_program_file_groups_the_modules_it_lists() {
         "/p/app/App.pgf".to_owned(),
         vec!["/p/app/Main.mod".to_owned(), "/p/lib/Helper.sys".to_owned()]
     )));
+    assert!(codes(&mut loaded, "/p/app/Main.mod").is_empty());
+    // Checking the program's module alone loads what the program lists
+    // in another folder.
+    let given = [PathBuf::from("/p/app/Main.mod")];
+    let one = discover_in(&env, &given, nothing_excluded(), None);
+    let context =
+        context::task_context(&env, &one.files, &one.programs, &given, nothing_excluded());
+    assert!(context.files.contains(&PathBuf::from("/p/lib/Helper.sys")));
+    assert_eq!(context.programs, [PathBuf::from("/p/app/App.pgf")]);
+    let sources = Sources {
+        found: Some(&one),
+        context: Some(&context),
+        extra: None,
+    };
+    let mut loaded = load(&env, &sources, &ControllerOverride::default());
     assert!(codes(&mut loaded, "/p/app/Main.mod").is_empty());
 }
 

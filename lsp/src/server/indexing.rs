@@ -14,29 +14,50 @@ use super::state::{Shared, closed_unit};
 use super::backend::*;
 
 impl Backend {
-    /// Reads every RAPID file and `EIO.cfg` under the workspace folders and
-    /// the extra paths, reporting progress.
+    /// Reads every RAPID file and `EIO.cfg` under the workspace folders,
+    /// reporting progress, and the modules and configuration of the extra
+    /// paths, which join every task as they do in `rapid check`.
     pub(super) async fn index_workspace(&self) {
-        let (roots, lint) = {
+        let (roots, extra_paths, lint) = {
             let s = self.shared.lock();
-            let mut roots = s.roots.clone();
-            roots.extend(s.settings.extra_paths());
-            (roots, s.settings.lint.clone())
+            (
+                s.roots.clone(),
+                s.settings.extra_paths(),
+                s.settings.lint.clone(),
+            )
         };
         if roots.is_empty() {
             return;
         }
-        let Ok(found) = self
+        let Ok((found, extras)) = self
             .blocking("finding files", move || {
-                crate::project::discover_with(
+                let found = crate::project::discover_with(
                     &roots,
                     Arc::new(move |p: &Path, dir: bool| lint.is_excluded(p, dir)),
-                )
+                );
+                let extras = read_extras(&extra_paths, &found);
+                (found, extras)
             })
             .await
         else {
             return;
         };
+        let problems = self
+            .mutate("reading the extra paths", |s| {
+                s.ws.clear_extras();
+                for unit in extras.units {
+                    s.ws.add_extra_unit(Arc::new(unit));
+                }
+                for text in &extras.configs {
+                    s.ws.add_extra_config(text);
+                }
+                s.config_generation += 1;
+                extras.problems
+            })
+            .unwrap_or_default();
+        for problem in problems {
+            self.log(MessageType::WARNING, problem).await;
+        }
         self.index(found).await;
     }
 
@@ -157,4 +178,45 @@ pub(super) fn read_units(
             problem
         })
         .collect()
+}
+
+/// The modules and configuration of the extra paths, and what could not
+/// be read there.
+struct Extras {
+    units: Vec<rapid_analyzer::task::Unit>,
+    configs: Vec<String>,
+    problems: Vec<String>,
+}
+
+/// Reads the extra paths as `rapid check` does (through the project
+/// loader's discovery and reading), leaving out the modules of the
+/// workspace folders (`found`), which are the workspace's own.
+fn read_extras(paths: &[PathBuf], found: &crate::project::Discovery) -> Extras {
+    use crate::project::{Disk, discover, read_source};
+    let extra = discover(paths);
+    let own: std::collections::HashSet<&PathBuf> = found.files.iter().collect();
+    let mut out = Extras {
+        units: Vec::new(),
+        configs: Vec::new(),
+        problems: extra
+            .errors
+            .iter()
+            .map(|(p, why)| format!("{} (extra path): {why}", p.display()))
+            .collect(),
+    };
+    for path in extra.files.iter().filter(|p| !own.contains(p)) {
+        match read_source(&Disk, path) {
+            Ok(file) => out
+                .units
+                .push(closed_unit(path.to_string_lossy().into_owned(), file.text)),
+            Err(why) => out.problems.push(format!("{}: {why}", path.display())),
+        }
+    }
+    for path in &extra.configs {
+        if let Ok(bytes) = crate::project::source::read_regular(path) {
+            out.configs
+                .push(String::from_utf8_lossy(&bytes).into_owned());
+        }
+    }
+    out
 }
