@@ -1,22 +1,23 @@
 //! `rapid check`: find RAPID files, analyse them, report what is wrong.
 //!
-//! The run: resolve `rapid.toml` and the flags ([`LintSettings`]), find the
-//! files ([`discover`]), read and parse them in parallel, group them into
+//! The run ([`run`], in named steps): resolve `rapid.toml` and the flags
+//! ([`LintSettings`]), find the files through the project loader
+//! ([`crate::project`]), read and parse them in parallel, group them into
 //! tasks with the modules and `EIO.cfg` of `extra-paths`, check every task
-//! in parallel, keep what the settings and the inline suppressions select
-//! ([`LintSettings::apply`]), optionally apply the safe fixes and check
-//! again, and print the report in the chosen format.
+//! in parallel ([`check_files`]), keep what the settings and the inline
+//! suppressions select ([`LintSettings::apply`]), optionally apply the
+//! safe fixes and check again, and print the report in the chosen format.
 
 mod baseline;
 mod fix;
 mod output;
+mod run;
 mod settings;
 mod suppress;
 
 use std::collections::{HashMap, HashSet};
-use std::io::{IsTerminal, Write};
+use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
-use std::process::ExitCode;
 use std::sync::Arc;
 
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
@@ -25,10 +26,11 @@ use rapid_analyzer::task::Unit;
 use rapid_analyzer::workspace::diagnostics_of;
 use rayon::prelude::*;
 
-use crate::project::{Discovery, Disk, SourceFile, Sources, context, discover, discover_with};
+use crate::project::{Discovery, Disk, SourceFile, Sources};
 
 pub use crate::project::Skip;
 pub use fix::apply_safe_fixes;
+pub use run::run;
 pub use settings::{LintSettings, Overrides, normalize};
 
 /// Output formats of `rapid check`.
@@ -148,298 +150,6 @@ pub struct Report {
     pub baselined: usize,
 }
 
-pub fn run(args: CheckArgs) -> ExitCode {
-    let mut stderr = anstream::stderr();
-    match run_inner(args, &mut stderr) {
-        Ok(code) => code,
-        Err(message) => {
-            let _ = writeln!(stderr, "rapid: {message}");
-            ExitCode::from(2)
-        }
-    }
-}
-
-fn run_inner(args: CheckArgs, stderr: &mut impl Write) -> Result<ExitCode, String> {
-    if let Some(n) = args.threads {
-        // Fails only if the pool was built already, which it is not here.
-        let _ = rayon::ThreadPoolBuilder::new()
-            .num_threads(n.max(1))
-            .build_global();
-    }
-    let mut clock = std::time::Instant::now();
-    let started = clock;
-    let paths = if args.paths.is_empty() {
-        vec![PathBuf::from(".")]
-    } else {
-        args.paths.clone()
-    };
-    let (config, config_path) = crate::config::resolve_with_path(args.config.as_deref(), &paths[0])
-        .map_err(|e| e.to_string())?;
-    let root = match config_path.as_deref().and_then(Path::parent).map(|dir| {
-        if dir.as_os_str().is_empty() {
-            Path::new(".")
-        } else {
-            dir
-        }
-    }) {
-        Some(dir) => normalize(&std::path::absolute(dir).map_err(|e| e.to_string())?),
-        None => normalize(&std::env::current_dir().map_err(|e| e.to_string())?),
-    };
-    let settings = LintSettings::new(
-        &config,
-        root.clone(),
-        &Overrides {
-            select: args.select.clone(),
-            ignore: args.ignore.clone(),
-            exclude: args.exclude.clone(),
-            min_severity: args.min_severity,
-        },
-    )
-    .map_err(|e| e.to_string())?;
-    let settings = Arc::new(settings);
-    let for_walk = settings.clone();
-    let mut found = discover_with(
-        &paths,
-        Arc::new(move |p: &Path, dir: bool| for_walk.is_excluded(p, dir)),
-    );
-    // A file named twice (`rapid check . PROGMOD`, a link) is checked once.
-    found.files = distinct_files(std::mem::take(&mut found.files));
-    let mut failed = false;
-    for (path, why) in &found.errors {
-        let _ = writeln!(stderr, "rapid: {}: {why}", output::display_path(path));
-        failed = true;
-    }
-    for (path, why) in &found.warnings {
-        let _ = writeln!(stderr, "rapid: {}: {why}", output::display_path(path));
-    }
-    let extra_paths: Vec<PathBuf> = config
-        .extra_paths
-        .iter()
-        .map(|p| root.join(p))
-        .chain(args.extra_path.iter().cloned())
-        .collect();
-    let extra = discover(&extra_paths);
-    let for_context = settings.clone();
-    let context = context::task_context(
-        &Disk,
-        &found.files,
-        &found.programs,
-        &paths,
-        Arc::new(move |p: &Path, dir: bool| for_context.is_excluded(p, dir)),
-    );
-    for (path, why) in &extra.errors {
-        let _ = writeln!(stderr, "rapid: {} (extra path): {why}", path.display());
-        failed = true;
-    }
-    if found.files.is_empty() && found.errors.is_empty() {
-        let _ = writeln!(
-            stderr,
-            "rapid: no RAPID files found in {}",
-            paths
-                .iter()
-                .map(|p| p.display().to_string())
-                .collect::<Vec<_>>()
-                .join(", ")
-        );
-    }
-
-    lap("configuration and discovery", &mut clock);
-    let progress = progress_bar(found.files.len());
-    let controller = config.controller.resolve().unwrap_or_default();
-    let mut outcomes = check_files(&found, &context, &extra, &controller, &progress);
-    let mut fixed = 0;
-    if args.fix {
-        // A fix can make room for another (or reveal one): a few passes.
-        for _ in 0..4 {
-            let (n, write_failed) = fix_outcomes(&mut outcomes, &settings, stderr);
-            failed |= write_failed;
-            fixed += n;
-            if n == 0 {
-                break;
-            }
-            outcomes = check_files(&found, &context, &extra, &controller, &progress);
-        }
-    }
-    progress.finish_and_clear();
-    clock = std::time::Instant::now();
-
-    let mut report = Report {
-        checked: Vec::with_capacity(outcomes.len()),
-        skipped: Vec::new(),
-        fixed,
-        baselined: 0,
-    };
-    for outcome in outcomes {
-        match outcome {
-            Outcome::Checked(mut c) => {
-                let diagnostics = std::mem::take(&mut c.diagnostics);
-                c.diagnostics =
-                    settings.apply(&c.file.path, &c.file.text, &c.file.lines, diagnostics);
-                report.checked.push(c);
-            }
-            Outcome::Skipped(path, why) => {
-                failed |= why.is_error();
-                let _ = writeln!(stderr, "rapid: {}: {why}", output::display_path(&path));
-                report.skipped.push((path, why.to_string()));
-            }
-        }
-    }
-
-    if let Some(path) = &args.baseline {
-        apply_baseline(path, args.update_baseline, &mut report, stderr)?;
-    }
-    lap("selection and suppressions", &mut clock);
-    // Colours as the real stdout allows, through a buffer: stdout is
-    // line-buffered even into a pipe, a system call for every line of the
-    // report (31,000 for 6,000 findings).
-    let stdout = std::io::stdout();
-    let colours = anstream::AutoStream::choice(&stdout);
-    let mut buffered = std::io::BufWriter::with_capacity(1 << 16, stdout.lock());
-    let mut out = anstream::AutoStream::new(&mut buffered as &mut dyn Write, colours);
-    let written = if args.statistics {
-        output::statistics(&mut out, &report, args.format == Format::Json)
-    } else {
-        match args.format {
-            Format::Human => {
-                output::human(&mut out, &report, colours != anstream::ColorChoice::Never)
-            }
-            Format::Concise => output::concise(&mut out, &report),
-            Format::Json => output::json(&mut out, &report),
-            Format::Sarif => output::sarif(&mut out, &report, &root),
-            Format::Github => output::github(&mut out, &report),
-            Format::Junit => output::junit(&mut out, &report),
-        }
-    };
-    if let Err(e) = written.and_then(|()| out.flush())
-        && e.kind() != std::io::ErrorKind::BrokenPipe
-    {
-        return Err(format!("cannot write the report: {e}"));
-    }
-    lap("output", &mut clock);
-    if args.timings
-        && let Ok(t) = TIMINGS.lock()
-    {
-        for (phase, took) in t.iter() {
-            let _ = writeln!(stderr, "{:>9.2} ms  {phase}", took.as_secs_f64() * 1e3);
-        }
-        let total = started.elapsed().as_secs_f64() * 1e3;
-        let _ = writeln!(
-            stderr,
-            "{total:>9.2} ms  total ({} threads)",
-            rayon::current_num_threads()
-        );
-    }
-    let worst = report
-        .checked
-        .iter()
-        .flat_map(|c| &c.diagnostics)
-        .map(|d| d.severity)
-        .max();
-    let threshold = if args.error_on_warnings {
-        Severity::Warning
-    } else {
-        Severity::Error
-    };
-    Ok(if failed {
-        ExitCode::from(2)
-    } else if !args.exit_zero && worst.is_some_and(|w| w >= threshold) {
-        ExitCode::from(1)
-    } else {
-        ExitCode::SUCCESS
-    })
-}
-
-/// `--baseline`: leaves out the findings the file holds, or records them
-/// in it when it does not exist yet (or `update` says so).
-fn apply_baseline(
-    path: &Path,
-    update: bool,
-    report: &mut Report,
-    stderr: &mut impl Write,
-) -> Result<(), String> {
-    let shown = output::display_path(path);
-    match baseline::Baseline::read(path)? {
-        Some(known) if !update => {
-            let filtered = known.filter(&mut report.checked);
-            report.baselined = filtered.known;
-            if filtered.gone > 0 {
-                let s = if filtered.gone == 1 { "" } else { "s" };
-                let _ = writeln!(
-                    stderr,
-                    "rapid: {} finding{s} of the baseline {shown} no longer found; \
-                     `--update-baseline` records the baseline again",
-                    filtered.gone
-                );
-            }
-        }
-        _ => {
-            let n = baseline::record(path, &report.checked)?;
-            let s = if n == 1 { "" } else { "s" };
-            let _ = writeln!(
-                stderr,
-                "rapid: recorded {n} finding{s} in {shown}; runs with `--baseline {shown}` \
-                 report only findings that are not in it"
-            );
-            report.baselined = n;
-            for c in &mut report.checked {
-                c.diagnostics.clear();
-            }
-        }
-    }
-    Ok(())
-}
-
-/// Applies the safe fixes of the reported diagnostics to each file and
-/// writes it back in its encoding. Returns the fixes applied, and whether
-/// a file could not be written.
-fn fix_outcomes(
-    outcomes: &mut [Outcome],
-    settings: &LintSettings,
-    stderr: &mut impl Write,
-) -> (usize, bool) {
-    let mut total = 0;
-    let mut failed = false;
-    for outcome in outcomes.iter_mut() {
-        let Outcome::Checked(c) = outcome else {
-            continue;
-        };
-        if c.diagnostics.iter().all(|d| d.fix.is_none()) {
-            continue;
-        }
-        let reported = settings.apply(
-            &c.file.path,
-            &c.file.text,
-            &c.file.lines,
-            c.diagnostics.clone(),
-        );
-        let Some((text, n)) = apply_safe_fixes(&c.file.text, &reported) else {
-            continue;
-        };
-        let path = output::display_path(&c.file.path);
-        match c.file.encoding.encode(&text) {
-            Ok(bytes) => match std::fs::write(&c.file.path, bytes) {
-                Ok(()) => {
-                    total += n;
-                    let s = if n == 1 { "" } else { "s" };
-                    let _ = writeln!(stderr, "rapid: {path}: fixed {n} problem{s}");
-                }
-                Err(e) => {
-                    failed = true;
-                    let _ = writeln!(stderr, "rapid: {path}: cannot write the fixes: {e}");
-                }
-            },
-            Err(at) => {
-                let _ = writeln!(
-                    stderr,
-                    "rapid: {path}: fixes not written: the character at byte {at} cannot be written in {}",
-                    c.file.encoding.name()
-                );
-            }
-        }
-    }
-    (total, failed)
-}
-
 /// A progress bar on stderr for long runs on a terminal; hidden in pipes,
 /// files and CI logs.
 fn progress_bar(files: usize) -> ProgressBar {
@@ -461,7 +171,7 @@ fn progress_bar(files: usize) -> ProgressBar {
 /// `configs` are the I/O configuration files whose signals and mechanical
 /// units the tasks below them may use; its `programs` are `.pgf` files that
 /// group modules into a task. The rest of the checked files' tasks
-/// (`context`, [`context::task_context`]) and the modules and configuration
+/// (`context`, [`crate::project::context::task_context`]) and the modules and configuration
 /// of `extra` join the tasks (the tasks they belong to when those are
 /// checked, else, for `extra`, every checked task) but are not reported.
 /// Diagnostics are the analyzer's, unfiltered.
