@@ -7,7 +7,7 @@ use std::ops::Range;
 use tree_sitter::Node;
 
 use super::{Cx, RoutineCx, Used, decl_ty, exprs, stmts};
-use crate::diagnostic::{Diagnostic, Edit, Fix};
+use crate::diagnostic::Diagnostic;
 use crate::items::{self, DataDecl, Module, RoutineDecl, RoutineKind, Storage};
 use crate::names::{NameMap, fold, same};
 use crate::rules;
@@ -672,15 +672,19 @@ pub(super) fn check_routine_part<'t>(
         }
     }
     if decl.kind == RoutineKind::Func && !stmts::block_terminates(cx, &statements) {
-        let mut d = Diagnostic::new(
-            &rules::missing_return::RULE,
-            decl.name_range.clone(),
-            format!(
-                "the function `{}` can reach its end without RETURN",
-                decl.name
-            ),
-        );
-        if let Some(fix) = missing_return_fix(cx, node, decl) {
+        let mut d = rules::missing_return::diagnostic(&decl.name, decl.name_range.clone());
+        let last = statements.last().or(decl_nodes.last()).copied();
+        if let Some(returns) = &decl.returns
+            && let Some(fix) = rules::missing_return::fix(
+                cx.text,
+                &cx.types,
+                node,
+                cx.unit.routine_rest(node),
+                last,
+                &decl.name,
+                &returns.name,
+            )
+        {
             d = d.with_fix(fix);
         }
         cx.report_with(d);
@@ -784,71 +788,6 @@ fn routine_children(node: Node<'_>) -> (RoutineChildren<'_>, Vec<Node<'_>>) {
 /// routine data only) a built-in one. Parameters named like a built-in
 /// (`speed`, `tool`...) are common and harmless: the parameter is the
 /// routine's interface, and the built-in is rarely wanted inside.
-/// Inserts `RETURN <default>;` before `ENDFUNC`, for the types that have an
-/// obvious default value. Not safe: the right value is the author's call.
-fn missing_return_fix(cx: &Cx<'_>, node: Node<'_>, decl: &RoutineDecl) -> Option<Fix> {
-    let ty = decl.returns.as_ref()?;
-    let base = cx.types.base(&Ty::named(&ty.name));
-    let value = if cx.types.is_num_like(&base) {
-        "0"
-    } else if base.is("bool") {
-        "FALSE"
-    } else if base.is("string") {
-        "\"\""
-    } else {
-        return None;
-    };
-    let mut cursor = node.walk();
-    let end = node
-        .children(&mut cursor)
-        .find(|c| !c.is_named() && crate::syntax_util::kind(*c) == "endfunc")?;
-    let line_start = line_start(cx.text, end.start_byte());
-    let indent = cx.text.get(line_start..end.start_byte())?;
-    if !indent.trim().is_empty() {
-        return None;
-    }
-    Some(Fix {
-        title: format!("Add `RETURN {value};` at the end of `{}`", decl.name),
-        edits: vec![Edit {
-            range: line_start..line_start,
-            replacement: format!("{indent}  RETURN {value};{}", line_break(cx.text)),
-        }],
-        safe: false,
-    })
-}
-
-/// Removes a declaration with its line when it has the line to itself.
-fn remove_declaration_fix(text: &str, range: Range<usize>, name: &str) -> Fix {
-    let start = line_start(text, range.start);
-    let rest = text.get(range.end..).unwrap_or_default();
-    let line_end = rest.find('\n').map_or(text.len(), |i| range.end + i + 1);
-    let alone = text
-        .get(start..range.start)
-        .is_some_and(|b| b.trim().is_empty())
-        && text
-            .get(range.end..line_end)
-            .is_some_and(|a| a.trim().is_empty());
-    let range = if alone { start..line_end } else { range };
-    Fix {
-        title: format!("Remove the declaration of `{name}`"),
-        edits: vec![Edit {
-            range,
-            replacement: String::new(),
-        }],
-        safe: false,
-    }
-}
-
-fn line_start(text: &str, at: usize) -> usize {
-    text.get(..at)
-        .and_then(|b| b.rfind(['\n', '\r']))
-        .map_or(0, |i| i + 1)
-}
-
-fn line_break(text: &str) -> &'static str {
-    if text.contains("\r\n") { "\r\n" } else { "\n" }
-}
-
 fn check_shadowing(cx: &mut Cx<'_>, name: &str, range: Range<usize>, builtins: bool) {
     let visible = cx
         .lookup_items(name)
@@ -890,34 +829,26 @@ fn check_unused_in_routine(cx: &mut Cx<'_>, decl: &RoutineDecl) {
         return;
     };
     let mut found = Vec::new();
-    let mut fixes = Vec::new();
     for (key, d) in &r.locals {
         if !cx.used.contains(&Used::RoutineSym(key.clone())) {
-            found.push((
-                &rules::unused_data::RULE,
+            found.push(rules::unused_data::in_routine(
+                cx.text,
+                &d.name,
                 d.name_range.clone(),
-                format!("`{}` is declared but never used", d.name),
-            ));
-            fixes.push((
-                d.name_range.start,
-                remove_declaration_fix(cx.text, d.range.clone(), &d.name),
+                d.range.clone(),
             ));
         }
     }
     for p in &decl.params {
         if !cx.used.contains(&Used::RoutineSym(fold(&p.name))) {
-            found.push((
+            found.push(Diagnostic::new(
                 &rules::unused_parameter::RULE,
                 p.name_range.clone(),
                 format!("the parameter `{}` is never used", p.name),
             ));
         }
     }
-    for (rule, range, message) in found {
-        let mut d = Diagnostic::new(rule, range.clone(), message);
-        if let Some((_, fix)) = fixes.iter().find(|(at, _)| *at == range.start) {
-            d = d.with_fix(fix.clone());
-        }
+    for d in found {
         cx.report_with(d);
     }
     // Routine symbols are per routine: forget them for the next one.
@@ -972,15 +903,12 @@ pub(super) fn check_unused_locals_of_module(cx: &mut Cx<'_>, module: &Module) {
         };
         match item {
             Item::Data(i) => {
-                let mut d = Diagnostic::new(
-                    &rules::unused_data::RULE,
+                data_found.push(rules::unused_data::in_module(
+                    cx.text,
+                    name,
                     range,
-                    format!("the LOCAL data `{name}` is never used in its module"),
-                );
-                if let Some(decl) = module.data.get(i) {
-                    d = d.with_fix(remove_declaration_fix(cx.text, decl.range.clone(), name));
-                }
-                data_found.push(d);
+                    module.data.get(i).map(|decl| decl.range.clone()),
+                ));
             }
             Item::Routine(_) => found.push((
                 &rules::unused_routine::RULE,

@@ -51,7 +51,7 @@ pub fn check_unit_cached(
     cx.cache.reused = 0;
     cx.cache_enabled = true;
     cx.check();
-    let diags = finish(u, std::mem::take(&mut cx.diags));
+    let diags = finish(task, unit, u, std::mem::take(&mut cx.diags));
     let mut cache = std::mem::take(&mut cx.cache);
     // Keep only what this check met (as if the cache were made afresh).
     let generation = cache.generation;
@@ -303,16 +303,18 @@ pub fn merge_unit_check(task: &Task, unit: usize, results: Vec<ShareResult>) -> 
         }
         decls::check_unused_locals_of_module(&mut cx, module);
     }
-    finish(u, std::mem::take(&mut cx.diags))
+    finish(task, unit, u, std::mem::take(&mut cx.diags))
 }
 
 /// Sorts a unit's findings by position, drops those about text nested too
-/// deep to analyse ([`crate::nesting::keeps`]) and reports each name once
-/// ([`once::within_file`]).
-fn finish(u: &Unit, mut diags: Vec<Diagnostic>) -> Vec<Diagnostic> {
+/// deep to analyse ([`crate::nesting::keeps`]), reports each name once
+/// ([`once::within_file`]) and completes the fixes that need the whole unit
+/// ([`crate::rules::complete_fixes`]).
+fn finish(task: &Task, unit: usize, u: &Unit, mut diags: Vec<Diagnostic>) -> Vec<Diagnostic> {
     diags.retain(|d| crate::nesting::keeps(&u.text, u.cuts(), d));
     diags.sort_by_key(|d| (d.range.start, d.range.end));
     once::within_file(&mut diags, &u.text);
+    crate::rules::complete_fixes(task, unit, &mut diags);
     diags
 }
 
@@ -916,7 +918,11 @@ impl<'t> Cx<'t> {
         } else if what == "data" && self.task.signals.is_none() {
             message.push_str(" (if it is an I/O signal, give the controller's EIO.cfg)");
         }
-        self.report_unresolved(range, message);
+        let mut d = self.unresolved_diagnostic(range, message);
+        if kind == Kind::Data {
+            d = d.with_fix(crate::rules::unresolved_name::pending_declare_fix());
+        }
+        self.report_with(d);
     }
 
     /// Reports a name nothing declares: an error in a complete backup's
@@ -926,13 +932,18 @@ impl<'t> Cx<'t> {
     /// declaration may be in a module or an option that is not part of the
     /// checked files).
     pub(crate) fn report_unresolved(&mut self, range: Range<usize>, message: String) {
+        let d = self.unresolved_diagnostic(range, message);
+        self.report_with(d);
+    }
+
+    fn unresolved_diagnostic(&self, range: Range<usize>, message: String) -> Diagnostic {
         let mut d = Diagnostic::new(&crate::rules::unresolved_name::RULE, range, message);
         if self.task.complete {
             d.severity = crate::diagnostic::Severity::Error;
         } else if self.task.loaded_elsewhere {
             d.severity = crate::diagnostic::Severity::Info;
         }
-        self.report_with(d);
+        d
     }
 
     /// A visible name of the same kind within a small edit distance of
