@@ -277,7 +277,7 @@ pub fn carry_over(old_unit: &Unit, old: &[Diagnostic], unit: &Unit) -> Vec<Diagn
                 None => false,
             }
         });
-        d.fix = d.fix.as_ref().and_then(|f| f.shifted(&moved));
+        d.fix = d.fix.as_ref().and_then(|f| f.shifted(moved));
         out.push(d);
     }
     out.sort_by_key(|d| (d.range.start, d.range.end));
