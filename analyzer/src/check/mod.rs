@@ -16,7 +16,6 @@ mod stmts;
 use std::collections::{HashMap, HashSet};
 use std::hash::BuildHasherDefault;
 use std::ops::Range;
-use std::sync::Arc;
 
 use tree_sitter::Node;
 
@@ -57,253 +56,6 @@ pub fn check_unit_cached(
     let generation = cache.generation;
     cache.entries.retain(|_, e| e.generation == generation);
     (diags, cache)
-}
-
-/// A share of a unit's check, from [`check_unit_split`]: a run of the
-/// unit's pieces (each module's declarations, then each of its routines, in
-/// order). Shares can run on different threads.
-#[derive(Clone, Debug)]
-pub struct CheckShare<'a> {
-    task: &'a Task,
-    unit: usize,
-    pieces: Range<usize>,
-    split: Arc<Split<'a>>,
-}
-
-/// What every share of a unit's check needs, made once: the pieces, and the
-/// declaration nodes of each module (a walk of thousands of nodes).
-#[derive(Debug)]
-struct Split<'a> {
-    pieces: Vec<(Piece, usize)>,
-    bodies: Vec<(usize, decls::BodyNodes<'a>)>,
-    /// The children of each routine checked in parts: (module, routine,
-    /// children).
-    routines: Vec<(usize, usize, decls::RoutineChildren<'a>)>,
-}
-
-/// What a [`CheckShare`] found: the findings of each of its pieces, and the
-/// module items its pieces used (for the unused-LOCAL lints, which look at
-/// the whole module).
-#[derive(Debug, Default)]
-pub struct ShareResult {
-    pieces: Vec<PieceResult>,
-    used: UsedSet,
-}
-
-/// What one piece found: its diagnostics, and for a part of a routine
-/// checked in parts the routine data and parameters it saw unused.
-#[derive(Debug, Default)]
-struct PieceResult {
-    diags: Vec<Diagnostic>,
-    unused: Vec<Diagnostic>,
-}
-
-/// A piece of a unit's check: a module's own checks (its name, duplicates,
-/// records, aliases), a run of its data declarations, or one routine.
-#[derive(Clone, Debug)]
-enum Piece {
-    Module(usize),
-    Data(usize, Range<usize>),
-    /// A routine, or part `.2` of `.3` of a long one.
-    Routine(usize, usize, usize, usize),
-}
-
-impl Piece {
-    fn module(&self) -> usize {
-        match self {
-            Piece::Module(mi) | Piece::Data(mi, _) | Piece::Routine(mi, ..) => *mi,
-        }
-    }
-}
-
-/// A routine is checked in parts of about this many bytes (a long
-/// generated routine would otherwise keep one thread busy).
-const ROUTINE_PART_BYTES: usize = 128 * 1024;
-
-/// Data declarations per piece: a module of thousands of robtargets is
-/// shared out like a long list of routines.
-const DATA_PER_PIECE: usize = 512;
-
-/// The pieces of a unit, in the order [`check_unit`] checks them, with a
-/// weight each: their size in bytes, a module's declarations counting for
-/// a quarter of theirs (most are literal data, checked from their text,
-/// about five times faster per byte than statements).
-fn pieces(cx: &Cx<'_>) -> Vec<(Piece, usize)> {
-    let mut out = Vec::new();
-    for (mi, module, _) in cx.modules() {
-        let routines: usize = module.routines.iter().map(|r| r.range.len()).sum();
-        let data: usize = module.data.iter().map(|d| d.range.len()).sum();
-        out.push((
-            Piece::Module(mi),
-            module.range.len().saturating_sub(routines + data) / 4,
-        ));
-        for start in (0..module.data.len()).step_by(DATA_PER_PIECE) {
-            let run = start..(start + DATA_PER_PIECE).min(module.data.len());
-            let bytes: usize = module.data[run.clone()].iter().map(|d| d.range.len()).sum();
-            out.push((Piece::Data(mi, run), bytes / 4));
-        }
-        for (ri, r) in module.routines.iter().enumerate() {
-            let parts = r.range.len().div_ceil(ROUTINE_PART_BYTES).max(1);
-            for part in 0..parts {
-                out.push((Piece::Routine(mi, ri, part, parts), r.range.len() / parts));
-            }
-        }
-    }
-    out
-}
-
-/// Splits the check of a unit into at most `shares` shares of about equal
-/// size, for a caller that runs them in parallel ([`CheckShare::run`]) and
-/// hands the results, in order, to [`merge_unit_check`]: the diagnostics are
-/// those of [`check_unit`], in the same order.
-pub fn check_unit_split(task: &Task, unit: usize, shares: usize) -> Vec<CheckShare<'_>> {
-    let Some(u) = task.units.get(unit) else {
-        return Vec::new();
-    };
-    let cx = Cx::new(task, unit, u);
-    let pieces = pieces(&cx);
-    let total: usize = pieces.iter().map(|(_, w)| w).sum();
-    let shares = shares.clamp(1, pieces.len().max(1));
-    let count = pieces.len();
-    let mut ranges = Vec::new();
-    let (mut start, mut acc) = (0, 0);
-    for (i, (_, w)) in pieces.iter().enumerate() {
-        acc += w;
-        // Close a share once it holds its part of the total weight.
-        if acc * shares >= total * (ranges.len() + 1) && ranges.len() + 1 < shares {
-            ranges.push(start..i + 1);
-            start = i + 1;
-        }
-    }
-    ranges.push(start..count);
-    let modules = cx.modules();
-    let bodies: Vec<(usize, decls::BodyNodes<'_>)> = modules
-        .iter()
-        .map(|(mi, _, node)| (*mi, decls::BodyNodes::of(u, *node)))
-        .collect();
-    // One walk of each long routine, for all of its parts.
-    let mut routines = Vec::new();
-    for (piece, _) in &pieces {
-        let Piece::Routine(mi, ri, 0, parts) = piece else {
-            continue;
-        };
-        let decl = modules
-            .iter()
-            .find(|(i, _, _)| i == mi)
-            .and_then(|(_, m, _)| m.routines.get(*ri));
-        let nodes = bodies.iter().find(|(i, _)| i == mi);
-        if let (true, Some(decl), Some((_, nodes))) = (*parts > 1, decl, nodes)
-            && let Some(node) = nodes.at(decl.range.start)
-        {
-            routines.push((*mi, *ri, decls::all_routine_children(u, node)));
-        }
-    }
-    let split = Arc::new(Split {
-        pieces,
-        bodies,
-        routines,
-    });
-    ranges
-        .into_iter()
-        .map(|pieces| CheckShare {
-            task,
-            unit,
-            pieces,
-            split: Arc::clone(&split),
-        })
-        .collect()
-}
-
-impl CheckShare<'_> {
-    /// Checks this share's pieces.
-    pub fn run(&self) -> ShareResult {
-        let Some(u) = self.task.units.get(self.unit) else {
-            return ShareResult::default();
-        };
-        let mut cx = Cx::new(self.task, self.unit, u);
-        cx.cache.generation += 1;
-        cx.cache_enabled = true;
-        let modules = cx.modules();
-        let mut result = ShareResult::default();
-        let mut entered = None;
-        for (piece, _) in self
-            .split
-            .pieces
-            .get(self.pieces.clone())
-            .unwrap_or_default()
-        {
-            let mi = piece.module();
-            let found = modules.iter().find(|(i, _, _)| *i == mi);
-            let nodes = self.split.bodies.iter().find(|(i, _)| *i == mi);
-            let (Some((_, module, _)), Some((_, nodes))) = (found, nodes) else {
-                result.pieces.push(PieceResult::default());
-                continue;
-            };
-            if entered != Some(mi) {
-                cx.enter_module(mi, module);
-                entered = Some(mi);
-            }
-            match piece {
-                Piece::Module(_) => decls::check_module_own(&mut cx, module),
-                Piece::Data(_, run) => {
-                    decls::check_module_data(&mut cx, module, nodes, run.clone());
-                }
-                Piece::Routine(_, ri, part, parts) => {
-                    let children = self
-                        .split
-                        .routines
-                        .iter()
-                        .find(|(m, r, _)| *m == mi && r == ri)
-                        .map(|(_, _, c)| c);
-                    if let Some(decl) = module.routines.get(*ri) {
-                        decls::check_routine_part_at(&mut cx, nodes, decl, children, *part, *parts);
-                    }
-                }
-            }
-            result.pieces.push(PieceResult {
-                diags: std::mem::take(&mut cx.diags),
-                unused: std::mem::take(&mut cx.part_unused),
-            });
-        }
-        result.used = std::mem::take(&mut cx.used);
-        result
-    }
-}
-
-/// The diagnostics of a unit from the results of its shares
-/// ([`check_unit_split`]), given in the shares' order.
-pub fn merge_unit_check(task: &Task, unit: usize, results: Vec<ShareResult>) -> Vec<Diagnostic> {
-    let Some(u) = task.units.get(unit) else {
-        return Vec::new();
-    };
-    let mut cx = Cx::new(task, unit, u);
-    let mut found = Vec::new();
-    for r in results {
-        cx.used.extend(r.used);
-        found.extend(r.pieces);
-    }
-    decls::check_file_wide(&mut cx);
-    let pieces = pieces(&cx);
-    let mut found = found.into_iter();
-    for (mi, module, _) in cx.modules() {
-        cx.enter_module(mi, module);
-        let mut parts_unused = Vec::new();
-        for (piece, _) in pieces.iter().filter(|(p, _)| p.module() == mi) {
-            let result = found.next().unwrap_or_default();
-            cx.diags.extend(result.diags);
-            if let Piece::Routine(_, _, part, parts) = piece
-                && *parts > 1
-            {
-                parts_unused.push(result.unused);
-                if part + 1 == *parts {
-                    cx.diags
-                        .extend(decls::merge_unused(std::mem::take(&mut parts_unused)));
-                }
-            }
-        }
-        decls::check_unused_locals_of_module(&mut cx, module);
-    }
-    finish(u, std::mem::take(&mut cx.diags))
 }
 
 /// Sorts a unit's findings by position, drops those about text nested too
@@ -477,9 +229,6 @@ pub(crate) struct Cx<'t> {
     /// Lowered initial values of module data for rule E413, made on first
     /// use and kept for the whole check.
     pub(crate) inits: Option<crate::consteval::InitCache>,
-    /// The unused routine data and parameters that the part just checked of
-    /// a routine checked in parts found ([`decls::merge_unused`]).
-    pub(crate) part_unused: Vec<Diagnostic>,
     /// Signatures of the routines called so far, by the address of their
     /// declaration (and whether a built-in is called as a function).
     signatures: HashMap<(usize, bool, bool), std::rc::Rc<calls::Sig>>,
@@ -532,7 +281,6 @@ impl<'t> Cx<'t> {
             module_close_memo: HashMap::new(),
             reused_signals: HashMap::new(),
             inits: None,
-            part_unused: Vec::new(),
             signatures: HashMap::new(),
             clean_literals: HashSet::new(),
         }
@@ -1216,7 +964,7 @@ impl<'t> Cx<'t> {
         let Some(decl) = module.routines.iter().find(|r| within(&r.range)) else {
             return Some(cx);
         };
-        let root = u.tree_at(decl.range.start).root_node();
+        let root = u.tree().root_node();
         let Some(node) = root.named_descendant_for_byte_range(decl.range.start, decl.range.end)
         else {
             return Some(cx);

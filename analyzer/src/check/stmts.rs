@@ -101,8 +101,7 @@ pub(super) fn collect_labels(cx: &mut Cx<'_>, found: Vec<Label>) {
 }
 
 /// What identifies the statement list that holds a label: its node's kind
-/// and byte range, not the node itself, which a long routine parsed as two
-/// parts has in both trees.
+/// and byte range.
 pub(crate) type BlockKey = (u16, usize, usize);
 
 fn block_key(node: Node<'_>) -> BlockKey {
@@ -130,25 +129,8 @@ fn cannot_hold_label(kind: &str) -> bool {
 
 /// Checks a statement list, and reports the statements no path reaches.
 pub(super) fn check_block<'t>(cx: &mut Cx<'t>, statements: &[Node<'t>]) {
-    check_block_part(cx, statements, 0..statements.len());
-}
-
-/// [`check_block`] for the statements `part` of the list only (the others
-/// are checked by another part of a long routine's check).
-pub(super) fn check_block_part<'t>(cx: &mut Cx<'t>, statements: &[Node<'t>], part: Range<usize>) {
-    // Whether the statement before the part leaves the list (as the loop
-    // below would have found it).
-    let mut ended_by: Option<&str> = part
-        .start
-        .checked_sub(1)
-        .and_then(|i| statements.get(i))
-        .and_then(|s| leaves_list(*s));
-    for (i, s) in statements
-        .iter()
-        .enumerate()
-        .take(part.end)
-        .skip(part.start)
-    {
+    let mut ended_by: Option<&str> = None;
+    for (i, s) in statements.iter().enumerate() {
         if kind_of(*s) == "label" {
             ended_by = None;
         } else if let Some(by) = ended_by.take() {
