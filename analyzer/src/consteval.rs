@@ -1133,7 +1133,6 @@ pub(crate) fn check_constant_errors<'t>(cx: &mut Cx<'t>, node: Node<'t>) {
     let routine = RoutineNames::of(cx);
     // Typing the context must not disturb the checker's findings.
     let diags = std::mem::take(&mut cx.diags);
-    let signals = cx.reported_signals.clone();
     let inits = cx.inits.take().unwrap_or_else(|| InitCache::new(task));
     with_routine(
         task,
@@ -1176,7 +1175,6 @@ pub(crate) fn check_constant_errors<'t>(cx: &mut Cx<'t>, node: Node<'t>) {
         },
     );
     cx.diags = diags;
-    cx.reported_signals = signals;
     cx.inits = Some(inits);
     for (range, e) in reports {
         cx.report(

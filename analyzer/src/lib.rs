@@ -17,6 +17,7 @@ pub mod lower;
 pub mod names;
 pub mod nesting;
 pub mod rules;
+mod sema;
 pub mod syntax;
 mod syntax_util;
 pub mod task;

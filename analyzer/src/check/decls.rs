@@ -626,8 +626,8 @@ fn check_routine<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &'t RoutineDecl) {
 struct RoutineChildren<'t> {
     /// In field `body`.
     body: Vec<Node<'t>>,
-    /// The labels of the routine ([`stmts::find_labels`]).
-    labels: Vec<stmts::Label>,
+    /// The labels of the routine ([`crate::sema::labels::find`]).
+    labels: Vec<crate::sema::labels::Label>,
     /// The first child in fields `backward`, `error` and `undo`.
     handlers: [Option<Node<'t>>; 3],
 }
@@ -635,7 +635,7 @@ struct RoutineChildren<'t> {
 /// The children of a routine, with its labels.
 fn all_routine_children<'t>(unit: &'t crate::task::Unit, node: Node<'t>) -> RoutineChildren<'t> {
     let (mut children, named) = routine_children(node);
-    children.labels = stmts::find_labels(&unit.text, node, named);
+    children.labels = crate::sema::labels::find(&unit.text, node, Some(named));
     children
 }
 
