@@ -23,22 +23,12 @@ const MAX_DIMS: usize = 3;
 pub(super) fn check_file_wide(cx: &mut Cx<'_>) {
     // The walk only enters nodes that overlap a region of the text that may
     // hold a finding, and nodes with syntax errors.
-    let mut regions = placeholder_or_long_string_regions(cx.text);
+    let regions = placeholder_or_long_string_regions(cx.text);
     if regions.is_empty() {
         return;
     }
     let unit = cx.unit;
     check_file_wide_in(cx, unit.tree().root_node(), &regions);
-    // The second tree of a file parsed as two parts: only its chunk (it
-    // repeats the module's header and end, and a split routine's first and
-    // last lines).
-    if let Some((chunk, part)) = unit.part() {
-        regions.retain_mut(|g| {
-            *g = g.start.max(chunk.start)..g.end.min(chunk.end);
-            g.start < g.end
-        });
-        check_file_wide_in(cx, part.root_node(), &regions);
-    }
 }
 
 /// [`check_file_wide`] in one tree, entering only nodes that overlap
@@ -171,7 +161,8 @@ pub(super) struct BodyNodes<'t>(Vec<Node<'t>>);
 
 impl<'t> BodyNodes<'t> {
     pub(super) fn of(unit: &'t crate::task::Unit, module: Node<'t>) -> BodyNodes<'t> {
-        BodyNodes(unit.module_body(module))
+        let _ = unit;
+        BodyNodes(fields(module, "body"))
     }
 
     /// The declaration that starts at `start` (the last one, should an
@@ -191,14 +182,7 @@ pub(super) fn check_module_prelude<'t>(
     data_nodes: &BodyNodes<'t>,
 ) {
     check_module_names(cx, module);
-    check_module_data(cx, module, data_nodes, 0..module.data.len());
-    check_records_and_aliases(cx, module);
-}
-
-/// [`check_module_prelude`] without the data declarations (checked in runs
-/// by [`check_module_data`]).
-pub(super) fn check_module_own(cx: &mut Cx<'_>, module: &Module) {
-    check_module_names(cx, module);
+    check_module_data(cx, module, data_nodes);
     check_records_and_aliases(cx, module);
 }
 
@@ -244,14 +228,9 @@ fn check_duplicate_module(cx: &mut Cx<'_>, module: &Module) {
     cx.report_with(d);
 }
 
-/// Checks the module's data declarations `run` (indexes into its data).
-pub(super) fn check_module_data<'t>(
-    cx: &mut Cx<'t>,
-    module: &'t Module,
-    data_nodes: &BodyNodes<'t>,
-    run: Range<usize>,
-) {
-    for decl in module.data.get(run).unwrap_or_default() {
+/// Checks the module's data declarations.
+fn check_module_data<'t>(cx: &mut Cx<'t>, module: &'t Module, data_nodes: &BodyNodes<'t>) {
+    for decl in &module.data {
         if let Some(n) = data_nodes.at(decl.range.start) {
             check_data(cx, n, decl, false);
         }
@@ -284,22 +263,6 @@ pub(super) fn check_routine_at<'t>(
 ) {
     if let Some(n) = data_nodes.at(decl.range.start) {
         check_routine(cx, n, decl);
-    }
-}
-
-/// [`check_routine_part`] of a routine of the current module, found by its
-/// declaration; `children` are its [`all_routine_children`], if the caller
-/// has them.
-pub(super) fn check_routine_part_at<'t>(
-    cx: &mut Cx<'t>,
-    data_nodes: &BodyNodes<'t>,
-    decl: &'t RoutineDecl,
-    children: Option<&RoutineChildren<'t>>,
-    part: usize,
-    parts: usize,
-) {
-    if let Some(n) = data_nodes.at(decl.range.start) {
-        check_routine_part(cx, n, decl, children, part, parts);
     }
 }
 
@@ -532,25 +495,9 @@ fn literal_sizes(cx: &Cx<'_>, decl: &DataDecl) -> Vec<Option<usize>> {
         .collect()
 }
 
+/// Checks a routine: its declarations, labels, statements, handlers and
+/// end, and the routine data and parameters it never uses.
 fn check_routine<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &'t RoutineDecl) {
-    check_routine_part(cx, node, decl, None, 0, 1);
-}
-
-/// Checks part `part` of `parts` of a routine: the routine's own checks
-/// (its declarations, labels) in the first part, that share of its
-/// statements, and its handlers and end in the last. A long routine is
-/// checked in parts on several threads; each part reports the routine data
-/// and parameters it did not see used, and only those no part used are
-/// reported ([`merge_unused`]).
-pub(super) fn check_routine_part<'t>(
-    cx: &mut Cx<'t>,
-    node: Node<'t>,
-    decl: &'t RoutineDecl,
-    children: Option<&RoutineChildren<'t>>,
-    part: usize,
-    parts: usize,
-) {
-    let first_report = cx.diags.len();
     check_name_length(cx, &decl.name, decl.name_range.clone());
     let mut params = NameMap::default();
     let mut names: Vec<(&str, Range<usize>)> = Vec::new();
@@ -593,10 +540,7 @@ pub(super) fn check_routine_part<'t>(
         body,
         labels,
         handlers,
-    } = match children {
-        Some(c) => c.clone(),
-        None => all_routine_children(cx.unit, node),
-    };
+    } = all_routine_children(cx.unit, node);
     // Routine data, which must come before the first statement.
     let mut seen_statement = false;
     let mut statements = Vec::new();
@@ -646,20 +590,7 @@ pub(super) fn check_routine_part<'t>(
         h.finish()
     };
     stmts::collect_labels(cx, labels);
-    // The routine's own findings are the first part's.
-    if part > 0 {
-        cx.diags.truncate(first_report);
-    }
-    let share = statements.len().div_ceil(parts.max(1));
-    let from = (part * share).min(statements.len());
-    let to = ((part + 1) * share).min(statements.len());
-    stmts::check_block_part(cx, &statements, from..to);
-    if part + 1 < parts {
-        unused_of_part(cx, decl, parts);
-        cx.routine = None;
-        cx.scope_changed();
-        return;
-    }
+    stmts::check_block(cx, &statements);
     for (h, in_error) in handlers.into_iter().zip([false, true, false]) {
         if let Some(h) = h {
             if let Some(r) = &mut cx.routine {
@@ -679,7 +610,6 @@ pub(super) fn check_routine_part<'t>(
                 cx.text,
                 &cx.types,
                 node,
-                cx.unit.routine_rest(node),
                 last,
                 &decl.name,
                 &returns.name,
@@ -689,62 +619,26 @@ pub(super) fn check_routine_part<'t>(
         }
         cx.report_with(d);
     }
-    unused_of_part(cx, decl, parts);
+    check_unused_in_routine(cx, decl);
     cx.routine = None;
     cx.scope_changed();
 }
 
-/// The unused routine data and parameters, as one part of a routine saw
-/// them: reported directly for a routine checked whole, else kept apart
-/// (`Cx::part_unused`) for [`merge_unused`].
-fn unused_of_part(cx: &mut Cx<'_>, decl: &RoutineDecl, parts: usize) {
-    let mark = cx.diags.len();
-    check_unused_in_routine(cx, decl);
-    if parts > 1 {
-        cx.part_unused = cx.diags.split_off(mark);
-    }
-}
-
-/// What the parts of a routine checked in parts found unused: only what
-/// every part found (a datum one part uses is used), in the first part's
-/// order.
-pub(crate) fn merge_unused(parts: Vec<Vec<Diagnostic>>) -> Vec<Diagnostic> {
-    let mut parts = parts.into_iter();
-    let Some(first) = parts.next() else {
-        return Vec::new();
-    };
-    let rest: Vec<Vec<Diagnostic>> = parts.collect();
-    first
-        .into_iter()
-        .filter(|d| rest.iter().all(|p| p.contains(d)))
-        .collect()
-}
-
 /// A routine's children, from one walk.
-#[derive(Clone, Debug)]
-pub(super) struct RoutineChildren<'t> {
+#[derive(Debug)]
+struct RoutineChildren<'t> {
     /// In field `body`.
     body: Vec<Node<'t>>,
-    /// The labels of the routine ([`stmts::find_labels`]).
-    labels: Vec<stmts::Label>,
+    /// The labels of the routine ([`crate::sema::labels::find`]).
+    labels: Vec<crate::sema::labels::Label>,
     /// The first child in fields `backward`, `error` and `undo`.
     handlers: [Option<Node<'t>>; 3],
 }
 
-/// The children of a routine, with its later statements from the second
-/// tree of a long routine parsed as two parts (after all of its own
-/// statements, before its handlers).
-pub(super) fn all_routine_children<'t>(
-    unit: &'t crate::task::Unit,
-    node: Node<'t>,
-) -> RoutineChildren<'t> {
-    let (mut children, mut named) = routine_children(node);
-    if let Some(rest) = unit.routine_rest(node) {
-        let later = routine_children(rest).0.body;
-        children.body.extend(later.iter().copied());
-        named.extend(later);
-    }
-    children.labels = stmts::find_labels(&unit.text, node, named);
+/// The children of a routine, with its labels.
+fn all_routine_children<'t>(unit: &'t crate::task::Unit, node: Node<'t>) -> RoutineChildren<'t> {
+    let (mut children, named) = routine_children(node);
+    children.labels = crate::sema::labels::find(&unit.text, node, Some(named));
     children
 }
 

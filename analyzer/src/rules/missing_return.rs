@@ -39,9 +39,8 @@ pub(crate) fn diagnostic(name: &str, name_range: std::ops::Range<usize>) -> Diag
 }
 
 /// Inserts `RETURN <default>;` where the function `name` (node `func`,
-/// returning `returns`) ends its statements: before its first handler or `ENDFUNC`
-/// (looked for in `func`, then in `rest`, the second tree of a routine
-/// parsed in two), indented like its last statement `last` (two spaces
+/// returning `returns`) ends its statements: before its first handler or
+/// `ENDFUNC`, indented like its last statement `last` (two spaces
 /// more than `ENDFUNC` when it has none). The value is a default of the
 /// type: `0`, `FALSE`, `""`, or an aggregate of those for a record; no fix
 /// for a type without one. Not safe: the right value is the author's call.
@@ -49,7 +48,6 @@ pub(crate) fn fix(
     text: &str,
     types: &Types<'_>,
     func: Node<'_>,
-    rest: Option<Node<'_>>,
     last: Option<Node<'_>>,
     name: &str,
     returns: &str,
@@ -61,14 +59,7 @@ pub(crate) fn fix(
         )
     };
     let mut cursor = func.walk();
-    let end = match func.children(&mut cursor).find(is_end) {
-        Some(end) => end,
-        None => {
-            let rest = rest?;
-            let mut cursor = rest.walk();
-            rest.children(&mut cursor).find(is_end)?
-        }
-    };
+    let end = func.children(&mut cursor).find(is_end)?;
     let value = default_value(types, &Ty::named(returns), 0)?;
     let nl = line_break(text);
     let (at, replacement) = if starts_line(text, end.start_byte()) {

@@ -92,9 +92,7 @@ pub(crate) fn declare_fix(task: &Task, unit: usize, range: Range<usize>) -> Opti
     ))
 }
 
-/// The routine node around `offset`, from the unit's first tree (which
-/// holds a routine's header and first items even when its later statements
-/// are parsed as a second tree).
+/// The routine node around `offset`.
 fn routine_around(root: Node<'_>, offset: usize) -> Option<Node<'_>> {
     let mut at = root.descendant_for_byte_range(offset, offset);
     while let Some(n) = at {
@@ -113,9 +111,8 @@ fn routine_around(root: Node<'_>, offset: usize) -> Option<Node<'_>> {
 /// or the parameter it is passed to.
 fn infer_type(task: &Task, unit: usize, range: Range<usize>) -> Option<String> {
     let u = task.units.get(unit)?;
-    // A long routine's later statements may be in the unit's second tree.
     let node = u
-        .tree_at(range.start)
+        .tree()
         .root_node()
         .named_descendant_for_byte_range(range.start, range.end)?;
     let parent = node.parent()?;
