@@ -190,8 +190,7 @@ pub fn check_files(
     rayon::spawn(|| {
         let _ = rapid_analyzer::catalogue::base();
     });
-    let (read, units) =
-        crate::project::read_and_parse(&Disk, files, &parse_unit, &|| progress.inc(1));
+    let (read, units) = crate::project::read_and_parse(&Disk, files, &|| progress.inc(1));
     lap("reading, decoding, parsing and item trees", &mut clock);
     let sources = Sources {
         found: Some(found),
@@ -222,16 +221,10 @@ pub fn check_files(
             .cmp(&a.1.text.len())
             .then(a.1.path.cmp(&b.1.path))
     });
-    let threads = rayon::current_num_threads();
     let mut by_path: HashMap<String, Vec<Diagnostic>> = jobs
         .par_iter()
         .map(|(task, u)| {
-            let diagnostics = if threads > 1 && u.text.len() >= SPLIT_CHECK_BYTES {
-                diagnostics_split(task, u, threads * SHARES_PER_THREAD)
-            } else {
-                diagnostics_of(task, u)
-            };
-            let d = (u.path.clone(), diagnostics);
+            let d = (u.path.clone(), diagnostics_of(task, u));
             progress.inc(1);
             d
         })
@@ -281,66 +274,6 @@ pub fn check_files(
             Err(why) => Outcome::Skipped(path.clone(), why),
         })
         .collect()
-}
-
-/// Files at least this large are parsed as two parts at once when there are
-/// several threads: a 9,000-line module takes some 23 ms to parse on one.
-const SPLIT_PARSE_BYTES: usize = 128 * 1024;
-
-/// Parses a file: a large one as two parts on two threads (its later
-/// routines, or the later statements of a long routine, on their own, see
-/// [`rapid_analyzer::split_parse`]), with the items and diagnostics of a
-/// whole parse; any other file, or one that does not split cleanly, as a
-/// whole.
-fn parse_unit(path: String, text: String) -> Unit {
-    use rapid_analyzer::split_parse::{parse_ranges, plan};
-    let plan = (text.len() >= SPLIT_PARSE_BYTES && rayon::current_num_threads() > 1)
-        .then(|| plan(&text, 0.5))
-        .flatten();
-    let Some(plan) = plan else {
-        return Unit::new(path, text, None);
-    };
-    let (mut main, mut part) = (None, None);
-    // The main part on this thread, the other on the pool.
-    rayon::in_place_scope(|s| {
-        s.spawn(|_| part = parse_ranges(&text, &plan.part));
-        main = parse_ranges(&text, &plan.main);
-    });
-    let (Some(main), Some(part)) = (main, part) else {
-        return Unit::new(path, text, None);
-    };
-    Unit::from_split(path, text, main, part, plan.chunk, plan.kind)
-}
-
-/// Files at least this large have their routines checked on several
-/// threads (a single large module would otherwise keep one core busy while
-/// the others wait).
-const SPLIT_CHECK_BYTES: usize = 64 * 1024;
-
-/// Such a file is cut into this many shares per thread: a thread that
-/// starts late (a sleeping pool thread can take milliseconds to wake) or a
-/// share that costs more than its size says is made up for by the others.
-const SHARES_PER_THREAD: usize = 4;
-
-/// [`diagnostics_of`], with the unit's routines spread over `shares` jobs of
-/// the thread pool: the same diagnostics in the same order.
-fn diagnostics_split(
-    task: &rapid_analyzer::task::Task,
-    unit: &Arc<Unit>,
-    shares: usize,
-) -> Vec<Diagnostic> {
-    use rapid_analyzer::check::{check_unit_split, merge_unit_check};
-    let Some(idx) = task.units.iter().position(|u| Arc::ptr_eq(u, unit)) else {
-        return diagnostics_of(task, unit);
-    };
-    let results = check_unit_split(task, idx, shares)
-        .par_iter()
-        .map(|share| share.run())
-        .collect();
-    let mut out = unit.syntax.clone();
-    out.extend(merge_unit_check(task, idx, results));
-    out.sort_by_key(|d| (d.range.start, d.range.end));
-    out
 }
 
 /// `files` without those that are the same file as an earlier one.

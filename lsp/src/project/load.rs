@@ -40,13 +40,12 @@ pub struct Loaded {
 }
 
 /// Reads, decodes and parses `files` in one parallel pass, largest files
-/// first so that no big module is left to one thread at the end; `parse`
-/// makes a unit of a file's name and text, and `done` is told of each file.
+/// first so that no big module is left to one thread at the end; `done` is
+/// told of each file.
 /// Returns each file's outcome and unit, in the order of `files`.
 pub fn read_and_parse(
     env: &dyn Environment,
     files: &[PathBuf],
-    parse: &(dyn Fn(String, String) -> Unit + Sync),
     done: &(dyn Fn() + Sync),
 ) -> (Vec<Result<SourceFile, Skip>>, Vec<Option<Unit>>) {
     let mut order: Vec<(u64, usize)> = files
@@ -62,7 +61,7 @@ pub fn read_and_parse(
             let unit = read
                 .as_ref()
                 .ok()
-                .map(|f| parse(env.name(&f.path), f.text.clone()));
+                .map(|f| Unit::new(env.name(&f.path), f.text.clone(), None));
             done();
             (i, read, unit)
         })
@@ -124,19 +123,14 @@ pub fn assemble(
     }
 }
 
-/// [`read_and_parse`] and [`assemble`], parsing each file whole.
+/// [`read_and_parse`] and [`assemble`].
 pub fn load(
     env: &dyn Environment,
     sources: &Sources<'_>,
     controller: &ControllerOverride,
 ) -> Loaded {
     let files = sources.found.map_or(&[][..], |f| &f.files[..]);
-    let (read, units) = read_and_parse(
-        env,
-        files,
-        &|path, text| Unit::new(path, text, None),
-        &|| {},
-    );
+    let (read, units) = read_and_parse(env, files, &|| {});
     assemble(env, sources, controller, read, units)
 }
 
