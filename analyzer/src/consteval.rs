@@ -614,7 +614,7 @@ fn array_size(unit: &Unit, range: Range<usize>, env: &dyn Env, depth: &Cell<u32>
 
 /// The outermost expression node spanning exactly `range`.
 fn expression_at(unit: &Unit, range: Range<usize>) -> Option<Node<'_>> {
-    path_to(unit.tree_at(range.start).root_node(), range.clone())
+    path_to(unit.tree().root_node(), range.clone())
         .into_iter()
         .map(|(n, _)| n)
         .find(|n| n.byte_range() == range && is_expression(crate::syntax_util::kind(*n)))
@@ -738,7 +738,7 @@ const NOT_VALUES: &[&str] = &[
 /// initial value, labelled; `VAR` data are not constant.
 pub fn value_at(task: &Task, unit: usize, offset: usize) -> Option<ConstValue> {
     let u = task.units.get(unit)?;
-    let root = u.tree_at(offset).root_node();
+    let root = u.tree().root_node();
     let mut start = root.named_descendant_for_byte_range(offset, offset)?;
     // A cursor just after a name or a closing bracket means that expression
     // (as editors place it after the last character typed).
@@ -795,7 +795,7 @@ pub fn value_of_range(task: &Task, unit: usize, range: Range<usize>) -> Option<C
     let text = u.text.get(range.clone())?;
     let start = range.start + (text.len() - text.trim_start().len());
     let end = range.end - (text.len() - text.trim_end().len());
-    let mut path = path_to(u.tree_at(start).root_node(), start..end);
+    let mut path = path_to(u.tree().root_node(), start..end);
     let at = path.iter().position(|(n, _)| {
         n.byte_range() == (start..end) && is_expression(crate::syntax_util::kind(*n))
     })?;
@@ -1142,7 +1142,6 @@ pub(crate) fn check_constant_errors<'t>(cx: &mut Cx<'t>, node: Node<'t>) {
     let routine = RoutineNames::of(cx);
     // Typing the context must not disturb the checker's findings.
     let diags = std::mem::take(&mut cx.diags);
-    let signals = cx.reported_signals.clone();
     let inits = cx.inits.take().unwrap_or_else(|| InitCache::new(task));
     with_routine(
         task,
@@ -1185,7 +1184,6 @@ pub(crate) fn check_constant_errors<'t>(cx: &mut Cx<'t>, node: Node<'t>) {
         },
     );
     cx.diags = diags;
-    cx.reported_signals = signals;
     cx.inits = Some(inits);
     for (range, e) in reports {
         cx.report(

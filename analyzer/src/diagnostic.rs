@@ -140,14 +140,69 @@ pub struct Edit {
     pub replacement: String,
 }
 
+/// Whether a fix may be applied without review.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Applicability {
+    /// Keeps the program's meaning: `rapid check --fix` applies it.
+    Safe,
+    /// A likely repair whose details are the author's call (a guessed type
+    /// or value, a deletion): offered in the editor only.
+    Unsafe,
+}
+
 /// A fix: a title for menus and the edits, all in the diagnostic's file.
+/// Every quick fix is one of these, built by its rule (`rules/<rule>.rs`)
+/// and attached to the diagnostic it repairs.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Fix {
     pub title: String,
+    /// The edits, against the text the diagnostic was found in. A fix whose
+    /// edits depend on more than the statement reported (the top of its
+    /// routine) is attached with none while the unit is checked, and its
+    /// rule completes it once the unit's findings are known
+    /// ([`crate::rules::complete_fixes`]); statement results stay cacheable.
     pub edits: Vec<Edit>,
+    pub applicability: Applicability,
+    /// The fix an editor applies by its "auto fix" key (LSP `isPreferred`):
+    /// the obvious repair when there is one.
+    pub preferred: bool,
+}
+
+impl Fix {
     /// Safe fixes keep the program's meaning and may be applied without
     /// review (`rapid check --fix`).
-    pub safe: bool,
+    pub fn is_safe(&self) -> bool {
+        self.applicability == Applicability::Safe
+    }
+
+    /// A fix of one edit.
+    pub fn edit(
+        title: impl Into<String>,
+        range: Range<usize>,
+        replacement: impl Into<String>,
+        applicability: Applicability,
+        preferred: bool,
+    ) -> Fix {
+        Fix {
+            title: title.into(),
+            edits: vec![Edit {
+                range,
+                replacement: replacement.into(),
+            }],
+            applicability,
+            preferred,
+        }
+    }
+
+    /// The fix with each edit's range mapped by `map` (to another version
+    /// of the text), or `None` when `map` has no place for one of them.
+    pub fn shifted(&self, map: impl Fn(&Range<usize>) -> Option<Range<usize>>) -> Option<Fix> {
+        let mut fix = self.clone();
+        for e in &mut fix.edits {
+            e.range = map(&e.range)?;
+        }
+        Some(fix)
+    }
 }
 
 /// One finding in one file. Ranges are byte offsets into the decoded text.

@@ -175,15 +175,6 @@ impl FileItems {
         FileItems { modules }
     }
 
-    /// Lowers a file parsed as two parts ([`crate::split_parse`]): its one
-    /// module, whose declarations are `body` (from both trees, in source
-    /// order).
-    pub(crate) fn lower_split(module: Node<'_>, body: Vec<Node<'_>>, text: &str) -> FileItems {
-        FileItems {
-            modules: lower_module(module, body, text).into_iter().collect(),
-        }
-    }
-
     /// A hash of everything other modules can see, ignoring positions: equal
     /// hashes mean other modules need not be checked again.
     pub fn interface_hash(&self) -> u64 {

@@ -17,7 +17,7 @@ pub mod lower;
 pub mod names;
 pub mod nesting;
 pub mod rules;
-pub mod split_parse;
+mod sema;
 pub mod syntax;
 mod syntax_util;
 pub mod task;

@@ -112,11 +112,6 @@ pub(crate) fn bound(text: &str, tree: Tree) -> (Tree, Vec<Cut>) {
     (tree, cuts)
 }
 
-/// Is `tree` deeper than [`MAX_DEPTH`]?
-pub(crate) fn too_deep(tree: &Tree) -> bool {
-    !survey(tree).is_empty()
-}
-
 /// The tree of `text` with `cuts` replaced. It is marked as such (its
 /// included range ends at the text's end, where a plain parse's is
 /// unbounded), so that it is never the old tree of an incremental parse of
@@ -151,10 +146,7 @@ fn empty_tree() -> Tree {
 }
 
 /// Was `tree` parsed by [`parse_copy`], from a text with cuts? (A plain
-/// parse's one range is unbounded; a file parsed in two parts
-/// ([`crate::split_parse`]) has several, or one that does not start the
-/// text: it could be taken for a copy only if it read the whole text, and
-/// would then merely not be reused.)
+/// parse's one range is unbounded.)
 pub(crate) fn is_copy(tree: &Tree) -> bool {
     matches!(tree.included_ranges().as_slice(), [r] if r.start_byte == 0 && r.end_byte < u32::MAX as usize)
 }

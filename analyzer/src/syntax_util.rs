@@ -391,14 +391,6 @@ pub fn is_compound_statement(kind: &str) -> bool {
     )
 }
 
-/// Calls `f` on every node under `node` (pre-order), without recursion.
-pub(crate) fn walk<'a>(node: Node<'a>, f: &mut impl FnMut(Node<'a>)) {
-    walk_pruned(node, &mut |n| {
-        f(n);
-        true
-    });
-}
-
 /// Calls `f` on the nodes under `node` (pre-order); `f` returns whether to
 /// visit the node's children.
 pub(crate) fn walk_pruned<'a>(node: Node<'a>, f: &mut impl FnMut(Node<'a>) -> bool) {

@@ -9,13 +9,12 @@ use std::collections::HashMap;
 use std::ops::Range;
 use std::sync::Arc;
 
-use tree_sitter::{Node, Tree};
+use tree_sitter::Tree;
 
 use crate::diagnostic::Diagnostic;
 use crate::items::{DataDecl, FileItems, Module, RecordDecl, RoutineDecl, Scope, Storage};
 use crate::layout::Grouping;
 use crate::names::{NameMap, fold};
-use crate::split_parse::PartKind;
 use crate::ty::{Types, UserType};
 use crate::unit_tree::UnitTree;
 
@@ -30,9 +29,6 @@ pub struct Unit {
     /// The syntax tree ([`Unit::tree`]); it may have been released
     /// ([`Unit::release_tree`]) and is then parsed again on use.
     tree: UnitTree,
-    /// A file parsed as two parts ([`Unit::from_split`]): the second tree.
-    /// `tree` then holds the rest.
-    part: Option<Part>,
     pub items: FileItems,
     pub interface: u64,
     /// A hash of the values of the unit's module data and the sizes of its
@@ -81,65 +77,10 @@ impl Unit {
             path,
             text,
             tree: UnitTree::new(tree),
-            part: None,
             items,
             syntax,
             cuts,
         }
-    }
-
-    /// Builds a unit from the two trees of a file parsed as two parts (see
-    /// [`crate::split_parse`]): `main` read everything but `chunk`, `part`
-    /// read `chunk` (what it holds is `kind`) with the module's header and
-    /// end. When the trees do not fit together as planned (a syntax error in
-    /// either, declarations or statements on the wrong side), the file is
-    /// parsed as a whole, so that its errors are reported as a whole parse
-    /// finds them: incrementally from one of the trees, whose nodes are
-    /// reused (from the tree without an error when the other has one: its
-    /// whole half is reused, and only the half with the error is parsed
-    /// again).
-    pub fn from_split(
-        path: String,
-        text: String,
-        main: Tree,
-        part: Tree,
-        chunk: Range<usize>,
-        kind: PartKind,
-    ) -> Unit {
-        let too_deep = crate::nesting::too_deep(&main) || crate::nesting::too_deep(&part);
-        let Some(items) = split_items(&main, &part, &chunk, kind, &text).filter(|_| !too_deep)
-        else {
-            if too_deep {
-                return Unit::new(path, text, None);
-            }
-            let clean = if main.root_node().has_error() && !part.root_node().has_error() {
-                &part
-            } else {
-                &main
-            };
-            return Unit::new(path, text, Some(clean));
-        };
-        Unit {
-            interface: items.interface_hash(),
-            constants: constants_hash(&items, &text),
-            path,
-            text,
-            tree: UnitTree::new(main),
-            part: Some(Part {
-                chunk,
-                tree: part,
-                kind,
-            }),
-            items,
-            // Neither tree has an error.
-            syntax: Vec::new(),
-            cuts: Vec::new(),
-        }
-    }
-
-    /// Whether this unit was parsed as two parts ([`Unit::from_split`]).
-    pub fn is_split(&self) -> bool {
-        self.part.is_some()
     }
 
     /// Releases the syntax tree to save memory (most of a unit's memory is
@@ -147,13 +88,9 @@ impl Unit {
     /// Everything else (items, interface, syntax diagnostics) stays.
     pub fn release_tree(&mut self) {
         self.tree.release();
-        // Parsed again, the tree is the whole file's.
-        self.part = None;
     }
 
-    /// The syntax tree, parsed again from the text if it was released. For
-    /// a file parsed as two parts, the tree of all but what the second tree
-    /// holds ([`Unit::tree_at`] finds the tree of an offset).
+    /// The syntax tree, parsed again from the text if it was released.
     pub fn tree(&self) -> &Tree {
         if self.cuts.is_empty() {
             self.tree.get(&self.text)
@@ -169,54 +106,12 @@ impl Unit {
         &self.cuts
     }
 
-    /// The tree that holds the text at `offset`.
-    pub fn tree_at(&self, offset: usize) -> &Tree {
-        match &self.part {
-            Some(p) if p.chunk.contains(&offset) => &p.tree,
-            _ => self.tree(),
-        }
-    }
-
-    /// The second tree of a file parsed as two parts, with the byte range
-    /// of what it holds that the first does not.
-    pub fn part(&self) -> Option<(Range<usize>, &Tree)> {
-        self.part.as_ref().map(|p| (p.chunk.clone(), &p.tree))
-    }
-
-    /// The declarations of `module` (a module node of this unit), in source
-    /// order, from both trees of a file parsed as two parts.
-    pub fn module_body<'a>(&'a self, module: Node<'a>) -> Vec<Node<'a>> {
-        let mut body = crate::syntax_util::fields(module, "body");
-        if let Some(p) = &self.part
-            && p.kind == PartKind::Declarations
-            && let Some(m) = crate::split_parse::sole_module(&p.tree)
-        {
-            body.extend(crate::syntax_util::fields(m, "body"));
-            body.sort_by_key(|n| n.start_byte());
-        }
-        body
-    }
-
-    /// For a routine whose later statements the second tree of a file
-    /// parsed as two parts holds: that tree's node of the routine (the same
-    /// byte range, with only those statements).
-    pub fn routine_rest<'a>(&'a self, routine: Node<'_>) -> Option<Node<'a>> {
-        let p = self
-            .part
-            .as_ref()
-            .filter(|p| p.kind == PartKind::Statements)?;
-        let m = crate::split_parse::sole_module(&p.tree)?;
-        let other = crate::syntax_util::fields(m, "body").into_iter().next()?;
-        (other.byte_range() == routine.byte_range()).then_some(other)
-    }
-
     fn empty(path: String, text: String, tree: Option<Tree>) -> Unit {
         match tree {
             Some(tree) => Unit {
                 path,
                 text,
                 tree: UnitTree::new(tree),
-                part: None,
                 items: FileItems::default(),
                 interface: 0,
                 constants: 0,
@@ -226,61 +121,6 @@ impl Unit {
             // No tree even for empty text means the grammar could not be
             // loaded at all, which the grammar's own tests rule out.
             None => unreachable_tree(path, text),
-        }
-    }
-}
-
-/// The second tree of a file parsed as two parts.
-#[derive(Debug)]
-struct Part {
-    /// What it holds that the unit's tree does not.
-    chunk: Range<usize>,
-    tree: Tree,
-    kind: PartKind,
-}
-
-/// The items of a file parsed as two parts, if the trees fit together: no
-/// syntax error, one module in each, and what the chunk holds in the second
-/// tree only.
-fn split_items(
-    main: &Tree,
-    part: &Tree,
-    chunk: &Range<usize>,
-    kind: PartKind,
-    text: &str,
-) -> Option<FileItems> {
-    use crate::syntax_util::fields;
-    let module = crate::split_parse::sole_module(main)?;
-    let part_module = crate::split_parse::sole_module(part)?;
-    let inside = |n: &Node<'_>| chunk.start <= n.start_byte() && n.end_byte() <= chunk.end;
-    let mine = fields(module, "body");
-    let theirs = fields(part_module, "body");
-    match kind {
-        PartKind::Declarations => {
-            if theirs.is_empty() || !theirs.iter().all(inside) || mine.iter().any(inside) {
-                return None;
-            }
-            let mut body = mine;
-            body.extend(theirs);
-            body.sort_by_key(|n| n.start_byte());
-            Some(FileItems::lower_split(module, body, text))
-        }
-        PartKind::Statements => {
-            // The second tree: the one routine, with the chunk's statements.
-            let [routine] = theirs.as_slice() else {
-                return None;
-            };
-            let own = mine
-                .iter()
-                .find(|n| n.byte_range() == routine.byte_range())?;
-            let later = fields(*routine, "body");
-            if later.is_empty()
-                || !later.iter().all(inside)
-                || fields(*own, "body").iter().any(inside)
-            {
-                return None;
-            }
-            Some(FileItems::lower(main, text))
         }
     }
 }

@@ -146,11 +146,6 @@ struct Memo {
     accepts: [ByName<bool>; 3],
 }
 
-/// The semi-value signal types, read as numbers in expressions.
-const SIGNALS: &[&str] = &[
-    "signaldi", "signaldo", "signalgi", "signalgo", "signalai", "signalao",
-];
-
 impl<'a> Types<'a> {
     pub fn new(
         user: impl IntoIterator<Item = UserType<'a>>,
@@ -334,9 +329,14 @@ impl<'a> Types<'a> {
         }
     }
 
+    /// The semi-value types of the catalogue (the signals) read as numbers.
     fn is_signal_uncached(&self, ty: &Ty) -> bool {
-        let base = self.base(ty);
-        SIGNALS.iter().any(|s| base.is(s))
+        let Ty::Named(name) = self.base(ty) else {
+            return false;
+        };
+        self.user(&name).is_none()
+            && self.catalogue.datatype(&name).and_then(|t| t.value_class)
+                == Some(ValueClass::SemiValue)
     }
 
     /// What the predicates above say of a named type, remembered per name

@@ -215,8 +215,9 @@ fn render(
     );
     if let Some(fix) = &d.fix {
         s.push_str(&format!(
-            "\n    fix{}: {}",
-            if fix.safe { " (safe)" } else { "" },
+            "\n    fix{}{}: {}",
+            if fix.is_safe() { " (safe)" } else { "" },
+            if fix.preferred { " (preferred)" } else { "" },
             fix.title
         ));
         for e in &fix.edits {

@@ -165,6 +165,10 @@ pub struct Param {
     /// The RobotWare version that added it, when later than its routine.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub since: Option<Version>,
+    /// Takes an array of any number of dimensions (`Dim`'s `ArrPar`), which
+    /// `array` cannot express.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub any_rank: bool,
 }
 
 /// A group of mutually exclusive parameters.
@@ -189,6 +193,16 @@ pub struct Routine {
     pub signature_known: bool,
     /// The result depends only on the argument values (no state, no side effects).
     pub pure: bool,
+    /// A function whose result is a computed real number (a square root, a
+    /// sine), which is rarely exactly equal to another. `Pow` is not: real
+    /// programs raise integers to integer powers, which a `num` holds
+    /// exactly.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub real_valued: bool,
+    /// An instruction that ends the routine's execution (`ExitCycle`): no
+    /// statement after it runs.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub terminates: bool,
     #[serde(flatten)]
     pub origin: Origin,
     pub summary: String,
@@ -272,6 +286,10 @@ pub struct Datum {
     pub kind: DatumKind,
     /// The value as a RAPID literal or aggregate, where known.
     pub value: Option<String>,
+    /// System data that programs read but cannot assign or pass as `INOUT`
+    /// (`ERRNO`).
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub read_only: bool,
     #[serde(flatten)]
     pub origin: Origin,
     pub summary: String,

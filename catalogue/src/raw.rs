@@ -121,6 +121,7 @@ pub(crate) fn load_file(cat: &mut Catalogue, file: &str, text: &str) -> Result<(
             ty: d.ty,
             kind: d.kind,
             value: d.value,
+            read_only: d.read_only,
             origin: o,
             summary: d.summary,
         });
@@ -135,6 +136,10 @@ struct RawRoutine {
     returns: Option<String>,
     #[serde(default)]
     pure: bool,
+    #[serde(default)]
+    real_valued: bool,
+    #[serde(default)]
+    terminates: bool,
     since: String,
     until: Option<String>,
     package: Option<String>,
@@ -168,6 +173,8 @@ struct RawParam {
     array: u8,
     alt: Option<u32>,
     since: Option<String>,
+    #[serde(default)]
+    any_rank: bool,
 }
 
 impl RawRoutine {
@@ -226,6 +233,7 @@ impl RawRoutine {
                 array: p.array,
                 alt_group: p.alt,
                 since,
+                any_rank: p.any_rank,
             });
         }
         Ok(Routine {
@@ -235,6 +243,8 @@ impl RawRoutine {
             alt_groups,
             signature_known: !self.params_unknown,
             pure: self.pure,
+            real_valued: self.real_valued,
+            terminates: self.terminates,
             origin,
             summary: self.summary,
             doc: self.doc,
@@ -318,6 +328,8 @@ struct RawDatum {
     ty: String,
     kind: DatumKind,
     value: Option<String>,
+    #[serde(default)]
+    read_only: bool,
     since: String,
     until: Option<String>,
     package: Option<String>,

@@ -164,6 +164,7 @@ fn check_reports_broken_entries() {
         array: 0,
         alt_group: Some(9),
         since: None,
+        any_rank: false,
     });
     bad.alt_groups.push(AltGroup {
         id: 9,
@@ -175,6 +176,7 @@ fn check_reports_broken_entries() {
         ty: "nosuchtype".into(),
         kind: DatumKind::Const,
         value: None,
+        read_only: false,
         origin: Origin {
             since: Version::FIRST,
             until: None,

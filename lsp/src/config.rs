@@ -269,7 +269,7 @@ impl std::fmt::Display for ConfigError {
 /// The text of a configuration file (a regular file in UTF-8; a FIFO or a
 /// device is refused without blocking).
 pub fn read_text(path: &Path) -> std::io::Result<String> {
-    let bytes = crate::source::read_regular(path)?;
+    let bytes = crate::project::source::read_regular(path)?;
     String::from_utf8(bytes)
         .map_err(|_| std::io::Error::new(std::io::ErrorKind::InvalidData, "not UTF-8 text"))
 }

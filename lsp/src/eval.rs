@@ -14,12 +14,8 @@ use std::sync::Arc;
 
 use rapid_analyzer::consteval::{self, EnvOptions};
 use rapid_analyzer::lower::{is_expression, lower_with};
-use rapid_analyzer::task::{Task, Unit, task_key};
-use rapid_analyzer::workspace::Workspace;
+use rapid_analyzer::task::{Task, Unit};
 use rapid_evaluator::{EvalError, Evaluation};
-
-use crate::check::discover;
-use crate::source::SourceFile;
 
 /// Output formats of `rapid eval`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -354,41 +350,23 @@ type Program = (Arc<Task>, Option<(usize, usize)>);
 /// The task of `path` (a module, or a folder) and where names resolve: in a
 /// module, at its start; in a folder, the task's globals.
 fn program(path: &Path) -> Result<Program, String> {
-    let meta = std::fs::metadata(path).map_err(|e| e.to_string())?;
-    let is_file = meta.is_file();
-    let unit_path = |p: &Path| crate::source::analyzer_path(p);
-    // The folder the task is grouped by (a backup's RAPID/TASKn, or the
-    // module's folder), walked as `rapid check` would walk it.
-    let root = if is_file {
-        let key = task_key(&unit_path(path));
-        if key.is_empty() {
-            PathBuf::from(".")
-        } else {
-            PathBuf::from(key)
-        }
-    } else {
-        path.to_owned()
-    };
-    let found = discover(std::slice::from_ref(&root));
-    let mut files = found.files;
-    if is_file && !files.iter().any(|f| f == path) {
-        files.push(path.to_owned());
-    }
-    let mut workspace = Workspace::new();
-    for cfg in &found.configs {
-        if let Ok(bytes) = crate::source::read_regular(cfg) {
-            workspace.set_config(&unit_path(cfg), &String::from_utf8_lossy(&bytes));
-        }
-    }
-    for file in &files {
-        match SourceFile::read(file) {
-            Ok(source) => workspace.set_file(&unit_path(file), source.text),
-            Err(why) if file == path => return Err(why.to_string()),
-            Err(_) => {}
-        }
+    use crate::project::Environment;
+    let env = &crate::project::Disk;
+    let around =
+        crate::project::load_around(env, &[path.to_owned()]).map_err(|(_, e)| e.to_string())?;
+    let mut workspace = around.loaded.workspace;
+    let is_file = !around.named.is_empty();
+    if let Some(Err(why)) = around
+        .files
+        .iter()
+        .position(|f| f == path)
+        .and_then(|i| around.loaded.read.get(i))
+        .filter(|_| is_file)
+    {
+        return Err(why.to_string());
     }
     if is_file {
-        let me = unit_path(path);
+        let me = env.name(path);
         let task = workspace.task_of(&me);
         let unit = task
             .units
@@ -403,9 +381,14 @@ fn program(path: &Path) -> Result<Program, String> {
         let at = Some((unit, module.name_range.start));
         return Ok((task, at));
     }
+    // The folder's own task: the task of a module directly in it.
+    let wanted = around
+        .files
+        .iter()
+        .find(|f| f.parent() == Some(path))
+        .map(|f| workspace.task_key(&env.name(f)));
     let tasks = workspace.tasks();
-    let wanted = task_key(&unit_path(&root.join("x.mod")));
-    let task = match tasks.iter().find(|t| t.key == wanted) {
+    let task = match tasks.iter().find(|t| Some(&t.key) == wanted.as_ref()) {
         Some(t) => t.clone(),
         None if tasks.len() == 1 => tasks[0].clone(),
         None if tasks.is_empty() => return Err("no RAPID modules found".to_owned()),

@@ -17,9 +17,10 @@ use std::sync::Arc;
 use rapid_analyzer::format::{FormatError, FormatOptions, format, verify};
 use rayon::prelude::*;
 
-use crate::check::{LintSettings, Overrides, discover_with, normalize};
+use crate::check::{LintSettings, Overrides, normalize};
 use crate::config;
-use crate::source::{SourceFile, Unreadable};
+use crate::project::discover_with;
+use crate::project::source::{SourceFile, Unreadable};
 
 #[derive(Debug, clap::Args)]
 pub struct FmtArgs {

@@ -8,10 +8,10 @@ mod config;
 mod dap;
 mod eval;
 mod fmt;
+mod project;
 mod rules_cmd;
 mod run;
 mod server;
-mod source;
 mod test_cmd;
 
 use std::process::ExitCode;

@@ -192,10 +192,9 @@ fn output_is_deterministic_whatever_the_threads() {
 }
 
 #[test]
-fn a_large_module_parsed_on_two_threads_reports_as_on_one() {
-    // Over 128 KiB: with two threads, its later routines (or the later
-    // statements of its one long routine) are parsed on their own (see
-    // `rapid_analyzer::split_parse`). In every routine, or every few
+fn a_large_module_reports_the_same_on_one_thread_and_two() {
+    // Over 128 KiB, checked with one thread and with two: the same report.
+    // In every routine, or every few
     // statements or declarations, the last ones included: unused data, a
     // constant error, an unknown routine, a routine used as data.
     let many = |i: usize| {
@@ -233,7 +232,7 @@ fn a_large_module_parsed_on_two_threads_reports_as_on_one() {
         let dir = scratch(&format!("large-{name}"));
         let mut module = String::from("MODULE Large\n    CONST num k := 3;\n    VAR num n;\n");
         if name == "long" {
-            // Checked in parts: data one part uses are used.
+            // Data used early or late in a long routine are used.
             module.push_str(
                 "    PROC main()\n        VAR num unused;\n        VAR num early;\n        VAR num late;\n        early := 1;\n",
             );

@@ -1,14 +1,12 @@
 //! Deep and adversarial inputs (generated, see `rapid_tests::adversarial`)
 //! through every analyzer entry point the tools use: parsing and syntax
-//! diagnostics, the checker (whole and in shares, as `rapid check` runs
-//! it), constant values, and every editor feature at sampled offsets. Each
+//! diagnostics, the checker, constant values, and every editor feature at sampled offsets. Each
 //! input runs on a thread with a 2 MiB stack, the size of the server's and
 //! `rapid check`'s worker threads: a stack overflow aborts this test, a
 //! panic fails it. Bounded: about a minute in a debug build.
 
 use std::sync::Arc;
 
-use rapid_analyzer::check::{check_unit_split, merge_unit_check};
 use rapid_analyzer::ide;
 use rapid_analyzer::task::{Task, Unit};
 use rapid_tests::adversarial::{Input, Rng, chains, deep, mutate};
@@ -35,19 +33,6 @@ fn exercise(input: &Input, samples: usize) -> Vec<&'static str> {
     ));
     let task = Task::new("t".to_owned(), vec![unit.clone()], None);
     let diags = rapid_analyzer::workspace::diagnostics_of(&task, &unit);
-    // As rapid check runs a large file: in shares, merged. Same findings.
-    let shares = check_unit_split(&task, 0, 3);
-    let results = shares.iter().map(|s| s.run()).collect();
-    let mut split = unit.syntax.clone();
-    split.extend(merge_unit_check(&task, 0, results));
-    split.sort_by_key(|d| (d.range.start, d.range.end));
-    let mut whole = diags.clone();
-    whole.sort_by_key(|d| (d.range.start, d.range.end));
-    assert_eq!(
-        split, whole,
-        "{}: shares differ from the whole check",
-        input.name
-    );
     let len = input.text.len();
     let mut rng = Rng::new(len as u64);
     let mut offsets: Vec<usize> = (0..samples).map(|_| rng.below(len + 2)).collect();

@@ -27,7 +27,7 @@ pub fn routine_bodies(unit: &Unit) -> Vec<Body> {
 /// cannot be found, which a unit's own item never causes).
 pub fn lower_routine(unit: &Unit, routine: &RoutineDecl) -> Option<Body> {
     let range = routine.range.clone();
-    let tree = unit.tree_at(range.start);
+    let tree = unit.tree();
     let mut node = tree
         .root_node()
         .descendant_for_byte_range(range.start, range.end)?;
@@ -37,18 +37,7 @@ pub fn lower_routine(unit: &Unit, routine: &RoutineDecl) -> Option<Body> {
             return None;
         }
     }
-    let mut items = fields(node, "body");
-    if let Some(rest) = unit.routine_rest(node) {
-        // A long routine parsed as two parts: its later statements.
-        let known: std::collections::HashSet<usize> =
-            items.iter().map(|n| n.start_byte()).collect();
-        items.extend(
-            fields(rest, "body")
-                .into_iter()
-                .filter(|n| !known.contains(&n.start_byte())),
-        );
-        items.sort_by_key(|n| n.start_byte());
-    }
+    let items = fields(node, "body");
     let b = Builder { text: &unit.text };
     let mut data = Vec::new();
     let mut stmts = Vec::new();
@@ -92,7 +81,7 @@ fn is_routine(node: Node<'_>) -> bool {
 /// declaration's initial value or dimension, as [`crate::items`] records
 /// them), lowered.
 pub fn expression_at(unit: &Unit, range: std::ops::Range<usize>) -> Option<Expr> {
-    let tree = unit.tree_at(range.start);
+    let tree = unit.tree();
     let mut node = tree
         .root_node()
         .descendant_for_byte_range(range.start, range.end)?;

@@ -78,8 +78,7 @@ fn make_signature(sym: RoutineSym<'_>) -> Sig {
                     optional: p.optional,
                     switch: p.switch,
                     alt_group: p.alt_group,
-                    any_array: r.name.eq_ignore_ascii_case("Dim")
-                        && p.name.eq_ignore_ascii_case("ArrPar"),
+                    any_array: p.any_rank,
                 })
                 .collect(),
             required_groups: r

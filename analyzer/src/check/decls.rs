@@ -7,7 +7,7 @@ use std::ops::Range;
 use tree_sitter::Node;
 
 use super::{Cx, RoutineCx, Used, decl_ty, exprs, stmts};
-use crate::diagnostic::{Diagnostic, Edit, Fix};
+use crate::diagnostic::Diagnostic;
 use crate::items::{self, DataDecl, Module, RoutineDecl, RoutineKind, Storage};
 use crate::names::{NameMap, fold, same};
 use crate::rules;
@@ -23,22 +23,12 @@ const MAX_DIMS: usize = 3;
 pub(super) fn check_file_wide(cx: &mut Cx<'_>) {
     // The walk only enters nodes that overlap a region of the text that may
     // hold a finding, and nodes with syntax errors.
-    let mut regions = placeholder_or_long_string_regions(cx.text);
+    let regions = placeholder_or_long_string_regions(cx.text);
     if regions.is_empty() {
         return;
     }
     let unit = cx.unit;
     check_file_wide_in(cx, unit.tree().root_node(), &regions);
-    // The second tree of a file parsed as two parts: only its chunk (it
-    // repeats the module's header and end, and a split routine's first and
-    // last lines).
-    if let Some((chunk, part)) = unit.part() {
-        regions.retain_mut(|g| {
-            *g = g.start.max(chunk.start)..g.end.min(chunk.end);
-            g.start < g.end
-        });
-        check_file_wide_in(cx, part.root_node(), &regions);
-    }
 }
 
 /// [`check_file_wide`] in one tree, entering only nodes that overlap
@@ -171,7 +161,8 @@ pub(super) struct BodyNodes<'t>(Vec<Node<'t>>);
 
 impl<'t> BodyNodes<'t> {
     pub(super) fn of(unit: &'t crate::task::Unit, module: Node<'t>) -> BodyNodes<'t> {
-        BodyNodes(unit.module_body(module))
+        let _ = unit;
+        BodyNodes(fields(module, "body"))
     }
 
     /// The declaration that starts at `start` (the last one, should an
@@ -191,14 +182,7 @@ pub(super) fn check_module_prelude<'t>(
     data_nodes: &BodyNodes<'t>,
 ) {
     check_module_names(cx, module);
-    check_module_data(cx, module, data_nodes, 0..module.data.len());
-    check_records_and_aliases(cx, module);
-}
-
-/// [`check_module_prelude`] without the data declarations (checked in runs
-/// by [`check_module_data`]).
-pub(super) fn check_module_own(cx: &mut Cx<'_>, module: &Module) {
-    check_module_names(cx, module);
+    check_module_data(cx, module, data_nodes);
     check_records_and_aliases(cx, module);
 }
 
@@ -244,14 +228,9 @@ fn check_duplicate_module(cx: &mut Cx<'_>, module: &Module) {
     cx.report_with(d);
 }
 
-/// Checks the module's data declarations `run` (indexes into its data).
-pub(super) fn check_module_data<'t>(
-    cx: &mut Cx<'t>,
-    module: &'t Module,
-    data_nodes: &BodyNodes<'t>,
-    run: Range<usize>,
-) {
-    for decl in module.data.get(run).unwrap_or_default() {
+/// Checks the module's data declarations.
+fn check_module_data<'t>(cx: &mut Cx<'t>, module: &'t Module, data_nodes: &BodyNodes<'t>) {
+    for decl in &module.data {
         if let Some(n) = data_nodes.at(decl.range.start) {
             check_data(cx, n, decl, false);
         }
@@ -284,22 +263,6 @@ pub(super) fn check_routine_at<'t>(
 ) {
     if let Some(n) = data_nodes.at(decl.range.start) {
         check_routine(cx, n, decl);
-    }
-}
-
-/// [`check_routine_part`] of a routine of the current module, found by its
-/// declaration; `children` are its [`all_routine_children`], if the caller
-/// has them.
-pub(super) fn check_routine_part_at<'t>(
-    cx: &mut Cx<'t>,
-    data_nodes: &BodyNodes<'t>,
-    decl: &'t RoutineDecl,
-    children: Option<&RoutineChildren<'t>>,
-    part: usize,
-    parts: usize,
-) {
-    if let Some(n) = data_nodes.at(decl.range.start) {
-        check_routine_part(cx, n, decl, children, part, parts);
     }
 }
 
@@ -532,25 +495,9 @@ fn literal_sizes(cx: &Cx<'_>, decl: &DataDecl) -> Vec<Option<usize>> {
         .collect()
 }
 
+/// Checks a routine: its declarations, labels, statements, handlers and
+/// end, and the routine data and parameters it never uses.
 fn check_routine<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &'t RoutineDecl) {
-    check_routine_part(cx, node, decl, None, 0, 1);
-}
-
-/// Checks part `part` of `parts` of a routine: the routine's own checks
-/// (its declarations, labels) in the first part, that share of its
-/// statements, and its handlers and end in the last. A long routine is
-/// checked in parts on several threads; each part reports the routine data
-/// and parameters it did not see used, and only those no part used are
-/// reported ([`merge_unused`]).
-pub(super) fn check_routine_part<'t>(
-    cx: &mut Cx<'t>,
-    node: Node<'t>,
-    decl: &'t RoutineDecl,
-    children: Option<&RoutineChildren<'t>>,
-    part: usize,
-    parts: usize,
-) {
-    let first_report = cx.diags.len();
     check_name_length(cx, &decl.name, decl.name_range.clone());
     let mut params = NameMap::default();
     let mut names: Vec<(&str, Range<usize>)> = Vec::new();
@@ -593,10 +540,7 @@ pub(super) fn check_routine_part<'t>(
         body,
         labels,
         handlers,
-    } = match children {
-        Some(c) => c.clone(),
-        None => all_routine_children(cx.unit, node),
-    };
+    } = all_routine_children(cx.unit, node);
     // Routine data, which must come before the first statement.
     let mut seen_statement = false;
     let mut statements = Vec::new();
@@ -646,20 +590,7 @@ pub(super) fn check_routine_part<'t>(
         h.finish()
     };
     stmts::collect_labels(cx, labels);
-    // The routine's own findings are the first part's.
-    if part > 0 {
-        cx.diags.truncate(first_report);
-    }
-    let share = statements.len().div_ceil(parts.max(1));
-    let from = (part * share).min(statements.len());
-    let to = ((part + 1) * share).min(statements.len());
-    stmts::check_block_part(cx, &statements, from..to);
-    if part + 1 < parts {
-        unused_of_part(cx, decl, parts);
-        cx.routine = None;
-        cx.scope_changed();
-        return;
-    }
+    stmts::check_block(cx, &statements);
     for (h, in_error) in handlers.into_iter().zip([false, true, false]) {
         if let Some(h) = h {
             if let Some(r) = &mut cx.routine {
@@ -672,75 +603,42 @@ pub(super) fn check_routine_part<'t>(
         }
     }
     if decl.kind == RoutineKind::Func && !stmts::block_terminates(cx, &statements) {
-        let mut d = Diagnostic::new(
-            &rules::missing_return::RULE,
-            decl.name_range.clone(),
-            format!(
-                "the function `{}` can reach its end without RETURN",
-                decl.name
-            ),
-        );
-        if let Some(fix) = missing_return_fix(cx, node, decl) {
+        let mut d = rules::missing_return::diagnostic(&decl.name, decl.name_range.clone());
+        let last = statements.last().or(decl_nodes.last()).copied();
+        if let Some(returns) = &decl.returns
+            && let Some(fix) = rules::missing_return::fix(
+                cx.text,
+                &cx.types,
+                node,
+                last,
+                &decl.name,
+                &returns.name,
+            )
+        {
             d = d.with_fix(fix);
         }
         cx.report_with(d);
     }
-    unused_of_part(cx, decl, parts);
+    check_unused_in_routine(cx, decl);
     cx.routine = None;
     cx.scope_changed();
 }
 
-/// The unused routine data and parameters, as one part of a routine saw
-/// them: reported directly for a routine checked whole, else kept apart
-/// (`Cx::part_unused`) for [`merge_unused`].
-fn unused_of_part(cx: &mut Cx<'_>, decl: &RoutineDecl, parts: usize) {
-    let mark = cx.diags.len();
-    check_unused_in_routine(cx, decl);
-    if parts > 1 {
-        cx.part_unused = cx.diags.split_off(mark);
-    }
-}
-
-/// What the parts of a routine checked in parts found unused: only what
-/// every part found (a datum one part uses is used), in the first part's
-/// order.
-pub(crate) fn merge_unused(parts: Vec<Vec<Diagnostic>>) -> Vec<Diagnostic> {
-    let mut parts = parts.into_iter();
-    let Some(first) = parts.next() else {
-        return Vec::new();
-    };
-    let rest: Vec<Vec<Diagnostic>> = parts.collect();
-    first
-        .into_iter()
-        .filter(|d| rest.iter().all(|p| p.contains(d)))
-        .collect()
-}
-
 /// A routine's children, from one walk.
-#[derive(Clone, Debug)]
-pub(super) struct RoutineChildren<'t> {
+#[derive(Debug)]
+struct RoutineChildren<'t> {
     /// In field `body`.
     body: Vec<Node<'t>>,
-    /// The labels of the routine ([`stmts::find_labels`]).
-    labels: Vec<stmts::Label>,
+    /// The labels of the routine ([`crate::sema::labels::find`]).
+    labels: Vec<crate::sema::labels::Label>,
     /// The first child in fields `backward`, `error` and `undo`.
     handlers: [Option<Node<'t>>; 3],
 }
 
-/// The children of a routine, with its later statements from the second
-/// tree of a long routine parsed as two parts (after all of its own
-/// statements, before its handlers).
-pub(super) fn all_routine_children<'t>(
-    unit: &'t crate::task::Unit,
-    node: Node<'t>,
-) -> RoutineChildren<'t> {
-    let (mut children, mut named) = routine_children(node);
-    if let Some(rest) = unit.routine_rest(node) {
-        let later = routine_children(rest).0.body;
-        children.body.extend(later.iter().copied());
-        named.extend(later);
-    }
-    children.labels = stmts::find_labels(&unit.text, node, named);
+/// The children of a routine, with its labels.
+fn all_routine_children<'t>(unit: &'t crate::task::Unit, node: Node<'t>) -> RoutineChildren<'t> {
+    let (mut children, named) = routine_children(node);
+    children.labels = crate::sema::labels::find(&unit.text, node, Some(named));
     children
 }
 
@@ -784,71 +682,6 @@ fn routine_children(node: Node<'_>) -> (RoutineChildren<'_>, Vec<Node<'_>>) {
 /// routine data only) a built-in one. Parameters named like a built-in
 /// (`speed`, `tool`...) are common and harmless: the parameter is the
 /// routine's interface, and the built-in is rarely wanted inside.
-/// Inserts `RETURN <default>;` before `ENDFUNC`, for the types that have an
-/// obvious default value. Not safe: the right value is the author's call.
-fn missing_return_fix(cx: &Cx<'_>, node: Node<'_>, decl: &RoutineDecl) -> Option<Fix> {
-    let ty = decl.returns.as_ref()?;
-    let base = cx.types.base(&Ty::named(&ty.name));
-    let value = if cx.types.is_num_like(&base) {
-        "0"
-    } else if base.is("bool") {
-        "FALSE"
-    } else if base.is("string") {
-        "\"\""
-    } else {
-        return None;
-    };
-    let mut cursor = node.walk();
-    let end = node
-        .children(&mut cursor)
-        .find(|c| !c.is_named() && crate::syntax_util::kind(*c) == "endfunc")?;
-    let line_start = line_start(cx.text, end.start_byte());
-    let indent = cx.text.get(line_start..end.start_byte())?;
-    if !indent.trim().is_empty() {
-        return None;
-    }
-    Some(Fix {
-        title: format!("Add `RETURN {value};` at the end of `{}`", decl.name),
-        edits: vec![Edit {
-            range: line_start..line_start,
-            replacement: format!("{indent}  RETURN {value};{}", line_break(cx.text)),
-        }],
-        safe: false,
-    })
-}
-
-/// Removes a declaration with its line when it has the line to itself.
-fn remove_declaration_fix(text: &str, range: Range<usize>, name: &str) -> Fix {
-    let start = line_start(text, range.start);
-    let rest = text.get(range.end..).unwrap_or_default();
-    let line_end = rest.find('\n').map_or(text.len(), |i| range.end + i + 1);
-    let alone = text
-        .get(start..range.start)
-        .is_some_and(|b| b.trim().is_empty())
-        && text
-            .get(range.end..line_end)
-            .is_some_and(|a| a.trim().is_empty());
-    let range = if alone { start..line_end } else { range };
-    Fix {
-        title: format!("Remove the declaration of `{name}`"),
-        edits: vec![Edit {
-            range,
-            replacement: String::new(),
-        }],
-        safe: false,
-    }
-}
-
-fn line_start(text: &str, at: usize) -> usize {
-    text.get(..at)
-        .and_then(|b| b.rfind(['\n', '\r']))
-        .map_or(0, |i| i + 1)
-}
-
-fn line_break(text: &str) -> &'static str {
-    if text.contains("\r\n") { "\r\n" } else { "\n" }
-}
-
 fn check_shadowing(cx: &mut Cx<'_>, name: &str, range: Range<usize>, builtins: bool) {
     let visible = cx
         .lookup_items(name)
@@ -890,34 +723,26 @@ fn check_unused_in_routine(cx: &mut Cx<'_>, decl: &RoutineDecl) {
         return;
     };
     let mut found = Vec::new();
-    let mut fixes = Vec::new();
     for (key, d) in &r.locals {
         if !cx.used.contains(&Used::RoutineSym(key.clone())) {
-            found.push((
-                &rules::unused_data::RULE,
+            found.push(rules::unused_data::in_routine(
+                cx.text,
+                &d.name,
                 d.name_range.clone(),
-                format!("`{}` is declared but never used", d.name),
-            ));
-            fixes.push((
-                d.name_range.start,
-                remove_declaration_fix(cx.text, d.range.clone(), &d.name),
+                d.range.clone(),
             ));
         }
     }
     for p in &decl.params {
         if !cx.used.contains(&Used::RoutineSym(fold(&p.name))) {
-            found.push((
+            found.push(Diagnostic::new(
                 &rules::unused_parameter::RULE,
                 p.name_range.clone(),
                 format!("the parameter `{}` is never used", p.name),
             ));
         }
     }
-    for (rule, range, message) in found {
-        let mut d = Diagnostic::new(rule, range.clone(), message);
-        if let Some((_, fix)) = fixes.iter().find(|(at, _)| *at == range.start) {
-            d = d.with_fix(fix.clone());
-        }
+    for d in found {
         cx.report_with(d);
     }
     // Routine symbols are per routine: forget them for the next one.
@@ -972,15 +797,12 @@ pub(super) fn check_unused_locals_of_module(cx: &mut Cx<'_>, module: &Module) {
         };
         match item {
             Item::Data(i) => {
-                let mut d = Diagnostic::new(
-                    &rules::unused_data::RULE,
+                data_found.push(rules::unused_data::in_module(
+                    cx.text,
+                    name,
                     range,
-                    format!("the LOCAL data `{name}` is never used in its module"),
-                );
-                if let Some(decl) = module.data.get(i) {
-                    d = d.with_fix(remove_declaration_fix(cx.text, decl.range.clone(), name));
-                }
-                data_found.push(d);
+                    module.data.get(i).map(|decl| decl.range.clone()),
+                ));
             }
             Item::Routine(_) => found.push((
                 &rules::unused_routine::RULE,

@@ -7,18 +7,9 @@ use rapid_catalogue::operators::{self, Op};
 use tree_sitter::Node;
 
 use super::{Cx, Place, calls};
-use crate::names::fold;
 use crate::rules;
 use crate::syntax_util::{Literal, field, fields, literal_aggregate};
 use crate::ty::Ty;
-
-/// Functions whose results are real numbers, for the float-equality lint.
-/// `Pow` is left out: real programs raise integers to integer powers,
-/// whose results a `num` holds exactly.
-const REAL_FUNCTIONS: &[&str] = &[
-    "sqrt", "sin", "cos", "tan", "asin", "acos", "atan", "atan2", "exp", "distance", "vectmagn",
-    "dotprod",
-];
 
 /// The type of an expression, reporting what is wrong inside it. `expected`
 /// gives aggregates their type and lets unknown signal names be recognised.
@@ -587,8 +578,11 @@ fn is_real(cx: &Cx<'_>, node: Node<'_>) -> bool {
             let inner = field(node, "expression").or_else(|| field(node, "operand"));
             inner.is_some_and(|i| is_real(cx, i))
         }
+        // Functions whose results are computed real numbers (the
+        // catalogue's `real_valued`).
         "function_call" => field(node, "name")
-            .is_some_and(|n| REAL_FUNCTIONS.contains(&fold(cx.node_text(n)).as_str())),
+            .and_then(|n| cx.cat.function(cx.node_text(n)))
+            .is_some_and(|r| r.real_valued),
         _ => false,
     }
 }

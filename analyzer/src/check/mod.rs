@@ -5,24 +5,30 @@
 //! routine's scope (parameters, routine data, `FOR` variables), the module,
 //! the task's globals and the built-in catalogue, in that order.
 
+mod at;
 mod availability;
+mod cache;
 mod calls;
 mod decls;
 mod exprs;
 pub mod once;
+mod place;
 mod shared;
 mod stmts;
+mod suggest;
+
+pub use cache::StmtCache;
+pub(crate) use place::Place;
+pub(crate) use suggest::Kind;
 
 use std::collections::{HashMap, HashSet};
-use std::hash::BuildHasherDefault;
 use std::ops::Range;
-use std::sync::Arc;
 
 use tree_sitter::Node;
 
-use crate::catalogue::{Catalogue, Datum, DatumKind, Mode, Routine};
+use crate::catalogue::{Catalogue, Datum, Routine};
 use crate::diagnostic::{Diagnostic, Related, Rule};
-use crate::items::{DataDecl, Module, ParamDecl, RoutineDecl, Storage};
+use crate::items::{DataDecl, Module, ParamDecl, RoutineDecl};
 use crate::names::{NameMap, fold, with_folded};
 use crate::task::{Item, ItemRef, Task, Unit};
 use crate::ty::{Ty, Types};
@@ -47,337 +53,25 @@ pub fn check_unit_cached(
     };
     let mut cx = Cx::new(task, unit, u);
     cx.cache = cache;
-    cx.cache.generation += 1;
-    cx.cache.reused = 0;
+    cx.cache.start_check();
     cx.cache_enabled = true;
     cx.check();
-    let diags = finish(u, std::mem::take(&mut cx.diags));
+    let diags = finish(task, unit, u, std::mem::take(&mut cx.diags));
     let mut cache = std::mem::take(&mut cx.cache);
-    // Keep only what this check met (as if the cache were made afresh).
-    let generation = cache.generation;
-    cache.entries.retain(|_, e| e.generation == generation);
+    cache.drop_stale();
     (diags, cache)
 }
 
-/// A share of a unit's check, from [`check_unit_split`]: a run of the
-/// unit's pieces (each module's declarations, then each of its routines, in
-/// order). Shares can run on different threads.
-#[derive(Clone, Debug)]
-pub struct CheckShare<'a> {
-    task: &'a Task,
-    unit: usize,
-    pieces: Range<usize>,
-    split: Arc<Split<'a>>,
-}
-
-/// What every share of a unit's check needs, made once: the pieces, and the
-/// declaration nodes of each module (a walk of thousands of nodes).
-#[derive(Debug)]
-struct Split<'a> {
-    pieces: Vec<(Piece, usize)>,
-    bodies: Vec<(usize, decls::BodyNodes<'a>)>,
-    /// The children of each routine checked in parts: (module, routine,
-    /// children).
-    routines: Vec<(usize, usize, decls::RoutineChildren<'a>)>,
-}
-
-/// What a [`CheckShare`] found: the findings of each of its pieces, and the
-/// module items its pieces used (for the unused-LOCAL lints, which look at
-/// the whole module).
-#[derive(Debug, Default)]
-pub struct ShareResult {
-    pieces: Vec<PieceResult>,
-    used: UsedSet,
-}
-
-/// What one piece found: its diagnostics, and for a part of a routine
-/// checked in parts the routine data and parameters it saw unused.
-#[derive(Debug, Default)]
-struct PieceResult {
-    diags: Vec<Diagnostic>,
-    unused: Vec<Diagnostic>,
-}
-
-/// A piece of a unit's check: a module's own checks (its name, duplicates,
-/// records, aliases), a run of its data declarations, or one routine.
-#[derive(Clone, Debug)]
-enum Piece {
-    Module(usize),
-    Data(usize, Range<usize>),
-    /// A routine, or part `.2` of `.3` of a long one.
-    Routine(usize, usize, usize, usize),
-}
-
-impl Piece {
-    fn module(&self) -> usize {
-        match self {
-            Piece::Module(mi) | Piece::Data(mi, _) | Piece::Routine(mi, ..) => *mi,
-        }
-    }
-}
-
-/// A routine is checked in parts of about this many bytes (a long
-/// generated routine would otherwise keep one thread busy).
-const ROUTINE_PART_BYTES: usize = 128 * 1024;
-
-/// Data declarations per piece: a module of thousands of robtargets is
-/// shared out like a long list of routines.
-const DATA_PER_PIECE: usize = 512;
-
-/// The pieces of a unit, in the order [`check_unit`] checks them, with a
-/// weight each: their size in bytes, a module's declarations counting for
-/// a quarter of theirs (most are literal data, checked from their text,
-/// about five times faster per byte than statements).
-fn pieces(cx: &Cx<'_>) -> Vec<(Piece, usize)> {
-    let mut out = Vec::new();
-    for (mi, module, _) in cx.modules() {
-        let routines: usize = module.routines.iter().map(|r| r.range.len()).sum();
-        let data: usize = module.data.iter().map(|d| d.range.len()).sum();
-        out.push((
-            Piece::Module(mi),
-            module.range.len().saturating_sub(routines + data) / 4,
-        ));
-        for start in (0..module.data.len()).step_by(DATA_PER_PIECE) {
-            let run = start..(start + DATA_PER_PIECE).min(module.data.len());
-            let bytes: usize = module.data[run.clone()].iter().map(|d| d.range.len()).sum();
-            out.push((Piece::Data(mi, run), bytes / 4));
-        }
-        for (ri, r) in module.routines.iter().enumerate() {
-            let parts = r.range.len().div_ceil(ROUTINE_PART_BYTES).max(1);
-            for part in 0..parts {
-                out.push((Piece::Routine(mi, ri, part, parts), r.range.len() / parts));
-            }
-        }
-    }
-    out
-}
-
-/// Splits the check of a unit into at most `shares` shares of about equal
-/// size, for a caller that runs them in parallel ([`CheckShare::run`]) and
-/// hands the results, in order, to [`merge_unit_check`]: the diagnostics are
-/// those of [`check_unit`], in the same order.
-pub fn check_unit_split(task: &Task, unit: usize, shares: usize) -> Vec<CheckShare<'_>> {
-    let Some(u) = task.units.get(unit) else {
-        return Vec::new();
-    };
-    let cx = Cx::new(task, unit, u);
-    let pieces = pieces(&cx);
-    let total: usize = pieces.iter().map(|(_, w)| w).sum();
-    let shares = shares.clamp(1, pieces.len().max(1));
-    let count = pieces.len();
-    let mut ranges = Vec::new();
-    let (mut start, mut acc) = (0, 0);
-    for (i, (_, w)) in pieces.iter().enumerate() {
-        acc += w;
-        // Close a share once it holds its part of the total weight.
-        if acc * shares >= total * (ranges.len() + 1) && ranges.len() + 1 < shares {
-            ranges.push(start..i + 1);
-            start = i + 1;
-        }
-    }
-    ranges.push(start..count);
-    let modules = cx.modules();
-    let bodies: Vec<(usize, decls::BodyNodes<'_>)> = modules
-        .iter()
-        .map(|(mi, _, node)| (*mi, decls::BodyNodes::of(u, *node)))
-        .collect();
-    // One walk of each long routine, for all of its parts.
-    let mut routines = Vec::new();
-    for (piece, _) in &pieces {
-        let Piece::Routine(mi, ri, 0, parts) = piece else {
-            continue;
-        };
-        let decl = modules
-            .iter()
-            .find(|(i, _, _)| i == mi)
-            .and_then(|(_, m, _)| m.routines.get(*ri));
-        let nodes = bodies.iter().find(|(i, _)| i == mi);
-        if let (true, Some(decl), Some((_, nodes))) = (*parts > 1, decl, nodes)
-            && let Some(node) = nodes.at(decl.range.start)
-        {
-            routines.push((*mi, *ri, decls::all_routine_children(u, node)));
-        }
-    }
-    let split = Arc::new(Split {
-        pieces,
-        bodies,
-        routines,
-    });
-    ranges
-        .into_iter()
-        .map(|pieces| CheckShare {
-            task,
-            unit,
-            pieces,
-            split: Arc::clone(&split),
-        })
-        .collect()
-}
-
-impl CheckShare<'_> {
-    /// Checks this share's pieces.
-    pub fn run(&self) -> ShareResult {
-        let Some(u) = self.task.units.get(self.unit) else {
-            return ShareResult::default();
-        };
-        let mut cx = Cx::new(self.task, self.unit, u);
-        cx.cache.generation += 1;
-        cx.cache_enabled = true;
-        let modules = cx.modules();
-        let mut result = ShareResult::default();
-        let mut entered = None;
-        for (piece, _) in self
-            .split
-            .pieces
-            .get(self.pieces.clone())
-            .unwrap_or_default()
-        {
-            let mi = piece.module();
-            let found = modules.iter().find(|(i, _, _)| *i == mi);
-            let nodes = self.split.bodies.iter().find(|(i, _)| *i == mi);
-            let (Some((_, module, _)), Some((_, nodes))) = (found, nodes) else {
-                result.pieces.push(PieceResult::default());
-                continue;
-            };
-            if entered != Some(mi) {
-                cx.enter_module(mi, module);
-                entered = Some(mi);
-            }
-            match piece {
-                Piece::Module(_) => decls::check_module_own(&mut cx, module),
-                Piece::Data(_, run) => {
-                    decls::check_module_data(&mut cx, module, nodes, run.clone());
-                }
-                Piece::Routine(_, ri, part, parts) => {
-                    let children = self
-                        .split
-                        .routines
-                        .iter()
-                        .find(|(m, r, _)| *m == mi && r == ri)
-                        .map(|(_, _, c)| c);
-                    if let Some(decl) = module.routines.get(*ri) {
-                        decls::check_routine_part_at(&mut cx, nodes, decl, children, *part, *parts);
-                    }
-                }
-            }
-            result.pieces.push(PieceResult {
-                diags: std::mem::take(&mut cx.diags),
-                unused: std::mem::take(&mut cx.part_unused),
-            });
-        }
-        result.used = std::mem::take(&mut cx.used);
-        result
-    }
-}
-
-/// The diagnostics of a unit from the results of its shares
-/// ([`check_unit_split`]), given in the shares' order.
-pub fn merge_unit_check(task: &Task, unit: usize, results: Vec<ShareResult>) -> Vec<Diagnostic> {
-    let Some(u) = task.units.get(unit) else {
-        return Vec::new();
-    };
-    let mut cx = Cx::new(task, unit, u);
-    let mut found = Vec::new();
-    for r in results {
-        cx.used.extend(r.used);
-        found.extend(r.pieces);
-    }
-    decls::check_file_wide(&mut cx);
-    let pieces = pieces(&cx);
-    let mut found = found.into_iter();
-    for (mi, module, _) in cx.modules() {
-        cx.enter_module(mi, module);
-        let mut parts_unused = Vec::new();
-        for (piece, _) in pieces.iter().filter(|(p, _)| p.module() == mi) {
-            let result = found.next().unwrap_or_default();
-            cx.diags.extend(result.diags);
-            if let Piece::Routine(_, _, part, parts) = piece
-                && *parts > 1
-            {
-                parts_unused.push(result.unused);
-                if part + 1 == *parts {
-                    cx.diags
-                        .extend(decls::merge_unused(std::mem::take(&mut parts_unused)));
-                }
-            }
-        }
-        decls::check_unused_locals_of_module(&mut cx, module);
-    }
-    finish(u, std::mem::take(&mut cx.diags))
-}
-
 /// Sorts a unit's findings by position, drops those about text nested too
-/// deep to analyse ([`crate::nesting::keeps`]) and reports each name once
-/// ([`once::within_file`]).
-fn finish(u: &Unit, mut diags: Vec<Diagnostic>) -> Vec<Diagnostic> {
+/// deep to analyse ([`crate::nesting::keeps`]), reports each name once
+/// ([`once::within_file`]) and completes the fixes that need the whole unit
+/// ([`crate::rules::complete_fixes`]).
+fn finish(task: &Task, unit: usize, u: &Unit, mut diags: Vec<Diagnostic>) -> Vec<Diagnostic> {
     diags.retain(|d| crate::nesting::keeps(&u.text, u.cuts(), d));
     diags.sort_by_key(|d| (d.range.start, d.range.end));
     once::within_file(&mut diags, &u.text);
+    crate::rules::complete_fixes(task, unit, &mut diags);
     diags
-}
-
-/// Results of single statements, by a key of the statement's text and its
-/// context, with diagnostic ranges relative to the statement's start.
-#[derive(Debug, Default)]
-pub struct StmtCache {
-    entries: HashMap<u64, CachedStmt, BuildHasherDefault<KeyHasher>>,
-    /// How many statements the check that made this cache took from the
-    /// previous one.
-    reused: usize,
-    /// Checks made with this cache: each entry is stamped with the last one
-    /// that met its statement, and the others are dropped after a check.
-    generation: u64,
-    /// Routines entered by checks made with this cache (never reset), so
-    /// that an entry can tell whether its uses were already recorded in the
-    /// routine being checked.
-    routines: u64,
-}
-
-impl StmtCache {
-    /// How many statement results it holds.
-    pub fn len(&self) -> usize {
-        self.entries.len()
-    }
-
-    pub fn is_empty(&self) -> bool {
-        self.entries.is_empty()
-    }
-
-    /// How many statements the check that made this cache did not redo.
-    pub fn reused(&self) -> usize {
-        self.reused
-    }
-}
-
-/// The cache's keys are hashes already: use them as they are.
-#[derive(Default)]
-pub(crate) struct KeyHasher(u64);
-
-impl std::hash::Hasher for KeyHasher {
-    fn finish(&self) -> u64 {
-        self.0
-    }
-
-    fn write(&mut self, bytes: &[u8]) {
-        for b in bytes {
-            self.0 = self.0.rotate_left(8) ^ u64::from(*b);
-        }
-    }
-
-    fn write_u64(&mut self, n: u64) {
-        self.0 = n;
-    }
-}
-
-#[derive(Clone, Debug)]
-pub(crate) struct CachedStmt {
-    diags: Vec<Diagnostic>,
-    used: Vec<Used>,
-    /// The last check that met this statement.
-    generation: u64,
-    /// The last routine (a [`StmtCache::routines`] count) whose `used` set
-    /// holds this statement's uses.
-    routine: u64,
 }
 
 /// What a data name denotes.
@@ -439,8 +133,8 @@ pub(crate) struct RoutineCx<'t> {
     pub locals: NameMap<DataDecl>,
     pub for_vars: Vec<String>,
     /// Labels by folded name: the label's range and the statement list that
-    /// holds it ([`stmts::BlockKey`] of the list's parent).
-    pub labels: NameMap<(Range<usize>, stmts::BlockKey)>,
+    /// holds it ([`crate::sema::labels::BlockKey`] of the list's parent).
+    pub labels: NameMap<(Range<usize>, crate::sema::labels::BlockKey)>,
     pub in_error_handler: bool,
 }
 
@@ -456,7 +150,6 @@ pub(crate) struct Cx<'t> {
     pub diags: Vec<Diagnostic>,
     /// Folded names of routine-scope symbols and module items that were used.
     pub used: UsedSet,
-    pub reported_signals: HashSet<String>,
     /// Statement results of the previous checks, and of this one.
     pub(crate) cache: StmtCache,
     pub(crate) cache_enabled: bool,
@@ -477,9 +170,6 @@ pub(crate) struct Cx<'t> {
     /// Lowered initial values of module data for rule E413, made on first
     /// use and kept for the whole check.
     pub(crate) inits: Option<crate::consteval::InitCache>,
-    /// The unused routine data and parameters that the part just checked of
-    /// a routine checked in parts found ([`decls::merge_unused`]).
-    pub(crate) part_unused: Vec<Diagnostic>,
     /// Signatures of the routines called so far, by the address of their
     /// declaration (and whether a built-in is called as a function).
     signatures: HashMap<(usize, bool, bool), std::rc::Rc<calls::Sig>>,
@@ -522,7 +212,6 @@ impl<'t> Cx<'t> {
             routine: None,
             diags: Vec::new(),
             used: UsedSet::default(),
-            reported_signals: HashSet::new(),
             cache: StmtCache::default(),
             cache_enabled: false,
             recording: None,
@@ -532,7 +221,6 @@ impl<'t> Cx<'t> {
             module_close_memo: HashMap::new(),
             reused_signals: HashMap::new(),
             inits: None,
-            part_unused: Vec::new(),
             signatures: HashMap::new(),
             clean_literals: HashSet::new(),
         }
@@ -544,154 +232,6 @@ impl<'t> Cx<'t> {
             r.push(u.clone());
         }
         self.used.insert(u);
-    }
-
-    /// Checks a statement through the cache: a statement whose text and
-    /// context are unchanged gets its previous findings back.
-    pub(crate) fn cached_statement(&mut self, s: Node<'t>, check: impl FnOnce(&mut Cx<'t>)) {
-        if !self.cache_enabled || self.recording.is_some() {
-            check(self);
-            return;
-        }
-        let Some(key) = self.statement_key(s) else {
-            check(self);
-            return;
-        };
-        let start = s.start_byte();
-        let generation = self.cache.generation;
-        let routine = self.cache.routines;
-        if let Some(c) = self.cache.entries.get_mut(&key) {
-            c.generation = generation;
-            for d in &c.diags {
-                // An unconfigured signal is kept once per name, at its first
-                // use in source order: a copy that a reused one already
-                // precedes (or ties with, being pushed earlier) would be
-                // dropped at the end anyway.
-                let at = (d.range.start + start, d.range.end + start);
-                if std::ptr::eq(d.rule, &crate::rules::unconfigured_signal::RULE) {
-                    match self.reused_signals.get_mut(&d.message) {
-                        Some(first) if *first <= at => continue,
-                        Some(first) => *first = at,
-                        None => {
-                            self.reused_signals.insert(d.message.clone(), at);
-                        }
-                    }
-                }
-                let mut d = d.clone();
-                d.range = d.range.start + start..d.range.end + start;
-                for r in &mut d.related {
-                    if r.file.is_none() {
-                        r.range = r.range.start + start..r.range.end + start;
-                    }
-                }
-                if let Some(f) = &mut d.fix {
-                    for e in &mut f.edits {
-                        e.range = e.range.start + start..e.range.end + start;
-                    }
-                }
-                self.diags.push(d);
-            }
-            // The same statement met again in this routine: its uses are
-            // recorded already.
-            if c.routine != routine {
-                c.routine = routine;
-                for u in &c.used {
-                    if !self.used.contains(u) {
-                        self.used.insert(u.clone());
-                    }
-                }
-            }
-            self.cache.reused += 1;
-            return;
-        }
-        let before = self.diags.len();
-        self.recording = Some(Vec::new());
-        check(self);
-        let used = self.recording.take().unwrap_or_default();
-        let range = s.byte_range();
-        let inside = |r: &Range<usize>| range.start <= r.start && r.end <= range.end;
-        let found = self.diags.get(before..).unwrap_or_default();
-        let cacheable = found.iter().all(|d| {
-            inside(&d.range)
-                && d.related
-                    .iter()
-                    .all(|r| r.file.is_some() || inside(&r.range))
-                && d.fix
-                    .as_ref()
-                    .is_none_or(|f| f.edits.iter().all(|e| inside(&e.range)))
-        });
-        if cacheable {
-            let rel = |r: &Range<usize>| r.start - start..r.end - start;
-            let diags = found
-                .iter()
-                .map(|d| {
-                    let mut d = d.clone();
-                    d.range = rel(&d.range);
-                    for r in &mut d.related {
-                        if r.file.is_none() {
-                            r.range = rel(&r.range);
-                        }
-                    }
-                    if let Some(f) = &mut d.fix {
-                        for e in &mut f.edits {
-                            e.range = rel(&e.range);
-                        }
-                    }
-                    d
-                })
-                .collect();
-            self.cache.entries.insert(
-                key,
-                CachedStmt {
-                    diags,
-                    used,
-                    generation,
-                    routine,
-                },
-            );
-        }
-    }
-
-    /// The cache key of a statement: its text and everything around it that
-    /// its check reads (routine declarations, handler, FOR variables, module,
-    /// the task's interface and constants).
-    fn statement_key(&mut self, s: Node<'_>) -> Option<u64> {
-        use std::hash::{Hash, Hasher};
-        let r = self.routine.as_ref()?;
-        let module = self.module_idx();
-        // The context changes rarely: hash it once per change.
-        let context = match &self.statement_context {
-            Some(c)
-                if c.fingerprint == self.routine_fingerprint
-                    && c.in_error_handler == r.in_error_handler
-                    && c.module == module
-                    && c.for_vars == r.for_vars =>
-            {
-                c.hash
-            }
-            _ => {
-                let mut h = std::hash::DefaultHasher::new();
-                self.routine_fingerprint.hash(&mut h);
-                r.in_error_handler.hash(&mut h);
-                r.for_vars.hash(&mut h);
-                module.hash(&mut h);
-                self.task.interface.hash(&mut h);
-                self.task.constants.hash(&mut h);
-                let hash = h.finish();
-                self.statement_context = Some(StatementContext {
-                    fingerprint: self.routine_fingerprint,
-                    in_error_handler: r.in_error_handler,
-                    for_vars: r.for_vars.clone(),
-                    module,
-                    hash,
-                });
-                hash
-            }
-        };
-        let mut h = std::hash::DefaultHasher::new();
-        context.hash(&mut h);
-        self.node_text(s).hash(&mut h);
-        Some(h.finish())
     }
 
     fn check(&mut self) {
@@ -916,7 +456,11 @@ impl<'t> Cx<'t> {
         } else if what == "data" && self.task.signals.is_none() {
             message.push_str(" (if it is an I/O signal, give the controller's EIO.cfg)");
         }
-        self.report_unresolved(range, message);
+        let mut d = self.unresolved_diagnostic(range, message);
+        if kind == Kind::Data {
+            d = d.with_fix(crate::rules::unresolved_name::pending_declare_fix());
+        }
+        self.report_with(d);
     }
 
     /// Reports a name nothing declares: an error in a complete backup's
@@ -926,384 +470,23 @@ impl<'t> Cx<'t> {
     /// declaration may be in a module or an option that is not part of the
     /// checked files).
     pub(crate) fn report_unresolved(&mut self, range: Range<usize>, message: String) {
+        let d = self.unresolved_diagnostic(range, message);
+        self.report_with(d);
+    }
+
+    fn unresolved_diagnostic(&self, range: Range<usize>, message: String) -> Diagnostic {
         let mut d = Diagnostic::new(&crate::rules::unresolved_name::RULE, range, message);
         if self.task.complete {
             d.severity = crate::diagnostic::Severity::Error;
         } else if self.task.loaded_elsewhere {
             d.severity = crate::diagnostic::Severity::Info;
         }
-        self.report_with(d);
-    }
-
-    /// A visible name of the same kind within a small edit distance of
-    /// `name`: the first closest of the routine's data and parameters, then
-    /// the module's, then the task's globals. A suggestion of another kind
-    /// (a data type for a variable) would mislead more than help.
-    fn close_match(&mut self, name: &str, kind: Kind) -> Option<String> {
-        let key = fold(name);
-        let limit = if key.len() <= 4 { 1 } else { 2 };
-        let mut best = None;
-        if kind == Kind::Data {
-            best = self.routine.as_ref().and_then(|r| {
-                let locals = r.locals.values().map(|d| d.name.as_str());
-                closest(
-                    &key,
-                    limit,
-                    locals.chain(r.params.values().map(|p| p.name.as_str())),
-                )
-            });
-        }
-        // The module's part does not depend on the routine: remembered per
-        // module (a module may declare thousands of data).
-        if let Some((mi, m)) = self.module {
-            let memo_key = (mi, kind, key.clone());
-            let found = match self.module_close_memo.get(&memo_key) {
-                Some(found) => found.clone(),
-                None => {
-                    let found = match kind {
-                        Kind::Data => closest(&key, limit, m.data.iter().map(|d| d.name.as_str())),
-                        Kind::Routine => {
-                            closest(&key, limit, m.routines.iter().map(|r| r.name.as_str()))
-                        }
-                        Kind::Type => closest(
-                            &key,
-                            limit,
-                            m.records
-                                .iter()
-                                .map(|r| r.name.as_str())
-                                .chain(m.aliases.iter().map(|a| a.name.as_str())),
-                        ),
-                    };
-                    self.module_close_memo.insert(memo_key, found.clone());
-                    found
-                }
-            };
-            keep_nearer(&mut best, found);
-        }
-        keep_nearer(&mut best, close_global(self.task, &key, limit, kind));
-        best.map(|(_, n)| n)
+        d
     }
 
     /// Is `name` used as an optional parameter of the routine being checked?
     pub(crate) fn optional_param(&self, name: &str) -> Option<&'t ParamDecl> {
         let p = self.routine.as_ref()?.params.get(&fold(name)).copied()?;
         p.optional.then_some(p)
-    }
-}
-
-/// Where a value lives, for the parameter-mode check.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum Place {
-    Var,
-    Pers,
-    Const,
-    ForVar,
-    Param(Mode),
-    /// Read-only system data such as `ERRNO`.
-    ReadOnly,
-    /// Not a data reference at all: a literal, a call, an operation.
-    Value,
-    /// Unresolved: say nothing.
-    Unknown,
-}
-
-impl Place {
-    pub(crate) fn of(sym: &DataSym<'_>) -> Place {
-        match sym {
-            DataSym::Param(p) => Place::Param(p.mode),
-            DataSym::Local(DataDecl { storage, .. })
-            | DataSym::Module(DataDecl { storage, .. }, _) => match storage {
-                Storage::Var => Place::Var,
-                Storage::Pers => Place::Pers,
-                Storage::Const => Place::Const,
-            },
-            DataSym::ForVar => Place::ForVar,
-            DataSym::Builtin(d) => match d.kind {
-                DatumKind::Const => Place::Const,
-                DatumKind::Pers => Place::Pers,
-                DatumKind::Var if is_read_only_system_datum(d) => Place::ReadOnly,
-                DatumKind::Var => Place::Var,
-            },
-            DataSym::Signal(_) => Place::Var,
-        }
-    }
-
-    pub(crate) fn describe(self) -> &'static str {
-        match self {
-            Place::Var => "a variable",
-            Place::Pers => "a persistent",
-            Place::Const => "a constant",
-            Place::ForVar => "a FOR loop variable",
-            Place::Param(Mode::In) => "an input parameter",
-            Place::Param(_) => "a reference parameter",
-            Place::ReadOnly => "read-only system data",
-            Place::Value => "a value",
-            Place::Unknown => "unknown",
-        }
-    }
-}
-
-/// System data the program reads but the controller sets.
-pub(crate) fn is_read_only_system_datum(d: &Datum) -> bool {
-    ["ERRNO", "INTNO", "ERRSTR"]
-        .iter()
-        .any(|n| d.name.eq_ignore_ascii_case(n))
-}
-
-/// The task's global name closest to `key` within `limit` edits, memoised
-/// per task (the same unresolved name tends to recur in many places).
-/// The first of the names nearest to `key` (folded), with its distance:
-/// at least one edit and at most `limit`.
-fn closest<'n>(
-    key: &str,
-    limit: usize,
-    names: impl IntoIterator<Item = &'n str>,
-) -> Option<(usize, String)> {
-    let mut best: Option<(usize, &str)> = None;
-    for cand in names {
-        let d = edit_distance_folded(key, cand);
-        if d > 0 && d <= limit && best.is_none_or(|(bd, _)| d < bd) {
-            best = Some((d, cand));
-        }
-    }
-    best.map(|(d, n)| (d, n.to_owned()))
-}
-
-/// Puts `other` in `best` if it is strictly nearer.
-fn keep_nearer(best: &mut Option<(usize, String)>, other: Option<(usize, String)>) {
-    if let Some((d, n)) = other
-        && best.as_ref().is_none_or(|(bd, _)| d < *bd)
-    {
-        *best = Some((d, n));
-    }
-}
-
-fn close_global(task: &Task, key: &str, limit: usize, kind: Kind) -> Option<(usize, String)> {
-    let mut memo = task
-        .close_names
-        .lock()
-        .unwrap_or_else(std::sync::PoisonError::into_inner);
-    let memo_key = format!("{}{key}", kind.prefix());
-    if let Some(found) = memo.get(&memo_key) {
-        return found.clone();
-    }
-    let mut best: Option<(usize, String)> = None;
-    for (folded, refs) in &task.globals {
-        if folded.len().abs_diff(key.len()) > limit {
-            continue;
-        }
-        let Some(r) = refs.iter().find(|r| kind.matches(r.item)) else {
-            continue;
-        };
-        let d = edit_distance(key, folded);
-        if d > 0
-            && d <= limit
-            && best.as_ref().is_none_or(|(bd, _)| d < *bd)
-            && let Some((n, _)) = task.item_name(*r)
-        {
-            best = Some((d, n.to_owned()));
-        }
-    }
-    memo.insert(memo_key, best.clone());
-    best
-}
-
-/// What kind of name a "did you mean" looks for.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub(crate) enum Kind {
-    Data,
-    Routine,
-    Type,
-}
-
-impl Kind {
-    /// From the word [`Cx::unresolved`] is given: "data", "routine", "data type".
-    fn of(what: &str) -> Kind {
-        match what {
-            "routine" => Kind::Routine,
-            "data type" => Kind::Type,
-            _ => Kind::Data,
-        }
-    }
-
-    fn matches(self, item: Item) -> bool {
-        matches!(
-            (self, item),
-            (Kind::Data, Item::Data(_))
-                | (Kind::Routine, Item::Routine(_))
-                | (Kind::Type, Item::Record(_) | Item::Alias(_))
-        )
-    }
-
-    /// Keeps the kinds apart in the task's memo of suggestions.
-    fn prefix(self) -> &'static str {
-        match self {
-            Kind::Data => "d:",
-            Kind::Routine => "r:",
-            Kind::Type => "t:",
-        }
-    }
-}
-
-/// Levenshtein distance of two short ASCII strings.
-pub(crate) fn edit_distance(a: &str, b: &str) -> usize {
-    distance(a.as_bytes(), b.as_bytes(), |x, y| x == y)
-}
-
-/// [`edit_distance`] between a folded `key` and `name` as if `name` were
-/// folded too (without allocating its folded form).
-fn edit_distance_folded(key: &str, name: &str) -> usize {
-    distance(key.as_bytes(), name.as_bytes(), |x, y| {
-        x == y.to_ascii_lowercase()
-    })
-}
-
-/// Levenshtein distance of byte strings, or 3 when it is more than 2
-/// (callers only care about distances up to 2).
-fn distance(a: &[u8], b: &[u8], eq: impl Fn(u8, u8) -> bool) -> usize {
-    const STACK: usize = 64;
-    if a.len().abs_diff(b.len()) > 2 {
-        return 3;
-    }
-    let mut stack = [[0usize; STACK]; 2];
-    let mut heap;
-    let (mut prev, mut cur): (&mut [usize], &mut [usize]) = if b.len() < STACK {
-        let [p, c] = &mut stack;
-        (&mut p[..=b.len()], &mut c[..=b.len()])
-    } else {
-        heap = (vec![0; b.len() + 1], vec![0; b.len() + 1]);
-        (&mut heap.0, &mut heap.1)
-    };
-    for (j, p) in prev.iter_mut().enumerate() {
-        *p = j;
-    }
-    for (i, &ca) in a.iter().enumerate() {
-        cur[0] = i + 1;
-        let mut row_min = cur[0];
-        for (j, &cb) in b.iter().enumerate() {
-            let cost = usize::from(!eq(ca, cb));
-            cur[j + 1] = (prev[j] + cost).min(prev[j + 1] + 1).min(cur[j] + 1);
-            row_min = row_min.min(cur[j + 1]);
-        }
-        // The distance is at least the smallest value of any row.
-        if row_min > 2 {
-            return 3;
-        }
-        std::mem::swap(&mut prev, &mut cur);
-    }
-    prev[b.len()]
-}
-
-/// Name resolution at a position, for the editor features ([`crate::ide`]):
-/// the same scopes as the checker, entered around one offset.
-impl<'t> Cx<'t> {
-    /// A context whose module and routine scopes are those around `offset`
-    /// of unit `unit` (parameters, routine data, and the variables of the
-    /// `FOR` loops that enclose the offset).
-    pub(crate) fn at(task: &'t Task, unit: usize, offset: usize) -> Option<Cx<'t>> {
-        let u: &'t Unit = task.units.get(unit)?;
-        let mut cx = Cx::new(task, unit, u);
-        let within = |r: &Range<usize>| r.start <= offset && offset <= r.end;
-        cx.module = u
-            .items
-            .modules
-            .iter()
-            .enumerate()
-            .find(|(_, m)| within(&m.range));
-        let Some((_, module)) = cx.module else {
-            return Some(cx);
-        };
-        let Some(decl) = module.routines.iter().find(|r| within(&r.range)) else {
-            return Some(cx);
-        };
-        let root = u.tree_at(decl.range.start).root_node();
-        let Some(node) = root.named_descendant_for_byte_range(decl.range.start, decl.range.end)
-        else {
-            return Some(cx);
-        };
-        let mut params = NameMap::default();
-        for p in &decl.params {
-            params.entry(fold(&p.name)).or_insert(p);
-        }
-        let mut locals = NameMap::default();
-        // Routine data comes before the first statement: stop there, so that
-        // entering a long routine costs its declarations, not its statements
-        // (constant evaluation enters the scope once per statement).
-        if let Some(body) = crate::syntax_util::field_id("body") {
-            let mut cursor = node.walk();
-            for item in node
-                .children_by_field_id(body, &mut cursor)
-                .take_while(|n| crate::syntax_util::kind(*n) == "data_declaration")
-            {
-                if let Some(d) = crate::items::lower_data(item, &u.text) {
-                    locals.entry(fold(&d.name)).or_insert(d);
-                }
-            }
-        }
-        let mut for_vars = Vec::new();
-        let mut at = root.descendant_for_byte_range(offset, offset);
-        while let Some(n) = at {
-            if n.id() == node.id() {
-                break;
-            }
-            if crate::syntax_util::kind(n) == "for_statement"
-                && let Some(v) = crate::syntax_util::field(n, "variable")
-            {
-                for_vars.push(fold(cx.node_text(v)));
-            }
-            at = n.parent();
-        }
-        cx.routine = Some(RoutineCx {
-            decl,
-            params,
-            locals,
-            for_vars,
-            labels: NameMap::default(),
-            in_error_handler: false,
-        });
-        Some(cx)
-    }
-
-    /// The type of an expression in this context (its findings dropped).
-    pub(crate) fn type_of_expr(&mut self, node: Node<'t>) -> Ty {
-        // Only this expression's findings are dropped: the checker calls
-        // this in the middle of a unit (constant evaluation).
-        let before = self.diags.len();
-        let used = self.used.clone();
-        let recorded = self.recording.as_ref().map(Vec::len);
-        let signals = self.reported_signals.clone();
-        let ty = exprs::expr(self, node, None);
-        self.diags.truncate(before);
-        self.used = used;
-        // The statement cache records only the uses that stay.
-        if let (Some(r), Some(len)) = (&mut self.recording, recorded) {
-            r.truncate(len);
-        }
-        self.reported_signals = signals;
-        ty
-    }
-}
-
-#[cfg(test)]
-mod distance_tests {
-    #[test]
-    fn edit_distances() {
-        for (a, b, d) in [
-            ("movel", "movel", 0),
-            ("movel", "movej", 1),
-            ("movel", "mvel", 1),
-            ("ptarget", "ptraget", 2),
-            ("abc", "abcdef", 3),
-            ("", "ab", 2),
-        ] {
-            assert_eq!(super::edit_distance(a, b), d, "{a} {b}");
-            assert_eq!(
-                super::edit_distance_folded(a, &b.to_uppercase()),
-                d,
-                "{a} {b}"
-            );
-        }
-        let long = "x".repeat(70);
-        assert_eq!(super::edit_distance(&long, &format!("{long}y")), 1);
     }
 }

@@ -1,77 +1,17 @@
 //! Statements: assignments, calls, control flow, labels and jumps, error
 //! handling statements and `CONNECT`.
 
-use std::ops::Range;
-
 use tree_sitter::Node;
 
 use super::{Cx, Place, RoutineSym, calls, exprs};
 use crate::items::RoutineKind;
 use crate::names::fold;
 use crate::rules;
+use crate::sema::labels::{Label, block_key};
 use crate::syntax_util::{field, fields, kind as kind_of};
 use crate::ty::Ty;
 
-/// A label of a routine: its name, the name's range, and the statement list
-/// that holds it.
-pub(super) type Label = (String, Range<usize>, BlockKey);
-
-/// The labels of a routine, in source order; `named` are the routine's
-/// named children. Reads only the syntax: a long routine checked in parts
-/// finds them once for all its parts.
-pub(super) fn find_labels(source: &str, routine: Node<'_>, named: Vec<Node<'_>>) -> Vec<Label> {
-    // A label is `name:`; a routine without a `:` other than in `:=` or in a
-    // comment has none (a cheap look at the text spares the walk of long
-    // generated routines).
-    let text = source.get(routine.byte_range()).unwrap_or_default();
-    let mut from = 0;
-    let has_colon = loop {
-        match text.get(from..).and_then(|t| t.find(':')) {
-            Some(i) => {
-                let at = from + i;
-                from = at + 1;
-                if text.as_bytes().get(at + 1) == Some(&b'=') || in_comment(text, at) {
-                    continue;
-                }
-                break true;
-            }
-            None => break false,
-        }
-    };
-    if !has_colon {
-        return Vec::new();
-    }
-    let mut stack = vec![(routine, Some(named))];
-    let mut found = Vec::new();
-    while let Some((node, children)) = stack.pop() {
-        let mut cursor = node.walk();
-        let children = match children {
-            Some(c) => c,
-            None => node.named_children(&mut cursor).collect(),
-        };
-        for child in children {
-            let kind = kind_of(child);
-            if kind == "label" {
-                if let Some(name) = field(child, "name") {
-                    found.push((
-                        crate::syntax_util::text_of(name, source).to_owned(),
-                        name.byte_range(),
-                        block_key(node),
-                    ));
-                }
-            } else if !kind.ends_with("expression")
-                && kind != "argument_list"
-                && (child.has_error() || !cannot_hold_label(kind))
-            {
-                stack.push((child, None));
-            }
-        }
-    }
-    found.sort_by_key(|(_, r, _)| r.start);
-    found
-}
-
-/// Records the labels of the routine being checked ([`find_labels`]) and
+/// Records the labels of the routine being checked ([`labels::find`]) and
 /// reports those declared twice.
 pub(super) fn collect_labels(cx: &mut Cx<'_>, found: Vec<Label>) {
     let mut dups = Vec::new();
@@ -100,55 +40,10 @@ pub(super) fn collect_labels(cx: &mut Cx<'_>, found: Vec<Label>) {
     }
 }
 
-/// What identifies the statement list that holds a label: its node's kind
-/// and byte range, not the node itself, which a long routine parsed as two
-/// parts has in both trees.
-pub(crate) type BlockKey = (u16, usize, usize);
-
-fn block_key(node: Node<'_>) -> BlockKey {
-    (node.kind_id(), node.start_byte(), node.end_byte())
-}
-
-/// Is byte `at` of `text` certainly inside a comment: after a `!` on its
-/// line, with no quote before it on the line (which could open a string that
-/// holds the `!`)?
-fn in_comment(text: &str, at: usize) -> bool {
-    let line = text.get(..at).unwrap_or_default();
-    let line = line.rfind(['\n', '\r']).map_or(line, |i| &line[i + 1..]);
-    line.contains('!') && !line.contains('"')
-}
-
-/// Nodes of these kinds hold no statement list, so (when they parsed
-/// without error) no label: the label walk skips them.
-fn cannot_hold_label(kind: &str) -> bool {
-    crate::syntax_util::is_simple_statement(kind)
-        || matches!(
-            kind,
-            "comment" | "compact_if_statement" | "data_declaration"
-        )
-}
-
 /// Checks a statement list, and reports the statements no path reaches.
 pub(super) fn check_block<'t>(cx: &mut Cx<'t>, statements: &[Node<'t>]) {
-    check_block_part(cx, statements, 0..statements.len());
-}
-
-/// [`check_block`] for the statements `part` of the list only (the others
-/// are checked by another part of a long routine's check).
-pub(super) fn check_block_part<'t>(cx: &mut Cx<'t>, statements: &[Node<'t>], part: Range<usize>) {
-    // Whether the statement before the part leaves the list (as the loop
-    // below would have found it).
-    let mut ended_by: Option<&str> = part
-        .start
-        .checked_sub(1)
-        .and_then(|i| statements.get(i))
-        .and_then(|s| leaves_list(*s));
-    for (i, s) in statements
-        .iter()
-        .enumerate()
-        .take(part.end)
-        .skip(part.start)
-    {
+    let mut ended_by: Option<&str> = None;
+    for (i, s) in statements.iter().enumerate() {
         if kind_of(*s) == "label" {
             ended_by = None;
         } else if let Some(by) = ended_by.take() {
@@ -458,10 +353,10 @@ fn terminates(cx: &Cx<'_>, s: Node<'_>) -> bool {
         }
         "while_statement" => field(s, "condition")
             .is_some_and(|c| c.kind() == "boolean" && cx.node_text(c).eq_ignore_ascii_case("true")),
-        "procedure_call" => field(s, "name").is_some_and(|n| {
-            let name = cx.node_text(n);
-            ["exitcycle"].contains(&fold(name).as_str())
-        }),
+        // An instruction that ends execution (`ExitCycle`).
+        "procedure_call" => field(s, "name")
+            .and_then(|n| cx.cat.instruction(cx.node_text(n)))
+            .is_some_and(|r| r.terminates),
         _ => false,
     }
 }

@@ -302,16 +302,10 @@ fn labels(cx: &Cx<'_>) -> Vec<CompletionItem> {
     else {
         return Vec::new();
     };
-    let mut out = Vec::new();
-    crate::syntax_util::walk(node, &mut |n| {
-        if n.kind() == "label"
-            && let Some(name) = n.child_by_field_name("name")
-            && let Some(t) = cx.text.get(name.byte_range())
-        {
-            out.push(item(t, CompletionKind::Label, None, "0"));
-        }
-    });
-    out
+    crate::sema::labels::find(cx.text, node, None)
+        .iter()
+        .map(|(name, _, _)| item(name, CompletionKind::Label, None, "0"))
+        .collect()
 }
 
 /// Without an item tree (broken code), is the text inside a routine?

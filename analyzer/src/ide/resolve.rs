@@ -9,7 +9,6 @@ use crate::catalogue::{DataType, Datum, Routine};
 use crate::check::{Cx, DataSym, RoutineSym};
 use crate::items::{DataDecl, ParamDecl, RoutineDecl};
 use crate::names::{fold, same};
-use crate::syntax_util::walk;
 use crate::task::{Item, ItemRef, Task};
 use crate::ty::{Ty, UserType};
 
@@ -339,17 +338,11 @@ pub(crate) fn resolve_at<'t>(
             let root = cx.unit.tree().root_node();
             let rnode =
                 root.named_descendant_for_byte_range(routine.range.start, routine.range.end)?;
-            let mut found = None;
-            walk(rnode, &mut |n| {
-                if found.is_none()
-                    && n.kind() == "label"
-                    && let Some(l) = n.child_by_field_name("name")
-                    && cx.text.get(l.byte_range()).is_some_and(|t| same(t, &name))
-                {
-                    found = Some(l.byte_range());
-                }
-            });
-            return found.map(|range| Def::Label { unit, name, range });
+            let range = crate::sema::labels::find(cx.text, rnode, None)
+                .into_iter()
+                .find(|(n, _, _)| same(n, &name))?
+                .1;
+            return Some(Def::Label { unit, name, range });
         }
         ("for_statement", Some("variable")) => {
             return Some(Def::ForVar {

@@ -2,7 +2,8 @@
 //! documentation; this list is the one place that names them all, in code
 //! order. Codes are never reused: a retired rule stays listed.
 
-use crate::diagnostic::Rule;
+use crate::diagnostic::{Diagnostic, Rule};
+use crate::task::Task;
 
 pub mod aggregate_arity;
 pub mod ambiguous_global;
@@ -22,6 +23,7 @@ pub mod duplicate_argument;
 pub mod duplicate_declaration;
 pub mod duplicate_module;
 pub mod equals_for_assignment;
+pub(crate) mod fix_text;
 pub mod float_equality;
 pub mod goto_into_block;
 pub mod handler_only_statement;
@@ -184,6 +186,22 @@ name is common and harmless).\n";
 /// The anchor of a rule's section in the reference page.
 pub fn anchor(rule: &Rule) -> String {
     format!("{}-{}", rule.code.to_ascii_lowercase(), rule.name)
+}
+
+/// Completes the fixes attached without edits while unit `unit` was checked
+/// (see [`crate::diagnostic::Fix::edits`]) through their rule's builder,
+/// and drops those it cannot complete.
+pub(crate) fn complete_fixes(task: &Task, unit: usize, diags: &mut [Diagnostic]) {
+    for d in diags {
+        if d.fix.as_ref().is_none_or(|f| !f.edits.is_empty()) {
+            continue;
+        }
+        d.fix = if std::ptr::eq(d.rule, &unresolved_name::RULE) {
+            unresolved_name::declare_fix(task, unit, d.range.clone())
+        } else {
+            None
+        };
+    }
 }
 
 #[cfg(test)]

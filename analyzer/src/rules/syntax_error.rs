@@ -1,3 +1,7 @@
+use std::ops::Range;
+
+use crate::diagnostic::{Applicability, Fix};
+
 crate::declare_rule! {
     /// Text that does not fit RAPID's grammar at that place.
     ///
@@ -23,4 +27,18 @@ crate::declare_rule! {
     /// ENDPROC
     /// ```
     pub static RULE = ("E001", "syntax-error", Error);
+}
+
+/// A syntax error whose text (at `range`) is a lone `=`: most often `:=`
+/// was meant, but the parser could not tell, so the fix is not safe.
+pub(crate) fn fix(text: &str, range: &Range<usize>) -> Option<Fix> {
+    let t = text.get(range.clone())?;
+    if t.trim() != "=" {
+        return None;
+    }
+    let at = range.start + t.find('=')?;
+    Some(super::equals_for_assignment::fix(
+        at..at + 1,
+        Applicability::Unsafe,
+    ))
 }

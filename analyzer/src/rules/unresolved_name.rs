@@ -1,3 +1,13 @@
+use std::ops::Range;
+
+use tree_sitter::Node;
+
+use super::fix_text::{indent_at, line_break, line_start};
+use crate::diagnostic::{Applicability, Fix};
+use crate::syntax_util::fields;
+use crate::task::Task;
+use crate::ty::Ty;
+
 crate::declare_rule! {
     /// A name that no module of the task and no built-in declares.
     ///
@@ -28,4 +38,106 @@ crate::declare_rule! {
     /// ENDPROC
     /// ```
     pub static RULE = ("W101", "unresolved-name", Warning);
+}
+
+/// The fix of an unresolved data name while the unit is being checked:
+/// its edit goes to the top of the routine, outside the statement, so it
+/// is completed by [`declare_fix`] once the unit's findings are known.
+pub(crate) fn pending_declare_fix() -> Fix {
+    Fix {
+        title: String::new(),
+        edits: Vec::new(),
+        applicability: Applicability::Unsafe,
+        preferred: true,
+    }
+}
+
+/// Declares the unresolved data name at `range` of unit `unit`: `VAR
+/// <type> name;` before the first item of the routine around it, indented
+/// like that item (two spaces more than the routine after a header with
+/// nothing under it). The type is the other side's of an assignment, the
+/// parameter's the name is passed to, `num` for a FOR variable, and `num`
+/// when none of these tells. Not safe: the type (and VAR) are guesses.
+/// `None` outside a routine.
+pub(crate) fn declare_fix(task: &Task, unit: usize, range: Range<usize>) -> Option<Fix> {
+    let u = task.units.get(unit)?;
+    let name = u.text.get(range.clone())?;
+    let routine = routine_around(u.tree().root_node(), range.start)?;
+    let ty = infer_type(task, unit, range).unwrap_or_else(|| "num".to_owned());
+    let nl = line_break(&u.text);
+    let (at, indent) = match fields(routine, "body").first() {
+        Some(first) => (
+            line_start(&u.text, first.start_byte()),
+            indent_at(&u.text, first.start_byte()).to_owned(),
+        ),
+        None => {
+            // After the header line.
+            let header_end = u
+                .text
+                .get(routine.start_byte()..)
+                .and_then(|t| t.find('\n'))
+                .map_or(routine.end_byte(), |i| routine.start_byte() + i + 1);
+            (
+                header_end,
+                format!("{}  ", indent_at(&u.text, routine.start_byte())),
+            )
+        }
+    };
+    Some(Fix::edit(
+        format!("Declare `VAR {ty} {name};` in this routine"),
+        at..at,
+        format!("{indent}VAR {ty} {name};{nl}"),
+        Applicability::Unsafe,
+        true,
+    ))
+}
+
+/// The routine node around `offset`.
+fn routine_around(root: Node<'_>, offset: usize) -> Option<Node<'_>> {
+    let mut at = root.descendant_for_byte_range(offset, offset);
+    while let Some(n) = at {
+        if matches!(
+            n.kind(),
+            "procedure_declaration" | "function_declaration" | "trap_declaration"
+        ) {
+            return Some(n);
+        }
+        at = n.parent();
+    }
+    None
+}
+
+/// The type a name at `range` must have: from an assignment's other side,
+/// or the parameter it is passed to.
+fn infer_type(task: &Task, unit: usize, range: Range<usize>) -> Option<String> {
+    let u = task.units.get(unit)?;
+    let node = u
+        .tree()
+        .root_node()
+        .named_descendant_for_byte_range(range.start, range.end)?;
+    let parent = node.parent()?;
+    match parent.kind() {
+        "assignment" => {
+            let other = match crate::ide::resolve::field_in_parent(node) {
+                Some("left") => parent.child_by_field_name("right")?,
+                _ => parent.child_by_field_name("left")?,
+            };
+            let mut cx = crate::check::Cx::at(task, unit, range.start)?;
+            match cx.type_of_expr(other) {
+                Ty::Named(n) => Some(n),
+                _ => None,
+            }
+        }
+        "for_statement" => Some("num".to_owned()),
+        "argument" => {
+            use crate::ide::signature::{active, call_sig};
+            let (sig, call) = call_sig(task, unit, range.end)?;
+            let p = sig.params.get(active(&sig, &call)?)?;
+            if p.ty.eq_ignore_ascii_case(crate::catalogue::ANYTYPE) || p.ty.is_empty() {
+                return None;
+            }
+            Some(p.ty.clone())
+        }
+        _ => None,
+    }
 }

@@ -10,7 +10,6 @@ use std::ops::Range;
 use tree_sitter::{Language, Node, Parser, Tree};
 
 use crate::diagnostic::Diagnostic;
-use crate::diagnostic::{Edit, Fix};
 use crate::rules::{equals_for_assignment, missing_token, syntax_error};
 
 mod typos;
@@ -164,7 +163,7 @@ fn equals_for_assignment(error: Node<'_>, text: &str) -> Vec<Diagnostic> {
         && (parent.kind() == "data_declaration"
             || (parent.kind() == "procedure_call" && starts_line(prev, text)))
     {
-        out.push(equals_diagnostic(first.byte_range()));
+        out.push(equals_for_assignment::diagnostic(first.byte_range()));
         return out;
     }
     for pair in children.windows(2) {
@@ -176,7 +175,7 @@ fn equals_for_assignment(error: Node<'_>, text: &str) -> Vec<Diagnostic> {
             )
             && starts_line(*place, text)
         {
-            out.push(equals_diagnostic(eq.byte_range()));
+            out.push(equals_for_assignment::diagnostic(eq.byte_range()));
         }
     }
     out
@@ -187,22 +186,6 @@ fn starts_line(node: Node<'_>, text: &str) -> bool {
     let before = text.get(..node.start_byte()).unwrap_or_default();
     let line_start = before.rfind(['\n', '\r']).map_or(0, |i| i + 1);
     before[line_start..].trim().is_empty()
-}
-
-fn equals_diagnostic(range: Range<usize>) -> Diagnostic {
-    Diagnostic::new(
-        &equals_for_assignment::RULE,
-        range.clone(),
-        "expected `:=` to assign a value, found `=` (the comparison operator)",
-    )
-    .with_fix(Fix {
-        title: "Replace `=` with `:=`".into(),
-        edits: vec![Edit {
-            range,
-            replacement: ":=".into(),
-        }],
-        safe: true,
-    })
 }
 
 fn missing_diagnostic(node: Node<'_>, language: &Language) -> Diagnostic {
@@ -228,7 +211,12 @@ fn error_diagnostic(node: Node<'_>, text: &str, language: &Language) -> Diagnost
         Some(expected) => format!("expected {expected}, found {found}"),
         None => format!("unexpected {found}"),
     };
-    Diagnostic::new(&syntax_error::RULE, range, message)
+    let fix = syntax_error::fix(text, &range);
+    let d = Diagnostic::new(&syntax_error::RULE, range, message);
+    match fix {
+        Some(fix) => d.with_fix(fix),
+        None => d,
+    }
 }
 
 /// What the grammar would have accepted where `error` starts, from the parse

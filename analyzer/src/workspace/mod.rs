@@ -61,6 +61,12 @@ pub struct Workspace {
     systems: BTreeMap<String, ControllerInfo>,
     /// The controller as the project configuration describes it.
     controller: ControllerOverride,
+    /// Modules that join every task whatever their place says (a
+    /// project's extra paths): see [`Workspace::add_extra_unit`].
+    extras: Vec<Arc<Unit>>,
+    /// Configuration that applies to every task whatever its place says
+    /// (a project's extra paths), in the order given.
+    extra_configs: Vec<Config>,
 }
 
 struct Checked {
@@ -185,6 +191,36 @@ impl Workspace {
         }
     }
 
+    /// Makes `unit` a member of every task besides the modules their
+    /// places group there: a module of a project's extra paths (a library
+    /// the program's tasks load from elsewhere). The unit keeps its own
+    /// path, by which related locations name it, and it is not one of the
+    /// files [`Workspace::checks`] and [`Workspace::diagnostics`] check.
+    pub fn add_extra_unit(&mut self, unit: Arc<Unit>) {
+        self.extras.push(unit);
+        self.forget_all_tasks();
+        self.controllers.clear();
+    }
+
+    /// Makes the configuration `text` (`EIO.cfg` signals, `MOC.cfg`
+    /// mechanical units) apply to every task besides what applies by place
+    /// (a project's extra paths). A task's own configuration wins where
+    /// both declare a signal.
+    pub fn add_extra_config(&mut self, text: &str) {
+        self.extra_configs.push(parse_config(text));
+        self.forget_all_tasks();
+    }
+
+    /// Forgets the modules and configuration of the extra paths.
+    pub fn clear_extras(&mut self) {
+        if !self.extras.is_empty() || !self.extra_configs.is_empty() {
+            self.extras.clear();
+            self.extra_configs.clear();
+            self.forget_all_tasks();
+            self.controllers.clear();
+        }
+    }
+
     pub fn remove_file(&mut self, path: &str) {
         if self.units.remove(path).is_some() {
             let key = self.task_key(path);
@@ -276,6 +312,13 @@ impl Workspace {
         }
     }
 
+    /// Is `unit` the workspace's file of its path (not an extra unit)?
+    fn is_own(&self, unit: &Arc<Unit>) -> bool {
+        self.units
+            .get(&unit.path)
+            .is_some_and(|u| Arc::ptr_eq(u, unit))
+    }
+
     pub fn unit(&self, path: &str) -> Option<&Arc<Unit>> {
         self.units.get(path)
     }
@@ -324,6 +367,7 @@ impl Workspace {
             .units
             .values()
             .filter(|u| self.task_key(&u.path) == key)
+            .chain(&self.extras)
             .cloned()
             .collect();
         self.build_task(key, units)
@@ -331,9 +375,11 @@ impl Workspace {
 
     /// Builds and caches the group task `key` of `units`.
     fn build_task(&mut self, key: String, units: Vec<Arc<Unit>>) -> Arc<Task> {
-        let grouping = units
-            .first()
-            .map_or(Grouping::Folder, |u| self.locate(&u.path).1);
+        let grouping = match units.first() {
+            Some(u) if self.units.contains_key(&u.path) => self.locate(&u.path).1,
+            // Only extra units: nothing places the task.
+            _ => Grouping::Folder,
+        };
         let mut task = self.make_task(key.clone(), units, grouping);
         task.clashing = alternatives::clashes(&task.units, grouping);
         let task = Arc::new(task);
@@ -378,7 +424,10 @@ impl Workspace {
                 Some(c) => c.clone(),
                 None => {
                     let (map, hash) = shared_persistents(
-                        self.units.values().filter(|u| under(&u.path, controller)),
+                        self.units
+                            .values()
+                            .filter(|u| under(&u.path, controller))
+                            .chain(&self.extras),
                     );
                     let c = (Arc::new(map), hash);
                     self.controllers.insert(controller.to_owned(), c.clone());
@@ -397,6 +446,10 @@ impl Workspace {
         let mut out = Vec::with_capacity(self.units.len());
         for group in self.tasks() {
             for (i, unit) in group.units.iter().enumerate() {
+                if !self.is_own(unit) {
+                    // An extra unit, not one of the files checked.
+                    continue;
+                }
                 if group.owns(i) {
                     out.push((group.clone(), unit.clone()));
                 } else {
@@ -419,6 +472,9 @@ impl Workspace {
                 .entry(self.task_key(&unit.path))
                 .or_default()
                 .push(unit.clone());
+        }
+        for units in groups.values_mut() {
+            units.extend(self.extras.iter().cloned());
         }
         groups
             .into_iter()
@@ -468,15 +524,18 @@ impl Workspace {
     fn config_for(&self, key: &str) -> (Option<Signals>, HashSet<String>) {
         let mut signals: Option<Signals> = None;
         let mut mecunits = HashSet::new();
-        for (path, config) in &self.configs {
-            if key.starts_with(config_root(path)) {
-                if let Some(s) = &config.signals {
-                    signals
-                        .get_or_insert_with(Signals::new)
-                        .extend(s.iter().map(|(k, v)| (k.clone(), *v)));
-                }
-                mecunits.extend(config.mecunits.iter().cloned());
+        let by_place = self
+            .configs
+            .iter()
+            .filter(|(path, _)| key.starts_with(config_root(path)))
+            .map(|(_, config)| config);
+        for config in self.extra_configs.iter().chain(by_place) {
+            if let Some(s) = &config.signals {
+                signals
+                    .get_or_insert_with(Signals::new)
+                    .extend(s.iter().map(|(k, v)| (k.clone(), *v)));
             }
+            mecunits.extend(config.mecunits.iter().cloned());
         }
         (signals, mecunits)
     }
@@ -567,6 +626,11 @@ fn under(path: &str, folder: &str) -> bool {
 
 /// A path with `/` separators, `.` and `..` resolved, folded.
 fn normalize(path: &str) -> String {
+    resolve_dots(path).to_ascii_lowercase()
+}
+
+/// A path with `/` separators, `.` and `..` resolved.
+fn resolve_dots(path: &str) -> String {
     let mut parts: Vec<&str> = Vec::new();
     let unified = path.replace('\\', "/");
     for p in unified.split('/') {
@@ -578,13 +642,24 @@ fn normalize(path: &str) -> String {
             _ => parts.push(p),
         }
     }
-    parts.join("/").to_ascii_lowercase()
+    parts.join("/")
 }
 
 /// The folded paths of the modules a program file lists, resolved against
-/// the program file's folder. Reads `<Module>...</Module>` elements (any
-/// case); anything else in the XML is ignored.
+/// the program file's folder.
 fn parse_program(path: &str, xml: &str) -> Vec<String> {
+    program_modules(path, xml)
+        .iter()
+        .map(|m| m.to_ascii_lowercase())
+        .collect()
+}
+
+/// The paths of the modules a program file (`.pgf`) lists, resolved
+/// against the program file's folder (with `/` separators, in the case the
+/// program writes them), for a loader to read them. Reads
+/// `<Module>...</Module>` elements (any case); anything else in the XML is
+/// ignored.
+pub fn program_modules(path: &str, xml: &str) -> Vec<String> {
     let dir = path
         .replace('\\', "/")
         .rsplit_once('/')
@@ -604,7 +679,7 @@ fn parse_program(path: &str, xml: &str) -> Vec<String> {
             } else {
                 format!("{dir}/{name}")
             };
-            out.push(normalize(&full));
+            out.push(resolve_dots(&full));
         }
         at = start + len;
     }

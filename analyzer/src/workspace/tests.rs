@@ -164,3 +164,36 @@ fn the_task_ids_of_a_backup_come_from_sys_cfg() {
     assert_eq!(after.len(), 1, "{after:?}");
     assert!(after[0].message.contains("T_GLUEId"), "{after:?}");
 }
+
+/// A module and a configuration of the extra paths are seen by every task
+/// under their own path and are not among the files checked.
+#[test]
+fn extra_modules_and_configuration_join_every_task() {
+    let mut ws = Workspace::new();
+    let main = "MODULE Main\n  PROC main()\n    helper;\n    SetDO do1, 1;\n  ENDPROC\nENDMODULE\n";
+    ws.set_file("p/a/Main.mod", main.into());
+    ws.set_file("p/b/Main.mod", main.into());
+    let codes = |ws: &mut Workspace, path: &str| -> Vec<String> {
+        ws.diagnostics(path)
+            .iter()
+            .map(|d| d.rule.code.to_owned())
+            .collect()
+    };
+    assert!(!codes(&mut ws, "p/a/Main.mod").is_empty());
+    let lib = Unit::new(
+        "lib/Lib.mod".to_owned(),
+        "MODULE Lib\n  PROC helper()\n  ENDPROC\nENDMODULE\n".to_owned(),
+        None,
+    );
+    ws.add_extra_unit(Arc::new(lib));
+    ws.add_extra_config("EIO_SIGNAL:\n  -Name \"do1\" -SignalType \"DO\"\n");
+    assert!(codes(&mut ws, "p/a/Main.mod").is_empty());
+    assert!(codes(&mut ws, "p/b/Main.mod").is_empty());
+    let task = ws.task_of("p/a/Main.mod");
+    assert!(task.units.iter().any(|u| u.path == "lib/Lib.mod"));
+    let checked: Vec<String> = ws.checks().iter().map(|(_, u)| u.path.clone()).collect();
+    assert_eq!(checked, ["p/a/Main.mod", "p/b/Main.mod"]);
+    assert!(ws.unit("lib/Lib.mod").is_none());
+    ws.clear_extras();
+    assert!(!codes(&mut ws, "p/b/Main.mod").is_empty());
+}

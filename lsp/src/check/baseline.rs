@@ -22,7 +22,7 @@ use serde::{Deserialize, Serialize};
 
 use super::Checked;
 use super::settings::is_syntax_rule;
-use crate::source::SourceFile;
+use crate::project::source::SourceFile;
 
 /// The format's version, written in the file.
 const VERSION: u32 = 1;
@@ -190,13 +190,13 @@ fn folder_of(path: &Path) -> PathBuf {
         Some(d) if !d.as_os_str().is_empty() => d,
         _ => Path::new("."),
     };
-    PathBuf::from(crate::source::analyzer_path(dir))
+    PathBuf::from(crate::project::source::analyzer_path(dir))
 }
 
 /// A file's path relative to `dir`, with `/` separators (absolute when it
 /// is not below `dir`).
 fn relative(dir: &Path, file: &Path) -> String {
-    let real = PathBuf::from(crate::source::analyzer_path(file));
+    let real = PathBuf::from(crate::project::source::analyzer_path(file));
     let rel = real.strip_prefix(dir).unwrap_or(&real);
     rel.to_string_lossy().replace('\\', "/")
 }

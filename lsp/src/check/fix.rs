@@ -11,7 +11,7 @@ pub fn apply_safe_fixes(text: &str, diagnostics: &[Diagnostic]) -> Option<(Strin
     let mut fixes: Vec<Vec<&Edit>> = diagnostics
         .iter()
         .filter_map(|d| d.fix.as_ref())
-        .filter(|f| f.safe && !f.edits.is_empty())
+        .filter(|f| f.is_safe() && !f.edits.is_empty())
         .map(|f| {
             let mut edits: Vec<&Edit> = f.edits.iter().collect();
             edits.sort_by_key(|e| (e.range.start, e.range.end));
@@ -67,7 +67,7 @@ pub fn apply_safe_fixes(text: &str, diagnostics: &[Diagnostic]) -> Option<(Strin
 #[cfg(test)]
 mod tests {
     use super::*;
-    use rapid_analyzer::diagnostic::Fix;
+    use rapid_analyzer::diagnostic::{Applicability, Fix};
     use rapid_analyzer::rules::find;
 
     fn diag(safe: bool, edits: &[(usize, usize, &str)]) -> Diagnostic {
@@ -81,7 +81,12 @@ mod tests {
                     replacement: r.into(),
                 })
                 .collect(),
-            safe,
+            applicability: if safe {
+                Applicability::Safe
+            } else {
+                Applicability::Unsafe
+            },
+            preferred: safe,
         })
     }
 

@@ -42,7 +42,7 @@ pub fn locate<'a>(checked: &Checked, d: &'a Diagnostic) -> Located<'a> {
         code: d.rule.code,
         name: d.rule.name,
         message: &d.message,
-        fixable: d.fix.as_ref().is_some_and(|f| f.safe),
+        fixable: d.fix.as_ref().is_some_and(|f| f.is_safe()),
     }
 }
 
@@ -91,7 +91,7 @@ pub fn statistics(out: &mut impl Write, report: &Report, as_json: bool) -> io::R
     for (_, d) in all(report) {
         let entry = counts.entry(d.rule.code).or_insert((0, d.rule, 0));
         entry.0 += 1;
-        if d.fix.as_ref().is_some_and(|f| f.safe) {
+        if d.fix.as_ref().is_some_and(|f| f.is_safe()) {
             entry.2 += 1;
         }
     }
@@ -131,7 +131,7 @@ pub fn human(out: &mut impl Write, report: &Report, styled: bool) -> io::Result<
     let by_path = checked_by_path(report);
     for (c, d) in all(report) {
         counts[d.severity as usize] += 1;
-        fixable += usize::from(d.fix.as_ref().is_some_and(|f| f.safe));
+        fixable += usize::from(d.fix.as_ref().is_some_and(|f| f.is_safe()));
         let rendered = render_one(&renderer, c, d, &related_note(&by_path, c, d));
         writeln!(out, "{rendered}\n")?;
     }

@@ -6,12 +6,10 @@
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-use rapid_analyzer::task::{Task, Unit, task_key};
-use rapid_analyzer::workspace::Workspace;
+use rapid_analyzer::task::{Task, Unit};
 use rapid_runtime::{Program, SignalChange, SignalKind};
 
-use crate::check::discover;
-use crate::source::SourceFile;
+use crate::project::Environment;
 
 /// The tasks found under `paths` (each named file's task whole: the other
 /// modules of its folder or backup task are loaded with it). Files that
@@ -22,53 +20,24 @@ pub struct Found {
 }
 
 pub fn tasks(paths: &[PathBuf]) -> Result<Found, String> {
-    let mut roots = Vec::new();
-    let mut named = Vec::new();
-    for p in paths {
-        let meta = std::fs::metadata(p).map_err(|e| format!("{}: {e}", p.display()))?;
-        if meta.is_file() {
-            let key = task_key(&unit_path(p));
-            roots.push(if key.is_empty() {
-                PathBuf::from(".")
-            } else {
-                PathBuf::from(key)
-            });
-            named.push(p.clone());
-        } else {
-            roots.push(p.clone());
-        }
-    }
-    let found = discover(&roots);
-    let mut files = found.files;
-    for n in &named {
-        if !files.contains(n) {
-            files.push(n.clone());
-        }
-    }
-    let mut workspace = Workspace::new();
-    for pgf in &found.programs {
-        if let Ok(bytes) = std::fs::read(pgf) {
-            workspace.set_program(&unit_path(pgf), &String::from_utf8_lossy(&bytes));
-        }
-    }
-    for cfg in &found.configs {
-        if let Ok(bytes) = std::fs::read(cfg) {
-            workspace.set_config(&unit_path(cfg), &String::from_utf8_lossy(&bytes));
-        }
-    }
-    let mut skipped = Vec::new();
-    for file in &files {
-        match SourceFile::read(file) {
-            Ok(source) => workspace.set_file(&unit_path(file), source.text),
-            Err(why) => skipped.push((file.clone(), why.to_string())),
-        }
-    }
-    let mut tasks = if named.is_empty() {
+    let env = &crate::project::DiskAsNamed;
+    let around = crate::project::load_around(env, paths)
+        .map_err(|(p, e)| format!("{}: {e}", p.display()))?;
+    let mut workspace = around.loaded.workspace;
+    let skipped = around
+        .loaded
+        .read
+        .iter()
+        .zip(&around.files)
+        .filter_map(|(r, file)| r.as_ref().err().map(|why| (file.clone(), why.to_string())))
+        .collect();
+    let mut tasks = if around.named.is_empty() {
         workspace.tasks()
     } else {
-        let mut t: Vec<Arc<Task>> = named
+        let mut t: Vec<Arc<Task>> = around
+            .named
             .iter()
-            .map(|n| workspace.task_of(&unit_path(n)))
+            .map(|n| workspace.task_of(&env.name(n)))
             .collect();
         t.dedup_by(|a, b| a.key == b.key);
         t
@@ -182,10 +151,6 @@ pub fn program(task: Arc<Task>, sets: &[SignalChange]) -> Arc<Program> {
         }
     }
     Arc::new(Program::new(task, &extra))
-}
-
-fn unit_path(path: &Path) -> String {
-    path.to_string_lossy().into_owned()
 }
 
 #[cfg(test)]

@@ -8,7 +8,7 @@
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-use crate::check::context::{TaskFolders, discover_folders, task_folders};
+use crate::project::context::{TaskFolders, discover_folders, task_folders};
 
 use super::backend::Backend;
 use super::state::State;

@@ -15,16 +15,24 @@
 //!   that is no longer the latest for its document is dropped.
 
 mod backend;
+mod capabilities;
+mod configure;
 mod diagnostics;
 mod document;
+mod handlers;
 mod implicit;
+mod indexing;
+mod lifecycle;
 mod position;
+mod publish;
 mod requests;
 mod settings;
 mod state;
+mod sync;
 #[cfg(test)]
 mod tests;
 mod transport;
+mod watch;
 mod workspace_report;
 
 use std::process::ExitCode;

@@ -584,8 +584,8 @@ pub fn inlay_hints(snap: &Snapshot, range: lsp::Range) -> Vec<lsp::InlayHint> {
     .collect()
 }
 
-/// Quick fixes: the fixes the analyzer's diagnostics carry, then the
-/// `ide` code actions, for the diagnostics overlapping `range`.
+/// Quick fixes: the fixes the analyzer's diagnostics overlapping `range`
+/// carry ([`ide::code_actions`]).
 pub fn code_actions(snap: &Snapshot, range: lsp::Range) -> Vec<CodeActionOrCommand> {
     let map = snap.map();
     let span = map.offset_range(range);
@@ -603,34 +603,22 @@ pub fn code_actions(snap: &Snapshot, range: lsp::Range) -> Vec<CodeActionOrComma
             &|path, range| snap.location(path, range),
         )
     };
-    let mut out: Vec<lsp::CodeAction> = Vec::new();
-    for d in &here {
-        if let Some(fix) = &d.fix {
-            out.push(code_action(
+    ide::code_actions(&snap.task, snap.unit_idx, span, &here)
+        .into_iter()
+        .map(|a| {
+            let diags = a
+                .diagnostic
+                .and_then(|i| here.get(i))
+                .map(converted)
+                .unwrap_or_default();
+            CodeActionOrCommand::CodeAction(code_action(
                 snap,
-                fix.title.clone(),
-                &fix.edits,
-                converted(d),
-                fix.safe,
-            ));
-        }
-    }
-    for a in ide::code_actions(&snap.task, snap.unit_idx, span, &here) {
-        let diags = a
-            .diagnostic
-            .and_then(|i| here.get(i))
-            .map(converted)
-            .unwrap_or_default();
-        let action = code_action(snap, a.title, &a.edits, diags, a.preferred);
-        if !out
-            .iter()
-            .any(|o| o.title == action.title && o.edit == action.edit)
-        {
-            out.push(action);
-        }
-    }
-    out.into_iter()
-        .map(CodeActionOrCommand::CodeAction)
+                a.title,
+                &a.edits,
+                diags,
+                a.preferred,
+            ))
+        })
         .collect()
 }
 

@@ -8,7 +8,7 @@ use std::sync::{Arc, Mutex, MutexGuard, PoisonError};
 
 use rapid_analyzer::check::StmtCache;
 use rapid_analyzer::diagnostic::Diagnostic;
-use rapid_analyzer::task::{Task, Unit, task_key};
+use rapid_analyzer::task::{Task, Unit};
 use rapid_analyzer::text::LineIndex;
 use rapid_analyzer::workspace::{Workspace, diagnostics_cached, diagnostics_of};
 use tower_lsp_server::ls_types::{Location, Position, Uri};
@@ -16,12 +16,12 @@ use tower_lsp_server::ls_types::{Location, Position, Uri};
 use super::document::Document;
 use super::position::{LineMap, PosEncoding};
 use super::settings::Settings;
-use crate::source::{SourceFile, Unreadable};
+use crate::project::source::{SourceFile, Unreadable};
 
-/// Files larger than this are kept as text but not analysed: parsing tens
-/// of megabytes would stall every request behind it, and no RAPID module
-/// is that large.
-pub const MAX_ANALYSED_BYTES: usize = 8 * 1024 * 1024;
+/// Files larger than the project's limit ([`crate::project::MAX_FILE_BYTES`])
+/// are kept as text but not analysed: parsing tens of megabytes would stall
+/// every request behind it, and no RAPID module is that large.
+pub const MAX_ANALYSED_BYTES: usize = crate::project::MAX_FILE_BYTES as usize;
 
 /// What the client can do, as far as the server cares.
 #[derive(Clone, Copy, Debug, Default)]
@@ -228,8 +228,9 @@ impl Snapshot {
 /// The diagnostics of `unit` without checking it: its syntax diagnostics,
 /// and the other diagnostics of `old_unit` (an older text of the same file)
 /// moved past the edit between the two texts; those touching the edited
-/// span are dropped, and so are their fixes (their edits were for the old
-/// text).
+/// span are dropped. A fix moves with its diagnostic when none of its
+/// edits touches the edited span, and is dropped otherwise (the next check
+/// builds it again).
 pub fn carry_over(old_unit: &Unit, old: &[Diagnostic], unit: &Unit) -> Vec<Diagnostic> {
     let (old_text, new_text) = (old_unit.text.as_bytes(), unit.text.as_bytes());
     let prefix = old_text
@@ -276,7 +277,7 @@ pub fn carry_over(old_unit: &Unit, old: &[Diagnostic], unit: &Unit) -> Vec<Diagn
                 None => false,
             }
         });
-        d.fix = None;
+        d.fix = d.fix.as_ref().and_then(|f| f.shifted(moved));
         out.push(d);
     }
     out.sort_by_key(|d| (d.range.start, d.range.end));
@@ -415,12 +416,14 @@ impl State {
         true
     }
 
-    /// Open documents of the task of `path`, other than `path`.
+    /// Open documents of the task of `path`, other than `path`, grouped as
+    /// the workspace groups them (a `.pgf` program's modules may be in
+    /// several folders).
     pub fn open_in_task(&self, path: &str) -> Vec<String> {
-        let key = task_key(path);
+        let key = self.ws.task_key(path);
         self.docs
             .keys()
-            .filter(|p| *p != path && task_key(p) == key)
+            .filter(|p| *p != path && self.ws.task_key(p) == key)
             .cloned()
             .collect()
     }
@@ -430,7 +433,7 @@ impl State {
     pub fn load_from_disk(&mut self, path: &Path) -> Result<bool, Unreadable> {
         let name = path.to_string_lossy().into_owned();
         if is_eio_cfg(&name) {
-            let bytes = crate::source::read_regular(path).map_err(Unreadable::Io)?;
+            let bytes = crate::project::source::read_regular(path).map_err(Unreadable::Io)?;
             self.ws.set_config(&name, &String::from_utf8_lossy(&bytes));
             self.config_generation += 1;
             return Ok(true);
@@ -513,5 +516,60 @@ mod tests {
             "{codes:?} {fresh:?}"
         );
         assert_eq!(fresh.len(), codes.len() + 2, "`twice` and `x`: {fresh:?}");
+    }
+
+    /// (name at the diagnostic, its fix's edits applied to `text`).
+    fn fixed(text: &str, d: &[Diagnostic]) -> Vec<(String, Option<String>)> {
+        d.iter()
+            .map(|d| {
+                let fixed = d.fix.as_ref().map(|f| {
+                    let mut t = text.to_owned();
+                    let mut edits = f.edits.clone();
+                    edits.sort_by_key(|e| std::cmp::Reverse(e.range.start));
+                    for e in edits {
+                        t.replace_range(e.range, &e.replacement);
+                    }
+                    t
+                });
+                (text[d.range.clone()].to_owned(), fixed)
+            })
+            .collect()
+    }
+
+    #[test]
+    fn fixes_move_with_carried_diagnostics_or_go() {
+        let before = "MODULE M\n  PROC p()\n    VAR num spare; ! was\n    one := 1;\n  ENDPROC\n  PROC q()\n    VAR num later;\n    p;\n  ENDPROC\nENDMODULE\n";
+        // The comment after `spare` edited: its diagnostic stays, but its
+        // fix removed that line.
+        let after = before.replace("was", "is now");
+        let after = after.as_str();
+        let (old_unit, old) = diagnostics(before);
+        assert_eq!(old.iter().filter(|d| d.fix.is_some()).count(), 3, "{old:?}");
+        let unit = Unit::new("t/A.mod".into(), after.to_owned(), None);
+        let carried = fixed(after, &carry_over(&old_unit, &old, &unit));
+        let fresh = fixed(after, &diagnostics(after).1);
+        assert_eq!(carried.len(), 3, "{carried:?}");
+        assert_eq!(fresh.len(), 3, "{fresh:?}");
+        // `spare`'s fix touched the edit: gone, while a check makes it anew.
+        assert_eq!(carried[0].0, "spare");
+        assert_eq!(carried[0].1, None);
+        assert!(fresh[0].1.is_some(), "{fresh:?}");
+        // The others give what a check gives: `one`'s fix edits the top of
+        // the routine (before the edit, so it stays), `later`'s moves.
+        assert_eq!(carried[1..], fresh[1..]);
+        assert!(
+            carried[1]
+                .1
+                .as_deref()
+                .is_some_and(|t| t.contains("  PROC p()\n    VAR num one;\n    VAR num spare;")),
+            "{carried:?}"
+        );
+        assert!(
+            carried[2]
+                .1
+                .as_deref()
+                .is_some_and(|t| t.contains("  PROC q()\n    p;\n")),
+            "{carried:?}"
+        );
     }
 }

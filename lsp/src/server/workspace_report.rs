@@ -24,7 +24,8 @@ use tower_lsp_server::ls_types::{
     WorkspaceUnchangedDocumentDiagnosticReport,
 };
 
-use super::backend::{Backend, convert_diagnostics};
+use super::backend::Backend;
+use super::publish::convert_diagnostics;
 use super::state::{Shared, Snapshot, State, make_unit, uri_of};
 
 /// The last report of a file that is not open.

@@ -10,7 +10,7 @@ use std::collections::BTreeMap;
 use super::fixture;
 use crate::ide::resolve::{DefKey, is_name, resolve};
 use crate::ide::{document_highlights, references, rename};
-use crate::syntax_util::walk;
+use crate::syntax_util::walk_pruned;
 use crate::task::Task;
 
 const FIXTURE: &str = "==> a.mod
@@ -69,12 +69,13 @@ ENDMODULE
 fn resolved_one_by_one(task: &Task) -> Vec<(usize, std::ops::Range<usize>, DefKey, bool)> {
     let mut out = Vec::new();
     for (ui, u) in task.units.iter().enumerate() {
-        walk(u.tree().root_node(), &mut |n| {
+        walk_pruned(u.tree().root_node(), &mut |n| {
             if is_name(n)
                 && let Some(d) = resolve(task, ui, n)
             {
                 out.push((ui, n.byte_range(), d.key(task), written(n)));
             }
+            true
         });
     }
     out

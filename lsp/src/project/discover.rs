@@ -1,9 +1,11 @@
-//! Finding the RAPID files under the paths given on the command line.
+//! Finding the RAPID files, programs and configuration under some paths.
 
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use rapid_analyzer::text::{is_controller_config_name, is_program_file_name, is_rapid_file_name};
+
+use super::{Disk, Environment, Kind, Walked};
 
 /// The files found, and the problems met on the way.
 #[derive(Debug, Default)]
@@ -47,36 +49,37 @@ pub fn discover(paths: &[PathBuf]) -> Discovery {
     discover_with(paths, Arc::new(|_, _| false))
 }
 
-/// Walks `paths` (folders recursively, honouring `.gitignore`, `.ignore`
-/// and git's global excludes; hidden folders are walked too, since controller
-/// backups have none worth skipping) and collects RAPID files. A file named
+/// Walks `paths` on the disk: [`discover_in`] of [`Disk`].
+pub fn discover_with(paths: &[PathBuf], excluded: Excluder) -> Discovery {
+    discover_in(&Disk, paths, excluded, None)
+}
+
+/// Walks `paths` in `env` (folders recursively, honouring `.gitignore`,
+/// `.ignore` and git's global excludes on the disk; hidden folders are
+/// walked too, since controller backups have none worth skipping) and
+/// collects RAPID files, configuration and programs. A file named
 /// explicitly is taken whatever its extension. `excluded(path, is_folder)`
 /// says what to leave out, named explicitly or not (so a pre-commit hook,
 /// which names files, honours the exclude list too).
-pub fn discover_with(paths: &[PathBuf], excluded: Excluder) -> Discovery {
-    discover_to_depth(paths, excluded, None)
-}
-
-/// [`discover_with`], walking folders at most `max_depth` levels down
-/// (`Some(1)`: the files of the folders themselves).
-pub fn discover_to_depth(
+pub fn discover_in(
+    env: &dyn Environment,
     paths: &[PathBuf],
     excluded: Excluder,
     max_depth: Option<usize>,
 ) -> Discovery {
     let mut out = Discovery::default();
     for root in paths {
-        match std::fs::metadata(root) {
+        match env.kind(root) {
             Err(e) => {
                 out.errors.push((root.clone(), e.to_string()));
                 continue;
             }
-            Ok(meta) if meta.is_file() => {
+            Ok(Kind::File(_)) => {
                 if !excluded(root, false) {
                     let name = root.file_name().unwrap_or_default().to_string_lossy();
                     if is_controller_config_name(&name) {
                         out.configs.push(root.clone());
-                    } else if is_program_file_name(&name) && is_xml(root) {
+                    } else if is_program_file_name(&name) && is_xml(env, root) {
                         out.programs.push(root.clone());
                     } else {
                         out.files.push(root.clone());
@@ -84,76 +87,46 @@ pub fn discover_to_depth(
                 }
                 continue;
             }
-            Ok(meta) if !meta.is_dir() => {
+            Ok(Kind::Other(what)) => {
                 if !excluded(root, false) {
-                    out.warnings
-                        .push((root.clone(), not_a_file(&meta.file_type())));
+                    out.warnings.push((root.clone(), not_a_file(what)));
                 }
                 continue;
             }
-            Ok(_) => {}
+            Ok(Kind::Folder) => {}
         }
         if excluded(root, true) {
             continue;
         }
-        let excluded = excluded.clone();
-        let walker = ignore::WalkBuilder::new(root)
-            .hidden(false)
-            .follow_links(true)
-            .require_git(false)
-            .max_depth(max_depth)
-            .filter_entry(move |entry| {
-                entry.file_name() != ".git"
-                    && !excluded(entry.path(), entry.file_type().is_some_and(|t| t.is_dir()))
-            })
-            .build();
-        for entry in walker {
-            match entry {
-                Ok(entry) => {
-                    let is_file = entry.file_type().is_some_and(|t| t.is_file());
-                    let name = entry.file_name().to_string_lossy();
+        for walked in env.walk(root, max_depth, &excluded) {
+            match walked {
+                Walked::Entry(path, kind) => {
+                    let name = path.file_name().unwrap_or_default().to_string_lossy();
+                    let is_file = matches!(kind, Kind::File(_));
                     if is_file && is_rapid_file_name(&name) {
-                        out.files.push(entry.into_path());
+                        out.files.push(path);
                     } else if is_file && is_controller_config_name(&name) {
-                        out.configs.push(entry.into_path());
-                    } else if let Some(kind) =
-                        entry.file_type().filter(|t| !t.is_file() && !t.is_dir())
+                        out.configs.push(path);
+                    } else if let Kind::Other(what) = kind
                         && (is_rapid_file_name(&name) || is_controller_config_name(&name))
                     {
                         // A FIFO, a socket or a device (or a link to one)
                         // named like a module: never read (a FIFO would
                         // block), and said.
-                        out.warnings.push((entry.into_path(), not_a_file(&kind)));
+                        out.warnings.push((path, not_a_file(what)));
                     } else if is_file && is_program_file_name(&name) {
                         // Some tools write RAPID text into `.pgf` files.
-                        if is_xml(entry.path()) {
-                            out.programs.push(entry.into_path());
+                        if is_xml(env, &path) {
+                            out.programs.push(path);
                         } else {
-                            out.files.push(entry.into_path());
+                            out.files.push(path);
                         }
                     }
                 }
-                Err(e) => {
-                    let path = error_path(&e).unwrap_or(root).to_owned();
-                    if is_loop(&e) {
-                        out.warnings.push((
-                            path,
-                            "a link leads back to a folder above it; the folder is checked once"
-                                .to_owned(),
-                        ));
-                    } else if is_broken_link(&path) {
-                        // A dangling link matters only if it was meant to be a module.
-                        let name = path.file_name().unwrap_or_default().to_string_lossy();
-                        if is_rapid_file_name(&name) {
-                            out.errors.push((
-                                path,
-                                "a broken symbolic link (its target is missing)".to_owned(),
-                            ));
-                        }
-                    } else {
-                        out.errors.push((path, io_message(&e)));
-                    }
+                Walked::Error(path, why) => {
+                    out.errors.push((path.unwrap_or_else(|| root.clone()), why));
                 }
+                Walked::Warning(path, why) => out.warnings.push((path, why)),
             }
         }
     }
@@ -166,22 +139,68 @@ pub fn discover_to_depth(
     out
 }
 
+/// The entries below `root` on the disk, walked with `ignore`.
+pub(super) fn walk_disk(root: &Path, max_depth: Option<usize>, excluded: &Excluder) -> Vec<Walked> {
+    let excluded = excluded.clone();
+    let walker = ignore::WalkBuilder::new(root)
+        .hidden(false)
+        .follow_links(true)
+        .require_git(false)
+        .max_depth(max_depth)
+        .filter_entry(move |entry| {
+            entry.file_name() != ".git"
+                && !excluded(entry.path(), entry.file_type().is_some_and(|t| t.is_dir()))
+        })
+        .build();
+    let mut out = Vec::new();
+    for entry in walker {
+        match entry {
+            Ok(entry) => {
+                let kind = match entry.file_type() {
+                    Some(t) if t.is_file() => Kind::File(0),
+                    Some(t) if t.is_dir() => Kind::Folder,
+                    Some(t) => Kind::Other(super::source::kind_of(&t)),
+                    None => continue,
+                };
+                out.push(Walked::Entry(entry.into_path(), kind));
+            }
+            Err(e) => {
+                let path = error_path(&e).map(Path::to_owned);
+                if is_loop(&e) {
+                    out.push(Walked::Warning(
+                        path.unwrap_or_else(|| root.to_owned()),
+                        "a link leads back to a folder above it; the folder is checked once"
+                            .to_owned(),
+                    ));
+                } else if is_broken_link(path.as_deref().unwrap_or(root)) {
+                    // A dangling link matters only if it was meant to be a module.
+                    let path = path.unwrap_or_else(|| root.to_owned());
+                    let name = path.file_name().unwrap_or_default().to_string_lossy();
+                    if is_rapid_file_name(&name) {
+                        out.push(Walked::Error(
+                            Some(path),
+                            "a broken symbolic link (its target is missing)".to_owned(),
+                        ));
+                    }
+                } else {
+                    out.push(Walked::Error(path, io_message(&e)));
+                }
+            }
+        }
+    }
+    out
+}
+
 /// Why an entry named like a RAPID file is skipped.
-fn not_a_file(kind: &std::fs::FileType) -> String {
-    format!(
-        "skipped: {}, not a file that can be read",
-        crate::source::kind_of(kind)
-    )
+fn not_a_file(what: &str) -> String {
+    format!("skipped: {what}, not a file that can be read")
 }
 
 /// Does the file start like XML (after a byte-order mark and blanks)? A
 /// `.pgf` program file does; RAPID text written into a `.pgf` does not.
-fn is_xml(path: &Path) -> bool {
-    use std::io::Read;
+fn is_xml(env: &dyn Environment, path: &Path) -> bool {
     let mut head = [0u8; 64];
-    let n = std::fs::File::open(path)
-        .and_then(|mut f| f.read(&mut head))
-        .unwrap_or(0);
+    let n = env.read_head(path, &mut head).unwrap_or(0);
     let head = head.get(..n).unwrap_or_default();
     let head = head.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(head);
     head.iter()

@@ -1,0 +1,225 @@
+//! "Did you mean": the visible name of the same kind nearest to an
+//! unresolved one, by edit distance.
+
+use super::Cx;
+use crate::names::fold;
+use crate::task::{Item, Task};
+
+impl Cx<'_> {
+    /// A visible name of the same kind within a small edit distance of
+    /// `name`: the first closest of the routine's data and parameters, then
+    /// the module's, then the task's globals. A suggestion of another kind
+    /// (a data type for a variable) would mislead more than help.
+    pub(super) fn close_match(&mut self, name: &str, kind: Kind) -> Option<String> {
+        let key = fold(name);
+        let limit = if key.len() <= 4 { 1 } else { 2 };
+        let mut best = None;
+        if kind == Kind::Data {
+            best = self.routine.as_ref().and_then(|r| {
+                let locals = r.locals.values().map(|d| d.name.as_str());
+                closest(
+                    &key,
+                    limit,
+                    locals.chain(r.params.values().map(|p| p.name.as_str())),
+                )
+            });
+        }
+        // The module's part does not depend on the routine: remembered per
+        // module (a module may declare thousands of data).
+        if let Some((mi, m)) = self.module {
+            let memo_key = (mi, kind, key.clone());
+            let found = match self.module_close_memo.get(&memo_key) {
+                Some(found) => found.clone(),
+                None => {
+                    let found = match kind {
+                        Kind::Data => closest(&key, limit, m.data.iter().map(|d| d.name.as_str())),
+                        Kind::Routine => {
+                            closest(&key, limit, m.routines.iter().map(|r| r.name.as_str()))
+                        }
+                        Kind::Type => closest(
+                            &key,
+                            limit,
+                            m.records
+                                .iter()
+                                .map(|r| r.name.as_str())
+                                .chain(m.aliases.iter().map(|a| a.name.as_str())),
+                        ),
+                    };
+                    self.module_close_memo.insert(memo_key, found.clone());
+                    found
+                }
+            };
+            keep_nearer(&mut best, found);
+        }
+        keep_nearer(&mut best, close_global(self.task, &key, limit, kind));
+        best.map(|(_, n)| n)
+    }
+}
+
+/// The first of the names nearest to `key` (folded), with its distance:
+/// at least one edit and at most `limit`.
+fn closest<'n>(
+    key: &str,
+    limit: usize,
+    names: impl IntoIterator<Item = &'n str>,
+) -> Option<(usize, String)> {
+    let mut best: Option<(usize, &str)> = None;
+    for cand in names {
+        let d = edit_distance_folded(key, cand);
+        if d > 0 && d <= limit && best.is_none_or(|(bd, _)| d < bd) {
+            best = Some((d, cand));
+        }
+    }
+    best.map(|(d, n)| (d, n.to_owned()))
+}
+
+/// Puts `other` in `best` if it is strictly nearer.
+fn keep_nearer(best: &mut Option<(usize, String)>, other: Option<(usize, String)>) {
+    if let Some((d, n)) = other
+        && best.as_ref().is_none_or(|(bd, _)| d < *bd)
+    {
+        *best = Some((d, n));
+    }
+}
+
+/// The task's global name closest to `key` within `limit` edits, memoised
+/// per task (the same unresolved name tends to recur in many places).
+fn close_global(task: &Task, key: &str, limit: usize, kind: Kind) -> Option<(usize, String)> {
+    let mut memo = task
+        .close_names
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner);
+    let memo_key = format!("{}{key}", kind.prefix());
+    if let Some(found) = memo.get(&memo_key) {
+        return found.clone();
+    }
+    let mut best: Option<(usize, String)> = None;
+    for (folded, refs) in &task.globals {
+        if folded.len().abs_diff(key.len()) > limit {
+            continue;
+        }
+        let Some(r) = refs.iter().find(|r| kind.matches(r.item)) else {
+            continue;
+        };
+        let d = edit_distance(key, folded);
+        if d > 0
+            && d <= limit
+            && best.as_ref().is_none_or(|(bd, _)| d < *bd)
+            && let Some((n, _)) = task.item_name(*r)
+        {
+            best = Some((d, n.to_owned()));
+        }
+    }
+    memo.insert(memo_key, best.clone());
+    best
+}
+
+/// What kind of name a "did you mean" looks for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub(crate) enum Kind {
+    Data,
+    Routine,
+    Type,
+}
+
+impl Kind {
+    /// From the word [`Cx::unresolved`] is given: "data", "routine", "data type".
+    pub(super) fn of(what: &str) -> Kind {
+        match what {
+            "routine" => Kind::Routine,
+            "data type" => Kind::Type,
+            _ => Kind::Data,
+        }
+    }
+
+    fn matches(self, item: Item) -> bool {
+        matches!(
+            (self, item),
+            (Kind::Data, Item::Data(_))
+                | (Kind::Routine, Item::Routine(_))
+                | (Kind::Type, Item::Record(_) | Item::Alias(_))
+        )
+    }
+
+    /// Keeps the kinds apart in the task's memo of suggestions.
+    fn prefix(self) -> &'static str {
+        match self {
+            Kind::Data => "d:",
+            Kind::Routine => "r:",
+            Kind::Type => "t:",
+        }
+    }
+}
+
+/// Levenshtein distance of two short ASCII strings.
+pub(crate) fn edit_distance(a: &str, b: &str) -> usize {
+    distance(a.as_bytes(), b.as_bytes(), |x, y| x == y)
+}
+
+/// [`edit_distance`] between a folded `key` and `name` as if `name` were
+/// folded too (without allocating its folded form).
+fn edit_distance_folded(key: &str, name: &str) -> usize {
+    distance(key.as_bytes(), name.as_bytes(), |x, y| {
+        x == y.to_ascii_lowercase()
+    })
+}
+
+/// Levenshtein distance of byte strings, or 3 when it is more than 2
+/// (callers only care about distances up to 2).
+fn distance(a: &[u8], b: &[u8], eq: impl Fn(u8, u8) -> bool) -> usize {
+    const STACK: usize = 64;
+    if a.len().abs_diff(b.len()) > 2 {
+        return 3;
+    }
+    let mut stack = [[0usize; STACK]; 2];
+    let mut heap;
+    let (mut prev, mut cur): (&mut [usize], &mut [usize]) = if b.len() < STACK {
+        let [p, c] = &mut stack;
+        (&mut p[..=b.len()], &mut c[..=b.len()])
+    } else {
+        heap = (vec![0; b.len() + 1], vec![0; b.len() + 1]);
+        (&mut heap.0, &mut heap.1)
+    };
+    for (j, p) in prev.iter_mut().enumerate() {
+        *p = j;
+    }
+    for (i, &ca) in a.iter().enumerate() {
+        cur[0] = i + 1;
+        let mut row_min = cur[0];
+        for (j, &cb) in b.iter().enumerate() {
+            let cost = usize::from(!eq(ca, cb));
+            cur[j + 1] = (prev[j] + cost).min(prev[j + 1] + 1).min(cur[j] + 1);
+            row_min = row_min.min(cur[j + 1]);
+        }
+        // The distance is at least the smallest value of any row.
+        if row_min > 2 {
+            return 3;
+        }
+        std::mem::swap(&mut prev, &mut cur);
+    }
+    prev[b.len()]
+}
+
+#[cfg(test)]
+mod distance_tests {
+    #[test]
+    fn edit_distances() {
+        for (a, b, d) in [
+            ("movel", "movel", 0),
+            ("movel", "movej", 1),
+            ("movel", "mvel", 1),
+            ("ptarget", "ptraget", 2),
+            ("abc", "abcdef", 3),
+            ("", "ab", 2),
+        ] {
+            assert_eq!(super::edit_distance(a, b), d, "{a} {b}");
+            assert_eq!(
+                super::edit_distance_folded(a, &b.to_uppercase()),
+                d,
+                "{a} {b}"
+            );
+        }
+        let long = "x".repeat(70);
+        assert_eq!(super::edit_distance(&long, &format!("{long}y")), 1);
+    }
+}

@@ -1,0 +1,4 @@
+//! Semantic facts computed from the syntax without reporting anything, for
+//! the checker and the editor features alike.
+
+pub(crate) mod labels;
