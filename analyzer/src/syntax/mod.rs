@@ -12,7 +12,13 @@ use tree_sitter::{Language, Node, Parser, Tree};
 use crate::diagnostic::Diagnostic;
 use crate::rules::{equals_for_assignment, missing_token, syntax_error};
 
+// Generated (tests/syntax.rs checks it is current); its layout is the
+// generator's.
+#[rustfmt::skip]
+pub mod generated;
 mod typos;
+
+pub use generated::{field, kind};
 
 /// The RAPID language of the tree-sitter grammar.
 pub fn language() -> Language {
