@@ -10,6 +10,8 @@ use std::sync::OnceLock;
 
 use tree_sitter::{Node, TreeCursor};
 
+use crate::syntax::{field, kind};
+
 /// How a token behaves towards its neighbours on a line.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(super) enum Class {
@@ -145,40 +147,40 @@ pub(super) struct Tok<'t> {
 
 /// Node kinds that start a line at their parent's level.
 const SAME_LEVEL_KINDS: &[&str] = &[
-    "error_handler",
-    "backward_handler",
-    "undo_handler",
-    "elseif_clause",
-    "else_clause",
+    kind::ERROR_HANDLER,
+    kind::BACKWARD_HANDLER,
+    kind::UNDO_HANDLER,
+    kind::ELSEIF_CLAUSE,
+    kind::ELSE_CLAUSE,
 ];
 
 /// Node kinds that start a line one level deeper than their parent.
-const DEEPER_KINDS: &[&str] = &["test_case", "default_case", "record_component"];
+const DEEPER_KINDS: &[&str] = &[kind::TEST_CASE, kind::DEFAULT_CASE, kind::RECORD_COMPONENT];
 
 /// Node kinds whose first line opens a block of deeper lines.
 const BLOCKS: &[&str] = &[
-    "module",
-    "procedure_declaration",
-    "function_declaration",
-    "trap_declaration",
-    "record_declaration",
-    "if_statement",
-    "elseif_clause",
-    "else_clause",
-    "for_statement",
-    "while_statement",
-    "test_statement",
-    "test_case",
-    "default_case",
-    "error_handler",
-    "backward_handler",
-    "undo_handler",
+    kind::MODULE,
+    kind::PROCEDURE_DECLARATION,
+    kind::FUNCTION_DECLARATION,
+    kind::TRAP_DECLARATION,
+    kind::RECORD_DECLARATION,
+    kind::IF_STATEMENT,
+    kind::ELSEIF_CLAUSE,
+    kind::ELSE_CLAUSE,
+    kind::FOR_STATEMENT,
+    kind::WHILE_STATEMENT,
+    kind::TEST_STATEMENT,
+    kind::TEST_CASE,
+    kind::DEFAULT_CASE,
+    kind::ERROR_HANDLER,
+    kind::BACKWARD_HANDLER,
+    kind::UNDO_HANDLER,
 ];
 
 const ROUTINES: &[&str] = &[
-    "procedure_declaration",
-    "function_declaration",
-    "trap_declaration",
+    kind::PROCEDURE_DECLARATION,
+    kind::FUNCTION_DECLARATION,
+    kind::TRAP_DECLARATION,
 ];
 
 #[derive(Clone, Copy, Default)]
@@ -244,7 +246,7 @@ pub(super) fn collect<'t>(root: Node<'_>, text: &'t str, normalise: bool) -> Opt
     let mut previous_module = false;
     for child in root.children(&mut cursor) {
         match child.kind() {
-            "module" => {
+            kind::MODULE => {
                 c.pending = Pending {
                     start: Some(Start::Level(Depth::default())),
                     opens: Some(Depth::default().module()),
@@ -256,7 +258,7 @@ pub(super) fn collect<'t>(root: Node<'_>, text: &'t str, normalise: bool) -> Opt
                 }
                 previous_module = true;
             }
-            "comment" => c.leaf(child, root),
+            kind::COMMENT => c.leaf(child, root),
             _ => {
                 // trailing text (kept verbatim), or anything new
                 c.pending = Pending::default();
@@ -456,7 +458,7 @@ impl<'t> Collector<'t> {
             wrap_point: pending.wrap_point,
             no_blank: pending.no_blank,
             proc_name: proc_name && class != Class::Comment,
-            number: node.kind() == "number",
+            number: node.kind() == kind::NUMBER,
             keep_gap: self.keeping > 0 && class != Class::Comment,
         });
     }
@@ -466,7 +468,7 @@ impl<'n> Frame<'n> {
     fn new(node: Node<'n>, flags: u32, parent_flags: u32, level: Depth) -> Frame<'n> {
         let pers = flags & DATA_DECLARATION != 0
             && node
-                .child_by_field_name("storage")
+                .child_by_field_name(field::STORAGE)
                 .is_some_and(|s| s.kind() == "pers");
         Frame {
             node,
@@ -541,8 +543,8 @@ impl Kinds {
         }
         Kinds {
             flags,
-            body_field: language.field_id_for_name("body"),
-            name_field: language.field_id_for_name("name"),
+            body_field: language.field_id_for_name(field::BODY),
+            name_field: language.field_id_for_name(field::NAME),
         }
     }
 
@@ -572,25 +574,25 @@ fn kind_flags(name: &str, named: bool) -> u32 {
     };
     if named {
         set(true, NAMED);
-        set(name == "comment", COMMENT);
-        set(name == "trailing_text", TRAILING);
-        set(name == "string", STRING);
-        set(name == "module", MODULE);
-        set(name == "module_header", MODULE_HEADER);
-        set(name == "header_entry", HEADER_ENTRY);
-        set(name == "compact_if_statement", COMPACT_IF);
-        set(name == "argument_list", ARGUMENT_LIST);
-        set(name == "procedure_call", PROCEDURE_CALL);
-        set(name == "argument", ARGUMENT);
-        set(name == "optional_parameter", OPTIONAL_PARAMETER);
-        set(name == "unary_expression", UNARY_EXPRESSION);
+        set(name == kind::COMMENT, COMMENT);
+        set(name == kind::TRAILING_TEXT, TRAILING);
+        set(name == kind::STRING, STRING);
+        set(name == kind::MODULE, MODULE);
+        set(name == kind::MODULE_HEADER, MODULE_HEADER);
+        set(name == kind::HEADER_ENTRY, HEADER_ENTRY);
+        set(name == kind::COMPACT_IF_STATEMENT, COMPACT_IF);
+        set(name == kind::ARGUMENT_LIST, ARGUMENT_LIST);
+        set(name == kind::PROCEDURE_CALL, PROCEDURE_CALL);
+        set(name == kind::ARGUMENT, ARGUMENT);
+        set(name == kind::OPTIONAL_PARAMETER, OPTIONAL_PARAMETER);
+        set(name == kind::UNARY_EXPRESSION, UNARY_EXPRESSION);
         set(SAME_LEVEL_KINDS.contains(&name), SAME_LEVEL);
         set(DEEPER_KINDS.contains(&name), DEEPER);
         set(BLOCKS.contains(&name), BLOCK);
         set(ROUTINES.contains(&name), ROUTINE);
-        set(name == "record_component", RECORD_COMPONENT);
-        set(name == "data_declaration", DATA_DECLARATION);
-        set(name == "test_statement", TEST);
+        set(name == kind::RECORD_COMPONENT, RECORD_COMPONENT);
+        set(name == kind::DATA_DECLARATION, DATA_DECLARATION);
+        set(name == kind::TEST_STATEMENT, TEST);
     } else {
         let keyword = !name.is_empty() && name.bytes().all(|b| b.is_ascii_alphabetic());
         set(keyword, KEYWORD);

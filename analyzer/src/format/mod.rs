@@ -323,7 +323,11 @@ fn collect_leaves(root: Node<'_>, out: &mut Vec<(Range<usize>, bool, bool)>) {
         let atomic = collect::is_atomic(node);
         if atomic && !node.byte_range().is_empty() {
             let keyword = !node.is_named() && node.kind().bytes().all(|b| b.is_ascii_alphabetic());
-            out.push((node.byte_range(), keyword, node.kind() == "comment"));
+            out.push((
+                node.byte_range(),
+                keyword,
+                node.kind() == crate::syntax::kind::COMMENT,
+            ));
         }
         !atomic
     });

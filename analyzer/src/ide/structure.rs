@@ -5,48 +5,49 @@ use std::ops::Range;
 use tree_sitter::Node;
 
 use super::FoldingRange;
+use crate::syntax::{field, kind};
 use crate::syntax_util::walk_pruned;
 use crate::task::Unit;
 use crate::text::LineIndex;
 
 const FOLDED: &[&str] = &[
-    "module",
-    "module_header",
-    "record_declaration",
-    "procedure_declaration",
-    "function_declaration",
-    "trap_declaration",
-    "backward_handler",
-    "error_handler",
-    "undo_handler",
-    "if_statement",
-    "elseif_clause",
-    "else_clause",
-    "for_statement",
-    "while_statement",
-    "test_statement",
-    "test_case",
-    "default_case",
+    kind::MODULE,
+    kind::MODULE_HEADER,
+    kind::RECORD_DECLARATION,
+    kind::PROCEDURE_DECLARATION,
+    kind::FUNCTION_DECLARATION,
+    kind::TRAP_DECLARATION,
+    kind::BACKWARD_HANDLER,
+    kind::ERROR_HANDLER,
+    kind::UNDO_HANDLER,
+    kind::IF_STATEMENT,
+    kind::ELSEIF_CLAUSE,
+    kind::ELSE_CLAUSE,
+    kind::FOR_STATEMENT,
+    kind::WHILE_STATEMENT,
+    kind::TEST_STATEMENT,
+    kind::TEST_CASE,
+    kind::DEFAULT_CASE,
 ];
 
 /// Nodes that hold nothing foldable (but may hold comments only at their
 /// ends, which a statement-level walk sees anyway).
 const LEAVES: &[&str] = &[
-    "data_declaration",
-    "procedure_call",
-    "assignment",
-    "return_statement",
-    "raise_statement",
-    "goto_statement",
-    "connect_statement",
-    "label",
-    "binary_expression",
-    "function_call",
-    "argument_list",
-    "number",
-    "string",
-    "identifier",
-    "type_identifier",
+    kind::DATA_DECLARATION,
+    kind::PROCEDURE_CALL,
+    kind::ASSIGNMENT,
+    kind::RETURN_STATEMENT,
+    kind::RAISE_STATEMENT,
+    kind::GOTO_STATEMENT,
+    kind::CONNECT_STATEMENT,
+    kind::LABEL,
+    kind::BINARY_EXPRESSION,
+    kind::FUNCTION_CALL,
+    kind::ARGUMENT_LIST,
+    kind::NUMBER,
+    kind::STRING,
+    kind::IDENTIFIER,
+    kind::TYPE_IDENTIFIER,
 ];
 
 /// Foldable line ranges: modules, the `%%%` header (`region`), routines,
@@ -76,7 +77,7 @@ pub fn folding_ranges(unit: &Unit) -> Vec<FoldingRange> {
         if LEAVES.contains(&kind) {
             return false;
         }
-        if kind == "comment" {
+        if kind == kind::COMMENT {
             let line = line_of(n.start_byte());
             // Only comments that start their line form a block.
             let starts_line = text
@@ -97,8 +98,8 @@ pub fn folding_ranges(unit: &Unit) -> Vec<FoldingRange> {
         if FOLDED.contains(&kind) {
             // A module folds from its MODULE line (its `%%%` header folds alone).
             let from = match kind {
-                "module" => n
-                    .child_by_field_name("name")
+                kind::MODULE => n
+                    .child_by_field_name(field::NAME)
                     .map_or(n.start_byte(), |m| m.start_byte()),
                 _ => n.start_byte(),
             };
@@ -108,14 +109,14 @@ pub fn folding_ranges(unit: &Unit) -> Vec<FoldingRange> {
             // clauses and the `%%%` header, which have none of their own.
             let has_end_line = !matches!(
                 kind,
-                "module_header"
-                    | "elseif_clause"
-                    | "else_clause"
-                    | "test_case"
-                    | "default_case"
-                    | "backward_handler"
-                    | "error_handler"
-                    | "undo_handler"
+                kind::MODULE_HEADER
+                    | kind::ELSEIF_CLAUSE
+                    | kind::ELSE_CLAUSE
+                    | kind::TEST_CASE
+                    | kind::DEFAULT_CASE
+                    | kind::BACKWARD_HANDLER
+                    | kind::ERROR_HANDLER
+                    | kind::UNDO_HANDLER
             );
             if has_end_line && end > start {
                 end -= 1;
@@ -124,7 +125,7 @@ pub fn folding_ranges(unit: &Unit) -> Vec<FoldingRange> {
                 out.push(FoldingRange {
                     start_line: start,
                     end_line: end,
-                    kind: (kind == "module_header").then_some("region"),
+                    kind: (kind == kind::MODULE_HEADER).then_some("region"),
                 });
             }
         }
@@ -167,9 +168,9 @@ pub fn selection_ranges(unit: &Unit, offsets: &[usize]) -> Vec<Vec<Range<usize>>
                 push(n.byte_range(), &mut out);
                 // A statement in a block: the block's statements together.
                 if let Some(p) = n.parent()
-                    && super::resolve::field_in_parent(n) == Some("body")
+                    && super::resolve::field_in_parent(n) == Some(field::BODY)
                 {
-                    let body = crate::syntax_util::fields(p, "body");
+                    let body = crate::syntax_util::fields(p, field::BODY);
                     if let (Some(f), Some(l)) = (body.first(), body.last())
                         && body.len() > 1
                     {

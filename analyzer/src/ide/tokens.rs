@@ -15,6 +15,7 @@ use crate::catalogue::DatumKind;
 use crate::check::{Cx, DataSym, RoutineSym};
 use crate::items::Storage;
 use crate::names::same;
+use crate::syntax::{field, kind};
 use crate::task::{Item, Task};
 
 /// A cache of the scope (module, routine) names are resolved in.
@@ -132,19 +133,19 @@ pub fn semantic_tokens(
         if overlaps {
             let kind = n.kind();
             let leaf_like = match kind {
-                "comment" | "trailing_text" => {
+                kind::COMMENT | kind::TRAILING_TEXT => {
                     emit(n.byte_range(), TokenType::Comment, 0);
                     true
                 }
-                "number" => {
+                kind::NUMBER => {
                     emit(n.byte_range(), TokenType::Number, 0);
                     true
                 }
-                "string" => {
+                kind::STRING => {
                     emit(n.byte_range(), TokenType::String, 0);
                     true
                 }
-                "boolean" => {
+                kind::BOOLEAN => {
                     emit(
                         n.byte_range(),
                         TokenType::EnumMember,
@@ -152,15 +153,15 @@ pub fn semantic_tokens(
                     );
                     true
                 }
-                "placeholder" => {
+                kind::PLACEHOLDER => {
                     emit(n.byte_range(), TokenType::Macro, 0);
                     true
                 }
-                "module_attribute" => {
+                kind::MODULE_ATTRIBUTE => {
                     emit(n.byte_range(), TokenType::Keyword, 0);
                     true
                 }
-                "header_value" => true,
+                kind::HEADER_VALUE => true,
                 _ if is_name(n) => {
                     let field = cursor.field_name();
                     if let Some((ty, m)) = classify(&mut scopes, n, field, &stack, text) {
@@ -218,19 +219,23 @@ fn classify(
     let cat = scopes.task.catalogue;
     let decl = MOD_DECLARATION;
     Some(match (parent.kind(), field) {
-        ("module", Some("name")) => (TokenType::Namespace, decl),
-        ("header_entry", _) => (TokenType::Property, 0),
-        ("procedure_declaration" | "trap_declaration", Some("name")) => (TokenType::Method, decl),
-        ("function_declaration", Some("name")) => (TokenType::Function, decl),
-        ("record_declaration" | "alias_declaration", Some("name")) => (TokenType::Type, decl),
-        ("record_component", Some("name")) => (TokenType::Property, decl),
-        ("component_access", Some("component")) => (TokenType::Property, 0),
-        ("parameter", Some("name")) => (TokenType::Parameter, decl),
-        ("argument", Some("name")) => (TokenType::Parameter, 0),
-        ("label", Some("name")) => (TokenType::Label, decl),
-        ("goto_statement", Some("label")) => (TokenType::Label, 0),
-        ("for_statement", Some("variable")) => (TokenType::Variable, decl),
-        ("data_declaration", Some("name")) => {
+        (kind::MODULE, Some(field::NAME)) => (TokenType::Namespace, decl),
+        (kind::HEADER_ENTRY, _) => (TokenType::Property, 0),
+        (kind::PROCEDURE_DECLARATION | kind::TRAP_DECLARATION, Some(field::NAME)) => {
+            (TokenType::Method, decl)
+        }
+        (kind::FUNCTION_DECLARATION, Some(field::NAME)) => (TokenType::Function, decl),
+        (kind::RECORD_DECLARATION | kind::ALIAS_DECLARATION, Some(field::NAME)) => {
+            (TokenType::Type, decl)
+        }
+        (kind::RECORD_COMPONENT, Some(field::NAME)) => (TokenType::Property, decl),
+        (kind::COMPONENT_ACCESS, Some(field::COMPONENT)) => (TokenType::Property, 0),
+        (kind::PARAMETER, Some(field::NAME)) => (TokenType::Parameter, decl),
+        (kind::ARGUMENT, Some(field::NAME)) => (TokenType::Parameter, 0),
+        (kind::LABEL, Some(field::NAME)) => (TokenType::Label, decl),
+        (kind::GOTO_STATEMENT, Some(field::LABEL)) => (TokenType::Label, 0),
+        (kind::FOR_STATEMENT, Some(field::VARIABLE)) => (TokenType::Variable, decl),
+        (kind::DATA_DECLARATION, Some(field::NAME)) => {
             let m = match field_of_kind(parent) {
                 Some("pers") => MOD_STATIC,
                 Some("const") => MOD_READONLY,
@@ -238,10 +243,10 @@ fn classify(
             };
             (TokenType::Variable, decl | m)
         }
-        ("procedure_call" | "function_call", Some("name"))
-        | ("connect_statement", Some("trap")) => {
+        (kind::PROCEDURE_CALL | kind::FUNCTION_CALL, Some(field::NAME))
+        | (kind::CONNECT_STATEMENT, Some(field::TRAP)) => {
             let cx = scopes.at(n.start_byte())?;
-            match cx.resolve_routine(name, parent.kind() == "function_call") {
+            match cx.resolve_routine(name, parent.kind() == kind::FUNCTION_CALL) {
                 Some(RoutineSym::User(d, _)) => match d.kind {
                     crate::items::RoutineKind::Func => (TokenType::Function, 0),
                     _ => (TokenType::Method, 0),
@@ -254,11 +259,11 @@ fn classify(
                     };
                     (ty, MOD_DEFAULT_LIBRARY)
                 }
-                None if parent.kind() == "function_call" => (TokenType::Function, 0),
+                None if parent.kind() == kind::FUNCTION_CALL => (TokenType::Function, 0),
                 None => (TokenType::Method, 0),
             }
         }
-        _ if n.kind() == "type_identifier" || field == Some("type") => {
+        _ if n.kind() == kind::TYPE_IDENTIFIER || field == Some(field::TYPE) => {
             let cx = scopes.at(n.start_byte())?;
             let user = cx
                 .lookup_items(name)
@@ -299,7 +304,7 @@ fn classify(
 
 /// The storage keyword of a data declaration.
 fn field_of_kind(decl: Node<'_>) -> Option<&'static str> {
-    let s = decl.child_by_field_name("storage")?;
+    let s = decl.child_by_field_name(field::STORAGE)?;
     match s.kind() {
         "var" => Some("var"),
         "pers" => Some("pers"),
@@ -312,15 +317,15 @@ fn field_of_kind(decl: Node<'_>) -> Option<&'static str> {
 /// within the routine?
 fn enclosing_for_var(ancestors: &[Node<'_>], name: &str, text: &str) -> bool {
     for p in ancestors.iter().rev() {
-        if p.kind() == "for_statement"
-            && let Some(v) = p.child_by_field_name("variable")
+        if p.kind() == kind::FOR_STATEMENT
+            && let Some(v) = p.child_by_field_name(field::VARIABLE)
             && text.get(v.byte_range()).is_some_and(|t| same(t, name))
         {
             return true;
         }
         if matches!(
             p.kind(),
-            "procedure_declaration" | "function_declaration" | "trap_declaration"
+            kind::PROCEDURE_DECLARATION | kind::FUNCTION_DECLARATION | kind::TRAP_DECLARATION
         ) {
             return false;
         }
