@@ -13,6 +13,7 @@ use tree_sitter::{Node, Tree};
 
 use crate::catalogue::Mode;
 use crate::names::fold;
+use crate::syntax::{field, kind};
 use crate::syntax_util::{field, fields, has_token, is_placeholder, text_of};
 
 /// The items of one file (a file may hold several modules).
@@ -169,8 +170,8 @@ impl FileItems {
         let mut cursor = root.walk();
         let modules = root
             .named_children(&mut cursor)
-            .filter(|n| n.kind() == "module")
-            .filter_map(|n| lower_module(n, fields(n, "body"), text))
+            .filter(|n| n.kind() == kind::MODULE)
+            .filter_map(|n| lower_module(n, fields(n, field::BODY), text))
             .collect();
         FileItems { modules }
     }
@@ -217,7 +218,7 @@ impl FileItems {
 }
 
 fn name_of(node: Node<'_>, text: &str) -> Option<(String, Range<usize>)> {
-    let name = field(node, "name")?;
+    let name = field(node, field::NAME)?;
     if is_placeholder(name) || name.is_missing() {
         return None;
     }
@@ -225,7 +226,7 @@ fn name_of(node: Node<'_>, text: &str) -> Option<(String, Range<usize>)> {
 }
 
 fn type_of(node: Node<'_>, text: &str) -> Option<TypeRef> {
-    let ty = field(node, "type")?;
+    let ty = field(node, field::TYPE)?;
     if is_placeholder(ty) || ty.is_missing() {
         return None;
     }
@@ -236,7 +237,7 @@ fn type_of(node: Node<'_>, text: &str) -> Option<TypeRef> {
 }
 
 fn scope_of(node: Node<'_>) -> Scope {
-    match field(node, "scope").map(|s| s.kind()) {
+    match field(node, field::SCOPE).map(|s| s.kind()) {
         Some("local") => Scope::Local,
         Some("task") => Scope::Task,
         _ => Scope::Global,
@@ -246,8 +247,8 @@ fn scope_of(node: Node<'_>) -> Scope {
 fn lower_module<'t>(node: Node<'t>, body: Vec<Node<'t>>, text: &str) -> Option<Module> {
     let (name, name_range) = name_of(node, text)?;
     let mut attributes = ModuleAttributes::default();
-    if let Some(attrs) = field(node, "attributes") {
-        for attr in fields(attrs, "attribute") {
+    if let Some(attrs) = field(node, field::ATTRIBUTES) {
+        for attr in fields(attrs, field::ATTRIBUTE) {
             match text_of(attr, text).to_ascii_uppercase().as_str() {
                 "SYSMODULE" => attributes.sysmodule = true,
                 "NOVIEW" => attributes.noview = true,
@@ -270,12 +271,12 @@ fn lower_module<'t>(node: Node<'t>, body: Vec<Node<'t>>, text: &str) -> Option<M
     };
     for item in body {
         match item.kind() {
-            "data_declaration" => module.data.extend(lower_data(item, text)),
-            "procedure_declaration" | "function_declaration" | "trap_declaration" => {
+            kind::DATA_DECLARATION => module.data.extend(lower_data(item, text)),
+            kind::PROCEDURE_DECLARATION | kind::FUNCTION_DECLARATION | kind::TRAP_DECLARATION => {
                 module.routines.extend(lower_routine(item, text));
             }
-            "record_declaration" => module.records.extend(lower_record(item, text)),
-            "alias_declaration" => module.aliases.extend(lower_alias(item, text)),
+            kind::RECORD_DECLARATION => module.records.extend(lower_record(item, text)),
+            kind::ALIAS_DECLARATION => module.aliases.extend(lower_alias(item, text)),
             _ => {}
         }
     }
@@ -285,15 +286,15 @@ fn lower_module<'t>(node: Node<'t>, body: Vec<Node<'t>>, text: &str) -> Option<M
 /// Lowers a data declaration (of a module or of a routine).
 pub fn lower_data(node: Node<'_>, text: &str) -> Option<DataDecl> {
     let (name, name_range) = name_of(node, text)?;
-    let storage = match field(node, "storage")?.kind() {
+    let storage = match field(node, field::STORAGE)?.kind() {
         "var" => Storage::Var,
         "pers" => Storage::Pers,
         "const" => Storage::Const,
         _ => return None,
     };
-    let dims = field(node, "dimensions")
+    let dims = field(node, field::DIMENSIONS)
         .map(|d| {
-            fields(d, "dimension")
+            fields(d, field::DIMENSION)
                 .iter()
                 .map(|n| n.byte_range())
                 .collect()
@@ -307,27 +308,27 @@ pub fn lower_data(node: Node<'_>, text: &str) -> Option<DataDecl> {
         storage,
         ty: type_of(node, text),
         dims,
-        init: field(node, "value").map(|v| v.byte_range()),
+        init: field(node, field::VALUE).map(|v| v.byte_range()),
     })
 }
 
 fn lower_routine(node: Node<'_>, text: &str) -> Option<RoutineDecl> {
     let (name, name_range) = name_of(node, text)?;
     let kind = match node.kind() {
-        "procedure_declaration" => RoutineKind::Proc,
-        "function_declaration" => RoutineKind::Func,
+        kind::PROCEDURE_DECLARATION => RoutineKind::Proc,
+        kind::FUNCTION_DECLARATION => RoutineKind::Func,
         _ => RoutineKind::Trap,
     };
     let mut params = Vec::new();
     let mut alt_groups = 0;
-    if let Some(list) = field(node, "parameters") {
-        for p in fields(list, "parameter") {
+    if let Some(list) = field(node, field::PARAMETERS) {
+        for p in fields(list, field::PARAMETER) {
             match p.kind() {
-                "parameter" => params.extend(lower_param(p, text, false, None)),
-                "optional_parameter" => {
-                    let alternatives: Vec<_> = fields(p, "alternative")
+                kind::PARAMETER => params.extend(lower_param(p, text, false, None)),
+                kind::OPTIONAL_PARAMETER => {
+                    let alternatives: Vec<_> = fields(p, field::ALTERNATIVE)
                         .into_iter()
-                        .filter(|a| a.kind() == "parameter")
+                        .filter(|a| a.kind() == kind::PARAMETER)
                         .collect();
                     let group = (alternatives.len() > 1).then(|| {
                         alt_groups += 1;
@@ -363,13 +364,13 @@ fn lower_param(
 ) -> Option<ParamDecl> {
     let (name, name_range) = name_of(node, text)?;
     let ty = type_of(node, text);
-    let mode = match field(node, "mode").map(|m| m.kind()) {
+    let mode = match field(node, field::MODE).map(|m| m.kind()) {
         Some("var") => Mode::Var,
         Some("pers") => Mode::Pers,
         Some("inout") => Mode::InOut,
         _ => Mode::In,
     };
-    let dims = field(node, "dimensions").map_or(0, |d| {
+    let dims = field(node, field::DIMENSIONS).map_or(0, |d| {
         let mut cursor = d.walk();
         let n = d.children(&mut cursor).filter(|c| c.kind() == "*").count();
         u8::try_from(n).unwrap_or(u8::MAX)
@@ -391,7 +392,7 @@ fn lower_param(
 
 fn lower_record(node: Node<'_>, text: &str) -> Option<RecordDecl> {
     let (name, name_range) = name_of(node, text)?;
-    let components = fields(node, "component")
+    let components = fields(node, field::COMPONENT)
         .into_iter()
         .filter_map(|c| {
             let (n, r) = name_of(c, text)?;

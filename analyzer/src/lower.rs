@@ -12,6 +12,7 @@
 use rapid_evaluator::{Arg, BinOp, Expr, UnOp};
 use tree_sitter::Node;
 
+use crate::syntax::{field, kind};
 use crate::syntax_util::{Literal, field, fields, has_token, text_of};
 
 /// Deepest nesting of expression nodes that is lowered; deeper
@@ -21,17 +22,17 @@ pub const MAX_DEPTH: u32 = 256;
 
 /// The node kinds that are expressions.
 pub const EXPRESSION_KINDS: &[&str] = &[
-    "aggregate",
-    "binary_expression",
-    "boolean",
-    "component_access",
-    "function_call",
-    "identifier",
-    "index_expression",
-    "number",
-    "parenthesized_expression",
-    "string",
-    "unary_expression",
+    kind::AGGREGATE,
+    kind::BINARY_EXPRESSION,
+    kind::BOOLEAN,
+    kind::COMPONENT_ACCESS,
+    kind::FUNCTION_CALL,
+    kind::IDENTIFIER,
+    kind::INDEX_EXPRESSION,
+    kind::NUMBER,
+    kind::PARENTHESIZED_EXPRESSION,
+    kind::STRING,
+    kind::UNARY_EXPRESSION,
 ];
 
 /// Is a node of this kind an expression?
@@ -64,59 +65,59 @@ impl Lowering<'_> {
         let depth = depth + 1;
         let text = text_of(node, self.text);
         match crate::syntax_util::kind(node) {
-            "number" => Expr::Num(text.to_owned()),
-            "string" => Expr::Str(text.to_owned()),
-            "boolean" => Expr::Bool(has_token(node, "true")),
-            "identifier" => Expr::Name(text.to_owned()),
-            "parenthesized_expression" => self.child(node, "expression", depth),
-            "unary_expression" => {
-                let op = match field(node, "operator").map(|o| crate::syntax_util::kind(o)) {
+            kind::NUMBER => Expr::Num(text.to_owned()),
+            kind::STRING => Expr::Str(text.to_owned()),
+            kind::BOOLEAN => Expr::Bool(has_token(node, "true")),
+            kind::IDENTIFIER => Expr::Name(text.to_owned()),
+            kind::PARENTHESIZED_EXPRESSION => self.child(node, field::EXPRESSION, depth),
+            kind::UNARY_EXPRESSION => {
+                let op = match field(node, field::OPERATOR).map(|o| crate::syntax_util::kind(o)) {
                     Some("-") => UnOp::Neg,
                     Some("+") => UnOp::Plus,
                     Some("not") => UnOp::Not,
                     _ => return Expr::Unknown,
                 };
-                Expr::Unary(op, Box::new(self.child(node, "operand", depth)))
+                Expr::Unary(op, Box::new(self.child(node, field::OPERAND, depth)))
             }
-            "binary_expression" => {
-                let Some(op) =
-                    field(node, "operator").and_then(|o| binary_op(crate::syntax_util::kind(o)))
+            kind::BINARY_EXPRESSION => {
+                let Some(op) = field(node, field::OPERATOR)
+                    .and_then(|o| binary_op(crate::syntax_util::kind(o)))
                 else {
                     return Expr::Unknown;
                 };
                 Expr::Binary(
                     op,
-                    Box::new(self.child(node, "left", depth)),
-                    Box::new(self.child(node, "right", depth)),
+                    Box::new(self.child(node, field::LEFT, depth)),
+                    Box::new(self.child(node, field::RIGHT, depth)),
                 )
             }
-            "function_call" => self.call(node, depth),
-            "component_access" => match field(node, "component") {
-                Some(c) if crate::syntax_util::kind(c) == "identifier" && !c.is_missing() => {
+            kind::FUNCTION_CALL => self.call(node, depth),
+            kind::COMPONENT_ACCESS => match field(node, field::COMPONENT) {
+                Some(c) if crate::syntax_util::kind(c) == kind::IDENTIFIER && !c.is_missing() => {
                     Expr::Component(
-                        Box::new(self.child(node, "object", depth)),
+                        Box::new(self.child(node, field::OBJECT, depth)),
                         text_of(c, self.text).to_owned(),
                     )
                 }
                 _ => Expr::Unknown,
             },
-            "index_expression" => {
-                let indexes: Vec<Expr> = fields(node, "index")
+            kind::INDEX_EXPRESSION => {
+                let indexes: Vec<Expr> = fields(node, field::INDEX)
                     .into_iter()
                     .map(|i| self.expr(i, depth))
                     .collect();
                 if indexes.is_empty() {
                     return Expr::Unknown;
                 }
-                Expr::Index(Box::new(self.child(node, "object", depth)), indexes)
+                Expr::Index(Box::new(self.child(node, field::OBJECT, depth)), indexes)
             }
-            "aggregate" => {
+            kind::AGGREGATE => {
                 // Literal tables and robtargets: read from the text, as the
                 // tree would give them, without walking their many nodes.
                 if let Some(literal) = crate::syntax_util::literal_aggregate(node, self.text) {
                     return self.literal(&literal);
                 }
-                let elements = fields(node, "element");
+                let elements = fields(node, field::ELEMENT);
                 if elements.is_empty() {
                     return Expr::Unknown;
                 }
@@ -158,7 +159,7 @@ impl Lowering<'_> {
 
     fn call(&self, node: Node<'_>, depth: u32) -> Expr {
         let Some(name) =
-            field(node, "name").filter(|n| crate::syntax_util::kind(*n) == "identifier")
+            field(node, field::NAME).filter(|n| crate::syntax_util::kind(*n) == kind::IDENTIFIER)
         else {
             return Expr::Unknown;
         };
@@ -167,10 +168,10 @@ impl Lowering<'_> {
             return Expr::Unknown;
         }
         let mut args = Vec::new();
-        if let Some(list) = field(node, "arguments") {
-            for a in fields(list, "argument") {
-                let arg_name = field(a, "name").map(|n| {
-                    if crate::syntax_util::kind(n) == "identifier" {
+        if let Some(list) = field(node, field::ARGUMENTS) {
+            for a in fields(list, field::ARGUMENT) {
+                let arg_name = field(a, field::NAME).map(|n| {
+                    if crate::syntax_util::kind(n) == kind::IDENTIFIER {
                         text_of(n, self.text).to_owned()
                     } else {
                         String::new()
@@ -179,12 +180,12 @@ impl Lowering<'_> {
                 if arg_name.as_deref() == Some("") {
                     return Expr::Unknown;
                 }
-                let value = if let Some(c) = field(a, "conditional") {
+                let value = if let Some(c) = field(a, field::CONDITIONAL) {
                     // `\Dec?x` passes an optional parameter on: its presence
                     // is only known at run time.
                     Some(conditional(c, self.text))
                 } else {
-                    field(a, "value").map(|v| self.expr(v, depth))
+                    field(a, field::VALUE).map(|v| self.expr(v, depth))
                 };
                 if value.is_none() && !has_token(a, "\\") {
                     // Neither a value nor a switch: a broken argument.
@@ -207,7 +208,7 @@ impl Lowering<'_> {
 /// optional parameter `x` passed on, or [`Expr::Unknown`] when it is not a
 /// name.
 pub fn conditional(node: Node<'_>, text: &str) -> Expr {
-    if crate::syntax_util::kind(node) == "identifier" && !node.is_missing() {
+    if crate::syntax_util::kind(node) == kind::IDENTIFIER && !node.is_missing() {
         Expr::Conditional(text_of(node, text).to_owned())
     } else {
         Expr::Unknown

@@ -1,5 +1,6 @@
 //! Small helpers over tree-sitter nodes, shared by lowering and checking.
 
+use crate::syntax::{field, kind};
 use tree_sitter::Node;
 
 /// The source text of a node ("" if the range is not in `text`).
@@ -56,7 +57,7 @@ pub fn has_token(node: Node<'_>, kind: &str) -> bool {
 
 /// Is this node a FlexPendant placeholder such as `<SMT>`?
 pub fn is_placeholder(node: Node<'_>) -> bool {
-    node.kind() == "placeholder"
+    node.kind() == kind::PLACEHOLDER
 }
 
 /// A literal aggregate read from the source text: `[...]` nesting number
@@ -303,7 +304,7 @@ pub fn kinds() -> &'static Kinds {
     KINDS.get_or_init(|| {
         let language = crate::syntax::language();
         Kinds {
-            aggregate: language.id_for_node_kind("aggregate", true),
+            aggregate: language.id_for_node_kind(kind::AGGREGATE, true),
         }
     })
 }
@@ -327,9 +328,9 @@ pub fn argument_parts(arg: Node<'_>) -> ArgumentParts<'_> {
     }
     static IDS: std::sync::OnceLock<Ids> = std::sync::OnceLock::new();
     let ids = IDS.get_or_init(|| Ids {
-        name: field_id("name"),
-        value: field_id("value"),
-        conditional: field_id("conditional"),
+        name: field_id(field::NAME),
+        value: field_id(field::VALUE),
+        conditional: field_id(field::CONDITIONAL),
     });
     let mut parts = ArgumentParts::default();
     let mut cursor = arg.walk();
@@ -366,15 +367,15 @@ pub fn argument_parts(arg: Node<'_>) -> ArgumentParts<'_> {
 pub fn is_simple_statement(kind: &str) -> bool {
     matches!(
         kind,
-        "assignment"
-            | "procedure_call"
-            | "goto_statement"
-            | "return_statement"
-            | "raise_statement"
-            | "exit_statement"
-            | "retry_statement"
-            | "trynext_statement"
-            | "connect_statement"
+        kind::ASSIGNMENT
+            | kind::PROCEDURE_CALL
+            | kind::GOTO_STATEMENT
+            | kind::RETURN_STATEMENT
+            | kind::RAISE_STATEMENT
+            | kind::EXIT_STATEMENT
+            | kind::RETRY_STATEMENT
+            | kind::TRYNEXT_STATEMENT
+            | kind::CONNECT_STATEMENT
     )
 }
 
@@ -383,11 +384,11 @@ pub fn is_simple_statement(kind: &str) -> bool {
 pub fn is_compound_statement(kind: &str) -> bool {
     matches!(
         kind,
-        "if_statement"
-            | "compact_if_statement"
-            | "for_statement"
-            | "while_statement"
-            | "test_statement"
+        kind::IF_STATEMENT
+            | kind::COMPACT_IF_STATEMENT
+            | kind::FOR_STATEMENT
+            | kind::WHILE_STATEMENT
+            | kind::TEST_STATEMENT
     )
 }
 

@@ -9,6 +9,7 @@ use super::{
 };
 use crate::items::{RoutineDecl, Storage};
 use crate::lower::{conditional, lower};
+use crate::syntax::{field, kind};
 use crate::syntax_util::{argument_parts, field, fields, kind, text_of};
 use crate::task::Unit;
 
@@ -37,12 +38,12 @@ pub fn lower_routine(unit: &Unit, routine: &RoutineDecl) -> Option<Body> {
             return None;
         }
     }
-    let items = fields(node, "body");
+    let items = fields(node, field::BODY);
     let b = Builder { text: &unit.text };
     let mut data = Vec::new();
     let mut stmts = Vec::new();
     for item in items {
-        if kind(item) == "data_declaration" {
+        if kind(item) == kind::DATA_DECLARATION {
             data.extend(b.data(item));
         } else {
             stmts.push(b.stmt(item, 0));
@@ -60,11 +61,14 @@ pub fn lower_routine(unit: &Unit, routine: &RoutineDecl) -> Option<Body> {
         range,
         data,
         stmts,
-        backward: handler("backward"),
-        undo: handler("undo"),
-        error: field(node, "error").map(|h| ErrorHandler {
+        backward: handler(field::BACKWARD),
+        undo: handler(field::UNDO),
+        error: field(node, field::ERROR).map(|h| ErrorHandler {
             range: h.byte_range(),
-            errors: fields(h, "error").into_iter().map(|e| b.expr(e)).collect(),
+            errors: fields(h, field::ERROR)
+                .into_iter()
+                .map(|e| b.expr(e))
+                .collect(),
             stmts: b.list(h, 0),
         }),
     })
@@ -73,7 +77,7 @@ pub fn lower_routine(unit: &Unit, routine: &RoutineDecl) -> Option<Body> {
 fn is_routine(node: Node<'_>) -> bool {
     matches!(
         kind(node),
-        "procedure_declaration" | "function_declaration" | "trap_declaration"
+        kind::PROCEDURE_DECLARATION | kind::FUNCTION_DECLARATION | kind::TRAP_DECLARATION
     )
 }
 
@@ -146,29 +150,29 @@ impl Builder<'_> {
 
     fn name(&self, node: Node<'_>, name: &str) -> Option<(String, std::ops::Range<usize>)> {
         field(node, name)
-            .filter(|n| kind(*n) == "identifier" && !n.is_missing())
+            .filter(|n| kind(*n) == kind::IDENTIFIER && !n.is_missing())
             .map(|n| (text_of(n, self.text).to_owned(), n.byte_range()))
     }
 
     /// The statements in the `body` fields of `node`.
     fn list(&self, node: Node<'_>, depth: u32) -> Vec<Stmt> {
-        fields(node, "body")
+        fields(node, field::BODY)
             .into_iter()
-            .filter(|n| kind(*n) != "data_declaration")
+            .filter(|n| kind(*n) != kind::DATA_DECLARATION)
             .map(|n| self.stmt(n, depth))
             .collect()
     }
 
     fn data(&self, node: Node<'_>) -> Option<LocalData> {
-        let (name, name_range) = self.name(node, "name")?;
-        let storage = match field(node, "storage").map(kind) {
+        let (name, name_range) = self.name(node, field::NAME)?;
+        let storage = match field(node, field::STORAGE).map(kind) {
             Some("pers") => Storage::Pers,
             Some("const") => Storage::Const,
             _ => Storage::Var,
         };
-        let dims = field(node, "dimensions")
+        let dims = field(node, field::DIMENSIONS)
             .map(|d| {
-                fields(d, "dimension")
+                fields(d, field::DIMENSION)
                     .into_iter()
                     .map(|e| self.expr(e))
                     .collect()
@@ -179,11 +183,11 @@ impl Builder<'_> {
             name_range,
             range: node.byte_range(),
             storage,
-            ty: field(node, "type")
+            ty: field(node, field::TYPE)
                 .map(|t| text_of(t, self.text).to_owned())
                 .unwrap_or_default(),
             dims,
-            init: self.opt_expr(node, "value"),
+            init: self.opt_expr(node, field::VALUE),
         })
     }
 
@@ -199,27 +203,27 @@ impl Builder<'_> {
 
     fn stmt_kind(&self, node: Node<'_>, depth: u32) -> StmtKind {
         match kind(node) {
-            "assignment" => StmtKind::Assign {
-                target: self.req_expr(node, "left"),
-                value: self.req_expr(node, "right"),
+            kind::ASSIGNMENT => StmtKind::Assign {
+                target: self.req_expr(node, field::LEFT),
+                value: self.req_expr(node, field::RIGHT),
             },
-            "procedure_call" => match self.call(node) {
+            kind::PROCEDURE_CALL => match self.call(node) {
                 Some(c) => StmtKind::Call(c),
                 None => StmtKind::Invalid,
             },
-            "if_statement" => {
+            kind::IF_STATEMENT => {
                 let mut branches = vec![Branch {
-                    cond: self.req_expr(node, "condition"),
+                    cond: self.req_expr(node, field::CONDITION),
                     body: self.list(node, depth),
                 }];
                 let mut otherwise = None;
-                for alt in fields(node, "alternative") {
+                for alt in fields(node, field::ALTERNATIVE) {
                     match kind(alt) {
-                        "elseif_clause" => branches.push(Branch {
-                            cond: self.req_expr(alt, "condition"),
+                        kind::ELSEIF_CLAUSE => branches.push(Branch {
+                            cond: self.req_expr(alt, field::CONDITION),
                             body: self.list(alt, depth),
                         }),
-                        "else_clause" => otherwise = Some(self.list(alt, depth)),
+                        kind::ELSE_CLAUSE => otherwise = Some(self.list(alt, depth)),
                         // `<EIT>`: a branch nobody wrote yet.
                         _ => branches.push(Branch {
                             cond: Expr::Unknown,
@@ -236,62 +240,62 @@ impl Builder<'_> {
                     compact: false,
                 }
             }
-            "compact_if_statement" => StmtKind::If {
+            kind::COMPACT_IF_STATEMENT => StmtKind::If {
                 branches: vec![Branch {
-                    cond: self.req_expr(node, "condition"),
-                    body: field(node, "body")
+                    cond: self.req_expr(node, field::CONDITION),
+                    body: field(node, field::BODY)
                         .map(|b| vec![self.stmt(b, depth)])
                         .unwrap_or_default(),
                 }],
                 otherwise: None,
                 compact: true,
             },
-            "for_statement" => match self.name(node, "variable") {
+            kind::FOR_STATEMENT => match self.name(node, field::VARIABLE) {
                 Some((var, var_range)) => StmtKind::For {
                     var,
                     var_range,
-                    from: self.req_expr(node, "from"),
-                    to: self.req_expr(node, "to"),
-                    step: self.opt_expr(node, "step"),
+                    from: self.req_expr(node, field::FROM),
+                    to: self.req_expr(node, field::TO),
+                    step: self.opt_expr(node, field::STEP),
                     body: self.list(node, depth),
                 },
                 None => StmtKind::Invalid,
             },
-            "while_statement" => StmtKind::While {
-                cond: self.req_expr(node, "condition"),
+            kind::WHILE_STATEMENT => StmtKind::While {
+                cond: self.req_expr(node, field::CONDITION),
                 body: self.list(node, depth),
             },
-            "test_statement" => StmtKind::Test {
-                value: self.req_expr(node, "value"),
-                cases: fields(node, "case")
+            kind::TEST_STATEMENT => StmtKind::Test {
+                value: self.req_expr(node, field::VALUE),
+                cases: fields(node, field::CASE)
                     .into_iter()
                     .map(|c| Case {
                         range: c.byte_range(),
-                        values: fields(c, "value")
+                        values: fields(c, field::VALUE)
                             .into_iter()
                             .map(|v| self.expr(v))
                             .collect(),
                         body: self.list(c, depth),
                     })
                     .collect(),
-                default: field(node, "default").map(|d| self.list(d, depth)),
+                default: field(node, field::DEFAULT).map(|d| self.list(d, depth)),
             },
-            "label" => match self.name(node, "name") {
+            kind::LABEL => match self.name(node, field::NAME) {
                 Some((n, _)) => StmtKind::Label(n),
                 None => StmtKind::Invalid,
             },
-            "goto_statement" => match self.name(node, "label") {
+            kind::GOTO_STATEMENT => match self.name(node, field::LABEL) {
                 Some((n, _)) => StmtKind::Goto(n),
                 None => StmtKind::Invalid,
             },
-            "return_statement" => StmtKind::Return(self.opt_expr(node, "value")),
-            "raise_statement" => StmtKind::Raise(self.opt_expr(node, "value")),
-            "exit_statement" => StmtKind::Exit,
-            "retry_statement" => StmtKind::Retry,
-            "trynext_statement" => StmtKind::TryNext,
-            "connect_statement" => match self.name(node, "trap") {
+            kind::RETURN_STATEMENT => StmtKind::Return(self.opt_expr(node, field::VALUE)),
+            kind::RAISE_STATEMENT => StmtKind::Raise(self.opt_expr(node, field::VALUE)),
+            kind::EXIT_STATEMENT => StmtKind::Exit,
+            kind::RETRY_STATEMENT => StmtKind::Retry,
+            kind::TRYNEXT_STATEMENT => StmtKind::TryNext,
+            kind::CONNECT_STATEMENT => match self.name(node, field::TRAP) {
                 Some((trap, trap_range)) => StmtKind::Connect {
-                    interrupt: self.req_expr(node, "interrupt"),
+                    interrupt: self.req_expr(node, field::INTERRUPT),
                     trap,
                     trap_range,
                 },
@@ -302,15 +306,17 @@ impl Builder<'_> {
     }
 
     fn call(&self, node: Node<'_>) -> Option<Call> {
-        let name = field(node, "name")?;
+        let name = field(node, field::NAME)?;
         let callee = match kind(name) {
-            "identifier" if !name.is_missing() => Callee::Name(text_of(name, self.text).to_owned()),
-            "late_binding" => Callee::Late(self.req_expr(name, "expression")),
+            kind::IDENTIFIER if !name.is_missing() => {
+                Callee::Name(text_of(name, self.text).to_owned())
+            }
+            kind::LATE_BINDING => Callee::Late(self.req_expr(name, field::EXPRESSION)),
             _ => return None,
         };
-        let args = field(node, "arguments")
+        let args = field(node, field::ARGUMENTS)
             .map(|list| {
-                fields(list, "argument")
+                fields(list, field::ARGUMENT)
                     .into_iter()
                     .map(|a| self.argument(a))
                     .collect()
@@ -327,7 +333,7 @@ impl Builder<'_> {
         let parts = argument_parts(node);
         let name = parts
             .name
-            .filter(|n| kind(*n) == "identifier" && !n.is_missing())
+            .filter(|n| kind(*n) == kind::IDENTIFIER && !n.is_missing())
             .map(|n| text_of(n, self.text).to_owned());
         let broken = parts.name.is_some() && name.is_none();
         let value = if broken || node.has_error() {
@@ -338,7 +344,7 @@ impl Builder<'_> {
                 _ => ArgValue::Invalid,
             }
         } else if let Some(v) = parts.value {
-            if kind(v) == "star" {
+            if kind(v) == kind::STAR {
                 ArgValue::Star
             } else {
                 ArgValue::Expr(self.expr(v))

@@ -9,6 +9,7 @@ use super::HoverResult;
 use super::resolve::{Def, name_at, resolve};
 use crate::catalogue::{Availability, Catalogue, Origin, Version};
 use crate::items::RoutineKind;
+use crate::syntax::{field, kind};
 use crate::task::{Item, Task};
 
 /// Longest declaration text shown before it is shortened.
@@ -59,7 +60,7 @@ pub fn hover(task: &Task, unit: usize, offset: usize) -> Option<HoverResult> {
     let mut at = root.descendant_for_byte_range(offset, offset);
     let mut outermost = None;
     while let Some(n) = at {
-        if n.kind() == "aggregate" {
+        if n.kind() == kind::AGGREGATE {
             outermost = Some(n);
         }
         at = n.parent();
@@ -390,14 +391,14 @@ fn robtarget_of_def(task: &Task, def: &Def<'_>) -> Option<String> {
         .tree()
         .root_node()
         .named_descendant_for_byte_range(init.start, init.end)?;
-    (node.kind() == "aggregate").then_some(())?;
+    (node.kind() == kind::AGGREGATE).then_some(())?;
     decode_robtarget(node, &u.text)
 }
 
 /// The numbers of an aggregate's elements (each a number, maybe negated).
 fn numbers(node: Node<'_>, text: &str) -> Option<Vec<f64>> {
     let mut cursor = node.walk();
-    node.children_by_field_name("element", &mut cursor)
+    node.children_by_field_name(field::ELEMENT, &mut cursor)
         .map(|e| {
             let t: String = text.get(e.byte_range())?.split_whitespace().collect();
             let t = t.replace("+", "");
@@ -414,9 +415,9 @@ fn numbers(node: Node<'_>, text: &str) -> Option<Vec<f64>> {
 pub(crate) fn decode_robtarget(node: Node<'_>, text: &str) -> Option<String> {
     let mut cursor = node.walk();
     let parts: Vec<Node<'_>> = node
-        .children_by_field_name("element", &mut cursor)
+        .children_by_field_name(field::ELEMENT, &mut cursor)
         .collect();
-    if parts.len() != 4 || parts.iter().any(|p| p.kind() != "aggregate") {
+    if parts.len() != 4 || parts.iter().any(|p| p.kind() != kind::AGGREGATE) {
         return None;
     }
     let trans = numbers(parts[0], text)?;

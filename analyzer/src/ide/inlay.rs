@@ -9,6 +9,7 @@ use super::signature::sig_of;
 use super::tokens::Scopes;
 use super::{InlayHint, InlayKind};
 use crate::names::same;
+use crate::syntax::{field, kind};
 use crate::syntax_util::walk_pruned;
 use crate::task::Task;
 
@@ -67,18 +68,18 @@ pub fn inlay_hints(
             return false;
         }
         match n.kind() {
-            "procedure_call" | "function_call" if parameters != ParameterHints::None => {
+            kind::PROCEDURE_CALL | kind::FUNCTION_CALL if parameters != ParameterHints::None => {
                 calls.push(n);
             }
-            "data_declaration" => consts.push(n),
+            kind::DATA_DECLARATION => consts.push(n),
             _ => {}
         }
         true
     });
     for call in calls {
         let (Some(name), Some(args)) = (
-            call.child_by_field_name("name"),
-            call.child_by_field_name("arguments"),
+            call.child_by_field_name(field::NAME),
+            call.child_by_field_name(field::ARGUMENTS),
         ) else {
             continue;
         };
@@ -88,17 +89,17 @@ pub fn inlay_hints(
         let Some(cx) = scopes.at(call.start_byte()) else {
             continue;
         };
-        let Some(sym) = cx.resolve_routine(name_text, call.kind() == "function_call") else {
+        let Some(sym) = cx.resolve_routine(name_text, call.kind() == kind::FUNCTION_CALL) else {
             continue;
         };
         let sig = sig_of(sym);
         let mut cursor = args.walk();
         let args: Vec<Node<'_>> = args
-            .children_by_field_name("argument", &mut cursor)
+            .children_by_field_name(field::ARGUMENT, &mut cursor)
             .collect();
         let named: Vec<&str> = args
             .iter()
-            .filter_map(|a| a.child_by_field_name("name"))
+            .filter_map(|a| a.child_by_field_name(field::NAME))
             .filter_map(|n| text.get(n.byte_range()))
             .collect();
         let mut required = sig
@@ -109,13 +110,13 @@ pub fn inlay_hints(
             continue;
         }
         for a in args {
-            if a.child_by_field_name("name").is_some() || is_optional(a) {
+            if a.child_by_field_name(field::NAME).is_some() || is_optional(a) {
                 continue;
             }
             let Some(p) = required.next() else {
                 break;
             };
-            let Some(value) = a.child_by_field_name("value") else {
+            let Some(value) = a.child_by_field_name(field::VALUE) else {
                 continue;
             };
             let v = text.get(value.byte_range()).unwrap_or_default();
@@ -134,10 +135,10 @@ pub fn inlay_hints(
         }
     }
     for decl in consts {
-        if decl.child_by_field_name("storage").map(|s| s.kind()) != Some("const") {
+        if decl.child_by_field_name(field::STORAGE).map(|s| s.kind()) != Some("const") {
             continue;
         }
-        let Some(value) = decl.child_by_field_name("value") else {
+        let Some(value) = decl.child_by_field_name(field::VALUE) else {
             continue;
         };
         if is_literal(value) {
@@ -163,12 +164,12 @@ pub fn inlay_hints(
 /// what it is without a hint.
 fn names_itself(value: Node<'_>) -> bool {
     match value.kind() {
-        "identifier" => true,
-        "component_access" | "index_expression" => value
-            .child_by_field_name("object")
+        kind::IDENTIFIER => true,
+        kind::COMPONENT_ACCESS | kind::INDEX_EXPRESSION => value
+            .child_by_field_name(field::OBJECT)
             .is_some_and(names_itself),
-        "parenthesized_expression" => value
-            .child_by_field_name("expression")
+        kind::PARENTHESIZED_EXPRESSION => value
+            .child_by_field_name(field::EXPRESSION)
             .is_some_and(names_itself),
         _ => false,
     }
@@ -182,13 +183,13 @@ fn is_optional(arg: Node<'_>) -> bool {
 /// A literal, or an aggregate of literals: its value reads as its text.
 pub(crate) fn is_literal(n: Node<'_>) -> bool {
     match n.kind() {
-        "number" | "string" | "boolean" => true,
-        "unary_expression" => n
-            .child_by_field_name("operand")
-            .is_some_and(|o| o.kind() == "number"),
-        "aggregate" => {
+        kind::NUMBER | kind::STRING | kind::BOOLEAN => true,
+        kind::UNARY_EXPRESSION => n
+            .child_by_field_name(field::OPERAND)
+            .is_some_and(|o| o.kind() == kind::NUMBER),
+        kind::AGGREGATE => {
             let mut cursor = n.walk();
-            n.children_by_field_name("element", &mut cursor)
+            n.children_by_field_name(field::ELEMENT, &mut cursor)
                 .all(is_literal)
         }
         _ => false,

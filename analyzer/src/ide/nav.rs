@@ -10,6 +10,7 @@ use super::resolve::{
 use crate::check::Cx;
 use crate::diagnostic::Edit;
 use crate::names::{fold, same};
+use crate::syntax::{field, kind};
 use crate::task::{Item, Task};
 
 fn location(task: &Task, def: &Def<'_>) -> Option<Location> {
@@ -139,7 +140,7 @@ pub(crate) fn uses(
             };
             let is_label = matches!(
                 (parent.kind(), field),
-                ("label", Some("name")) | ("goto_statement", Some("label"))
+                (kind::LABEL, Some(field::NAME)) | (kind::GOTO_STATEMENT, Some(field::LABEL))
             );
             let routine = cx.routine.as_ref().map(|r| r.decl.range.start);
             let d = match (&label, routine) {
@@ -179,8 +180,8 @@ pub(crate) fn uses(
 fn for_vars_around(path: &NamePath<'_>, text: &str) -> Vec<String> {
     path.iter()
         .rev()
-        .filter(|(n, _)| n.kind() == "for_statement")
-        .filter_map(|(n, _)| n.child_by_field_name("variable"))
+        .filter(|(n, _)| n.kind() == kind::FOR_STATEMENT)
+        .filter_map(|(n, _)| n.child_by_field_name(field::VARIABLE))
         .filter_map(|v| text.get(v.byte_range()))
         .map(fold)
         .collect()
@@ -195,15 +196,15 @@ fn is_write(path: &NamePath<'_>) -> bool {
     let Some(&(parent, _)) = up.last() else {
         return false;
     };
-    if field == Some("name")
+    if field == Some(field::NAME)
         && matches!(
             parent.kind(),
-            "data_declaration" | "parameter" | "record_component"
+            kind::DATA_DECLARATION | kind::PARAMETER | kind::RECORD_COMPONENT
         )
     {
         return true;
     }
-    if parent.kind() == "for_statement" && field == Some("variable") {
+    if parent.kind() == kind::FOR_STATEMENT && field == Some(field::VARIABLE) {
         return true;
     }
     // The root object of an assignment's left side.
@@ -212,8 +213,8 @@ fn is_write(path: &NamePath<'_>) -> bool {
             return false;
         };
         match (p.kind(), f) {
-            ("assignment", Some("left")) => return true,
-            ("component_access" | "index_expression", Some("object")) => {}
+            (kind::ASSIGNMENT, Some(field::LEFT)) => return true,
+            (kind::COMPONENT_ACCESS | kind::INDEX_EXPRESSION, Some(field::OBJECT)) => {}
             _ => return false,
         }
     }
@@ -236,9 +237,9 @@ impl ArgLists {
             self.positional.clear();
             self.named.clear();
             let mut k = 0;
-            for a in crate::syntax_util::fields(list, "argument") {
+            for a in crate::syntax_util::fields(list, field::ARGUMENT) {
                 match a
-                    .child_by_field_name("name")
+                    .child_by_field_name(field::NAME)
                     .and_then(|n| text.get(n.byte_range()))
                 {
                     Some(name) => self.named.push(name.to_owned()),
@@ -264,8 +265,8 @@ fn passed_by_reference(cx: &mut Cx<'_>, path: &NamePath<'_>, lists: &mut ArgList
             return false;
         };
         match (p.kind(), f) {
-            ("argument", Some("value")) => break i - 1,
-            ("component_access" | "index_expression", Some("object")) => i -= 1,
+            (kind::ARGUMENT, Some(field::VALUE)) => break i - 1,
+            (kind::COMPONENT_ACCESS | kind::INDEX_EXPRESSION, Some(field::OBJECT)) => i -= 1,
             _ => return false,
         }
     };
@@ -276,7 +277,7 @@ fn passed_by_reference(cx: &mut Cx<'_>, path: &NamePath<'_>, lists: &mut ArgList
     ) else {
         return false;
     };
-    if !matches!(call.kind(), "procedure_call" | "function_call") {
+    if !matches!(call.kind(), kind::PROCEDURE_CALL | kind::FUNCTION_CALL) {
         return false;
     }
     let Some(sym) = super::resolve::call_routine(cx, call) else {
@@ -285,7 +286,7 @@ fn passed_by_reference(cx: &mut Cx<'_>, path: &NamePath<'_>, lists: &mut ArgList
     let sig = super::signature::sig_of(sym);
     let text = cx.text;
     let param = match arg
-        .child_by_field_name("name")
+        .child_by_field_name(field::NAME)
         .and_then(|n| text.get(n.byte_range()))
     {
         Some(name) => sig.params.iter().find(|p| same(&p.name, name)),

@@ -9,6 +9,7 @@ use crate::catalogue::{DataType, Datum, Routine};
 use crate::check::{Cx, DataSym, RoutineSym};
 use crate::items::{DataDecl, ParamDecl, RoutineDecl};
 use crate::names::{fold, same};
+use crate::syntax::{field, kind};
 use crate::task::{Item, ItemRef, Task};
 use crate::ty::{Ty, UserType};
 
@@ -168,7 +169,7 @@ impl Def<'_> {
 
 /// Is this node a name (an identifier of any role)?
 pub(crate) fn is_name(node: Node<'_>) -> bool {
-    matches!(node.kind(), "identifier" | "type_identifier")
+    matches!(node.kind(), kind::IDENTIFIER | kind::TYPE_IDENTIFIER)
 }
 
 /// The name node at `offset`, also when the cursor is just after it.
@@ -202,17 +203,17 @@ pub(crate) fn field_in_parent<'a>(node: Node<'a>) -> Option<&'a str> {
 pub(crate) fn call_of_argument(arg: Node<'_>) -> Option<Node<'_>> {
     let list = arg.parent()?;
     let call = list.parent()?;
-    matches!(call.kind(), "procedure_call" | "function_call").then_some(call)
+    matches!(call.kind(), kind::PROCEDURE_CALL | kind::FUNCTION_CALL).then_some(call)
 }
 
 /// Resolves the routine named by a call node.
 pub(crate) fn call_routine<'t>(cx: &mut Cx<'t>, call: Node<'_>) -> Option<RoutineSym<'t>> {
-    let name = call.child_by_field_name("name")?;
-    if name.kind() != "identifier" {
+    let name = call.child_by_field_name(field::NAME)?;
+    if name.kind() != kind::IDENTIFIER {
         return None;
     }
     let text = cx.text.get(name.byte_range())?;
-    cx.resolve_routine(text, call.kind() == "function_call")
+    cx.resolve_routine(text, call.kind() == kind::FUNCTION_CALL)
 }
 
 /// Resolves the name node `node` of unit `unit`.
@@ -248,15 +249,15 @@ pub(crate) fn resolve_at<'t>(
         RoutineSym::Builtin(r, _) => Def::BuiltinRoutine(r),
     };
     match (parent.kind(), field) {
-        ("procedure_call" | "function_call", Some("name")) => {
+        (kind::PROCEDURE_CALL | kind::FUNCTION_CALL, Some(field::NAME)) => {
             return cx
-                .resolve_routine(&name, parent.kind() == "function_call")
+                .resolve_routine(&name, parent.kind() == kind::FUNCTION_CALL)
                 .map(routine_sym);
         }
-        ("connect_statement", Some("trap")) => {
+        (kind::CONNECT_STATEMENT, Some(field::TRAP)) => {
             return cx.resolve_routine(&name, false).map(routine_sym);
         }
-        ("module", Some("name")) => {
+        (kind::MODULE, Some(field::NAME)) => {
             let module = cx
                 .unit
                 .items
@@ -265,7 +266,7 @@ pub(crate) fn resolve_at<'t>(
                 .position(|m| m.name_range == node.byte_range())?;
             return Some(Def::Module { unit, module });
         }
-        ("parameter", Some("name")) => {
+        (kind::PARAMETER, Some(field::NAME)) => {
             let routine = cx.routine.as_ref()?.decl;
             let decl = routine
                 .params
@@ -277,7 +278,7 @@ pub(crate) fn resolve_at<'t>(
                 routine,
             });
         }
-        ("data_declaration", Some("name")) => {
+        (kind::DATA_DECLARATION, Some(field::NAME)) => {
             if let Some(r) = &cx.routine
                 && r.decl.range.start <= parent.start_byte()
                 && parent.end_byte() <= r.decl.range.end
@@ -292,16 +293,16 @@ pub(crate) fn resolve_at<'t>(
             return item_declared_at(task, unit, &name, node.byte_range()).map(Def::Item);
         }
         (
-            "procedure_declaration"
-            | "function_declaration"
-            | "trap_declaration"
-            | "record_declaration"
-            | "alias_declaration",
-            Some("name"),
+            kind::PROCEDURE_DECLARATION
+            | kind::FUNCTION_DECLARATION
+            | kind::TRAP_DECLARATION
+            | kind::RECORD_DECLARATION
+            | kind::ALIAS_DECLARATION,
+            Some(field::NAME),
         ) => return item_declared_at(task, unit, &name, node.byte_range()).map(Def::Item),
-        ("record_component", Some("name")) => {
+        (kind::RECORD_COMPONENT, Some(field::NAME)) => {
             let rec = parent.parent()?;
-            let rname = rec.child_by_field_name("name")?;
+            let rname = rec.child_by_field_name(field::NAME)?;
             let rname_text = cx.text.get(rname.byte_range())?.to_owned();
             let r = item_declared_at(task, unit, &rname_text, rname.byte_range())?;
             let i = task
@@ -311,12 +312,12 @@ pub(crate) fn resolve_at<'t>(
                 .position(|c| c.2 == node.byte_range())?;
             return Some(Def::Component(r, i));
         }
-        ("component_access", Some("component")) => {
-            let obj = parent.child_by_field_name("object")?;
+        (kind::COMPONENT_ACCESS, Some(field::COMPONENT)) => {
+            let obj = parent.child_by_field_name(field::OBJECT)?;
             let ty = cx.type_of_expr(obj);
             return component_def(cx, &ty, &name);
         }
-        ("argument", Some("name")) => {
+        (kind::ARGUMENT, Some(field::NAME)) => {
             let call = call_of_argument(parent)?;
             return match call_routine(cx, call)? {
                 RoutineSym::User(decl, r) => {
@@ -333,7 +334,7 @@ pub(crate) fn resolve_at<'t>(
                 }
             };
         }
-        ("label", Some("name")) | ("goto_statement", Some("label")) => {
+        (kind::LABEL, Some(field::NAME)) | (kind::GOTO_STATEMENT, Some(field::LABEL)) => {
             let routine = cx.routine.as_ref()?.decl;
             let root = cx.unit.tree().root_node();
             let rnode =
@@ -344,7 +345,7 @@ pub(crate) fn resolve_at<'t>(
                 .1;
             return Some(Def::Label { unit, name, range });
         }
-        ("for_statement", Some("variable")) => {
+        (kind::FOR_STATEMENT, Some(field::VARIABLE)) => {
             return Some(Def::ForVar {
                 unit,
                 name,
@@ -353,7 +354,7 @@ pub(crate) fn resolve_at<'t>(
         }
         _ => {}
     }
-    if node.kind() == "type_identifier" || field == Some("type") {
+    if node.kind() == kind::TYPE_IDENTIFIER || field == Some(field::TYPE) {
         return type_def(cx, &name);
     }
     match cx.resolve_data(&name)? {
@@ -370,9 +371,9 @@ pub(crate) fn resolve_at<'t>(
         DataSym::Module(_, r) => Some(Def::Item(r)),
         DataSym::ForVar => {
             let loop_of = |n: Node<'t>| {
-                let v = n.child_by_field_name("variable")?;
+                let v = n.child_by_field_name(field::VARIABLE)?;
                 let spelt = cx.text.get(v.byte_range())?;
-                (n.kind() == "for_statement" && same(spelt, &name)).then(|| Def::ForVar {
+                (n.kind() == kind::FOR_STATEMENT && same(spelt, &name)).then(|| Def::ForVar {
                     unit,
                     name: spelt.to_owned(),
                     range: v.byte_range(),

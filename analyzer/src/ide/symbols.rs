@@ -4,6 +4,7 @@ use std::sync::Arc;
 
 use super::{Symbol, SymbolKind};
 use crate::items::{DataDecl, Module, RoutineKind, Storage};
+use crate::syntax::{field, kind};
 use crate::syntax_util::fields;
 use crate::task::{Task, Unit};
 
@@ -98,9 +99,9 @@ fn routine_data(unit: &Unit, range: &std::ops::Range<usize>) -> Vec<Symbol> {
     let Some(node) = root.named_descendant_for_byte_range(range.start, range.end) else {
         return Vec::new();
     };
-    fields(node, "body")
+    fields(node, field::BODY)
         .into_iter()
-        .filter(|n| n.kind() == "data_declaration")
+        .filter(|n| n.kind() == kind::DATA_DECLARATION)
         .filter_map(|n| crate::items::lower_data(n, &unit.text))
         .map(|d| data_symbol(&d))
         .collect()

@@ -102,7 +102,7 @@ pub fn syntax_diagnostics(tree: &Tree, text: &str) -> Vec<Diagnostic> {
 /// this is the only diagnostic.
 fn no_module(root: Node<'_>, text: &str) -> Option<Diagnostic> {
     let mut cursor = root.walk();
-    if root.children(&mut cursor).any(|c| c.kind() == "module") {
+    if root.children(&mut cursor).any(|c| c.kind() == kind::MODULE) {
         return None;
     }
     // A `MODULE` the parser could not make a module of: its errors say why.
@@ -127,7 +127,7 @@ fn no_module(root: Node<'_>, text: &str) -> Option<Diagnostic> {
         if first.is_some() {
             return false;
         }
-        if n.kind() == "comment" {
+        if n.kind() == kind::COMMENT {
             return false;
         }
         if n.child_count() == 0 && n.end_byte() > n.start_byte() {
@@ -164,10 +164,10 @@ fn equals_for_assignment(error: Node<'_>, text: &str) -> Vec<Diagnostic> {
     let is_equals = |n: &Node<'_>| !n.is_named() && n.kind() == "=";
     if let Some(first) = children.first().filter(|n| is_equals(n))
         && let Some(prev) = previous_leaf(error)
-        && prev.kind() == "identifier"
+        && prev.kind() == kind::IDENTIFIER
         && let Some(parent) = prev.parent()
-        && (parent.kind() == "data_declaration"
-            || (parent.kind() == "procedure_call" && starts_line(prev, text)))
+        && (parent.kind() == kind::DATA_DECLARATION
+            || (parent.kind() == kind::PROCEDURE_CALL && starts_line(prev, text)))
     {
         out.push(equals_for_assignment::diagnostic(first.byte_range()));
         return out;
@@ -177,7 +177,7 @@ fn equals_for_assignment(error: Node<'_>, text: &str) -> Vec<Diagnostic> {
         if is_equals(eq)
             && matches!(
                 place.kind(),
-                "identifier" | "component_access" | "index_expression"
+                kind::IDENTIFIER | kind::COMPONENT_ACCESS | kind::INDEX_EXPRESSION
             )
             && starts_line(*place, text)
         {
@@ -235,7 +235,7 @@ fn expected_before(error: Node<'_>, language: &Language) -> Option<String> {
         .filter(|&id| language.node_kind_is_visible(id) && id != 0)
         .filter_map(|id| {
             let kind = language.node_kind_for_id(id)?;
-            (kind != "ERROR" && kind != "comment").then(|| describe_symbol(language, id, kind))
+            (kind != "ERROR" && kind != kind::COMMENT).then(|| describe_symbol(language, id, kind))
         })
         .collect();
     names.sort();

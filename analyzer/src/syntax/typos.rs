@@ -13,6 +13,7 @@ use tree_sitter::{Language, Node};
 
 use crate::diagnostic::Diagnostic;
 use crate::rules::{missing_token, syntax_error};
+use crate::syntax::{field, kind};
 
 /// Strings that a line opens and does not close (RAPID strings end on the
 /// line they start): the opening quote and the end of its line, for lines
@@ -144,14 +145,14 @@ fn missing_then_before(error: Node<'_>, text: &str) -> Option<Diagnostic> {
     }
     let mut at = error.prev_named_sibling();
     while let Some(n) = at {
-        if n.kind() != "comment" {
+        if n.kind() != kind::COMMENT {
             break;
         }
         at = n.prev_named_sibling();
     }
-    let compact = at.filter(|n| n.kind() == "compact_if_statement")?;
-    let condition = compact.child_by_field_name("condition")?;
-    let body = compact.child_by_field_name("body")?;
+    let compact = at.filter(|n| n.kind() == kind::COMPACT_IF_STATEMENT)?;
+    let condition = compact.child_by_field_name(field::CONDITION)?;
+    let body = compact.child_by_field_name(field::BODY)?;
     if body.start_position().row <= condition.end_position().row {
         return None;
     }
@@ -166,14 +167,20 @@ fn in_statement(leaf: Node<'_>) -> bool {
     let mut at = leaf.parent();
     while let Some(n) = at {
         match n.kind() {
-            "data_declaration" | "record_component" | "alias_declaration" | "assignment"
-            | "procedure_call" | "goto_statement" | "return_statement" | "raise_statement"
-            | "connect_statement" => return true,
-            "module"
-            | "procedure_declaration"
-            | "function_declaration"
-            | "trap_declaration"
-            | "source_file" => return false,
+            kind::DATA_DECLARATION
+            | kind::RECORD_COMPONENT
+            | kind::ALIAS_DECLARATION
+            | kind::ASSIGNMENT
+            | kind::PROCEDURE_CALL
+            | kind::GOTO_STATEMENT
+            | kind::RETURN_STATEMENT
+            | kind::RAISE_STATEMENT
+            | kind::CONNECT_STATEMENT => return true,
+            kind::MODULE
+            | kind::PROCEDURE_DECLARATION
+            | kind::FUNCTION_DECLARATION
+            | kind::TRAP_DECLARATION
+            | kind::SOURCE_FILE => return false,
             _ => at = n.parent(),
         }
     }
@@ -189,7 +196,7 @@ fn ends_statement(node: Node<'_>) -> bool {
 fn ends_argument(node: Node<'_>) -> bool {
     matches!(
         node.kind(),
-        "identifier" | "number" | "string" | "\"" | ")" | "]" | "}" | "true" | "false"
+        kind::IDENTIFIER | kind::NUMBER | kind::STRING | "\"" | ")" | "]" | "}" | "true" | "false"
     )
 }
 
@@ -200,7 +207,7 @@ fn missing_comma(error: Node<'_>, text: &str) -> Option<Diagnostic> {
     let parent = error.parent()?;
     if !matches!(
         parent.kind(),
-        "procedure_call" | "function_call" | "argument_list" | "argument"
+        kind::PROCEDURE_CALL | kind::FUNCTION_CALL | kind::ARGUMENT_LIST | kind::ARGUMENT
     ) || error.named_child_count() != 1
     {
         return None;
@@ -233,13 +240,13 @@ fn missing_comma(error: Node<'_>, text: &str) -> Option<Diagnostic> {
     }
     // Before the next argument (the error not first on a line of its own).
     let next = error.next_sibling()?;
-    if matches!(next.kind(), "argument_list" | "argument")
+    if matches!(next.kind(), kind::ARGUMENT_LIST | kind::ARGUMENT)
         && !first_leaf(error).is_some_and(starts_statement_line)
         && ends_argument(super::last_leaf(error))
         && blank(error.end_byte()..next.start_byte())
     {
         let first = next.named_child(0).unwrap_or(next);
-        let first = if first.kind() == "argument" {
+        let first = if first.kind() == kind::ARGUMENT {
             first.named_child(0).unwrap_or(first)
         } else {
             first
@@ -271,8 +278,8 @@ fn comma(gap: Range<usize>, before: &str, after: &str) -> Diagnostic {
 
 fn is_routine_name(leaf: Node<'_>) -> bool {
     leaf.parent().is_some_and(|p| {
-        matches!(p.kind(), "procedure_call" | "function_call")
-            && p.child_by_field_name("name")
+        matches!(p.kind(), kind::PROCEDURE_CALL | kind::FUNCTION_CALL)
+            && p.child_by_field_name(field::NAME)
                 .is_some_and(|n| n.id() == leaf.id())
     })
 }
@@ -281,12 +288,12 @@ fn is_routine_name(leaf: Node<'_>) -> bool {
 fn argument_around(leaf: Node<'_>) -> Node<'_> {
     let mut at = leaf;
     while let Some(p) = at.parent() {
-        if p.kind() == "argument" {
+        if p.kind() == kind::ARGUMENT {
             return p;
         }
         if matches!(
             p.kind(),
-            "argument_list" | "procedure_call" | "function_call"
+            kind::ARGUMENT_LIST | kind::PROCEDURE_CALL | kind::FUNCTION_CALL
         ) {
             break;
         }
