@@ -384,6 +384,7 @@ struct Kinds {
 }
 
 fn kinds() -> &'static Kinds {
+    use crate::syntax::kind;
     static KINDS: std::sync::OnceLock<Kinds> = std::sync::OnceLock::new();
     KINDS.get_or_init(|| {
         let language = crate::syntax::language();
@@ -397,26 +398,26 @@ fn kinds() -> &'static Kinds {
         Kinds {
             // Expressions with parts: they stand where `<EXP>` may.
             expressions: ids(&[
-                "binary_expression",
-                "unary_expression",
-                "parenthesized_expression",
-                "function_call",
-                "aggregate",
-                "component_access",
-                "index_expression",
+                kind::BINARY_EXPRESSION,
+                kind::UNARY_EXPRESSION,
+                kind::PARENTHESIZED_EXPRESSION,
+                kind::FUNCTION_CALL,
+                kind::AGGREGATE,
+                kind::COMPONENT_ACCESS,
+                kind::INDEX_EXPRESSION,
             ]),
             statements: ids(&[
-                "assignment",
-                "procedure_call",
-                "if_statement",
-                "compact_if_statement",
-                "for_statement",
-                "while_statement",
-                "test_statement",
-                "return_statement",
-                "raise_statement",
-                "connect_statement",
-                "goto_statement",
+                kind::ASSIGNMENT,
+                kind::PROCEDURE_CALL,
+                kind::IF_STATEMENT,
+                kind::COMPACT_IF_STATEMENT,
+                kind::FOR_STATEMENT,
+                kind::WHILE_STATEMENT,
+                kind::TEST_STATEMENT,
+                kind::RETURN_STATEMENT,
+                kind::RAISE_STATEMENT,
+                kind::CONNECT_STATEMENT,
+                kind::GOTO_STATEMENT,
             ]),
         }
     })

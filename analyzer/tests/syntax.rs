@@ -107,9 +107,11 @@ fn every_kind_and_field_named_in_the_sources_is_the_grammars() {
         found += names::uses(&text).len();
         bad.extend(unknown(&grammar, &name, &text));
     }
-    // The scan finds the forms at all (a scanner that finds nothing passes
-    // vacuously).
-    assert!(found > 200, "only {found} kind and field names found");
+    // The walk reads the sources (the forms themselves are tested on a
+    // sample below; as code moves to the generated constants, fewer
+    // literals remain to find).
+    assert!(files.len() > 50, "only {} source files found", files.len());
+    assert!(found > 0, "no kind or field names found");
     assert!(
         bad.is_empty(),
         "names that are no node kind or field of the grammar \
@@ -136,6 +138,8 @@ fn f(n: Node<'_>) {
         ("module", Some("nam")) => {}
         _ => {}
     }
+    if kind_of(n) == "labl" || field == Some("bdy") {}
+    let e = self.opt_expr(n, "valu");
     let s = "procedure_cal"; // not a kind in any form: not reported
 }
 "#;
@@ -158,6 +162,9 @@ fn f(n: Node<'_>) {
             (10, Role::Kind, "whle_statement"),
             (14, Role::KindOrField, "module"),
             (14, Role::KindOrField, "nam"),
+            (17, Role::Kind, "labl"),
+            (17, Role::Field, "bdy"),
+            (18, Role::Field, "valu"),
         ]
     );
     assert_eq!(
@@ -169,6 +176,9 @@ fn f(n: Node<'_>) {
             r#"sample.rs:7: Field "argumnts""#,
             r#"sample.rs:10: Kind "whle_statement""#,
             r#"sample.rs:14: KindOrField "nam""#,
+            r#"sample.rs:17: Kind "labl""#,
+            r#"sample.rs:17: Field "bdy""#,
+            r#"sample.rs:18: Field "valu""#,
         ]
     );
 }

@@ -7,6 +7,7 @@ use tree_sitter::Node;
 
 use super::{Cx, RoutineCx, exprs};
 use crate::names::{NameMap, fold};
+use crate::syntax::{field, kind};
 use crate::task::{Task, Unit};
 use crate::ty::Ty;
 
@@ -45,11 +46,11 @@ impl<'t> Cx<'t> {
         // Routine data comes before the first statement: stop there, so that
         // entering a long routine costs its declarations, not its statements
         // (constant evaluation enters the scope once per statement).
-        if let Some(body) = crate::syntax_util::field_id("body") {
+        if let Some(body) = crate::syntax_util::field_id(field::BODY) {
             let mut cursor = node.walk();
             for item in node
                 .children_by_field_id(body, &mut cursor)
-                .take_while(|n| crate::syntax_util::kind(*n) == "data_declaration")
+                .take_while(|n| crate::syntax_util::kind(*n) == kind::DATA_DECLARATION)
             {
                 if let Some(d) = crate::items::lower_data(item, &u.text) {
                     locals.entry(fold(&d.name)).or_insert(d);
@@ -62,8 +63,8 @@ impl<'t> Cx<'t> {
             if n.id() == node.id() {
                 break;
             }
-            if crate::syntax_util::kind(n) == "for_statement"
-                && let Some(v) = crate::syntax_util::field(n, "variable")
+            if crate::syntax_util::kind(n) == kind::FOR_STATEMENT
+                && let Some(v) = crate::syntax_util::field(n, field::VARIABLE)
             {
                 for_vars.push(fold(cx.node_text(v)));
             }

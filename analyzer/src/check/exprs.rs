@@ -8,6 +8,7 @@ use tree_sitter::Node;
 
 use super::{Cx, Place, calls};
 use crate::rules;
+use crate::syntax::{field, kind};
 use crate::syntax_util::{Literal, field, fields, literal_aggregate};
 use crate::ty::Ty;
 
@@ -15,20 +16,20 @@ use crate::ty::Ty;
 /// gives aggregates their type and lets unknown signal names be recognised.
 pub(super) fn expr<'t>(cx: &mut Cx<'t>, node: Node<'t>, expected: Option<&Ty>) -> Ty {
     match crate::syntax_util::kind(node) {
-        "number" => Ty::num(),
-        "string" => Ty::string(),
-        "boolean" => Ty::bool(),
-        "identifier" => identifier(cx, node, expected),
-        "parenthesized_expression" => match field(node, "expression") {
+        kind::NUMBER => Ty::num(),
+        kind::STRING => Ty::string(),
+        kind::BOOLEAN => Ty::bool(),
+        kind::IDENTIFIER => identifier(cx, node, expected),
+        kind::PARENTHESIZED_EXPRESSION => match field(node, field::EXPRESSION) {
             Some(e) => expr(cx, e, expected),
             None => Ty::Unknown,
         },
-        "unary_expression" => unary(cx, node),
-        "binary_expression" => binary(cx, node),
-        "function_call" => calls::function_call(cx, node),
-        "component_access" => component(cx, node).0,
-        "index_expression" => index(cx, node).0,
-        "aggregate" => {
+        kind::UNARY_EXPRESSION => unary(cx, node),
+        kind::BINARY_EXPRESSION => binary(cx, node),
+        kind::FUNCTION_CALL => calls::function_call(cx, node),
+        kind::COMPONENT_ACCESS => component(cx, node).0,
+        kind::INDEX_EXPRESSION => index(cx, node).0,
+        kind::AGGREGATE => {
             let ty = expected.cloned().unwrap_or(Ty::Unknown);
             aggregate(cx, node, &ty, &[]);
             ty
@@ -109,7 +110,7 @@ fn check_sized<'t>(
     sizes: &[Option<usize>],
     what: &str,
 ) {
-    if crate::syntax_util::kind(node) == "aggregate" {
+    if crate::syntax_util::kind(node) == kind::AGGREGATE {
         aggregate(cx, node, expected, sizes);
         return;
     }
@@ -157,7 +158,7 @@ fn aggregate<'t>(cx: &mut Cx<'t>, node: Node<'t>, expected: &Ty, sizes: &[Option
             return;
         }
     }
-    let elements = fields(node, "element");
+    let elements = fields(node, field::ELEMENT);
     match expected {
         Ty::Array(elem, dims) => {
             let inner = element_type(elem, *dims);
@@ -345,10 +346,10 @@ fn literal_check(
 }
 
 fn unary<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Ty {
-    let Some(operand) = field(node, "operand") else {
+    let Some(operand) = field(node, field::OPERAND) else {
         return Ty::Unknown;
     };
-    let op = field(node, "operator")
+    let op = field(node, field::OPERATOR)
         .map(|o| crate::syntax_util::kind(o))
         .unwrap_or_default();
     let ty = expr(cx, operand, None);
@@ -366,7 +367,7 @@ fn unary<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Ty {
             node.byte_range(),
             format!(
                 "`{}` cannot be applied to {}",
-                cx.node_text(field(node, "operator").unwrap_or(node))
+                cx.node_text(field(node, field::OPERATOR).unwrap_or(node))
                     .to_ascii_uppercase(),
                 a_type(&ty)
             ),
@@ -378,9 +379,9 @@ fn unary<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Ty {
 
 fn binary<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Ty {
     let (Some(l), Some(r), Some(op_node)) = (
-        field(node, "left"),
-        field(node, "right"),
-        field(node, "operator"),
+        field(node, field::LEFT),
+        field(node, field::RIGHT),
+        field(node, field::OPERATOR),
     ) else {
         return Ty::Unknown;
     };
@@ -390,8 +391,8 @@ fn binary<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Ty {
     // An aggregate operand takes its type from the other operand when that
     // is a record (`p + [0, 0, 10]`), and is left unknown otherwise.
     let (lt, rt) = match (
-        crate::syntax_util::kind(l) == "aggregate",
-        crate::syntax_util::kind(r) == "aggregate",
+        crate::syntax_util::kind(l) == kind::AGGREGATE,
+        crate::syntax_util::kind(r) == kind::AGGREGATE,
     ) {
         (true, false) => {
             let rt = operand(cx, r, l, is_comparison);
@@ -459,7 +460,7 @@ fn binary<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Ty {
             // Comparing with zero asks "is it exactly the same point,
             // vector or value", which identical inputs answer exactly.
             let zero = |n: Node<'_>| {
-                crate::syntax_util::kind(n) == "number"
+                crate::syntax_util::kind(n) == kind::NUMBER
                     && cx.node_text(n).parse::<f64>().is_ok_and(|v| v == 0.0)
             };
             if is_comparison
@@ -524,7 +525,7 @@ fn aggregate_operand<'t>(cx: &mut Cx<'t>, node: Node<'t>, other: &Ty) -> Ty {
         aggregate(cx, node, &ty, &[]);
         ty
     } else {
-        for e in fields(node, "element") {
+        for e in fields(node, field::ELEMENT) {
             expr(cx, e, None);
         }
         Ty::Unknown
@@ -540,8 +541,11 @@ fn known_side(a: &Ty, b: &Ty, t: &crate::ty::Types<'_>) -> Ty {
 /// taken for a signal.
 fn operand<'t>(cx: &mut Cx<'t>, node: Node<'t>, other: Node<'t>, comparison: bool) -> Ty {
     if comparison
-        && crate::syntax_util::kind(node) == "identifier"
-        && matches!(crate::syntax_util::kind(other), "number" | "identifier")
+        && crate::syntax_util::kind(node) == kind::IDENTIFIER
+        && matches!(
+            crate::syntax_util::kind(other),
+            kind::NUMBER | kind::IDENTIFIER
+        )
         && cx.task.signals.is_none()
     {
         let name = cx.node_text(node);
@@ -549,7 +553,7 @@ fn operand<'t>(cx: &mut Cx<'t>, node: Node<'t>, other: Node<'t>, comparison: boo
             && cx.resolve_routine(name, true).is_none()
             && cx.local_elsewhere(name).is_none()
         {
-            let other_is_level = crate::syntax_util::kind(other) == "number"
+            let other_is_level = crate::syntax_util::kind(other) == kind::NUMBER
                 || cx
                     .cat
                     .datum(cx.node_text(other))
@@ -569,18 +573,18 @@ fn operand<'t>(cx: &mut Cx<'t>, node: Node<'t>, other: Node<'t>, comparison: boo
 /// programs test a taught or configured value.
 fn is_real(cx: &Cx<'_>, node: Node<'_>) -> bool {
     match crate::syntax_util::kind(node) {
-        "binary_expression" => {
-            field(node, "operator").is_some_and(|o| crate::syntax_util::kind(o) == "/")
-                || field(node, "left").is_some_and(|l| is_real(cx, l))
-                || field(node, "right").is_some_and(|r| is_real(cx, r))
+        kind::BINARY_EXPRESSION => {
+            field(node, field::OPERATOR).is_some_and(|o| crate::syntax_util::kind(o) == "/")
+                || field(node, field::LEFT).is_some_and(|l| is_real(cx, l))
+                || field(node, field::RIGHT).is_some_and(|r| is_real(cx, r))
         }
-        "parenthesized_expression" | "unary_expression" => {
-            let inner = field(node, "expression").or_else(|| field(node, "operand"));
+        kind::PARENTHESIZED_EXPRESSION | kind::UNARY_EXPRESSION => {
+            let inner = field(node, field::EXPRESSION).or_else(|| field(node, field::OPERAND));
             inner.is_some_and(|i| is_real(cx, i))
         }
         // Functions whose results are computed real numbers (the
         // catalogue's `real_valued`).
-        "function_call" => field(node, "name")
+        kind::FUNCTION_CALL => field(node, field::NAME)
             .and_then(|n| cx.cat.function(cx.node_text(n)))
             .is_some_and(|r| r.real_valued),
         _ => false,
@@ -589,7 +593,8 @@ fn is_real(cx: &Cx<'_>, node: Node<'_>) -> bool {
 
 /// `a.b`: the component's type.
 fn component<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> (Ty, Place) {
-    let (Some(obj), Some(comp)) = (field(node, "object"), field(node, "component")) else {
+    let (Some(obj), Some(comp)) = (field(node, field::OBJECT), field(node, field::COMPONENT))
+    else {
         return (Ty::Unknown, Place::Unknown);
     };
     let (obj_ty, place) = place_or_value(cx, obj);
@@ -644,11 +649,11 @@ fn component_type(cx: &mut Cx<'_>, obj_ty: &Ty, comp: Node<'_>) -> Ty {
 
 /// `a{i, j}`: the element type.
 fn index<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> (Ty, Place) {
-    let Some(obj) = field(node, "object") else {
+    let Some(obj) = field(node, field::OBJECT) else {
         return (Ty::Unknown, Place::Unknown);
     };
     let (obj_ty, place) = place_or_value(cx, obj);
-    let indexes = fields(node, "index");
+    let indexes = fields(node, field::INDEX);
     for i in &indexes {
         let ty = expr(cx, *i, Some(&Ty::num()));
         if !cx.types.is_num_like(&ty) {
@@ -689,7 +694,7 @@ fn index<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> (Ty, Place) {
 /// element); other expressions are values.
 pub(super) fn place_or_value<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> (Ty, Place) {
     match crate::syntax_util::kind(node) {
-        "identifier" => {
+        kind::IDENTIFIER => {
             let name = cx.node_text(node);
             match cx.resolve_data(name) {
                 Some(sym) => (sym.ty(&cx.types), Place::of(&sym)),
@@ -699,9 +704,9 @@ pub(super) fn place_or_value<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> (Ty, Place)
                 }
             }
         }
-        "component_access" => component(cx, node),
-        "index_expression" => index(cx, node),
-        "placeholder" => (Ty::Unknown, Place::Unknown),
+        kind::COMPONENT_ACCESS => component(cx, node),
+        kind::INDEX_EXPRESSION => index(cx, node),
+        kind::PLACEHOLDER => (Ty::Unknown, Place::Unknown),
         _ => (expr(cx, node, None), Place::Value),
     }
 }
@@ -709,7 +714,7 @@ pub(super) fn place_or_value<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> (Ty, Place)
 /// A place that an argument passes by reference; an unknown name where a
 /// signal is expected is taken for the signal.
 pub(super) fn reference<'t>(cx: &mut Cx<'t>, node: Node<'t>, expected: &Ty) -> (Ty, Place) {
-    if crate::syntax_util::kind(node) == "identifier" && is_configured(cx, expected) {
+    if crate::syntax_util::kind(node) == kind::IDENTIFIER && is_configured(cx, expected) {
         let name = cx.node_text(node);
         if cx.resolve_data(name).is_none() {
             unknown_signal(cx, node, name, expected);

@@ -30,6 +30,7 @@ use crate::catalogue::{Catalogue, Datum, Routine};
 use crate::diagnostic::{Diagnostic, Related, Rule};
 use crate::items::{DataDecl, Module, ParamDecl, RoutineDecl};
 use crate::names::{NameMap, fold, with_folded};
+use crate::syntax::kind;
 use crate::task::{Item, ItemRef, Task, Unit};
 use crate::ty::{Ty, Types};
 
@@ -251,7 +252,7 @@ impl<'t> Cx<'t> {
         let mut cursor = root.walk();
         let nodes: Vec<Node<'t>> = root
             .named_children(&mut cursor)
-            .filter(|n| crate::syntax_util::kind(*n) == "module")
+            .filter(|n| crate::syntax_util::kind(*n) == kind::MODULE)
             .collect();
         let mut out = Vec::new();
         let mut mi = 0;

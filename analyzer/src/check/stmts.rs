@@ -8,6 +8,7 @@ use crate::items::RoutineKind;
 use crate::names::fold;
 use crate::rules;
 use crate::sema::labels::{Label, block_key};
+use crate::syntax::{field, kind};
 use crate::syntax_util::{field, fields, kind as kind_of};
 use crate::ty::Ty;
 
@@ -44,13 +45,13 @@ pub(super) fn collect_labels(cx: &mut Cx<'_>, found: Vec<Label>) {
 pub(super) fn check_block<'t>(cx: &mut Cx<'t>, statements: &[Node<'t>]) {
     let mut ended_by: Option<&str> = None;
     for (i, s) in statements.iter().enumerate() {
-        if kind_of(*s) == "label" {
+        if kind_of(*s) == kind::LABEL {
             ended_by = None;
         } else if let Some(by) = ended_by.take() {
             let end = statements
                 .iter()
                 .skip(i)
-                .take_while(|n| kind_of(**n) != "label")
+                .take_while(|n| kind_of(**n) != kind::LABEL)
                 .last()
                 .map_or(s.end_byte(), |n| n.end_byte());
             cx.report(
@@ -69,12 +70,12 @@ pub(super) fn check_block<'t>(cx: &mut Cx<'t>, statements: &[Node<'t>]) {
 /// The keyword of a statement that always leaves its statement list.
 fn leaves_list(s: Node<'_>) -> Option<&'static str> {
     Some(match kind_of(s) {
-        "return_statement" => "RETURN",
-        "exit_statement" => "EXIT",
-        "raise_statement" => "RAISE",
-        "goto_statement" => "GOTO",
-        "retry_statement" => "RETRY",
-        "trynext_statement" => "TRYNEXT",
+        kind::RETURN_STATEMENT => "RETURN",
+        kind::EXIT_STATEMENT => "EXIT",
+        kind::RAISE_STATEMENT => "RAISE",
+        kind::GOTO_STATEMENT => "GOTO",
+        kind::RETRY_STATEMENT => "RETRY",
+        kind::TRYNEXT_STATEMENT => "TRYNEXT",
         _ => return None,
     })
 }
@@ -86,10 +87,10 @@ fn check_statement<'t>(cx: &mut Cx<'t>, s: Node<'t>) {
     // cache key leaves out), else part by part, their simple statements
     // cached in turn.
     let kind = kind_of(s);
-    if matches!(kind, "assignment" | "procedure_call") {
+    if matches!(kind, kind::ASSIGNMENT | kind::PROCEDURE_CALL) {
         cx.cached_statement(s, |cx| {
             crate::consteval::check_constant_errors(cx, s);
-            if kind == "assignment" {
+            if kind == kind::ASSIGNMENT {
                 assignment(cx, s);
             } else {
                 calls::procedure_call(cx, s);
@@ -118,43 +119,43 @@ fn mentions_goto(text: &str) -> bool {
 fn check_uncached<'t>(cx: &mut Cx<'t>, s: Node<'t>) {
     crate::consteval::check_constant_errors(cx, s);
     match kind_of(s) {
-        "if_statement" => {
-            if let Some(c) = field(s, "condition") {
+        kind::IF_STATEMENT => {
+            if let Some(c) = field(s, field::CONDITION) {
                 exprs::condition(cx, c);
             }
-            check_block(cx, &fields(s, "body"));
-            for alt in fields(s, "alternative") {
-                if let Some(c) = field(alt, "condition") {
+            check_block(cx, &fields(s, field::BODY));
+            for alt in fields(s, field::ALTERNATIVE) {
+                if let Some(c) = field(alt, field::CONDITION) {
                     exprs::condition(cx, c);
                 }
-                check_block(cx, &fields(alt, "body"));
+                check_block(cx, &fields(alt, field::BODY));
             }
         }
-        "compact_if_statement" => {
-            if let Some(c) = field(s, "condition") {
+        kind::COMPACT_IF_STATEMENT => {
+            if let Some(c) = field(s, field::CONDITION) {
                 exprs::condition(cx, c);
             }
-            if let Some(b) = field(s, "body") {
+            if let Some(b) = field(s, field::BODY) {
                 check_statement(cx, b);
             }
         }
-        "for_statement" => for_statement(cx, s),
-        "while_statement" => {
-            if let Some(c) = field(s, "condition") {
+        kind::FOR_STATEMENT => for_statement(cx, s),
+        kind::WHILE_STATEMENT => {
+            if let Some(c) = field(s, field::CONDITION) {
                 exprs::condition(cx, c);
             }
-            check_block(cx, &fields(s, "body"));
+            check_block(cx, &fields(s, field::BODY));
         }
-        "test_statement" => test_statement(cx, s),
-        "goto_statement" => goto(cx, s),
-        "return_statement" => return_statement(cx, s),
-        "raise_statement" => match field(s, "value") {
+        kind::TEST_STATEMENT => test_statement(cx, s),
+        kind::GOTO_STATEMENT => goto(cx, s),
+        kind::RETURN_STATEMENT => return_statement(cx, s),
+        kind::RAISE_STATEMENT => match field(s, field::VALUE) {
             Some(v) => exprs::check_expected(cx, v, &Ty::named("errnum"), "the error number"),
             None => handler_only(cx, s, "RAISE without an error number"),
         },
-        "retry_statement" => handler_only(cx, s, "RETRY"),
-        "trynext_statement" => handler_only(cx, s, "TRYNEXT"),
-        "connect_statement" => connect(cx, s),
+        kind::RETRY_STATEMENT => handler_only(cx, s, "RETRY"),
+        kind::TRYNEXT_STATEMENT => handler_only(cx, s, "TRYNEXT"),
+        kind::CONNECT_STATEMENT => connect(cx, s),
         _ => {}
     }
 }
@@ -170,7 +171,7 @@ fn handler_only(cx: &mut Cx<'_>, s: Node<'_>, what: &str) {
 }
 
 fn assignment<'t>(cx: &mut Cx<'t>, s: Node<'t>) {
-    let (Some(left), Some(right)) = (field(s, "left"), field(s, "right")) else {
+    let (Some(left), Some(right)) = (field(s, field::LEFT), field(s, field::RIGHT)) else {
         return;
     };
     let (ty, place) = exprs::place_or_value(cx, left);
@@ -185,7 +186,7 @@ fn assignment<'t>(cx: &mut Cx<'t>, s: Node<'t>) {
 }
 
 fn for_statement<'t>(cx: &mut Cx<'t>, s: Node<'t>) {
-    for bound in ["from", "to", "step"] {
+    for bound in [field::FROM, field::TO, field::STEP] {
         if let Some(b) = field(s, bound) {
             exprs::check_expected(
                 cx,
@@ -195,32 +196,32 @@ fn for_statement<'t>(cx: &mut Cx<'t>, s: Node<'t>) {
             );
         }
     }
-    let var = field(s, "variable").map(|v| fold(cx.node_text(v)));
+    let var = field(s, field::VARIABLE).map(|v| fold(cx.node_text(v)));
     if let (Some(r), Some(v)) = (&mut cx.routine, &var) {
         r.for_vars.push(v.clone());
     }
-    check_block(cx, &fields(s, "body"));
+    check_block(cx, &fields(s, field::BODY));
     if let (Some(r), Some(_)) = (&mut cx.routine, &var) {
         r.for_vars.pop();
     }
 }
 
 fn test_statement<'t>(cx: &mut Cx<'t>, s: Node<'t>) {
-    let ty = field(s, "value").map_or(Ty::Unknown, |v| exprs::expr(cx, v, None));
+    let ty = field(s, field::VALUE).map_or(Ty::Unknown, |v| exprs::expr(cx, v, None));
     let ty = cx.types.value_type(&ty);
-    for case in fields(s, "case") {
-        for v in fields(case, "value") {
+    for case in fields(s, field::CASE) {
+        for v in fields(case, field::VALUE) {
             exprs::check_expected(cx, v, &ty, "the CASE value");
         }
-        check_block(cx, &fields(case, "body"));
+        check_block(cx, &fields(case, field::BODY));
     }
-    if let Some(d) = field(s, "default") {
-        check_block(cx, &fields(d, "body"));
+    if let Some(d) = field(s, field::DEFAULT) {
+        check_block(cx, &fields(d, field::BODY));
     }
 }
 
 fn goto(cx: &mut Cx<'_>, s: Node<'_>) {
-    let Some(label) = field(s, "label") else {
+    let Some(label) = field(s, field::LABEL) else {
         return;
     };
     let name = cx.node_text(label);
@@ -261,7 +262,7 @@ fn return_statement<'t>(cx: &mut Cx<'t>, s: Node<'t>) {
     };
     let kind = r.decl.kind;
     let returns = r.decl.returns.as_ref().map(|t| Ty::named(&t.name));
-    match (kind, field(s, "value")) {
+    match (kind, field(s, field::VALUE)) {
         (RoutineKind::Func, None) => cx.report(
             &rules::return_value::RULE,
             s.byte_range(),
@@ -289,7 +290,7 @@ fn return_statement<'t>(cx: &mut Cx<'t>, s: Node<'t>) {
 }
 
 fn connect<'t>(cx: &mut Cx<'t>, s: Node<'t>) {
-    if let Some(target) = field(s, "interrupt") {
+    if let Some(target) = field(s, field::INTERRUPT) {
         let (ty, place) = exprs::place_or_value(cx, target);
         if cx.types.is_known(&ty) && !ty.is("intnum") {
             cx.report(
@@ -314,7 +315,7 @@ fn connect<'t>(cx: &mut Cx<'t>, s: Node<'t>) {
             );
         }
     }
-    if let Some(trap) = field(s, "trap") {
+    if let Some(trap) = field(s, field::TRAP) {
         let name = cx.node_text(trap);
         match cx.resolve_routine(name, false) {
             Some(RoutineSym::User(d, _)) if d.kind == RoutineKind::Trap => {}
@@ -335,26 +336,31 @@ pub(super) fn block_terminates(cx: &Cx<'_>, statements: &[Node<'_>]) -> bool {
 
 fn terminates(cx: &Cx<'_>, s: Node<'_>) -> bool {
     match s.kind() {
-        "return_statement" | "raise_statement" | "exit_statement" | "goto_statement"
-        | "retry_statement" | "trynext_statement" => true,
-        "if_statement" => {
-            let alts = fields(s, "alternative");
-            alts.iter().any(|a| a.kind() == "else_clause")
-                && block_terminates(cx, &fields(s, "body"))
+        kind::RETURN_STATEMENT
+        | kind::RAISE_STATEMENT
+        | kind::EXIT_STATEMENT
+        | kind::GOTO_STATEMENT
+        | kind::RETRY_STATEMENT
+        | kind::TRYNEXT_STATEMENT => true,
+        kind::IF_STATEMENT => {
+            let alts = fields(s, field::ALTERNATIVE);
+            alts.iter().any(|a| a.kind() == kind::ELSE_CLAUSE)
+                && block_terminates(cx, &fields(s, field::BODY))
                 && alts
                     .iter()
-                    .all(|a| block_terminates(cx, &fields(*a, "body")))
+                    .all(|a| block_terminates(cx, &fields(*a, field::BODY)))
         }
-        "test_statement" => {
-            field(s, "default").is_some_and(|d| block_terminates(cx, &fields(d, "body")))
-                && fields(s, "case")
+        kind::TEST_STATEMENT => {
+            field(s, field::DEFAULT).is_some_and(|d| block_terminates(cx, &fields(d, field::BODY)))
+                && fields(s, field::CASE)
                     .iter()
-                    .all(|c| block_terminates(cx, &fields(*c, "body")))
+                    .all(|c| block_terminates(cx, &fields(*c, field::BODY)))
         }
-        "while_statement" => field(s, "condition")
-            .is_some_and(|c| c.kind() == "boolean" && cx.node_text(c).eq_ignore_ascii_case("true")),
+        kind::WHILE_STATEMENT => field(s, field::CONDITION).is_some_and(|c| {
+            c.kind() == kind::BOOLEAN && cx.node_text(c).eq_ignore_ascii_case("true")
+        }),
         // An instruction that ends execution (`ExitCycle`).
-        "procedure_call" => field(s, "name")
+        kind::PROCEDURE_CALL => field(s, field::NAME)
             .and_then(|n| cx.cat.instruction(cx.node_text(n)))
             .is_some_and(|r| r.terminates),
         _ => false,

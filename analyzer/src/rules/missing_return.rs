@@ -2,6 +2,7 @@ use tree_sitter::Node;
 
 use super::fix_text::{indent_at, line_break, line_start, starts_line};
 use crate::diagnostic::{Applicability, Diagnostic, Fix};
+use crate::syntax::kind;
 use crate::ty::{Ty, Types};
 
 crate::declare_rule! {
@@ -55,7 +56,7 @@ pub(crate) fn fix(
     let is_end = |c: &Node<'_>| {
         matches!(
             c.kind(),
-            "endfunc" | "error_handler" | "undo_handler" | "backward_handler"
+            "endfunc" | kind::ERROR_HANDLER | kind::UNDO_HANDLER | kind::BACKWARD_HANDLER
         )
     };
     let mut cursor = func.walk();

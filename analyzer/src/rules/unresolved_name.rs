@@ -4,6 +4,7 @@ use tree_sitter::Node;
 
 use super::fix_text::{indent_at, line_break, line_start};
 use crate::diagnostic::{Applicability, Fix};
+use crate::syntax::{field, kind};
 use crate::syntax_util::fields;
 use crate::task::Task;
 use crate::ty::Ty;
@@ -65,7 +66,7 @@ pub(crate) fn declare_fix(task: &Task, unit: usize, range: Range<usize>) -> Opti
     let routine = routine_around(u.tree().root_node(), range.start)?;
     let ty = infer_type(task, unit, range).unwrap_or_else(|| "num".to_owned());
     let nl = line_break(&u.text);
-    let (at, indent) = match fields(routine, "body").first() {
+    let (at, indent) = match fields(routine, field::BODY).first() {
         Some(first) => (
             line_start(&u.text, first.start_byte()),
             indent_at(&u.text, first.start_byte()).to_owned(),
@@ -98,7 +99,7 @@ fn routine_around(root: Node<'_>, offset: usize) -> Option<Node<'_>> {
     while let Some(n) = at {
         if matches!(
             n.kind(),
-            "procedure_declaration" | "function_declaration" | "trap_declaration"
+            kind::PROCEDURE_DECLARATION | kind::FUNCTION_DECLARATION | kind::TRAP_DECLARATION
         ) {
             return Some(n);
         }
@@ -117,10 +118,10 @@ fn infer_type(task: &Task, unit: usize, range: Range<usize>) -> Option<String> {
         .named_descendant_for_byte_range(range.start, range.end)?;
     let parent = node.parent()?;
     match parent.kind() {
-        "assignment" => {
+        kind::ASSIGNMENT => {
             let other = match crate::ide::resolve::field_in_parent(node) {
-                Some("left") => parent.child_by_field_name("right")?,
-                _ => parent.child_by_field_name("left")?,
+                Some(field::LEFT) => parent.child_by_field_name(field::RIGHT)?,
+                _ => parent.child_by_field_name(field::LEFT)?,
             };
             let mut cx = crate::check::Cx::at(task, unit, range.start)?;
             match cx.type_of_expr(other) {
@@ -128,8 +129,8 @@ fn infer_type(task: &Task, unit: usize, range: Range<usize>) -> Option<String> {
                 _ => None,
             }
         }
-        "for_statement" => Some("num".to_owned()),
-        "argument" => {
+        kind::FOR_STATEMENT => Some("num".to_owned()),
+        kind::ARGUMENT => {
             use crate::ide::signature::{active, call_sig};
             let (sig, call) = call_sig(task, unit, range.end)?;
             let p = sig.params.get(active(&sig, &call)?)?;

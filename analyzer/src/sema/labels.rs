@@ -5,6 +5,7 @@ use std::ops::Range;
 
 use tree_sitter::Node;
 
+use crate::syntax::field;
 use crate::syntax_util::{field, kind as kind_of};
 
 /// A label of a routine: its name, the name's range, and the statement list
@@ -46,7 +47,7 @@ pub(crate) fn find(source: &str, routine: Node<'_>, named: Option<Vec<Node<'_>>>
         for child in children {
             let kind = kind_of(child);
             if kind == "label" {
-                if let Some(name) = field(child, "name") {
+                if let Some(name) = field(child, field::NAME) {
                     found.push((
                         crate::syntax_util::text_of(name, source).to_owned(),
                         name.byte_range(),

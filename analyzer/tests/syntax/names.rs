@@ -36,6 +36,8 @@ const FIELD_CALLS: &[&str] = &[
     "children_by_field_name",
     "field_id",
     "field_id_for_name",
+    "opt_expr",
+    "req_expr",
 ];
 const KIND_CALLS: &[&str] = &["has_token", "id_for_node_kind"];
 
@@ -110,7 +112,13 @@ pub fn uses(text: &str) -> Vec<Use> {
                     push(s, role, unescape(&text[s + 1..e - 1]));
                 }
             }
-            if word == "kind" {
+            if word == "field_name" || word == "field_in_parent" {
+                // `cursor.field_name() == Some("x")`.
+                if let Some((s, e)) = compared_some(bytes, close + 1) {
+                    push(s, Role::Field, unescape(&text[s + 1..e - 1]));
+                }
+            }
+            if word == "kind" || word == "kind_of" {
                 // `kind(…) == "x"`, `.kind() != "x"`.
                 let next = skip_blank(bytes, close + 1);
                 if bytes[next..].starts_with(b"==") || bytes[next..].starts_with(b"!=") {
@@ -123,6 +131,12 @@ pub fn uses(text: &str) -> Vec<Use> {
             }
             at = after + 1;
             continue;
+        }
+        if word == "field" {
+            // A variable holding a field name: `field == Some("x")`.
+            if let Some((s, e)) = compared_some(bytes, end) {
+                push(s, Role::Field, unescape(&text[s + 1..e - 1]));
+            }
         }
         if word == "matches" && bytes.get(after) == Some(&b'!') {
             let open = skip_blank(bytes, after + 1);
@@ -262,13 +276,29 @@ fn literals(bytes: &[u8], from: usize, to: usize) -> impl Iterator<Item = (usize
     })
 }
 
-/// Does this expression call `kind` (`kind(n)`, `n.kind()`,
+/// The string literal in `== Some("x")` or `!= Some("x")` at `at`.
+fn compared_some(bytes: &[u8], at: usize) -> Option<(usize, usize)> {
+    let op = skip_blank(bytes, at);
+    if !(bytes[op..].starts_with(b"==") || bytes[op..].starts_with(b"!=")) {
+        return None;
+    }
+    let some = skip_blank(bytes, op + 2);
+    let lit = some + "Some(".len();
+    (bytes[some..].starts_with(b"Some(") && bytes.get(lit) == Some(&b'"'))
+        .then(|| (lit, string_end(bytes, lit)))
+}
+
+/// Does this expression call `kind` or `kind_of` (`kind(n)`, `n.kind()`,
 /// `syntax_util::kind(n)`)?
 fn calls_kind(expr: &str) -> bool {
     let bytes = expr.as_bytes();
     expr.match_indices("kind").any(|(i, _)| {
         let before_ok = i == 0 || !is_ident_byte(bytes[i - 1]);
-        let after = skip_blank(bytes, i + 4);
+        let mut end = i + 4;
+        if bytes[end..].starts_with(b"_of") {
+            end += 3;
+        }
+        let after = skip_blank(bytes, end);
         before_ok && bytes.get(after) == Some(&b'(')
     })
 }
