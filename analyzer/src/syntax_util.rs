@@ -413,3 +413,63 @@ pub(crate) fn walk_pruned<'a>(node: Node<'a>, f: &mut impl FnMut(Node<'a>) -> bo
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use std::collections::BTreeSet;
+
+    use crate::syntax::generated::{NAMED_KINDS, fields_of};
+    use crate::syntax::{field, kind};
+
+    /// The named kinds a field of `owner` holds, without placeholders.
+    fn held(owner: &str, name: &str) -> BTreeSet<&'static str> {
+        fields_of(owner)
+            .iter()
+            .find(|f| f.name == name)
+            .map(|f| f.kinds)
+            .unwrap_or_default()
+            .iter()
+            .copied()
+            .filter(|k| NAMED_KINDS.contains(k) && *k != kind::PLACEHOLDER)
+            .collect()
+    }
+
+    // The grammar declares no statement or expression supertypes, so the
+    // hand-written categories are checked against what node-types.json says
+    // the fields hold.
+
+    #[test]
+    fn simple_statements_are_what_a_compact_if_holds() {
+        let simple = held(kind::COMPACT_IF_STATEMENT, field::BODY);
+        let listed: BTreeSet<&str> = NAMED_KINDS
+            .iter()
+            .copied()
+            .filter(|k| super::is_simple_statement(k))
+            .collect();
+        assert_eq!(listed, simple);
+    }
+
+    #[test]
+    fn statements_are_simple_or_compound() {
+        let mut statements = held(kind::PROCEDURE_DECLARATION, field::BODY);
+        statements.remove(kind::DATA_DECLARATION);
+        statements.remove(kind::LABEL);
+        let listed: BTreeSet<&str> = NAMED_KINDS
+            .iter()
+            .copied()
+            .filter(|k| super::is_simple_statement(k) != super::is_compound_statement(k))
+            .collect();
+        assert_eq!(listed, statements);
+        assert!(
+            !NAMED_KINDS
+                .iter()
+                .any(|k| super::is_simple_statement(k) && super::is_compound_statement(k))
+        );
+    }
+
+    #[test]
+    fn expression_kinds_are_what_an_assignment_assigns() {
+        let listed: BTreeSet<&str> = crate::lower::EXPRESSION_KINDS.iter().copied().collect();
+        assert_eq!(listed, held(kind::ASSIGNMENT, field::RIGHT));
+    }
+}
