@@ -398,7 +398,7 @@ mod tests {
             .expect("a node");
         let mut node = node;
         while let Some(p) = node.parent() {
-            if crate::syntax_util::kind(p) != "parenthesized_expression" {
+            if crate::syntax_util::kind(p) != kind::PARENTHESIZED_EXPRESSION {
                 break;
             }
             node = p;

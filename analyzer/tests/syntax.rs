@@ -122,7 +122,7 @@ fn every_kind_and_field_named_in_the_sources_is_the_grammars() {
 
 #[test]
 fn the_scan_finds_misspelt_kinds_and_fields() {
-    let sample = r#"
+    let sample = r##"
 fn f(n: Node<'_>) {
     let a = field(n, "name");
     let b = fields(n, "bodi");
@@ -141,8 +141,11 @@ fn f(n: Node<'_>) {
     if kind_of(n) == "labl" || field == Some("bdy") {}
     let e = self.opt_expr(n, "valu");
     let s = "procedure_cal"; // not a kind in any form: not reported
+    let r = r#"kind(n) == "raw_text" "#; // inside a raw string: not reported
+    let (q, u) = ('"', '\u{22}'); // char literals with quotes do not open strings
+    if 1usize > 0 && kind(n) == "numbr" {}
 }
-"#;
+"##;
     let uses = names::uses(sample);
     let found: Vec<(usize, Role, &str)> = uses
         .iter()
@@ -165,6 +168,7 @@ fn f(n: Node<'_>) {
             (17, Role::Kind, "labl"),
             (17, Role::Field, "bdy"),
             (18, Role::Field, "valu"),
+            (22, Role::Kind, "numbr"),
         ]
     );
     assert_eq!(
@@ -179,6 +183,7 @@ fn f(n: Node<'_>) {
             r#"sample.rs:17: Kind "labl""#,
             r#"sample.rs:17: Field "bdy""#,
             r#"sample.rs:18: Field "valu""#,
+            r#"sample.rs:22: Kind "numbr""#,
         ]
     );
 }

@@ -67,14 +67,21 @@ pub fn uses(text: &str) -> Vec<Use> {
             at = string_end(bytes, at);
             continue;
         }
+        if let Some(after) = raw_string_end(bytes, at) {
+            at = after;
+            continue;
+        }
         if bytes[at] == b'\'' {
-            // A char literal ('"', '\\') or a lifetime.
-            at += if bytes[at..].starts_with(b"'\\") {
-                4
+            // A char literal ('"', '\\', '\u{c}') or a lifetime.
+            at = if bytes[at..].starts_with(b"'\\") {
+                bytes[at + 3..]
+                    .iter()
+                    .position(|b| *b == b'\'')
+                    .map_or(bytes.len(), |n| at + 3 + n + 1)
             } else if bytes.get(at + 2) == Some(&b'\'') {
-                3
+                at + 3
             } else {
-                1
+                at + 1
             };
             continue;
         }
@@ -197,6 +204,33 @@ fn skip_blank(bytes: &[u8], mut at: usize) -> usize {
         at += 1;
     }
     at
+}
+
+/// The end of the raw string literal (`r"…"`, `r#"…"#`, `br"…"`) starting
+/// at `at`, if one does.
+fn raw_string_end(bytes: &[u8], at: usize) -> Option<usize> {
+    if at > 0 && is_ident_byte(bytes[at - 1]) {
+        return None;
+    }
+    let mut i = at + usize::from(bytes.get(at) == Some(&b'b'));
+    if bytes.get(i) != Some(&b'r') {
+        return None;
+    }
+    i += 1;
+    let hashes = bytes[i..].iter().take_while(|b| **b == b'#').count();
+    i += hashes;
+    if bytes.get(i) != Some(&b'"') {
+        return None;
+    }
+    let mut close = vec![b'"'];
+    close.extend(std::iter::repeat_n(b'#', hashes));
+    let body = i + 1;
+    Some(
+        bytes[body..]
+            .windows(close.len())
+            .position(|w| w == close.as_slice())
+            .map_or(bytes.len(), |n| body + n + close.len()),
+    )
 }
 
 /// The end (after the closing quote) of the string literal starting at `at`.

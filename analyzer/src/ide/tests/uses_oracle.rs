@@ -10,6 +10,7 @@ use std::collections::BTreeMap;
 use super::fixture;
 use crate::ide::resolve::{DefKey, is_name, resolve};
 use crate::ide::{document_highlights, references, rename};
+use crate::syntax::{field, kind};
 use crate::syntax_util::walk_pruned;
 use crate::task::Task;
 
@@ -92,12 +93,12 @@ fn written(node: tree_sitter::Node<'_>) -> bool {
     if field == Some("name")
         && matches!(
             parent.kind(),
-            "data_declaration" | "parameter" | "record_component"
+            kind::DATA_DECLARATION | kind::PARAMETER | kind::RECORD_COMPONENT
         )
     {
         return true;
     }
-    if parent.kind() == "for_statement" && field == Some("variable") {
+    if parent.kind() == kind::FOR_STATEMENT && field == Some(field::VARIABLE) {
         return true;
     }
     let mut n = node;
@@ -107,8 +108,8 @@ fn written(node: tree_sitter::Node<'_>) -> bool {
             return false;
         };
         match (p.kind(), f) {
-            ("assignment", Some("left")) => return true,
-            ("component_access" | "index_expression", Some("object")) => n = p,
+            (kind::ASSIGNMENT, Some(field::LEFT)) => return true,
+            (kind::COMPONENT_ACCESS | kind::INDEX_EXPRESSION, Some(field::OBJECT)) => n = p,
             _ => return false,
         }
     }
