@@ -171,8 +171,8 @@ pub(crate) struct Cx<'t> {
     /// use and kept for the whole check.
     pub(crate) inits: Option<crate::consteval::InitCache>,
     /// Signatures of the routines called so far, by the address of their
-    /// declaration (and whether a built-in is called as a function).
-    signatures: HashMap<(usize, bool, bool), std::rc::Rc<calls::Sig>>,
+    /// declaration (and whether it is declared in the task).
+    signatures: HashMap<(usize, bool), std::rc::Rc<crate::sema::signature::Signature>>,
     /// Aggregates of literals found to fit their type, by (the type, the
     /// array sizes, the aggregate's shape): the same shape fits again.
     pub(crate) clean_literals: HashSet<(String, Vec<Option<usize>>, Vec<u8>)>,
