@@ -5,10 +5,10 @@ use std::ops::Range;
 
 use tree_sitter::Node;
 
-use super::signature::sig_of;
 use super::tokens::Scopes;
 use super::{InlayHint, InlayKind};
 use crate::names::same;
+use crate::sema::signature::Signature;
 use crate::syntax_util::walk_pruned;
 use crate::task::Task;
 
@@ -91,7 +91,7 @@ pub fn inlay_hints(
         let Some(sym) = cx.resolve_routine(name_text, call.kind() == "function_call") else {
             continue;
         };
-        let sig = sig_of(sym);
+        let sig = Signature::of(sym);
         let mut cursor = args.walk();
         let args: Vec<Node<'_>> = args
             .children_by_field_name("argument", &mut cursor)

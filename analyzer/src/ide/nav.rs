@@ -282,7 +282,7 @@ fn passed_by_reference(cx: &mut Cx<'_>, path: &NamePath<'_>, lists: &mut ArgList
     let Some(sym) = super::resolve::call_routine(cx, call) else {
         return false;
     };
-    let sig = super::signature::sig_of(sym);
+    let sig = crate::sema::signature::Signature::of(sym);
     let text = cx.text;
     let param = match arg
         .child_by_field_name("name")
