@@ -29,6 +29,7 @@ use crate::check::{Cx, DataSym, RoutineSym};
 use crate::items::{DataDecl, ParamDecl, Storage};
 use crate::lower::{is_expression, lower_with};
 use crate::names::{NameMap, fold};
+use crate::sema::signature::{Arg, Signature, Target, bind_args};
 use crate::syntax_util::{field, fields, text_of};
 use crate::task::{Item, ItemRef, Task, Unit};
 use crate::ty::{Ty, UserType};
@@ -1062,57 +1063,33 @@ fn argument_type<'t>(
     let name = field(call, "name").filter(|n| crate::syntax_util::kind(*n) == "identifier")?;
     let want_function = crate::syntax_util::kind(call) == "function_call";
     let sym = cx.resolve_routine(text_of(name, cx.text), want_function)?;
-    // (name, type, dims, required)
-    let params: Vec<(String, String, u8, bool)> = match sym {
-        RoutineSym::Builtin(r, _) => r
-            .params
-            .iter()
-            .map(|p| {
-                (
-                    p.name.clone(),
-                    if p.switch {
-                        "switch".into()
-                    } else {
-                        p.ty.clone()
-                    },
-                    p.array,
-                    !p.optional && p.alt_group.is_none(),
-                )
-            })
-            .collect(),
-        RoutineSym::User(d, _) => d
-            .params
-            .iter()
-            .map(|p| {
-                (
-                    p.name.clone(),
-                    p.ty.as_ref().map_or("?".into(), |t| t.name.clone()),
-                    p.dims,
-                    !p.optional && p.alt_group.is_none(),
-                )
-            })
-            .collect(),
+    let sig = Signature::of(sym);
+    let args = fields(list, "argument");
+    let described: Vec<Arg<'_>> = args
+        .iter()
+        .map(|a| match field(*a, "name") {
+            Some(n) => Arg::Named(text_of(n, cx.text)),
+            None => Arg::Positional,
+        })
+        .collect();
+    let k = args.iter().position(|a| a.id() == arg.id())?;
+    let Target::Param(i) = bind_args(&sig, &described).args.get(k)?.target else {
+        return None;
     };
-    let param = match field(arg, "name") {
-        Some(n) => {
-            let n = text_of(n, cx.text);
-            params.iter().find(|p| p.0.eq_ignore_ascii_case(n))?
-        }
-        None => {
-            let position = fields(list, "argument")
-                .into_iter()
-                .take_while(|a| a.id() != arg.id())
-                .filter(|a| field(*a, "name").is_none())
-                .count();
-            params.iter().filter(|p| p.3).nth(position)?
-        }
-    };
-    if param.1.eq_ignore_ascii_case(crate::catalogue::ANYTYPE)
-        || param.1.eq_ignore_ascii_case("switch")
+    let param = sig.params.get(i)?;
+    if param.switch
+        || param
+            .type_name
+            .eq_ignore_ascii_case(crate::catalogue::ANYTYPE)
     {
         return None;
     }
-    Some(Type::array(param.1.clone(), vec![0; usize::from(param.2)]))
+    let name = if param.type_name.is_empty() {
+        "?".to_owned()
+    } else {
+        param.type_name.clone()
+    };
+    Some(Type::array(name, vec![0; usize::from(param.ty.dims())]))
 }
 
 // ---------------------------------------------------------------------------
