@@ -11,8 +11,10 @@ mod cache;
 mod calls;
 mod decls;
 mod exprs;
+mod file_wide;
 pub mod once;
 mod place;
+mod routine;
 mod shared;
 mod stmts;
 mod suggest;
@@ -235,7 +237,7 @@ impl<'t> Cx<'t> {
     }
 
     fn check(&mut self) {
-        decls::check_file_wide(self);
+        file_wide::check_file_wide(self);
         for (mi, module, node) in self.modules() {
             self.enter_module(mi, module);
             decls::check_module(self, node, module);
