@@ -362,28 +362,14 @@ impl<'s, 't> ModuleScope<'s, 't> {
         }
     }
 
-    /// Items visible from this module under `name`: its own items (any
-    /// scope) first, then the task's globals (as the checker's
-    /// `Cx::lookup_items`, without building a checker context per module).
+    /// Items visible from this module under `name`
+    /// ([`crate::sema::scope::visible`], the checker's lookup too).
     fn visible(&self, name: &str) -> Vec<ItemRef> {
         crate::names::with_folded(name, |key| self.visible_folded(key))
     }
 
     fn visible_folded(&self, key: &str) -> Vec<ItemRef> {
-        let task = self.shared.task;
-        let mine = |r: &&ItemRef| r.unit == self.unit && Some(r.module) == self.module;
-        let mut own: Vec<ItemRef> = task
-            .locals
-            .get(key)
-            .map(|l| l.iter().filter(mine).copied().collect())
-            .unwrap_or_default();
-        if let Some(globals) = task.globals.get(key) {
-            own.extend(globals.iter().filter(mine).copied());
-            if own.is_empty() {
-                return globals.clone();
-            }
-        }
-        own
+        crate::sema::scope::visible(self.shared.task, self.unit, self.module, key)
     }
 
     fn scope_of(&self, unit: usize, module: usize) -> Option<&'s ModuleScope<'s, 't>> {

@@ -320,19 +320,7 @@ impl<'t> Cx<'t> {
     }
 
     fn lookup_items_folded(&self, key: &str) -> Vec<ItemRef> {
-        let mine = self.module_idx();
-        let here = |r: &&ItemRef| r.unit == self.unit_idx && Some(r.module) == mine;
-        let mut own: Vec<ItemRef> = Vec::new();
-        if let Some(locals) = self.task.locals.get(key) {
-            own.extend(locals.iter().filter(here));
-        }
-        if let Some(globals) = self.task.globals.get(key) {
-            own.extend(globals.iter().filter(here));
-            if own.is_empty() {
-                return globals.iter().filter(|r| !here(r)).copied().collect();
-            }
-        }
-        own
+        crate::sema::scope::visible(self.task, self.unit_idx, self.module_idx(), key)
     }
 
     /// A `LOCAL` declaration of another module under `name`, to explain why

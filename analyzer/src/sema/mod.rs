@@ -2,3 +2,4 @@
 //! the checker and the editor features alike.
 
 pub(crate) mod labels;
+pub(crate) mod scope;
