@@ -8,7 +8,8 @@ use tree_sitter::Node;
 use super::Cx;
 use crate::rules;
 
-const MAX_STRING: usize = 80;
+/// The longest string RAPID holds (the evaluator's limit too).
+const MAX_STRING: usize = rapid_evaluator::MAX_STRING_LEN;
 
 /// Placeholders and string lengths, anywhere in the file.
 pub(super) fn check_file_wide(cx: &mut Cx<'_>) {
