@@ -11,8 +11,10 @@ mod cache;
 mod calls;
 mod decls;
 mod exprs;
+mod file_wide;
 pub mod once;
 mod place;
+mod routine;
 mod shared;
 mod stmts;
 mod suggest;
@@ -244,7 +246,7 @@ impl<'t> Cx<'t> {
     }
 
     fn check(&mut self) {
-        decls::check_file_wide(self);
+        file_wide::check_file_wide(self);
         for (mi, module, node) in self.modules() {
             self.enter_module(mi, module);
             decls::check_module(self, node, module);
@@ -327,19 +329,7 @@ impl<'t> Cx<'t> {
     }
 
     fn lookup_items_folded(&self, key: &str) -> Vec<ItemRef> {
-        let mine = self.module_idx();
-        let here = |r: &&ItemRef| r.unit == self.unit_idx && Some(r.module) == mine;
-        let mut own: Vec<ItemRef> = Vec::new();
-        if let Some(locals) = self.task.locals.get(key) {
-            own.extend(locals.iter().filter(here));
-        }
-        if let Some(globals) = self.task.globals.get(key) {
-            own.extend(globals.iter().filter(here));
-            if own.is_empty() {
-                return globals.iter().filter(|r| !here(r)).copied().collect();
-            }
-        }
-        own
+        crate::sema::scope::visible(self.task, self.unit_idx, self.module_idx(), key)
     }
 
     /// A `LOCAL` declaration of another module under `name`, to explain why
