@@ -5,7 +5,7 @@
 //! built-ins, literals decoded, and the type each value is stored as.
 
 use rapid_analyzer::body::{self, ArgValue as IrArg, Body, Callee, StmtKind as S};
-use rapid_analyzer::catalogue::{self, Mode, base as catalogue};
+use rapid_analyzer::catalogue::{self, Mode};
 use rapid_analyzer::items::{RoutineKind, Storage};
 use rapid_analyzer::names::{NameMap, fold};
 use rapid_evaluator::{BinOp, Expr as E, Type, UnOp, Value};
@@ -306,7 +306,7 @@ impl<'p> Compiler<'p> {
             };
         }
         let key = fold(name);
-        let sig = catalogue().instruction(&key);
+        let sig = self.prog.task.catalogue.instruction(&key);
         match builtins::instruction(&key) {
             Some((canonical, f)) => match self.bind_builtin(sig, &ir_args(&call.args)) {
                 Ok(args) => StmtKind::Builtin {
@@ -316,9 +316,11 @@ impl<'p> Compiler<'p> {
                 },
                 Err(why) => StmtKind::Fail(Failure::Invalid(format!("{canonical}: {why}"))),
             },
-            None if sig.is_some() || catalogue().function(&key).is_some() => StmtKind::Fail(
-                Failure::Unsupported(sig.map_or(name.clone(), |s| s.name.clone())),
-            ),
+            None if sig.is_some() || self.prog.task.catalogue.function(&key).is_some() => {
+                StmtKind::Fail(Failure::Unsupported(
+                    sig.map_or(name.clone(), |s| s.name.clone()),
+                ))
+            }
             None => StmtKind::Fail(Failure::Unknown(name.clone())),
         }
     }
@@ -589,7 +591,7 @@ impl<'p> Compiler<'p> {
             };
         }
         let key = fold(name);
-        let sig = catalogue().function(&key);
+        let sig = self.prog.task.catalogue.function(&key);
         if let Some((canonical, f)) = builtins::function(&key) {
             return match self.bind_builtin(sig, &ir) {
                 Ok(args) => Expr::Func {
@@ -608,9 +610,9 @@ impl<'p> Compiler<'p> {
         }
         match sig {
             Some(s) => Expr::Fail(Failure::Unsupported(s.name.clone())),
-            None if catalogue().instruction(&key).is_some() => Expr::Fail(Failure::Invalid(
-                format!("{name} is an instruction, not a function"),
-            )),
+            None if self.prog.task.catalogue.instruction(&key).is_some() => Expr::Fail(
+                Failure::Invalid(format!("{name} is an instruction, not a function")),
+            ),
             None => Expr::Fail(Failure::Unknown(name.to_owned())),
         }
     }

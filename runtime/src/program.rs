@@ -6,7 +6,7 @@
 use std::ops::Range;
 use std::sync::{Arc, OnceLock};
 
-use rapid_analyzer::catalogue::{DatumKind, base as catalogue};
+use rapid_analyzer::catalogue::DatumKind;
 use rapid_analyzer::items::{RoutineDecl, RoutineKind, Scope, Storage};
 use rapid_analyzer::names::{NameMap, fold};
 use rapid_analyzer::task::Task;
@@ -290,7 +290,7 @@ impl Program {
     /// The catalogue's predefined data, as globals of every task.
     fn add_system_data(&mut self) {
         let mut next_errno = SYSTEM_ERRNO_BASE;
-        for d in &catalogue().data {
+        for d in &self.task.catalogue.data {
             let key = fold(&d.name);
             if self.global_data.contains_key(&key) {
                 continue;

@@ -4,12 +4,10 @@
 
 use std::sync::Arc;
 
-use rapid_analyzer::catalogue::{TypeKind, base as catalogue};
+use rapid_analyzer::catalogue::{Catalogue, TypeKind};
 use rapid_analyzer::names::{NameMap, fold};
 use rapid_analyzer::task::Task;
-use rapid_evaluator::{
-    Env, Lookup, Type, Value, builtin_record_layout, is_builtin_num_alias, is_builtin_string_alias,
-};
+use rapid_evaluator::{Env, Lookup, Type, Value};
 
 /// A record type: its name and its components (name, type name).
 pub(crate) type Layout = Arc<(String, Vec<(String, String)>)>;
@@ -32,6 +30,8 @@ pub(crate) enum Shape {
 pub(crate) struct Types {
     records: NameMap<Layout>,
     aliases: NameMap<String>,
+    /// The catalogue as the task's controller has it.
+    catalogue: &'static Catalogue,
 }
 
 impl Types {
@@ -62,7 +62,11 @@ impl Types {
                 }
             }
         }
-        Types { records, aliases }
+        Types {
+            records,
+            aliases,
+            catalogue: task.catalogue,
+        }
     }
 
     /// What `name` stands for, through user, built-in and catalogue
@@ -84,27 +88,14 @@ impl Types {
                 name = fold(of);
                 continue;
             }
-            if is_builtin_num_alias(&name) {
-                return Shape::Num;
-            }
-            if is_builtin_string_alias(&name) {
-                return Shape::Str;
-            }
-            if let Some(layout) = builtin_record_layout(&name) {
-                let fields = layout
-                    .iter()
-                    .map(|c| (c.name.clone(), c.ty.clone()))
-                    .collect();
-                return Shape::Record(Arc::new((name, fields)));
-            }
-            match catalogue().datatype(&name) {
+            match self.catalogue.datatype(&name) {
                 Some(t) if t.kind == TypeKind::Record && !t.components.is_empty() => {
                     let fields = t
                         .components
                         .iter()
                         .map(|c| (c.name.clone(), c.ty.clone()))
                         .collect();
-                    return Shape::Record(Arc::new((t.name.clone(), fields)));
+                    return Shape::Record(Arc::new((name, fields)));
                 }
                 Some(t) if t.kind == TypeKind::Alias => match &t.alias_of {
                     Some(of) => name = fold(of),
@@ -207,9 +198,14 @@ impl Env for TypesEnv<'_> {
         if let Some(of) = self.0.aliases.get(&key) {
             return Some(Type::named(of.clone()));
         }
-        catalogue()
+        self.0
+            .catalogue
             .datatype(&key)
             .and_then(|t| t.alias_of.clone())
             .map(Type::named)
+    }
+
+    fn catalogue(&self) -> &Catalogue {
+        self.0.catalogue
     }
 }

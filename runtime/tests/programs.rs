@@ -10,13 +10,16 @@
 //!   that name is declared: `di*`/`do*`/`ai*`/`ao*`/`gi*`/`go*` by its
 //!   prefix);
 //! - `!entry NAME`: the routine to run (default `main`);
-//! - `!steps N`: the step budget.
+//! - `!steps N`: the step budget;
+//! - `!robotware VERSION`: the task's catalogue is that RobotWare version's
+//!   view (its signatures and record layouts).
 //!
 //! `UPDATE_EXPECT=1` rewrites the `!>` and `!!` lines with what the runs
 //! give (review the diff).
 
 use std::sync::{Arc, Mutex};
 
+use rapid_analyzer::catalogue::{Selection, Version};
 use rapid_analyzer::task::{Task, Unit};
 use rapid_runtime::{Config, Machine, Outcome, Program, SignalChange, SignalKind, Status};
 
@@ -26,6 +29,7 @@ struct Expect {
     signals: Vec<SignalChange>,
     entry: String,
     steps: Option<u64>,
+    robotware: Option<String>,
 }
 
 fn parse(text: &str) -> Expect {
@@ -35,6 +39,7 @@ fn parse(text: &str) -> Expect {
         signals: Vec::new(),
         entry: "main".to_owned(),
         steps: None,
+        robotware: None,
     };
     for line in text.lines() {
         let t = line.trim_start();
@@ -57,6 +62,8 @@ fn parse(text: &str) -> Expect {
             e.entry = rest.trim().to_owned();
         } else if let Some(rest) = t.strip_prefix("!steps ") {
             e.steps = Some(rest.trim().parse().expect("a number"));
+        } else if let Some(rest) = t.strip_prefix("!robotware ") {
+            e.robotware = Some(rest.trim().to_owned());
         }
     }
     e
@@ -93,7 +100,12 @@ fn run(path: &std::path::Path) -> (Vec<String>, Option<String>, Outcome) {
         .to_string_lossy()
         .into_owned();
     let unit = Arc::new(Unit::new(name, text, None));
-    let task = Arc::new(Task::new(String::new(), vec![unit], None));
+    let mut task = Task::new(String::new(), vec![unit], None);
+    if let Some(v) = &e.robotware {
+        let version = Version::parse(v).expect("a RobotWare version");
+        task.set_catalogue(&Selection::new(Some(version), Vec::new()));
+    }
+    let task = Arc::new(task);
     let signals: Vec<(String, SignalKind)> = e
         .signals
         .iter()

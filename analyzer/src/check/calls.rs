@@ -2,130 +2,32 @@
 //! signature: argument count, names, switches, `|` alternatives, modes,
 //! arrays and types.
 
-use std::collections::HashMap;
 use std::ops::Range;
+use std::rc::Rc;
 
 use tree_sitter::Node;
 
 use super::{Cx, Place, RoutineSym, exprs};
 use crate::catalogue::Mode;
 use crate::items::RoutineKind;
-use crate::names::same;
 use crate::rules;
-use crate::syntax_util::{argument_parts, field, fields};
+use crate::sema::signature::{Arg, Binding, BoundArg, Param, Signature, Target, bind_args};
+use crate::syntax_util::{ArgumentParts, argument_parts, field, fields};
 use crate::ty::Ty;
-
-/// A parameter, whether of a built-in or a user routine.
-#[derive(Clone, Debug)]
-struct SigParam {
-    name: String,
-    ty: Ty,
-    mode: Mode,
-    optional: bool,
-    switch: bool,
-    alt_group: Option<u32>,
-    /// An array of any type and any number of dimensions (`Dim`'s ArrPar,
-    /// which the catalogue cannot express).
-    any_array: bool,
-}
-
-/// A routine's signature, whether built in or declared.
-#[derive(Clone, Debug)]
-pub(super) struct Sig {
-    name: String,
-    params: Vec<SigParam>,
-    required_groups: Vec<u32>,
-    returns: Option<Ty>,
-    kind: RoutineKind,
-    /// Only the name is known (an option routine without a public
-    /// signature): the arguments are not checked against parameters.
-    unchecked: bool,
-}
 
 /// The signature of a routine, made once per check context (a MoveL
 /// signature is some twenty parameters of names and types).
-fn signature(cx: &mut Cx<'_>, sym: RoutineSym<'_>) -> std::rc::Rc<Sig> {
+fn signature(cx: &mut Cx<'_>, sym: RoutineSym<'_>) -> Rc<Signature> {
     let key = match sym {
-        RoutineSym::Builtin(r, is_function) => (std::ptr::from_ref(r) as usize, false, is_function),
-        RoutineSym::User(d, _) => (std::ptr::from_ref(d) as usize, true, false),
+        RoutineSym::Builtin(r, _) => (std::ptr::from_ref(r) as usize, false),
+        RoutineSym::User(d, _) => (std::ptr::from_ref(d) as usize, true),
     };
     if let Some(sig) = cx.signatures.get(&key) {
-        return std::rc::Rc::clone(sig);
+        return Rc::clone(sig);
     }
-    let sig = std::rc::Rc::new(make_signature(sym));
-    cx.signatures.insert(key, std::rc::Rc::clone(&sig));
+    let sig = Rc::new(Signature::of(sym));
+    cx.signatures.insert(key, Rc::clone(&sig));
     sig
-}
-
-fn make_signature(sym: RoutineSym<'_>) -> Sig {
-    match sym {
-        RoutineSym::Builtin(r, is_function) => Sig {
-            name: r.name.clone(),
-            params: r
-                .params
-                .iter()
-                .map(|p| SigParam {
-                    name: p.name.clone(),
-                    ty: if p.switch {
-                        Ty::named("switch")
-                    } else if p.ty.eq_ignore_ascii_case(crate::catalogue::ANYTYPE) {
-                        Ty::Any
-                    } else {
-                        Ty::named(&p.ty)
-                    }
-                    .array(p.array),
-                    mode: p.mode.unwrap_or(Mode::In),
-                    optional: p.optional,
-                    switch: p.switch,
-                    alt_group: p.alt_group,
-                    any_array: p.any_rank,
-                })
-                .collect(),
-            required_groups: r
-                .alt_groups
-                .iter()
-                .filter(|g| g.required)
-                .map(|g| g.id)
-                .collect(),
-            returns: r.returns.as_deref().map(|t| {
-                if t.eq_ignore_ascii_case(crate::catalogue::ANYTYPE) {
-                    Ty::Unknown
-                } else {
-                    Ty::named(t)
-                }
-            }),
-            kind: if is_function {
-                RoutineKind::Func
-            } else {
-                RoutineKind::Proc
-            },
-            unchecked: !r.signature_known,
-        },
-        RoutineSym::User(d, _) => Sig {
-            name: d.name.clone(),
-            params: d
-                .params
-                .iter()
-                .map(|p| SigParam {
-                    name: p.name.clone(),
-                    ty: p
-                        .ty
-                        .as_ref()
-                        .map_or(Ty::Unknown, |t| Ty::named(&t.name))
-                        .array(p.dims),
-                    mode: p.mode,
-                    optional: p.optional,
-                    switch: p.switch,
-                    alt_group: p.alt_group,
-                    any_array: false,
-                })
-                .collect(),
-            required_groups: Vec::new(),
-            returns: d.returns.as_ref().map(|t| Ty::named(&t.name)),
-            kind: d.kind,
-            unchecked: false,
-        },
-    }
 }
 
 /// A procedure call statement.
@@ -156,7 +58,7 @@ pub(super) fn procedure_call<'t>(cx: &mut Cx<'t>, node: Node<'t>) {
             // A built-in known by name only may be either kind: real code
             // decides, and nothing of its call is checked.
             match sig.kind {
-                _ if sig.unchecked => {}
+                _ if !sig.known => {}
                 RoutineKind::Func => cx.report(
                     &rules::call_kind_mismatch::RULE,
                     name_node.byte_range(),
@@ -200,7 +102,7 @@ pub(super) fn function_call<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Ty {
         Some(sym) => {
             cx.routine_used(&sym, name_node.byte_range());
             let sig = signature(cx, sym);
-            if sig.kind != RoutineKind::Func && !sig.unchecked {
+            if sig.kind != RoutineKind::Func && sig.known {
                 cx.report(
                     &rules::call_kind_mismatch::RULE,
                     name_node.byte_range(),
@@ -278,163 +180,151 @@ fn conditional<'t>(cx: &mut Cx<'t>, c: Node<'t>) {
     }
 }
 
-fn check_args<'t>(cx: &mut Cx<'t>, sig: &Sig, args: Option<Node<'t>>, call: Range<usize>) {
-    if sig.unchecked {
+fn check_args<'t>(cx: &mut Cx<'t>, sig: &Signature, args: Option<Node<'t>>, call: Range<usize>) {
+    if !sig.known {
         check_args_unknown(cx, args);
         return;
     }
-    let required: Vec<usize> = sig
-        .params
-        .iter()
-        .enumerate()
-        .filter(|(_, p)| !p.optional && p.alt_group.is_none())
-        .map(|(i, _)| i)
-        .collect();
-    let mut next_required = 0;
-    let mut given: HashMap<usize, Range<usize>> = HashMap::new();
-    let mut given_groups: HashMap<u32, usize> = HashMap::new();
     let args = args.map(|a| fields(a, "argument")).unwrap_or_default();
-    for arg in args {
-        let parts = argument_parts(arg);
-        let value = parts.value;
-        let cond = parts.conditional;
-        let optional_form = parts.backslash;
-        let index = match parts.name {
-            None => {
-                // Positional: the next required parameter.
-                let Some(&i) = required.get(next_required) else {
-                    cx.report(
-                        &rules::argument_count::RULE,
-                        arg.byte_range(),
-                        format!(
-                            "too many arguments: `{}` takes {} without the optional ones",
-                            sig.name,
-                            required.len()
-                        ),
-                    );
-                    if let Some(v) = value
-                        && crate::syntax_util::kind(v) != "star"
-                    {
-                        exprs::place_or_value(cx, v);
-                    }
-                    continue;
-                };
-                next_required += 1;
-                i
-            }
-            Some(n) => {
-                let name = cx.node_text(n);
-                let Some(i) = sig.params.iter().position(|p| same(&p.name, name)) else {
-                    let known: Vec<String> = sig
-                        .params
-                        .iter()
-                        .filter(|p| p.optional || p.alt_group.is_some())
-                        .map(|p| format!("\\{}", p.name))
-                        .collect();
-                    let hint = if known.is_empty() {
-                        "it has no optional parameters".to_owned()
-                    } else {
-                        format!("its optional parameters are {}", known.join(" "))
-                    };
-                    cx.report(
-                        &rules::unknown_argument::RULE,
-                        n.byte_range(),
-                        format!("`{}` has no parameter `{name}`; {hint}", sig.name),
-                    );
-                    if let Some(v) = value
-                        && crate::syntax_util::kind(v) != "star"
-                    {
-                        exprs::place_or_value(cx, v);
-                    }
-                    if let Some(c) = cond {
-                        conditional(cx, c);
-                    }
-                    continue;
-                };
-                if let Some(pos) = required.iter().position(|&r| r == i) {
-                    next_required = next_required.max(pos + 1);
-                }
-                i
-            }
-        };
-        let Some(p) = sig.params.get(index) else {
-            continue;
-        };
-        if let Some(prev) = given.insert(index, arg.byte_range()) {
-            let d = crate::diagnostic::Diagnostic::new(
-                &rules::duplicate_argument::RULE,
+    let parts: Vec<_> = args.iter().map(|&a| argument_parts(a)).collect();
+    let given: Vec<Arg<'_>> = parts
+        .iter()
+        .map(|p| match p.name {
+            Some(n) => Arg::Named(cx.node_text(n)),
+            None => Arg::Positional,
+        })
+        .collect();
+    let binding = bind_args(sig, &given);
+    for ((arg, parts), bound) in args.iter().zip(&parts).zip(&binding.args) {
+        report_argument(cx, sig, &args, *arg, parts, bound);
+    }
+    report_missing(cx, sig, &binding, call);
+}
+
+/// The findings of one argument: where it goes, and its value.
+fn report_argument<'t>(
+    cx: &mut Cx<'t>,
+    sig: &Signature,
+    args: &[Node<'t>],
+    arg: Node<'t>,
+    parts: &ArgumentParts<'t>,
+    bound: &BoundArg,
+) {
+    let value = parts.value;
+    let index = match bound.target {
+        Target::Param(i) => i,
+        Target::TooMany => {
+            let positional = sig.params.iter().filter(|p| p.positional()).count();
+            cx.report(
+                &rules::argument_count::RULE,
                 arg.byte_range(),
-                format!("`{}` is given twice", p.name),
-            )
-            .with_related(crate::diagnostic::Related {
-                file: None,
-                range: prev,
-                message: "first given here".into(),
-            });
-            cx.report_with(d);
-        }
-        if let Some(g) = p.alt_group {
-            match given_groups.get(&g) {
-                Some(&other) if other != index => {
-                    let members: Vec<String> = sig
-                        .params
-                        .iter()
-                        .filter(|q| q.alt_group == Some(g))
-                        .map(|q| format!("\\{}", q.name))
-                        .collect();
-                    let other_name = sig
-                        .params
-                        .get(other)
-                        .map(|q| q.name.as_str())
-                        .unwrap_or_default();
-                    cx.report(
-                        &rules::conflicting_alternatives::RULE,
-                        arg.byte_range(),
-                        format!(
-                            "\\{} and \\{other_name} exclude each other: give one of {}",
-                            p.name,
-                            members.join(" | ")
-                        ),
-                    );
-                }
-                _ => {
-                    given_groups.insert(g, index);
-                }
-            }
-        }
-        if let Some(c) = cond {
-            conditional(cx, c);
-            continue;
-        }
-        match value {
-            Some(v) if p.switch => {
-                cx.report(
-                    &rules::switch_argument::RULE,
-                    arg.byte_range(),
-                    format!("\\{} is a switch and takes no value", p.name),
-                );
+                format!(
+                    "too many arguments: `{}` takes {positional} without the optional ones",
+                    sig.name
+                ),
+            );
+            if let Some(v) = value
+                && crate::syntax_util::kind(v) != "star"
+            {
                 exprs::place_or_value(cx, v);
             }
-            Some(v) => check_value(cx, p, v),
-            None if p.switch => {}
-            None if optional_form => cx.report(
+            return;
+        }
+        Target::UnknownName => {
+            let Some(n) = parts.name else {
+                return;
+            };
+            let name = cx.node_text(n);
+            let known: Vec<String> = sig
+                .params
+                .iter()
+                .filter(|p| !p.positional())
+                .map(|p| format!("\\{}", p.name))
+                .collect();
+            let hint = if known.is_empty() {
+                "it has no optional parameters".to_owned()
+            } else {
+                format!("its optional parameters are {}", known.join(" "))
+            };
+            cx.report(
+                &rules::unknown_argument::RULE,
+                n.byte_range(),
+                format!("`{}` has no parameter `{name}`; {hint}", sig.name),
+            );
+            if let Some(v) = value
+                && crate::syntax_util::kind(v) != "star"
+            {
+                exprs::place_or_value(cx, v);
+            }
+            if let Some(c) = parts.conditional {
+                conditional(cx, c);
+            }
+            return;
+        }
+    };
+    let Some(p) = sig.params.get(index) else {
+        return;
+    };
+    if let Some(prev) = bound.repeats.and_then(|k| args.get(k)) {
+        let d = crate::diagnostic::Diagnostic::new(
+            &rules::duplicate_argument::RULE,
+            arg.byte_range(),
+            format!("`{}` is given twice", p.name),
+        )
+        .with_related(crate::diagnostic::Related {
+            file: None,
+            range: prev.byte_range(),
+            message: "first given here".into(),
+        });
+        cx.report_with(d);
+    }
+    if let (Some(other), Some(g)) = (bound.excludes, p.alt_group) {
+        let members: Vec<String> = sig.members(g).map(|q| format!("\\{}", q.name)).collect();
+        let other_name = sig
+            .params
+            .get(other)
+            .map(|q| q.name.as_str())
+            .unwrap_or_default();
+        cx.report(
+            &rules::conflicting_alternatives::RULE,
+            arg.byte_range(),
+            format!(
+                "\\{} and \\{other_name} exclude each other: give one of {}",
+                p.name,
+                members.join(" | ")
+            ),
+        );
+    }
+    if let Some(c) = parts.conditional {
+        conditional(cx, c);
+        return;
+    }
+    match value {
+        Some(v) if p.switch => {
+            cx.report(
                 &rules::switch_argument::RULE,
                 arg.byte_range(),
-                format!("\\{} needs a value: \\{}:=...", p.name, p.name),
-            ),
-            None => {}
+                format!("\\{} is a switch and takes no value", p.name),
+            );
+            exprs::place_or_value(cx, v);
         }
+        Some(v) => check_value(cx, p, v),
+        None if p.switch => {}
+        None if parts.backslash => cx.report(
+            &rules::switch_argument::RULE,
+            arg.byte_range(),
+            format!("\\{} needs a value: \\{}:=...", p.name, p.name),
+        ),
+        None => {}
     }
-    let missing: Vec<&SigParam> = required[next_required.min(required.len())..]
+}
+
+/// The required parameters and `|` groups the call leaves out.
+fn report_missing(cx: &mut Cx<'_>, sig: &Signature, binding: &Binding, call: Range<usize>) {
+    let missing: Vec<&Param> = binding
+        .missing
         .iter()
-        .filter(|i| !given.contains_key(i))
         .filter_map(|&i| sig.params.get(i))
-        .chain(
-            required[..next_required.min(required.len())]
-                .iter()
-                .filter(|i| !given.contains_key(i))
-                .filter_map(|&i| sig.params.get(i)),
-        )
         .collect();
     if !missing.is_empty() {
         let list: Vec<String> = missing
@@ -453,24 +343,17 @@ fn check_args<'t>(cx: &mut Cx<'t>, sig: &Sig, args: Option<Node<'t>>, call: Rang
             ),
         );
     }
-    for g in &sig.required_groups {
-        if !given_groups.contains_key(g) {
-            let members: Vec<String> = sig
-                .params
-                .iter()
-                .filter(|q| q.alt_group == Some(*g))
-                .map(|q| format!("\\{}", q.name))
-                .collect();
-            cx.report(
-                &rules::missing_alternative::RULE,
-                call.clone(),
-                format!("`{}` needs one of {}", sig.name, members.join(" | ")),
-            );
-        }
+    for &g in &binding.missing_groups {
+        let members: Vec<String> = sig.members(g).map(|q| format!("\\{}", q.name)).collect();
+        cx.report(
+            &rules::missing_alternative::RULE,
+            call.clone(),
+            format!("`{}` needs one of {}", sig.name, members.join(" | ")),
+        );
     }
 }
 
-fn check_value<'t>(cx: &mut Cx<'t>, p: &SigParam, v: Node<'t>) {
+fn check_value<'t>(cx: &mut Cx<'t>, p: &Param, v: Node<'t>) {
     if crate::syntax_util::kind(v) == "star" {
         return;
     }
@@ -524,8 +407,8 @@ fn check_value<'t>(cx: &mut Cx<'t>, p: &SigParam, v: Node<'t>) {
     }
     // `anytype` parameters take any type; an array of any rank (Dim's
     // ArrPar) or an `anytype` array needs some array.
-    if p.any_array || matches!(p.ty.element(), Ty::Any) {
-        if (p.any_array || p.ty.dims() > 0) && actual.dims() == 0 {
+    if p.any_rank || matches!(p.ty.element(), Ty::Any) {
+        if (p.any_rank || p.ty.dims() > 0) && actual.dims() == 0 {
             cx.report(
                 &rules::array_argument::RULE,
                 v.byte_range(),

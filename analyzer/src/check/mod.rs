@@ -11,8 +11,10 @@ mod cache;
 mod calls;
 mod decls;
 mod exprs;
+mod file_wide;
 pub mod once;
 mod place;
+mod routine;
 mod shared;
 mod stmts;
 mod suggest;
@@ -124,7 +126,16 @@ pub(crate) enum RoutineSym<'t> {
         &'t RoutineDecl,
         #[allow(dead_code, reason = "where the routine is declared, for navigation")] ItemRef,
     ),
-    Builtin(&'static Routine, bool),
+    Builtin(
+        &'static Routine,
+        #[allow(
+            dead_code,
+            reason = "always `returns.is_some()` since the checker's signature is \
+                      sema::signature's; to go with the next change of the files \
+                      that match on it (tokens, completion)"
+        )]
+        bool,
+    ),
 }
 
 /// The scope of the routine being checked.
@@ -172,8 +183,8 @@ pub(crate) struct Cx<'t> {
     /// use and kept for the whole check.
     pub(crate) inits: Option<crate::consteval::InitCache>,
     /// Signatures of the routines called so far, by the address of their
-    /// declaration (and whether a built-in is called as a function).
-    signatures: HashMap<(usize, bool, bool), std::rc::Rc<calls::Sig>>,
+    /// declaration (and whether it is declared in the task).
+    signatures: HashMap<(usize, bool), std::rc::Rc<crate::sema::signature::Signature>>,
     /// Aggregates of literals found to fit their type, by (the type, the
     /// array sizes, the aggregate's shape): the same shape fits again.
     pub(crate) clean_literals: HashSet<(String, Vec<Option<usize>>, Vec<u8>)>,
@@ -236,7 +247,7 @@ impl<'t> Cx<'t> {
     }
 
     fn check(&mut self) {
-        decls::check_file_wide(self);
+        file_wide::check_file_wide(self);
         for (mi, module, node) in self.modules() {
             self.enter_module(mi, module);
             decls::check_module(self, node, module);
@@ -319,19 +330,7 @@ impl<'t> Cx<'t> {
     }
 
     fn lookup_items_folded(&self, key: &str) -> Vec<ItemRef> {
-        let mine = self.module_idx();
-        let here = |r: &&ItemRef| r.unit == self.unit_idx && Some(r.module) == mine;
-        let mut own: Vec<ItemRef> = Vec::new();
-        if let Some(locals) = self.task.locals.get(key) {
-            own.extend(locals.iter().filter(here));
-        }
-        if let Some(globals) = self.task.globals.get(key) {
-            own.extend(globals.iter().filter(here));
-            if own.is_empty() {
-                return globals.iter().filter(|r| !here(r)).copied().collect();
-            }
-        }
-        own
+        crate::sema::scope::visible(self.task, self.unit_idx, self.module_idx(), key)
     }
 
     /// A `LOCAL` declaration of another module under `name`, to explain why

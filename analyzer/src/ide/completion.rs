@@ -7,13 +7,14 @@
 use std::collections::{HashMap, HashSet};
 
 use super::context::{Before, before, call_at, partial, statement_start, words};
-use super::signature::{Sig, active, sig_of};
+use super::signature::active;
 use super::usage::{function_rank, instruction_rank};
 use super::{CompletionItem, CompletionKind};
 use crate::catalogue::Catalogue;
 use crate::check::{Cx, RoutineSym};
 use crate::items::{RoutineKind, Storage};
 use crate::names::{fold, same};
+use crate::sema::signature::Signature;
 use crate::task::{Item, Task};
 use crate::ty::Ty;
 
@@ -278,9 +279,9 @@ pub fn completions_for(
         && call.name_start < offset - p
     {
         let sym = cx.resolve_routine(&call.name, call.is_function);
-        let expected = sym.map(sig_of).and_then(|sig| {
+        let expected = sym.map(Signature::of).and_then(|sig| {
             let i = active(&sig, &call)?;
-            Some(sig.params.get(i)?.ty.clone())
+            Some(sig.params.get(i)?.type_name.clone())
         });
         if call.current.name.is_some() && !call.current.has_value && call.current.optional {
             return optional_args(&mut cx, &bf);
@@ -639,7 +640,7 @@ fn optional_args(cx: &mut Cx<'_>, bf: &Before) -> Vec<CompletionItem> {
     let Some(sym) = cx.resolve_routine(&call.name, call.is_function) else {
         return Vec::new();
     };
-    let sig: Sig = sig_of(sym);
+    let sig = Signature::of(sym);
     let given: Vec<&str> = call.done.iter().filter_map(|a| a.name.as_deref()).collect();
     let given_groups: HashSet<u32> = sig
         .params
@@ -673,7 +674,7 @@ fn optional_args(cx: &mut Cx<'_>, bf: &Before) -> Vec<CompletionItem> {
         let detail = if p.switch {
             format!("\\{} (switch)", p.name)
         } else {
-            format!("\\{} {}", p.ty, p.name)
+            format!("\\{} {}", p.type_name, p.name)
         };
         out.push(CompletionItem {
             label: p.name.clone(),

@@ -5,10 +5,10 @@ use std::ops::Range;
 
 use tree_sitter::Node;
 
-use super::signature::sig_of;
 use super::tokens::Scopes;
 use super::{InlayHint, InlayKind};
 use crate::names::same;
+use crate::sema::signature::{Arg, Signature, Target, bind_args};
 use crate::syntax::{field, kind};
 use crate::syntax_util::walk_pruned;
 use crate::task::Task;
@@ -92,29 +92,38 @@ pub fn inlay_hints(
         let Some(sym) = cx.resolve_routine(name_text, call.kind() == kind::FUNCTION_CALL) else {
             continue;
         };
-        let sig = sig_of(sym);
+        let sig = Signature::of(sym);
         let mut cursor = args.walk();
         let args: Vec<Node<'_>> = args
             .children_by_field_name(field::ARGUMENT, &mut cursor)
             .collect();
-        let named: Vec<&str> = args
-            .iter()
-            .filter_map(|a| a.child_by_field_name(field::NAME))
-            .filter_map(|n| text.get(n.byte_range()))
-            .collect();
-        let mut required = sig
-            .params
-            .iter()
-            .filter(|p| !p.optional && !named.iter().any(|n| same(n, &p.name)));
-        if sig.params.iter().filter(|p| !p.optional).count() < 2 {
+        if sig.params.iter().filter(|p| p.positional()).count() < 2 {
             continue;
         }
-        for a in args {
-            if a.child_by_field_name(field::NAME).is_some() || is_optional(a) {
+        let given: Vec<Arg<'_>> = args
+            .iter()
+            .map(|a| {
+                match a
+                    .child_by_field_name(field::NAME)
+                    .and_then(|n| text.get(n.byte_range()))
+                {
+                    Some(n) => Arg::Named(n),
+                    // A lone `\`: no parameter's name.
+                    None if is_optional(*a) => Arg::Named(""),
+                    None => Arg::Positional,
+                }
+            })
+            .collect();
+        let binding = bind_args(&sig, &given);
+        for ((a, bound), arg) in args.iter().zip(&binding.args).zip(&given) {
+            if *arg != Arg::Positional {
                 continue;
             }
-            let Some(p) = required.next() else {
+            let Target::Param(i) = bound.target else {
                 break;
+            };
+            let Some(p) = sig.params.get(i) else {
+                continue;
             };
             let Some(value) = a.child_by_field_name(field::VALUE) else {
                 continue;

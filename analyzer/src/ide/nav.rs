@@ -10,6 +10,7 @@ use super::resolve::{
 use crate::check::Cx;
 use crate::diagnostic::Edit;
 use crate::names::{fold, same};
+use crate::sema::signature::{Arg, Signature, Target, bind_args};
 use crate::syntax::{field, kind};
 use crate::task::{Item, Task};
 
@@ -221,36 +222,39 @@ fn is_write(path: &NamePath<'_>) -> bool {
     false
 }
 
-/// The arguments of the last argument list seen, by node id: the position
-/// of each unnamed one among the unnamed, and the names given.
+/// The arguments of the last argument list seen: their node ids and the
+/// names given (`None` for a positional one).
 #[derive(Default)]
 struct ArgLists {
     list: Option<usize>,
-    positional: std::collections::HashMap<usize, usize>,
-    named: Vec<String>,
+    ids: Vec<usize>,
+    names: Vec<Option<String>>,
 }
 
 impl ArgLists {
     fn of(&mut self, list: tree_sitter::Node<'_>, text: &str) -> &ArgLists {
         if self.list != Some(list.id()) {
             self.list = Some(list.id());
-            self.positional.clear();
-            self.named.clear();
-            let mut k = 0;
+            self.ids.clear();
+            self.names.clear();
             for a in crate::syntax_util::fields(list, field::ARGUMENT) {
-                match a
-                    .child_by_field_name(field::NAME)
-                    .and_then(|n| text.get(n.byte_range()))
-                {
-                    Some(name) => self.named.push(name.to_owned()),
-                    None => {
-                        self.positional.insert(a.id(), k);
-                        k += 1;
-                    }
-                }
+                self.ids.push(a.id());
+                self.names.push(
+                    a.child_by_field_name(field::NAME)
+                        .and_then(|n| text.get(n.byte_range()))
+                        .map(str::to_owned),
+                );
             }
         }
         self
+    }
+
+    /// The arguments as the binder takes them.
+    fn args(&self) -> Vec<Arg<'_>> {
+        self.names
+            .iter()
+            .map(|n| n.as_deref().map_or(Arg::Positional, Arg::Named))
+            .collect()
     }
 }
 
@@ -283,23 +287,14 @@ fn passed_by_reference(cx: &mut Cx<'_>, path: &NamePath<'_>, lists: &mut ArgList
     let Some(sym) = super::resolve::call_routine(cx, call) else {
         return false;
     };
-    let sig = super::signature::sig_of(sym);
-    let text = cx.text;
-    let param = match arg
-        .child_by_field_name(field::NAME)
-        .and_then(|n| text.get(n.byte_range()))
-    {
-        Some(name) => sig.params.iter().find(|p| same(&p.name, name)),
-        None => {
-            let lists = lists.of(list, text);
-            let Some(&k) = lists.positional.get(&arg.id()) else {
-                return false;
-            };
-            sig.params
-                .iter()
-                .filter(|p| !p.optional && !lists.named.iter().any(|n| same(n, &p.name)))
-                .nth(k)
-        }
+    let sig = Signature::of(sym);
+    let lists = lists.of(list, cx.text);
+    let Some(k) = lists.ids.iter().position(|&id| id == arg.id()) else {
+        return false;
+    };
+    let param = match bind_args(&sig, &lists.args()).args.get(k).map(|a| a.target) {
+        Some(Target::Param(i)) => sig.params.get(i),
+        _ => None,
     };
     param.is_some_and(|p| p.mode != crate::catalogue::Mode::In)
 }

@@ -3,73 +3,15 @@
 use std::ops::Range;
 
 use super::SignatureHelp;
-use super::context::{CallCx, before, call_at};
+use super::context::{ArgCx, CallCx, before, call_at};
 use crate::catalogue::Mode;
-use crate::check::{Cx, RoutineSym};
+use crate::check::Cx;
 use crate::names::same;
+use crate::sema::signature::{Arg, Binding, Param, Signature, Target, bind_args};
 use crate::task::Task;
 
-/// A parameter, of a built-in or a user routine.
-#[derive(Clone, Debug)]
-pub(crate) struct P {
-    pub name: String,
-    pub ty: String,
-    pub optional: bool,
-    pub switch: bool,
-    pub alt_group: Option<u32>,
-    pub mode: Mode,
-}
-
-/// A routine's signature as the editor features need it.
-#[derive(Clone, Debug)]
-pub(crate) struct Sig {
-    pub name: String,
-    pub params: Vec<P>,
-    pub is_function: bool,
-    pub doc: Option<String>,
-}
-
-pub(crate) fn sig_of(sym: RoutineSym<'_>) -> Sig {
-    match sym {
-        RoutineSym::Builtin(r, _) => Sig {
-            name: r.name.clone(),
-            params: r
-                .params
-                .iter()
-                .map(|p| P {
-                    name: p.name.clone(),
-                    ty: p.ty.clone(),
-                    optional: p.optional,
-                    switch: p.switch,
-                    alt_group: p.alt_group,
-                    mode: p.mode.unwrap_or(Mode::In),
-                })
-                .collect(),
-            is_function: r.returns.is_some(),
-            doc: Some(r.summary.clone()).filter(|s| !s.is_empty()),
-        },
-        RoutineSym::User(d, _) => Sig {
-            name: d.name.clone(),
-            params: d
-                .params
-                .iter()
-                .map(|p| P {
-                    name: p.name.clone(),
-                    ty: p.ty.as_ref().map(|t| t.name.clone()).unwrap_or_default(),
-                    optional: p.optional,
-                    switch: p.switch,
-                    alt_group: p.alt_group,
-                    mode: p.mode,
-                })
-                .collect(),
-            is_function: d.kind == crate::items::RoutineKind::Func,
-            doc: None,
-        },
-    }
-}
-
 /// The routine of the call around `offset` and the call's context.
-pub(crate) fn call_sig(task: &Task, unit: usize, offset: usize) -> Option<(Sig, CallCx)> {
+pub(crate) fn call_sig(task: &Task, unit: usize, offset: usize) -> Option<(Signature, CallCx)> {
     let u = task.units.get(unit)?;
     let bf = before(&u.text, offset);
     if bf.in_comment || bf.in_string {
@@ -78,53 +20,47 @@ pub(crate) fn call_sig(task: &Task, unit: usize, offset: usize) -> Option<(Sig, 
     let call = call_at(&bf)?;
     let mut cx = Cx::at(task, unit, offset)?;
     let sym = cx.resolve_routine(&call.name, call.is_function)?;
-    Some((sig_of(sym), call))
+    Some((Signature::of(sym), call))
 }
 
-/// Where the next argument of the call goes: the index of the first
-/// parameter after those the arguments before it filled (arguments come in
-/// the order of the parameters; a positional argument fills the next
-/// required parameter, a named one its own).
-pub(crate) fn next_position(sig: &Sig, call: &CallCx) -> usize {
-    let mut at = 0;
-    for arg in &call.done {
-        let named = arg
-            .name
-            .as_ref()
-            .and_then(|n| sig.params.iter().position(|p| same(&p.name, n)));
-        let filled = match named {
-            Some(i) => Some(i),
-            None if arg.optional => None,
-            None => sig
-                .params
-                .iter()
-                .enumerate()
-                .skip(at)
-                .find(|(_, p)| !p.optional)
-                .map(|(i, _)| i),
-        };
-        if let Some(i) = filled {
-            at = at.max(i + 1);
-        }
+/// An argument typed so far, as the binder takes it.
+fn arg_of(a: &ArgCx) -> Arg<'_> {
+    match (&a.name, a.optional) {
+        (Some(n), _) => Arg::Named(n),
+        // A lone `\`: no parameter's name.
+        (None, true) => Arg::Named(""),
+        (None, false) => Arg::Positional,
     }
-    at
+}
+
+/// The arguments before the current one, bound to the signature.
+fn bind_done(sig: &Signature, call: &CallCx) -> Binding {
+    let args: Vec<Arg<'_>> = call.done.iter().map(arg_of).collect();
+    bind_args(sig, &args)
+}
+
+/// Where the next argument of the call goes: the index of the parameter
+/// after the last one the arguments before it are bound to.
+pub(crate) fn next_position(sig: &Signature, call: &CallCx) -> usize {
+    bind_done(sig, call).next_param()
 }
 
 /// The index of the parameter the current argument goes to: a named one's
 /// own; after `\`, the first optional parameter from the call's position
-/// on whose name starts with what is typed; else the next required one.
-pub(crate) fn active(sig: &Sig, call: &CallCx) -> Option<usize> {
+/// on whose name starts with what is typed; else the parameter the checker
+/// binds it to (the next positional one).
+pub(crate) fn active(sig: &Signature, call: &CallCx) -> Option<usize> {
     if let Some(name) = &call.current.name
         && (call.current.optional || call.current.has_value)
-        && let Some(i) = sig.params.iter().position(|p| same(&p.name, name))
+        && let Some(i) = sig.param(name)
     {
         return Some(i);
     }
-    let at = next_position(sig, call);
     if call.current.optional {
+        let at = next_position(sig, call);
         let typed = call.current.name.as_deref().unwrap_or_default();
-        let starts = |p: &&P| {
-            p.optional
+        let starts = |p: &&Param| {
+            !p.positional()
                 && p.name
                     .get(..typed.len())
                     .is_some_and(|head| same(head, typed))
@@ -138,23 +74,27 @@ pub(crate) fn active(sig: &Sig, call: &CallCx) -> Option<usize> {
             .or_else(|| sig.params.iter().enumerate().find(|(_, p)| starts(p)))
             .map(|(i, _)| i);
     }
-    sig.params
-        .iter()
-        .enumerate()
-        .skip(at)
-        .find(|(_, p)| !p.optional)
-        .map(|(i, _)| i)
+    let mut args: Vec<Arg<'_>> = call.done.iter().map(arg_of).collect();
+    args.push(Arg::Positional);
+    match bind_args(sig, &args).args.last()?.target {
+        Target::Param(i) => Some(i),
+        Target::UnknownName | Target::TooMany => None,
+    }
 }
 
 /// A parameter as the signature shows it: `[\switch Conc]`, `robtarget
 /// ToPoint`, `PERS tooldata Tool`, `[\PERS wobjdata WObj]`.
-fn param_label(p: &P) -> String {
+fn param_label(p: &Param) -> String {
     let mode = if p.mode == Mode::In {
         String::new()
     } else {
         format!("{} ", p.mode.keyword())
     };
-    let ty = if p.switch { "switch" } else { p.ty.as_str() };
+    let ty = if p.switch {
+        "switch"
+    } else {
+        p.type_name.as_str()
+    };
     let ty = if ty.is_empty() { "?" } else { ty };
     if p.optional {
         format!("[\\{mode}{ty} {}]", p.name)
@@ -166,9 +106,9 @@ fn param_label(p: &P) -> String {
 /// `MoveL [\switch Conc], robtarget ToPoint, [\identno ID], speeddata
 /// Speed, [\num V] | [\num T], ...` (a function's in parentheses) and each
 /// parameter's range in it.
-pub(crate) fn label(sig: &Sig) -> (String, Vec<Range<usize>>) {
+pub(crate) fn label(sig: &Signature) -> (String, Vec<Range<usize>>) {
     let mut out = sig.name.clone();
-    out.push_str(if sig.is_function { "(" } else { " " });
+    out.push_str(if sig.is_function() { "(" } else { " " });
     let mut ranges = Vec::new();
     let mut prev_group = None;
     for (i, p) in sig.params.iter().enumerate() {
@@ -184,7 +124,7 @@ pub(crate) fn label(sig: &Sig) -> (String, Vec<Range<usize>>) {
         out.push_str(&param_label(p));
         ranges.push(start..out.len());
     }
-    if sig.is_function {
+    if sig.is_function() {
         out.push(')');
     }
     (out, ranges)
@@ -207,7 +147,7 @@ pub fn signature_help(task: &Task, unit: usize, offset: usize) -> Option<Signatu
             let doc = if p.switch {
                 "switch".to_owned()
             } else {
-                format!("{mode}{}", p.ty)
+                format!("{mode}{}", p.type_name)
             };
             (r, Some(doc))
         })

@@ -134,10 +134,11 @@ fn infer_type(task: &Task, unit: usize, range: Range<usize>) -> Option<String> {
             use crate::ide::signature::{active, call_sig};
             let (sig, call) = call_sig(task, unit, range.end)?;
             let p = sig.params.get(active(&sig, &call)?)?;
-            if p.ty.eq_ignore_ascii_case(crate::catalogue::ANYTYPE) || p.ty.is_empty() {
+            if p.type_name.eq_ignore_ascii_case(crate::catalogue::ANYTYPE) || p.type_name.is_empty()
+            {
                 return None;
             }
-            Some(p.ty.clone())
+            Some(p.type_name.clone())
         }
         _ => None,
     }

@@ -2,3 +2,5 @@
 //! the checker and the editor features alike.
 
 pub(crate) mod labels;
+pub(crate) mod scope;
+pub(crate) mod signature;

@@ -251,6 +251,32 @@ fn signature_help_marks_the_active_parameter_and_shows_types() {
 }
 
 #[test]
+fn signature_help_binds_as_the_checker_does() {
+    // Alternatives before a positional parameter are not positional: the
+    // value after them goes to the next positional parameter.
+    let pick = "MODULE m\n  PROC Pick(\\num A | \\num B, num force, \\switch Hold)\n  ENDPROC\n  PROC main()\n";
+    let at = |call: &str| active_label(&format!("{pick}    {call}\n  ENDPROC\nENDMODULE\n"));
+    assert_eq!(at("Pick $0"), "num force");
+    assert_eq!(at("Pick \\A:=1, $0"), "num force");
+    assert_eq!(at("Pick \\B:=1, 5 \\H$0"), "[\\switch Hold]");
+    assert_eq!(
+        active_label(&in_proc("    MoveL pHome, vSlow \\T:=2, $0")),
+        "zonedata Zone"
+    );
+    // An optional argument written before its place does not move the
+    // next value past the positional parameters it skipped: the checker
+    // binds it to Speed, and so does the help.
+    assert_eq!(
+        active_label(&in_proc("    MoveL pHome, \\V:=100, $0")),
+        "speeddata Speed"
+    );
+    // No positional parameter left.
+    let (task, unit, offset) = fixture(&in_proc("    Grip 1, $0"));
+    let help = signature_help(&task, unit, offset).unwrap_or_else(|| panic!("no help"));
+    assert_eq!(help.active_parameter, None);
+}
+
+#[test]
 fn after_backslash_the_parameters_that_can_come_next_first() {
     let first = |src: &str| -> Vec<String> {
         labels(&in_proc(src))

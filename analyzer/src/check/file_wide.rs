@@ -1,0 +1,125 @@
+//! The checks that look at the whole file's text: unfilled placeholders
+//! and strings over the length limit, wherever they are.
+
+use std::ops::Range;
+
+use tree_sitter::Node;
+
+use super::Cx;
+use crate::rules;
+
+/// The longest string RAPID holds (the evaluator's limit too).
+const MAX_STRING: usize = rapid_evaluator::MAX_STRING_LEN;
+
+/// Placeholders and string lengths, anywhere in the file.
+pub(super) fn check_file_wide(cx: &mut Cx<'_>) {
+    // The walk only enters nodes that overlap a region of the text that may
+    // hold a finding, and nodes with syntax errors.
+    let regions = placeholder_or_long_string_regions(cx.text);
+    if regions.is_empty() {
+        return;
+    }
+    let unit = cx.unit;
+    check_file_wide_in(cx, unit.tree().root_node(), &regions);
+}
+
+/// [`check_file_wide`] in one tree, entering only nodes that overlap
+/// `regions` (or hold a syntax error).
+fn check_file_wide_in(cx: &mut Cx<'_>, root: Node<'_>, regions: &[Range<usize>]) {
+    let overlaps = |node: Node<'_>| {
+        let r = node.byte_range();
+        let i = regions.partition_point(|g| g.end <= r.start);
+        regions.get(i).is_some_and(|g| g.start < r.end)
+    };
+    let worth_entering = |node: Node<'_>| overlaps(node) || node.has_error();
+    static KINDS: std::sync::OnceLock<(u16, u16)> = std::sync::OnceLock::new();
+    let (placeholder, string) = *KINDS.get_or_init(|| {
+        let language = crate::syntax::language();
+        (
+            language.id_for_node_kind("placeholder", true),
+            language.id_for_node_kind("string", true),
+        )
+    });
+    crate::syntax_util::walk_pruned(root, &mut |node| {
+        let kind = node.kind_id();
+        match kind {
+            k if k == placeholder && overlaps(node) => {
+                let p = cx.node_text(node);
+                cx.report(
+                    &rules::incomplete_code::RULE,
+                    node.byte_range(),
+                    format!("unfilled placeholder {p}: this code is not finished"),
+                );
+            }
+            k if k == string && overlaps(node) => {
+                let len = string_length(cx, node);
+                if len > MAX_STRING {
+                    cx.report(
+                        &rules::string_too_long::RULE,
+                        node.byte_range(),
+                        format!("this string has {len} characters; a RAPID string holds at most {MAX_STRING}"),
+                    );
+                }
+            }
+            _ => {}
+        }
+        kind != string && worth_entering(node)
+    });
+}
+
+/// The regions of the text (sorted, disjoint byte ranges) where a
+/// placeholder or a string longer than the limit may be: the placeholder
+/// token's pattern, `<[A-Z]{2,4}>` (comparisons such as `a<b` do not match),
+/// and the lines with more than the limit between their first and last
+/// quote (a string does not span lines).
+fn placeholder_or_long_string_regions(text: &str) -> Vec<Range<usize>> {
+    // Both need a quote or a `<`: most generated modules have neither, and
+    // two searches of the whole text cost less than a look at every line.
+    if !text.contains('"') && !text.contains('<') {
+        return Vec::new();
+    }
+    let bytes = text.as_bytes();
+    let mut regions: Vec<Range<usize>> = Vec::new();
+    let mut add = |r: Range<usize>| match regions.last_mut() {
+        Some(last) if last.end >= r.start => last.end = last.end.max(r.end),
+        _ => regions.push(r),
+    };
+    let mut line_start = 0;
+    for line in text.split_inclusive('\n') {
+        let start = line_start;
+        line_start += line.len();
+        if line.len() > MAX_STRING
+            && let (Some(a), Some(b)) = (line.find('"'), line.rfind('"'))
+            && b - a > MAX_STRING
+        {
+            add(start..start + line.len());
+            continue;
+        }
+        if !line.contains('<') {
+            continue;
+        }
+        for (i, &b) in line.as_bytes().iter().enumerate() {
+            if b != b'<' {
+                continue;
+            }
+            let at = start + i;
+            let rest = bytes.get(at + 1..).unwrap_or_default();
+            let upper = rest.iter().take_while(|c| c.is_ascii_uppercase()).count();
+            if (2..=4).contains(&upper) && rest.get(upper) == Some(&b'>') {
+                add(at..at + upper + 2);
+            }
+        }
+    }
+    regions
+}
+
+/// The number of characters of a string literal's value (escapes count one).
+fn string_length(cx: &Cx<'_>, node: Node<'_>) -> usize {
+    let mut cursor = node.walk();
+    node.named_children(&mut cursor)
+        .map(|c| match crate::syntax_util::kind(c) {
+            "escape_sequence" => 1,
+            _ => cx.node_text(c).chars().count(),
+        })
+        .sum()
+}

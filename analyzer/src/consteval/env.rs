@@ -1,0 +1,461 @@
+//! The evaluation environment over a task: each module's scope (its own
+//! items, the task's globals, predefined data and signals), a routine's scope
+//! around an offset, and the catalogue's predefined data.
+
+use super::*;
+
+/// State shared by every scope of one [`with_env`] call.
+pub(super) struct Shared<'t> {
+    task: &'t Task,
+    options: EnvOptions,
+    /// Index of each unit's first module in the scope list.
+    offsets: Vec<usize>,
+    types: OnceCell<crate::ty::Types<'t>>,
+    /// Lowered initial values of module data, kept across calls.
+    inits: Option<&'t InitCache>,
+}
+
+impl<'t> Shared<'t> {
+    pub(super) fn new(
+        task: &'t Task,
+        options: EnvOptions,
+        inits: Option<&'t InitCache>,
+    ) -> Shared<'t> {
+        let mut offsets = Vec::with_capacity(task.units.len());
+        let mut n = 0;
+        for u in &task.units {
+            offsets.push(n);
+            n += u.items.modules.len();
+        }
+        Shared {
+            task,
+            options,
+            offsets,
+            types: OnceCell::new(),
+            inits,
+        }
+    }
+
+    pub(super) fn index(&self, unit: usize, module: usize) -> Option<usize> {
+        let count = self.task.units.get(unit)?.items.modules.len();
+        (module < count).then(|| self.offsets.get(unit).map(|o| o + module))?
+    }
+
+    fn types(&self) -> &crate::ty::Types<'t> {
+        self.types.get_or_init(|| self.task.types())
+    }
+
+    fn record_layout(&self, name: &str) -> Option<Vec<(String, Type)>> {
+        match self.types().user(name) {
+            Some(UserType::Record(r)) => Some(
+                r.components
+                    .iter()
+                    .map(|(n, t, _)| {
+                        let ty = t.as_ref().map_or("?", |t| t.name.as_str());
+                        (n.clone(), Type::named(ty))
+                    })
+                    .collect(),
+            ),
+            Some(UserType::Alias(_)) => None,
+            None => catalogue_layout(self.task.catalogue, name),
+        }
+    }
+
+    fn alias_of(&self, name: &str) -> Option<Type> {
+        match self.types().user(name) {
+            Some(UserType::Alias(a)) => a.of.as_ref().map(|t| Type::named(&t.name)),
+            Some(UserType::Record(_)) => None,
+            None => catalogue_alias(self.task.catalogue, name),
+        }
+    }
+
+    /// The initial value to offer for data of this storage.
+    fn offers_initial(&self, storage: Storage) -> bool {
+        match storage {
+            Storage::Const => true,
+            Storage::Pers => self.options.pers_initial,
+            Storage::Var => self.options.var_initial,
+        }
+    }
+}
+
+pub(super) fn catalogue_layout(cat: &Catalogue, name: &str) -> Option<Vec<(String, Type)>> {
+    let t = cat.datatype(name)?;
+    (t.kind == TypeKind::Record).then(|| {
+        t.components
+            .iter()
+            .map(|c| (c.name.clone(), Type::named(&c.ty)))
+            .collect()
+    })
+}
+
+pub(super) fn catalogue_alias(cat: &Catalogue, name: &str) -> Option<Type> {
+    cat.datatype(name)
+        .and_then(|t| t.alias_of.as_deref())
+        .map(Type::named)
+}
+
+/// The names of one module (or, with `module` `None`, of the task's
+/// globals only).
+pub(super) struct ModuleScope<'s, 't> {
+    shared: &'s Shared<'t>,
+    unit: usize,
+    module: Option<usize>,
+    /// Every module scope of the task, to evaluate a constant where it is
+    /// declared.
+    pub(super) all: OnceCell<&'s [ModuleScope<'s, 't>]>,
+    /// Guards the evaluation of array sizes against cycles.
+    dims_depth: Cell<u32>,
+}
+
+impl<'s, 't> ModuleScope<'s, 't> {
+    pub(super) fn new(shared: &'s Shared<'t>, unit: usize, module: Option<usize>) -> Self {
+        ModuleScope {
+            shared,
+            unit,
+            module,
+            all: OnceCell::new(),
+            dims_depth: Cell::new(0),
+        }
+    }
+
+    /// Items visible from this module under `name`
+    /// ([`crate::sema::scope::visible`], the checker's lookup too).
+    fn visible(&self, name: &str) -> Vec<ItemRef> {
+        crate::names::with_folded(name, |key| self.visible_folded(key))
+    }
+
+    fn visible_folded(&self, key: &str) -> Vec<ItemRef> {
+        crate::sema::scope::visible(self.shared.task, self.unit, self.module, key)
+    }
+
+    fn scope_of(&self, unit: usize, module: usize) -> Option<&'s ModuleScope<'s, 't>> {
+        let i = self.shared.index(unit, module)?;
+        self.all.get()?.get(i)
+    }
+
+    fn is_builtin(&self, name: &str) -> bool {
+        is_builtin_call(self.shared.task, self.module.map(|m| (self.unit, m)), name)
+    }
+}
+
+impl Env for ModuleScope<'_, '_> {
+    fn lookup(&self, name: &str) -> Lookup<'_> {
+        let task = self.shared.task;
+        for r in self.visible(name) {
+            let Some(d) = task.data(r) else {
+                continue;
+            };
+            let Some(unit) = task.units.get(r.unit) else {
+                return Lookup::Unknown;
+            };
+            let Some(scope) = self.scope_of(r.unit, r.module) else {
+                return Lookup::Unknown;
+            };
+            return data_lookup(
+                self.shared,
+                d,
+                self.shared.inits.and_then(|c| c.slot(r)),
+                unit,
+                Some(scope),
+                scope,
+                &|n| scope.is_builtin(n),
+                &scope.dims_depth,
+            );
+        }
+        outside_the_task(task, name, self.shared.options)
+    }
+
+    fn record_layout(&self, type_name: &str) -> Option<Vec<(String, Type)>> {
+        self.shared.record_layout(type_name)
+    }
+
+    fn alias_of(&self, type_name: &str) -> Option<Type> {
+        self.shared.alias_of(type_name)
+    }
+
+    /// The task's view: calls are bound with its RobotWare's signatures.
+    fn catalogue(&self) -> &crate::catalogue::Catalogue {
+        self.shared.task.catalogue
+    }
+}
+
+/// Names the task does not declare: the catalogue's predefined data and
+/// configured signals.
+pub(super) fn outside_the_task<'a>(task: &Task, name: &str, options: EnvOptions) -> Lookup<'a> {
+    if let Some(d) = task.catalogue.datum(name) {
+        return catalogue_lookup(d, options);
+    }
+    let key = fold(name);
+    if let Some(ty) = task.signals.as_ref().and_then(|s| s.get(&key)) {
+        return Lookup::Variable {
+            kind: VarKind::Var,
+            ty: Type::named(*ty),
+            initial: None,
+            scope: None,
+        };
+    }
+    Lookup::Unknown
+}
+
+/// The predefined data of the catalogue, whose values are RAPID literals
+/// (the same in every view: it reads the whole catalogue).
+pub(super) struct CatalogueEnv {
+    options: EnvOptions,
+}
+
+pub(super) static CATALOGUE_ENV: CatalogueEnv = CatalogueEnv {
+    options: EnvOptions {
+        pers_initial: false,
+        var_initial: false,
+    },
+};
+pub(super) static CATALOGUE_ENV_INITIAL: CatalogueEnv = CatalogueEnv {
+    options: EnvOptions {
+        pers_initial: true,
+        var_initial: true,
+    },
+};
+
+impl Env for CatalogueEnv {
+    fn lookup(&self, name: &str) -> Lookup<'_> {
+        match crate::catalogue::base().datum(name) {
+            Some(d) => catalogue_lookup(d, self.options),
+            None => Lookup::Unknown,
+        }
+    }
+    fn record_layout(&self, type_name: &str) -> Option<Vec<(String, Type)>> {
+        catalogue_layout(crate::catalogue::base(), type_name)
+    }
+    fn alias_of(&self, type_name: &str) -> Option<Type> {
+        catalogue_alias(crate::catalogue::base(), type_name)
+    }
+}
+
+pub(super) fn catalogue_lookup<'a>(d: &'static Datum, options: EnvOptions) -> Lookup<'a> {
+    let value = d
+        .value
+        .as_deref()
+        .and_then(rapid_evaluator::parse_data_literal);
+    let ty = Type::named(&d.ty);
+    let scope: &'static dyn Env = if options.pers_initial || options.var_initial {
+        &CATALOGUE_ENV_INITIAL
+    } else {
+        &CATALOGUE_ENV
+    };
+    let kind = match d.kind {
+        DatumKind::Const => {
+            return match value {
+                Some(e) => Lookup::Constant {
+                    expr: Cow::Owned(e),
+                    ty,
+                    scope: Some(scope),
+                },
+                // Let the evaluator's own table answer (pi, STR_*, ...).
+                None => Lookup::Unknown,
+            };
+        }
+        DatumKind::Pers => VarKind::Pers,
+        DatumKind::Var => VarKind::Var,
+    };
+    let offered = match kind {
+        VarKind::Pers => options.pers_initial,
+        VarKind::Var => options.var_initial,
+    };
+    Lookup::Variable {
+        kind,
+        ty,
+        initial: value.filter(|_| offered).map(Cow::Owned),
+        scope: Some(scope),
+    }
+}
+
+/// What a data declaration gives the evaluator. `scope` is where names in
+/// its initial value resolve (`None`: the asking environment); `dims_env`
+/// evaluates its array sizes. `slot` keeps its lowered initial value.
+#[allow(clippy::too_many_arguments)]
+pub(super) fn data_lookup<'a>(
+    shared: &Shared<'_>,
+    d: &DataDecl,
+    slot: Option<&'a OnceCell<Option<Expr>>>,
+    unit: &Unit,
+    scope: Option<&'a dyn Env>,
+    dims_env: &dyn Env,
+    is_builtin: &dyn Fn(&str) -> bool,
+    dims_depth: &Cell<u32>,
+) -> Lookup<'a> {
+    let ty = decl_type(d, unit, dims_env, dims_depth);
+    let lower = || {
+        d.init
+            .as_ref()
+            .and_then(|r| expression_at(unit, r.clone()))
+            .map(|n| lower_with(n, &unit.text, is_builtin))
+    };
+    let init = || -> Option<Cow<'a, Expr>> {
+        match slot {
+            Some(slot) => slot.get_or_init(lower).as_ref().map(Cow::Borrowed),
+            None => lower().map(Cow::Owned),
+        }
+    };
+    let kind = match d.storage {
+        Storage::Const => {
+            return Lookup::Constant {
+                expr: init().unwrap_or(Cow::Owned(Expr::Unknown)),
+                ty,
+                scope,
+            };
+        }
+        Storage::Pers => VarKind::Pers,
+        Storage::Var => VarKind::Var,
+    };
+    Lookup::Variable {
+        kind,
+        ty,
+        initial: if shared.offers_initial(d.storage) {
+            init()
+        } else {
+            None
+        },
+        scope,
+    }
+}
+
+/// The declared type of data, with the array sizes that are known (a size
+/// that is not a constant is 0: not checked).
+pub(super) fn decl_type(d: &DataDecl, unit: &Unit, env: &dyn Env, depth: &Cell<u32>) -> Type {
+    let name = d.ty.as_ref().map_or("?", |t| t.name.as_str());
+    let dims = d
+        .dims
+        .iter()
+        .map(|r| array_size(unit, r.clone(), env, depth))
+        .collect();
+    Type::array(name, dims)
+}
+
+pub(super) fn array_size(
+    unit: &Unit,
+    range: Range<usize>,
+    env: &dyn Env,
+    depth: &Cell<u32>,
+) -> usize {
+    let text = unit.text.get(range.clone()).unwrap_or_default().trim();
+    if let Ok(n) = text.parse::<usize>() {
+        return n;
+    }
+    // A size given by a constant: evaluate it, but never through a chain of
+    // sizes (a constant whose size refers to itself).
+    if depth.get() >= 2 {
+        return 0;
+    }
+    let Some(node) = expression_at(unit, range) else {
+        return 0;
+    };
+    depth.set(depth.get() + 1);
+    let expr = crate::lower::lower(node, &unit.text);
+    let v = rapid_evaluator::eval_as(&expr, Some(&Type::named("num")), env);
+    depth.set(depth.get() - 1);
+    match v.ok().and_then(|v| v.as_f64()) {
+        Some(x) if x >= 1.0 && x.fract() == 0.0 && x <= 1e6 => x as usize,
+        _ => 0,
+    }
+}
+
+/// The outermost expression node spanning exactly `range`.
+pub(super) fn expression_at(unit: &Unit, range: Range<usize>) -> Option<Node<'_>> {
+    path_to(unit.tree().root_node(), range.clone())
+        .into_iter()
+        .map(|(n, _)| n)
+        .find(|n| n.byte_range() == range && is_expression(crate::syntax_util::kind(*n)))
+}
+
+/// A node with the field of its parent that holds it.
+pub(super) type Step<'t> = (Node<'t>, Option<&'t str>);
+
+/// The nodes from `root` down to the smallest one that contains `range`,
+/// each with its field name. (Walking down with a cursor is cheap;
+/// `Node::parent` searches from the root each time.)
+pub(super) fn path_to(root: Node<'_>, range: Range<usize>) -> Vec<Step<'_>> {
+    let mut path = vec![(root, None)];
+    let mut cursor = root.walk();
+    'down: while cursor.goto_first_child_for_byte(range.start).is_some() {
+        loop {
+            let n = cursor.node();
+            if n.start_byte() > range.start {
+                break 'down;
+            }
+            let touches_only = n.end_byte() == range.start && range.end > range.start;
+            if n.end_byte() >= range.end && !touches_only {
+                path.push((n, cursor.field_name()));
+                continue 'down;
+            }
+            if !cursor.goto_next_sibling() {
+                break 'down;
+            }
+        }
+    }
+    path
+}
+
+/// The names of a routine (data, parameters, `FOR` variables around the
+/// offset), in front of its module's.
+pub(super) struct RoutineScope<'s, 't> {
+    pub(super) module: &'s ModuleScope<'s, 't>,
+    pub(super) unit: &'t Unit,
+    pub(super) names: RoutineNames<'t>,
+    pub(super) dims_depth: Cell<u32>,
+}
+
+impl Env for RoutineScope<'_, '_> {
+    fn lookup(&self, name: &str) -> Lookup<'_> {
+        let key = fold(name);
+        let r = &self.names;
+        {
+            if r.for_vars.contains(&key) {
+                return Lookup::Variable {
+                    kind: VarKind::Var,
+                    ty: Type::named("num"),
+                    initial: None,
+                    scope: None,
+                };
+            }
+            if let Some(d) = r.locals.get(&key) {
+                return data_lookup(
+                    self.module.shared,
+                    d,
+                    None,
+                    self.unit,
+                    None,
+                    self,
+                    &|n| self.module.is_builtin(n),
+                    &self.dims_depth,
+                );
+            }
+            if let Some(p) = r.params.get(&key) {
+                let ty = p.ty.as_ref().map_or("?", |t| t.name.as_str());
+                return Lookup::Variable {
+                    kind: if p.mode == Mode::Pers {
+                        VarKind::Pers
+                    } else {
+                        VarKind::Var
+                    },
+                    ty: Type::array(ty, vec![0; usize::from(p.dims)]),
+                    initial: None,
+                    scope: None,
+                };
+            }
+        }
+        self.module.lookup(name)
+    }
+
+    fn record_layout(&self, type_name: &str) -> Option<Vec<(String, Type)>> {
+        self.module.record_layout(type_name)
+    }
+
+    fn alias_of(&self, type_name: &str) -> Option<Type> {
+        self.module.alias_of(type_name)
+    }
+
+    fn catalogue(&self) -> &crate::catalogue::Catalogue {
+        self.module.catalogue()
+    }
+}
