@@ -11,7 +11,7 @@ use crate::rules;
 impl Cx<'_> {
     /// A call resolved to `sym` at `range`.
     pub(crate) fn routine_used(&mut self, sym: &RoutineSym<'_>, range: Range<usize>) {
-        if let RoutineSym::Builtin(r, _) = sym {
+        if let RoutineSym::Builtin(r) = sym {
             self.builtin_used(&r.name, &r.origin, range);
         }
     }

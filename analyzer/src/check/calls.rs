@@ -19,7 +19,7 @@ use crate::ty::Ty;
 /// signature is some twenty parameters of names and types).
 fn signature(cx: &mut Cx<'_>, sym: RoutineSym<'_>) -> Rc<Signature> {
     let key = match sym {
-        RoutineSym::Builtin(r, _) => (std::ptr::from_ref(r) as usize, false),
+        RoutineSym::Builtin(r) => (std::ptr::from_ref(r) as usize, false),
         RoutineSym::User(d, _) => (std::ptr::from_ref(d) as usize, true),
     };
     if let Some(sig) = cx.signatures.get(&key) {

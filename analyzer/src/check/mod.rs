@@ -82,10 +82,7 @@ fn finish(task: &Task, unit: usize, u: &Unit, mut diags: Vec<Diagnostic>) -> Vec
 pub(crate) enum DataSym<'t> {
     Param(&'t ParamDecl),
     Local(DataDecl),
-    Module(
-        &'t DataDecl,
-        #[allow(dead_code, reason = "where the data is declared, for navigation")] ItemRef,
-    ),
+    Module(&'t DataDecl, ItemRef),
     ForVar,
     Builtin(&'static Datum),
     Signal(&'static str),
@@ -122,20 +119,8 @@ pub(crate) fn decl_ty(d: &DataDecl) -> Ty {
 /// What a routine name denotes.
 #[derive(Clone, Copy, Debug)]
 pub(crate) enum RoutineSym<'t> {
-    User(
-        &'t RoutineDecl,
-        #[allow(dead_code, reason = "where the routine is declared, for navigation")] ItemRef,
-    ),
-    Builtin(
-        &'static Routine,
-        #[allow(
-            dead_code,
-            reason = "always `returns.is_some()` since the checker's signature is \
-                      sema::signature's; to go with the next change of the files \
-                      that match on it (tokens, completion)"
-        )]
-        bool,
-    ),
+    User(&'t RoutineDecl, ItemRef),
+    Builtin(&'static Routine),
 }
 
 /// The scope of the routine being checked.
@@ -406,8 +391,8 @@ impl<'t> Cx<'t> {
             (self.cat.instruction(name), self.cat.function(name))
         };
         first
-            .map(|r| RoutineSym::Builtin(r, r.returns.is_some()))
-            .or_else(|| second.map(|r| RoutineSym::Builtin(r, r.returns.is_some())))
+            .map(RoutineSym::Builtin)
+            .or_else(|| second.map(RoutineSym::Builtin))
     }
 
     /// Does `name` denote a data type here?

@@ -625,7 +625,7 @@ fn expression_items(cx: &mut Cx<'_>, expected: Option<&str>, details: bool) -> V
 fn lookup_return(cx: &mut Cx<'_>, name: &str) -> Option<String> {
     match cx.resolve_routine(name, true)? {
         RoutineSym::User(d, _) => d.returns.as_ref().map(|t| t.name.clone()),
-        RoutineSym::Builtin(r, _) => r.returns.clone(),
+        RoutineSym::Builtin(r) => r.returns.clone(),
     }
 }
 

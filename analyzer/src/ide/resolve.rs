@@ -246,7 +246,7 @@ pub(crate) fn resolve_at<'t>(
     let name = cx.text.get(node.byte_range())?.to_owned();
     let routine_sym = |sym: RoutineSym<'t>| match sym {
         RoutineSym::User(_, r) => Def::Item(r),
-        RoutineSym::Builtin(r, _) => Def::BuiltinRoutine(r),
+        RoutineSym::Builtin(r) => Def::BuiltinRoutine(r),
     };
     match (parent.kind(), field) {
         (kind::PROCEDURE_CALL | kind::FUNCTION_CALL, Some(field::NAME)) => {
@@ -328,7 +328,7 @@ pub(crate) fn resolve_at<'t>(
                         routine: decl,
                     })
                 }
-                RoutineSym::Builtin(r, _) => {
+                RoutineSym::Builtin(r) => {
                     let i = r.params.iter().position(|p| same(&p.name, &name))?;
                     Some(Def::BuiltinParam(r, i))
                 }

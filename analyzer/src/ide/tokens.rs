@@ -251,7 +251,7 @@ fn classify(
                     crate::items::RoutineKind::Func => (TokenType::Function, 0),
                     _ => (TokenType::Method, 0),
                 },
-                Some(RoutineSym::Builtin(r, _)) => {
+                Some(RoutineSym::Builtin(r)) => {
                     let ty = if r.returns.is_some() {
                         TokenType::Function
                     } else {

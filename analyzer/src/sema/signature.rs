@@ -58,7 +58,7 @@ impl Signature {
     /// The signature of a resolved routine.
     pub fn of(sym: RoutineSym<'_>) -> Signature {
         match sym {
-            RoutineSym::Builtin(r, _) => Signature::builtin(r),
+            RoutineSym::Builtin(r) => Signature::builtin(r),
             RoutineSym::User(d, _) => Signature::user(d),
         }
     }
