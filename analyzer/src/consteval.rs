@@ -30,6 +30,7 @@ use crate::items::{DataDecl, ParamDecl, Storage};
 use crate::lower::{is_expression, lower_with};
 use crate::names::{NameMap, fold};
 use crate::sema::signature::{Arg, Signature, Target, bind_args};
+use crate::syntax::{field, kind};
 use crate::syntax_util::{field, fields, text_of};
 use crate::task::{Item, ItemRef, Task, Unit};
 use crate::ty::{Ty, UserType};
@@ -524,7 +525,7 @@ fn expected_type_at<'t>(
             expected_type_at(cx, outer, env, depth + 1)
         }
         ("data_declaration", "value") => {
-            let name = field_of(parent, "name")?;
+            let name = field_of(parent, field::NAME)?;
             match env.lookup(text_of(name, cx.text)) {
                 Lookup::Constant { ty, .. } | Lookup::Variable { ty, .. } => Some(ty),
                 _ => {
@@ -541,13 +542,13 @@ fn expected_type_at<'t>(
             if !outer_ty.dims.is_empty() {
                 return Some(outer_ty.element());
             }
-            let i = fields(parent, "element")
+            let i = fields(parent, field::ELEMENT)
                 .iter()
                 .position(|e| e.id() == node.id())?;
             component_types(&outer_ty, env)?.into_iter().nth(i)
         }
         ("assignment", "right") => {
-            let left = field_of(parent, "left")?;
+            let left = field_of(parent, field::LEFT)?;
             type_of(&cx.type_of_expr(left))
         }
         ("return_statement", "value") => {
@@ -605,14 +606,15 @@ fn argument_type<'t>(
     list: Node<'t>,
     arg: Node<'t>,
 ) -> Option<Type> {
-    let name = field(call, "name").filter(|n| crate::syntax_util::kind(*n) == "identifier")?;
-    let want_function = crate::syntax_util::kind(call) == "function_call";
+    let name =
+        field(call, field::NAME).filter(|n| crate::syntax_util::kind(*n) == kind::IDENTIFIER)?;
+    let want_function = crate::syntax_util::kind(call) == kind::FUNCTION_CALL;
     let sym = cx.resolve_routine(text_of(name, cx.text), want_function)?;
     let sig = Signature::of(sym);
-    let args = fields(list, "argument");
+    let args = fields(list, field::ARGUMENT);
     let described: Vec<Arg<'_>> = args
         .iter()
-        .map(|a| match field(*a, "name") {
+        .map(|a| match field(*a, field::NAME) {
             Some(n) => Arg::Named(text_of(n, cx.text)),
             None => Arg::Positional,
         })

@@ -12,6 +12,7 @@ use crate::catalogue::Mode;
 use crate::items::RoutineKind;
 use crate::rules;
 use crate::sema::signature::{Arg, Binding, BoundArg, Param, Signature, Target, bind_args};
+use crate::syntax::{field, kind};
 use crate::syntax_util::{ArgumentParts, argument_parts, field, fields};
 use crate::ty::Ty;
 
@@ -32,12 +33,12 @@ fn signature(cx: &mut Cx<'_>, sym: RoutineSym<'_>) -> Rc<Signature> {
 
 /// A procedure call statement.
 pub(super) fn procedure_call<'t>(cx: &mut Cx<'t>, node: Node<'t>) {
-    let Some(name_node) = field(node, "name") else {
+    let Some(name_node) = field(node, field::NAME) else {
         return;
     };
-    let args = field(node, "arguments");
-    if crate::syntax_util::kind(name_node) == "late_binding" {
-        if let Some(e) = field(name_node, "expression") {
+    let args = field(node, field::ARGUMENTS);
+    if crate::syntax_util::kind(name_node) == kind::LATE_BINDING {
+        if let Some(e) = field(name_node, field::EXPRESSION) {
             exprs::check_expected(cx, e, &Ty::string(), "a late-bound procedure name");
         }
         check_args_unknown(cx, args);
@@ -88,10 +89,10 @@ pub(super) fn procedure_call<'t>(cx: &mut Cx<'t>, node: Node<'t>) {
 
 /// A function call in an expression; returns the result type.
 pub(super) fn function_call<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Ty {
-    let Some(name_node) = field(node, "name") else {
+    let Some(name_node) = field(node, field::NAME) else {
         return Ty::Unknown;
     };
-    let args = field(node, "arguments");
+    let args = field(node, field::ARGUMENTS);
     let name = cx.node_text(name_node);
     if node.has_error() {
         let _ = cx.resolve_routine(name, true);
@@ -151,10 +152,10 @@ fn check_args_unknown<'t>(cx: &mut Cx<'t>, args: Option<Node<'t>>) {
     let Some(args) = args else {
         return;
     };
-    for arg in fields(args, "argument") {
+    for arg in fields(args, field::ARGUMENT) {
         let parts = argument_parts(arg);
         if let Some(v) = parts.value
-            && crate::syntax_util::kind(v) != "star"
+            && crate::syntax_util::kind(v) != kind::STAR
         {
             exprs::place_or_value(cx, v);
         }
@@ -166,7 +167,7 @@ fn check_args_unknown<'t>(cx: &mut Cx<'t>, args: Option<Node<'t>>) {
 
 fn conditional<'t>(cx: &mut Cx<'t>, c: Node<'t>) {
     let name = cx.node_text(c);
-    if crate::syntax_util::kind(c) != "identifier" || cx.optional_param(name).is_none() {
+    if crate::syntax_util::kind(c) != kind::IDENTIFIER || cx.optional_param(name).is_none() {
         cx.report(
             &rules::conditional_argument::RULE,
             c.byte_range(),
@@ -175,7 +176,7 @@ fn conditional<'t>(cx: &mut Cx<'t>, c: Node<'t>) {
             ),
         );
     }
-    if crate::syntax_util::kind(c) == "identifier" {
+    if crate::syntax_util::kind(c) == kind::IDENTIFIER {
         let _ = cx.resolve_data(name);
     }
 }
@@ -185,7 +186,7 @@ fn check_args<'t>(cx: &mut Cx<'t>, sig: &Signature, args: Option<Node<'t>>, call
         check_args_unknown(cx, args);
         return;
     }
-    let args = args.map(|a| fields(a, "argument")).unwrap_or_default();
+    let args = args.map(|a| fields(a, field::ARGUMENT)).unwrap_or_default();
     let parts: Vec<_> = args.iter().map(|&a| argument_parts(a)).collect();
     let given: Vec<Arg<'_>> = parts
         .iter()
@@ -224,7 +225,7 @@ fn report_argument<'t>(
                 ),
             );
             if let Some(v) = value
-                && crate::syntax_util::kind(v) != "star"
+                && crate::syntax_util::kind(v) != kind::STAR
             {
                 exprs::place_or_value(cx, v);
             }
@@ -252,7 +253,7 @@ fn report_argument<'t>(
                 format!("`{}` has no parameter `{name}`; {hint}", sig.name),
             );
             if let Some(v) = value
-                && crate::syntax_util::kind(v) != "star"
+                && crate::syntax_util::kind(v) != kind::STAR
             {
                 exprs::place_or_value(cx, v);
             }
@@ -354,12 +355,12 @@ fn report_missing(cx: &mut Cx<'_>, sig: &Signature, binding: &Binding, call: Ran
 }
 
 fn check_value<'t>(cx: &mut Cx<'t>, p: &Param, v: Node<'t>) {
-    if crate::syntax_util::kind(v) == "star" {
+    if crate::syntax_util::kind(v) == kind::STAR {
         return;
     }
     let (actual, place) = match p.mode {
         Mode::In => {
-            if crate::syntax_util::kind(v) == "aggregate" {
+            if crate::syntax_util::kind(v) == kind::AGGREGATE {
                 exprs::check_expected(cx, v, &p.ty, &format!("the argument {}", p.name));
                 return;
             }

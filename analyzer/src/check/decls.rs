@@ -13,6 +13,7 @@ use crate::diagnostic::Diagnostic;
 use crate::items::{self, DataDecl, Module, RoutineDecl, Storage};
 use crate::names::{fold, same};
 use crate::rules;
+use crate::syntax::field;
 use crate::syntax_util::{field, fields};
 use crate::task::{Item, ItemRef, module_items};
 use crate::ty::Ty;
@@ -50,7 +51,7 @@ pub(super) struct BodyNodes<'t>(Vec<Node<'t>>);
 impl<'t> BodyNodes<'t> {
     pub(super) fn of(unit: &'t crate::task::Unit, module: Node<'t>) -> BodyNodes<'t> {
         let _ = unit;
-        BodyNodes(fields(module, "body"))
+        BodyNodes(fields(module, field::BODY))
     }
 
     /// The declaration that starts at `start` (the last one, should an
@@ -297,8 +298,8 @@ pub(super) fn check_data<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &DataDecl, i
             ),
         );
     }
-    if let Some(dims) = field(node, "dimensions") {
-        for d in fields(dims, "dimension") {
+    if let Some(dims) = field(node, field::DIMENSIONS) {
+        for d in fields(dims, field::DIMENSION) {
             let ty = exprs::expr(cx, d, Some(&Ty::num()));
             if !cx.types.is_num_like(&ty) {
                 cx.report(
@@ -309,7 +310,7 @@ pub(super) fn check_data<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &DataDecl, i
             }
         }
     }
-    match field(node, "value") {
+    match field(node, field::VALUE) {
         Some(value) => {
             let sizes = literal_sizes(cx, decl);
             exprs::check_initial_value(cx, value, &decl_ty(decl), &sizes);
@@ -356,7 +357,7 @@ pub(super) fn check_data<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &DataDecl, i
         super::shared::check_persistent(cx, decl);
     }
     if in_routine && decl.storage == Storage::Pers {
-        let at = field(node, "storage").map_or(decl.name_range.clone(), |s| s.byte_range());
+        let at = field(node, field::STORAGE).map_or(decl.name_range.clone(), |s| s.byte_range());
         cx.report(
             &rules::persistent_in_routine::RULE,
             at,

@@ -3,6 +3,7 @@
 
 use super::*;
 
+use crate::syntax::{field, kind};
 /// Reports expressions in `node` (a statement or a data declaration) that
 /// are made only of literals, constants and pure built-in functions and
 /// always fail with a run-time error. Nested statements are left to their
@@ -252,7 +253,7 @@ pub(super) fn has_operation<'t>(cursor: &mut TreeCursor<'t>, node: Node<'t>) -> 
         if matches!(
             crate::syntax_util::kind(n),
             "binary_expression" | "function_call" | "index_expression"
-        ) || (crate::syntax_util::kind(n) == "unary_expression" && !is_signed_number(n))
+        ) || (crate::syntax_util::kind(n) == kind::UNARY_EXPRESSION && !is_signed_number(n))
         {
             return true;
         }
@@ -275,9 +276,9 @@ pub(super) fn has_operation<'t>(cursor: &mut TreeCursor<'t>, node: Node<'t>) -> 
 
 /// `-1`, `+2.5`: a sign on a number literal.
 pub(super) fn is_signed_number(node: Node<'_>) -> bool {
-    crate::syntax_util::kind(node) == "unary_expression"
-        && field(node, "operand").is_some_and(|o| crate::syntax_util::kind(o) == "number")
-        && field(node, "operator").is_some_and(|o| crate::syntax_util::kind(o) != "not")
+    crate::syntax_util::kind(node) == kind::UNARY_EXPRESSION
+        && field(node, field::OPERAND).is_some_and(|o| crate::syntax_util::kind(o) == kind::NUMBER)
+        && field(node, field::OPERATOR).is_some_and(|o| crate::syntax_util::kind(o) != "not")
 }
 
 /// An operand of an expression, as the steps from the expression to it.
@@ -341,7 +342,7 @@ pub(super) fn shape<'t>(
         "unary_expression" => (true, !is_signed_number(node)),
         "binary_expression" | "index_expression" => (true, true),
         "function_call" => {
-            let pure = field(node, "name").is_some_and(|n| {
+            let pure = field(node, field::NAME).is_some_and(|n| {
                 let name = cx.node_text(n);
                 rapid_evaluator::is_function(name)
                     && matches!(
@@ -361,9 +362,9 @@ pub(super) fn shape<'t>(
         }
         if is_expression(crate::syntax_util::kind(child)) {
             parts.push(Part::Operand((child, f)));
-        } else if crate::syntax_util::kind(child) == "argument_list" {
+        } else if crate::syntax_util::kind(child) == kind::ARGUMENT_LIST {
             for (arg, af) in children_with_fields(cursor, child) {
-                if crate::syntax_util::kind(arg) != "argument" {
+                if crate::syntax_util::kind(arg) != kind::ARGUMENT {
                     continue;
                 }
                 let arg_parts = crate::syntax_util::argument_parts(arg);
@@ -379,7 +380,7 @@ pub(super) fn shape<'t>(
                     None => constant = false,
                 }
             }
-        } else if crate::syntax_util::kind(child) != "comment" {
+        } else if crate::syntax_util::kind(child) != kind::COMMENT {
             constant = false;
         }
     }
@@ -432,7 +433,7 @@ pub(super) fn names_in(node: Node<'_>) -> Vec<Node<'_>> {
         if f.is_some_and(|f| NOT_VALUES.contains(&f)) {
             continue;
         }
-        if crate::syntax_util::kind(n) == "identifier" {
+        if crate::syntax_util::kind(n) == kind::IDENTIFIER {
             out.push(n);
             continue;
         }
