@@ -297,7 +297,12 @@ impl<'a> Types<'a> {
     /// Value, semi-value or non-value (user records are value types unless a
     /// component is not; unknown types count as value types).
     pub fn value_class(&self, ty: &Ty) -> ValueClass {
-        let Ty::Named(name) = self.base(ty.element()) else {
+        self.class_of(ty.element())
+    }
+
+    /// [`Types::value_class`] of `ty` itself (an array is a value).
+    fn class_of(&self, ty: &Ty) -> ValueClass {
+        let Ty::Named(name) = self.base(ty) else {
             return ValueClass::Value;
         };
         if self.user(&name).is_some() {
@@ -331,12 +336,7 @@ impl<'a> Types<'a> {
 
     /// The semi-value types of the catalogue (the signals) read as numbers.
     fn is_signal_uncached(&self, ty: &Ty) -> bool {
-        let Ty::Named(name) = self.base(ty) else {
-            return false;
-        };
-        self.user(&name).is_none()
-            && self.catalogue.datatype(&name).and_then(|t| t.value_class)
-                == Some(ValueClass::SemiValue)
+        self.class_of(ty) == ValueClass::SemiValue
     }
 
     /// What the predicates above say of a named type, remembered per name

@@ -35,7 +35,7 @@ pub(super) fn check_name_length(cx: &mut Cx<'_>, name: &str, range: Range<usize>
 }
 
 pub(super) fn check_module<'t>(cx: &mut Cx<'t>, node: Node<'t>, module: &'t Module) {
-    let data_nodes = BodyNodes::of(cx.unit, node);
+    let data_nodes = BodyNodes::of(node);
     check_module_prelude(cx, module, &data_nodes);
     for decl in &module.routines {
         check_routine_at(cx, &data_nodes, decl);
@@ -49,8 +49,7 @@ pub(super) fn check_module<'t>(cx: &mut Cx<'t>, node: Node<'t>, module: &'t Modu
 pub(super) struct BodyNodes<'t>(Vec<Node<'t>>);
 
 impl<'t> BodyNodes<'t> {
-    pub(super) fn of(unit: &'t crate::task::Unit, module: Node<'t>) -> BodyNodes<'t> {
-        let _ = unit;
+    pub(super) fn of(module: Node<'t>) -> BodyNodes<'t> {
         BodyNodes(fields(module, field::BODY))
     }
 
