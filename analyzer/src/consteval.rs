@@ -26,9 +26,10 @@ use tree_sitter::{Node, TreeCursor};
 
 use crate::catalogue::{Catalogue, Datum, DatumKind, Mode, TypeKind};
 use crate::check::{Cx, DataSym, RoutineSym};
-use crate::items::{DataDecl, ParamDecl, Storage};
+use crate::items::{DataDecl, Storage};
 use crate::lower::{is_expression, lower_with};
-use crate::names::{NameMap, fold};
+use crate::names::fold;
+use crate::sema::scope::Scope;
 use crate::sema::signature::{Arg, Signature, Target, bind_args};
 use crate::syntax::{field, kind};
 use crate::syntax_util::{field, fields, text_of};
@@ -100,8 +101,8 @@ pub fn with_env<R>(
 ) -> R {
     let routine = at
         .filter(|&(unit, offset)| in_routine(task, unit, offset))
-        .and_then(|(unit, offset)| Cx::at(task, unit, offset))
-        .and_then(|cx| RoutineNames::of(&cx));
+        .and_then(|(unit, offset)| Scope::at(task, unit, offset))
+        .and_then(|scope| scope.routine);
     with_routine(task, at, options, routine, None, f)
 }
 
@@ -165,7 +166,7 @@ fn with_routine<'t, R>(
     task: &'t Task,
     at: Option<(usize, usize)>,
     options: EnvOptions,
-    routine: Option<RoutineNames<'t>>,
+    routine: Option<crate::sema::scope::RoutineScope<'t>>,
     inits: Option<&'t InitCache>,
     f: impl FnOnce(&dyn Env) -> R,
 ) -> R {
@@ -201,26 +202,6 @@ fn with_routine<'t, R>(
             dims_depth: Cell::new(0),
         }),
         None => f(scope),
-    }
-}
-
-/// The names a routine puts in front of its module's: its data, its
-/// parameters and the `FOR` variables around a position.
-struct RoutineNames<'t> {
-    locals: NameMap<DataDecl>,
-    params: NameMap<&'t ParamDecl>,
-    for_vars: Vec<String>,
-}
-
-impl<'t> RoutineNames<'t> {
-    /// The routine scope of a checker context, if it is in a routine.
-    fn of(cx: &Cx<'t>) -> Option<RoutineNames<'t>> {
-        let r = cx.routine.as_ref()?;
-        Some(RoutineNames {
-            locals: r.locals.clone(),
-            params: r.params.clone(),
-            for_vars: r.for_vars.clone(),
-        })
     }
 }
 
@@ -310,7 +291,7 @@ pub fn value_at(task: &Task, unit: usize, offset: usize) -> Option<ConstValue> {
     let at = path.iter().position(|(n, _)| n.id() == start.id())?;
     path.truncate(at + 1);
     with_env(task, Some((unit, offset)), options, |env| {
-        let mut typing = Cx::at(task, unit, offset);
+        let typing = Scope::at(task, unit, offset);
         let mut tried = 0;
         while let Some((n, field)) = path.last().copied() {
             if is_expression(crate::syntax_util::kind(n)) {
@@ -321,7 +302,7 @@ pub fn value_at(task: &Task, unit: usize, offset: usize) -> Option<ConstValue> {
                     return None;
                 }
                 if !field.is_some_and(|f| NOT_VALUES.contains(&f))
-                    && let Some(v) = value_of_node(task, unit, &path, env, typing.as_mut(), options)
+                    && let Some(v) = value_of_node(task, unit, &path, env, typing.as_ref(), options)
                 {
                     return Some(v);
                 }
@@ -356,8 +337,8 @@ pub fn value_of_range(task: &Task, unit: usize, range: Range<usize>) -> Option<C
         var_initial: false,
     };
     with_env(task, Some((unit, start)), options, |env| {
-        let mut typing = Cx::at(task, unit, start);
-        let mut v = evaluate_node(task, unit, &path, env, typing.as_mut(), options)?;
+        let typing = Scope::at(task, unit, start);
+        let mut v = evaluate_node(task, unit, &path, env, typing.as_ref(), options)?;
         v.range = node.byte_range();
         Some(v)
     })
@@ -368,7 +349,7 @@ fn value_of_node<'t>(
     unit: usize,
     path: &[Step<'t>],
     env: &dyn Env,
-    typing: Option<&mut Cx<'t>>,
+    typing: Option<&Scope<'t>>,
     options: EnvOptions,
 ) -> Option<ConstValue> {
     let (node, _) = *path.last()?;
@@ -392,7 +373,7 @@ fn evaluate_node<'t>(
     unit: usize,
     path: &[Step<'t>],
     env: &dyn Env,
-    typing: Option<&mut Cx<'t>>,
+    typing: Option<&Scope<'t>>,
     options: EnvOptions,
 ) -> Option<ConstValue> {
     let u = task.units.get(unit)?;
@@ -501,12 +482,12 @@ pub fn value_type(v: &Value) -> String {
 /// the data it initialises, the parameter it is passed to, the target it is
 /// assigned to, the value a function returns, or the component or element
 /// of an aggregate that has a type itself.
-fn expected_type<'t>(cx: &mut Cx<'t>, path: &[Step<'t>], env: &dyn Env) -> Option<Type> {
+fn expected_type<'t>(cx: &Scope<'t>, path: &[Step<'t>], env: &dyn Env) -> Option<Type> {
     expected_type_at(cx, path, env, 0)
 }
 
 fn expected_type_at<'t>(
-    cx: &mut Cx<'t>,
+    cx: &Scope<'t>,
     path: &[Step<'t>],
     env: &dyn Env,
     depth: u32,
@@ -549,7 +530,7 @@ fn expected_type_at<'t>(
         }
         ("assignment", "right") => {
             let left = field_of(parent, field::LEFT)?;
-            type_of(&cx.type_of_expr(left))
+            type_of(&crate::sema::typing::type_of(cx, left, None))
         }
         ("return_statement", "value") => {
             let decl = cx.routine.as_ref()?.decl;
@@ -601,7 +582,7 @@ fn type_of(ty: &Ty) -> Option<Type> {
 
 /// The type of the parameter an argument is passed to.
 fn argument_type<'t>(
-    cx: &mut Cx<'t>,
+    cx: &Scope<'t>,
     call: Node<'t>,
     list: Node<'t>,
     arg: Node<'t>,

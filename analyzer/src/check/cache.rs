@@ -205,7 +205,7 @@ impl<'t> Cx<'t> {
         let context = match &self.statement_context {
             Some(c)
                 if c.fingerprint == self.routine_fingerprint
-                    && c.in_error_handler == r.in_error_handler
+                    && c.in_error_handler == self.in_error_handler
                     && c.module == module
                     && c.for_vars == r.for_vars =>
             {
@@ -214,7 +214,7 @@ impl<'t> Cx<'t> {
             _ => {
                 let mut h = std::hash::DefaultHasher::new();
                 self.routine_fingerprint.hash(&mut h);
-                r.in_error_handler.hash(&mut h);
+                self.in_error_handler.hash(&mut h);
                 r.for_vars.hash(&mut h);
                 module.hash(&mut h);
                 self.task.interface.hash(&mut h);
@@ -222,7 +222,7 @@ impl<'t> Cx<'t> {
                 let hash = h.finish();
                 self.statement_context = Some(StatementContext {
                     fingerprint: self.routine_fingerprint,
-                    in_error_handler: r.in_error_handler,
+                    in_error_handler: self.in_error_handler,
                     for_vars: r.for_vars.clone(),
                     module,
                     hash,

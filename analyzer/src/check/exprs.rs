@@ -3,11 +3,11 @@
 
 use std::ops::Range;
 
-use rapid_catalogue::operators::{self, Op};
 use tree_sitter::Node;
 
 use super::{Cx, Place, calls};
 use crate::rules;
+use crate::sema::typing::{self, ComponentError, IndexError};
 use crate::syntax::{field, kind};
 use crate::syntax_util::{Literal, field, fields, literal_aggregate};
 use crate::ty::Ty;
@@ -56,10 +56,8 @@ fn identifier<'t>(cx: &mut Cx<'t>, node: Node<'t>, expected: Option<&Ty>) -> Ty 
     }
 }
 
-/// Is a value of this type configured on the controller rather than
-/// declared in RAPID (an I/O signal, a mechanical unit)?
 fn is_configured(cx: &Cx<'_>, ty: &Ty) -> bool {
-    cx.types.is_signal(ty) || cx.types.base(ty).is("mecunit")
+    typing::is_configured(&cx.types, ty)
 }
 
 /// A name where a signal (or a mechanical unit) is expected that nothing
@@ -349,32 +347,23 @@ fn unary<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Ty {
     let Some(operand) = field(node, field::OPERAND) else {
         return Ty::Unknown;
     };
-    let op = field(node, field::OPERATOR)
-        .map(|o| crate::syntax_util::kind(o))
-        .unwrap_or_default();
     let ty = expr(cx, operand, None);
-    if !cx.types.is_known(&ty) {
-        return if op == "not" { Ty::bool() } else { Ty::Unknown };
+    match typing::unary(&cx.types, typing::unary_op(node), &ty) {
+        Ok(ty) => ty,
+        Err(()) => {
+            cx.report(
+                &rules::invalid_operands::RULE,
+                node.byte_range(),
+                format!(
+                    "`{}` cannot be applied to {}",
+                    cx.node_text(field(node, field::OPERATOR).unwrap_or(node))
+                        .to_ascii_uppercase(),
+                    a_type(&ty)
+                ),
+            );
+            Ty::Unknown
+        }
     }
-    let base = cx.types.base(&ty);
-    let ok = match op {
-        "not" => base.is("bool"),
-        _ => cx.types.is_num_like(&ty) || base.is("pos"),
-    };
-    if !ok {
-        cx.report(
-            &rules::invalid_operands::RULE,
-            node.byte_range(),
-            format!(
-                "`{}` cannot be applied to {}",
-                cx.node_text(field(node, field::OPERATOR).unwrap_or(node))
-                    .to_ascii_uppercase(),
-                a_type(&ty)
-            ),
-        );
-        return Ty::Unknown;
-    }
-    cx.types.value_type(&ty)
 }
 
 fn binary<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Ty {
@@ -386,7 +375,7 @@ fn binary<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Ty {
         return Ty::Unknown;
     };
     let op = crate::syntax_util::kind(op_node);
-    let is_comparison = matches!(op, "=" | "<>");
+    let is_comparison = typing::is_comparison(op);
     // A bare unknown name compared with a number is most likely a signal.
     // An aggregate operand takes its type from the other operand when that
     // is a record (`p + [0, 0, 10]`), and is left unknown otherwise.
@@ -412,51 +401,10 @@ fn binary<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Ty {
             operand(cx, r, l, is_comparison),
         ),
     };
-    let t = &cx.types;
-    let (lb, rb) = (t.base(&lt), t.base(&rt));
-    // Unknown types (unresolved names, unresolved type names) are
-    // compatible with everything: one mistake, one finding.
-    let unknown = !t.is_known(&lt) || !t.is_known(&rt);
-    let num = |x: &Ty| t.is_num_like(x);
-    let op = Op::parse(op);
-    let result = match op {
-        // Values of one type compare, arrays too (same element type and
-        // number of dimensions: `stReact = ["Ready", "Ready", "Ready"]` for a
-        // `string{3}` is loaded by real controllers).
-        Some(Op::Eq | Op::Ne) => {
-            (unknown || t.assignable(&lt, &rt) || t.assignable(&rt, &lt)).then(Ty::bool)
-        }
-        // With an unknown operand, say what the known one implies.
-        Some(Op::Add | Op::Sub) if unknown => Some(known_side(&lt, &rt, t)),
-        // num * unknown may be num * pos: say nothing about the result.
-        Some(Op::Mul) if unknown => Some(if lb.is("pos") || rb.is("pos") {
-            Ty::named("pos")
-        } else if lb.is("orient") || rb.is("orient") {
-            Ty::named("orient")
-        } else {
-            Ty::Unknown
-        }),
-        Some(Op::Div) if unknown => Some(
-            match operators::binary_by(Op::Div, |l| lb.is(l), |r| r == "num") {
-                Some("pos") => Ty::named("pos"),
-                _ => Ty::Unknown,
-            },
-        ),
-        // The shared operator table; an operand of an unknown type is
-        // taken to be anything numeric or a bool.
-        Some(op) => {
-            let is = |x: &Ty, b: &Ty, name: &str| match name {
-                "num" => num(x) && !b.is("dnum"),
-                "dnum" => b.is("dnum"),
-                "bool" => t.is_bool(x),
-                other => b.is(other),
-            };
-            operators::binary_by(op, |l| is(&lt, &lb, l), |r| is(&rt, &rb, r)).map(Ty::named)
-        }
-        None => None,
-    };
+    let num = |x: &Ty| cx.types.is_num_like(x);
+    let result = typing::binary(&cx.types, op, &lt, &rt);
     match result {
-        Some(ty) => {
+        Ok(ty) => {
             // Comparing with zero asks "is it exactly the same point,
             // vector or value", which identical inputs answer exactly.
             let zero = |n: Node<'_>| {
@@ -481,7 +429,7 @@ fn binary<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Ty {
             }
             ty
         }
-        None => {
+        Err(fallback) => {
             cx.report(
                 &rules::invalid_operands::RULE,
                 op_node.byte_range(),
@@ -492,24 +440,7 @@ fn binary<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Ty {
                     a_type(&rt)
                 ),
             );
-            if matches!(
-                op,
-                Some(
-                    Op::Eq
-                        | Op::Ne
-                        | Op::Lt
-                        | Op::Gt
-                        | Op::Le
-                        | Op::Ge
-                        | Op::And
-                        | Op::Or
-                        | Op::Xor
-                )
-            ) {
-                Ty::bool()
-            } else {
-                Ty::Unknown
-            }
+            fallback
         }
     }
 }
@@ -517,52 +448,27 @@ fn binary<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Ty {
 /// An aggregate operand, typed as the other operand when that is a record
 /// or an array (as an assignment's target types its value).
 fn aggregate_operand<'t>(cx: &mut Cx<'t>, node: Node<'t>, other: &Ty) -> Ty {
-    let ty = cx.types.value_type(other);
-    if other.dims() > 0 && cx.types.is_known(other) {
-        aggregate(cx, node, other, &[]);
-        other.clone()
-    } else if other.dims() == 0 && cx.types.components(&ty).is_some() {
-        aggregate(cx, node, &ty, &[]);
-        ty
-    } else {
-        for e in fields(node, field::ELEMENT) {
-            expr(cx, e, None);
+    match typing::aggregate_operand(&cx.types, other) {
+        Some(ty) => {
+            aggregate(cx, node, &ty, &[]);
+            ty
         }
-        Ty::Unknown
+        None => {
+            for e in fields(node, field::ELEMENT) {
+                expr(cx, e, None);
+            }
+            Ty::Unknown
+        }
     }
-}
-
-fn known_side(a: &Ty, b: &Ty, t: &crate::ty::Types<'_>) -> Ty {
-    let pick = if a.is_unknown() { b } else { a };
-    t.value_type(pick)
 }
 
 /// The type of one operand; an unknown bare name compared with a number is
 /// taken for a signal.
 fn operand<'t>(cx: &mut Cx<'t>, node: Node<'t>, other: Node<'t>, comparison: bool) -> Ty {
-    if comparison
-        && crate::syntax_util::kind(node) == kind::IDENTIFIER
-        && matches!(
-            crate::syntax_util::kind(other),
-            kind::NUMBER | kind::IDENTIFIER
-        )
-        && cx.task.signals.is_none()
-    {
+    if typing::taken_for_signal(cx, node, other, comparison) {
         let name = cx.node_text(node);
-        if cx.resolve_data(name).is_none()
-            && cx.resolve_routine(name, true).is_none()
-            && cx.local_elsewhere(name).is_none()
-        {
-            let other_is_level = crate::syntax_util::kind(other) == kind::NUMBER
-                || cx
-                    .cat
-                    .datum(cx.node_text(other))
-                    .is_some_and(|d| d.ty.eq_ignore_ascii_case("dionum"));
-            if other_is_level {
-                unknown_signal(cx, node, name, &Ty::named("signaldi"));
-                return Ty::named("signaldi");
-            }
-        }
+        unknown_signal(cx, node, name, &Ty::named("signaldi"));
+        return Ty::named("signaldi");
     }
     expr(cx, node, None)
 }
@@ -602,49 +508,21 @@ fn component<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> (Ty, Place) {
 }
 
 fn component_type(cx: &mut Cx<'_>, obj_ty: &Ty, comp: Node<'_>) -> Ty {
-    if !cx.types.is_known(obj_ty) {
-        return Ty::Unknown;
-    }
     let name = cx.node_text(comp);
-    if obj_ty.dims() > 0 {
-        cx.report(
-            &rules::unknown_component::RULE,
-            comp.byte_range(),
-            format!("`.{name}` on an array {obj_ty}: index it first"),
-        );
-        return Ty::Unknown;
-    }
-    match cx.types.components(obj_ty) {
-        Some(components) => match components
-            .iter()
-            .find(|(n, _)| n.eq_ignore_ascii_case(name))
-        {
-            Some((_, t)) => t.clone(),
-            None => {
-                let list: Vec<&str> = components.iter().map(|(n, _)| n.as_str()).collect();
-                cx.report(
-                    &rules::unknown_component::RULE,
-                    comp.byte_range(),
-                    format!(
-                        "{obj_ty} has no component `{name}`; its components are {}",
-                        list.join(", ")
-                    ),
-                );
-                Ty::Unknown
-            }
-        },
-        None => {
-            cx.report(
-                &rules::unknown_component::RULE,
-                comp.byte_range(),
-                format!(
-                    "{} is not a record and has no component `{name}`",
-                    a_type(obj_ty)
-                ),
-            );
-            Ty::Unknown
-        }
-    }
+    let message = match typing::component(&cx.types, obj_ty, name) {
+        Ok(ty) => return ty,
+        Err(ComponentError::OnArray) => format!("`.{name}` on an array {obj_ty}: index it first"),
+        Err(ComponentError::NoSuch(list)) => format!(
+            "{obj_ty} has no component `{name}`; its components are {}",
+            list.join(", ")
+        ),
+        Err(ComponentError::NotRecord) => format!(
+            "{} is not a record and has no component `{name}`",
+            a_type(obj_ty)
+        ),
+    };
+    cx.report(&rules::unknown_component::RULE, comp.byte_range(), message);
+    Ty::Unknown
 }
 
 /// `a{i, j}`: the element type.
@@ -664,30 +542,20 @@ fn index<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> (Ty, Place) {
             );
         }
     }
-    if !cx.types.is_known(&obj_ty) {
-        return (Ty::Unknown, place);
-    }
-    let dims = usize::from(obj_ty.dims());
-    if dims == 0 {
-        cx.report(
-            &rules::index_count::RULE,
-            node.byte_range(),
-            format!("{} is not an array and cannot be indexed", a_type(&obj_ty)),
-        );
-        return (Ty::Unknown, place);
-    }
-    if dims != indexes.len() {
-        cx.report(
-            &rules::index_count::RULE,
-            node.byte_range(),
-            format!(
-                "{obj_ty} has {dims} dimension{}, indexed with {}",
-                if dims == 1 { "" } else { "s" },
-                indexes.len()
-            ),
-        );
-    }
-    (obj_ty.element().clone(), place)
+    let (ty, error) = typing::index(&cx.types, &obj_ty, indexes.len());
+    let message = match error {
+        None => return (ty, place),
+        Some(IndexError::NotArray) => {
+            format!("{} is not an array and cannot be indexed", a_type(&obj_ty))
+        }
+        Some(IndexError::Count(dims)) => format!(
+            "{obj_ty} has {dims} dimension{}, indexed with {}",
+            if dims == 1 { "" } else { "s" },
+            indexes.len()
+        ),
+    };
+    cx.report(&rules::index_count::RULE, node.byte_range(), message);
+    (ty, place)
 }
 
 /// The type and place of a data reference (a name, a component, an

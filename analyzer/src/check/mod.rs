@@ -5,6 +5,7 @@
 //! routine's scope (parameters, routine data, `FOR` variables), the module,
 //! the task's globals and the built-in catalogue, in that order.
 
+#[cfg(test)]
 mod at;
 mod availability;
 mod cache;
@@ -19,6 +20,8 @@ mod shared;
 mod stmts;
 mod suggest;
 
+#[cfg(test)]
+pub(crate) use at::checker_type_of;
 pub use cache::StmtCache;
 pub(crate) use place::Place;
 pub(crate) use suggest::Kind;
@@ -28,13 +31,11 @@ use std::ops::Range;
 
 use tree_sitter::Node;
 
-use crate::catalogue::{Catalogue, Datum, Routine};
 use crate::diagnostic::{Diagnostic, Related, Rule};
-use crate::items::{DataDecl, Module, ParamDecl, RoutineDecl};
+use crate::items::{Module, ParamDecl};
 use crate::names::{NameMap, fold, with_folded};
 use crate::syntax::kind;
-use crate::task::{Item, ItemRef, Task, Unit};
-use crate::ty::{Ty, Types};
+use crate::task::{ItemRef, Task, Unit};
 
 /// Checks one unit of a task and returns its diagnostics (without the
 /// syntax diagnostics, which the unit holds), sorted by position.
@@ -77,73 +78,21 @@ fn finish(task: &Task, unit: usize, u: &Unit, mut diags: Vec<Diagnostic>) -> Vec
     diags
 }
 
-/// What a data name denotes.
-#[derive(Clone, Debug)]
-pub(crate) enum DataSym<'t> {
-    Param(&'t ParamDecl),
-    Local(DataDecl),
-    Module(&'t DataDecl, ItemRef),
-    ForVar,
-    Builtin(&'static Datum),
-    Signal(&'static str),
-}
+pub(crate) use crate::sema::scope::{DataSym, RoutineSym, decl_ty};
+use crate::sema::scope::{Scope, Use};
 
-impl DataSym<'_> {
-    /// The symbol's type; a type name the task does not know is unknown
-    /// (reported once where it is declared), so nothing else is reported
-    /// against it.
-    pub(crate) fn ty(&self, types: &Types<'_>) -> Ty {
-        let ty = match self {
-            DataSym::Param(p) => {
-                p.ty.as_ref()
-                    .map_or(Ty::Unknown, |t| Ty::named(&t.name))
-                    .array(p.dims)
-            }
-            DataSym::Local(d) => decl_ty(d),
-            DataSym::Module(d, _) => decl_ty(d),
-            DataSym::ForVar => Ty::num(),
-            DataSym::Builtin(d) => Ty::named(&d.ty),
-            DataSym::Signal(ty) => Ty::named(ty),
-        };
-        if types.is_known(&ty) { ty } else { Ty::Unknown }
-    }
-}
+/// Labels by folded name: the label's range and the statement list that
+/// holds it ([`crate::sema::labels::BlockKey`] of the list's parent).
+pub(crate) type Labels = NameMap<(Range<usize>, crate::sema::labels::BlockKey)>;
 
-pub(crate) fn decl_ty(d: &DataDecl) -> Ty {
-    let dims = u8::try_from(d.dims.len()).unwrap_or(u8::MAX);
-    d.ty.as_ref()
-        .map_or(Ty::Unknown, |t| Ty::named(&t.name))
-        .array(dims)
-}
-
-/// What a routine name denotes.
-#[derive(Clone, Copy, Debug)]
-pub(crate) enum RoutineSym<'t> {
-    User(&'t RoutineDecl, ItemRef),
-    Builtin(&'static Routine),
-}
-
-/// The scope of the routine being checked.
-pub(crate) struct RoutineCx<'t> {
-    pub decl: &'t RoutineDecl,
-    pub params: NameMap<&'t ParamDecl>,
-    pub locals: NameMap<DataDecl>,
-    pub for_vars: Vec<String>,
-    /// Labels by folded name: the label's range and the statement list that
-    /// holds it ([`crate::sema::labels::BlockKey`] of the list's parent).
-    pub labels: NameMap<(Range<usize>, crate::sema::labels::BlockKey)>,
-    pub in_error_handler: bool,
-}
-
+/// The checker's context: the scopes it is in ([`Scope`], which it derefs
+/// to), what it found and what it caches.
 pub(crate) struct Cx<'t> {
-    pub task: &'t Task,
-    pub unit: &'t Unit,
-    pub unit_idx: usize,
-    pub text: &'t str,
-    pub types: Types<'t>,
-    pub cat: &'static Catalogue,
-    pub module: Option<(usize, &'t Module)>,
-    pub routine: Option<RoutineCx<'t>>,
+    pub scope: Scope<'t>,
+    /// The labels of the routine being checked.
+    pub labels: Labels,
+    /// Whether the statements being checked are in an ERROR handler.
+    pub in_error_handler: bool,
     pub diags: Vec<Diagnostic>,
     /// Folded names of routine-scope symbols and module items that were used.
     pub used: UsedSet,
@@ -196,17 +145,25 @@ pub(crate) enum Used {
     Item(ItemRef),
 }
 
+impl<'t> std::ops::Deref for Cx<'t> {
+    type Target = Scope<'t>;
+    fn deref(&self) -> &Scope<'t> {
+        &self.scope
+    }
+}
+
+impl<'t> std::ops::DerefMut for Cx<'t> {
+    fn deref_mut(&mut self) -> &mut Scope<'t> {
+        &mut self.scope
+    }
+}
+
 impl<'t> Cx<'t> {
     fn new(task: &'t Task, unit_idx: usize, unit: &'t Unit) -> Cx<'t> {
         Cx {
-            task,
-            unit,
-            unit_idx,
-            text: &unit.text,
-            types: task.types(),
-            cat: task.catalogue,
-            module: None,
-            routine: None,
+            scope: Scope::of_unit(task, unit_idx, unit),
+            labels: Labels::default(),
+            in_error_handler: false,
             diags: Vec::new(),
             used: UsedSet::default(),
             cache: StmtCache::default(),
@@ -275,10 +232,6 @@ impl<'t> Cx<'t> {
         self.close_memo.clear();
     }
 
-    pub(crate) fn node_text(&self, node: Node<'_>) -> &'t str {
-        self.text.get(node.byte_range()).unwrap_or_default()
-    }
-
     pub(crate) fn report(
         &mut self,
         rule: &'static Rule,
@@ -304,104 +257,41 @@ impl<'t> Cx<'t> {
         })
     }
 
-    fn module_idx(&self) -> Option<usize> {
-        self.module.map(|(i, _)| i)
-    }
-
-    /// Items visible from the current module under `name`: its own items
-    /// (any scope) first, then the task's globals.
-    pub(crate) fn lookup_items(&self, name: &str) -> Vec<ItemRef> {
-        with_folded(name, |key| self.lookup_items_folded(key))
-    }
-
-    fn lookup_items_folded(&self, key: &str) -> Vec<ItemRef> {
-        crate::sema::scope::visible(self.task, self.unit_idx, self.module_idx(), key)
-    }
-
-    /// A `LOCAL` declaration of another module under `name`, to explain why
-    /// the name is not visible.
-    pub(crate) fn local_elsewhere(&self, name: &str) -> Option<ItemRef> {
-        let mine = self.module_idx();
-        with_folded(name, |key| {
-            self.task
-                .locals
-                .get(key)?
-                .iter()
-                .copied()
-                .find(|r| !(r.unit == self.unit_idx && Some(r.module) == mine))
-        })
-    }
-
-    /// Resolves a data name in the current scope. Marks it used.
+    /// Resolves a data name in the current scope ([`Scope::resolve_data`]).
+    /// Marks it used.
     pub(crate) fn resolve_data(&mut self, name: &str) -> Option<DataSym<'t>> {
-        with_folded(name, |key| self.resolve_data_folded(name, key))
+        let (sym, used) = with_folded(name, |key| {
+            let (sym, used) = self.scope.resolve_data_folded(name, key)?;
+            let used = used.map(|u| match u {
+                Use::RoutineScope => Used::RoutineSym(key.to_owned()),
+                Use::Item(r) => Used::Item(r),
+            });
+            Some((sym, used))
+        })?;
+        if let Some(u) = used {
+            self.mark_used(u);
+        }
+        Some(sym)
     }
 
-    fn resolve_data_folded(&mut self, name: &str, key: &str) -> Option<DataSym<'t>> {
-        if let Some(r) = &self.routine {
-            if r.for_vars.iter().any(|v| v == key) {
-                return Some(DataSym::ForVar);
-            }
-            if let Some(d) = r.locals.get(key) {
-                let d = d.clone();
-                self.mark_used(Used::RoutineSym(key.to_owned()));
-                return Some(DataSym::Local(d));
-            }
-            if let Some(p) = r.params.get(key).copied() {
-                self.mark_used(Used::RoutineSym(key.to_owned()));
-                return Some(DataSym::Param(p));
-            }
-        }
-        for r in self.lookup_items_folded(key) {
-            if let Some(d) = self.task.data(r) {
-                self.mark_used(Used::Item(r));
-                return Some(DataSym::Module(d, r));
-            }
-        }
-        if let Some(d) = self.cat.datum(name) {
-            return Some(DataSym::Builtin(d));
-        }
-        if let Some(ty) = self.task.signals.as_ref().and_then(|s| s.get(key)) {
-            return Some(DataSym::Signal(ty));
-        }
-        if self.task.mecunits.contains(key) {
-            return Some(DataSym::Signal("mecunit"));
-        }
-        if self.task.task_ids.contains(key) {
-            return Some(DataSym::Signal("taskid"));
-        }
-        None
-    }
-
-    /// Resolves a routine name. Marks it used.
+    /// Resolves a routine name ([`Scope::resolve_routine`]). Marks it used.
     pub(crate) fn resolve_routine(
         &mut self,
         name: &str,
         want_function: bool,
     ) -> Option<RoutineSym<'t>> {
-        for r in self.lookup_items(name) {
-            if let Some(d) = self.task.routine(r) {
-                self.mark_used(Used::Item(r));
-                return Some(RoutineSym::User(d, r));
-            }
+        let sym = self.scope.resolve_routine(name, want_function)?;
+        if let RoutineSym::User(_, r) = sym {
+            self.mark_used(Used::Item(r));
         }
-        let (first, second) = if want_function {
-            (self.cat.function(name), self.cat.instruction(name))
-        } else {
-            (self.cat.instruction(name), self.cat.function(name))
-        };
-        first
-            .map(RoutineSym::Builtin)
-            .or_else(|| second.map(RoutineSym::Builtin))
+        Some(sym)
     }
 
     /// Does `name` denote a data type here?
     pub(crate) fn type_exists(&mut self, name: &str) -> bool {
-        for r in self.lookup_items(name) {
-            if matches!(r.item, Item::Record(_) | Item::Alias(_)) {
-                self.mark_used(Used::Item(r));
-                return true;
-            }
+        if let Some(r) = self.scope.type_item(name) {
+            self.mark_used(Used::Item(r));
+            return true;
         }
         self.types.exists(name)
     }
@@ -471,7 +361,13 @@ impl<'t> Cx<'t> {
 
     /// Is `name` used as an optional parameter of the routine being checked?
     pub(crate) fn optional_param(&self, name: &str) -> Option<&'t ParamDecl> {
-        let p = self.routine.as_ref()?.params.get(&fold(name)).copied()?;
+        let p = self
+            .scope
+            .routine
+            .as_ref()?
+            .params
+            .get(&fold(name))
+            .copied()?;
         p.optional.then_some(p)
     }
 }

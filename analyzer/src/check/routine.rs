@@ -6,11 +6,12 @@ use std::ops::Range;
 use tree_sitter::Node;
 
 use super::decls::{MAX_DIMS, check_data, check_name_length, check_type_name, report_duplicates};
-use super::{Cx, RoutineCx, Used, exprs, stmts};
+use super::{Cx, Used, exprs, stmts};
 use crate::diagnostic::Diagnostic;
 use crate::items::{self, RoutineDecl, RoutineKind};
 use crate::names::{NameMap, fold};
 use crate::rules;
+use crate::sema::scope::RoutineScope;
 use crate::syntax_util::fields;
 use crate::ty::Ty;
 
@@ -43,14 +44,14 @@ pub(super) fn check_routine<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &'t Routi
     if let Some(t) = &decl.returns {
         check_type_name(cx, &t.name, t.range.clone());
     }
-    cx.routine = Some(RoutineCx {
+    cx.routine = Some(RoutineScope {
         decl,
         params,
         locals: NameMap::default(),
         for_vars: Vec::new(),
-        labels: NameMap::default(),
-        in_error_handler: false,
     });
+    cx.labels.clear();
+    cx.in_error_handler = false;
     cx.scope_changed();
 
     // One walk over the routine's children (long generated routines make
@@ -112,9 +113,7 @@ pub(super) fn check_routine<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &'t Routi
     stmts::check_block(cx, &statements);
     for (h, in_error) in handlers.into_iter().zip([false, true, false]) {
         if let Some(h) = h {
-            if let Some(r) = &mut cx.routine {
-                r.in_error_handler = in_error;
-            }
+            cx.in_error_handler = in_error;
             for e in fields(h, "error") {
                 exprs::check_expected(cx, e, &Ty::named("errnum"), "an error number");
             }

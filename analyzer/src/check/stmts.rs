@@ -16,12 +16,12 @@ use crate::ty::Ty;
 /// reports those declared twice.
 pub(super) fn collect_labels(cx: &mut Cx<'_>, found: Vec<Label>) {
     let mut dups = Vec::new();
-    if let Some(r) = &mut cx.routine {
+    if cx.routine.is_some() {
         for (name, range, list) in found {
-            match r.labels.get(&fold(&name)) {
+            match cx.labels.get(&fold(&name)) {
                 Some((first, _)) => dups.push((name, range, first.clone())),
                 None => {
-                    r.labels.insert(fold(&name), (range, list));
+                    cx.labels.insert(fold(&name), (range, list));
                 }
             }
         }
@@ -161,7 +161,7 @@ fn check_uncached<'t>(cx: &mut Cx<'t>, s: Node<'t>) {
 }
 
 fn handler_only(cx: &mut Cx<'_>, s: Node<'_>, what: &str) {
-    if !cx.routine.as_ref().is_some_and(|r| r.in_error_handler) {
+    if !(cx.routine.is_some() && cx.in_error_handler) {
         cx.report(
             &rules::handler_only_statement::RULE,
             s.byte_range(),
@@ -225,10 +225,10 @@ fn goto(cx: &mut Cx<'_>, s: Node<'_>) {
         return;
     };
     let name = cx.node_text(label);
-    let Some(r) = &cx.routine else {
+    if cx.routine.is_none() {
         return;
-    };
-    match r.labels.get(&fold(name)) {
+    }
+    match cx.labels.get(&fold(name)) {
         None => cx.report(
             &rules::unknown_label::RULE,
             label.byte_range(),

@@ -25,9 +25,7 @@ pub(crate) fn check_constant_errors<'t>(cx: &mut Cx<'t>, node: Node<'t>) {
     let unit = cx.unit;
     let mut reports = Vec::new();
     let at = module_at(task, cx.unit_idx, node.start_byte());
-    let routine = RoutineNames::of(cx);
-    // Typing the context must not disturb the checker's findings.
-    let diags = std::mem::take(&mut cx.diags);
+    let routine = cx.routine.clone();
     let inits = cx.inits.take().unwrap_or_else(|| InitCache::new(task));
     with_routine(
         task,
@@ -69,7 +67,6 @@ pub(crate) fn check_constant_errors<'t>(cx: &mut Cx<'t>, node: Node<'t>) {
             }
         },
     );
-    cx.diags = diags;
     cx.inits = Some(inits);
     for (range, e) in reports {
         cx.report(

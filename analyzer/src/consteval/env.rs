@@ -401,7 +401,7 @@ pub(super) fn path_to(root: Node<'_>, range: Range<usize>) -> Vec<Step<'_>> {
 pub(super) struct RoutineScope<'s, 't> {
     pub(super) module: &'s ModuleScope<'s, 't>,
     pub(super) unit: &'t Unit,
-    pub(super) names: RoutineNames<'t>,
+    pub(super) names: crate::sema::scope::RoutineScope<'t>,
     pub(super) dims_depth: Cell<u32>,
 }
 

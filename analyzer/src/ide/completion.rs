@@ -10,9 +10,9 @@ use super::context::{Before, before, call_at, partial, statement_start, words};
 use super::signature::active;
 use super::usage::{function_rank, instruction_rank};
 use super::{CompletionItem, CompletionKind};
-use crate::check::{Cx, RoutineSym};
 use crate::items::{RoutineKind, Storage};
 use crate::names::{fold, same};
+use crate::sema::scope::{RoutineSym, Scope};
 use crate::sema::signature::Signature;
 use crate::task::{Item, Task};
 use crate::ty::Ty;
@@ -135,15 +135,15 @@ pub fn completions_for(
         return Vec::new();
     }
     let offset = bf.start + bf.text.len();
-    let Some(mut cx) = Cx::at(task, unit, offset) else {
+    let Some(cx) = Scope::at(task, unit, offset) else {
         return Vec::new();
     };
     let b = &bf.text;
     let p = partial(b);
     let prefix = &b[..b.len() - p];
     match prefix.last() {
-        Some(b'.') => return components(&mut cx, &prefix[..prefix.len() - 1]),
-        Some(b'\\') => return optional_args(&mut cx, &bf),
+        Some(b'.') => return components(&cx, &prefix[..prefix.len() - 1]),
+        Some(b'\\') => return optional_args(&cx, &bf),
         _ => {}
     }
     let stmt = statement_start(prefix);
@@ -161,10 +161,10 @@ pub fn completions_for(
         if !in_header {
             if stmt_text.windows(2).any(|p| p == b":=") {
                 let ty = w.get(i + 1).cloned();
-                return expression_items(&mut cx, ty.as_deref(), details);
+                return expression_items(&cx, ty.as_deref(), details);
             }
             return if w.len() == i + 1 {
-                types(&mut cx)
+                types(&cx)
             } else {
                 Vec::new()
             };
@@ -174,7 +174,7 @@ pub fn completions_for(
         Some("goto") if w.len() == 1 => return labels(&cx),
         Some("connect") if w.iter().any(|w| w == "with") => {
             let mut out = Vec::new();
-            visible_routines(&mut cx, details, &mut |name, kind, detail| {
+            visible_routines(&cx, details, &mut |name, kind, detail| {
                 if kind == CompletionKind::Trap {
                     out.push(item(name, kind, detail(), "0"));
                 }
@@ -198,18 +198,18 @@ pub fn completions_for(
             .is_some_and(|l| ["var", "pers", "inout"].contains(&l.as_str()))
             && matches!(last, Some(c) if c.is_ascii_alphabetic());
         if matches!(last, Some(b'(' | b',' | b'\\' | b'|')) || after_mode {
-            return types(&mut cx);
+            return types(&cx);
         }
         if w[first] == "func" && w.len() == first + 1 {
-            return types(&mut cx);
+            return types(&cx);
         }
         return Vec::new();
     }
     if stmt_text.iter().all(u8::is_ascii_whitespace) {
         return if in_routine {
-            statement_start_items(&mut cx, details)
+            statement_start_items(&cx, details)
         } else {
-            module_items(&mut cx)
+            module_items(&cx)
         };
     }
     if let Some(call) = call_at(&bf)
@@ -221,17 +221,17 @@ pub fn completions_for(
             Some(sig.params.get(i)?.type_name.clone())
         });
         if call.current.name.is_some() && !call.current.has_value && call.current.optional {
-            return optional_args(&mut cx, &bf);
+            return optional_args(&cx, &bf);
         }
-        return expression_items(&mut cx, expected.as_deref(), details);
+        return expression_items(&cx, expected.as_deref(), details);
     }
     // After `:=`: the left side's type is expected.
-    let expected = assignment_target(&mut cx, stmt_text);
-    expression_items(&mut cx, expected.as_deref(), details)
+    let expected = assignment_target(&cx, stmt_text);
+    expression_items(&cx, expected.as_deref(), details)
 }
 
 /// The labels of the routine around the cursor.
-fn labels(cx: &Cx<'_>) -> Vec<CompletionItem> {
+fn labels(cx: &Scope<'_>) -> Vec<CompletionItem> {
     let Some(r) = &cx.routine else {
         return Vec::new();
     };
@@ -264,7 +264,7 @@ fn in_routine_text(b: &[u8]) -> bool {
 }
 
 /// The declared type of `x` in `x := ` (a plain name only).
-fn assignment_target(cx: &mut Cx<'_>, stmt: &[u8]) -> Option<String> {
+fn assignment_target(cx: &Scope<'_>, stmt: &[u8]) -> Option<String> {
     let s = String::from_utf8_lossy(stmt);
     let (left, _) = s.split_once(":=")?;
     let name = left.trim();
@@ -277,7 +277,7 @@ fn assignment_target(cx: &mut Cx<'_>, stmt: &[u8]) -> Option<String> {
     }
 }
 
-fn statement_start_items(cx: &mut Cx<'_>, details: bool) -> Vec<CompletionItem> {
+fn statement_start_items(cx: &Scope<'_>, details: bool) -> Vec<CompletionItem> {
     let mut out = Vec::new();
     let mut seen = HashSet::new();
     visible_routines(cx, details, &mut |name, kind, detail| {
@@ -307,7 +307,7 @@ fn statement_start_items(cx: &mut Cx<'_>, details: bool) -> Vec<CompletionItem> 
     out
 }
 
-fn module_items(cx: &mut Cx<'_>) -> Vec<CompletionItem> {
+fn module_items(cx: &Scope<'_>) -> Vec<CompletionItem> {
     let _ = cx;
     let mut out = Vec::new();
     for k in MODULE_KEYWORDS {
@@ -319,7 +319,7 @@ fn module_items(cx: &mut Cx<'_>) -> Vec<CompletionItem> {
     out
 }
 
-fn types(cx: &mut Cx<'_>) -> Vec<CompletionItem> {
+fn types(cx: &Scope<'_>) -> Vec<CompletionItem> {
     let mut out = Vec::new();
     let mut seen = HashSet::new();
     let module = cx.module.map(|(i, _)| i);
@@ -360,7 +360,7 @@ fn types(cx: &mut Cx<'_>) -> Vec<CompletionItem> {
 /// Routines visible here: `f(name, kind, detail)`, where `detail()` gives
 /// the routine's header (`None` without `details`).
 fn visible_routines(
-    cx: &mut Cx<'_>,
+    cx: &Scope<'_>,
     details: bool,
     f: &mut impl FnMut(&str, CompletionKind, &dyn Fn() -> Option<String>),
 ) {
@@ -391,7 +391,7 @@ fn visible_routines(
 
 /// Data in scope; those of type `expected` sort first.
 fn data_items(
-    cx: &mut Cx<'_>,
+    cx: &Scope<'_>,
     expected: Option<&str>,
     details: bool,
     out: &mut Vec<CompletionItem>,
@@ -506,7 +506,7 @@ fn data_items(
 }
 
 /// Data and functions for an expression.
-fn expression_items(cx: &mut Cx<'_>, expected: Option<&str>, details: bool) -> Vec<CompletionItem> {
+fn expression_items(cx: &Scope<'_>, expected: Option<&str>, details: bool) -> Vec<CompletionItem> {
     let mut out = Vec::new();
     data_items(cx, expected, details, &mut out);
     let types = cx.task.types();
@@ -559,7 +559,7 @@ fn expression_items(cx: &mut Cx<'_>, expected: Option<&str>, details: bool) -> V
     out
 }
 
-fn lookup_return(cx: &mut Cx<'_>, name: &str) -> Option<String> {
+fn lookup_return(cx: &Scope<'_>, name: &str) -> Option<String> {
     match cx.resolve_routine(name, true)? {
         RoutineSym::User(d, _) => d.returns.as_ref().map(|t| t.name.clone()),
         RoutineSym::Builtin(r) => r.returns.clone(),
@@ -570,7 +570,7 @@ fn lookup_return(cx: &mut Cx<'_>, name: &str) -> Option<String> {
 /// alternative of one given). Those that can come next (between the last
 /// argument given and the next required parameter) come first, in order;
 /// then the later ones; those whose place is already past come last.
-fn optional_args(cx: &mut Cx<'_>, bf: &Before) -> Vec<CompletionItem> {
+fn optional_args(cx: &Scope<'_>, bf: &Before) -> Vec<CompletionItem> {
     let Some(call) = call_at(bf) else {
         return Vec::new();
     };
@@ -627,7 +627,7 @@ fn optional_args(cx: &mut Cx<'_>, bf: &Before) -> Vec<CompletionItem> {
 
 /// After `.`: the components of the object's type. The object is the
 /// chain of names, components and indexes before the dot.
-fn components(cx: &mut Cx<'_>, before_dot: &[u8]) -> Vec<CompletionItem> {
+fn components(cx: &Scope<'_>, before_dot: &[u8]) -> Vec<CompletionItem> {
     // Walk back over `name`, `.name` and `{...}` segments.
     let mut i = before_dot.len();
     let mut depth = 0;
@@ -675,7 +675,7 @@ fn components(cx: &mut Cx<'_>, before_dot: &[u8]) -> Vec<CompletionItem> {
 }
 
 /// The type of `a{i}.b.c`.
-fn chain_type(cx: &mut Cx<'_>, chain: &str) -> Option<Ty> {
+fn chain_type(cx: &Scope<'_>, chain: &str) -> Option<Ty> {
     // Split into segments, dropping index contents.
     let mut segs: Vec<(String, usize)> = Vec::new(); // name, index count after it
     let mut cur = String::new();

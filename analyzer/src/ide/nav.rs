@@ -7,9 +7,9 @@ use super::Location;
 use super::resolve::{
     Def, DefKey, NamePath, for_each_name_spelt, name_at, resolve, resolve_at, type_def,
 };
-use crate::check::Cx;
 use crate::diagnostic::Edit;
 use crate::names::{fold, same};
+use crate::sema::scope::Scope;
 use crate::sema::signature::{Arg, Signature, Target, bind_args};
 use crate::syntax::{field, kind};
 use crate::task::{Item, Task};
@@ -76,10 +76,10 @@ pub fn type_definition(task: &Task, unit: usize, offset: usize) -> Vec<Location>
     let (def_unit, at) = def
         .location(task)
         .map_or((unit, offset), |(u, r, _)| (u, r.start));
-    let Some(mut cx) = Cx::at(task, def_unit, at) else {
+    let Some(cx) = Scope::at(task, def_unit, at) else {
         return Vec::new();
     };
-    type_def(&mut cx, &ty)
+    type_def(&cx, &ty)
         .and_then(|d| location(task, &d))
         .into_iter()
         .collect()
@@ -177,7 +177,7 @@ pub(crate) fn uses(
 }
 
 /// The (folded) variables of the FOR loops around the end of `path`,
-/// innermost first, as [`Cx::at`] finds them.
+/// innermost first, as [`Scope::at`] finds them.
 fn for_vars_around(path: &NamePath<'_>, text: &str) -> Vec<String> {
     path.iter()
         .rev()
@@ -260,7 +260,7 @@ impl ArgLists {
 
 /// Is the name at the end of `path` (or the data it starts) an argument of
 /// a VAR, PERS or INOUT parameter, which the routine may change?
-fn passed_by_reference(cx: &mut Cx<'_>, path: &NamePath<'_>, lists: &mut ArgLists) -> bool {
+fn passed_by_reference(cx: &Scope<'_>, path: &NamePath<'_>, lists: &mut ArgLists) -> bool {
     let mut i = path.len().saturating_sub(1);
     let arg = loop {
         let (Some(&(_, f)), Some(&(p, _))) =
@@ -504,18 +504,18 @@ pub fn rename(
             if !checked.insert(scope) {
                 continue;
             }
-            let Some(mut cx) = Cx::at(task, *u, range.start) else {
+            let Some(cx) = Scope::at(task, *u, range.start) else {
                 continue;
             };
-            if clashes(&mut cx, new_name) {
+            if clashes(&cx, new_name) {
                 return Err(format!(
                     "`{new_name}` is already declared where `{old}` is used"
                 ));
             }
         }
         if let Some((u, r, _)) = def.location(task)
-            && let Some(mut cx) = Cx::at(task, u, r.start)
-            && clashes(&mut cx, new_name)
+            && let Some(cx) = Scope::at(task, u, r.start)
+            && clashes(&cx, new_name)
         {
             return Err(format!("`{new_name}` is already declared in this scope"));
         }
@@ -547,7 +547,7 @@ pub fn rename(
 
 /// Does `name` already denote something in this context (routine data,
 /// parameters, the module's or the task's declarations)?
-fn clashes(cx: &mut Cx<'_>, name: &str) -> bool {
+fn clashes(cx: &Scope<'_>, name: &str) -> bool {
     let key = fold(name);
     if let Some(r) = &cx.routine
         && (r.locals.contains_key(&key) || r.params.contains_key(&key) || r.for_vars.contains(&key))

@@ -6,9 +6,9 @@ use std::ops::Range;
 use tree_sitter::{Node, Tree};
 
 use crate::catalogue::{DataType, Datum, Routine};
-use crate::check::{Cx, DataSym, RoutineSym};
 use crate::items::{DataDecl, ParamDecl, RoutineDecl};
 use crate::names::{fold, same};
+use crate::sema::scope::{DataSym, RoutineSym, Scope};
 use crate::syntax::{field, kind};
 use crate::task::{Item, ItemRef, Task};
 use crate::ty::{Ty, UserType};
@@ -207,7 +207,7 @@ pub(crate) fn call_of_argument(arg: Node<'_>) -> Option<Node<'_>> {
 }
 
 /// Resolves the routine named by a call node.
-pub(crate) fn call_routine<'t>(cx: &mut Cx<'t>, call: Node<'_>) -> Option<RoutineSym<'t>> {
+pub(crate) fn call_routine<'t>(cx: &Scope<'t>, call: Node<'_>) -> Option<RoutineSym<'t>> {
     let name = call.child_by_field_name(field::NAME)?;
     if name.kind() != kind::IDENTIFIER {
         return None;
@@ -218,11 +218,11 @@ pub(crate) fn call_routine<'t>(cx: &mut Cx<'t>, call: Node<'_>) -> Option<Routin
 
 /// Resolves the name node `node` of unit `unit`.
 pub(crate) fn resolve<'t>(task: &'t Task, unit: usize, node: Node<'t>) -> Option<Def<'t>> {
-    let mut cx = Cx::at(task, unit, node.start_byte())?;
-    resolve_in(&mut cx, node)
+    let cx = Scope::at(task, unit, node.start_byte())?;
+    resolve_in(&cx, node)
 }
 
-pub(crate) fn resolve_in<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Option<Def<'t>> {
+pub(crate) fn resolve_in<'t>(cx: &Scope<'t>, node: Node<'t>) -> Option<Def<'t>> {
     let parent = node.parent()?;
     let field = field_in_parent(node);
     resolve_at(cx, node, parent, field, None)
@@ -235,7 +235,7 @@ pub(crate) fn resolve_in<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Option<Def<'t>>
 /// around: thousands of uses in one wide routine made finding them
 /// quadratic).
 pub(crate) fn resolve_at<'t>(
-    cx: &mut Cx<'t>,
+    cx: &Scope<'t>,
     node: Node<'t>,
     parent: Node<'t>,
     field: Option<&str>,
@@ -314,7 +314,7 @@ pub(crate) fn resolve_at<'t>(
         }
         (kind::COMPONENT_ACCESS, Some(field::COMPONENT)) => {
             let obj = parent.child_by_field_name(field::OBJECT)?;
-            let ty = cx.type_of_expr(obj);
+            let ty = crate::sema::typing::type_of(cx, obj, None);
             return component_def(cx, &ty, &name);
         }
         (kind::ARGUMENT, Some(field::NAME)) => {
@@ -397,7 +397,7 @@ pub(crate) fn resolve_at<'t>(
 }
 
 /// A type name: a user record or alias visible here, or a built-in type.
-pub(crate) fn type_def<'t>(cx: &mut Cx<'t>, name: &str) -> Option<Def<'t>> {
+pub(crate) fn type_def<'t>(cx: &Scope<'t>, name: &str) -> Option<Def<'t>> {
     for r in cx.lookup_items(name) {
         if matches!(r.item, Item::Record(_) | Item::Alias(_)) {
             return Some(Def::Item(r));
@@ -407,7 +407,7 @@ pub(crate) fn type_def<'t>(cx: &mut Cx<'t>, name: &str) -> Option<Def<'t>> {
 }
 
 /// Component `name` of a value of type `ty`.
-pub(crate) fn component_def<'t>(cx: &mut Cx<'t>, ty: &Ty, name: &str) -> Option<Def<'t>> {
+pub(crate) fn component_def<'t>(cx: &Scope<'t>, ty: &Ty, name: &str) -> Option<Def<'t>> {
     let Ty::Named(base) = cx.types.base(ty) else {
         return None;
     };

@@ -5,8 +5,8 @@ use std::ops::Range;
 use super::SignatureHelp;
 use super::context::{ArgCx, CallCx, before, call_at};
 use crate::catalogue::Mode;
-use crate::check::Cx;
 use crate::names::same;
+use crate::sema::scope::Scope;
 use crate::sema::signature::{Arg, Binding, Param, Signature, Target, bind_args};
 use crate::task::Task;
 
@@ -18,7 +18,7 @@ pub(crate) fn call_sig(task: &Task, unit: usize, offset: usize) -> Option<(Signa
         return None;
     }
     let call = call_at(&bf)?;
-    let mut cx = Cx::at(task, unit, offset)?;
+    let cx = Scope::at(task, unit, offset)?;
     let sym = cx.resolve_routine(&call.name, call.is_function)?;
     Some((Signature::of(sym), call))
 }

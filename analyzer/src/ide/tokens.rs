@@ -12,9 +12,9 @@ use super::{
     MOD_DECLARATION, MOD_DEFAULT_LIBRARY, MOD_READONLY, MOD_STATIC, SemanticToken, TokenType,
 };
 use crate::catalogue::DatumKind;
-use crate::check::{Cx, DataSym, RoutineSym};
 use crate::items::Storage;
 use crate::names::same;
+use crate::sema::scope::{DataSym, RoutineSym, Scope};
 use crate::syntax::{field, kind};
 use crate::task::{Item, Task};
 
@@ -25,7 +25,7 @@ pub(crate) struct Scopes<'t> {
     /// Routine ranges of the unit, sorted.
     routines: Vec<Range<usize>>,
     modules: Vec<Range<usize>>,
-    current: Option<((usize, usize), Cx<'t>)>,
+    current: Option<((usize, usize), Scope<'t>)>,
 }
 
 impl<'t> Scopes<'t> {
@@ -49,7 +49,7 @@ impl<'t> Scopes<'t> {
     }
 
     /// The context for a name at `offset`.
-    pub(crate) fn at(&mut self, offset: usize) -> Option<&mut Cx<'t>> {
+    pub(crate) fn at(&mut self, offset: usize) -> Option<&mut Scope<'t>> {
         let i = self.routines.partition_point(|r| r.start <= offset);
         let routine = i
             .checked_sub(1)
@@ -68,7 +68,7 @@ impl<'t> Scopes<'t> {
             } else {
                 routine
             };
-            let cx = Cx::at(self.task, self.unit, at)?;
+            let cx = Scope::at(self.task, self.unit, at)?;
             self.current = Some((key, cx));
         }
         self.current.as_mut().map(|(_, cx)| cx)

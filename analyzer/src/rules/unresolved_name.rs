@@ -123,8 +123,8 @@ fn infer_type(task: &Task, unit: usize, range: Range<usize>) -> Option<String> {
                 Some(field::LEFT) => parent.child_by_field_name(field::RIGHT)?,
                 _ => parent.child_by_field_name(field::LEFT)?,
             };
-            let mut cx = crate::check::Cx::at(task, unit, range.start)?;
-            match cx.type_of_expr(other) {
+            let cx = crate::sema::scope::Scope::at(task, unit, range.start)?;
+            match crate::sema::typing::type_of(&cx, other, None) {
                 Ty::Named(n) => Some(n),
                 _ => None,
             }

@@ -4,3 +4,4 @@
 pub(crate) mod labels;
 pub(crate) mod scope;
 pub(crate) mod signature;
+pub(crate) mod typing;
