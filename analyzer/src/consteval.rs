@@ -25,10 +25,11 @@ use rapid_evaluator::{
 use tree_sitter::{Node, TreeCursor};
 
 use crate::catalogue::{Catalogue, Datum, DatumKind, Mode, TypeKind};
-use crate::check::{Cx, DataSym, RoutineSym};
+use crate::check::Cx;
 use crate::items::{DataDecl, Storage};
 use crate::lower::{is_expression, lower_with};
 use crate::names::fold;
+use crate::sema::def::Def;
 use crate::sema::scope::Scope;
 use crate::sema::signature::{Arg, Signature, Target, bind_args};
 use crate::syntax::{field, kind};
@@ -591,7 +592,7 @@ fn argument_type<'t>(
         field(call, field::NAME).filter(|n| crate::syntax_util::kind(*n) == kind::IDENTIFIER)?;
     let want_function = crate::syntax_util::kind(call) == kind::FUNCTION_CALL;
     let sym = cx.resolve_routine(text_of(name, cx.text), want_function)?;
-    let sig = Signature::of(sym);
+    let sig = Signature::of(&sym, cx.task)?;
     let args = fields(list, field::ARGUMENT);
     let described: Vec<Arg<'_>> = args
         .iter()

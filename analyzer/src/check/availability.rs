@@ -4,22 +4,18 @@
 
 use std::ops::Range;
 
-use super::{Cx, DataSym, RoutineSym};
+use super::Cx;
 use crate::catalogue::{Availability, Origin};
 use crate::rules;
+use crate::sema::def::Def;
 
 impl Cx<'_> {
-    /// A call resolved to `sym` at `range`.
-    pub(crate) fn routine_used(&mut self, sym: &RoutineSym<'_>, range: Range<usize>) {
-        if let RoutineSym::Builtin(r) = sym {
-            self.builtin_used(&r.name, &r.origin, range);
-        }
-    }
-
-    /// A data name resolved to `sym` at `range`.
-    pub(crate) fn data_used(&mut self, sym: &DataSym<'_>, range: Range<usize>) {
-        if let DataSym::Builtin(d) = sym {
-            self.builtin_used(&d.name, &d.origin, range);
+    /// A name resolved to `def` at `range` (a call or data).
+    pub(crate) fn def_used(&mut self, def: &Def<'_>, range: Range<usize>) {
+        match def {
+            Def::BuiltinRoutine(r) => self.builtin_used(&r.name, &r.origin, range),
+            Def::BuiltinDatum(d) => self.builtin_used(&d.name, &d.origin, range),
+            _ => {}
         }
     }
 

@@ -207,7 +207,7 @@ impl<'t> Cx<'t> {
                 if c.fingerprint == self.routine_fingerprint
                     && c.in_error_handler == self.in_error_handler
                     && c.module == module
-                    && c.for_vars == r.for_vars =>
+                    && c.for_vars.iter().eq(r.for_vars.iter().map(|(v, _)| v)) =>
             {
                 c.hash
             }
@@ -215,7 +215,11 @@ impl<'t> Cx<'t> {
                 let mut h = std::hash::DefaultHasher::new();
                 self.routine_fingerprint.hash(&mut h);
                 self.in_error_handler.hash(&mut h);
-                r.for_vars.hash(&mut h);
+                // The names only: where the loops are does not change a
+                // statement's findings.
+                for (v, _) in &r.for_vars {
+                    v.hash(&mut h);
+                }
                 module.hash(&mut h);
                 self.task.interface.hash(&mut h);
                 self.task.constants.hash(&mut h);
@@ -223,7 +227,7 @@ impl<'t> Cx<'t> {
                 self.statement_context = Some(StatementContext {
                     fingerprint: self.routine_fingerprint,
                     in_error_handler: self.in_error_handler,
-                    for_vars: r.for_vars.clone(),
+                    for_vars: r.for_vars.iter().map(|(v, _)| v.clone()).collect(),
                     module,
                     hash,
                 });

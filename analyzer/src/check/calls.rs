@@ -7,10 +7,11 @@ use std::rc::Rc;
 
 use tree_sitter::Node;
 
-use super::{Cx, Place, RoutineSym, exprs};
+use super::{Cx, Place, exprs};
 use crate::catalogue::Mode;
 use crate::items::RoutineKind;
 use crate::rules;
+use crate::sema::def::Def;
 use crate::sema::signature::{Arg, Binding, BoundArg, Param, Signature, Target, bind_args};
 use crate::syntax::{field, kind};
 use crate::syntax_util::{ArgumentParts, argument_parts, field, fields};
@@ -18,17 +19,20 @@ use crate::ty::Ty;
 
 /// The signature of a routine, made once per check context (a MoveL
 /// signature is some twenty parameters of names and types).
-fn signature(cx: &mut Cx<'_>, sym: RoutineSym<'_>) -> Rc<Signature> {
-    let key = match sym {
-        RoutineSym::Builtin(r) => (std::ptr::from_ref(r) as usize, false),
-        RoutineSym::User(d, _) => (std::ptr::from_ref(d) as usize, true),
+fn signature(cx: &mut Cx<'_>, def: &Def<'_>) -> Option<Rc<Signature>> {
+    let key = match def {
+        Def::BuiltinRoutine(r) => (std::ptr::from_ref(*r) as usize, false),
+        def => (
+            std::ptr::from_ref(def.routine_decl(cx.task)?) as usize,
+            true,
+        ),
     };
     if let Some(sig) = cx.signatures.get(&key) {
-        return Rc::clone(sig);
+        return Some(Rc::clone(sig));
     }
-    let sig = Rc::new(Signature::of(sym));
+    let sig = Rc::new(Signature::of(def, cx.task)?);
     cx.signatures.insert(key, Rc::clone(&sig));
-    sig
+    Some(sig)
 }
 
 /// A procedure call statement.
@@ -54,8 +58,11 @@ pub(super) fn procedure_call<'t>(cx: &mut Cx<'t>, node: Node<'t>) {
     }
     match cx.resolve_routine(name, false) {
         Some(sym) => {
-            cx.routine_used(&sym, name_node.byte_range());
-            let sig = signature(cx, sym);
+            cx.def_used(&sym, name_node.byte_range());
+            let Some(sig) = signature(cx, &sym) else {
+                check_args_unknown(cx, args);
+                return;
+            };
             // A built-in known by name only may be either kind: real code
             // decides, and nothing of its call is checked.
             match sig.kind {
@@ -101,8 +108,11 @@ pub(super) fn function_call<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Ty {
     }
     match cx.resolve_routine(name, true) {
         Some(sym) => {
-            cx.routine_used(&sym, name_node.byte_range());
-            let sig = signature(cx, sym);
+            cx.def_used(&sym, name_node.byte_range());
+            let Some(sig) = signature(cx, &sym) else {
+                check_args_unknown(cx, args);
+                return Ty::Unknown;
+            };
             if sig.kind != RoutineKind::Func && sig.known {
                 cx.report(
                     &rules::call_kind_mismatch::RULE,

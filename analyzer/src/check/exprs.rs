@@ -42,8 +42,8 @@ fn identifier<'t>(cx: &mut Cx<'t>, node: Node<'t>, expected: Option<&Ty>) -> Ty 
     let name = cx.node_text(node);
     match cx.resolve_data(name) {
         Some(sym) => {
-            cx.data_used(&sym, node.byte_range());
-            sym.ty(&cx.types)
+            cx.def_used(&sym, node.byte_range());
+            sym.ty(cx.task, &cx.types)
         }
         None => {
             if let Some(exp) = expected.filter(|e| is_configured(cx, e)) {
@@ -565,7 +565,7 @@ pub(super) fn place_or_value<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> (Ty, Place)
         kind::IDENTIFIER => {
             let name = cx.node_text(node);
             match cx.resolve_data(name) {
-                Some(sym) => (sym.ty(&cx.types), Place::of(&sym)),
+                Some(sym) => (sym.ty(cx.task, &cx.types), Place::of(&sym, cx.task)),
                 None => {
                     cx.unresolved(name, node.byte_range(), "data");
                     (Ty::Unknown, Place::Unknown)

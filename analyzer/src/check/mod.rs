@@ -78,7 +78,8 @@ fn finish(task: &Task, unit: usize, u: &Unit, mut diags: Vec<Diagnostic>) -> Vec
     diags
 }
 
-pub(crate) use crate::sema::scope::{DataSym, RoutineSym, decl_ty};
+use crate::sema::def::Def;
+pub(crate) use crate::sema::def::decl_ty;
 use crate::sema::scope::{Scope, Use};
 
 /// Labels by folded name: the label's range and the statement list that
@@ -259,7 +260,7 @@ impl<'t> Cx<'t> {
 
     /// Resolves a data name in the current scope ([`Scope::resolve_data`]).
     /// Marks it used.
-    pub(crate) fn resolve_data(&mut self, name: &str) -> Option<DataSym<'t>> {
+    pub(crate) fn resolve_data(&mut self, name: &str) -> Option<Def<'t>> {
         let (sym, used) = with_folded(name, |key| {
             let (sym, used) = self.scope.resolve_data_folded(name, key)?;
             let used = used.map(|u| match u {
@@ -275,13 +276,9 @@ impl<'t> Cx<'t> {
     }
 
     /// Resolves a routine name ([`Scope::resolve_routine`]). Marks it used.
-    pub(crate) fn resolve_routine(
-        &mut self,
-        name: &str,
-        want_function: bool,
-    ) -> Option<RoutineSym<'t>> {
+    pub(crate) fn resolve_routine(&mut self, name: &str, want_function: bool) -> Option<Def<'t>> {
         let sym = self.scope.resolve_routine(name, want_function)?;
-        if let RoutineSym::User(_, r) = sym {
+        if let Def::Item(r) = sym {
             self.mark_used(Used::Item(r));
         }
         Some(sym)

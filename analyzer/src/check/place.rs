@@ -1,9 +1,10 @@
 //! Where a value lives (variable, persistent, constant, parameter,
 //! read-only system data), for the parameter-mode checks.
 
-use super::DataSym;
 use crate::catalogue::{DatumKind, Mode};
-use crate::items::{DataDecl, Storage};
+use crate::items::Storage;
+use crate::sema::def::Def;
+use crate::task::Task;
 
 /// Where a value lives, for the parameter-mode check.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -22,23 +23,25 @@ pub(crate) enum Place {
 }
 
 impl Place {
-    pub(crate) fn of(sym: &DataSym<'_>) -> Place {
-        match sym {
-            DataSym::Param(p) => Place::Param(p.mode),
-            DataSym::Local(DataDecl { storage, .. })
-            | DataSym::Module(DataDecl { storage, .. }, _) => match storage {
-                Storage::Var => Place::Var,
-                Storage::Pers => Place::Pers,
-                Storage::Const => Place::Const,
+    /// Where the data a name resolved to lives.
+    pub(crate) fn of(def: &Def<'_>, task: &Task) -> Place {
+        match def {
+            Def::Param { decl, .. } => Place::Param(decl.mode),
+            Def::Local { .. } | Def::Item(_) => match def.data_decl(task).map(|d| d.storage) {
+                Some(Storage::Var) => Place::Var,
+                Some(Storage::Pers) => Place::Pers,
+                Some(Storage::Const) => Place::Const,
+                None => Place::Unknown,
             },
-            DataSym::ForVar => Place::ForVar,
-            DataSym::Builtin(d) => match d.kind {
+            Def::ForVar { .. } => Place::ForVar,
+            Def::BuiltinDatum(d) => match d.kind {
                 DatumKind::Const => Place::Const,
                 DatumKind::Pers => Place::Pers,
                 DatumKind::Var if d.read_only => Place::ReadOnly,
                 DatumKind::Var => Place::Var,
             },
-            DataSym::Signal(_) => Place::Var,
+            Def::Signal(..) => Place::Var,
+            _ => Place::Unknown,
         }
     }
 

@@ -3,7 +3,7 @@
 
 use tree_sitter::Node;
 
-use super::{Cx, Place, RoutineSym, calls, exprs};
+use super::{Cx, Place, calls, exprs};
 use crate::items::RoutineKind;
 use crate::names::fold;
 use crate::rules;
@@ -196,7 +196,7 @@ fn for_statement<'t>(cx: &mut Cx<'t>, s: Node<'t>) {
             );
         }
     }
-    let var = field(s, field::VARIABLE).map(|v| fold(cx.node_text(v)));
+    let var = field(s, field::VARIABLE).map(|v| (fold(cx.node_text(v)), v.byte_range()));
     if let (Some(r), Some(v)) = (&mut cx.routine, &var) {
         r.for_vars.push(v.clone());
     }
@@ -318,7 +318,10 @@ fn connect<'t>(cx: &mut Cx<'t>, s: Node<'t>) {
     if let Some(trap) = field(s, field::TRAP) {
         let name = cx.node_text(trap);
         match cx.resolve_routine(name, false) {
-            Some(RoutineSym::User(d, _)) if d.kind == RoutineKind::Trap => {}
+            Some(def)
+                if def
+                    .routine_decl(cx.task)
+                    .is_some_and(|d| d.kind == RoutineKind::Trap) => {}
             Some(_) => cx.report(
                 &rules::connect_target::RULE,
                 trap.byte_range(),

@@ -344,7 +344,7 @@ pub(super) fn shape<'t>(
                 rapid_evaluator::is_function(name)
                     && matches!(
                         cx.resolve_routine(name, true),
-                        Some(RoutineSym::Builtin(..))
+                        Some(Def::BuiltinRoutine(..))
                     )
             });
             (pure, true)
@@ -412,10 +412,10 @@ pub(super) fn shape<'t>(
 /// Does this name denote constant data here (as the checker resolves it)?
 pub(super) fn is_constant_name(cx: &mut Cx<'_>, name: &str) -> bool {
     match cx.resolve_data(name) {
-        Some(DataSym::Module(d, _)) => d.storage == Storage::Const,
-        Some(DataSym::Local(d)) => d.storage == Storage::Const,
-        Some(DataSym::Builtin(d)) => d.kind == DatumKind::Const,
-        Some(_) => false,
+        Some(Def::BuiltinDatum(d)) => d.kind == DatumKind::Const,
+        Some(def) => def
+            .data_decl(cx.task)
+            .is_some_and(|d| d.storage == Storage::Const),
         None => rapid_evaluator::predefined(name).is_some(),
     }
 }

@@ -410,7 +410,7 @@ impl Env for RoutineScope<'_, '_> {
         let key = fold(name);
         let r = &self.names;
         {
-            if r.for_vars.contains(&key) {
+            if r.for_vars.iter().any(|(v, _)| *v == key) {
                 return Lookup::Variable {
                     kind: VarKind::Var,
                     ty: Type::named("num"),

@@ -12,7 +12,8 @@ use super::usage::{function_rank, instruction_rank};
 use super::{CompletionItem, CompletionKind};
 use crate::items::{RoutineKind, Storage};
 use crate::names::{fold, same};
-use crate::sema::scope::{RoutineSym, Scope};
+use crate::sema::def::Def;
+use crate::sema::scope::Scope;
 use crate::sema::signature::Signature;
 use crate::task::{Item, Task};
 use crate::ty::Ty;
@@ -216,10 +217,12 @@ pub fn completions_for(
         && call.name_start < offset - p
     {
         let sym = cx.resolve_routine(&call.name, call.is_function);
-        let expected = sym.map(Signature::of).and_then(|sig| {
-            let i = active(&sig, &call)?;
-            Some(sig.params.get(i)?.type_name.clone())
-        });
+        let expected = sym
+            .and_then(|s| Signature::of(&s, cx.task))
+            .and_then(|sig| {
+                let i = active(&sig, &call)?;
+                Some(sig.params.get(i)?.type_name.clone())
+            });
         if call.current.name.is_some() && !call.current.has_value && call.current.optional {
             return optional_args(&cx, &bf);
         }
@@ -271,7 +274,7 @@ fn assignment_target(cx: &Scope<'_>, stmt: &[u8]) -> Option<String> {
     if !name.bytes().all(|c| c.is_ascii_alphanumeric() || c == b'_') || name.is_empty() {
         return None;
     }
-    match cx.resolve_data(name)?.ty(&cx.types) {
+    match cx.resolve_data(name)?.ty(cx.task, &cx.types) {
         Ty::Named(n) => Some(n),
         _ => None,
     }
@@ -427,7 +430,7 @@ fn data_items(
         Storage::Const => CompletionKind::Constant,
     };
     if let Some(r) = &cx.routine {
-        for v in &r.for_vars {
+        for (v, _) in &r.for_vars {
             push(
                 v,
                 CompletionKind::Variable,
@@ -561,8 +564,12 @@ fn expression_items(cx: &Scope<'_>, expected: Option<&str>, details: bool) -> Ve
 
 fn lookup_return(cx: &Scope<'_>, name: &str) -> Option<String> {
     match cx.resolve_routine(name, true)? {
-        RoutineSym::User(d, _) => d.returns.as_ref().map(|t| t.name.clone()),
-        RoutineSym::Builtin(r) => r.returns.clone(),
+        Def::BuiltinRoutine(r) => r.returns.clone(),
+        def => def
+            .routine_decl(cx.task)?
+            .returns
+            .as_ref()
+            .map(|t| t.name.clone()),
     }
 }
 
@@ -577,7 +584,9 @@ fn optional_args(cx: &Scope<'_>, bf: &Before) -> Vec<CompletionItem> {
     let Some(sym) = cx.resolve_routine(&call.name, call.is_function) else {
         return Vec::new();
     };
-    let sig = Signature::of(sym);
+    let Some(sig) = Signature::of(&sym, cx.task) else {
+        return Vec::new();
+    };
     let given: Vec<&str> = call.done.iter().filter_map(|a| a.name.as_deref()).collect();
     let given_groups: HashSet<u32> = sig
         .params
@@ -709,7 +718,7 @@ fn chain_type(cx: &Scope<'_>, chain: &str) -> Option<Ty> {
     }
     let mut segs = segs.into_iter().filter(|(n, _)| !n.is_empty());
     let (first, idx) = segs.next()?;
-    let mut ty = cx.resolve_data(&first)?.ty(&cx.types);
+    let mut ty = cx.resolve_data(&first)?.ty(cx.task, &cx.types);
     if idx > 0 {
         ty = ty.element().clone();
     }

@@ -131,8 +131,8 @@ pub(crate) fn describe(task: &Task, def: &Def<'_>) -> Option<String> {
             out.push_str(&code(&format!("MODULE {line}")));
             push_comments(&mut out, &u.text, m.range.start);
         }
-        Def::ForVar { name, .. } => {
-            out.push_str(&code(&format!("num {name}")));
+        Def::ForVar { .. } => {
+            out.push_str(&code(&format!("num {}", def.name(task))));
             out.push_str("\n\n`FOR` loop variable");
         }
         Def::Label { name, .. } => {

@@ -92,7 +92,9 @@ pub fn inlay_hints(
         let Some(sym) = cx.resolve_routine(name_text, call.kind() == kind::FUNCTION_CALL) else {
             continue;
         };
-        let sig = Signature::of(sym);
+        let Some(sig) = Signature::of(&sym, cx.task) else {
+            continue;
+        };
         let mut cursor = args.walk();
         let args: Vec<Node<'_>> = args
             .children_by_field_name(field::ARGUMENT, &mut cursor)

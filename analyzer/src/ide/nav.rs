@@ -152,7 +152,7 @@ pub(crate) fn uses(
                     if let Some(r) = cx.routine.as_mut() {
                         r.for_vars.extend(for_vars);
                     }
-                    let d = resolve_at(cx, n, parent, field, Some(path)).map(|d| d.key(task));
+                    let d = resolve_at(cx, n, parent, field).map(|d| d.key(task));
                     let write = d.as_ref() == Some(&key)
                         && (is_write(path) || passed_by_reference(cx, path, &mut lists));
                     if let Some(r) = cx.routine.as_mut() {
@@ -176,15 +176,13 @@ pub(crate) fn uses(
     out
 }
 
-/// The (folded) variables of the FOR loops around the end of `path`,
-/// innermost first, as [`Scope::at`] finds them.
-fn for_vars_around(path: &NamePath<'_>, text: &str) -> Vec<String> {
+/// The variables of the FOR loops around the end of `path`, outermost
+/// first, as [`Scope::at`] finds them: folded name and range.
+fn for_vars_around(path: &NamePath<'_>, text: &str) -> Vec<(String, Range<usize>)> {
     path.iter()
-        .rev()
         .filter(|(n, _)| n.kind() == kind::FOR_STATEMENT)
         .filter_map(|(n, _)| n.child_by_field_name(field::VARIABLE))
-        .filter_map(|v| text.get(v.byte_range()))
-        .map(fold)
+        .filter_map(|v| Some((fold(text.get(v.byte_range())?), v.byte_range())))
         .collect()
 }
 
@@ -287,7 +285,9 @@ fn passed_by_reference(cx: &Scope<'_>, path: &NamePath<'_>, lists: &mut ArgLists
     let Some(sym) = super::resolve::call_routine(cx, call) else {
         return false;
     };
-    let sig = Signature::of(sym);
+    let Some(sig) = Signature::of(&sym, cx.task) else {
+        return false;
+    };
     let lists = lists.of(list, cx.text);
     let Some(k) = lists.ids.iter().position(|&id| id == arg.id()) else {
         return false;
@@ -550,7 +550,9 @@ pub fn rename(
 fn clashes(cx: &Scope<'_>, name: &str) -> bool {
     let key = fold(name);
     if let Some(r) = &cx.routine
-        && (r.locals.contains_key(&key) || r.params.contains_key(&key) || r.for_vars.contains(&key))
+        && (r.locals.contains_key(&key)
+            || r.params.contains_key(&key)
+            || r.for_vars.iter().any(|(v, _)| *v == key))
     {
         return true;
     }

@@ -1,171 +1,16 @@
-//! What the name at an offset denotes, through the checker's scopes
-//! ([`Cx::at`]), and the walks over names that references and rename need.
+//! What the name at an offset denotes, through the resolver's scopes
+//! ([`Scope::at`]), and the walks over names that references and rename need.
 
 use std::ops::Range;
 
 use tree_sitter::{Node, Tree};
 
-use crate::catalogue::{DataType, Datum, Routine};
-use crate::items::{DataDecl, ParamDecl, RoutineDecl};
 use crate::names::{fold, same};
-use crate::sema::scope::{DataSym, RoutineSym, Scope};
+pub(crate) use crate::sema::def::{Def, DefKey};
+use crate::sema::scope::Scope;
 use crate::syntax::{field, kind};
 use crate::task::{Item, ItemRef, Task};
 use crate::ty::{Ty, UserType};
-
-/// A declaration a name resolves to.
-#[derive(Clone, Debug)]
-pub(crate) enum Def<'t> {
-    /// A module's data, routine, record or alias.
-    Item(ItemRef),
-    /// A parameter of `routine`, declared in unit `unit`.
-    Param {
-        unit: usize,
-        decl: &'t ParamDecl,
-        routine: &'t RoutineDecl,
-    },
-    /// Routine data.
-    Local {
-        unit: usize,
-        decl: DataDecl,
-        routine: &'t RoutineDecl,
-    },
-    /// A `FOR` loop variable: its name's range.
-    ForVar {
-        unit: usize,
-        name: String,
-        range: Range<usize>,
-    },
-    /// A label: its name's range.
-    Label {
-        unit: usize,
-        name: String,
-        range: Range<usize>,
-    },
-    /// Component `index` of a user record.
-    Component(ItemRef, usize),
-    /// Component `index` of a built-in record type.
-    BuiltinComponent(&'static DataType, usize),
-    Module {
-        unit: usize,
-        module: usize,
-    },
-    BuiltinRoutine(&'static Routine),
-    /// Parameter `index` of a built-in routine.
-    BuiltinParam(&'static Routine, usize),
-    BuiltinDatum(&'static Datum),
-    BuiltinType(&'static DataType),
-    /// An I/O signal from the configuration, with its type.
-    Signal(String, &'static str),
-}
-
-/// The identity of a declaration, to compare resolutions.
-#[derive(Clone, Debug, PartialEq, Eq, Hash)]
-pub(crate) enum DefKey {
-    /// Declared in the task: unit and start of the name.
-    At(usize, usize),
-    /// Built in or configured: a kind letter and the folded name.
-    Named(char, String),
-}
-
-impl Def<'_> {
-    /// Where the declaration is: unit, name range, whole declaration.
-    pub(crate) fn location(&self, task: &Task) -> Option<(usize, Range<usize>, Range<usize>)> {
-        match self {
-            Def::Item(r) => {
-                let (_, name) = task.item_name(*r)?;
-                let m = task.module(*r)?;
-                let full = match r.item {
-                    Item::Data(i) => m.data.get(i)?.range.clone(),
-                    Item::Routine(i) => m.routines.get(i)?.range.clone(),
-                    Item::Record(i) => m.records.get(i)?.range.clone(),
-                    Item::Alias(i) => m.aliases.get(i)?.range.clone(),
-                };
-                Some((r.unit, name, full))
-            }
-            Def::Param { unit, decl, .. } => {
-                Some((*unit, decl.name_range.clone(), decl.name_range.clone()))
-            }
-            Def::Local { unit, decl, .. } => {
-                Some((*unit, decl.name_range.clone(), decl.range.clone()))
-            }
-            Def::ForVar { unit, range, .. } | Def::Label { unit, range, .. } => {
-                Some((*unit, range.clone(), range.clone()))
-            }
-            Def::Component(r, i) => {
-                let rec = task.record(*r)?;
-                let (_, _, range) = rec.components.get(*i)?;
-                Some((r.unit, range.clone(), range.clone()))
-            }
-            Def::Module { unit, module } => {
-                let m = task.units.get(*unit)?.items.modules.get(*module)?;
-                Some((*unit, m.name_range.clone(), m.range.clone()))
-            }
-            _ => None,
-        }
-    }
-
-    pub(crate) fn key(&self, task: &Task) -> DefKey {
-        if let Some((unit, range, _)) = self.location(task) {
-            return DefKey::At(unit, range.start);
-        }
-        match self {
-            Def::BuiltinRoutine(r) => DefKey::Named('r', fold(&r.name)),
-            Def::BuiltinParam(r, i) => DefKey::Named('p', format!("{}.{i}", fold(&r.name))),
-            Def::BuiltinDatum(d) => DefKey::Named('d', fold(&d.name)),
-            Def::BuiltinType(t) => DefKey::Named('t', fold(&t.name)),
-            Def::BuiltinComponent(t, i) => DefKey::Named('c', format!("{}.{i}", fold(&t.name))),
-            Def::Signal(n, _) => DefKey::Named('s', fold(n)),
-            _ => DefKey::Named('?', String::new()),
-        }
-    }
-
-    pub(crate) fn is_builtin(&self) -> bool {
-        matches!(
-            self,
-            Def::BuiltinRoutine(_)
-                | Def::BuiltinParam(..)
-                | Def::BuiltinDatum(_)
-                | Def::BuiltinType(_)
-                | Def::BuiltinComponent(..)
-        )
-    }
-
-    /// The declared name.
-    pub(crate) fn name(&self, task: &Task) -> String {
-        match self {
-            Def::Item(r) => task
-                .item_name(*r)
-                .map(|(n, _)| n.to_owned())
-                .unwrap_or_default(),
-            Def::Param { decl, .. } => decl.name.clone(),
-            Def::Local { decl, .. } => decl.name.clone(),
-            Def::ForVar { name, .. } | Def::Label { name, .. } | Def::Signal(name, _) => {
-                name.clone()
-            }
-            Def::Component(r, i) => task
-                .record(*r)
-                .and_then(|rec| rec.components.get(*i))
-                .map(|c| c.0.clone())
-                .unwrap_or_default(),
-            Def::BuiltinComponent(t, i) => t
-                .components
-                .get(*i)
-                .map(|c| c.name.clone())
-                .unwrap_or_default(),
-            Def::Module { unit, module } => task
-                .units
-                .get(*unit)
-                .and_then(|u| u.items.modules.get(*module))
-                .map(|m| m.name.clone())
-                .unwrap_or_default(),
-            Def::BuiltinRoutine(r) => r.name.clone(),
-            Def::BuiltinParam(r, i) => r.params.get(*i).map(|p| p.name.clone()).unwrap_or_default(),
-            Def::BuiltinDatum(d) => d.name.clone(),
-            Def::BuiltinType(t) => t.name.clone(),
-        }
-    }
-}
 
 /// Is this node a name (an identifier of any role)?
 pub(crate) fn is_name(node: Node<'_>) -> bool {
@@ -207,7 +52,7 @@ pub(crate) fn call_of_argument(arg: Node<'_>) -> Option<Node<'_>> {
 }
 
 /// Resolves the routine named by a call node.
-pub(crate) fn call_routine<'t>(cx: &Scope<'t>, call: Node<'_>) -> Option<RoutineSym<'t>> {
+pub(crate) fn call_routine<'t>(cx: &Scope<'t>, call: Node<'_>) -> Option<Def<'t>> {
     let name = call.child_by_field_name(field::NAME)?;
     if name.kind() != kind::IDENTIFIER {
         return None;
@@ -225,37 +70,30 @@ pub(crate) fn resolve<'t>(task: &'t Task, unit: usize, node: Node<'t>) -> Option
 pub(crate) fn resolve_in<'t>(cx: &Scope<'t>, node: Node<'t>) -> Option<Def<'t>> {
     let parent = node.parent()?;
     let field = field_in_parent(node);
-    resolve_at(cx, node, parent, field, None)
+    resolve_at(cx, node, parent, field)
 }
 
 /// [`resolve_in`] with what a walk down the tree already knows: the name's
-/// parent, the field under which it sits and, from a [`for_each_name_spelt`]
-/// walk, its path (so that nothing walks up parent links, which tree-sitter
-/// finds from the root at a cost that grows with the width of the nodes
-/// around: thousands of uses in one wide routine made finding them
-/// quadratic).
+/// parent and the field under which it sits (so that nothing walks up
+/// parent links, which tree-sitter finds from the root at a cost that
+/// grows with the width of the nodes around: thousands of uses in one wide
+/// routine made finding them quadratic). The `FOR` variables around the
+/// name are the scope's.
 pub(crate) fn resolve_at<'t>(
     cx: &Scope<'t>,
     node: Node<'t>,
     parent: Node<'t>,
     field: Option<&str>,
-    path: Option<&NamePath<'t>>,
 ) -> Option<Def<'t>> {
     let task = cx.task;
     let unit = cx.unit_idx;
     let name = cx.text.get(node.byte_range())?.to_owned();
-    let routine_sym = |sym: RoutineSym<'t>| match sym {
-        RoutineSym::User(_, r) => Def::Item(r),
-        RoutineSym::Builtin(r) => Def::BuiltinRoutine(r),
-    };
     match (parent.kind(), field) {
         (kind::PROCEDURE_CALL | kind::FUNCTION_CALL, Some(field::NAME)) => {
-            return cx
-                .resolve_routine(&name, parent.kind() == kind::FUNCTION_CALL)
-                .map(routine_sym);
+            return cx.resolve_routine(&name, parent.kind() == kind::FUNCTION_CALL);
         }
         (kind::CONNECT_STATEMENT, Some(field::TRAP)) => {
-            return cx.resolve_routine(&name, false).map(routine_sym);
+            return cx.resolve_routine(&name, false);
         }
         (kind::MODULE, Some(field::NAME)) => {
             let module = cx
@@ -320,7 +158,8 @@ pub(crate) fn resolve_at<'t>(
         (kind::ARGUMENT, Some(field::NAME)) => {
             let call = call_of_argument(parent)?;
             return match call_routine(cx, call)? {
-                RoutineSym::User(decl, r) => {
+                Def::Item(r) => {
+                    let decl = task.routine(r)?;
                     let p = decl.params.iter().find(|p| same(&p.name, &name))?;
                     Some(Def::Param {
                         unit: r.unit,
@@ -328,10 +167,11 @@ pub(crate) fn resolve_at<'t>(
                         routine: decl,
                     })
                 }
-                RoutineSym::Builtin(r) => {
+                Def::BuiltinRoutine(r) => {
                     let i = r.params.iter().position(|p| same(&p.name, &name))?;
                     Some(Def::BuiltinParam(r, i))
                 }
+                _ => None,
             };
         }
         (kind::LABEL, Some(field::NAME)) | (kind::GOTO_STATEMENT, Some(field::LABEL)) => {
@@ -348,7 +188,6 @@ pub(crate) fn resolve_at<'t>(
         (kind::FOR_STATEMENT, Some(field::VARIABLE)) => {
             return Some(Def::ForVar {
                 unit,
-                name,
                 range: node.byte_range(),
             });
         }
@@ -357,43 +196,7 @@ pub(crate) fn resolve_at<'t>(
     if node.kind() == kind::TYPE_IDENTIFIER || field == Some(field::TYPE) {
         return type_def(cx, &name);
     }
-    match cx.resolve_data(&name)? {
-        DataSym::Param(p) => Some(Def::Param {
-            unit,
-            decl: p,
-            routine: cx.routine.as_ref()?.decl,
-        }),
-        DataSym::Local(decl) => Some(Def::Local {
-            unit,
-            decl,
-            routine: cx.routine.as_ref()?.decl,
-        }),
-        DataSym::Module(_, r) => Some(Def::Item(r)),
-        DataSym::ForVar => {
-            let loop_of = |n: Node<'t>| {
-                let v = n.child_by_field_name(field::VARIABLE)?;
-                let spelt = cx.text.get(v.byte_range())?;
-                (n.kind() == kind::FOR_STATEMENT && same(spelt, &name)).then(|| Def::ForVar {
-                    unit,
-                    name: spelt.to_owned(),
-                    range: v.byte_range(),
-                })
-            };
-            if let Some(path) = path {
-                return path.iter().rev().find_map(|(n, _)| loop_of(*n));
-            }
-            let mut at = Some(node);
-            while let Some(n) = at {
-                if let Some(def) = loop_of(n) {
-                    return Some(def);
-                }
-                at = n.parent();
-            }
-            None
-        }
-        DataSym::Builtin(d) => Some(Def::BuiltinDatum(d)),
-        DataSym::Signal(ty) => Some(Def::Signal(name, ty)),
-    }
+    cx.resolve_data(&name)
 }
 
 /// A type name: a user record or alias visible here, or a built-in type.

@@ -20,7 +20,7 @@ pub(crate) fn call_sig(task: &Task, unit: usize, offset: usize) -> Option<(Signa
     let call = call_at(&bf)?;
     let cx = Scope::at(task, unit, offset)?;
     let sym = cx.resolve_routine(&call.name, call.is_function)?;
-    Some((Signature::of(sym), call))
+    Some((Signature::of(&sym, cx.task)?, call))
 }
 
 /// An argument typed so far, as the binder takes it.

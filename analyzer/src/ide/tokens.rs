@@ -14,7 +14,8 @@ use super::{
 use crate::catalogue::DatumKind;
 use crate::items::Storage;
 use crate::names::same;
-use crate::sema::scope::{DataSym, RoutineSym, Scope};
+use crate::sema::def::Def;
+use crate::sema::scope::Scope;
 use crate::syntax::{field, kind};
 use crate::task::{Item, Task};
 
@@ -247,11 +248,7 @@ fn classify(
         | (kind::CONNECT_STATEMENT, Some(field::TRAP)) => {
             let cx = scopes.at(n.start_byte())?;
             match cx.resolve_routine(name, parent.kind() == kind::FUNCTION_CALL) {
-                Some(RoutineSym::User(d, _)) => match d.kind {
-                    crate::items::RoutineKind::Func => (TokenType::Function, 0),
-                    _ => (TokenType::Method, 0),
-                },
-                Some(RoutineSym::Builtin(r)) => {
+                Some(Def::BuiltinRoutine(r)) => {
                     let ty = if r.returns.is_some() {
                         TokenType::Function
                     } else {
@@ -259,6 +256,10 @@ fn classify(
                     };
                     (ty, MOD_DEFAULT_LIBRARY)
                 }
+                Some(def) => match def.routine_decl(cx.task).map(|d| d.kind) {
+                    Some(crate::items::RoutineKind::Func) => (TokenType::Function, 0),
+                    _ => (TokenType::Method, 0),
+                },
                 None if parent.kind() == kind::FUNCTION_CALL => (TokenType::Function, 0),
                 None => (TokenType::Method, 0),
             }
@@ -282,16 +283,18 @@ fn classify(
             }
             let cx = scopes.at(n.start_byte())?;
             match cx.resolve_data(name) {
-                Some(DataSym::Param(_)) => (TokenType::Parameter, 0),
-                Some(DataSym::Local(d)) => (TokenType::Variable, data_mods(d.storage)),
-                Some(DataSym::Module(d, _)) => (TokenType::Variable, data_mods(d.storage)),
-                Some(DataSym::ForVar) => (TokenType::Variable, 0),
-                Some(DataSym::Builtin(d)) => match d.kind {
+                Some(Def::Param { .. }) => (TokenType::Parameter, 0),
+                Some(def @ (Def::Local { .. } | Def::Item(_))) => (
+                    TokenType::Variable,
+                    def.data_decl(cx.task).map_or(0, |d| data_mods(d.storage)),
+                ),
+                Some(Def::BuiltinDatum(d)) => match d.kind {
                     DatumKind::Const => (TokenType::EnumMember, MOD_READONLY | MOD_DEFAULT_LIBRARY),
                     DatumKind::Pers => (TokenType::Variable, MOD_STATIC | MOD_DEFAULT_LIBRARY),
                     DatumKind::Var => (TokenType::Variable, MOD_DEFAULT_LIBRARY),
                 },
-                Some(DataSym::Signal(_)) => (TokenType::Variable, MOD_DEFAULT_LIBRARY),
+                Some(Def::Signal(..)) => (TokenType::Variable, MOD_DEFAULT_LIBRARY),
+                Some(_) => (TokenType::Variable, 0),
                 None => {
                     // Perhaps a routine used as a value (a late-binding
                     // name) or nothing known: plain variable.

@@ -8,12 +8,13 @@ use std::ops::Range;
 
 use tree_sitter::Node;
 
-use crate::catalogue::{Catalogue, Datum, Routine};
+pub(crate) use super::def::Def;
+use crate::catalogue::Catalogue;
 use crate::items::{DataDecl, Module, ParamDecl, RoutineDecl};
 use crate::names::{NameMap, fold, with_folded};
 use crate::syntax::{field, kind};
 use crate::task::{Item, ItemRef, Task, Unit};
-use crate::ty::{Ty, Types};
+use crate::ty::Types;
 
 /// The items visible under the folded name `key` from module `module` of
 /// unit `unit`: the module's own items (any scope, `LOCAL` ones included)
@@ -34,53 +35,6 @@ pub(crate) fn visible(task: &Task, unit: usize, module: Option<usize>, key: &str
     own
 }
 
-/// What a data name denotes.
-#[derive(Clone, Debug)]
-pub(crate) enum DataSym<'t> {
-    Param(&'t ParamDecl),
-    Local(DataDecl),
-    Module(&'t DataDecl, ItemRef),
-    ForVar,
-    Builtin(&'static Datum),
-    Signal(&'static str),
-}
-
-impl DataSym<'_> {
-    /// The symbol's type; a type name the task does not know is unknown
-    /// (reported once where it is declared), so nothing else is reported
-    /// against it.
-    pub(crate) fn ty(&self, types: &Types<'_>) -> Ty {
-        let ty = match self {
-            DataSym::Param(p) => {
-                p.ty.as_ref()
-                    .map_or(Ty::Unknown, |t| Ty::named(&t.name))
-                    .array(p.dims)
-            }
-            DataSym::Local(d) => decl_ty(d),
-            DataSym::Module(d, _) => decl_ty(d),
-            DataSym::ForVar => Ty::num(),
-            DataSym::Builtin(d) => Ty::named(&d.ty),
-            DataSym::Signal(ty) => Ty::named(ty),
-        };
-        if types.is_known(&ty) { ty } else { Ty::Unknown }
-    }
-}
-
-/// The declared type of data.
-pub(crate) fn decl_ty(d: &DataDecl) -> Ty {
-    let dims = u8::try_from(d.dims.len()).unwrap_or(u8::MAX);
-    d.ty.as_ref()
-        .map_or(Ty::Unknown, |t| Ty::named(&t.name))
-        .array(dims)
-}
-
-/// What a routine name denotes.
-#[derive(Clone, Copy, Debug)]
-pub(crate) enum RoutineSym<'t> {
-    User(&'t RoutineDecl, ItemRef),
-    Builtin(&'static Routine),
-}
-
 /// The names a routine puts in front of its module's.
 #[derive(Clone)]
 pub(crate) struct RoutineScope<'t> {
@@ -89,9 +43,9 @@ pub(crate) struct RoutineScope<'t> {
     pub params: NameMap<&'t ParamDecl>,
     /// Routine data by folded name.
     pub locals: NameMap<DataDecl>,
-    /// Folded names of the `FOR` variables of the loops around the place,
-    /// outermost first.
-    pub for_vars: Vec<String>,
+    /// The `FOR` variables of the loops around the place, outermost
+    /// first: folded name and the range of the name in its loop.
+    pub for_vars: Vec<(String, Range<usize>)>,
 }
 
 impl<'t> RoutineScope<'t> {
@@ -186,7 +140,9 @@ impl<'t> Scope<'t> {
             if crate::syntax_util::kind(n) == kind::FOR_STATEMENT
                 && let Some(v) = crate::syntax_util::field(n, field::VARIABLE)
             {
-                routine.for_vars.insert(0, fold(scope.node_text(v)));
+                routine
+                    .for_vars
+                    .insert(0, (fold(scope.node_text(v)), v.byte_range()));
             }
             at = n.parent();
         }
@@ -230,7 +186,7 @@ impl<'t> Scope<'t> {
     /// parameter, module data visible from here, built-in data, then what
     /// the controller's configuration names (signals, mechanical units,
     /// tasks).
-    pub(crate) fn resolve_data(&self, name: &str) -> Option<DataSym<'t>> {
+    pub(crate) fn resolve_data(&self, name: &str) -> Option<Def<'t>> {
         with_folded(name, |key| {
             self.resolve_data_folded(name, key).map(|(s, _)| s)
         })
@@ -242,48 +198,56 @@ impl<'t> Scope<'t> {
         &self,
         name: &str,
         key: &str,
-    ) -> Option<(DataSym<'t>, Option<Use>)> {
+    ) -> Option<(Def<'t>, Option<Use>)> {
+        let unit = self.unit_idx;
         if let Some(r) = &self.routine {
-            if r.for_vars.iter().any(|v| v == key) {
-                return Some((DataSym::ForVar, None));
+            if let Some((_, range)) = r.for_vars.iter().rev().find(|(v, _)| v == key) {
+                let range = range.clone();
+                return Some((Def::ForVar { unit, range }, None));
             }
             if let Some(d) = r.locals.get(key) {
-                return Some((DataSym::Local(d.clone()), Some(Use::RoutineScope)));
+                let def = Def::Local {
+                    unit,
+                    decl: d.clone(),
+                    routine: r.decl,
+                };
+                return Some((def, Some(Use::RoutineScope)));
             }
             if let Some(p) = r.params.get(key).copied() {
-                return Some((DataSym::Param(p), Some(Use::RoutineScope)));
+                let def = Def::Param {
+                    unit,
+                    decl: p,
+                    routine: r.decl,
+                };
+                return Some((def, Some(Use::RoutineScope)));
             }
         }
         for r in self.lookup_items_folded(key) {
-            if let Some(d) = self.task.data(r) {
-                return Some((DataSym::Module(d, r), Some(Use::Item(r))));
+            if self.task.data(r).is_some() {
+                return Some((Def::Item(r), Some(Use::Item(r))));
             }
         }
         if let Some(d) = self.cat.datum(name) {
-            return Some((DataSym::Builtin(d), None));
+            return Some((Def::BuiltinDatum(d), None));
         }
-        if let Some(ty) = self.task.signals.as_ref().and_then(|s| s.get(key)) {
-            return Some((DataSym::Signal(ty), None));
-        }
-        if self.task.mecunits.contains(key) {
-            return Some((DataSym::Signal("mecunit"), None));
-        }
-        if self.task.task_ids.contains(key) {
-            return Some((DataSym::Signal("taskid"), None));
-        }
-        None
+        let configured = if let Some(ty) = self.task.signals.as_ref().and_then(|s| s.get(key)) {
+            *ty
+        } else if self.task.mecunits.contains(key) {
+            "mecunit"
+        } else if self.task.task_ids.contains(key) {
+            "taskid"
+        } else {
+            return None;
+        };
+        Some((Def::Signal(name.to_owned(), configured), None))
     }
 
     /// What a routine name denotes here: a routine visible from here, else
     /// a built-in one (a function first where a function is wanted).
-    pub(crate) fn resolve_routine(
-        &self,
-        name: &str,
-        want_function: bool,
-    ) -> Option<RoutineSym<'t>> {
+    pub(crate) fn resolve_routine(&self, name: &str, want_function: bool) -> Option<Def<'t>> {
         for r in self.lookup_items(name) {
-            if let Some(d) = self.task.routine(r) {
-                return Some(RoutineSym::User(d, r));
+            if self.task.routine(r).is_some() {
+                return Some(Def::Item(r));
             }
         }
         let (first, second) = if want_function {
@@ -291,9 +255,7 @@ impl<'t> Scope<'t> {
         } else {
             (self.cat.instruction(name), self.cat.function(name))
         };
-        first
-            .map(RoutineSym::Builtin)
-            .or_else(|| second.map(RoutineSym::Builtin))
+        first.or(second).map(Def::BuiltinRoutine)
     }
 
     /// The record or alias visible here under `name`.

@@ -3,9 +3,10 @@
 //! signature help, completion and the constant evaluator read it.
 
 use crate::catalogue::{ANYTYPE, AltGroup, Mode, Routine};
-use crate::check::RoutineSym;
 use crate::items::{RoutineDecl, RoutineKind};
 use crate::names::same;
+use crate::sema::def::Def;
+use crate::task::Task;
 use crate::ty::Ty;
 
 /// A parameter, of a built-in or a user routine.
@@ -56,10 +57,10 @@ pub(crate) struct Signature {
 
 impl Signature {
     /// The signature of a resolved routine.
-    pub fn of(sym: RoutineSym<'_>) -> Signature {
-        match sym {
-            RoutineSym::Builtin(r) => Signature::builtin(r),
-            RoutineSym::User(d, _) => Signature::user(d),
+    pub(crate) fn of(def: &Def<'_>, task: &Task) -> Option<Signature> {
+        match def {
+            Def::BuiltinRoutine(r) => Some(Signature::builtin(r)),
+            def => def.routine_decl(task).map(Signature::user),
         }
     }
 

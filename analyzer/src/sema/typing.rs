@@ -22,7 +22,7 @@ pub(crate) fn type_of(scope: &Scope<'_>, node: Node<'_>, expected: Option<&Ty>) 
         kind::STRING => Ty::string(),
         kind::BOOLEAN => Ty::bool(),
         kind::IDENTIFIER => match scope.resolve_data(scope.node_text(node)) {
-            Some(sym) => sym.ty(types),
+            Some(def) => def.ty(scope.task, types),
             None => match expected {
                 Some(exp) if is_configured(types, exp) => exp.clone(),
                 _ => Ty::Unknown,
@@ -77,7 +77,7 @@ pub(crate) fn type_of(scope: &Scope<'_>, node: Node<'_>, expected: Option<&Ty>) 
             }
             field(node, field::NAME)
                 .and_then(|n| scope.resolve_routine(scope.node_text(n), true))
-                .and_then(|sym| Signature::of(sym).returns)
+                .and_then(|def| Signature::of(&def, scope.task)?.returns)
                 .unwrap_or(Ty::Unknown)
         }
         kind::COMPONENT_ACCESS => {
