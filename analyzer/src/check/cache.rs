@@ -223,6 +223,7 @@ impl<'t> Cx<'t> {
                 module.hash(&mut h);
                 self.task.interface.hash(&mut h);
                 self.task.constants.hash(&mut h);
+                self.selection.hash(&mut h);
                 let hash = h.finish();
                 self.statement_context = Some(StatementContext {
                     fingerprint: self.routine_fingerprint,

@@ -34,28 +34,32 @@ use tree_sitter::Node;
 use crate::diagnostic::{Diagnostic, Related, Rule};
 use crate::items::{Module, ParamDecl};
 use crate::names::{NameMap, fold, with_folded};
+use crate::rules::Selection;
 use crate::syntax::kind;
 use crate::task::{ItemRef, Task, Unit};
 
 /// Checks one unit of a task and returns its diagnostics (without the
 /// syntax diagnostics, which the unit holds), sorted by position.
 pub fn check_unit(task: &Task, unit: usize) -> Vec<Diagnostic> {
-    check_unit_cached(task, unit, StmtCache::default()).0
+    check_unit_cached(task, unit, StmtCache::default(), &Selection::all()).0
 }
 
 /// [`check_unit`] reusing the results of statements that are unchanged since
 /// the check that produced `cache` (same text, same routine declarations,
 /// same task interface and constants); returns the cache for the next check.
 /// An edit inside one routine re-checks only the statements it changed.
+/// Only the rules `selection` has on are checked and reported.
 pub fn check_unit_cached(
     task: &Task,
     unit: usize,
     cache: StmtCache,
+    selection: &Selection,
 ) -> (Vec<Diagnostic>, StmtCache) {
     let Some(u) = task.units.get(unit) else {
         return (Vec::new(), StmtCache::default());
     };
     let mut cx = Cx::new(task, unit, u);
+    cx.selection = selection.clone();
     cx.cache = cache;
     cx.cache.start_check();
     cx.cache_enabled = true;
@@ -94,6 +98,8 @@ pub(crate) struct Cx<'t> {
     pub labels: Labels,
     /// Whether the statements being checked are in an ERROR handler.
     pub in_error_handler: bool,
+    /// The rules this check runs.
+    pub(crate) selection: Selection,
     pub diags: Vec<Diagnostic>,
     /// Folded names of routine-scope symbols and module items that were used.
     pub used: UsedSet,
@@ -165,6 +171,7 @@ impl<'t> Cx<'t> {
             scope: Scope::of_unit(task, unit_idx, unit),
             labels: Labels::default(),
             in_error_handler: false,
+            selection: Selection::all(),
             diags: Vec::new(),
             used: UsedSet::default(),
             cache: StmtCache::default(),
@@ -239,11 +246,15 @@ impl<'t> Cx<'t> {
         range: Range<usize>,
         message: impl Into<String>,
     ) {
-        self.diags.push(Diagnostic::new(rule, range, message));
+        if self.selection.is_on(rule) {
+            self.diags.push(Diagnostic::new(rule, range, message));
+        }
     }
 
     pub(crate) fn report_with(&mut self, d: Diagnostic) {
-        self.diags.push(d);
+        if self.selection.is_on(d.rule) {
+            self.diags.push(d);
+        }
     }
 
     pub(crate) fn related_item(&self, r: ItemRef, message: impl Into<String>) -> Option<Related> {

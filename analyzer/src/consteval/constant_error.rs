@@ -10,6 +10,9 @@ use crate::syntax::{field, kind};
 /// own call. Only maximal constant expressions that hold an operation are
 /// evaluated, each once.
 pub(crate) fn check_constant_errors<'t>(cx: &mut Cx<'t>, node: Node<'t>) {
+    if !cx.selection.is_on(&crate::rules::constant_error::RULE) {
+        return;
+    }
     // Most statements hold no operation at all (`MoveL p10, v100, z10,
     // tool0;`): their text says so without a walk of their nodes.
     if !may_hold_operation(cx.node_text(node)) {

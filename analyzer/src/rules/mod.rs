@@ -115,6 +115,34 @@ pub static RULES: &[&Rule] = &[
     &duplicate_module::RULE,
 ];
 
+/// The rules a check runs. A rule switched off is not reported, and the
+/// checks that cost something (constant evaluation for E413) do not run
+/// for it; the same selection applied after the check would keep the same
+/// findings.
+#[derive(Clone, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Selection {
+    /// Codes of the rules switched off.
+    off: std::collections::BTreeSet<&'static str>,
+}
+
+impl Selection {
+    /// Every rule on (the analyzer's findings, before any configuration).
+    pub fn all() -> Selection {
+        Selection::default()
+    }
+
+    /// The rules for which `on` holds.
+    pub fn of(on: impl Fn(&Rule) -> bool) -> Selection {
+        Selection {
+            off: RULES.iter().filter(|r| !on(r)).map(|r| r.code).collect(),
+        }
+    }
+
+    pub fn is_on(&self, rule: &Rule) -> bool {
+        self.off.is_empty() || !self.off.contains(rule.code)
+    }
+}
+
 /// The rule with this code or name (any case).
 pub fn find(code_or_name: &str) -> Option<&'static Rule> {
     RULES.iter().copied().find(|r| {

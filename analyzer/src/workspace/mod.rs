@@ -21,6 +21,7 @@ use crate::controller::{
 };
 use crate::diagnostic::Diagnostic;
 use crate::layout::{Grouping, locate};
+use crate::rules::Selection;
 use crate::task::{
     Config, SharedMap, Signals, Task, Unit, controller_of, parse_config, shared_persistents,
 };
@@ -577,7 +578,7 @@ impl Workspace {
 /// The diagnostics of one unit of a task, computed afresh: syntax, then
 /// semantic, sorted by position.
 pub fn diagnostics_of(task: &Task, unit: &Arc<Unit>) -> Vec<Diagnostic> {
-    diagnostics_cached(task, unit, StmtCache::default()).0
+    diagnostics_selected(task, unit, StmtCache::default(), &Selection::all()).0
 }
 
 /// [`diagnostics_of`], reusing the statement results of an earlier check of
@@ -587,10 +588,21 @@ pub fn diagnostics_cached(
     unit: &Arc<Unit>,
     cache: StmtCache,
 ) -> (Vec<Diagnostic>, StmtCache) {
+    diagnostics_selected(task, unit, cache, &Selection::all())
+}
+
+/// [`diagnostics_cached`] with only the rules `selection` has on checked
+/// (syntax diagnostics are always given).
+pub fn diagnostics_selected(
+    task: &Task,
+    unit: &Arc<Unit>,
+    cache: StmtCache,
+    selection: &Selection,
+) -> (Vec<Diagnostic>, StmtCache) {
     let mut out = unit.syntax.clone();
     let mut next = StmtCache::default();
     if let Some(idx) = task.units.iter().position(|u| Arc::ptr_eq(u, unit)) {
-        let (found, cache) = crate::check::check_unit_cached(task, idx, cache);
+        let (found, cache) = crate::check::check_unit_cached(task, idx, cache, selection);
         out.extend(found);
         next = cache;
     }

@@ -21,9 +21,11 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use rapid_analyzer::check::StmtCache;
 use rapid_analyzer::diagnostic::{Diagnostic, Severity};
+use rapid_analyzer::rules::Selection;
 use rapid_analyzer::task::Unit;
-use rapid_analyzer::workspace::diagnostics_of;
+use rapid_analyzer::workspace::diagnostics_selected;
 use rayon::prelude::*;
 
 use crate::project::{Discovery, Disk, SourceFile, Sources};
@@ -174,12 +176,14 @@ fn progress_bar(files: usize) -> ProgressBar {
 /// (`context`, [`crate::project::context::task_context`]) and the modules and configuration
 /// of `extra` join the tasks (the tasks they belong to when those are
 /// checked, else, for `extra`, every checked task) but are not reported.
-/// Diagnostics are the analyzer's, unfiltered.
+/// Diagnostics are the analyzer's for the rules `selection` has on for
+/// each file (the settings' severities and suppressions are not applied).
 pub fn check_files(
     found: &Discovery,
     context: &Discovery,
     extra: &Discovery,
     controller: &rapid_analyzer::controller::ControllerOverride,
+    selection: &(dyn Fn(&std::path::Path) -> Selection + Sync),
     progress: &ProgressBar,
 ) -> Vec<Outcome> {
     let files = &found.files;
@@ -224,7 +228,9 @@ pub fn check_files(
     let mut by_path: HashMap<String, Vec<Diagnostic>> = jobs
         .par_iter()
         .map(|(task, u)| {
-            let d = (u.path.clone(), diagnostics_of(task, u));
+            let rules = selection(std::path::Path::new(&u.path));
+            let found = diagnostics_selected(task, u, StmtCache::default(), &rules).0;
+            let d = (u.path.clone(), found);
             progress.inc(1);
             d
         })

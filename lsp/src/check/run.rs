@@ -197,6 +197,7 @@ fn check_and_fix(
             &project.context,
             &project.extra,
             &controller,
+            &|path: &std::path::Path| setup.settings.selection_for(path),
             &progress,
         )
     };

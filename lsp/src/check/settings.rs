@@ -248,6 +248,13 @@ impl LintSettings {
         std::borrow::Cow::Owned(set)
     }
 
+    /// The rules the analyzer checks for `path`: those selected, and the
+    /// syntax rules, which are always reported.
+    pub fn selection_for(&self, path: &Path) -> rapid_analyzer::rules::Selection {
+        let rules = self.rules_for(path);
+        rapid_analyzer::rules::Selection::of(|r| is_syntax_rule(r) || rules.of(r.code).is_some())
+    }
+
     /// Keeps the diagnostics of `path` that are selected and not
     /// suppressed in its `text`, at their configured severity, and at least
     /// as severe as the floor. Syntax errors are always kept, as errors
