@@ -273,7 +273,7 @@ pub fn value_at(task: &Task, unit: usize, offset: usize) -> Option<ConstValue> {
     // (as editors place it after the last character typed).
     let on_token = matches!(
         crate::syntax_util::kind(start),
-        "identifier" | "number" | "string" | "boolean"
+        kind::IDENTIFIER | kind::NUMBER | kind::STRING | kind::BOOLEAN
     ) && start.start_byte() <= offset
         && offset < start.end_byte();
     if !on_token
@@ -307,7 +307,10 @@ pub fn value_at(task: &Task, unit: usize, offset: usize) -> Option<ConstValue> {
                 {
                     return Some(v);
                 }
-            } else if !matches!(crate::syntax_util::kind(n), "argument" | "argument_list") {
+            } else if !matches!(
+                crate::syntax_util::kind(n),
+                kind::ARGUMENT | kind::ARGUMENT_LIST
+            ) {
                 return None;
             }
             path.pop();
@@ -358,7 +361,7 @@ fn value_of_node<'t>(
     let text = task.units.get(unit).map_or("", |u| text_of(node, &u.text));
     if matches!(
         crate::syntax_util::kind(node),
-        "number" | "string" | "boolean"
+        kind::NUMBER | kind::STRING | kind::BOOLEAN
     ) && v.error.is_none()
         && v.value.eq_ignore_ascii_case(text)
     {
@@ -503,10 +506,10 @@ fn expected_type_at<'t>(
     let (parent, node) = (*parent, *node);
     let outer = &path[..path.len() - 1];
     match (crate::syntax_util::kind(parent), (*field)?) {
-        ("parenthesized_expression", _) | ("unary_expression", _) => {
+        (kind::PARENTHESIZED_EXPRESSION, _) | (kind::UNARY_EXPRESSION, _) => {
             expected_type_at(cx, outer, env, depth + 1)
         }
-        ("data_declaration", "value") => {
+        (kind::DATA_DECLARATION, field::VALUE) => {
             let name = field_of(parent, field::NAME)?;
             match env.lookup(text_of(name, cx.text)) {
                 Lookup::Constant { ty, .. } | Lookup::Variable { ty, .. } => Some(ty),
@@ -519,7 +522,7 @@ fn expected_type_at<'t>(
                 }
             }
         }
-        ("aggregate", "element") => {
+        (kind::AGGREGATE, field::ELEMENT) => {
             let outer_ty = expected_type_at(cx, outer, env, depth + 1)?;
             if !outer_ty.dims.is_empty() {
                 return Some(outer_ty.element());
@@ -529,15 +532,15 @@ fn expected_type_at<'t>(
                 .position(|e| e.id() == node.id())?;
             component_types(&outer_ty, env)?.into_iter().nth(i)
         }
-        ("assignment", "right") => {
+        (kind::ASSIGNMENT, field::RIGHT) => {
             let left = field_of(parent, field::LEFT)?;
             type_of(&crate::sema::typing::type_of(cx, left, None))
         }
-        ("return_statement", "value") => {
+        (kind::RETURN_STATEMENT, field::VALUE) => {
             let decl = cx.routine.as_ref()?.decl;
             Some(Type::named(&decl.returns.as_ref()?.name))
         }
-        ("argument", "value") => {
+        (kind::ARGUMENT, field::VALUE) => {
             let [.., (call, _), (list, _), _, _] = path else {
                 return None;
             };

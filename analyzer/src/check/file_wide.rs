@@ -37,7 +37,7 @@ fn check_file_wide_in(cx: &mut Cx<'_>, root: Node<'_>, regions: &[Range<usize>])
         let language = crate::syntax::language();
         (
             language.id_for_node_kind("placeholder", true),
-            language.id_for_node_kind("string", true),
+            language.id_for_node_kind(crate::syntax::kind::STRING, true),
         )
     });
     crate::syntax_util::walk_pruned(root, &mut |node| {
@@ -118,7 +118,7 @@ fn string_length(cx: &Cx<'_>, node: Node<'_>) -> usize {
     let mut cursor = node.walk();
     node.named_children(&mut cursor)
         .map(|c| match crate::syntax_util::kind(c) {
-            "escape_sequence" => 1,
+            crate::syntax::kind::ESCAPE_SEQUENCE => 1,
             _ => cx.node_text(c).chars().count(),
         })
         .sum()

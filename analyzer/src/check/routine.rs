@@ -67,7 +67,7 @@ pub(super) fn check_routine<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &'t Routi
     let mut local_names: Vec<(String, Range<usize>)> = Vec::new();
     let mut decl_nodes = Vec::new();
     for item in body {
-        if crate::syntax_util::kind(item) == "data_declaration" {
+        if crate::syntax_util::kind(item) == crate::syntax::kind::DATA_DECLARATION {
             decl_nodes.push(item);
             if seen_statement {
                 cx.report(

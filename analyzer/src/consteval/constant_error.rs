@@ -162,7 +162,7 @@ pub(super) fn may_hold_operation(text: &str) -> bool {
 pub(super) fn is_statement_like(kind: &str) -> bool {
     crate::syntax_util::is_simple_statement(kind)
         || crate::syntax_util::is_compound_statement(kind)
-        || matches!(kind, "label" | "data_declaration")
+        || matches!(kind, kind::LABEL | kind::DATA_DECLARATION)
 }
 
 /// The children of a node with their field names, read with `cursor` (one
@@ -252,7 +252,7 @@ pub(super) fn has_operation<'t>(cursor: &mut TreeCursor<'t>, node: Node<'t>) -> 
         let n = cursor.node();
         if matches!(
             crate::syntax_util::kind(n),
-            "binary_expression" | "function_call" | "index_expression"
+            kind::BINARY_EXPRESSION | kind::FUNCTION_CALL | kind::INDEX_EXPRESSION
         ) || (crate::syntax_util::kind(n) == kind::UNARY_EXPRESSION && !is_signed_number(n))
         {
             return true;
@@ -325,23 +325,23 @@ pub(super) fn shape<'t>(
         return NOT;
     }
     let (mut constant, operation) = match crate::syntax_util::kind(node) {
-        "number" | "string" | "boolean" => {
+        kind::NUMBER | kind::STRING | kind::BOOLEAN => {
             return Shape {
                 constant: true,
                 operation: false,
             };
         }
-        "identifier" => {
+        kind::IDENTIFIER => {
             return Shape {
                 constant: is_constant_name(cx, cx.node_text(node)),
                 operation: false,
             };
         }
-        "parenthesized_expression" | "component_access" | "aggregate" => (true, false),
+        kind::PARENTHESIZED_EXPRESSION | kind::COMPONENT_ACCESS | kind::AGGREGATE => (true, false),
         // `-1` is a number, not a computation that could fail.
-        "unary_expression" => (true, !is_signed_number(node)),
-        "binary_expression" | "index_expression" => (true, true),
-        "function_call" => {
+        kind::UNARY_EXPRESSION => (true, !is_signed_number(node)),
+        kind::BINARY_EXPRESSION | kind::INDEX_EXPRESSION => (true, true),
+        kind::FUNCTION_CALL => {
             let pure = field(node, field::NAME).is_some_and(|n| {
                 let name = cx.node_text(n);
                 rapid_evaluator::is_function(name)

@@ -5,7 +5,7 @@ use std::ops::Range;
 
 use tree_sitter::Node;
 
-use crate::syntax::field;
+use crate::syntax::{field, kind};
 use crate::syntax_util::{field, kind as kind_of};
 
 /// A label of a routine: its name, the name's range, and the statement list
@@ -55,7 +55,7 @@ pub(crate) fn find(source: &str, routine: Node<'_>, named: Option<Vec<Node<'_>>>
                     ));
                 }
             } else if !kind.ends_with("expression")
-                && kind != "argument_list"
+                && kind != kind::ARGUMENT_LIST
                 && (child.has_error() || !cannot_hold_label(kind))
             {
                 stack.push((child, None));
@@ -89,6 +89,6 @@ fn cannot_hold_label(kind: &str) -> bool {
     crate::syntax_util::is_simple_statement(kind)
         || matches!(
             kind,
-            "comment" | "compact_if_statement" | "data_declaration"
+            kind::COMMENT | kind::COMPACT_IF_STATEMENT | kind::DATA_DECLARATION
         )
 }
