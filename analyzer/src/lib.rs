@@ -8,6 +8,7 @@ pub mod check;
 pub mod consteval;
 pub mod controller;
 pub mod diagnostic;
+pub mod edit;
 pub mod format;
 pub mod ide;
 pub mod items;

@@ -306,11 +306,11 @@ pub fn is_eio_cfg(path: &str) -> bool {
 }
 
 /// Parses a text into a unit, unless it is too large to analyse.
-pub fn make_unit(path: String, text: String, old: Option<&tree_sitter::Tree>) -> Unit {
+pub fn make_unit(path: String, text: String) -> Unit {
     if text.len() > MAX_ANALYSED_BYTES {
         Unit::from_tree(path, text, None)
     } else {
-        Unit::new(path, text, old)
+        Unit::new(path, text, None)
     }
 }
 
@@ -319,7 +319,7 @@ pub fn make_unit(path: String, text: String, old: Option<&tree_sitter::Tree>) ->
 /// memory of a workspace; a feature that needs the syntax of a closed file
 /// parses it again).
 pub fn closed_unit(path: String, text: String) -> Unit {
-    let mut unit = make_unit(path, text, None);
+    let mut unit = make_unit(path, text);
     unit.release_tree();
     unit
 }

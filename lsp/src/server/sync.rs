@@ -29,7 +29,7 @@ impl Backend {
         let others = self
             .mutate("opening", |s| {
                 let before = s.ws.unit(&path).map(|u| u.interface);
-                s.ws.set_unit(make_unit(path.clone(), doc.text, None));
+                s.ws.set_unit(make_unit(path.clone(), doc.text));
                 let unit = s.ws.unit(&path)?.clone();
                 let changed = before != Some(unit.interface);
                 s.docs.insert(

@@ -185,7 +185,7 @@ fn with_trees(task: &Task, open: &HashSet<String>) -> Task {
             if open.contains(&u.path) {
                 u.clone()
             } else {
-                Arc::new(make_unit(u.path.clone(), u.text.clone(), None))
+                Arc::new(make_unit(u.path.clone(), u.text.clone()))
             }
         })
         .collect();
