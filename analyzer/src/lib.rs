@@ -3,6 +3,7 @@
 //! ranges out; no IO, no protocol types, no async; never panics on any input.
 
 pub mod body;
+pub mod carry;
 pub mod catalogue;
 pub mod check;
 pub mod consteval;
