@@ -73,7 +73,7 @@ impl Unit {
         }
         Unit {
             interface: items.interface_hash(),
-            constants: constants_hash(&items, &text),
+            constants: crate::items::hash_of(&items.constants(&text)),
             path,
             text,
             tree: UnitTree::new(tree),
@@ -123,27 +123,6 @@ impl Unit {
             None => unreachable_tree(path, text),
         }
     }
-}
-
-/// Hashes the initial values of `CONST` data and the array sizes of all
-/// module data, as written.
-fn constants_hash(items: &FileItems, text: &str) -> u64 {
-    use std::hash::{Hash, Hasher};
-    let mut h = std::hash::DefaultHasher::new();
-    for m in &items.modules {
-        for d in &m.data {
-            if d.storage == crate::items::Storage::Const
-                && let Some(init) = &d.init
-            {
-                fold(&d.name).hash(&mut h);
-                text.get(init.clone()).hash(&mut h);
-            }
-            for dim in &d.dims {
-                text.get(dim.clone()).hash(&mut h);
-            }
-        }
-    }
-    h.finish()
 }
 
 fn unreachable_tree(path: String, _text: String) -> Unit {
