@@ -8,18 +8,19 @@
 //! routine re-checks only that file.
 
 mod alternatives;
+mod checks;
 mod home;
 #[cfg(test)]
 mod tests;
 
+pub use checks::{Check, CheckInputs, CheckResult, diagnostics_cached, diagnostics_of};
+
 use std::collections::{BTreeMap, HashMap, HashSet};
 use std::sync::Arc;
 
-use crate::check::StmtCache;
 use crate::controller::{
     ControllerInfo, ControllerOverride, is_controller_info_name, parse_controller_info,
 };
-use crate::diagnostic::Diagnostic;
 use crate::layout::{Grouping, locate};
 use crate::task::{
     Config, SharedMap, Signals, Task, Unit, controller_of, parse_config, shared_persistents,
@@ -46,7 +47,10 @@ pub struct Workspace {
     /// The shared persistents of each controller (backup), by the
     /// controller's key ([`controller_of`]), with their hash.
     controllers: HashMap<String, (Arc<SharedMap>, u64)>,
-    checked: HashMap<String, Checked>,
+    /// Each file's last check ([`checks`]).
+    checked: HashMap<String, checks::Checked>,
+    /// See [`Workspace::revision`].
+    revision: u64,
     /// Program files (`.pgf`): the pgf's path to the folded paths of the
     /// modules it lists.
     programs: BTreeMap<String, Vec<String>>,
@@ -67,14 +71,6 @@ pub struct Workspace {
     /// Configuration that applies to every task whatever its place says
     /// (a project's extra paths), in the order given.
     extra_configs: Vec<Config>,
-}
-
-struct Checked {
-    unit: Arc<Unit>,
-    interface: u64,
-    diagnostics: Arc<Vec<Diagnostic>>,
-    /// Statement results, for the next check of this file.
-    statements: StmtCache,
 }
 
 impl Workspace {
@@ -111,6 +107,7 @@ impl Workspace {
 
     /// Drops every cached task (their grouping or configuration changed).
     fn forget_all_tasks(&mut self) {
+        self.revision += 1;
         self.tasks.clear();
         self.views.clear();
         self.members.clear();
@@ -539,63 +536,6 @@ impl Workspace {
         }
         (signals, mecunits)
     }
-
-    /// The diagnostics of a file: syntax first, then the checks, in source
-    /// order. Reuses the last result while neither the file nor its task's
-    /// interface changed.
-    pub fn diagnostics(&mut self, path: &str) -> Arc<Vec<Diagnostic>> {
-        let Some(unit) = self.units.get(path).cloned() else {
-            return Arc::default();
-        };
-        let task = self.task_of(path);
-        if let Some(c) = self.checked.get(path)
-            && Arc::ptr_eq(&c.unit, &unit)
-            && c.interface == task.interface
-        {
-            return c.diagnostics.clone();
-        }
-        let cache = self
-            .checked
-            .remove(path)
-            .map(|c| c.statements)
-            .unwrap_or_default();
-        let (diagnostics, statements) = diagnostics_cached(&task, &unit, cache);
-        let diagnostics = Arc::new(diagnostics);
-        self.checked.insert(
-            path.to_owned(),
-            Checked {
-                unit,
-                interface: task.interface,
-                diagnostics: diagnostics.clone(),
-                statements,
-            },
-        );
-        diagnostics
-    }
-}
-
-/// The diagnostics of one unit of a task, computed afresh: syntax, then
-/// semantic, sorted by position.
-pub fn diagnostics_of(task: &Task, unit: &Arc<Unit>) -> Vec<Diagnostic> {
-    diagnostics_cached(task, unit, StmtCache::default()).0
-}
-
-/// [`diagnostics_of`], reusing the statement results of an earlier check of
-/// the same file; returns them for the next check.
-pub fn diagnostics_cached(
-    task: &Task,
-    unit: &Arc<Unit>,
-    cache: StmtCache,
-) -> (Vec<Diagnostic>, StmtCache) {
-    let mut out = unit.syntax.clone();
-    let mut next = StmtCache::default();
-    if let Some(idx) = task.units.iter().position(|u| Arc::ptr_eq(u, unit)) {
-        let (found, cache) = crate::check::check_unit_cached(task, idx, cache);
-        out.extend(found);
-        next = cache;
-    }
-    out.sort_by_key(|d| (d.range.start, d.range.end));
-    (out, next)
 }
 
 /// A hash of a task's configuration (signals with their types, mechanical

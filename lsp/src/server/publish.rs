@@ -68,13 +68,16 @@ impl Backend {
                 }
                 let uri = s.docs.get(&path)?.uri.clone();
                 let snap = s.snapshot(&uri)?;
-                // Taken, not shared: a check still running for an older
-                // text finds none and starts afresh.
-                let statements = s.statements.remove(&path).unwrap_or_default();
-                Some((snap, statements))
+                // A check of the file off the lock, with the statement
+                // results of its last check (unless a result is cached).
+                let check = snap
+                    .cached
+                    .is_none()
+                    .then(|| s.ws.check(&snap.path, snap.unit.clone(), snap.task.clone()));
+                Some((snap, check))
             })
             .flatten();
-        let Some((snap, statements)) = snap else {
+        let Some((snap, check)) = snap else {
             return;
         };
         // Two phases, as the text changed: at once, the new syntax
@@ -103,11 +106,14 @@ impl Backend {
                     .await;
             }
         }
-        let Ok((snap, raw, statements, converted)) = self
+        let Ok((snap, result, converted)) = self
             .blocking("computing diagnostics", move || {
-                let (raw, statements) = snap.diagnostics_reusing(statements);
-                let converted = convert_diagnostics(&snap, &raw);
-                (snap, raw, statements, converted)
+                let result = check.map(rapid_analyzer::workspace::Check::run);
+                let converted = match &result {
+                    Some(r) => convert_diagnostics(&snap, &r.diagnostics),
+                    None => convert_diagnostics(&snap, &snap.diagnostics()),
+                };
+                (snap, result, converted)
             })
             .await
         else {
@@ -116,9 +122,10 @@ impl Backend {
         let _order = self.shared.publish.lock().await;
         let send = self
             .mutate("publishing diagnostics", |s| {
-                s.cache_diagnostics(&snap, raw);
-                if s.docs.contains_key(&snap.path) {
-                    s.statements.insert(snap.path.clone(), statements);
+                if let Some(result) = result {
+                    // Statement results are kept for open documents only.
+                    let open = s.docs.contains_key(&snap.path);
+                    s.ws.finish(result, open);
                 }
                 current(s) && s.should_publish(&snap.path, snap.version, &converted, quick_sent)
             })

@@ -7,11 +7,10 @@ use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex, MutexGuard, PoisonError};
 
 use rapid_analyzer::carry::carry_over;
-use rapid_analyzer::check::StmtCache;
 use rapid_analyzer::diagnostic::Diagnostic;
 use rapid_analyzer::task::{Task, Unit};
 use rapid_analyzer::text::LineIndex;
-use rapid_analyzer::workspace::{Workspace, diagnostics_cached, diagnostics_of};
+use rapid_analyzer::workspace::{Workspace, diagnostics_of};
 use tower_lsp_server::ls_types::{Location, Position, Uri};
 
 use super::document::Document;
@@ -69,11 +68,6 @@ pub struct State {
     /// Every change to the settings or the I/O configuration bumps this, so
     /// cached diagnostics are recomputed.
     pub config_generation: u64,
-    pub diagnostics: HashMap<String, CachedDiagnostics>,
-    /// Per open document, the statement results of its last check, so the
-    /// next check after an edit re-checks only the statements it changed
-    /// (their keys cover the task's interface, configuration included).
-    pub statements: HashMap<String, StmtCache>,
     /// The diagnostics last published per open document, with the version
     /// they were for: an unchanged list for the same version is not sent
     /// again (another file's edit re-checks this one, mostly to the same
@@ -95,13 +89,6 @@ pub struct State {
     /// Folders indexed because a file outside every workspace folder was
     /// opened (the rest of its task).
     pub implicit_roots: Vec<PathBuf>,
-}
-
-pub struct CachedDiagnostics {
-    unit: Arc<Unit>,
-    interface: u64,
-    config_generation: u64,
-    pub diagnostics: Arc<Vec<Diagnostic>>,
 }
 
 /// The state, shared between the handlers.
@@ -135,9 +122,12 @@ pub struct Snapshot {
     pub settings: Arc<Settings>,
     /// URIs of open documents (which may not be `file:` URIs).
     pub uris: Arc<HashMap<String, Uri>>,
+    /// The workspace's last diagnostics of the file, when they are for this
+    /// text and task ([`Workspace::cached`]).
     pub cached: Option<Arc<Vec<Diagnostic>>>,
     /// The last diagnostics computed for an older text of the file, with
-    /// that unit: carried over while the new ones are computed.
+    /// that unit: carried over while the new ones are computed
+    /// ([`Workspace::previous`]).
     pub previous: Option<(Arc<Unit>, Arc<Vec<Diagnostic>>)>,
     pub config_generation: u64,
     /// Line indexes of the task's other files, built on demand.
@@ -211,19 +201,6 @@ impl Snapshot {
             None => Arc::new(diagnostics_of(&self.task, &self.unit)),
         }
     }
-
-    /// [`Snapshot::diagnostics`], reusing the statement results of an
-    /// earlier check of the file (`statements`); returns them for the next
-    /// check.
-    pub fn diagnostics_reusing(&self, statements: StmtCache) -> (Arc<Vec<Diagnostic>>, StmtCache) {
-        match &self.cached {
-            Some(d) => (d.clone(), statements),
-            None => {
-                let (d, next) = diagnostics_cached(&self.task, &self.unit, statements);
-                (Arc::new(d), next)
-            }
-        }
-    }
 }
 
 pub fn uri_of(uris: &HashMap<String, Uri>, path: &str) -> Option<Uri> {
@@ -292,16 +269,8 @@ impl State {
         };
         let task = self.ws.task_of(&path);
         let unit_idx = task.units.iter().position(|u| Arc::ptr_eq(u, &unit))?;
-        let cached = self.diagnostics.get(&path).and_then(|c| {
-            (Arc::ptr_eq(&c.unit, &unit)
-                && c.interface == task.interface
-                && c.config_generation == self.config_generation)
-                .then(|| c.diagnostics.clone())
-        });
-        let previous = self.diagnostics.get(&path).and_then(|c| {
-            (!Arc::ptr_eq(&c.unit, &unit) && c.config_generation == self.config_generation)
-                .then(|| (c.unit.clone(), c.diagnostics.clone()))
-        });
+        let cached = self.ws.cached(&path, &unit, &task);
+        let previous = self.ws.previous(&path, &unit);
         Some(Snapshot {
             uri: uri.clone(),
             path,
@@ -318,22 +287,6 @@ impl State {
             config_generation: self.config_generation,
             other_indexes: Mutex::default(),
         })
-    }
-
-    /// Remembers diagnostics computed on a snapshot.
-    pub fn cache_diagnostics(&mut self, snap: &Snapshot, diagnostics: Arc<Vec<Diagnostic>>) {
-        if self.config_generation != snap.config_generation {
-            return;
-        }
-        self.diagnostics.insert(
-            snap.path.clone(),
-            CachedDiagnostics {
-                unit: snap.unit.clone(),
-                interface: snap.task.interface,
-                config_generation: snap.config_generation,
-                diagnostics,
-            },
-        );
     }
 
     /// Whether `diagnostics` for `version` of `path` are to be published:
@@ -408,7 +361,6 @@ impl State {
             self.config_generation += 1;
         } else if !self.docs.contains_key(&name) {
             self.ws.remove_file(&name);
-            self.diagnostics.remove(&name);
         }
     }
 }

@@ -151,8 +151,7 @@ impl Backend {
             .mutate("closing", |s| {
                 let doc = s.docs.remove(&path)?;
                 s.semantic.remove(&path);
-                s.diagnostics.remove(&path);
-                s.statements.remove(&path);
+                s.ws.forget_check(&path);
                 s.published.remove(&path);
                 let before = doc.unit.interface;
                 // The file goes back to its state on disk.
