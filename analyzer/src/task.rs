@@ -310,6 +310,33 @@ pub struct Excluded {
 }
 
 impl Task {
+    /// This task with `units` in place of its own: the same files in the
+    /// same order (their items are what the name index points at), e.g.
+    /// with their trees parsed again for one check. Everything else (the
+    /// configuration, catalogue view, grouping, view, keys) is kept.
+    pub fn with_units(&self, units: Vec<Arc<Unit>>) -> Task {
+        Task {
+            key: self.key.clone(),
+            units,
+            globals: self.globals.clone(),
+            locals: self.locals.clone(),
+            signals: self.signals.clone(),
+            mecunits: self.mecunits.clone(),
+            task_ids: self.task_ids.clone(),
+            interface: self.interface,
+            constants: self.constants,
+            shared: self.shared.clone(),
+            catalogue: self.catalogue,
+            close_names: Default::default(),
+            grouping: self.grouping,
+            complete: self.complete,
+            loaded_elsewhere: self.loaded_elsewhere,
+            owner: self.owner,
+            excluded: self.excluded.clone(),
+            clashing: self.clashing.clone(),
+        }
+    }
+
     /// Sets [`Task::shared`] (with the hash [`shared_persistents`] gave):
     /// the task's interface hash then covers them, so cached results are
     /// dropped when another task's persistents change.
