@@ -388,9 +388,6 @@ impl Workspace {
     /// persistents its controller shares.
     fn make_task(&mut self, key: String, units: Vec<Arc<Unit>>, grouping: Grouping) -> Task {
         let (signals, mecunits) = self.config_for(&key);
-        // Results depend on the configuration too: the interface covers it,
-        // so cached file and statement results are dropped when it changes.
-        let config = config_hash(signals.as_ref(), &mecunits);
         let complete = grouping == Grouping::Backup && self.is_complete(&key);
         let loaded_elsewhere = grouping == Grouping::Folder
             && !units.is_empty()
@@ -404,18 +401,7 @@ impl Workspace {
             controller.robotware,
             controller.options,
         ));
-        task.mecunits = mecunits;
-        task.task_ids = self.task_ids_for(&key);
-        // Names resolve through them: the interface covers them too.
-        let mut ids: Vec<&String> = task.task_ids.iter().collect();
-        ids.sort();
-        task.interface ^= {
-            use std::hash::{Hash, Hasher};
-            let mut h = std::collections::hash_map::DefaultHasher::new();
-            ids.hash(&mut h);
-            h.finish()
-        };
-        task.interface ^= config;
+        task.set_controller_names(mecunits, self.task_ids_for(&key));
         if let Some(controller) = controller_of(&key).filter(|_| grouping == Grouping::Backup) {
             let (shared, hash) = match self.controllers.get(controller) {
                 Some(c) => c.clone(),
@@ -536,22 +522,6 @@ impl Workspace {
         }
         (signals, mecunits)
     }
-}
-
-/// A hash of a task's configuration (signals with their types, mechanical
-/// units), independent of the maps' order.
-fn config_hash(signals: Option<&Signals>, mecunits: &HashSet<String>) -> u64 {
-    use std::hash::{Hash, Hasher};
-    let mut h = std::hash::DefaultHasher::new();
-    if let Some(signals) = signals {
-        let mut list: Vec<_> = signals.iter().collect();
-        list.sort();
-        list.hash(&mut h);
-    }
-    let mut units: Vec<_> = mecunits.iter().collect();
-    units.sort();
-    units.hash(&mut h);
-    h.finish()
 }
 
 /// Is `path` below `folder` (a normalised prefix ending in `/`), with either
