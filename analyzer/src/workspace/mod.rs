@@ -158,7 +158,10 @@ impl Workspace {
     }
 
     /// Adds or replaces a file parsed by the caller (e.g. incrementally).
-    pub fn set_unit(&mut self, unit: Unit) {
+    /// Returns whether what the other files' checks read of it changed (its
+    /// interface or constants, or it is new): whether they are to be
+    /// checked again.
+    pub fn set_unit(&mut self, unit: Unit) -> bool {
         let loads_changed = self.note_loads(&unit.path, Some(&unit.text));
         let key = self.task_key(&unit.path);
         let unit = Arc::new(unit);
@@ -180,12 +183,14 @@ impl Workspace {
         let (interface, constants) = (unit.interface, unit.constants);
         let old = self.units.insert(unit.path.clone(), unit);
         // Array sizes are in `constants`, not in the interface.
-        if old.is_none_or(|o| o.interface != interface || o.constants != constants) {
+        let seen = old.is_none_or(|o| o.interface != interface || o.constants != constants);
+        if seen {
             self.forget_sibling_tasks(&key);
         }
         if loads_changed {
             self.refresh_adoption();
         }
+        seen
     }
 
     /// Makes `unit` a member of every task besides the modules their

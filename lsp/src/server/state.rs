@@ -324,7 +324,8 @@ impl State {
     }
 
     /// Reads a file from disk into the workspace (unless it is open: the
-    /// editor's text wins). Returns whether its interface changed.
+    /// editor's text wins). Returns whether what the other files' checks
+    /// read of it changed ([`Workspace::set_unit`]).
     pub fn load_from_disk(&mut self, path: &Path) -> Result<bool, Unreadable> {
         let name = path.to_string_lossy().into_owned();
         if is_eio_cfg(&name) {
@@ -337,14 +338,8 @@ impl State {
         if self.docs.contains_key(&name) {
             return Ok(false);
         }
-        let before = self.ws.unit(&name).map(|u| u.interface);
         match SourceFile::read(path) {
-            Ok(file) => {
-                let unit = closed_unit(name.clone(), file.text);
-                let changed = before != Some(unit.interface);
-                self.ws.set_unit(unit);
-                Ok(changed)
-            }
+            Ok(file) => Ok(self.ws.set_unit(closed_unit(name.clone(), file.text))),
             Err(why) => {
                 self.ws.remove_file(&name);
                 Err(why)
