@@ -67,14 +67,7 @@ impl Backend {
                     return None;
                 }
                 let uri = s.docs.get(&path)?.uri.clone();
-                let snap = s.snapshot(&uri)?;
-                // A check of the file off the lock, with the statement
-                // results of its last check (unless a result is cached).
-                let check = snap
-                    .cached
-                    .is_none()
-                    .then(|| s.ws.check(&snap.path, snap.unit.clone(), snap.task.clone()));
-                Some((snap, check))
+                s.checkout(&uri)
             })
             .flatten();
         let Some((snap, check)) = snap else {
@@ -123,9 +116,7 @@ impl Backend {
         let send = self
             .mutate("publishing diagnostics", |s| {
                 if let Some(result) = result {
-                    // Statement results are kept for open documents only.
-                    let open = s.docs.contains_key(&snap.path);
-                    s.ws.finish(result, open);
+                    s.finish_check(result);
                 }
                 current(s) && s.should_publish(&snap.path, snap.version, &converted, quick_sent)
             })

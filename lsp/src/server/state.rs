@@ -10,7 +10,7 @@ use rapid_analyzer::carry::carry_over;
 use rapid_analyzer::diagnostic::Diagnostic;
 use rapid_analyzer::task::{Task, Unit};
 use rapid_analyzer::text::LineIndex;
-use rapid_analyzer::workspace::{Workspace, diagnostics_of};
+use rapid_analyzer::workspace::{Check, CheckResult, Workspace, diagnostics_of};
 use tower_lsp_server::ls_types::{Location, Position, Uri};
 
 use super::document::Document;
@@ -287,6 +287,26 @@ impl State {
             config_generation: self.config_generation,
             other_indexes: Mutex::default(),
         })
+    }
+
+    /// A snapshot of a file, with a check of it to run off the lock unless
+    /// its diagnostics are cached ([`Workspace::check`]: the check takes
+    /// the statement results of the file's last check; give its result
+    /// back with [`State::finish_check`]).
+    pub fn checkout(&mut self, uri: &Uri) -> Option<(Snapshot, Option<Check>)> {
+        let snap = self.snapshot(uri)?;
+        let check = snap.cached.is_none().then(|| {
+            self.ws
+                .check(&snap.path, snap.unit.clone(), snap.task.clone())
+        });
+        Some((snap, check))
+    }
+
+    /// Keeps the result of a check as the file's last one (its statement
+    /// results only while the file is open: they serve the next edit).
+    pub fn finish_check(&mut self, result: CheckResult) {
+        let open = self.docs.contains_key(&result.path);
+        self.ws.finish(result, open);
     }
 
     /// Whether `diagnostics` for `version` of `path` are to be published:
