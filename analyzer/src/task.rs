@@ -169,7 +169,6 @@ pub type SharedMap = HashMap<String, Vec<SharedPers>>;
 /// controller's `RAPID/TASKn` folders; files of other tasks are ignored), by
 /// folded name, and a hash of them.
 pub fn shared_persistents<'u>(units: impl Iterator<Item = &'u Arc<Unit>>) -> (SharedMap, u64) {
-    use std::hash::{Hash, Hasher};
     let units: Vec<(String, &Arc<Unit>)> = units
         .map(|u| (task_key(&u.path), u))
         .filter(|(key, _)| controller_of(key).is_some())
@@ -211,16 +210,8 @@ pub fn shared_persistents<'u>(units: impl Iterator<Item = &'u Arc<Unit>>) -> (Sh
             }
         }
     }
-    let mut names: Vec<&String> = out.keys().collect();
-    names.sort();
-    let mut h = std::collections::hash_map::DefaultHasher::new();
-    for name in names {
-        let list = &out[name];
-        // `out` is built from a BTreeMap's order of units, so each list is
-        // in a stable order.
-        (name, list).hash(&mut h);
-    }
-    let hash = h.finish();
+    // By name (each list is in the stable order of the units).
+    let hash = hash_of(&out.iter().collect::<std::collections::BTreeMap<_, _>>());
     (out, hash)
 }
 
