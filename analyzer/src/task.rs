@@ -301,9 +301,11 @@ pub struct Task {
 struct InterfaceInputs {
     /// Each unit's [`Unit::interface`], in the task's order.
     units: Vec<u64>,
-    /// The configured signals with their types (`None`: no configuration
-    /// declares signals), sorted.
-    signals: Option<Vec<(String, &'static str)>>,
+    /// The derived hash of the configured signals with their types, sorted
+    /// (`None`: no configuration declares signals). Hashed once when the
+    /// task is built, not again by each setter below (a configuration may
+    /// declare thousands).
+    signals: Option<u64>,
     mecunits: Vec<String>,
     task_ids: Vec<String>,
     catalogue: Option<crate::catalogue::Selection>,
@@ -391,9 +393,7 @@ impl Task {
         }
         let inputs = InterfaceInputs {
             units: units.iter().map(|u| u.interface).collect(),
-            signals: signals
-                .as_ref()
-                .map(|s| sorted(s.iter().map(|(k, v)| (k.clone(), *v)))),
+            signals: signals.as_ref().map(|s| hash_of(&sorted(s.iter()))),
             ..InterfaceInputs::default()
         };
         let constants: Vec<u64> = units.iter().map(|u| u.constants).collect();
