@@ -66,7 +66,9 @@ pub struct State {
     /// Workspace folders.
     pub roots: Vec<PathBuf>,
     /// Every change to the settings or the I/O configuration bumps this, so
-    /// cached diagnostics are recomputed.
+    /// the reports of the files that are not open, converted with the
+    /// settings, are made again (the analyzer's own results are keyed by
+    /// what they read: [`Workspace::cached`]).
     pub config_generation: u64,
     /// The diagnostics last published per open document, with the version
     /// they were for: an unchanged list for the same version is not sent
