@@ -2,19 +2,23 @@
 //! routines with their signatures, records, aliases), without routine bodies.
 //!
 //! This is the per-module summary the design asks for: other modules see a
-//! module only through it, and [`FileItems::interface_hash`] ignores
+//! module only through it ([`FileItems::interface`]), which has no
 //! positions, so typing inside a routine body changes nothing that another
 //! module depends on.
 
-use std::hash::{Hash, Hasher};
 use std::ops::Range;
 
 use tree_sitter::{Node, Tree};
 
 use crate::catalogue::Mode;
-use crate::names::fold;
 use crate::syntax::{field, kind};
 use crate::syntax_util::{field, fields, has_token, is_placeholder, text_of};
+
+mod interface;
+pub use interface::{
+    AliasInterface, Constants, DataInterface, Interface, ModuleInterface, ParamInterface,
+    RecordInterface, RoutineInterface, hash_of,
+};
 
 /// The items of one file (a file may hold several modules).
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -174,46 +178,6 @@ impl FileItems {
             .filter_map(|n| lower_module(n, fields(n, field::BODY), text))
             .collect();
         FileItems { modules }
-    }
-
-    /// A hash of everything other modules can see, ignoring positions: equal
-    /// hashes mean other modules need not be checked again.
-    pub fn interface_hash(&self) -> u64 {
-        let mut h = std::hash::DefaultHasher::new();
-        for m in &self.modules {
-            fold(&m.name).hash(&mut h);
-            m.attributes.hash(&mut h);
-            for d in &m.data {
-                (fold(&d.name), d.scope, d.storage, d.dims.len()).hash(&mut h);
-                d.ty.as_ref().map(|t| fold(&t.name)).hash(&mut h);
-            }
-            for r in &m.routines {
-                (fold(&r.name), r.kind, r.local, r.alt_groups).hash(&mut h);
-                r.returns.as_ref().map(|t| fold(&t.name)).hash(&mut h);
-                for p in &r.params {
-                    (
-                        fold(&p.name),
-                        p.mode,
-                        p.optional,
-                        p.switch,
-                        p.dims,
-                        p.alt_group,
-                    )
-                        .hash(&mut h);
-                    p.ty.as_ref().map(|t| fold(&t.name)).hash(&mut h);
-                }
-            }
-            for r in &m.records {
-                (fold(&r.name), r.local).hash(&mut h);
-                for (name, ty, _) in &r.components {
-                    (fold(name), ty.as_ref().map(|t| fold(&t.name))).hash(&mut h);
-                }
-            }
-            for a in &m.aliases {
-                (fold(&a.name), a.local, a.of.as_ref().map(|t| fold(&t.name))).hash(&mut h);
-            }
-        }
-        h.finish()
     }
 }
 

@@ -3,11 +3,13 @@
 //! ranges out; no IO, no protocol types, no async; never panics on any input.
 
 pub mod body;
+pub mod carry;
 pub mod catalogue;
 pub mod check;
 pub mod consteval;
 pub mod controller;
 pub mod diagnostic;
+pub mod edit;
 pub mod format;
 pub mod ide;
 pub mod items;

@@ -5,14 +5,14 @@
 //! `.../RAPID/TASKn/{SYSMOD,PROGMOD}/...` is task `TASKn`; elsewhere the
 //! modules of one folder form one task. Tasks never see each other's names.
 
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 use std::ops::Range;
 use std::sync::Arc;
 
 use tree_sitter::Tree;
 
 use crate::diagnostic::Diagnostic;
-use crate::items::{DataDecl, FileItems, Module, RecordDecl, RoutineDecl, Scope, Storage};
+use crate::items::{DataDecl, FileItems, Module, RecordDecl, RoutineDecl, Scope, Storage, hash_of};
 use crate::layout::Grouping;
 use crate::names::{NameMap, fold};
 use crate::ty::{Types, UserType};
@@ -73,7 +73,7 @@ impl Unit {
         }
         Unit {
             interface: items.interface_hash(),
-            constants: constants_hash(&items, &text),
+            constants: hash_of(&items.constants(&text)),
             path,
             text,
             tree: UnitTree::new(tree),
@@ -125,27 +125,6 @@ impl Unit {
     }
 }
 
-/// Hashes the initial values of `CONST` data and the array sizes of all
-/// module data, as written.
-fn constants_hash(items: &FileItems, text: &str) -> u64 {
-    use std::hash::{Hash, Hasher};
-    let mut h = std::hash::DefaultHasher::new();
-    for m in &items.modules {
-        for d in &m.data {
-            if d.storage == crate::items::Storage::Const
-                && let Some(init) = &d.init
-            {
-                fold(&d.name).hash(&mut h);
-                text.get(init.clone()).hash(&mut h);
-            }
-            for dim in &d.dims {
-                text.get(dim.clone()).hash(&mut h);
-            }
-        }
-    }
-    h.finish()
-}
-
 fn unreachable_tree(path: String, _text: String) -> Unit {
     panic!("tree-sitter returned no tree for an empty text ({path})")
 }
@@ -190,7 +169,6 @@ pub type SharedMap = HashMap<String, Vec<SharedPers>>;
 /// controller's `RAPID/TASKn` folders; files of other tasks are ignored), by
 /// folded name, and a hash of them.
 pub fn shared_persistents<'u>(units: impl Iterator<Item = &'u Arc<Unit>>) -> (SharedMap, u64) {
-    use std::hash::{Hash, Hasher};
     let units: Vec<(String, &Arc<Unit>)> = units
         .map(|u| (task_key(&u.path), u))
         .filter(|(key, _)| controller_of(key).is_some())
@@ -232,16 +210,8 @@ pub fn shared_persistents<'u>(units: impl Iterator<Item = &'u Arc<Unit>>) -> (Sh
             }
         }
     }
-    let mut names: Vec<&String> = out.keys().collect();
-    names.sort();
-    let mut h = std::collections::hash_map::DefaultHasher::new();
-    for name in names {
-        let list = &out[name];
-        // `out` is built from a BTreeMap's order of units, so each list is
-        // in a stable order.
-        (name, list).hash(&mut h);
-    }
-    let hash = h.finish();
+    // By name (each list is in the stable order of the units).
+    let hash = hash_of(&out.iter().collect::<std::collections::BTreeMap<_, _>>());
     (out, hash)
 }
 
@@ -281,9 +251,11 @@ pub struct Task {
     /// (the task's name and `Id`: `T_ROB1Id`), folded: from `SYS.cfg`'s
     /// tasks and the backup's task folders named after their task.
     pub task_ids: std::collections::HashSet<String>,
-    /// Combined interface hash of every unit, for cache invalidation.
+    /// The hash of what the task's files and controller declare
+    /// ([`InterfaceInputs`]), for cache invalidation.
     pub interface: u64,
-    /// Combined [`Unit::constants`] of every unit.
+    inputs: InterfaceInputs,
+    /// The hash of every unit's [`Unit::constants`], in order.
     pub constants: u64,
     /// The system-global persistents (`PERS`, neither `TASK` nor `LOCAL`)
     /// that the tasks of the same controller declare (this one included),
@@ -322,6 +294,31 @@ pub struct Task {
     pub clashing: HashMap<usize, Vec<usize>>,
 }
 
+/// What [`Task::interface`] is the hash of: what each file declares for
+/// the others and what the controller declares (configuration, task ids,
+/// catalogue view, other tasks' shared persistents), without positions.
+#[derive(Clone, Debug, Default, Hash)]
+struct InterfaceInputs {
+    /// Each unit's [`Unit::interface`], in the task's order.
+    units: Vec<u64>,
+    /// The derived hash of the configured signals with their types, sorted
+    /// (`None`: no configuration declares signals). Hashed once when the
+    /// task is built, not again by each setter below (a configuration may
+    /// declare thousands).
+    signals: Option<u64>,
+    mecunits: Vec<String>,
+    task_ids: Vec<String>,
+    catalogue: Option<crate::catalogue::Selection>,
+    /// The hash [`shared_persistents`] gave.
+    shared: u64,
+}
+
+fn sorted<T: Ord>(items: impl Iterator<Item = T>) -> Vec<T> {
+    let mut out: Vec<T> = items.collect();
+    out.sort();
+    out
+}
+
 /// A module file that a view of a task leaves out.
 #[derive(Clone, Debug)]
 pub struct Excluded {
@@ -331,22 +328,57 @@ pub struct Excluded {
 }
 
 impl Task {
+    /// This task with `units` in place of its own: the same files in the
+    /// same order (their items are what the name index points at), e.g.
+    /// with their trees parsed again for one check. Everything else (the
+    /// configuration, catalogue view, grouping, view, keys) is kept.
+    pub fn with_units(&self, units: Vec<Arc<Unit>>) -> Task {
+        Task {
+            key: self.key.clone(),
+            units,
+            globals: self.globals.clone(),
+            locals: self.locals.clone(),
+            signals: self.signals.clone(),
+            mecunits: self.mecunits.clone(),
+            task_ids: self.task_ids.clone(),
+            interface: self.interface,
+            inputs: self.inputs.clone(),
+            constants: self.constants,
+            shared: self.shared.clone(),
+            catalogue: self.catalogue,
+            close_names: Default::default(),
+            grouping: self.grouping,
+            complete: self.complete,
+            loaded_elsewhere: self.loaded_elsewhere,
+            owner: self.owner,
+            excluded: self.excluded.clone(),
+            clashing: self.clashing.clone(),
+        }
+    }
+
     /// Sets [`Task::shared`] (with the hash [`shared_persistents`] gave):
     /// the task's interface hash then covers them, so cached results are
     /// dropped when another task's persistents change.
     pub fn set_shared(&mut self, shared: Arc<SharedMap>, hash: u64) {
-        self.interface ^= hash;
+        self.inputs.shared = hash;
         self.shared = shared;
+        self.interface = hash_of(&self.inputs);
+    }
+
+    /// Sets [`Task::mecunits`] and [`Task::task_ids`]: names resolve
+    /// through them, so the interface covers them.
+    pub fn set_controller_names(&mut self, mecunits: HashSet<String>, task_ids: HashSet<String>) {
+        self.inputs.mecunits = sorted(mecunits.iter().cloned());
+        self.inputs.task_ids = sorted(task_ids.iter().cloned());
+        self.mecunits = mecunits;
+        self.task_ids = task_ids;
+        self.interface = hash_of(&self.inputs);
     }
 
     pub fn new(key: String, units: Vec<Arc<Unit>>, signals: Option<Signals>) -> Task {
         let mut globals: NameMap<Vec<ItemRef>> = NameMap::default();
         let mut locals: NameMap<Vec<ItemRef>> = NameMap::default();
-        let mut interface: u64 = 0;
-        let mut constants: u64 = 0;
         for (u, unit) in units.iter().enumerate() {
-            interface = interface.rotate_left(7) ^ unit.interface;
-            constants = constants.rotate_left(7) ^ unit.constants;
             for (m, module) in unit.items.modules.iter().enumerate() {
                 for (name, local, item) in module_items(module) {
                     let r = ItemRef {
@@ -359,6 +391,12 @@ impl Task {
                 }
             }
         }
+        let inputs = InterfaceInputs {
+            units: units.iter().map(|u| u.interface).collect(),
+            signals: signals.as_ref().map(|s| hash_of(&sorted(s.iter()))),
+            ..InterfaceInputs::default()
+        };
+        let constants: Vec<u64> = units.iter().map(|u| u.constants).collect();
         Task {
             key,
             units,
@@ -366,8 +404,9 @@ impl Task {
             locals,
             signals,
             mecunits: Default::default(),
-            interface,
-            constants,
+            interface: hash_of(&inputs),
+            inputs,
+            constants: hash_of(&constants),
             shared: Arc::default(),
             catalogue: crate::catalogue::base(),
             close_names: Default::default(),
@@ -384,10 +423,8 @@ impl Task {
     /// Sets [`Task::catalogue`] to the view of `selection`: the interface
     /// hash covers it, so cached results are dropped when it changes.
     pub fn set_catalogue(&mut self, selection: &crate::catalogue::Selection) {
-        use std::hash::{Hash, Hasher};
-        let mut h = std::hash::DefaultHasher::new();
-        selection.hash(&mut h);
-        self.interface ^= h.finish().rotate_left(17);
+        self.inputs.catalogue = Some(selection.clone());
+        self.interface = hash_of(&self.inputs);
         self.catalogue = crate::catalogue::view(selection);
     }
 
@@ -704,61 +741,4 @@ fn option_value(entry: &str, option: &str) -> Option<String> {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn tasks_and_their_modules_come_from_sys_cfg() {
-        let cfg = "SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n\n  -Name \"T_ROB1\" -Type \"NORMAL\" \\\n   -MotionTask \n\n  -Name \"T_PLC\" -Type \"SEMISTATIC\"\n#\nCAB_TASK_MODULES:\n\n  -File \"HOME:/user.sys\" -ModName \"user\" -AllTask\n  -File \"RELEASE:/options/x.sys\" -ModName \"x\" \\\n   -Task \"T_ROB1\" -Hidden\n#\nCAB_EXEC_HOOKS:\n  -Routine \"r\" -Shelf \"POWER_ON\"\n";
-        let config = parse_config(cfg);
-        assert_eq!(config.tasks, ["T_ROB1", "T_PLC"]);
-        assert_eq!(
-            config.task_modules,
-            [
-                TaskModule {
-                    file: "HOME:/user.sys".into(),
-                    task: None
-                },
-                TaskModule {
-                    file: "RELEASE:/options/x.sys".into(),
-                    task: Some("T_ROB1".into())
-                },
-            ]
-        );
-        assert_eq!(config.task_modules[0].home_path(), Some("user.sys"));
-        assert_eq!(config.task_modules[1].home_path(), None);
-        assert_eq!(config.task_modules[1].file_name(), "x.sys");
-    }
-
-    #[test]
-    fn folder_names_in_any_script_are_grouped_without_a_panic() {
-        // Folder names whose fourth byte is inside a character.
-        for (path, key) in [
-            ("/home/josé/robot/Main.mod", "/home/josé/robot"),
-            ("/home/josé/RAPID/TASK1/Main.mod", "/home/josé/RAPID/TASK1"),
-            (
-                "/机器人程序/RAPID/TASK1/PROGMOD/A.mod",
-                "/机器人程序/RAPID/TASK1",
-            ),
-            ("/機械/RAPID/タスク1/A.mod", "/機械/RAPID/タスク1"),
-            ("/b/RAPID/TASKé/A.mod", "/b/RAPID/TASKé"),
-            ("/b/RAPID/tasK2/A.mod", "/b/RAPID/tasK2"),
-        ] {
-            assert_eq!(task_key(path), key, "{path}");
-        }
-        assert_eq!(controller_of("/机器人/RAPID/TASK1"), Some("/机器人/RAPID/"));
-        // Any folder under `RAPID/` is a task folder (`T_ROB1`, `TASKé`).
-        assert_eq!(controller_of("/b/RAPID/josé"), Some("/b/RAPID/"));
-        assert_eq!(controller_of("/b/RAPID/机器人程"), Some("/b/RAPID/"));
-        assert_eq!(controller_of("/b/josé"), None);
-    }
-
-    #[test]
-    fn signals_come_from_the_signal_section() {
-        let cfg = "EIO:CFG_1.0:6:1::\n#\nEIO_SIGNAL:\n\n  -Name \"diA\" -SignalType \"DI\"\\\n  -Device \"d1\"\n  -Name doB -SignalType \"DO\"\n#\nEIO_CROSS:\n  -Name \"notASignal\"\n";
-        let signals = parse_eio_signals(cfg);
-        assert_eq!(signals.get("dia"), Some(&"signaldi"));
-        assert_eq!(signals.get("dob"), Some(&"signaldo"));
-        assert!(!signals.contains_key("notasignal"));
-    }
-}
+mod tests;

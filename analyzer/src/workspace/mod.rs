@@ -8,20 +8,22 @@
 //! routine re-checks only that file.
 
 mod alternatives;
+mod checks;
 mod home;
 #[cfg(test)]
 mod tests;
 
+pub use checks::{
+    Check, CheckInputs, CheckResult, diagnostics_cached, diagnostics_of, diagnostics_selected,
+};
+
 use std::collections::{BTreeMap, HashMap, HashSet};
 use std::sync::Arc;
 
-use crate::check::StmtCache;
 use crate::controller::{
     ControllerInfo, ControllerOverride, is_controller_info_name, parse_controller_info,
 };
-use crate::diagnostic::Diagnostic;
 use crate::layout::{Grouping, locate};
-use crate::rules::Selection;
 use crate::task::{
     Config, SharedMap, Signals, Task, Unit, controller_of, parse_config, shared_persistents,
 };
@@ -47,7 +49,10 @@ pub struct Workspace {
     /// The shared persistents of each controller (backup), by the
     /// controller's key ([`controller_of`]), with their hash.
     controllers: HashMap<String, (Arc<SharedMap>, u64)>,
-    checked: HashMap<String, Checked>,
+    /// Each file's last check ([`checks`]).
+    checked: HashMap<String, checks::Checked>,
+    /// See [`Workspace::revision`].
+    revision: u64,
     /// Program files (`.pgf`): the pgf's path to the folded paths of the
     /// modules it lists.
     programs: BTreeMap<String, Vec<String>>,
@@ -68,14 +73,6 @@ pub struct Workspace {
     /// Configuration that applies to every task whatever its place says
     /// (a project's extra paths), in the order given.
     extra_configs: Vec<Config>,
-}
-
-struct Checked {
-    unit: Arc<Unit>,
-    interface: u64,
-    diagnostics: Arc<Vec<Diagnostic>>,
-    /// Statement results, for the next check of this file.
-    statements: StmtCache,
 }
 
 impl Workspace {
@@ -112,6 +109,7 @@ impl Workspace {
 
     /// Drops every cached task (their grouping or configuration changed).
     fn forget_all_tasks(&mut self) {
+        self.revision += 1;
         self.tasks.clear();
         self.views.clear();
         self.members.clear();
@@ -162,7 +160,10 @@ impl Workspace {
     }
 
     /// Adds or replaces a file parsed by the caller (e.g. incrementally).
-    pub fn set_unit(&mut self, unit: Unit) {
+    /// Returns whether what the other files' checks read of it changed (its
+    /// interface or constants, or it is new): whether they are to be
+    /// checked again.
+    pub fn set_unit(&mut self, unit: Unit) -> bool {
         let loads_changed = self.note_loads(&unit.path, Some(&unit.text));
         let key = self.task_key(&unit.path);
         let unit = Arc::new(unit);
@@ -184,12 +185,14 @@ impl Workspace {
         let (interface, constants) = (unit.interface, unit.constants);
         let old = self.units.insert(unit.path.clone(), unit);
         // Array sizes are in `constants`, not in the interface.
-        if old.is_none_or(|o| o.interface != interface || o.constants != constants) {
+        let seen = old.is_none_or(|o| o.interface != interface || o.constants != constants);
+        if seen {
             self.forget_sibling_tasks(&key);
         }
         if loads_changed {
             self.refresh_adoption();
         }
+        seen
     }
 
     /// Makes `unit` a member of every task besides the modules their
@@ -392,9 +395,6 @@ impl Workspace {
     /// persistents its controller shares.
     fn make_task(&mut self, key: String, units: Vec<Arc<Unit>>, grouping: Grouping) -> Task {
         let (signals, mecunits) = self.config_for(&key);
-        // Results depend on the configuration too: the interface covers it,
-        // so cached file and statement results are dropped when it changes.
-        let config = config_hash(signals.as_ref(), &mecunits);
         let complete = grouping == Grouping::Backup && self.is_complete(&key);
         let loaded_elsewhere = grouping == Grouping::Folder
             && !units.is_empty()
@@ -408,18 +408,7 @@ impl Workspace {
             controller.robotware,
             controller.options,
         ));
-        task.mecunits = mecunits;
-        task.task_ids = self.task_ids_for(&key);
-        // Names resolve through them: the interface covers them too.
-        let mut ids: Vec<&String> = task.task_ids.iter().collect();
-        ids.sort();
-        task.interface ^= {
-            use std::hash::{Hash, Hasher};
-            let mut h = std::collections::hash_map::DefaultHasher::new();
-            ids.hash(&mut h);
-            h.finish()
-        };
-        task.interface ^= config;
+        task.set_controller_names(mecunits, self.task_ids_for(&key));
         if let Some(controller) = controller_of(&key).filter(|_| grouping == Grouping::Backup) {
             let (shared, hash) = match self.controllers.get(controller) {
                 Some(c) => c.clone(),
@@ -540,90 +529,6 @@ impl Workspace {
         }
         (signals, mecunits)
     }
-
-    /// The diagnostics of a file: syntax first, then the checks, in source
-    /// order. Reuses the last result while neither the file nor its task's
-    /// interface changed.
-    pub fn diagnostics(&mut self, path: &str) -> Arc<Vec<Diagnostic>> {
-        let Some(unit) = self.units.get(path).cloned() else {
-            return Arc::default();
-        };
-        let task = self.task_of(path);
-        if let Some(c) = self.checked.get(path)
-            && Arc::ptr_eq(&c.unit, &unit)
-            && c.interface == task.interface
-        {
-            return c.diagnostics.clone();
-        }
-        let cache = self
-            .checked
-            .remove(path)
-            .map(|c| c.statements)
-            .unwrap_or_default();
-        let (diagnostics, statements) = diagnostics_cached(&task, &unit, cache);
-        let diagnostics = Arc::new(diagnostics);
-        self.checked.insert(
-            path.to_owned(),
-            Checked {
-                unit,
-                interface: task.interface,
-                diagnostics: diagnostics.clone(),
-                statements,
-            },
-        );
-        diagnostics
-    }
-}
-
-/// The diagnostics of one unit of a task, computed afresh: syntax, then
-/// semantic, sorted by position.
-pub fn diagnostics_of(task: &Task, unit: &Arc<Unit>) -> Vec<Diagnostic> {
-    diagnostics_selected(task, unit, StmtCache::default(), &Selection::all()).0
-}
-
-/// [`diagnostics_of`], reusing the statement results of an earlier check of
-/// the same file; returns them for the next check.
-pub fn diagnostics_cached(
-    task: &Task,
-    unit: &Arc<Unit>,
-    cache: StmtCache,
-) -> (Vec<Diagnostic>, StmtCache) {
-    diagnostics_selected(task, unit, cache, &Selection::all())
-}
-
-/// [`diagnostics_cached`] with only the rules `selection` has on checked
-/// (syntax diagnostics are always given).
-pub fn diagnostics_selected(
-    task: &Task,
-    unit: &Arc<Unit>,
-    cache: StmtCache,
-    selection: &Selection,
-) -> (Vec<Diagnostic>, StmtCache) {
-    let mut out = unit.syntax.clone();
-    let mut next = StmtCache::default();
-    if let Some(idx) = task.units.iter().position(|u| Arc::ptr_eq(u, unit)) {
-        let (found, cache) = crate::check::check_unit_cached(task, idx, cache, selection);
-        out.extend(found);
-        next = cache;
-    }
-    out.sort_by_key(|d| (d.range.start, d.range.end));
-    (out, next)
-}
-
-/// A hash of a task's configuration (signals with their types, mechanical
-/// units), independent of the maps' order.
-fn config_hash(signals: Option<&Signals>, mecunits: &HashSet<String>) -> u64 {
-    use std::hash::{Hash, Hasher};
-    let mut h = std::hash::DefaultHasher::new();
-    if let Some(signals) = signals {
-        let mut list: Vec<_> = signals.iter().collect();
-        list.sort();
-        list.hash(&mut h);
-    }
-    let mut units: Vec<_> = mecunits.iter().collect();
-    units.sort();
-    units.hash(&mut h);
-    h.finish()
 }
 
 /// Is `path` below `folder` (a normalised prefix ending in `/`), with either

@@ -197,3 +197,78 @@ fn extra_modules_and_configuration_join_every_task() {
     ws.clear_extras();
     assert!(!codes(&mut ws, "p/b/Main.mod").is_empty());
 }
+
+/// Another module's constant values are an input of a file's check (a
+/// division by a constant of zero), though not of the task's interface.
+#[test]
+fn results_are_checked_again_when_another_modules_constants_change() {
+    let mut ws = Workspace::new();
+    ws.set_file(
+        "p/A.mod",
+        "MODULE A\n  VAR num r;\n  PROC main()\n    r := 1 / parts;\n  ENDPROC\nENDMODULE\n".into(),
+    );
+    let constant = |n: u32| format!("MODULE B\n  CONST num parts := {n};\nENDMODULE\n");
+    ws.set_file("p/B.mod", constant(2));
+    assert!(ws.diagnostics("p/A.mod").is_empty());
+    ws.set_file("p/B.mod", constant(0));
+    let found = ws.diagnostics("p/A.mod");
+    assert_eq!(found.len(), 1, "{found:?}");
+    assert_eq!(found[0].rule.name, "constant-error");
+    ws.set_file("p/B.mod", constant(3));
+    assert!(ws.diagnostics("p/A.mod").is_empty());
+}
+
+/// A check handed out runs outside the workspace and is taken back: the
+/// result is cached for its text and task, its statement results serve
+/// the next check, and the last result of an older text is what carries
+/// over until a configuration change.
+#[test]
+fn checks_run_outside_the_workspace_and_are_taken_back() {
+    let text = |call: &str| {
+        format!("MODULE A\n  PROC main()\n    {call};\n    other;\n  ENDPROC\nENDMODULE\n")
+    };
+    let mut ws = Workspace::new();
+    ws.set_file("p/A.mod", text("one"));
+    let unit = ws.unit("p/A.mod").cloned().expect("the file");
+    let task = ws.task_of("p/A.mod");
+    assert!(ws.cached("p/A.mod", &unit, &task).is_none());
+    let check = ws.check("p/A.mod", unit.clone(), task.clone());
+    let result = check.run();
+    assert_eq!(*result.diagnostics, diagnostics_of(&task, &unit));
+    ws.finish(result, true);
+    let first = ws.cached("p/A.mod", &unit, &task).expect("cached");
+    assert_eq!(first.len(), 2, "{first:?}");
+    assert!(ws.previous("p/A.mod", &unit).is_none(), "the same text");
+    // An edit: the old result carries over; the next check reuses the
+    // statement it did not change, and takes the results (a second check
+    // handed out meanwhile gets none).
+    ws.set_file("p/A.mod", text("two"));
+    let edited = ws.unit("p/A.mod").cloned().expect("the file");
+    let task = ws.task_of("p/A.mod");
+    assert!(ws.cached("p/A.mod", &edited, &task).is_none());
+    let (old_unit, old) = ws.previous("p/A.mod", &edited).expect("previous");
+    assert!(Arc::ptr_eq(&old_unit, &unit) && Arc::ptr_eq(&old, &first));
+    let check = ws.check("p/A.mod", edited.clone(), task.clone());
+    let meanwhile = ws.check("p/A.mod", edited.clone(), task.clone()).run();
+    ws.finish(meanwhile, true);
+    assert_eq!(ws.checked["p/A.mod"].statements.reused(), 0, "taken");
+    let result = check.run();
+    assert_eq!(*result.diagnostics, diagnostics_of(&task, &edited));
+    ws.finish(result, true);
+    assert_eq!(ws.checked["p/A.mod"].statements.reused(), 1, "`other`");
+    assert!(ws.cached("p/A.mod", &edited, &task).is_some());
+    // A result kept without its statement results.
+    let result = ws.check("p/A.mod", edited.clone(), task.clone()).run();
+    ws.finish(result, false);
+    let next = ws.check("p/A.mod", edited.clone(), task.clone()).run();
+    ws.finish(next, true);
+    assert_eq!(ws.checked["p/A.mod"].statements.reused(), 0, "not kept");
+    // After a configuration change, an older text's result is not carried.
+    ws.set_file("p/A.mod", text("three"));
+    ws.set_config(
+        "p/EIO.cfg",
+        "EIO_SIGNAL:\n  -Name \"do1\" -SignalType \"DO\"\n",
+    );
+    let newest = ws.unit("p/A.mod").cloned().expect("the file");
+    assert!(ws.previous("p/A.mod", &newest).is_none());
+}

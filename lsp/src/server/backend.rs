@@ -97,6 +97,34 @@ impl Backend {
         self.blocking(what, move || f(&snap)).await.map(Some)
     }
 
+    /// Runs `f` on a snapshot of `uri`'s file and its diagnostics on the
+    /// blocking pool: the cached ones, or a check run there (reusing the
+    /// statement results of the file's last check) whose result the
+    /// workspace keeps.
+    pub(super) async fn on_checked<R: Send + 'static>(
+        &self,
+        uri: &Uri,
+        what: &'static str,
+        f: impl FnOnce(&Snapshot, &[rapid_analyzer::diagnostic::Diagnostic]) -> R + Send + 'static,
+    ) -> Result<Option<R>> {
+        let Some((snap, check)) = self.mutate(what, |s| s.checkout(uri)).flatten() else {
+            return Ok(None);
+        };
+        let (out, result) = self
+            .blocking(what, move || match check {
+                Some(check) => {
+                    let result = check.run();
+                    (f(&snap, &result.diagnostics), Some(result))
+                }
+                None => (f(&snap, &snap.diagnostics()), None),
+            })
+            .await?;
+        if let Some(result) = result {
+            self.mutate(what, |s| s.finish_check(result));
+        }
+        Ok(Some(out))
+    }
+
     /// Definition, declaration and type definition: the locations `find`
     /// gives for the position.
     pub(super) async fn goto(

@@ -1,18 +1,17 @@
 //! Open documents: text, version, line index and the parsed unit, with
 //! incremental edits.
 //!
-//! A batch of changes is applied in order: each range is converted with the
-//! line index of the text as it is at that point, spliced into the text and
-//! reported to the old tree with `Tree::edit`; after the batch, the text is
-//! parsed once, reusing the edited tree. A whole-document change replaces
-//! the text and parses from scratch.
+//! A batch of changes is applied in order: each range is converted to
+//! bytes with the line index of the text as it is at that point; the
+//! analyzer applies the edits and parses again, reusing the old tree
+//! (`Unit::edited`).
 
 use std::sync::Arc;
 
+use rapid_analyzer::edit::TextEdit;
 use rapid_analyzer::task::Unit;
 use rapid_analyzer::text::LineIndex;
 use tower_lsp_server::ls_types::{TextDocumentContentChangeEvent, Uri};
-use tree_sitter::{InputEdit, Point, Tree};
 
 use super::position::{LineMap, PosEncoding};
 
@@ -36,42 +35,38 @@ pub fn apply_changes(
     changes: &[TextDocumentContentChangeEvent],
     encoding: PosEncoding,
 ) -> Unit {
-    let mut text = unit.text.clone();
-    let mut tree: Option<Tree> = Some(unit.tree().clone());
-    // `None`: `index` still describes `text`.
-    let mut fresh: Option<Option<LineIndex>> = None;
-    for change in changes {
-        match change.range {
-            None => {
-                text.clone_from(&change.text);
-                tree = None;
-                fresh = Some(None);
-            }
-            Some(range) => {
-                let idx = match &mut fresh {
-                    None => index,
-                    Some(fresh) => &*fresh.get_or_insert_with(|| LineIndex::new(&text)),
-                };
-                let span = LineMap::new(&text, idx, encoding).offset_range(range);
-                let start_point = point_at(&text, span.start);
-                let old_end_point = point_at(&text, span.end);
-                text.replace_range(span.clone(), &change.text);
-                let new_end = span.start + change.text.len();
-                if let Some(tree) = tree.as_mut() {
-                    tree.edit(&InputEdit {
-                        start_byte: span.start,
-                        old_end_byte: span.end,
-                        new_end_byte: new_end,
-                        start_position: start_point,
-                        old_end_position: old_end_point,
-                        new_end_position: point_at(&text, new_end),
-                    });
-                }
-                fresh = Some(None);
-            }
+    unit.edited(&to_edits(&unit.text, index, changes, encoding))
+}
+
+/// `changes` as byte ranges, each in the text as the changes before it
+/// left it (a whole-document change replaces the whole text).
+fn to_edits(
+    text: &str,
+    index: &LineIndex,
+    changes: &[TextDocumentContentChangeEvent],
+    encoding: PosEncoding,
+) -> Vec<TextEdit> {
+    let mut edits = Vec::with_capacity(changes.len());
+    // The text after the edits so far and its index, once there are any.
+    let mut now: Option<(String, LineIndex)> = None;
+    for (i, change) in changes.iter().enumerate() {
+        let (text, index) = match &now {
+            None => (text, index),
+            Some((text, index)) => (text.as_str(), index),
+        };
+        let range = match change.range {
+            None => 0..text.len(),
+            Some(range) => LineMap::new(text, index, encoding).offset_range(range),
+        };
+        if i + 1 < changes.len() {
+            let mut next = text.to_owned();
+            next.replace_range(range.clone(), &change.text);
+            let index = LineIndex::new(&next);
+            now = Some((next, index));
         }
+        edits.push(TextEdit::new(range, change.text.clone()));
     }
-    Unit::new(unit.path.clone(), text, tree.as_ref())
+    edits
 }
 
 /// Applies `changes` to a plain text (an I/O configuration open in the
@@ -91,18 +86,6 @@ pub fn apply_text_changes(
             }
         }
     }
-}
-
-/// A byte offset as tree-sitter counts points: rows end at `\n` only,
-/// columns are bytes.
-fn point_at(text: &str, offset: usize) -> Point {
-    let before = &text.as_bytes()[..offset.min(text.len())];
-    let row = before.iter().filter(|&&b| b == b'\n').count();
-    let column = before
-        .iter()
-        .rposition(|&b| b == b'\n')
-        .map_or(before.len(), |nl| before.len() - nl - 1);
-    Point { row, column }
 }
 
 #[cfg(test)]
@@ -175,12 +158,5 @@ mod tests {
             &[full, change(0, 7, 0, 8, "Q")],
             "MODULE Q\nENDMODULE\n",
         );
-    }
-
-    #[test]
-    fn points_count_rows_at_line_feeds() {
-        assert_eq!(point_at("ab\r\ncd", 5), Point { row: 1, column: 1 });
-        assert_eq!(point_at("ab\rcd", 4), Point { row: 0, column: 4 });
-        assert_eq!(point_at("ab", 9), Point { row: 0, column: 2 });
     }
 }

@@ -58,8 +58,8 @@ impl LanguageServer for Backend {
     ) -> Result<DocumentDiagnosticReportResult> {
         let previous = params.previous_result_id;
         let computed = self
-            .on_snapshot(&params.text_document.uri, "diagnostics", |snap| {
-                convert_diagnostics(snap, &snap.diagnostics())
+            .on_checked(&params.text_document.uri, "diagnostics", |snap, raw| {
+                convert_diagnostics(snap, raw)
             })
             .await?;
         let items = computed.unwrap_or_default();

@@ -67,14 +67,10 @@ impl Backend {
                     return None;
                 }
                 let uri = s.docs.get(&path)?.uri.clone();
-                let snap = s.snapshot(&uri)?;
-                // Taken, not shared: a check still running for an older
-                // text finds none and starts afresh.
-                let statements = s.statements.remove(&path).unwrap_or_default();
-                Some((snap, statements))
+                s.checkout(&uri)
             })
             .flatten();
-        let Some((snap, statements)) = snap else {
+        let Some((snap, check)) = snap else {
             return;
         };
         // Two phases, as the text changed: at once, the new syntax
@@ -103,11 +99,14 @@ impl Backend {
                     .await;
             }
         }
-        let Ok((snap, raw, statements, converted)) = self
+        let Ok((snap, result, converted)) = self
             .blocking("computing diagnostics", move || {
-                let (raw, statements) = snap.diagnostics_reusing(statements);
-                let converted = convert_diagnostics(&snap, &raw);
-                (snap, raw, statements, converted)
+                let result = check.map(rapid_analyzer::workspace::Check::run);
+                let converted = match &result {
+                    Some(r) => convert_diagnostics(&snap, &r.diagnostics),
+                    None => convert_diagnostics(&snap, &snap.diagnostics()),
+                };
+                (snap, result, converted)
             })
             .await
         else {
@@ -116,9 +115,8 @@ impl Backend {
         let _order = self.shared.publish.lock().await;
         let send = self
             .mutate("publishing diagnostics", |s| {
-                s.cache_diagnostics(&snap, raw);
-                if s.docs.contains_key(&snap.path) {
-                    s.statements.insert(snap.path.clone(), statements);
+                if let Some(result) = result {
+                    s.finish_check(result);
                 }
                 current(s) && s.should_publish(&snap.path, snap.version, &converted, quick_sent)
             })

@@ -6,11 +6,11 @@ use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex, MutexGuard, PoisonError};
 
-use rapid_analyzer::check::StmtCache;
+use rapid_analyzer::carry::carry_over;
 use rapid_analyzer::diagnostic::Diagnostic;
 use rapid_analyzer::task::{Task, Unit};
 use rapid_analyzer::text::LineIndex;
-use rapid_analyzer::workspace::{Workspace, diagnostics_cached, diagnostics_of};
+use rapid_analyzer::workspace::{Check, CheckResult, Workspace, diagnostics_of};
 use tower_lsp_server::ls_types::{Location, Position, Uri};
 
 use super::document::Document;
@@ -66,13 +66,10 @@ pub struct State {
     /// Workspace folders.
     pub roots: Vec<PathBuf>,
     /// Every change to the settings or the I/O configuration bumps this, so
-    /// cached diagnostics are recomputed.
+    /// the reports of the files that are not open, converted with the
+    /// settings, are made again (the analyzer's own results are keyed by
+    /// what they read: [`Workspace::cached`]).
     pub config_generation: u64,
-    pub diagnostics: HashMap<String, CachedDiagnostics>,
-    /// Per open document, the statement results of its last check, so the
-    /// next check after an edit re-checks only the statements it changed
-    /// (their keys cover the task's interface, configuration included).
-    pub statements: HashMap<String, StmtCache>,
     /// The diagnostics last published per open document, with the version
     /// they were for: an unchanged list for the same version is not sent
     /// again (another file's edit re-checks this one, mostly to the same
@@ -94,13 +91,6 @@ pub struct State {
     /// Folders indexed because a file outside every workspace folder was
     /// opened (the rest of its task).
     pub implicit_roots: Vec<PathBuf>,
-}
-
-pub struct CachedDiagnostics {
-    unit: Arc<Unit>,
-    interface: u64,
-    config_generation: u64,
-    pub diagnostics: Arc<Vec<Diagnostic>>,
 }
 
 /// The state, shared between the handlers.
@@ -134,9 +124,12 @@ pub struct Snapshot {
     pub settings: Arc<Settings>,
     /// URIs of open documents (which may not be `file:` URIs).
     pub uris: Arc<HashMap<String, Uri>>,
+    /// The workspace's last diagnostics of the file, when they are for this
+    /// text and task ([`Workspace::cached`]).
     pub cached: Option<Arc<Vec<Diagnostic>>>,
     /// The last diagnostics computed for an older text of the file, with
-    /// that unit: carried over while the new ones are computed.
+    /// that unit: carried over while the new ones are computed
+    /// ([`Workspace::previous`]).
     pub previous: Option<(Arc<Unit>, Arc<Vec<Diagnostic>>)>,
     pub config_generation: u64,
     /// Line indexes of the task's other files, built on demand.
@@ -210,78 +203,6 @@ impl Snapshot {
             None => Arc::new(diagnostics_of(&self.task, &self.unit)),
         }
     }
-
-    /// [`Snapshot::diagnostics`], reusing the statement results of an
-    /// earlier check of the file (`statements`); returns them for the next
-    /// check.
-    pub fn diagnostics_reusing(&self, statements: StmtCache) -> (Arc<Vec<Diagnostic>>, StmtCache) {
-        match &self.cached {
-            Some(d) => (d.clone(), statements),
-            None => {
-                let (d, next) = diagnostics_cached(&self.task, &self.unit, statements);
-                (Arc::new(d), next)
-            }
-        }
-    }
-}
-
-/// The diagnostics of `unit` without checking it: its syntax diagnostics,
-/// and the other diagnostics of `old_unit` (an older text of the same file)
-/// moved past the edit between the two texts; those touching the edited
-/// span are dropped. A fix moves with its diagnostic when none of its
-/// edits touches the edited span, and is dropped otherwise (the next check
-/// builds it again).
-pub fn carry_over(old_unit: &Unit, old: &[Diagnostic], unit: &Unit) -> Vec<Diagnostic> {
-    let (old_text, new_text) = (old_unit.text.as_bytes(), unit.text.as_bytes());
-    let prefix = old_text
-        .iter()
-        .zip(new_text)
-        .take_while(|(a, b)| a == b)
-        .count();
-    let max_suffix = old_text.len().min(new_text.len()) - prefix;
-    let suffix = old_text
-        .iter()
-        .rev()
-        .zip(new_text.iter().rev())
-        .take(max_suffix)
-        .take_while(|(a, b)| a == b)
-        .count();
-    let old_end = old_text.len() - suffix;
-    let new_end = new_text.len() - suffix;
-    let moved = |r: &std::ops::Range<usize>| -> Option<std::ops::Range<usize>> {
-        if r.end <= prefix && r.end < old_end {
-            Some(r.clone())
-        } else if r.start >= old_end && r.start > prefix {
-            Some(r.start - old_end + new_end..r.end - old_end + new_end)
-        } else {
-            None
-        }
-    };
-    let mut out = unit.syntax.clone();
-    for d in old.iter().filter(|d| !old_unit.syntax.contains(d)) {
-        // Related locations in this file move too, or go.
-        let Some(range) = moved(&d.range) else {
-            continue;
-        };
-        let mut d = d.clone();
-        d.range = range;
-        d.related.retain_mut(|r| {
-            if r.file.is_some() {
-                return true;
-            }
-            match moved(&r.range) {
-                Some(m) => {
-                    r.range = m;
-                    true
-                }
-                None => false,
-            }
-        });
-        d.fix = d.fix.as_ref().and_then(|f| f.shifted(moved));
-        out.push(d);
-    }
-    out.sort_by_key(|d| (d.range.start, d.range.end));
-    out
 }
 
 pub fn uri_of(uris: &HashMap<String, Uri>, path: &str) -> Option<Uri> {
@@ -306,11 +227,11 @@ pub fn is_eio_cfg(path: &str) -> bool {
 }
 
 /// Parses a text into a unit, unless it is too large to analyse.
-pub fn make_unit(path: String, text: String, old: Option<&tree_sitter::Tree>) -> Unit {
+pub fn make_unit(path: String, text: String) -> Unit {
     if text.len() > MAX_ANALYSED_BYTES {
         Unit::from_tree(path, text, None)
     } else {
-        Unit::new(path, text, old)
+        Unit::new(path, text, None)
     }
 }
 
@@ -319,7 +240,7 @@ pub fn make_unit(path: String, text: String, old: Option<&tree_sitter::Tree>) ->
 /// memory of a workspace; a feature that needs the syntax of a closed file
 /// parses it again).
 pub fn closed_unit(path: String, text: String) -> Unit {
-    let mut unit = make_unit(path, text, None);
+    let mut unit = make_unit(path, text);
     unit.release_tree();
     unit
 }
@@ -350,16 +271,8 @@ impl State {
         };
         let task = self.ws.task_of(&path);
         let unit_idx = task.units.iter().position(|u| Arc::ptr_eq(u, &unit))?;
-        let cached = self.diagnostics.get(&path).and_then(|c| {
-            (Arc::ptr_eq(&c.unit, &unit)
-                && c.interface == task.interface
-                && c.config_generation == self.config_generation)
-                .then(|| c.diagnostics.clone())
-        });
-        let previous = self.diagnostics.get(&path).and_then(|c| {
-            (!Arc::ptr_eq(&c.unit, &unit) && c.config_generation == self.config_generation)
-                .then(|| (c.unit.clone(), c.diagnostics.clone()))
-        });
+        let cached = self.ws.cached(&path, &unit, &task);
+        let previous = self.ws.previous(&path, &unit);
         Some(Snapshot {
             uri: uri.clone(),
             path,
@@ -378,20 +291,24 @@ impl State {
         })
     }
 
-    /// Remembers diagnostics computed on a snapshot.
-    pub fn cache_diagnostics(&mut self, snap: &Snapshot, diagnostics: Arc<Vec<Diagnostic>>) {
-        if self.config_generation != snap.config_generation {
-            return;
-        }
-        self.diagnostics.insert(
-            snap.path.clone(),
-            CachedDiagnostics {
-                unit: snap.unit.clone(),
-                interface: snap.task.interface,
-                config_generation: snap.config_generation,
-                diagnostics,
-            },
-        );
+    /// A snapshot of a file, with a check of it to run off the lock unless
+    /// its diagnostics are cached ([`Workspace::check`]: the check takes
+    /// the statement results of the file's last check; give its result
+    /// back with [`State::finish_check`]).
+    pub fn checkout(&mut self, uri: &Uri) -> Option<(Snapshot, Option<Check>)> {
+        let snap = self.snapshot(uri)?;
+        let check = snap.cached.is_none().then(|| {
+            self.ws
+                .check(&snap.path, snap.unit.clone(), snap.task.clone())
+        });
+        Some((snap, check))
+    }
+
+    /// Keeps the result of a check as the file's last one (its statement
+    /// results only while the file is open: they serve the next edit).
+    pub fn finish_check(&mut self, result: CheckResult) {
+        let open = self.docs.contains_key(&result.path);
+        self.ws.finish(result, open);
     }
 
     /// Whether `diagnostics` for `version` of `path` are to be published:
@@ -429,7 +346,8 @@ impl State {
     }
 
     /// Reads a file from disk into the workspace (unless it is open: the
-    /// editor's text wins). Returns whether its interface changed.
+    /// editor's text wins). Returns whether what the other files' checks
+    /// read of it changed ([`Workspace::set_unit`]).
     pub fn load_from_disk(&mut self, path: &Path) -> Result<bool, Unreadable> {
         let name = path.to_string_lossy().into_owned();
         if is_eio_cfg(&name) {
@@ -442,14 +360,8 @@ impl State {
         if self.docs.contains_key(&name) {
             return Ok(false);
         }
-        let before = self.ws.unit(&name).map(|u| u.interface);
         match SourceFile::read(path) {
-            Ok(file) => {
-                let unit = closed_unit(name.clone(), file.text);
-                let changed = before != Some(unit.interface);
-                self.ws.set_unit(unit);
-                Ok(changed)
-            }
+            Ok(file) => Ok(self.ws.set_unit(closed_unit(name.clone(), file.text))),
             Err(why) => {
                 self.ws.remove_file(&name);
                 Err(why)
@@ -466,110 +378,10 @@ impl State {
             self.config_generation += 1;
         } else if !self.docs.contains_key(&name) {
             self.ws.remove_file(&name);
-            self.diagnostics.remove(&name);
         }
     }
 }
 
 pub fn mtime(path: &Path) -> Option<std::time::SystemTime> {
     std::fs::metadata(path).and_then(|m| m.modified()).ok()
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use rapid_analyzer::task::Task;
-    use rapid_analyzer::workspace::diagnostics_of;
-
-    fn diagnostics(text: &str) -> (Arc<Unit>, Vec<Diagnostic>) {
-        let unit = Arc::new(Unit::new("t/A.mod".into(), text.to_owned(), None));
-        let task = Task::new("t".into(), vec![unit.clone()], None);
-        let d = diagnostics_of(&task, &unit);
-        (unit, d)
-    }
-
-    fn summary(text: &str, d: &[Diagnostic]) -> Vec<(String, String)> {
-        d.iter()
-            .map(|d| (d.rule.code.to_owned(), text[d.range.clone()].to_owned()))
-            .collect()
-    }
-
-    #[test]
-    fn diagnostics_are_carried_past_an_edit() {
-        let before = "MODULE M\n  PROC p()\n    one;\n    two;\n    three;\n  ENDPROC\nENDMODULE\n";
-        let (old_unit, old) = diagnostics(before);
-        assert_eq!(summary(before, &old).len(), 3, "{old:?}");
-        // Edit `two` (its diagnostic goes), insert a line with a syntax
-        // error before `three` (which moves).
-        let after = "MODULE M\n  PROC p()\n    one;\n    twice;\n    x := ;\n    three;\n  ENDPROC\nENDMODULE\n";
-        let unit = Unit::new("t/A.mod".into(), after.to_owned(), None);
-        let carried = carry_over(&old_unit, &old, &unit);
-        let codes: Vec<(String, String)> = summary(after, &carried);
-        assert_eq!(codes[0], ("W101".to_owned(), "one".to_owned()));
-        assert!(codes.iter().any(|(c, _)| c.starts_with("E00")), "{codes:?}");
-        assert_eq!(codes.last(), Some(&("W101".to_owned(), "three".to_owned())));
-        assert!(!codes.iter().any(|(_, t)| t.contains("tw")), "{codes:?}");
-        // A check finds all of them again (and what the edit brought).
-        let fresh = summary(after, &diagnostics(after).1);
-        assert!(
-            codes.iter().all(|c| fresh.contains(c)),
-            "{codes:?} {fresh:?}"
-        );
-        assert_eq!(fresh.len(), codes.len() + 2, "`twice` and `x`: {fresh:?}");
-    }
-
-    /// (name at the diagnostic, its fix's edits applied to `text`).
-    fn fixed(text: &str, d: &[Diagnostic]) -> Vec<(String, Option<String>)> {
-        d.iter()
-            .map(|d| {
-                let fixed = d.fix.as_ref().map(|f| {
-                    let mut t = text.to_owned();
-                    let mut edits = f.edits.clone();
-                    edits.sort_by_key(|e| std::cmp::Reverse(e.range.start));
-                    for e in edits {
-                        t.replace_range(e.range, &e.replacement);
-                    }
-                    t
-                });
-                (text[d.range.clone()].to_owned(), fixed)
-            })
-            .collect()
-    }
-
-    #[test]
-    fn fixes_move_with_carried_diagnostics_or_go() {
-        let before = "MODULE M\n  PROC p()\n    VAR num spare; ! was\n    one := 1;\n  ENDPROC\n  PROC q()\n    VAR num later;\n    p;\n  ENDPROC\nENDMODULE\n";
-        // The comment after `spare` edited: its diagnostic stays, but its
-        // fix removed that line.
-        let after = before.replace("was", "is now");
-        let after = after.as_str();
-        let (old_unit, old) = diagnostics(before);
-        assert_eq!(old.iter().filter(|d| d.fix.is_some()).count(), 3, "{old:?}");
-        let unit = Unit::new("t/A.mod".into(), after.to_owned(), None);
-        let carried = fixed(after, &carry_over(&old_unit, &old, &unit));
-        let fresh = fixed(after, &diagnostics(after).1);
-        assert_eq!(carried.len(), 3, "{carried:?}");
-        assert_eq!(fresh.len(), 3, "{fresh:?}");
-        // `spare`'s fix touched the edit: gone, while a check makes it anew.
-        assert_eq!(carried[0].0, "spare");
-        assert_eq!(carried[0].1, None);
-        assert!(fresh[0].1.is_some(), "{fresh:?}");
-        // The others give what a check gives: `one`'s fix edits the top of
-        // the routine (before the edit, so it stays), `later`'s moves.
-        assert_eq!(carried[1..], fresh[1..]);
-        assert!(
-            carried[1]
-                .1
-                .as_deref()
-                .is_some_and(|t| t.contains("  PROC p()\n    VAR num one;\n    VAR num spare;")),
-            "{carried:?}"
-        );
-        assert!(
-            carried[2]
-                .1
-                .as_deref()
-                .is_some_and(|t| t.contains("  PROC q()\n    p;\n")),
-            "{carried:?}"
-        );
-    }
 }

@@ -28,10 +28,8 @@ impl Backend {
         }
         let others = self
             .mutate("opening", |s| {
-                let before = s.ws.unit(&path).map(|u| u.interface);
-                s.ws.set_unit(make_unit(path.clone(), doc.text, None));
+                let changed = s.ws.set_unit(make_unit(path.clone(), doc.text));
                 let unit = s.ws.unit(&path)?.clone();
-                let changed = before != Some(unit.interface);
                 s.docs.insert(
                     path.clone(),
                     Document {
@@ -85,10 +83,8 @@ impl Backend {
         let outcome = self.mutate("applying a change", |s| {
             let encoding = s.encoding;
             let doc = s.docs.get(&path)?;
-            let old_interface = doc.unit.interface;
             let unit = apply_changes(&doc.unit, &doc.index, &params.content_changes, encoding);
-            let changed = unit.interface != old_interface;
-            s.ws.set_unit(unit);
+            let changed = s.ws.set_unit(unit);
             let unit = s.ws.unit(&path)?.clone();
             let doc = s.docs.get_mut(&path)?;
             doc.index = Arc::new(LineIndex::new(&unit.text));
@@ -149,19 +145,14 @@ impl Backend {
         }
         let others = self
             .mutate("closing", |s| {
-                let doc = s.docs.remove(&path)?;
+                s.docs.remove(&path)?;
                 s.semantic.remove(&path);
-                s.diagnostics.remove(&path);
-                s.statements.remove(&path);
+                s.ws.forget_check(&path);
                 s.published.remove(&path);
-                let before = doc.unit.interface;
                 // The file goes back to its state on disk.
                 let p = PathBuf::from(&path);
                 let changed = if p.is_file() {
-                    match s.load_from_disk(&p) {
-                        Ok(_) => s.ws.unit(&path).map(|u| u.interface) != Some(before),
-                        Err(_) => true,
-                    }
+                    s.load_from_disk(&p).unwrap_or(true)
                 } else {
                     s.ws.remove_file(&path);
                     true

@@ -8,15 +8,15 @@
 //! [`super::state::closed_unit`]); checking it needs one. So the files of a
 //! task are checked on a copy of the task whose closed files are parsed
 //! afresh for the check and dropped after it: the workspace keeps its
-//! memory. A file's report is kept until its text, its task's interface or
-//! the settings change.
+//! memory. A file's report is kept until its text, what its check reads of
+//! its task ([`CheckInputs`]) or the settings change.
 
 use std::collections::{HashMap, HashSet};
 use std::sync::Arc;
 use std::time::Duration;
 
 use rapid_analyzer::task::{Task, Unit};
-use rapid_analyzer::workspace::diagnostics_of;
+use rapid_analyzer::workspace::{CheckInputs, diagnostics_of};
 use tower_lsp_server::ls_types::{
     Diagnostic, FullDocumentDiagnosticReport, PreviousResultId, UnchangedDocumentDiagnosticReport,
     Uri, WorkspaceDiagnosticParams, WorkspaceDiagnosticReport, WorkspaceDiagnosticReportResult,
@@ -26,13 +26,17 @@ use tower_lsp_server::ls_types::{
 
 use super::backend::Backend;
 use super::publish::convert_diagnostics;
+#[cfg(test)]
+use super::state::closed_unit;
 use super::state::{Shared, Snapshot, State, make_unit, uri_of};
 
 /// The last report of a file that is not open.
 pub struct ClosedReport {
     pub uri: Uri,
     unit: Arc<Unit>,
-    interface: u64,
+    /// What the check read of the task ([`CheckInputs`]).
+    inputs: CheckInputs,
+    /// The settings the report was converted with.
     config_generation: u64,
     pub items: Arc<Vec<Diagnostic>>,
     pub result_id: String,
@@ -93,7 +97,7 @@ impl State {
             let task = self.ws.task_of(path);
             let valid = self.closed.get(path).is_some_and(|r| {
                 Arc::ptr_eq(&r.unit, &unit)
-                    && r.interface == task.interface
+                    && r.inputs == CheckInputs::of(&task)
                     && r.config_generation == self.config_generation
             });
             if !valid && let Some(snap) = self.snapshot(&uri) {
@@ -111,7 +115,7 @@ impl State {
                 .ws
                 .unit(&snap.path)
                 .is_some_and(|u| Arc::ptr_eq(u, &snap.unit))
-                && self.ws.task_of(&snap.path).interface == snap.task.interface;
+                && CheckInputs::of(&self.ws.task_of(&snap.path)) == CheckInputs::of(&snap.task);
             if !current
                 || self.docs.contains_key(&snap.path)
                 || snap.config_generation != self.config_generation
@@ -124,7 +128,7 @@ impl State {
                 ClosedReport {
                     uri: snap.uri.clone(),
                     unit: snap.unit.clone(),
-                    interface: snap.task.interface,
+                    inputs: CheckInputs::of(&snap.task),
                     config_generation: snap.config_generation,
                     items: Arc::new(items),
                     result_id,
@@ -185,16 +189,11 @@ fn with_trees(task: &Task, open: &HashSet<String>) -> Task {
             if open.contains(&u.path) {
                 u.clone()
             } else {
-                Arc::new(make_unit(u.path.clone(), u.text.clone(), None))
+                Arc::new(make_unit(u.path.clone(), u.text.clone()))
             }
         })
         .collect();
-    let mut copy = Task::new(task.key.clone(), units, task.signals.clone());
-    copy.mecunits = task.mecunits.clone();
-    copy.interface = task.interface;
-    copy.constants = task.constants;
-    copy.shared = task.shared.clone();
-    copy
+    task.with_units(units)
 }
 
 impl Backend {
@@ -372,4 +371,39 @@ fn full(uri: Uri, result_id: String, items: Vec<Diagnostic>) -> WorkspaceDocumen
             items,
         },
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rapid_analyzer::workspace::Workspace;
+
+    /// A file that is not open is checked on a copy of its task with its
+    /// tree parsed again: the same diagnostics as in the task itself (a
+    /// complete backup task, whose unresolved names are errors, and its
+    /// task ids).
+    #[test]
+    fn closed_files_are_checked_as_in_their_task() {
+        let mut ws = Workspace::new();
+        let path = "b/RAPID/TASK1/PROGMOD/M.mod";
+        ws.set_unit(closed_unit(
+            path.into(),
+            "MODULE M\n  VAR taskid t;\n  PROC main()\n    t := T_PAINTId;\n    missing;\n  ENDPROC\nENDMODULE\n"
+                .into(),
+        ));
+        ws.set_config(
+            "b/SYSPAR/SYS.cfg",
+            "SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n\n  -Name \"T_PAINT\" -Type \"NORMAL\"\n",
+        );
+        let task = ws.task_of(path);
+        let unit = ws.unit(path).cloned().expect("the file");
+        let copy = with_trees(&task, &HashSet::new());
+        let in_copy = diagnostics_of(&copy, &copy.units[0]);
+        assert_eq!(in_copy, diagnostics_of(&task, &unit));
+        assert_eq!(in_copy.len(), 1, "{in_copy:?}");
+        assert_eq!(
+            in_copy[0].severity,
+            rapid_analyzer::diagnostic::Severity::Error
+        );
+    }
 }

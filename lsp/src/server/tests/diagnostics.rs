@@ -3,7 +3,7 @@
 
 use serde_json::{Value, json};
 
-use super::{TestClient, codes, temp_dir};
+use super::{TestClient, codes, temp_dir, until_codes};
 
 const MAIN: &str =
     "MODULE Main\n  PROC main()\n    VAR num unused;\n    helper;\n  ENDPROC\nENDMODULE\n";
@@ -154,6 +154,32 @@ async fn an_interface_change_republishes_the_other_open_files_of_the_task() {
     );
     let params = client.diagnostics_for(&main).await;
     assert_eq!(codes(&params), ["W201", "W101"], "{params}");
+    assert_eq!(params["version"], 1);
+    client.shutdown().await;
+}
+
+/// A constant's value is not part of the interface, but other files'
+/// checks read it: changing it republishes them too.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_constant_change_republishes_the_other_open_files_of_the_task() {
+    let dir = temp_dir("diag-constant");
+    let mut client = TestClient::new(dir.to_path_buf(), no_delay()).await;
+    let main = client.open(
+        &dir.join("Main.mod"),
+        "MODULE Main\n  PROC main()\n    TPWrite \"\" \\Num:=1 / parts;\n  ENDPROC\nENDMODULE\n",
+    );
+    let lib = client.open(
+        &dir.join("Lib.mod"),
+        "MODULE Lib\n  CONST num parts := 2;\nENDMODULE\n",
+    );
+    until_codes(&mut client, &main, &[]).await;
+    // `2` becomes `0` (unsaved): Main now divides by zero.
+    client.change(
+        &lib,
+        2,
+        json!([{"range": {"start": {"line": 1, "character": 21}, "end": {"line": 1, "character": 22}}, "text": "0"}]),
+    );
+    let params = until_codes(&mut client, &main, &["E413"]).await;
     assert_eq!(params["version"], 1);
     client.shutdown().await;
 }

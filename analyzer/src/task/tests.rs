@@ -1,0 +1,111 @@
+use super::*;
+
+#[test]
+fn tasks_and_their_modules_come_from_sys_cfg() {
+    let cfg = "SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n\n  -Name \"T_ROB1\" -Type \"NORMAL\" \\\n   -MotionTask \n\n  -Name \"T_PLC\" -Type \"SEMISTATIC\"\n#\nCAB_TASK_MODULES:\n\n  -File \"HOME:/user.sys\" -ModName \"user\" -AllTask\n  -File \"RELEASE:/options/x.sys\" -ModName \"x\" \\\n   -Task \"T_ROB1\" -Hidden\n#\nCAB_EXEC_HOOKS:\n  -Routine \"r\" -Shelf \"POWER_ON\"\n";
+    let config = parse_config(cfg);
+    assert_eq!(config.tasks, ["T_ROB1", "T_PLC"]);
+    assert_eq!(
+        config.task_modules,
+        [
+            TaskModule {
+                file: "HOME:/user.sys".into(),
+                task: None
+            },
+            TaskModule {
+                file: "RELEASE:/options/x.sys".into(),
+                task: Some("T_ROB1".into())
+            },
+        ]
+    );
+    assert_eq!(config.task_modules[0].home_path(), Some("user.sys"));
+    assert_eq!(config.task_modules[1].home_path(), None);
+    assert_eq!(config.task_modules[1].file_name(), "x.sys");
+}
+
+#[test]
+fn folder_names_in_any_script_are_grouped_without_a_panic() {
+    // Folder names whose fourth byte is inside a character.
+    for (path, key) in [
+        ("/home/josé/robot/Main.mod", "/home/josé/robot"),
+        ("/home/josé/RAPID/TASK1/Main.mod", "/home/josé/RAPID/TASK1"),
+        (
+            "/机器人程序/RAPID/TASK1/PROGMOD/A.mod",
+            "/机器人程序/RAPID/TASK1",
+        ),
+        ("/機械/RAPID/タスク1/A.mod", "/機械/RAPID/タスク1"),
+        ("/b/RAPID/TASKé/A.mod", "/b/RAPID/TASKé"),
+        ("/b/RAPID/tasK2/A.mod", "/b/RAPID/tasK2"),
+    ] {
+        assert_eq!(task_key(path), key, "{path}");
+    }
+    assert_eq!(controller_of("/机器人/RAPID/TASK1"), Some("/机器人/RAPID/"));
+    // Any folder under `RAPID/` is a task folder (`T_ROB1`, `TASKé`).
+    assert_eq!(controller_of("/b/RAPID/josé"), Some("/b/RAPID/"));
+    assert_eq!(controller_of("/b/RAPID/机器人程"), Some("/b/RAPID/"));
+    assert_eq!(controller_of("/b/josé"), None);
+}
+
+#[test]
+fn signals_come_from_the_signal_section() {
+    let cfg = "EIO:CFG_1.0:6:1::\n#\nEIO_SIGNAL:\n\n  -Name \"diA\" -SignalType \"DI\"\\\n  -Device \"d1\"\n  -Name doB -SignalType \"DO\"\n#\nEIO_CROSS:\n  -Name \"notASignal\"\n";
+    let signals = parse_eio_signals(cfg);
+    assert_eq!(signals.get("dia"), Some(&"signaldi"));
+    assert_eq!(signals.get("dob"), Some(&"signaldo"));
+    assert!(!signals.contains_key("notasignal"));
+}
+
+/// The interface is the hash of what the task's files and controller
+/// declare: each of them changes it, the order of a map does not.
+#[test]
+fn the_interface_covers_each_declared_input() {
+    let unit = |text: &str| Arc::new(Unit::new("p/A.mod".into(), text.into(), None));
+    let a = unit("MODULE A\n  VAR num n;\nENDMODULE\n");
+    let signals = |names: &[&str]| -> Signals {
+        names
+            .iter()
+            .map(|n| ((*n).to_owned(), "signaldo"))
+            .collect()
+    };
+    let base = || {
+        Task::new(
+            "p".into(),
+            vec![a.clone()],
+            Some(signals(&["do1", "do2", "do3"])),
+        )
+    };
+    let reference = base().interface;
+    // The same inputs, the signals inserted in another order.
+    let again = Task::new(
+        "p".into(),
+        vec![a.clone()],
+        Some(signals(&["do3", "do1", "do2"])),
+    );
+    assert_eq!(again.interface, reference);
+    let mut changed = vec![
+        Task::new(
+            "p".into(),
+            vec![unit("MODULE A\n  VAR num m;\nENDMODULE\n")],
+            None,
+        )
+        .interface,
+        Task::new("p".into(), vec![a.clone()], None).interface,
+        Task::new("p".into(), vec![a.clone()], Some(signals(&["do1", "do2"]))).interface,
+    ];
+    let mut t = base();
+    t.set_controller_names(["rob1".to_owned()].into(), HashSet::new());
+    changed.push(t.interface);
+    let mut t = base();
+    t.set_controller_names(HashSet::new(), ["t_rob1id".to_owned()].into());
+    changed.push(t.interface);
+    let mut t = base();
+    t.set_catalogue(&crate::catalogue::Selection::default());
+    changed.push(t.interface);
+    let mut t = base();
+    t.set_shared(Arc::default(), 1);
+    changed.push(t.interface);
+    for (i, h) in changed.iter().enumerate() {
+        assert_ne!(*h, reference, "change {i}");
+        assert!(!changed[..i].contains(h), "change {i}");
+    }
+}
