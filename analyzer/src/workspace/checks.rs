@@ -53,6 +53,8 @@ pub(super) struct Checked {
     /// The workspace's configuration revision when the check was handed
     /// out ([`Workspace::revision`]).
     revision: u64,
+    /// The rules checked.
+    selection: Selection,
     diagnostics: Arc<Vec<Diagnostic>>,
     /// Statement results, for the next check of this file.
     pub(super) statements: StmtCache,
@@ -64,6 +66,7 @@ pub struct Check {
     pub unit: Arc<Unit>,
     pub task: Arc<Task>,
     revision: u64,
+    selection: Selection,
     statements: StmtCache,
 }
 
@@ -75,9 +78,11 @@ pub struct CheckResult {
 }
 
 impl Check {
-    /// Checks the file: syntax, then the checks, in source order.
+    /// Checks the file: syntax, then the selected rules' checks, in source
+    /// order.
     pub fn run(self) -> CheckResult {
-        let (diagnostics, statements) = diagnostics_cached(&self.task, &self.unit, self.statements);
+        let (diagnostics, statements) =
+            diagnostics_selected(&self.task, &self.unit, self.statements, &self.selection);
         let diagnostics = Arc::new(diagnostics);
         CheckResult {
             path: self.path,
@@ -86,6 +91,7 @@ impl Check {
                 inputs: CheckInputs::of(&self.task),
                 unit: self.unit,
                 revision: self.revision,
+                selection: self.selection,
                 diagnostics,
                 statements,
             },
@@ -102,15 +108,18 @@ impl Workspace {
     }
 
     /// The last diagnostics of `path`, when they were computed for `unit`
-    /// in a task with `task`'s inputs.
+    /// in a task with `task`'s inputs, for the rules of `selection`.
     pub fn cached(
         &self,
         path: &str,
         unit: &Arc<Unit>,
         task: &Task,
+        selection: &Selection,
     ) -> Option<Arc<Vec<Diagnostic>>> {
         let c = self.checked.get(path)?;
-        (Arc::ptr_eq(&c.unit, unit) && c.inputs == CheckInputs::of(task))
+        (Arc::ptr_eq(&c.unit, unit)
+            && c.inputs == CheckInputs::of(task)
+            && c.selection == *selection)
             .then(|| c.diagnostics.clone())
     }
 
@@ -127,10 +136,17 @@ impl Workspace {
             .then(|| (c.unit.clone(), c.diagnostics.clone()))
     }
 
-    /// A check of `unit` as the file `path` in `task`, taking the statement
-    /// results of the file's last check (a check still running for an
-    /// older text finds none when it finishes, and the next starts afresh).
-    pub fn check(&mut self, path: &str, unit: Arc<Unit>, task: Arc<Task>) -> Check {
+    /// A check of `unit` as the file `path` in `task` for the rules of
+    /// `selection`, taking the statement results of the file's last check
+    /// (a check still running for an older text finds none when it
+    /// finishes, and the next starts afresh).
+    pub fn check(
+        &mut self,
+        path: &str,
+        unit: Arc<Unit>,
+        task: Arc<Task>,
+        selection: Selection,
+    ) -> Check {
         let statements = self
             .checked
             .get_mut(path)
@@ -141,6 +157,7 @@ impl Workspace {
             unit,
             task,
             revision: self.revision,
+            selection,
             statements,
         }
     }
@@ -168,10 +185,11 @@ impl Workspace {
             return Arc::default();
         };
         let task = self.task_of(path);
-        if let Some(d) = self.cached(path, &unit, &task) {
+        let all = Selection::all();
+        if let Some(d) = self.cached(path, &unit, &task, &all) {
             return d;
         }
-        let result = self.check(path, unit, task).run();
+        let result = self.check(path, unit, task, all).run();
         let diagnostics = result.diagnostics.clone();
         self.finish(result, true);
         diagnostics

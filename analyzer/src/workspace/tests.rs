@@ -227,16 +227,17 @@ fn checks_run_outside_the_workspace_and_are_taken_back() {
     let text = |call: &str| {
         format!("MODULE A\n  PROC main()\n    {call};\n    other;\n  ENDPROC\nENDMODULE\n")
     };
+    let all = crate::rules::Selection::all();
     let mut ws = Workspace::new();
     ws.set_file("p/A.mod", text("one"));
     let unit = ws.unit("p/A.mod").cloned().expect("the file");
     let task = ws.task_of("p/A.mod");
-    assert!(ws.cached("p/A.mod", &unit, &task).is_none());
-    let check = ws.check("p/A.mod", unit.clone(), task.clone());
+    assert!(ws.cached("p/A.mod", &unit, &task, &all).is_none());
+    let check = ws.check("p/A.mod", unit.clone(), task.clone(), all.clone());
     let result = check.run();
     assert_eq!(*result.diagnostics, diagnostics_of(&task, &unit));
     ws.finish(result, true);
-    let first = ws.cached("p/A.mod", &unit, &task).expect("cached");
+    let first = ws.cached("p/A.mod", &unit, &task, &all).expect("cached");
     assert_eq!(first.len(), 2, "{first:?}");
     assert!(ws.previous("p/A.mod", &unit).is_none(), "the same text");
     // An edit: the old result carries over; the next check reuses the
@@ -245,22 +246,28 @@ fn checks_run_outside_the_workspace_and_are_taken_back() {
     ws.set_file("p/A.mod", text("two"));
     let edited = ws.unit("p/A.mod").cloned().expect("the file");
     let task = ws.task_of("p/A.mod");
-    assert!(ws.cached("p/A.mod", &edited, &task).is_none());
+    assert!(ws.cached("p/A.mod", &edited, &task, &all).is_none());
     let (old_unit, old) = ws.previous("p/A.mod", &edited).expect("previous");
     assert!(Arc::ptr_eq(&old_unit, &unit) && Arc::ptr_eq(&old, &first));
-    let check = ws.check("p/A.mod", edited.clone(), task.clone());
-    let meanwhile = ws.check("p/A.mod", edited.clone(), task.clone()).run();
+    let check = ws.check("p/A.mod", edited.clone(), task.clone(), all.clone());
+    let meanwhile = ws
+        .check("p/A.mod", edited.clone(), task.clone(), all.clone())
+        .run();
     ws.finish(meanwhile, true);
     assert_eq!(ws.checked["p/A.mod"].statements.reused(), 0, "taken");
     let result = check.run();
     assert_eq!(*result.diagnostics, diagnostics_of(&task, &edited));
     ws.finish(result, true);
     assert_eq!(ws.checked["p/A.mod"].statements.reused(), 1, "`other`");
-    assert!(ws.cached("p/A.mod", &edited, &task).is_some());
+    assert!(ws.cached("p/A.mod", &edited, &task, &all).is_some());
     // A result kept without its statement results.
-    let result = ws.check("p/A.mod", edited.clone(), task.clone()).run();
+    let result = ws
+        .check("p/A.mod", edited.clone(), task.clone(), all.clone())
+        .run();
     ws.finish(result, false);
-    let next = ws.check("p/A.mod", edited.clone(), task.clone()).run();
+    let next = ws
+        .check("p/A.mod", edited.clone(), task.clone(), all.clone())
+        .run();
     ws.finish(next, true);
     assert_eq!(ws.checked["p/A.mod"].statements.reused(), 0, "not kept");
     // After a configuration change, an older text's result is not carried.
@@ -271,4 +278,11 @@ fn checks_run_outside_the_workspace_and_are_taken_back() {
     );
     let newest = ws.unit("p/A.mod").cloned().expect("the file");
     assert!(ws.previous("p/A.mod", &newest).is_none());
+    // Another selection of rules is another result.
+    let w101 = crate::rules::Selection::of(|r| r.code == "W101");
+    assert!(ws.cached("p/A.mod", &edited, &task, &w101).is_none());
+    let only = ws
+        .check("p/A.mod", edited.clone(), task.clone(), w101)
+        .run();
+    assert!(only.diagnostics.iter().all(|d| d.rule.code == "W101"));
 }

@@ -7,10 +7,12 @@ use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex, MutexGuard, PoisonError};
 
 use rapid_analyzer::carry::carry_over;
+use rapid_analyzer::check::StmtCache;
 use rapid_analyzer::diagnostic::Diagnostic;
+use rapid_analyzer::rules::Selection;
 use rapid_analyzer::task::{Task, Unit};
 use rapid_analyzer::text::LineIndex;
-use rapid_analyzer::workspace::{Check, CheckResult, Workspace, diagnostics_of};
+use rapid_analyzer::workspace::{Check, CheckResult, Workspace, diagnostics_selected};
 use tower_lsp_server::ls_types::{Location, Position, Uri};
 
 use super::document::Document;
@@ -131,6 +133,9 @@ pub struct Snapshot {
     /// that unit: carried over while the new ones are computed
     /// ([`Workspace::previous`]).
     pub previous: Option<(Arc<Unit>, Arc<Vec<Diagnostic>>)>,
+    /// The rules the analyzer checks in this file (the lint settings'
+    /// selection; severities and suppressions are applied after).
+    pub selection: Selection,
     pub config_generation: u64,
     /// Line indexes of the task's other files, built on demand.
     pub other_indexes: Mutex<HashMap<String, Arc<LineIndex>>>,
@@ -200,7 +205,15 @@ impl Snapshot {
     pub fn diagnostics(&self) -> Arc<Vec<Diagnostic>> {
         match &self.cached {
             Some(d) => d.clone(),
-            None => Arc::new(diagnostics_of(&self.task, &self.unit)),
+            None => Arc::new(
+                diagnostics_selected(
+                    &self.task,
+                    &self.unit,
+                    StmtCache::default(),
+                    &self.selection,
+                )
+                .0,
+            ),
         }
     }
 }
@@ -271,7 +284,8 @@ impl State {
         };
         let task = self.ws.task_of(&path);
         let unit_idx = task.units.iter().position(|u| Arc::ptr_eq(u, &unit))?;
-        let cached = self.ws.cached(&path, &unit, &task);
+        let selection = self.settings.lint.selection_for(Path::new(&path));
+        let cached = self.ws.cached(&path, &unit, &task, &selection);
         let previous = self.ws.previous(&path, &unit);
         Some(Snapshot {
             uri: uri.clone(),
@@ -286,6 +300,7 @@ impl State {
             uris: Arc::new(self.open_uris()),
             cached,
             previous,
+            selection,
             config_generation: self.config_generation,
             other_indexes: Mutex::default(),
         })
@@ -298,8 +313,12 @@ impl State {
     pub fn checkout(&mut self, uri: &Uri) -> Option<(Snapshot, Option<Check>)> {
         let snap = self.snapshot(uri)?;
         let check = snap.cached.is_none().then(|| {
-            self.ws
-                .check(&snap.path, snap.unit.clone(), snap.task.clone())
+            self.ws.check(
+                &snap.path,
+                snap.unit.clone(),
+                snap.task.clone(),
+                snap.selection.clone(),
+            )
         });
         Some((snap, check))
     }

@@ -15,8 +15,9 @@ use std::collections::{HashMap, HashSet};
 use std::sync::Arc;
 use std::time::Duration;
 
+use rapid_analyzer::check::StmtCache;
 use rapid_analyzer::task::{Task, Unit};
-use rapid_analyzer::workspace::{CheckInputs, diagnostics_of};
+use rapid_analyzer::workspace::{CheckInputs, diagnostics_selected};
 use tower_lsp_server::ls_types::{
     Diagnostic, FullDocumentDiagnosticReport, PreviousResultId, UnchangedDocumentDiagnosticReport,
     Uri, WorkspaceDiagnosticParams, WorkspaceDiagnosticReport, WorkspaceDiagnosticReportResult,
@@ -170,7 +171,15 @@ fn check_stale(
                 return (out, false);
             }
             let items = match checking.units.get(snap.unit_idx) {
-                Some(unit) => convert_diagnostics(&snap, &diagnostics_of(&checking, unit)),
+                Some(unit) => {
+                    let (found, _) = diagnostics_selected(
+                        &checking,
+                        unit,
+                        StmtCache::default(),
+                        &snap.selection,
+                    );
+                    convert_diagnostics(&snap, &found)
+                }
                 None => Vec::new(),
             };
             out.push((snap, items));
@@ -398,8 +407,11 @@ mod tests {
         let task = ws.task_of(path);
         let unit = ws.unit(path).cloned().expect("the file");
         let copy = with_trees(&task, &HashSet::new());
-        let in_copy = diagnostics_of(&copy, &copy.units[0]);
-        assert_eq!(in_copy, diagnostics_of(&task, &unit));
+        let in_copy = rapid_analyzer::workspace::diagnostics_of(&copy, &copy.units[0]);
+        assert_eq!(
+            in_copy,
+            rapid_analyzer::workspace::diagnostics_of(&task, &unit)
+        );
         assert_eq!(in_copy.len(), 1, "{in_copy:?}");
         assert_eq!(
             in_copy[0].severity,
