@@ -294,7 +294,25 @@ fn a_running_program_pauses_and_ends_on_disconnect() {
     let (name, line) = c.top_line();
     assert_eq!(name, "main");
     assert!(line == 4 || line == 5, "{line}");
+    // The program's sandbox folder (named by the adapter's process id) is
+    // gone by the answer to `disconnect`.
+    let sandboxes = |pid: u32| {
+        std::fs::read_dir(std::env::temp_dir())
+            .map(|d| {
+                d.filter_map(Result::ok)
+                    .filter(|e| {
+                        e.file_name()
+                            .to_string_lossy()
+                            .starts_with(&format!("rapid-run-{pid}-"))
+                    })
+                    .count()
+            })
+            .unwrap_or(0)
+    };
+    let pid = c.child.id();
+    assert_eq!(sandboxes(pid), 1, "the running program's sandbox");
     c.ok("disconnect", json!({}));
+    assert_eq!(sandboxes(pid), 0, "removed before the answer");
     let status = c.child.wait().expect("the adapter ends");
     assert!(status.success());
 }

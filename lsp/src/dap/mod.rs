@@ -182,7 +182,9 @@ impl Session {
                 self.writer.respond(req, json!({}));
             }
             "disconnect" => {
-                self.stop_program();
+                // The program ends and its sandbox is removed before the
+                // answer: a client may end the adapter as soon as it has it.
+                self.end();
                 self.writer.respond(req, json!({}));
                 return false;
             }
