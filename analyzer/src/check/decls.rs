@@ -18,21 +18,7 @@ use crate::syntax_util::{field, fields};
 use crate::task::{Item, ItemRef, module_items};
 use crate::ty::Ty;
 
-const MAX_NAME: usize = 32;
 pub(super) const MAX_DIMS: usize = 3;
-
-pub(super) fn check_name_length(cx: &mut Cx<'_>, name: &str, range: Range<usize>) {
-    if name.len() > MAX_NAME {
-        cx.report(
-            &rules::name_too_long::RULE,
-            range,
-            format!(
-                "`{name}` has {} characters; names have at most {MAX_NAME}",
-                name.len()
-            ),
-        );
-    }
-}
 
 pub(super) fn check_module<'t>(cx: &mut Cx<'t>, node: Node<'t>, module: &'t Module) {
     let data_nodes = BodyNodes::of(node);
@@ -76,7 +62,7 @@ pub(super) fn check_module_prelude<'t>(
 
 /// The module's name, duplicates and ambiguous globals.
 fn check_module_names(cx: &mut Cx<'_>, module: &Module) {
-    check_name_length(cx, &module.name, module.name_range.clone());
+    rules::name_too_long::check(cx, &module.name, module.name_range.clone());
     check_duplicates_in_module(cx, module);
     check_ambiguous_globals(cx, module);
     check_duplicate_module(cx, module);
@@ -127,16 +113,16 @@ fn check_module_data<'t>(cx: &mut Cx<'t>, module: &'t Module, data_nodes: &BodyN
 
 fn check_records_and_aliases(cx: &mut Cx<'_>, module: &Module) {
     for decl in &module.records {
-        check_name_length(cx, &decl.name, decl.name_range.clone());
+        rules::name_too_long::check(cx, &decl.name, decl.name_range.clone());
         for (name, ty, range) in &decl.components {
-            check_name_length(cx, name, range.clone());
+            rules::name_too_long::check(cx, name, range.clone());
             if let Some(t) = ty {
                 check_type_name(cx, &t.name, t.range.clone());
             }
         }
     }
     for decl in &module.aliases {
-        check_name_length(cx, &decl.name, decl.name_range.clone());
+        rules::name_too_long::check(cx, &decl.name, decl.name_range.clone());
         if let Some(t) = &decl.of {
             check_type_name(cx, &t.name, t.range.clone());
         }
@@ -282,7 +268,7 @@ fn same_persistent(cx: &Cx<'_>, a: ItemRef, b: ItemRef) -> bool {
 /// Checks a data declaration of a module or a routine.
 pub(super) fn check_data<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &DataDecl, in_routine: bool) {
     crate::consteval::check_constant_errors(cx, node);
-    check_name_length(cx, &decl.name, decl.name_range.clone());
+    rules::name_too_long::check(cx, &decl.name, decl.name_range.clone());
     if let Some(t) = &decl.ty {
         check_type_name(cx, &t.name, t.range.clone());
     }

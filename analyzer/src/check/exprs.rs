@@ -401,31 +401,11 @@ fn binary<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Ty {
             operand(cx, r, l, is_comparison),
         ),
     };
-    let num = |x: &Ty| cx.types.is_num_like(x);
     let result = typing::binary(&cx.types, op, &lt, &rt);
     match result {
         Ok(ty) => {
-            // Comparing with zero asks "is it exactly the same point,
-            // vector or value", which identical inputs answer exactly.
-            let zero = |n: Node<'_>| {
-                crate::syntax_util::kind(n) == kind::NUMBER
-                    && cx.node_text(n).parse::<f64>().is_ok_and(|v| v == 0.0)
-            };
-            if is_comparison
-                && num(&lt)
-                && num(&rt)
-                && (is_real(cx, l) || is_real(cx, r))
-                && !zero(l)
-                && !zero(r)
-            {
-                cx.report(
-                    &rules::float_equality::RULE,
-                    node.byte_range(),
-                    format!(
-                        "`{}` compares a computed real number exactly; compare the difference with a tolerance instead",
-                        cx.node_text(op_node)
-                    ),
-                );
+            if is_comparison {
+                rules::float_equality::check(cx, node, op_node, (l, &lt), (r, &rt));
             }
             ty
         }
@@ -471,30 +451,6 @@ fn operand<'t>(cx: &mut Cx<'t>, node: Node<'t>, other: Node<'t>, comparison: boo
         return Ty::named("signaldi");
     }
     expr(cx, node, None)
-}
-
-/// Is this expression a computed real number (for the float-equality
-/// lint): a division or a real-valued function somewhere in it? A literal
-/// such as `-112.5` is not computed: comparing a value with it is how real
-/// programs test a taught or configured value.
-fn is_real(cx: &Cx<'_>, node: Node<'_>) -> bool {
-    match crate::syntax_util::kind(node) {
-        kind::BINARY_EXPRESSION => {
-            field(node, field::OPERATOR).is_some_and(|o| crate::syntax_util::kind(o) == "/")
-                || field(node, field::LEFT).is_some_and(|l| is_real(cx, l))
-                || field(node, field::RIGHT).is_some_and(|r| is_real(cx, r))
-        }
-        kind::PARENTHESIZED_EXPRESSION | kind::UNARY_EXPRESSION => {
-            let inner = field(node, field::EXPRESSION).or_else(|| field(node, field::OPERAND));
-            inner.is_some_and(|i| is_real(cx, i))
-        }
-        // Functions whose results are computed real numbers (the
-        // catalogue's `real_valued`).
-        kind::FUNCTION_CALL => field(node, field::NAME)
-            .and_then(|n| cx.cat.function(cx.node_text(n)))
-            .is_some_and(|r| r.real_valued),
-        _ => false,
-    }
 }
 
 /// `a.b`: the component's type.

@@ -5,7 +5,7 @@ use std::ops::Range;
 
 use tree_sitter::Node;
 
-use super::decls::{MAX_DIMS, check_data, check_name_length, check_type_name, report_duplicates};
+use super::decls::{MAX_DIMS, check_data, check_type_name, report_duplicates};
 use super::{Cx, Used, exprs, stmts};
 use crate::diagnostic::Diagnostic;
 use crate::items::{self, RoutineDecl, RoutineKind};
@@ -18,11 +18,11 @@ use crate::ty::Ty;
 /// Checks a routine: its declarations, labels, statements, handlers and
 /// end, and the routine data and parameters it never uses.
 pub(super) fn check_routine<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &'t RoutineDecl) {
-    check_name_length(cx, &decl.name, decl.name_range.clone());
+    rules::name_too_long::check(cx, &decl.name, decl.name_range.clone());
     let mut params = NameMap::default();
     let mut names: Vec<(&str, Range<usize>)> = Vec::new();
     for p in &decl.params {
-        check_name_length(cx, &p.name, p.name_range.clone());
+        rules::name_too_long::check(cx, &p.name, p.name_range.clone());
         if let Some(t) = &p.ty
             && !p.switch
         {
@@ -77,7 +77,7 @@ pub(super) fn check_routine<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &'t Routi
                 );
             }
             if let Some(d) = items::lower_data(item, cx.text) {
-                check_shadowing(cx, &d.name, d.name_range.clone(), true);
+                rules::shadowed_name::check(cx, &d.name, d.name_range.clone(), true);
                 check_data(cx, item, &d, true);
                 local_names.push((d.name.clone(), d.name_range.clone()));
                 if let Some(r) = &mut cx.routine {
@@ -91,7 +91,7 @@ pub(super) fn check_routine<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &'t Routi
         }
     }
     for p in &decl.params {
-        check_shadowing(cx, &p.name, p.name_range.clone(), false);
+        rules::shadowed_name::check(cx, &p.name, p.name_range.clone(), false);
     }
     names.extend(local_names.iter().map(|(n, r)| (n.as_str(), r.clone())));
     report_duplicates(cx, names, "in this routine");
@@ -194,46 +194,6 @@ fn routine_children(node: Node<'_>) -> (RoutineChildren<'_>, Vec<Node<'_>>) {
         }
     }
     (out, named)
-}
-
-/// A routine's data or parameter that hides a module or task name, or (for
-/// routine data only) a built-in one. Parameters named like a built-in
-/// (`speed`, `tool`...) are common and harmless: the parameter is the
-/// routine's interface, and the built-in is rarely wanted inside.
-fn check_shadowing(cx: &mut Cx<'_>, name: &str, range: Range<usize>, builtins: bool) {
-    let visible = cx
-        .lookup_items(name)
-        .into_iter()
-        .find(|r| cx.task.data(*r).is_some() || cx.task.routine(*r).is_some());
-    let what = if let Some(r) = visible {
-        let module = cx
-            .task
-            .module(r)
-            .map(|m| m.name.clone())
-            .unwrap_or_default();
-        let local = cx
-            .task
-            .data(r)
-            .is_some_and(|d| d.scope == items::Scope::Local)
-            || cx.task.routine(r).is_some_and(|d| d.local);
-        format!(
-            "the {} `{name}` of module {module}",
-            if local { "LOCAL" } else { "global" }
-        )
-    } else if !builtins {
-        return;
-    } else if cx.cat.datum(name).is_some() {
-        format!("the built-in data `{name}`")
-    } else if cx.cat.routine(name).is_some() {
-        format!("the built-in routine `{name}`")
-    } else {
-        return;
-    };
-    cx.report(
-        &rules::shadowed_name::RULE,
-        range,
-        format!("this declaration hides {what} within the routine"),
-    );
 }
 
 fn check_unused_in_routine(cx: &mut Cx<'_>, decl: &RoutineDecl) {

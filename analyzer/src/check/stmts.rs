@@ -151,22 +151,12 @@ fn check_uncached<'t>(cx: &mut Cx<'t>, s: Node<'t>) {
         kind::RETURN_STATEMENT => return_statement(cx, s),
         kind::RAISE_STATEMENT => match field(s, field::VALUE) {
             Some(v) => exprs::check_expected(cx, v, &Ty::named("errnum"), "the error number"),
-            None => handler_only(cx, s, "RAISE without an error number"),
+            None => rules::handler_only_statement::check(cx, s, "RAISE without an error number"),
         },
-        kind::RETRY_STATEMENT => handler_only(cx, s, "RETRY"),
-        kind::TRYNEXT_STATEMENT => handler_only(cx, s, "TRYNEXT"),
+        kind::RETRY_STATEMENT => rules::handler_only_statement::check(cx, s, "RETRY"),
+        kind::TRYNEXT_STATEMENT => rules::handler_only_statement::check(cx, s, "TRYNEXT"),
         kind::CONNECT_STATEMENT => connect(cx, s),
         _ => {}
-    }
-}
-
-fn handler_only(cx: &mut Cx<'_>, s: Node<'_>, what: &str) {
-    if !(cx.routine.is_some() && cx.in_error_handler) {
-        cx.report(
-            &rules::handler_only_statement::RULE,
-            s.byte_range(),
-            format!("{what} is only allowed in an ERROR handler"),
-        );
     }
 }
 

@@ -1,3 +1,7 @@
+use std::ops::Range;
+
+use crate::check::Cx;
+
 crate::declare_rule! {
     /// A name longer than 32 characters.
     ///
@@ -12,4 +16,21 @@ crate::declare_rule! {
     /// VAR num the_number_of_boxes_on_the_left_pallet;   ! 39 characters
     /// ```
     pub static RULE = ("E410", "name-too-long", Error);
+}
+
+/// The longest name RAPID accepts.
+const MAX_NAME: usize = 32;
+
+/// A declared name longer than RAPID accepts.
+pub(crate) fn check(cx: &mut Cx<'_>, name: &str, range: Range<usize>) {
+    if name.len() > MAX_NAME {
+        cx.report(
+            &RULE,
+            range,
+            format!(
+                "`{name}` has {} characters; names have at most {MAX_NAME}",
+                name.len()
+            ),
+        );
+    }
 }
