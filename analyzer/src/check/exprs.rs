@@ -14,7 +14,7 @@ use crate::ty::Ty;
 
 /// The type of an expression, reporting what is wrong inside it. `expected`
 /// gives aggregates their type and lets unknown signal names be recognised.
-pub(super) fn expr<'t>(cx: &mut Cx<'t>, node: Node<'t>, expected: Option<&Ty>) -> Ty {
+pub(crate) fn expr<'t>(cx: &mut Cx<'t>, node: Node<'t>, expected: Option<&Ty>) -> Ty {
     match crate::syntax_util::kind(node) {
         kind::NUMBER => Ty::num(),
         kind::STRING => Ty::string(),
@@ -86,7 +86,7 @@ fn unknown_signal(cx: &mut Cx<'_>, node: Node<'_>, name: &str, expected: &Ty) {
 }
 
 /// Checks an expression against the type its context expects.
-pub(super) fn check_expected<'t>(cx: &mut Cx<'t>, node: Node<'t>, expected: &Ty, what: &str) {
+pub(crate) fn check_expected<'t>(cx: &mut Cx<'t>, node: Node<'t>, expected: &Ty, what: &str) {
     check_sized(cx, node, expected, &[], what);
 }
 
@@ -127,7 +127,7 @@ fn check_sized<'t>(
 }
 
 /// "a num", "an orient", "an array num{*}".
-pub(super) fn a_type(ty: &Ty) -> String {
+pub(crate) fn a_type(ty: &Ty) -> String {
     match ty {
         Ty::Array(..) => format!("an array {ty}"),
         Ty::Named(n) if n.starts_with(['a', 'e', 'i', 'o', 'u', 'A', 'E', 'I', 'O', 'U']) => {
@@ -516,7 +516,7 @@ fn index<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> (Ty, Place) {
 
 /// The type and place of a data reference (a name, a component, an
 /// element); other expressions are values.
-pub(super) fn place_or_value<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> (Ty, Place) {
+pub(crate) fn place_or_value<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> (Ty, Place) {
     match crate::syntax_util::kind(node) {
         kind::IDENTIFIER => {
             let name = cx.node_text(node);
@@ -546,16 +546,4 @@ pub(super) fn reference<'t>(cx: &mut Cx<'t>, node: Node<'t>, expected: &Ty) -> (
         }
     }
     place_or_value(cx, node)
-}
-
-/// Checks a condition of IF, ELSEIF, WHILE or a compact IF.
-pub(super) fn condition<'t>(cx: &mut Cx<'t>, node: Node<'t>) {
-    let ty = expr(cx, node, Some(&Ty::bool()));
-    if !cx.types.is_bool(&ty) {
-        cx.report(
-            &rules::condition_not_bool::RULE,
-            node.byte_range(),
-            format!("a condition must be a bool, found {}", a_type(&ty)),
-        );
-    }
 }

@@ -11,7 +11,7 @@ mod availability;
 mod cache;
 mod calls;
 mod decls;
-mod exprs;
+pub(crate) mod exprs;
 mod file_wide;
 pub mod once;
 mod place;

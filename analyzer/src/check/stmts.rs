@@ -4,10 +4,9 @@
 use tree_sitter::Node;
 
 use super::{Cx, Place, calls, exprs};
-use crate::items::RoutineKind;
 use crate::names::fold;
 use crate::rules;
-use crate::sema::labels::{Label, block_key};
+use crate::sema::labels::Label;
 use crate::syntax::{field, kind};
 use crate::syntax_util::{field, fields, kind as kind_of};
 use crate::ty::Ty;
@@ -121,19 +120,19 @@ fn check_uncached<'t>(cx: &mut Cx<'t>, s: Node<'t>) {
     match kind_of(s) {
         kind::IF_STATEMENT => {
             if let Some(c) = field(s, field::CONDITION) {
-                exprs::condition(cx, c);
+                rules::condition_not_bool::check(cx, c);
             }
             check_block(cx, &fields(s, field::BODY));
             for alt in fields(s, field::ALTERNATIVE) {
                 if let Some(c) = field(alt, field::CONDITION) {
-                    exprs::condition(cx, c);
+                    rules::condition_not_bool::check(cx, c);
                 }
                 check_block(cx, &fields(alt, field::BODY));
             }
         }
         kind::COMPACT_IF_STATEMENT => {
             if let Some(c) = field(s, field::CONDITION) {
-                exprs::condition(cx, c);
+                rules::condition_not_bool::check(cx, c);
             }
             if let Some(b) = field(s, field::BODY) {
                 check_statement(cx, b);
@@ -142,20 +141,20 @@ fn check_uncached<'t>(cx: &mut Cx<'t>, s: Node<'t>) {
         kind::FOR_STATEMENT => for_statement(cx, s),
         kind::WHILE_STATEMENT => {
             if let Some(c) = field(s, field::CONDITION) {
-                exprs::condition(cx, c);
+                rules::condition_not_bool::check(cx, c);
             }
             check_block(cx, &fields(s, field::BODY));
         }
         kind::TEST_STATEMENT => test_statement(cx, s),
-        kind::GOTO_STATEMENT => goto(cx, s),
-        kind::RETURN_STATEMENT => return_statement(cx, s),
+        kind::GOTO_STATEMENT => rules::unknown_label::check(cx, s),
+        kind::RETURN_STATEMENT => rules::return_value::check(cx, s),
         kind::RAISE_STATEMENT => match field(s, field::VALUE) {
             Some(v) => exprs::check_expected(cx, v, &Ty::named("errnum"), "the error number"),
             None => rules::handler_only_statement::check(cx, s, "RAISE without an error number"),
         },
         kind::RETRY_STATEMENT => rules::handler_only_statement::check(cx, s, "RETRY"),
         kind::TRYNEXT_STATEMENT => rules::handler_only_statement::check(cx, s, "TRYNEXT"),
-        kind::CONNECT_STATEMENT => connect(cx, s),
+        kind::CONNECT_STATEMENT => rules::connect_target::check(cx, s),
         _ => {}
     }
 }
@@ -207,118 +206,6 @@ fn test_statement<'t>(cx: &mut Cx<'t>, s: Node<'t>) {
     }
     if let Some(d) = field(s, field::DEFAULT) {
         check_block(cx, &fields(d, field::BODY));
-    }
-}
-
-fn goto(cx: &mut Cx<'_>, s: Node<'_>) {
-    let Some(label) = field(s, field::LABEL) else {
-        return;
-    };
-    let name = cx.node_text(label);
-    if cx.routine.is_none() {
-        return;
-    }
-    match cx.labels.get(&fold(name)) {
-        None => cx.report(
-            &rules::unknown_label::RULE,
-            label.byte_range(),
-            format!("this routine has no label `{name}`"),
-        ),
-        Some((_, list)) => {
-            let list = *list;
-            let mut at = s.parent();
-            let mut reachable = false;
-            while let Some(n) = at {
-                if block_key(n) == list {
-                    reachable = true;
-                    break;
-                }
-                at = n.parent();
-            }
-            if !reachable {
-                cx.report(
-                    &rules::goto_into_block::RULE,
-                    label.byte_range(),
-                    format!("`{name}` is inside another statement block; GOTO cannot jump into it"),
-                );
-            }
-        }
-    }
-}
-
-fn return_statement<'t>(cx: &mut Cx<'t>, s: Node<'t>) {
-    let Some(r) = &cx.routine else {
-        return;
-    };
-    let kind = r.decl.kind;
-    let returns = r.decl.returns.as_ref().map(|t| Ty::named(&t.name));
-    match (kind, field(s, field::VALUE)) {
-        (RoutineKind::Func, None) => cx.report(
-            &rules::return_value::RULE,
-            s.byte_range(),
-            format!(
-                "a function must return a value: RETURN {};",
-                returns
-                    .as_ref()
-                    .map_or("value".to_owned(), |t| format!("<{t}>"))
-            ),
-        ),
-        (RoutineKind::Func, Some(v)) => {
-            let ty = returns.unwrap_or(Ty::Unknown);
-            exprs::check_expected(cx, v, &ty, "the returned value");
-        }
-        (_, Some(v)) => {
-            cx.report(
-                &rules::return_value::RULE,
-                v.byte_range(),
-                format!("a {} returns no value: write RETURN;", kind.keyword()),
-            );
-            exprs::expr(cx, v, None);
-        }
-        (_, None) => {}
-    }
-}
-
-fn connect<'t>(cx: &mut Cx<'t>, s: Node<'t>) {
-    if let Some(target) = field(s, field::INTERRUPT) {
-        let (ty, place) = exprs::place_or_value(cx, target);
-        if cx.types.is_known(&ty) && !ty.is("intnum") {
-            cx.report(
-                &rules::connect_target::RULE,
-                target.byte_range(),
-                format!(
-                    "CONNECT needs an intnum variable, found {}",
-                    exprs::a_type(&ty)
-                ),
-            );
-        } else if matches!(
-            place,
-            Place::Const | Place::ForVar | Place::Value | Place::ReadOnly
-        ) {
-            cx.report(
-                &rules::connect_target::RULE,
-                target.byte_range(),
-                format!(
-                    "CONNECT needs an intnum variable, found {}",
-                    place.describe()
-                ),
-            );
-        }
-    }
-    if let Some(trap) = field(s, field::TRAP) {
-        let name = cx.node_text(trap);
-        match cx.resolve_routine(name, false) {
-            Some(def)
-                if def
-                    .routine_decl(cx.task)
-                    .is_some_and(|d| d.kind == RoutineKind::Trap) => {}
-            Some(_) => cx.report(
-                &rules::connect_target::RULE,
-                trap.byte_range(),
-                format!("`{name}` is not a TRAP routine"),
-            ),
-            None => cx.unresolved(name, trap.byte_range(), "routine"),
-        }
     }
 }
 
