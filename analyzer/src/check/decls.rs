@@ -11,7 +11,7 @@ use tree_sitter::Node;
 use super::{Cx, Used, decl_ty, exprs};
 use crate::diagnostic::Diagnostic;
 use crate::items::{self, DataDecl, Module, RoutineDecl, Storage};
-use crate::names::{fold, same};
+use crate::names::fold;
 use crate::rules;
 use crate::syntax::field;
 use crate::syntax_util::{field, fields};
@@ -65,41 +65,7 @@ fn check_module_names(cx: &mut Cx<'_>, module: &Module) {
     rules::name_too_long::check(cx, &module.name, module.name_range.clone());
     check_duplicates_in_module(cx, module);
     check_ambiguous_globals(cx, module);
-    check_duplicate_module(cx, module);
-}
-
-/// Another file of the task (left out of this view of it) declares the
-/// same module: reported in the later file, once.
-fn check_duplicate_module(cx: &mut Cx<'_>, module: &Module) {
-    if !cx.task.is_certain() {
-        return;
-    }
-    let first = cx.task.excluded.iter().find_map(|e| {
-        let (_, range) = e.modules.iter().find(|(n, _)| same(n, &module.name))?;
-        (e.path < cx.unit.path).then(|| (e.path.clone(), range.clone()))
-    });
-    let Some((path, range)) = first else {
-        return;
-    };
-    let file = path
-        .rsplit(['/', '\\'])
-        .next()
-        .unwrap_or_default()
-        .to_owned();
-    let d = Diagnostic::new(
-        &rules::duplicate_module::RULE,
-        module.name_range.clone(),
-        format!(
-            "module {} is also declared in {file}: a task loads only one of them",
-            module.name
-        ),
-    )
-    .with_related(crate::diagnostic::Related {
-        file: Some(path),
-        range,
-        message: format!("module {} declared here too", module.name),
-    });
-    cx.report_with(d);
+    rules::duplicate_module::check(cx, module);
 }
 
 /// Checks the module's data declarations.
@@ -167,31 +133,7 @@ fn check_duplicates_in_module(cx: &mut Cx<'_>, module: &Module) {
         })
         .collect();
     all.sort_by_key(|(_, r)| r.start);
-    report_duplicates(cx, all, "in this module");
-}
-
-pub(super) fn report_duplicates(cx: &mut Cx<'_>, names: Vec<(&str, Range<usize>)>, scope: &str) {
-    let mut first: HashMap<String, Range<usize>> = HashMap::new();
-    for (name, range) in names {
-        match first.get(&fold(name)) {
-            Some(prev) => {
-                let d = Diagnostic::new(
-                    &rules::duplicate_declaration::RULE,
-                    range,
-                    format!("`{name}` is declared twice {scope}"),
-                )
-                .with_related(crate::diagnostic::Related {
-                    file: None,
-                    range: prev.clone(),
-                    message: "first declared here".into(),
-                });
-                cx.report_with(d);
-            }
-            None => {
-                first.insert(fold(name), range);
-            }
-        }
-    }
+    rules::duplicate_declaration::report(cx, all, "in this module");
 }
 
 fn check_ambiguous_globals(cx: &mut Cx<'_>, module: &Module) {

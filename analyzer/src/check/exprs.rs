@@ -7,7 +7,7 @@ use tree_sitter::Node;
 
 use super::{Cx, Place, calls};
 use crate::rules;
-use crate::sema::typing::{self, ComponentError, IndexError};
+use crate::sema::typing::{self, IndexError};
 use crate::syntax::{field, kind};
 use crate::syntax_util::{Literal, field, fields, literal_aggregate};
 use crate::ty::Ty;
@@ -160,7 +160,7 @@ fn aggregate<'t>(cx: &mut Cx<'t>, node: Node<'t>, expected: &Ty, sizes: &[Option
     match expected {
         Ty::Array(elem, dims) => {
             let inner = element_type(elem, *dims);
-            check_array_arity(cx, node.byte_range(), sizes, elements.len());
+            rules::aggregate_arity::check_array(cx, node.byte_range(), sizes, elements.len());
             let rest = sizes.get(1..).unwrap_or_default();
             for e in elements {
                 check_sized(cx, e, &inner, rest, "an array element");
@@ -174,7 +174,13 @@ fn aggregate<'t>(cx: &mut Cx<'t>, node: Node<'t>, expected: &Ty, sizes: &[Option
                 }
                 return;
             };
-            check_record_arity(cx, node.byte_range(), expected, &components, elements.len());
+            rules::aggregate_arity::check_record(
+                cx,
+                node.byte_range(),
+                expected,
+                &components,
+                elements.len(),
+            );
             for (e, (name, ty)) in elements.into_iter().zip(
                 components
                     .iter()
@@ -204,42 +210,6 @@ fn element_type(elem: &Ty, dims: u8) -> Ty {
         Ty::Array(Box::new(elem.clone()), dims - 1)
     } else {
         elem.clone()
-    }
-}
-
-/// An aggregate whose element count is not its array's size (when the size
-/// is written as a number).
-fn check_array_arity(cx: &mut Cx<'_>, range: Range<usize>, sizes: &[Option<usize>], given: usize) {
-    if let Some(Some(size)) = sizes.first()
-        && *size != given
-    {
-        cx.report(
-            &rules::aggregate_arity::RULE,
-            range,
-            format!("the array has {size} elements, this aggregate gives {given}"),
-        );
-    }
-}
-
-/// An aggregate whose element count is not its record's component count.
-fn check_record_arity(
-    cx: &mut Cx<'_>,
-    range: Range<usize>,
-    expected: &Ty,
-    components: &[(String, Ty)],
-    given: usize,
-) {
-    if components.len() != given {
-        let names: Vec<&str> = components.iter().map(|(n, _)| n.as_str()).collect();
-        cx.report(
-            &rules::aggregate_arity::RULE,
-            range,
-            format!(
-                "{expected} has {} components ({}), this aggregate gives {given}",
-                components.len(),
-                names.join(", "),
-            ),
-        );
     }
 }
 
@@ -287,7 +257,7 @@ fn literal_aggregate_check(
     match expected {
         Ty::Array(elem, dims) => {
             let inner = element_type(elem, *dims);
-            check_array_arity(cx, range.clone(), sizes, elements.len());
+            rules::aggregate_arity::check_array(cx, range.clone(), sizes, elements.len());
             let rest = sizes.get(1..).unwrap_or_default();
             for e in elements {
                 literal_check(cx, e, &inner, rest, What::ArrayElement);
@@ -298,7 +268,7 @@ fn literal_aggregate_check(
                 report_not_aggregate(cx, range, expected);
                 return;
             };
-            check_record_arity(cx, range, expected, &components, elements.len());
+            rules::aggregate_arity::check_record(cx, range, expected, &components, elements.len());
             for (i, e) in elements.iter().enumerate() {
                 match components.get(i) {
                     Some((name, ty)) => literal_check(cx, e, ty, &[], What::Component(name)),
@@ -460,25 +430,10 @@ fn component<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> (Ty, Place) {
         return (Ty::Unknown, Place::Unknown);
     };
     let (obj_ty, place) = place_or_value(cx, obj);
-    (component_type(cx, &obj_ty, comp), place)
-}
-
-fn component_type(cx: &mut Cx<'_>, obj_ty: &Ty, comp: Node<'_>) -> Ty {
-    let name = cx.node_text(comp);
-    let message = match typing::component(&cx.types, obj_ty, name) {
-        Ok(ty) => return ty,
-        Err(ComponentError::OnArray) => format!("`.{name}` on an array {obj_ty}: index it first"),
-        Err(ComponentError::NoSuch(list)) => format!(
-            "{obj_ty} has no component `{name}`; its components are {}",
-            list.join(", ")
-        ),
-        Err(ComponentError::NotRecord) => format!(
-            "{} is not a record and has no component `{name}`",
-            a_type(obj_ty)
-        ),
-    };
-    cx.report(&rules::unknown_component::RULE, comp.byte_range(), message);
-    Ty::Unknown
+    (
+        rules::unknown_component::component_type(cx, &obj_ty, comp),
+        place,
+    )
 }
 
 /// `a{i, j}`: the element type.

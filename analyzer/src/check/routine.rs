@@ -5,9 +5,8 @@ use std::ops::Range;
 
 use tree_sitter::Node;
 
-use super::decls::{MAX_DIMS, check_data, check_type_name, report_duplicates};
+use super::decls::{MAX_DIMS, check_data, check_type_name};
 use super::{Cx, Used, exprs, stmts};
-use crate::diagnostic::Diagnostic;
 use crate::items::{self, RoutineDecl, RoutineKind};
 use crate::names::{NameMap, fold};
 use crate::rules;
@@ -94,7 +93,7 @@ pub(super) fn check_routine<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &'t Routi
         rules::shadowed_name::check(cx, &p.name, p.name_range.clone(), false);
     }
     names.extend(local_names.iter().map(|(n, r)| (n.as_str(), r.clone())));
-    report_duplicates(cx, names, "in this routine");
+    rules::duplicate_declaration::report(cx, names, "in this routine");
 
     // The statement cache's view of the routine: its name and kind (the
     // parameters are in the task's interface) and the text of its data
@@ -197,32 +196,8 @@ fn routine_children(node: Node<'_>) -> (RoutineChildren<'_>, Vec<Node<'_>>) {
 }
 
 fn check_unused_in_routine(cx: &mut Cx<'_>, decl: &RoutineDecl) {
-    let Some(r) = &cx.routine else {
-        return;
-    };
-    let mut found = Vec::new();
-    for (key, d) in &r.locals {
-        if !cx.used.contains(&Used::RoutineSym(key.clone())) {
-            found.push(rules::unused_data::in_routine(
-                cx.text,
-                &d.name,
-                d.name_range.clone(),
-                d.range.clone(),
-            ));
-        }
-    }
-    for p in &decl.params {
-        if !cx.used.contains(&Used::RoutineSym(fold(&p.name))) {
-            found.push(Diagnostic::new(
-                &rules::unused_parameter::RULE,
-                p.name_range.clone(),
-                format!("the parameter `{}` is never used", p.name),
-            ));
-        }
-    }
-    for d in found {
-        cx.report_with(d);
-    }
+    rules::unused_data::check_routine(cx);
+    rules::unused_parameter::check(cx, decl);
     // Routine symbols are per routine: forget them for the next one.
     cx.used.retain(|u| !matches!(u, Used::RoutineSym(_)));
 }

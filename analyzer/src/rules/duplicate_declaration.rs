@@ -1,3 +1,10 @@
+use std::collections::HashMap;
+use std::ops::Range;
+
+use crate::check::Cx;
+use crate::diagnostic::Diagnostic;
+use crate::names::fold;
+
 crate::declare_rule! {
     /// Two declarations of the same name in one scope.
     ///
@@ -15,4 +22,25 @@ crate::declare_rule! {
     /// VAR num Count;    ! same name as count
     /// ```
     pub static RULE = ("E106", "duplicate-declaration", Error);
+}
+
+pub(crate) fn report(cx: &mut Cx<'_>, names: Vec<(&str, Range<usize>)>, scope: &str) {
+    let mut first: HashMap<String, Range<usize>> = HashMap::new();
+    for (name, range) in names {
+        match first.get(&fold(name)) {
+            Some(prev) => {
+                let d =
+                    Diagnostic::new(&RULE, range, format!("`{name}` is declared twice {scope}"))
+                        .with_related(crate::diagnostic::Related {
+                            file: None,
+                            range: prev.clone(),
+                            message: "first declared here".into(),
+                        });
+                cx.report_with(d);
+            }
+            None => {
+                first.insert(fold(name), range);
+            }
+        }
+    }
 }

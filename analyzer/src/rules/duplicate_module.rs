@@ -1,3 +1,8 @@
+use crate::check::Cx;
+use crate::diagnostic::Diagnostic;
+use crate::items::Module;
+use crate::names::same;
+
 crate::declare_rule! {
     /// Two files of one task declare a module of the same name.
     ///
@@ -21,4 +26,38 @@ crate::declare_rule! {
     /// MODULE MainModule ... ENDMODULE     ! the same module again
     /// ```
     pub static RULE = ("W207", "duplicate-module", Warning);
+}
+
+/// Another file of the task (left out of this view of it) declares the
+/// same module: reported in the later file, once.
+pub(crate) fn check(cx: &mut Cx<'_>, module: &Module) {
+    if !cx.task.is_certain() {
+        return;
+    }
+    let first = cx.task.excluded.iter().find_map(|e| {
+        let (_, range) = e.modules.iter().find(|(n, _)| same(n, &module.name))?;
+        (e.path < cx.unit.path).then(|| (e.path.clone(), range.clone()))
+    });
+    let Some((path, range)) = first else {
+        return;
+    };
+    let file = path
+        .rsplit(['/', '\\'])
+        .next()
+        .unwrap_or_default()
+        .to_owned();
+    let d = Diagnostic::new(
+        &RULE,
+        module.name_range.clone(),
+        format!(
+            "module {} is also declared in {file}: a task loads only one of them",
+            module.name
+        ),
+    )
+    .with_related(crate::diagnostic::Related {
+        file: Some(path),
+        range,
+        message: format!("module {} declared here too", module.name),
+    });
+    cx.report_with(d);
 }

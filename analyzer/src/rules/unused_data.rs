@@ -81,3 +81,22 @@ pub(crate) fn fix(text: &str, decl: Range<usize>, name: &str) -> Fix {
         false,
     )
 }
+
+/// The routine data of the routine being checked that no statement used.
+pub(crate) fn check_routine(cx: &mut crate::check::Cx<'_>) {
+    let Some(r) = &cx.routine else {
+        return;
+    };
+    let found: Vec<Diagnostic> = r
+        .locals
+        .iter()
+        .filter(|(key, _)| {
+            !cx.used
+                .contains(&crate::check::Used::RoutineSym((*key).clone()))
+        })
+        .map(|(_, d)| in_routine(cx.text, &d.name, d.name_range.clone(), d.range.clone()))
+        .collect();
+    for d in found {
+        cx.report_with(d);
+    }
+}

@@ -18,3 +18,20 @@ crate::declare_rule! {
     /// ```
     pub static RULE = ("W202", "unused-parameter", Hint);
 }
+
+/// The parameters of `decl`, the routine being checked, that no statement
+/// used.
+pub(crate) fn check(cx: &mut crate::check::Cx<'_>, decl: &crate::items::RoutineDecl) {
+    for p in &decl.params {
+        if !cx
+            .used
+            .contains(&crate::check::Used::RoutineSym(crate::names::fold(&p.name)))
+        {
+            cx.report(
+                &RULE,
+                p.name_range.clone(),
+                format!("the parameter `{}` is never used", p.name),
+            );
+        }
+    }
+}
