@@ -3,13 +3,11 @@
 //! of a module. Routines are checked by [`super::routine`], the whole
 //! file's text by [`super::file_wide`].
 
-use std::collections::HashMap;
 use std::ops::Range;
 
 use tree_sitter::Node;
 
 use super::{Cx, Used, decl_ty, exprs};
-use crate::diagnostic::Diagnostic;
 use crate::items::{self, DataDecl, Module, RoutineDecl, Storage};
 use crate::names::fold;
 use crate::rules;
@@ -64,7 +62,7 @@ pub(super) fn check_module_prelude<'t>(
 fn check_module_names(cx: &mut Cx<'_>, module: &Module) {
     rules::name_too_long::check(cx, &module.name, module.name_range.clone());
     check_duplicates_in_module(cx, module);
-    check_ambiguous_globals(cx, module);
+    rules::ambiguous_global::check(cx, module);
     rules::duplicate_module::check(cx, module);
 }
 
@@ -134,77 +132,6 @@ fn check_duplicates_in_module(cx: &mut Cx<'_>, module: &Module) {
         .collect();
     all.sort_by_key(|(_, r)| r.start);
     rules::duplicate_declaration::report(cx, all, "in this module");
-}
-
-fn check_ambiguous_globals(cx: &mut Cx<'_>, module: &Module) {
-    let Some(mi) = cx.module.map(|(i, _)| i) else {
-        return;
-    };
-    // The first declaration of another module, by folded name: only a
-    // persistent needs the whole list (many declarations of one name made
-    // this quadratic).
-    let mut first_elsewhere: HashMap<String, Option<ItemRef>> = HashMap::new();
-    for (name, local, item) in module_items(module) {
-        if local {
-            continue;
-        }
-        let me = ItemRef {
-            unit: cx.unit_idx,
-            module: mi,
-            item,
-        };
-        let key = fold(name);
-        let Some(all) = cx.task.globals.get(&key) else {
-            continue;
-        };
-        let elsewhere = |r: &ItemRef| (r.unit, r.module) != (me.unit, me.module);
-        let other = if cx.task.data(me).is_some_and(|d| d.storage == Storage::Pers) {
-            all.iter()
-                .copied()
-                .find(|r| elsewhere(r) && !same_persistent(cx, me, *r))
-        } else {
-            // `same_persistent` is false when `me` is not a persistent.
-            *first_elsewhere
-                .entry(key)
-                .or_insert_with(|| all.iter().copied().find(elsewhere))
-        };
-        if let Some(other) = other {
-            let other_module = cx
-                .task
-                .module(other)
-                .map(|m| m.name.clone())
-                .unwrap_or_default();
-            let Some((_, range)) = cx.task.item_name(me) else {
-                continue;
-            };
-            let mut d = Diagnostic::new(
-                &rules::ambiguous_global::RULE,
-                range,
-                format!("the global name `{name}` is also declared in module {other_module}"),
-            );
-            if let Some(rel) = cx.related_item(other, format!("also declared in {other_module}")) {
-                d = d.with_related(rel);
-            }
-            if !cx.task.is_certain() {
-                // A plain folder may hold alternative programs that are never
-                // loaded together: the grouping is a guess, so only warn.
-                d.severity = crate::diagnostic::Severity::Warning;
-                d.message
-                    .push_str(" (these modules form one task because they share a folder)");
-            }
-            cx.report_with(d);
-        }
-    }
-}
-
-/// Two `PERS` declarations of one type denote the same persistent object.
-fn same_persistent(cx: &Cx<'_>, a: ItemRef, b: ItemRef) -> bool {
-    match (cx.task.data(a), cx.task.data(b)) {
-        (Some(x), Some(y)) => {
-            x.storage == Storage::Pers && y.storage == Storage::Pers && decl_ty(x) == decl_ty(y)
-        }
-        _ => false,
-    }
 }
 
 /// Checks a data declaration of a module or a routine.

@@ -47,7 +47,7 @@ fn identifier<'t>(cx: &mut Cx<'t>, node: Node<'t>, expected: Option<&Ty>) -> Ty 
         }
         None => {
             if let Some(exp) = expected.filter(|e| is_configured(cx, e)) {
-                unknown_signal(cx, node, name, exp);
+                cx.unknown_signal(node, name, exp);
                 return exp.clone();
             }
             cx.unresolved(name, node.byte_range(), "data");
@@ -58,31 +58,6 @@ fn identifier<'t>(cx: &mut Cx<'t>, node: Node<'t>, expected: Option<&Ty>) -> Ty 
 
 fn is_configured(cx: &Cx<'_>, ty: &Ty) -> bool {
     typing::is_configured(&cx.types, ty)
-}
-
-/// A name where a signal (or a mechanical unit) is expected that nothing
-/// declares: without the configuration, say once that it cannot be checked.
-fn unknown_signal(cx: &mut Cx<'_>, node: Node<'_>, name: &str, expected: &Ty) {
-    let mecunit = cx.types.base(expected).is("mecunit");
-    let (configured, what, file) = if mecunit {
-        (!cx.task.mecunits.is_empty(), "a mechanical unit", "MOC.cfg")
-    } else {
-        (cx.task.signals.is_some(), "an I/O signal", "EIO.cfg")
-    };
-    if configured {
-        let message = format!(
-            "no {} named `{name}` in the configuration ({file}), and no data of that name",
-            if mecunit { "mechanical unit" } else { "signal" }
-        );
-        cx.report_unresolved(node.byte_range(), message);
-    } else {
-        // Reported at every use; `check_unit` keeps the first per name.
-        cx.report(
-            &rules::unconfigured_signal::RULE,
-            node.byte_range(),
-            format!("`{name}` is taken to be {what}; without the controller's {file} it cannot be checked"),
-        );
-    }
 }
 
 /// Checks an expression against the type its context expects.
@@ -417,7 +392,7 @@ fn aggregate_operand<'t>(cx: &mut Cx<'t>, node: Node<'t>, other: &Ty) -> Ty {
 fn operand<'t>(cx: &mut Cx<'t>, node: Node<'t>, other: Node<'t>, comparison: bool) -> Ty {
     if typing::taken_for_signal(cx, node, other, comparison) {
         let name = cx.node_text(node);
-        unknown_signal(cx, node, name, &Ty::named("signaldi"));
+        cx.unknown_signal(node, name, &Ty::named("signaldi"));
         return Ty::named("signaldi");
     }
     expr(cx, node, None)
@@ -496,7 +471,7 @@ pub(super) fn reference<'t>(cx: &mut Cx<'t>, node: Node<'t>, expected: &Ty) -> (
     if crate::syntax_util::kind(node) == kind::IDENTIFIER && is_configured(cx, expected) {
         let name = cx.node_text(node);
         if cx.resolve_data(name).is_none() {
-            unknown_signal(cx, node, name, expected);
+            cx.unknown_signal(node, name, expected);
             return (expected.clone(), Place::Unknown);
         }
     }

@@ -114,7 +114,7 @@ pub(crate) struct Cx<'t> {
     statement_context: Option<StatementContext>,
     /// "Did you mean" answers by folded name, for the current scope (cleared
     /// by [`Cx::scope_changed`]): an unresolved name tends to recur.
-    close_memo: HashMap<(Kind, String), Option<String>>,
+    pub(crate) close_memo: HashMap<(Kind, String), Option<String>>,
     /// The module part of "did you mean", by module, kind and folded name.
     module_close_memo: HashMap<(usize, Kind, String), Option<(usize, String)>>,
     /// The first position of each unconfigured signal's diagnostic that a
@@ -302,69 +302,6 @@ impl<'t> Cx<'t> {
             return true;
         }
         self.types.exists(name)
-    }
-
-    /// Reports a name that resolves to nothing, with the most helpful code.
-    pub(crate) fn unresolved(&mut self, name: &str, range: Range<usize>, what: &str) {
-        if let Some(r) = self.local_elsewhere(name) {
-            let module = self
-                .task
-                .module(r)
-                .map(|m| m.name.clone())
-                .unwrap_or_default();
-            let mut d = Diagnostic::new(
-                &crate::rules::local_not_visible::RULE,
-                range,
-                format!("`{name}` is declared LOCAL in module {module} and cannot be used here"),
-            );
-            if let Some(rel) = self.related_item(r, "declared LOCAL here") {
-                d = d.with_related(rel);
-            }
-            self.report_with(d);
-            return;
-        }
-        let mut message = format!("no {what} named `{name}` is declared in this task or built in");
-        let kind = Kind::of(what);
-        let memo_key = (kind, fold(name));
-        let close = match self.close_memo.get(&memo_key) {
-            Some(close) => close.clone(),
-            None => {
-                let close = self.close_match(name, kind);
-                self.close_memo.insert(memo_key, close.clone());
-                close
-            }
-        };
-        if let Some(close) = close {
-            message.push_str(&format!("; did you mean `{close}`?"));
-        } else if what == "data" && self.task.signals.is_none() {
-            message.push_str(" (if it is an I/O signal, give the controller's EIO.cfg)");
-        }
-        let mut d = self.unresolved_diagnostic(range, message);
-        if kind == Kind::Data {
-            d = d.with_fix(crate::rules::unresolved_name::pending_declare_fix());
-        }
-        self.report_with(d);
-    }
-
-    /// Reports a name nothing declares: an error in a complete backup's
-    /// task (every module is here, so the controller would refuse to load
-    /// it), a note in `HOME/` modules that no task here loads (the task
-    /// they are loaded into is not here), a warning anywhere else (the
-    /// declaration may be in a module or an option that is not part of the
-    /// checked files).
-    pub(crate) fn report_unresolved(&mut self, range: Range<usize>, message: String) {
-        let d = self.unresolved_diagnostic(range, message);
-        self.report_with(d);
-    }
-
-    fn unresolved_diagnostic(&self, range: Range<usize>, message: String) -> Diagnostic {
-        let mut d = Diagnostic::new(&crate::rules::unresolved_name::RULE, range, message);
-        if self.task.complete {
-            d.severity = crate::diagnostic::Severity::Error;
-        } else if self.task.loaded_elsewhere {
-            d.severity = crate::diagnostic::Severity::Info;
-        }
-        d
     }
 
     /// Is `name` used as an optional parameter of the routine being checked?

@@ -10,7 +10,7 @@ impl Cx<'_> {
     /// `name`: the first closest of the routine's data and parameters, then
     /// the module's, then the task's globals. A suggestion of another kind
     /// (a data type for a variable) would mislead more than help.
-    pub(super) fn close_match(&mut self, name: &str, kind: Kind) -> Option<String> {
+    pub(crate) fn close_match(&mut self, name: &str, kind: Kind) -> Option<String> {
         let key = fold(name);
         let limit = if key.len() <= 4 { 1 } else { 2 };
         let mut best = None;
@@ -124,7 +124,7 @@ pub(crate) enum Kind {
 
 impl Kind {
     /// From the word [`Cx::unresolved`] is given: "data", "routine", "data type".
-    pub(super) fn of(what: &str) -> Kind {
+    pub(crate) fn of(what: &str) -> Kind {
         match what {
             "routine" => Kind::Routine,
             "data type" => Kind::Type,

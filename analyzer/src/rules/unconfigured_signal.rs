@@ -1,3 +1,7 @@
+use tree_sitter::Node;
+
+use crate::ty::Ty;
+
 crate::declare_rule! {
     /// A name used as an I/O signal or a mechanical unit, with no controller configuration to check it against.
     ///
@@ -23,4 +27,36 @@ crate::declare_rule! {
     /// ENDPROC
     /// ```
     pub static RULE = ("I103", "unconfigured-signal", Info);
+}
+
+/// The checker reports names taken for signals here.
+impl crate::check::Cx<'_> {
+    /// A name where a signal (or a mechanical unit) is expected that nothing
+    /// declares: without the configuration, say once that it cannot be checked.
+    pub(crate) fn unknown_signal(&mut self, node: Node<'_>, name: &str, expected: &Ty) {
+        let mecunit = self.types.base(expected).is("mecunit");
+        let (configured, what, file) = if mecunit {
+            (
+                !self.task.mecunits.is_empty(),
+                "a mechanical unit",
+                "MOC.cfg",
+            )
+        } else {
+            (self.task.signals.is_some(), "an I/O signal", "EIO.cfg")
+        };
+        if configured {
+            let message = format!(
+                "no {} named `{name}` in the configuration ({file}), and no data of that name",
+                if mecunit { "mechanical unit" } else { "signal" }
+            );
+            self.report_unresolved(node.byte_range(), message);
+        } else {
+            // Reported at every use; `check_unit` keeps the first per name.
+            self.report(
+                &RULE,
+                node.byte_range(),
+                format!("`{name}` is taken to be {what}; without the controller's {file} it cannot be checked"),
+            );
+        }
+    }
 }

@@ -3,7 +3,9 @@ use std::ops::Range;
 use tree_sitter::Node;
 
 use super::fix_text::{indent_at, line_break, line_start};
-use crate::diagnostic::{Applicability, Fix};
+use crate::check::Kind;
+use crate::diagnostic::{Applicability, Diagnostic, Fix};
+use crate::names::fold;
 use crate::syntax::{field, kind};
 use crate::syntax_util::fields;
 use crate::task::Task;
@@ -141,5 +143,72 @@ fn infer_type(task: &Task, unit: usize, range: Range<usize>) -> Option<String> {
             Some(p.type_name.clone())
         }
         _ => None,
+    }
+}
+
+/// Reporting an unresolved name: the checker calls these where its
+/// resolver finds nothing.
+impl crate::check::Cx<'_> {
+    /// Reports a name that resolves to nothing, with the most helpful code.
+    pub(crate) fn unresolved(&mut self, name: &str, range: Range<usize>, what: &str) {
+        if let Some(r) = self.local_elsewhere(name) {
+            let module = self
+                .task
+                .module(r)
+                .map(|m| m.name.clone())
+                .unwrap_or_default();
+            let mut d = Diagnostic::new(
+                &crate::rules::local_not_visible::RULE,
+                range,
+                format!("`{name}` is declared LOCAL in module {module} and cannot be used here"),
+            );
+            if let Some(rel) = self.related_item(r, "declared LOCAL here") {
+                d = d.with_related(rel);
+            }
+            self.report_with(d);
+            return;
+        }
+        let mut message = format!("no {what} named `{name}` is declared in this task or built in");
+        let kind = Kind::of(what);
+        let memo_key = (kind, fold(name));
+        let close = match self.close_memo.get(&memo_key) {
+            Some(close) => close.clone(),
+            None => {
+                let close = self.close_match(name, kind);
+                self.close_memo.insert(memo_key, close.clone());
+                close
+            }
+        };
+        if let Some(close) = close {
+            message.push_str(&format!("; did you mean `{close}`?"));
+        } else if what == "data" && self.task.signals.is_none() {
+            message.push_str(" (if it is an I/O signal, give the controller's EIO.cfg)");
+        }
+        let mut d = self.unresolved_diagnostic(range, message);
+        if kind == Kind::Data {
+            d = d.with_fix(pending_declare_fix());
+        }
+        self.report_with(d);
+    }
+
+    /// Reports a name nothing declares: an error in a complete backup's
+    /// task (every module is here, so the controller would refuse to load
+    /// it), a note in `HOME/` modules that no task here loads (the task
+    /// they are loaded into is not here), a warning anywhere else (the
+    /// declaration may be in a module or an option that is not part of the
+    /// checked files).
+    pub(crate) fn report_unresolved(&mut self, range: Range<usize>, message: String) {
+        let d = self.unresolved_diagnostic(range, message);
+        self.report_with(d);
+    }
+
+    pub(crate) fn unresolved_diagnostic(&self, range: Range<usize>, message: String) -> Diagnostic {
+        let mut d = Diagnostic::new(&RULE, range, message);
+        if self.task.complete {
+            d.severity = crate::diagnostic::Severity::Error;
+        } else if self.task.loaded_elsewhere {
+            d.severity = crate::diagnostic::Severity::Info;
+        }
+        d
     }
 }
