@@ -8,15 +8,13 @@ use std::ops::Range;
 use tree_sitter::Node;
 
 use super::{Cx, Used, decl_ty, exprs};
-use crate::items::{self, DataDecl, Module, RoutineDecl, Storage};
+use crate::items::{DataDecl, Module, RoutineDecl};
 use crate::names::fold;
 use crate::rules;
 use crate::syntax::field;
 use crate::syntax_util::{field, fields};
 use crate::task::{Item, ItemRef, module_items};
 use crate::ty::Ty;
-
-pub(super) const MAX_DIMS: usize = 3;
 
 pub(super) fn check_module<'t>(cx: &mut Cx<'t>, node: Node<'t>, module: &'t Module) {
     let data_nodes = BodyNodes::of(node);
@@ -141,17 +139,7 @@ pub(super) fn check_data<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &DataDecl, i
     if let Some(t) = &decl.ty {
         check_type_name(cx, &t.name, t.range.clone());
     }
-    if decl.dims.len() > MAX_DIMS {
-        cx.report(
-            &rules::too_many_dimensions::RULE,
-            decl.name_range.clone(),
-            format!(
-                "`{}` has {} dimensions; RAPID arrays have at most {MAX_DIMS}",
-                decl.name,
-                decl.dims.len()
-            ),
-        );
-    }
+    rules::too_many_dimensions::check(cx, &decl.name, decl.name_range.clone(), decl.dims.len());
     if let Some(dims) = field(node, field::DIMENSIONS) {
         for d in fields(dims, field::DIMENSION) {
             let ty = exprs::expr(cx, d, Some(&Ty::num()));
@@ -172,54 +160,13 @@ pub(super) fn check_data<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &DataDecl, i
         // A declaration the parser could not read (e.g. a template's
         // `{{PORT}}` for the value) has its syntax error already.
         None if node.has_error() => {}
-        None if decl.storage == Storage::Const => {
-            cx.report(
-                &rules::missing_initializer::RULE,
-                decl.name_range.clone(),
-                format!(
-                    "the constant `{}` needs a value: CONST {} {} := ...;",
-                    decl.name,
-                    decl.ty.as_ref().map_or("<type>", |t| t.name.as_str()),
-                    decl.name
-                ),
-            );
-        }
-        // Only system-global persistents may leave out the value: the
-        // controller then takes it from another task's declaration of the
-        // same persistent, or the type's default. TASK and LOCAL persistents
-        // have no other declaration to take it from.
-        None if decl.storage == Storage::Pers && decl.scope != items::Scope::Global => {
-            let kind = if decl.scope == items::Scope::Task {
-                "TASK"
-            } else {
-                "LOCAL"
-            };
-            cx.report(
-                &rules::missing_initializer::RULE,
-                decl.name_range.clone(),
-                format!(
-                    "the {kind} persistent `{}` needs a value: {kind} PERS {} {} := ...;",
-                    decl.name,
-                    decl.ty.as_ref().map_or("<type>", |t| t.name.as_str()),
-                    decl.name
-                ),
-            );
-        }
-        None => {}
+        None => rules::missing_initializer::check(cx, decl),
     }
     if !in_routine {
-        super::shared::check_persistent(cx, decl);
+        rules::shared_persistent_mismatch::check(cx, decl);
     }
-    if in_routine && decl.storage == Storage::Pers {
-        let at = field(node, field::STORAGE).map_or(decl.name_range.clone(), |s| s.byte_range());
-        cx.report(
-            &rules::persistent_in_routine::RULE,
-            at,
-            format!(
-                "`{}` is a persistent declared in a routine; declare it at module level, or make it VAR",
-                decl.name
-            ),
-        );
+    if in_routine {
+        rules::persistent_in_routine::check(cx, node, decl);
     }
 }
 

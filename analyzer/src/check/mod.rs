@@ -16,7 +16,6 @@ mod file_wide;
 pub mod once;
 mod place;
 mod routine;
-mod shared;
 mod stmts;
 mod suggest;
 

@@ -5,7 +5,7 @@ use std::ops::Range;
 
 use tree_sitter::Node;
 
-use super::decls::{MAX_DIMS, check_data, check_type_name};
+use super::decls::{check_data, check_type_name};
 use super::{Cx, Used, exprs, stmts};
 use crate::items::{self, RoutineDecl, RoutineKind};
 use crate::names::{NameMap, fold};
@@ -27,16 +27,7 @@ pub(super) fn check_routine<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &'t Routi
         {
             check_type_name(cx, &t.name, t.range.clone());
         }
-        if usize::from(p.dims) > MAX_DIMS {
-            cx.report(
-                &rules::too_many_dimensions::RULE,
-                p.name_range.clone(),
-                format!(
-                    "`{}` has {} dimensions; RAPID arrays have at most {MAX_DIMS}",
-                    p.name, p.dims
-                ),
-            );
-        }
+        rules::too_many_dimensions::check(cx, &p.name, p.name_range.clone(), usize::from(p.dims));
         names.push((&p.name, p.name_range.clone()));
         params.entry(fold(&p.name)).or_insert(p);
     }
