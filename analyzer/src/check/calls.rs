@@ -170,24 +170,8 @@ fn check_args_unknown<'t>(cx: &mut Cx<'t>, args: Option<Node<'t>>) {
             exprs::place_or_value(cx, v);
         }
         if let Some(c) = parts.conditional {
-            conditional(cx, c);
+            rules::conditional_argument::check(cx, c);
         }
-    }
-}
-
-fn conditional<'t>(cx: &mut Cx<'t>, c: Node<'t>) {
-    let name = cx.node_text(c);
-    if crate::syntax_util::kind(c) != kind::IDENTIFIER || cx.optional_param(name).is_none() {
-        cx.report(
-            &rules::conditional_argument::RULE,
-            c.byte_range(),
-            format!(
-                "`?{name}` passes on an optional parameter of this routine, and `{name}` is not one"
-            ),
-        );
-    }
-    if crate::syntax_util::kind(c) == kind::IDENTIFIER {
-        let _ = cx.resolve_data(name);
     }
 }
 
@@ -268,7 +252,7 @@ fn report_argument<'t>(
                 exprs::place_or_value(cx, v);
             }
             if let Some(c) = parts.conditional {
-                conditional(cx, c);
+                rules::conditional_argument::check(cx, c);
             }
             return;
         }
@@ -277,37 +261,13 @@ fn report_argument<'t>(
         return;
     };
     if let Some(prev) = bound.repeats.and_then(|k| args.get(k)) {
-        let d = crate::diagnostic::Diagnostic::new(
-            &rules::duplicate_argument::RULE,
-            arg.byte_range(),
-            format!("`{}` is given twice", p.name),
-        )
-        .with_related(crate::diagnostic::Related {
-            file: None,
-            range: prev.byte_range(),
-            message: "first given here".into(),
-        });
-        cx.report_with(d);
+        rules::duplicate_argument::report(cx, p, arg.byte_range(), prev.byte_range());
     }
     if let (Some(other), Some(g)) = (bound.excludes, p.alt_group) {
-        let members: Vec<String> = sig.members(g).map(|q| format!("\\{}", q.name)).collect();
-        let other_name = sig
-            .params
-            .get(other)
-            .map(|q| q.name.as_str())
-            .unwrap_or_default();
-        cx.report(
-            &rules::conflicting_alternatives::RULE,
-            arg.byte_range(),
-            format!(
-                "\\{} and \\{other_name} exclude each other: give one of {}",
-                p.name,
-                members.join(" | ")
-            ),
-        );
+        rules::conflicting_alternatives::report(cx, sig, p, other, g, arg.byte_range());
     }
     if let Some(c) = parts.conditional {
-        conditional(cx, c);
+        rules::conditional_argument::check(cx, c);
         return;
     }
     match value {
@@ -355,12 +315,7 @@ fn report_missing(cx: &mut Cx<'_>, sig: &Signature, binding: &Binding, call: Ran
         );
     }
     for &g in &binding.missing_groups {
-        let members: Vec<String> = sig.members(g).map(|q| format!("\\{}", q.name)).collect();
-        cx.report(
-            &rules::missing_alternative::RULE,
-            call.clone(),
-            format!("`{}` needs one of {}", sig.name, members.join(" | ")),
-        );
+        rules::missing_alternative::report(cx, sig, g, call.clone());
     }
 }
 
@@ -378,71 +333,13 @@ fn check_value<'t>(cx: &mut Cx<'t>, p: &Param, v: Node<'t>) {
         }
         _ => exprs::reference(cx, v, &p.ty),
     };
-    let mode_ok = match p.mode {
-        Mode::In | Mode::Ref => true,
-        // Real programs pass persistents to VAR parameters of built-ins
-        // (e.g. a PERS btnres as \\Result), and controllers accept them.
-        Mode::Var => matches!(
-            place,
-            Place::Var | Place::Pers | Place::Unknown | Place::Param(_)
-        ),
-        Mode::Pers => matches!(
-            place,
-            Place::Pers | Place::Unknown | Place::Param(Mode::Pers | Mode::InOut)
-        ),
-        Mode::InOut => matches!(
-            place,
-            Place::Var | Place::Pers | Place::Unknown | Place::Param(_)
-        ),
-    };
-    if !mode_ok {
-        let wanted = match p.mode {
-            Mode::Var => "a variable",
-            Mode::Pers => "a persistent",
-            _ => "a variable or a persistent",
-        };
-        cx.report(
-            &rules::argument_mode::RULE,
-            v.byte_range(),
-            format!(
-                "{} is a {} parameter and needs {wanted}, found {}",
-                p.name,
-                p.mode.keyword(),
-                place.describe()
-            ),
-        );
+    if !rules::argument_mode::check(cx, p, place, v.byte_range()) {
         return;
     }
     if !cx.types.is_known(&actual) || matches!(p.ty, Ty::Unknown) {
         return;
     }
-    // `anytype` parameters take any type; an array of any rank (Dim's
-    // ArrPar) or an `anytype` array needs some array.
-    if p.any_rank || matches!(p.ty.element(), Ty::Any) {
-        if (p.any_rank || p.ty.dims() > 0) && actual.dims() == 0 {
-            cx.report(
-                &rules::array_argument::RULE,
-                v.byte_range(),
-                format!(
-                    "{} needs an array, found {}",
-                    p.name,
-                    exprs::a_type(&actual)
-                ),
-            );
-        }
-        return;
-    }
-    if p.ty.dims() != actual.dims() {
-        cx.report(
-            &rules::array_argument::RULE,
-            v.byte_range(),
-            format!(
-                "{} needs {}, found {}",
-                p.name,
-                exprs::a_type(&p.ty),
-                exprs::a_type(&actual)
-            ),
-        );
+    if !rules::array_argument::check(cx, p, &actual, v.byte_range()) {
         return;
     }
     if !cx.types.assignable(&p.ty, &actual) {
