@@ -9,7 +9,6 @@ use tree_sitter::Node;
 
 use super::{Cx, Place, exprs};
 use crate::catalogue::Mode;
-use crate::items::RoutineKind;
 use crate::rules;
 use crate::sema::def::Def;
 use crate::sema::signature::{Arg, Binding, BoundArg, Param, Signature, Target, bind_args};
@@ -63,32 +62,11 @@ pub(super) fn procedure_call<'t>(cx: &mut Cx<'t>, node: Node<'t>) {
                 check_args_unknown(cx, args);
                 return;
             };
-            // A built-in known by name only may be either kind: real code
-            // decides, and nothing of its call is checked.
-            match sig.kind {
-                _ if !sig.known => {}
-                RoutineKind::Func => cx.report(
-                    &rules::call_kind_mismatch::RULE,
-                    name_node.byte_range(),
-                    format!(
-                        "`{}` is a function: use its result, e.g. x := {}(...);",
-                        sig.name, sig.name
-                    ),
-                ),
-                RoutineKind::Trap => cx.report(
-                    &rules::call_kind_mismatch::RULE,
-                    name_node.byte_range(),
-                    format!(
-                        "`{}` is a TRAP: it is run by an interrupt (CONNECT), not called",
-                        sig.name
-                    ),
-                ),
-                RoutineKind::Proc => {}
-            }
+            rules::call_kind_mismatch::check_procedure_call(cx, &sig, name_node.byte_range());
             check_args(cx, &sig, args, name_node.byte_range());
         }
         None => {
-            not_a_routine(cx, name, name_node.byte_range());
+            rules::not_a_routine::check(cx, name, name_node.byte_range());
             check_args_unknown(cx, args);
         }
     }
@@ -113,47 +91,15 @@ pub(super) fn function_call<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Ty {
                 check_args_unknown(cx, args);
                 return Ty::Unknown;
             };
-            if sig.kind != RoutineKind::Func && sig.known {
-                cx.report(
-                    &rules::call_kind_mismatch::RULE,
-                    name_node.byte_range(),
-                    format!(
-                        "`{}` is {}, not a function: it has no value",
-                        sig.name,
-                        if sig.kind == RoutineKind::Trap {
-                            "a TRAP"
-                        } else {
-                            "a procedure"
-                        }
-                    ),
-                );
-            }
+            rules::call_kind_mismatch::check_function_call(cx, &sig, name_node.byte_range());
             check_args(cx, &sig, args, name_node.byte_range());
             sig.returns.clone().unwrap_or(Ty::Unknown)
         }
         None => {
-            not_a_routine(cx, name, name_node.byte_range());
+            rules::not_a_routine::check(cx, name, name_node.byte_range());
             check_args_unknown(cx, args);
             Ty::Unknown
         }
-    }
-}
-
-fn not_a_routine(cx: &mut Cx<'_>, name: &str, range: Range<usize>) {
-    if cx.resolve_data(name).is_some() {
-        cx.report(
-            &rules::not_a_routine::RULE,
-            range,
-            format!("`{name}` is data, not a routine"),
-        );
-    } else if cx.type_exists(name) {
-        cx.report(
-            &rules::not_a_routine::RULE,
-            range,
-            format!("`{name}` is a data type, not a routine"),
-        );
-    } else {
-        cx.unresolved(name, range, "routine");
     }
 }
 
@@ -209,15 +155,7 @@ fn report_argument<'t>(
     let index = match bound.target {
         Target::Param(i) => i,
         Target::TooMany => {
-            let positional = sig.params.iter().filter(|p| p.positional()).count();
-            cx.report(
-                &rules::argument_count::RULE,
-                arg.byte_range(),
-                format!(
-                    "too many arguments: `{}` takes {positional} without the optional ones",
-                    sig.name
-                ),
-            );
+            rules::argument_count::too_many(cx, sig, arg.byte_range());
             if let Some(v) = value
                 && crate::syntax_util::kind(v) != kind::STAR
             {
@@ -229,23 +167,7 @@ fn report_argument<'t>(
             let Some(n) = parts.name else {
                 return;
             };
-            let name = cx.node_text(n);
-            let known: Vec<String> = sig
-                .params
-                .iter()
-                .filter(|p| !p.positional())
-                .map(|p| format!("\\{}", p.name))
-                .collect();
-            let hint = if known.is_empty() {
-                "it has no optional parameters".to_owned()
-            } else {
-                format!("its optional parameters are {}", known.join(" "))
-            };
-            cx.report(
-                &rules::unknown_argument::RULE,
-                n.byte_range(),
-                format!("`{}` has no parameter `{name}`; {hint}", sig.name),
-            );
+            rules::unknown_argument::report(cx, sig, n);
             if let Some(v) = value
                 && crate::syntax_util::kind(v) != kind::STAR
             {
@@ -272,48 +194,19 @@ fn report_argument<'t>(
     }
     match value {
         Some(v) if p.switch => {
-            cx.report(
-                &rules::switch_argument::RULE,
-                arg.byte_range(),
-                format!("\\{} is a switch and takes no value", p.name),
-            );
+            rules::switch_argument::given_a_value(cx, p, arg.byte_range());
             exprs::place_or_value(cx, v);
         }
         Some(v) => check_value(cx, p, v),
         None if p.switch => {}
-        None if parts.backslash => cx.report(
-            &rules::switch_argument::RULE,
-            arg.byte_range(),
-            format!("\\{} needs a value: \\{}:=...", p.name, p.name),
-        ),
+        None if parts.backslash => rules::switch_argument::needs_a_value(cx, p, arg.byte_range()),
         None => {}
     }
 }
 
 /// The required parameters and `|` groups the call leaves out.
 fn report_missing(cx: &mut Cx<'_>, sig: &Signature, binding: &Binding, call: Range<usize>) {
-    let missing: Vec<&Param> = binding
-        .missing
-        .iter()
-        .filter_map(|&i| sig.params.get(i))
-        .collect();
-    if !missing.is_empty() {
-        let list: Vec<String> = missing
-            .iter()
-            .map(|p| format!("{} ({})", p.name, p.ty))
-            .collect();
-        cx.report(
-            &rules::argument_count::RULE,
-            call.clone(),
-            format!(
-                "`{}` is missing {} argument{}: {}",
-                sig.name,
-                if missing.len() == 1 { "an" } else { "required" },
-                if missing.len() == 1 { "" } else { "s" },
-                list.join(", ")
-            ),
-        );
-    }
+    rules::argument_count::missing(cx, sig, &binding.missing, call.clone());
     for &g in &binding.missing_groups {
         rules::missing_alternative::report(cx, sig, g, call.clone());
     }

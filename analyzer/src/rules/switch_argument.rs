@@ -1,3 +1,8 @@
+use std::ops::Range;
+
+use crate::check::Cx;
+use crate::sema::signature::Param;
+
 crate::declare_rule! {
     /// A switch given a value, or an optional argument given without one.
     ///
@@ -15,4 +20,23 @@ crate::declare_rule! {
     /// TPWrite "x" \Num;                       ! likewise
     /// ```
     pub static RULE = ("E303", "switch-argument", Error);
+}
+
+/// A value given at `range` to the switch `p`.
+pub(crate) fn given_a_value(cx: &mut Cx<'_>, p: &Param, range: Range<usize>) {
+    cx.report(
+        &RULE,
+        range,
+        format!("\\{} is a switch and takes no value", p.name),
+    );
+}
+
+/// `\Name` without a value at `range` for the parameter `p`, which is not
+/// a switch.
+pub(crate) fn needs_a_value(cx: &mut Cx<'_>, p: &Param, range: Range<usize>) {
+    cx.report(
+        &RULE,
+        range,
+        format!("\\{} needs a value: \\{}:=...", p.name, p.name),
+    );
 }
