@@ -31,22 +31,8 @@ impl Cx<'_> {
     fn builtin_used(&mut self, name: &str, origin: &Origin, range: Range<usize>) {
         match self.cat.availability(origin) {
             Availability::Yes => {}
-            Availability::NeedsOption(p) => {
-                let message = format!(
-                    "`{name}` needs the {} option (`{}` in [controller] options), which is not enabled",
-                    p.name, p.id
-                );
-                self.report(&rules::option_routine::RULE, range, message);
-            }
-            Availability::Newer { since, selected } => {
-                let message = format!("`{name}` is not in RobotWare {selected}; added in {since}");
-                self.report(&rules::builtin_version::RULE, range, message);
-            }
-            Availability::Removed { until, selected } => {
-                let message =
-                    format!("`{name}` is not in RobotWare {selected}; removed in {until}");
-                self.report(&rules::builtin_version::RULE, range, message);
-            }
+            Availability::NeedsOption(p) => rules::option_routine::report(self, name, p, range),
+            other => rules::builtin_version::report(self, name, &other, range),
         }
     }
 }

@@ -9,7 +9,7 @@ use super::Cx;
 use crate::rules;
 
 /// The longest string RAPID holds (the evaluator's limit too).
-const MAX_STRING: usize = rapid_evaluator::MAX_STRING_LEN;
+use rules::string_too_long::MAX_STRING;
 
 /// Placeholders and string lengths, anywhere in the file.
 pub(super) fn check_file_wide(cx: &mut Cx<'_>) {
@@ -44,22 +44,10 @@ fn check_file_wide_in(cx: &mut Cx<'_>, root: Node<'_>, regions: &[Range<usize>])
         let kind = node.kind_id();
         match kind {
             k if k == placeholder && overlaps(node) => {
-                let p = cx.node_text(node);
-                cx.report(
-                    &rules::incomplete_code::RULE,
-                    node.byte_range(),
-                    format!("unfilled placeholder {p}: this code is not finished"),
-                );
+                rules::incomplete_code::report(cx, node);
             }
             k if k == string && overlaps(node) => {
-                let len = string_length(cx, node);
-                if len > MAX_STRING {
-                    cx.report(
-                        &rules::string_too_long::RULE,
-                        node.byte_range(),
-                        format!("this string has {len} characters; a RAPID string holds at most {MAX_STRING}"),
-                    );
-                }
+                rules::string_too_long::check(cx, node);
             }
             _ => {}
         }
@@ -111,15 +99,4 @@ fn placeholder_or_long_string_regions(text: &str) -> Vec<Range<usize>> {
         }
     }
     regions
-}
-
-/// The number of characters of a string literal's value (escapes count one).
-fn string_length(cx: &Cx<'_>, node: Node<'_>) -> usize {
-    let mut cursor = node.walk();
-    node.named_children(&mut cursor)
-        .map(|c| match crate::syntax_util::kind(c) {
-            crate::syntax::kind::ESCAPE_SEQUENCE => 1,
-            _ => cx.node_text(c).chars().count(),
-        })
-        .sum()
 }

@@ -60,11 +60,7 @@ pub(super) fn check_routine<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &'t Routi
         if crate::syntax_util::kind(item) == crate::syntax::kind::DATA_DECLARATION {
             decl_nodes.push(item);
             if seen_statement {
-                cx.report(
-                    &rules::declaration_after_statement::RULE,
-                    item.byte_range(),
-                    "routine data must be declared before the routine's first statement",
-                );
+                rules::declaration_after_statement::report(cx, item.byte_range());
             }
             if let Some(d) = items::lower_data(item, cx.text) {
                 rules::shadowed_name::check(cx, &d.name, d.name_range.clone(), true);

@@ -53,11 +53,7 @@ pub(super) fn check_block<'t>(cx: &mut Cx<'t>, statements: &[Node<'t>]) {
                 .take_while(|n| kind_of(**n) != kind::LABEL)
                 .last()
                 .map_or(s.end_byte(), |n| n.end_byte());
-            cx.report(
-                &rules::unreachable_code::RULE,
-                s.start_byte()..end,
-                format!("this code can never run: it follows {by}"),
-            );
+            rules::unreachable_code::report(cx, s.start_byte()..end, by);
         }
         check_statement(cx, *s);
         if ended_by.is_none() {

@@ -1,3 +1,8 @@
+use std::ops::Range;
+
+use crate::catalogue::Availability;
+use crate::check::Cx;
+
 crate::declare_rule! {
     /// A built-in that the configured RobotWare version does not have.
     ///
@@ -21,4 +26,24 @@ crate::declare_rule! {
     /// ENDPROC
     /// ```
     pub static RULE = ("W102", "builtin-version", Warning);
+}
+
+/// The built-in `name`, used at `range`, that the controller's RobotWare
+/// version lacks (added later, or removed).
+pub(crate) fn report(
+    cx: &mut Cx<'_>,
+    name: &str,
+    availability: &Availability<'_>,
+    range: Range<usize>,
+) {
+    let message = match availability {
+        Availability::Newer { since, selected } => {
+            format!("`{name}` is not in RobotWare {selected}; added in {since}")
+        }
+        Availability::Removed { until, selected } => {
+            format!("`{name}` is not in RobotWare {selected}; removed in {until}")
+        }
+        _ => return,
+    };
+    cx.report(&RULE, range, message);
 }

@@ -1,3 +1,7 @@
+use std::ops::Range;
+
+use crate::check::Cx;
+
 crate::declare_rule! {
     /// Routine data declared after the routine's first statement.
     ///
@@ -15,4 +19,13 @@ crate::declare_rule! {
     /// ENDPROC
     /// ```
     pub static RULE = ("E408", "declaration-after-statement", Error);
+}
+
+/// Routine data declared at `range`, after a statement of the routine.
+pub(crate) fn report(cx: &mut Cx<'_>, range: Range<usize>) {
+    cx.report(
+        &RULE,
+        range,
+        "routine data must be declared before the routine's first statement",
+    );
 }

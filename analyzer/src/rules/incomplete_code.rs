@@ -1,3 +1,7 @@
+use tree_sitter::Node;
+
+use crate::check::Cx;
+
 crate::declare_rule! {
     /// An unfilled FlexPendant placeholder such as `<SMT>` or `<EXP>`.
     ///
@@ -18,4 +22,14 @@ crate::declare_rule! {
     /// ENDPROC
     /// ```
     pub static RULE = ("E412", "incomplete-code", Warning);
+}
+
+/// An unfilled placeholder (`<SMT>`, `<EXP>`...).
+pub(crate) fn report(cx: &mut Cx<'_>, node: Node<'_>) {
+    let p = cx.node_text(node);
+    cx.report(
+        &RULE,
+        node.byte_range(),
+        format!("unfilled placeholder {p}: this code is not finished"),
+    );
 }

@@ -1,3 +1,8 @@
+use std::ops::Range;
+
+use crate::catalogue::Package;
+use crate::check::Cx;
+
 crate::declare_rule! {
     /// A built-in of a RobotWare option that is not enabled.
     ///
@@ -22,4 +27,14 @@ crate::declare_rule! {
     /// ENDPROC
     /// ```
     pub static RULE = ("I102", "option-routine", Info);
+}
+
+/// The built-in `name`, used at `range`, of the option `p`, which the
+/// controller does not have.
+pub(crate) fn report(cx: &mut Cx<'_>, name: &str, p: &Package, range: Range<usize>) {
+    let message = format!(
+        "`{name}` needs the {} option (`{}` in [controller] options), which is not enabled",
+        p.name, p.id
+    );
+    cx.report(&RULE, range, message);
 }

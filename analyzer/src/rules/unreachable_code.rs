@@ -1,3 +1,7 @@
+use std::ops::Range;
+
+use crate::check::Cx;
+
 crate::declare_rule! {
     /// Statements after a `RETURN`, `EXIT`, `RAISE`, `GOTO`, `RETRY` or `TRYNEXT` in the same list.
     ///
@@ -14,4 +18,14 @@ crate::declare_rule! {
     /// TPWrite "done";     ! never runs
     /// ```
     pub static RULE = ("W204", "unreachable-code", Warning);
+}
+
+/// Statements at `range` that follow `by` (`RETURN`, `EXIT`, `GOTO`...)
+/// in their list with no label between.
+pub(crate) fn report(cx: &mut Cx<'_>, range: Range<usize>, by: &str) {
+    cx.report(
+        &RULE,
+        range,
+        format!("this code can never run: it follows {by}"),
+    );
 }
