@@ -235,16 +235,6 @@ fn check_value<'t>(cx: &mut Cx<'t>, p: &Param, v: Node<'t>) {
     if !rules::array_argument::check(cx, p, &actual, v.byte_range()) {
         return;
     }
-    if !cx.types.assignable(&p.ty, &actual) {
-        cx.report(
-            &rules::type_mismatch::RULE,
-            v.byte_range(),
-            format!(
-                "the argument {} should be {}, found {}",
-                p.name,
-                exprs::a_type(&p.ty),
-                exprs::a_type(&actual)
-            ),
-        );
-    }
+    let what = format_args!("the argument {}", p.name);
+    rules::type_mismatch::check_assignable(cx, v.byte_range(), what, &p.ty, &actual);
 }

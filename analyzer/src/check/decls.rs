@@ -143,13 +143,7 @@ pub(super) fn check_data<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &DataDecl, i
     if let Some(dims) = field(node, field::DIMENSIONS) {
         for d in fields(dims, field::DIMENSION) {
             let ty = exprs::expr(cx, d, Some(&Ty::num()));
-            if !cx.types.is_num_like(&ty) {
-                cx.report(
-                    &rules::type_mismatch::RULE,
-                    d.byte_range(),
-                    format!("an array size must be a num, found {ty}"),
-                );
-            }
+            rules::type_mismatch::check_array_size(cx, d.byte_range(), &ty);
         }
     }
     match field(node, field::VALUE) {
@@ -240,16 +234,12 @@ pub(super) fn check_unused_locals_of_module(cx: &mut Cx<'_>, module: &Module) {
                     module.data.get(i).map(|decl| decl.range.clone()),
                 ));
             }
-            Item::Routine(_) => found.push((
-                &rules::unused_routine::RULE,
-                range,
-                format!("the LOCAL routine `{name}` is never called in its module"),
-            )),
+            Item::Routine(_) => found.push((name, range)),
             _ => {}
         }
     }
-    for (rule, range, message) in found {
-        cx.report(rule, range, message);
+    for (name, range) in found {
+        rules::unused_routine::report(cx, name, range);
     }
     for d in data_found {
         cx.report_with(d);

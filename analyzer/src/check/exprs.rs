@@ -7,7 +7,7 @@ use tree_sitter::Node;
 
 use super::{Cx, Place, calls};
 use crate::rules;
-use crate::sema::typing::{self, IndexError};
+use crate::sema::typing;
 use crate::syntax::{field, kind};
 use crate::syntax_util::{Literal, field, fields, literal_aggregate};
 use crate::ty::Ty;
@@ -88,17 +88,7 @@ fn check_sized<'t>(
         return;
     }
     let actual = expr(cx, node, Some(expected));
-    if !cx.types.assignable(expected, &actual) {
-        cx.report(
-            &rules::type_mismatch::RULE,
-            node.byte_range(),
-            format!(
-                "{what} should be {}, found {}",
-                a_type(expected),
-                a_type(&actual)
-            ),
-        );
-    }
+    rules::type_mismatch::check_assignable(cx, node.byte_range(), what, expected, &actual);
 }
 
 /// "a num", "an orient", "an array num{*}".
@@ -190,14 +180,7 @@ fn element_type(elem: &Ty, dims: u8) -> Ty {
 
 /// An aggregate where the expected type is neither a record nor an array.
 fn report_not_aggregate(cx: &mut Cx<'_>, range: Range<usize>, expected: &Ty) {
-    cx.report(
-        &rules::type_mismatch::RULE,
-        range,
-        format!(
-            "an aggregate [...] cannot be {}; it is not a record or an array",
-            a_type(expected)
-        ),
-    );
+    rules::type_mismatch::report_not_aggregate(cx, range, expected);
 }
 
 /// What an element of a literal aggregate is, for messages (built only when
@@ -274,15 +257,7 @@ fn literal_check(
                 _ => "bool",
             };
             if !cx.types.accepts(expected, actual) {
-                cx.report(
-                    &rules::type_mismatch::RULE,
-                    range.clone(),
-                    format!(
-                        "{what} should be {}, found {}",
-                        a_type(expected),
-                        a_type(&Ty::named(actual))
-                    ),
-                );
+                rules::type_mismatch::report(cx, range.clone(), what, expected, &Ty::named(actual));
             }
         }
     }
@@ -296,16 +271,8 @@ fn unary<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Ty {
     match typing::unary(&cx.types, typing::unary_op(node), &ty) {
         Ok(ty) => ty,
         Err(()) => {
-            cx.report(
-                &rules::invalid_operands::RULE,
-                node.byte_range(),
-                format!(
-                    "`{}` cannot be applied to {}",
-                    cx.node_text(field(node, field::OPERATOR).unwrap_or(node))
-                        .to_ascii_uppercase(),
-                    a_type(&ty)
-                ),
-            );
+            let op = field(node, field::OPERATOR).unwrap_or(node);
+            rules::invalid_operands::report_unary(cx, node.byte_range(), op, &ty);
             Ty::Unknown
         }
     }
@@ -355,16 +322,7 @@ fn binary<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> Ty {
             ty
         }
         Err(fallback) => {
-            cx.report(
-                &rules::invalid_operands::RULE,
-                op_node.byte_range(),
-                format!(
-                    "`{}` cannot be applied to {} and {}",
-                    cx.node_text(op_node).to_ascii_uppercase(),
-                    a_type(&lt),
-                    a_type(&rt)
-                ),
-            );
+            rules::invalid_operands::report_binary(cx, op_node, &lt, &rt);
             fallback
         }
     }
@@ -420,27 +378,12 @@ fn index<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> (Ty, Place) {
     let indexes = fields(node, field::INDEX);
     for i in &indexes {
         let ty = expr(cx, *i, Some(&Ty::num()));
-        if !cx.types.is_num_like(&ty) {
-            cx.report(
-                &rules::non_numeric_index::RULE,
-                i.byte_range(),
-                format!("an index must be a num, found {}", a_type(&ty)),
-            );
-        }
+        rules::non_numeric_index::check(cx, i.byte_range(), &ty);
     }
     let (ty, error) = typing::index(&cx.types, &obj_ty, indexes.len());
-    let message = match error {
-        None => return (ty, place),
-        Some(IndexError::NotArray) => {
-            format!("{} is not an array and cannot be indexed", a_type(&obj_ty))
-        }
-        Some(IndexError::Count(dims)) => format!(
-            "{obj_ty} has {dims} dimension{}, indexed with {}",
-            if dims == 1 { "" } else { "s" },
-            indexes.len()
-        ),
-    };
-    cx.report(&rules::index_count::RULE, node.byte_range(), message);
+    if let Some(error) = error {
+        rules::index_count::report(cx, node.byte_range(), &obj_ty, &error, indexes.len());
+    }
     (ty, place)
 }
 

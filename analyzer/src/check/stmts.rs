@@ -3,7 +3,7 @@
 
 use tree_sitter::Node;
 
-use super::{Cx, Place, calls, exprs};
+use super::{Cx, calls, exprs};
 use crate::names::fold;
 use crate::rules;
 use crate::sema::labels::Label;
@@ -160,13 +160,7 @@ fn assignment<'t>(cx: &mut Cx<'t>, s: Node<'t>) {
         return;
     };
     let (ty, place) = exprs::place_or_value(cx, left);
-    if matches!(place, Place::Const | Place::ForVar | Place::ReadOnly) {
-        cx.report(
-            &rules::assign_to_constant::RULE,
-            left.byte_range(),
-            format!("cannot assign to {}", place.describe()),
-        );
-    }
+    rules::assign_to_constant::check(cx, left.byte_range(), place);
     exprs::check_expected(cx, right, &ty, "the assigned value");
 }
 

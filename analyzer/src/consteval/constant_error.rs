@@ -72,15 +72,7 @@ pub(crate) fn check_constant_errors<'t>(cx: &mut Cx<'t>, node: Node<'t>) {
     );
     cx.inits = Some(inits);
     for (range, e) in reports {
-        cx.report(
-            &crate::rules::constant_error::RULE,
-            range,
-            format!(
-                "this expression always fails when it runs: {} ({})",
-                e.code.name(),
-                e.message
-            ),
-        );
+        crate::rules::constant_error::report(cx, range, &e);
     }
 }
 

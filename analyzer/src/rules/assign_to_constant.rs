@@ -1,3 +1,7 @@
+use std::ops::Range;
+
+use crate::check::{Cx, Place};
+
 crate::declare_rule! {
     /// An assignment to a constant, a `FOR` loop variable or read-only data.
     ///
@@ -15,4 +19,15 @@ crate::declare_rule! {
     /// max := 20;
     /// ```
     pub static RULE = ("E401", "assign-to-constant", Error);
+}
+
+/// An assignment to the place `place` (the target at `range`).
+pub(crate) fn check(cx: &mut Cx<'_>, range: Range<usize>, place: Place) {
+    if matches!(place, Place::Const | Place::ForVar | Place::ReadOnly) {
+        cx.report(
+            &RULE,
+            range,
+            format!("cannot assign to {}", place.describe()),
+        );
+    }
 }

@@ -1,3 +1,7 @@
+use std::ops::Range;
+
+use crate::check::Cx;
+
 crate::declare_rule! {
     /// A constant expression that always fails with a run-time error.
     ///
@@ -27,4 +31,19 @@ crate::declare_rule! {
     /// part := StrPart("abc", 5, 2);      ! ERR_OUTOFBND
     /// ```
     pub static RULE = ("E413", "constant-error", Error);
+}
+
+/// A constant expression at `range` whose evaluation fails with `e` (the
+/// check, which evaluates the maximal constant parts of each statement, is
+/// `crate::consteval::check_constant_errors`).
+pub(crate) fn report(cx: &mut Cx<'_>, range: Range<usize>, e: &rapid_evaluator::EvalError) {
+    cx.report(
+        &RULE,
+        range,
+        format!(
+            "this expression always fails when it runs: {} ({})",
+            e.code.name(),
+            e.message
+        ),
+    );
 }

@@ -1,3 +1,5 @@
+use crate::diagnostic::Diagnostic;
+
 crate::declare_rule! {
     /// A token that must be there is missing, such as `;` or `ENDIF`.
     ///
@@ -23,4 +25,9 @@ crate::declare_rule! {
     /// ENDPROC
     /// ```
     pub static RULE = ("E002", "missing-token", Error);
+}
+
+/// `what` (a token's description) is missing at byte `at`.
+pub(crate) fn diagnostic(at: usize, what: &str) -> Diagnostic {
+    Diagnostic::new(&RULE, at..at, format!("missing {what}"))
 }

@@ -152,20 +152,7 @@ impl crate::check::Cx<'_> {
     /// Reports a name that resolves to nothing, with the most helpful code.
     pub(crate) fn unresolved(&mut self, name: &str, range: Range<usize>, what: &str) {
         if let Some(r) = self.local_elsewhere(name) {
-            let module = self
-                .task
-                .module(r)
-                .map(|m| m.name.clone())
-                .unwrap_or_default();
-            let mut d = Diagnostic::new(
-                &crate::rules::local_not_visible::RULE,
-                range,
-                format!("`{name}` is declared LOCAL in module {module} and cannot be used here"),
-            );
-            if let Some(rel) = self.related_item(r, "declared LOCAL here") {
-                d = d.with_related(rel);
-            }
-            self.report_with(d);
+            super::local_not_visible::report(self, name, range, r);
             return;
         }
         let mut message = format!("no {what} named `{name}` is declared in this task or built in");

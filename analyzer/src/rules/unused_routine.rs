@@ -1,3 +1,7 @@
+use std::ops::Range;
+
+use crate::check::Cx;
+
 crate::declare_rule! {
     /// A `LOCAL` routine that nothing in its module calls.
     ///
@@ -17,4 +21,14 @@ crate::declare_rule! {
     /// ENDPROC
     /// ```
     pub static RULE = ("W203", "unused-routine", Hint);
+}
+
+/// The `LOCAL` routine `name` (its name at `range`) that nothing in its
+/// module calls.
+pub(crate) fn report(cx: &mut Cx<'_>, name: &str, range: Range<usize>) {
+    cx.report(
+        &RULE,
+        range,
+        format!("the LOCAL routine `{name}` is never called in its module"),
+    );
 }

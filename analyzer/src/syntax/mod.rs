@@ -196,8 +196,7 @@ fn starts_line(node: Node<'_>, text: &str) -> bool {
 
 fn missing_diagnostic(node: Node<'_>, language: &Language) -> Diagnostic {
     let what = describe_symbol(language, node.kind_id(), node.kind());
-    let at = node.start_byte();
-    Diagnostic::new(&missing_token::RULE, at..at, format!("missing {what}"))
+    missing_token::diagnostic(node.start_byte(), &what)
 }
 
 fn error_diagnostic(node: Node<'_>, text: &str, language: &Language) -> Diagnostic {
