@@ -26,17 +26,7 @@ pub(super) fn collect_labels(cx: &mut Cx<'_>, found: Vec<Label>) {
         }
     }
     for (name, range, first) in dups {
-        let d = crate::diagnostic::Diagnostic::new(
-            &rules::duplicate_declaration::RULE,
-            range,
-            format!("the label `{name}` is declared twice in this routine"),
-        )
-        .with_related(crate::diagnostic::Related {
-            file: None,
-            range: first,
-            message: "first declared here".into(),
-        });
-        cx.report_with(d);
+        rules::duplicate_declaration::report_label(cx, &name, range, first);
     }
 }
 

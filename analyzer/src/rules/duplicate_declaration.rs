@@ -44,3 +44,18 @@ pub(crate) fn report(cx: &mut Cx<'_>, names: Vec<(&str, Range<usize>)>, scope: &
         }
     }
 }
+
+/// The label `name` declared again at `range`, first at `first`.
+pub(crate) fn report_label(cx: &mut Cx<'_>, name: &str, range: Range<usize>, first: Range<usize>) {
+    let d = Diagnostic::new(
+        &RULE,
+        range,
+        format!("the label `{name}` is declared twice in this routine"),
+    )
+    .with_related(crate::diagnostic::Related {
+        file: None,
+        range: first,
+        message: "first declared here".into(),
+    });
+    cx.report_with(d);
+}

@@ -290,3 +290,50 @@ mod tests {
         );
     }
 }
+
+#[cfg(test)]
+mod units {
+    /// Rules are units: outside `rules/`, a diagnostic is built only by the
+    /// parser's findings (`syntax/`: E001 to E003, which the parse tree
+    /// gives), the nesting bound (`nesting.rs`: W110 is where the tree is
+    /// cut) and the checker's generic `Cx::report` (`check/mod.rs`); and
+    /// nothing outside `rules/` reports through `Cx::report`.
+    #[test]
+    fn diagnostics_are_built_in_their_rules_files() {
+        let src = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+        let allowed = ["syntax/", "nesting.rs", "check/mod.rs", "diagnostic.rs"];
+        let mut found = Vec::new();
+        let mut stack = vec![src.clone()];
+        while let Some(dir) = stack.pop() {
+            for entry in std::fs::read_dir(&dir).expect("src readable").flatten() {
+                let path = entry.path();
+                if path.is_dir() {
+                    stack.push(path);
+                    continue;
+                }
+                let rel = path
+                    .strip_prefix(&src)
+                    .map(|p| p.to_string_lossy().replace('\\', "/"))
+                    .unwrap_or_default();
+                if !rel.ends_with(".rs")
+                    || rel.starts_with("rules/")
+                    || rel.contains("tests")
+                    || allowed.iter().any(|a| rel.starts_with(a))
+                {
+                    continue;
+                }
+                let text = std::fs::read_to_string(&path).expect("readable");
+                let code = text.split("#[cfg(test)]").next().unwrap_or_default();
+                for (i, line) in code.lines().enumerate() {
+                    if line.contains("Diagnostic::new(") || line.contains(".report(") {
+                        found.push(format!("{rel}:{}", i + 1));
+                    }
+                }
+            }
+        }
+        assert!(
+            found.is_empty(),
+            "diagnostics built outside their rule's file: {found:?}"
+        );
+    }
+}
