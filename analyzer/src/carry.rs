@@ -14,19 +14,7 @@ use crate::task::Unit;
 /// builds it again).
 pub fn carry_over(old_unit: &Unit, old: &[Diagnostic], unit: &Unit) -> Vec<Diagnostic> {
     let (old_text, new_text) = (old_unit.text.as_bytes(), unit.text.as_bytes());
-    let prefix = old_text
-        .iter()
-        .zip(new_text)
-        .take_while(|(a, b)| a == b)
-        .count();
-    let max_suffix = old_text.len().min(new_text.len()) - prefix;
-    let suffix = old_text
-        .iter()
-        .rev()
-        .zip(new_text.iter().rev())
-        .take(max_suffix)
-        .take_while(|(a, b)| a == b)
-        .count();
+    let (prefix, suffix) = crate::text::common_affixes(old_text, new_text);
     let old_end = old_text.len() - suffix;
     let new_end = new_text.len() - suffix;
     let moved = |r: &Range<usize>| -> Option<Range<usize>> {

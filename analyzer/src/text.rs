@@ -278,6 +278,22 @@ impl LineIndex {
     }
 }
 
+/// The lengths of the longest common prefix of `old` and `new`, and of
+/// their longest common suffix in what the prefix leaves (the two never
+/// overlap): what an edit between them kept at each end.
+pub fn common_affixes<T: PartialEq>(old: &[T], new: &[T]) -> (usize, usize) {
+    let prefix = old.iter().zip(new).take_while(|(a, b)| a == b).count();
+    let max_suffix = old.len().min(new.len()) - prefix;
+    let suffix = old
+        .iter()
+        .rev()
+        .zip(new.iter().rev())
+        .take(max_suffix)
+        .take_while(|(a, b)| a == b)
+        .count();
+    (prefix, suffix)
+}
+
 /// Is this the name of a RAPID source file? (`.mod .modx .sys .sysx .prg`, in
 /// any letter case.) `.pgf` program files are XML lists of modules, not RAPID.
 pub fn is_rapid_file_name(name: &str) -> bool {
@@ -311,6 +327,15 @@ pub fn is_program_file_name(name: &str) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn common_affixes_never_overlap() {
+        assert_eq!(common_affixes(b"abcxdef", b"abcdef"), (3, 3));
+        assert_eq!(common_affixes(b"aaa", b"aaaa"), (3, 0));
+        assert_eq!(common_affixes(b"", b"ab"), (0, 0));
+        assert_eq!(common_affixes(b"ab", b"ab"), (2, 0));
+        assert_eq!(common_affixes(&[1, 2, 3], &[1, 9, 3]), (1, 1));
+    }
 
     #[test]
     fn utf8_stays_utf8_and_latin1_keeps_every_byte() {

@@ -468,15 +468,7 @@ pub fn semantic_delta(old: &[u32], new: &[u32]) -> Option<lsp::SemanticTokensEdi
     if old == new {
         return None;
     }
-    let prefix = old.iter().zip(new).take_while(|(a, b)| a == b).count();
-    let max_suffix = old.len().min(new.len()) - prefix;
-    let suffix = old
-        .iter()
-        .rev()
-        .zip(new.iter().rev())
-        .take(max_suffix)
-        .take_while(|(a, b)| a == b)
-        .count();
+    let (prefix, suffix) = rapid_analyzer::text::common_affixes(old, new);
     // Edits are on whole tokens of five numbers, as clients expect.
     let prefix = prefix / 5 * 5;
     let suffix = suffix / 5 * 5;
