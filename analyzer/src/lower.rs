@@ -217,24 +217,7 @@ pub fn conditional(node: Node<'_>, text: &str) -> Expr {
 
 /// The operator of a binary expression, from the operator node's kind.
 pub fn binary_op(kind: &str) -> Option<BinOp> {
-    Some(match kind {
-        "+" => BinOp::Add,
-        "-" => BinOp::Sub,
-        "*" => BinOp::Mul,
-        "/" => BinOp::Div,
-        "div" => BinOp::IntDiv,
-        "mod" => BinOp::Mod,
-        "=" => BinOp::Eq,
-        "<>" => BinOp::Ne,
-        "<" => BinOp::Lt,
-        "<=" => BinOp::Le,
-        ">" => BinOp::Gt,
-        ">=" => BinOp::Ge,
-        "and" => BinOp::And,
-        "or" => BinOp::Or,
-        "xor" => BinOp::Xor,
-        _ => return None,
-    })
+    BinOp::parse(kind)
 }
 
 #[cfg(test)]

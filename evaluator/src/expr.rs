@@ -108,64 +108,9 @@ pub enum UnOp {
     Not,
 }
 
-/// Binary operators, with RAPID's typing rules.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum BinOp {
-    /// `+`: num, dnum, pos + pos, string concatenation.
-    Add,
-    /// `-`: num, dnum, pos - pos.
-    Sub,
-    /// `*`: num, dnum, num*pos, pos*num, pos*pos (cross product),
-    /// orient*orient (rotation composition).
-    Mul,
-    /// `/`: num and dnum.
-    Div,
-    /// `DIV`: integer division, integer operands only.
-    IntDiv,
-    /// `MOD`: integer remainder, integer operands only.
-    Mod,
-    /// `=` on any value type.
-    Eq,
-    /// `<>` on any value type.
-    Ne,
-    /// `<`
-    Lt,
-    /// `<=`
-    Le,
-    /// `>`
-    Gt,
-    /// `>=`
-    Ge,
-    /// `AND`
-    And,
-    /// `OR`
-    Or,
-    /// `XOR`
-    Xor,
-}
-
-impl BinOp {
-    /// The operator as written in RAPID.
-    pub fn as_str(self) -> &'static str {
-        match self {
-            BinOp::Add => "+",
-            BinOp::Sub => "-",
-            BinOp::Mul => "*",
-            BinOp::Div => "/",
-            BinOp::IntDiv => "DIV",
-            BinOp::Mod => "MOD",
-            BinOp::Eq => "=",
-            BinOp::Ne => "<>",
-            BinOp::Lt => "<",
-            BinOp::Le => "<=",
-            BinOp::Gt => ">",
-            BinOp::Ge => ">=",
-            BinOp::And => "AND",
-            BinOp::Or => "OR",
-            BinOp::Xor => "XOR",
-        }
-    }
-}
+/// Binary operators: the catalogue's ([`rapid_catalogue::operators::Op`]),
+/// whose table says which operand types each takes.
+pub use rapid_catalogue::operators::Op as BinOp;
 
 /// A plain description of a RAPID data type: a type name and, for arrays,
 /// the size of each dimension (`num{2,3}` is `name: "num", dims: [2, 3]`).

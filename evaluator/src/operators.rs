@@ -2,7 +2,7 @@
 //! operator takes is the catalogue's operator table
 //! (`rapid_catalogue::operators`), shared with the checker.
 
-use rapid_catalogue::operators::{self, Op};
+use rapid_catalogue::operators;
 
 use crate::error::{ErrorCode, EvalError, err};
 use crate::eval::{DNUM_INT_MAX, NUM_INT_MAX, check_len, describe, dnum_result, num_result};
@@ -137,10 +137,9 @@ pub(crate) fn binary(op: BinOp, a: Value, b: Value) -> Result<Value, EvalError> 
     let any_dnum = matches!(a, Dnum(_)) || matches!(b, Dnum(_));
     // The shared operator table says which operands an operator takes
     // (equality compares any two values of one type: `values_equal`).
-    let op_in_table = table_op(op);
-    if !op_in_table.is_equality() {
+    if !op.is_equality() {
         let known = match (a.type_name(), b.type_name()) {
-            (Some(x), Some(y)) => operators::binary(op_in_table, x, y).is_some(),
+            (Some(x), Some(y)) => operators::binary(op, x, y).is_some(),
             _ => false,
         };
         if !known {
@@ -249,27 +248,6 @@ pub(crate) fn binary(op: BinOp, a: Value, b: Value) -> Result<Value, EvalError> 
             crate::geometry::orient_value(&(p * q), false)
         }
         _ => mismatch(&a, &b),
-    }
-}
-
-/// The operator in the shared table.
-pub(crate) fn table_op(op: BinOp) -> Op {
-    match op {
-        BinOp::Add => Op::Add,
-        BinOp::Sub => Op::Sub,
-        BinOp::Mul => Op::Mul,
-        BinOp::Div => Op::Div,
-        BinOp::IntDiv => Op::IntDiv,
-        BinOp::Mod => Op::Mod,
-        BinOp::Eq => Op::Eq,
-        BinOp::Ne => Op::Ne,
-        BinOp::Lt => Op::Lt,
-        BinOp::Le => Op::Le,
-        BinOp::Gt => Op::Gt,
-        BinOp::Ge => Op::Ge,
-        BinOp::And => Op::And,
-        BinOp::Or => Op::Or,
-        BinOp::Xor => Op::Xor,
     }
 }
 
