@@ -53,6 +53,8 @@ pub struct ControllerOverride {
     pub robotware: Option<Version>,
     /// Option package ids; `None` keeps the backup's.
     pub options: Option<Vec<String>>,
+    /// The robot, for tasks whose `MOC.cfg` does not name one.
+    pub robot: Option<crate::robot::RobotSetting>,
 }
 
 /// Is this a file that describes a controller (`backinfo.txt`, or
@@ -204,6 +206,7 @@ mod tests {
         let sel = info.selection(&ControllerOverride {
             robotware: Some(Version::new(7, 1)),
             options: None,
+            robot: None,
         });
         assert_eq!(sel.robotware, Some(Version::new(7, 1)));
         assert!(sel.enabled("arc"));

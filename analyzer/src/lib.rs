@@ -18,6 +18,7 @@ pub mod lex;
 pub mod lower;
 pub mod names;
 pub mod nesting;
+pub mod robot;
 pub mod rules;
 mod sema;
 pub mod syntax;

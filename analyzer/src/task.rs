@@ -247,6 +247,11 @@ pub struct Task {
     /// Mechanical units configured for this task (`MOC.cfg`), folded; they
     /// are `mecunit` data.
     pub mecunits: std::collections::HashSet<String>,
+    /// The robot the task's moves are made by (`MOC.cfg`, else the
+    /// project's `[controller] robot`); set with [`Task::set_robot`].
+    pub robot: Option<Arc<crate::robot::TaskRobot>>,
+    /// Why a robot that is named is not used (not modelled, on a track).
+    pub robot_note: Option<String>,
     /// The `taskid` data RobotWare declares for each task of the controller
     /// (the task's name and `Id`: `T_ROB1Id`), folded: from `SYS.cfg`'s
     /// tasks and the backup's task folders named after their task.
@@ -309,6 +314,8 @@ struct InterfaceInputs {
     mecunits: Vec<String>,
     task_ids: Vec<String>,
     catalogue: Option<crate::catalogue::Selection>,
+    /// The robot's [`crate::robot::TaskRobot::fingerprint`].
+    robot: Option<String>,
     /// The hash [`shared_persistents`] gave.
     shared: u64,
 }
@@ -340,6 +347,8 @@ impl Task {
             locals: self.locals.clone(),
             signals: self.signals.clone(),
             mecunits: self.mecunits.clone(),
+            robot: self.robot.clone(),
+            robot_note: self.robot_note.clone(),
             task_ids: self.task_ids.clone(),
             interface: self.interface,
             inputs: self.inputs.clone(),
@@ -404,6 +413,8 @@ impl Task {
             locals,
             signals,
             mecunits: Default::default(),
+            robot: None,
+            robot_note: None,
             interface: hash_of(&inputs),
             inputs,
             constants: hash_of(&constants),
@@ -422,6 +433,18 @@ impl Task {
 
     /// Sets [`Task::catalogue`] to the view of `selection`: the interface
     /// hash covers it, so cached results are dropped when it changes.
+    /// Sets the task's robot (or the note why the one named is not used).
+    pub fn set_robot(&mut self, robot: Result<Option<Arc<crate::robot::TaskRobot>>, String>) {
+        let (robot, note) = match robot {
+            Ok(r) => (r, None),
+            Err(note) => (None, Some(note)),
+        };
+        self.inputs.robot = robot.as_ref().map(|r| r.fingerprint());
+        self.interface = hash_of(&self.inputs);
+        self.robot = robot;
+        self.robot_note = note;
+    }
+
     pub fn set_catalogue(&mut self, selection: &crate::catalogue::Selection) {
         self.inputs.catalogue = Some(selection.clone());
         self.interface = hash_of(&self.inputs);
@@ -560,6 +583,8 @@ pub struct Config {
     /// Modules the controller loads into tasks when it starts (`SYS.cfg`,
     /// section `CAB_TASK_MODULES`).
     pub task_modules: Vec<TaskModule>,
+    /// The robots (`MOC.cfg`, sections `ROBOT` and `ARM`).
+    pub robots: Vec<crate::robot::MocRobot>,
 }
 
 /// A module that `SYS.cfg` has the controller load into a task.
@@ -618,13 +643,14 @@ pub fn parse_config(cfg: &str) -> Config {
         mecunits: parse_moc_units(cfg),
         tasks,
         task_modules,
+        robots: crate::robot::parse_moc_robots(cfg),
     }
 }
 
 /// The entries of a section of a configuration file (`NAME:` then entries
 /// starting with `-`, continued over lines that end in `\`), each as one
 /// line.
-fn section_entries(cfg: &str, section: &str) -> Vec<String> {
+pub(crate) fn section_entries(cfg: &str, section: &str) -> Vec<String> {
     let mut out = Vec::new();
     let mut inside = false;
     let mut entry = String::new();
@@ -730,7 +756,7 @@ pub fn parse_eio_signals(cfg: &str) -> Signals {
 }
 
 /// The value of `-Option "value"` (or `-Option value`) in a config entry.
-fn option_value(entry: &str, option: &str) -> Option<String> {
+pub(crate) fn option_value(entry: &str, option: &str) -> Option<String> {
     let at = entry.find(&format!("{option} "))?;
     let rest = entry[at + option.len()..].trim_start();
     let value = match rest.strip_prefix('"') {

@@ -42,7 +42,7 @@ use serde::Deserialize;
 pub const FILE_NAME: &str = "rapid.toml";
 
 /// The whole configuration: one field per section.
-#[derive(Clone, Debug, Default, PartialEq, Eq, Deserialize)]
+#[derive(Clone, Debug, Default, PartialEq, Deserialize)]
 #[serde(default, deny_unknown_fields, rename_all = "kebab-case")]
 pub struct Config {
     /// Globs of files and folders never checked, relative to the
@@ -63,7 +63,7 @@ pub struct Config {
 
 /// `[controller]`: what a backup's `BACKINFO` would say; each key set here
 /// wins over the backup's.
-#[derive(Clone, Debug, Default, PartialEq, Eq, Deserialize)]
+#[derive(Clone, Debug, Default, PartialEq, Deserialize)]
 #[serde(default, deny_unknown_fields, rename_all = "kebab-case")]
 pub struct ControllerConfig {
     /// The RobotWare version, e.g. "6.15": calls are checked against its
@@ -73,6 +73,13 @@ pub struct ControllerConfig {
     /// The enabled option packages by id ("arc", "egm"...; `rapid builtins`
     /// lists them). Unset: the backup's, else none.
     pub options: Option<Vec<String>>,
+    /// The robot ("IRB 120-3/0.58", or MOC.cfg's "ROB1_120_0.58_3") for
+    /// tasks whose MOC.cfg does not name one: moves are checked against its
+    /// reach and joint limits. Unset: not checked.
+    pub robot: Option<String>,
+    /// The robot's working range of each axis, degrees (`[[-165, 165],
+    /// ...]`, six pairs). Unset: the model's data sheet.
+    pub joint_limits: Option<Vec<[f64; 2]>>,
 }
 
 impl ControllerConfig {
@@ -100,9 +107,56 @@ impl ControllerConfig {
                 }
             }
         }
+        let robot = match &self.robot {
+            Some(name) => {
+                match rapid_robot::lookup(name) {
+                    rapid_robot::Lookup::Found(_) => {}
+                    rapid_robot::Lookup::Unsupported(why) => {
+                        return Err(("robot".into(), format!("not modelled: {why}")));
+                    }
+                    rapid_robot::Lookup::Unknown => {
+                        let known: Vec<&str> = rapid_robot::models()
+                            .iter()
+                            .map(|m| m.name.as_str())
+                            .collect();
+                        return Err((
+                            "robot".into(),
+                            format!(
+                                "`{name}` is not a modelled robot; known: {}",
+                                known.join(", ")
+                            ),
+                        ));
+                    }
+                }
+                let limits = match &self.joint_limits {
+                    Some(l) => match <[[f64; 2]; 6]>::try_from(l.as_slice()) {
+                        Ok(l) if l.iter().all(|[lo, hi]| lo < hi) => Some(l),
+                        _ => {
+                            return Err((
+                                "joint-limits".into(),
+                                "six [lower, upper] pairs in degrees, lower below upper".into(),
+                            ));
+                        }
+                    },
+                    None => None,
+                };
+                Some(rapid_analyzer::robot::RobotSetting {
+                    name: name.clone(),
+                    limits,
+                })
+            }
+            None if self.joint_limits.is_some() => {
+                return Err((
+                    "joint-limits".into(),
+                    "joint limits need `robot` (the model they belong to)".into(),
+                ));
+            }
+            None => None,
+        };
         Ok(rapid_analyzer::controller::ControllerOverride {
             robotware,
             options: self.options.clone(),
+            robot,
         })
     }
 }

@@ -100,9 +100,7 @@ pub fn matches(arm: &Arm, model: &Model, j: &Joints, want: &Conf) -> bool {
     let Some(s) = sides(arm, j) else {
         return false;
     };
-    let bit = |value: f64, edge: f64, set: bool| {
-        value.abs() <= edge || (value < 0.0) == set
-    };
+    let bit = |value: f64, edge: f64, set: bool| value.abs() <= edge || (value < 0.0) == set;
     (0..=7).contains(&want.cfx)
         && bit(s.axis1, EDGE_MM, want.cfx & 4 != 0)
         && bit(s.lower_arm, EDGE_MM, want.cfx & 2 != 0)

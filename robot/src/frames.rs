@@ -130,7 +130,10 @@ pub fn robtarget(v: &Value) -> Result<RobTarget, FrameError> {
 
 fn extax(v: &Value, what: &'static str) -> Result<[f64; 6], FrameError> {
     let mut out = [0.0; 6];
-    for (o, n) in out.iter_mut().zip(["eax_a", "eax_b", "eax_c", "eax_d", "eax_e", "eax_f"]) {
+    for (o, n) in out
+        .iter_mut()
+        .zip(["eax_a", "eax_b", "eax_c", "eax_d", "eax_e", "eax_f"])
+    {
         *o = num(v, n, what)?;
     }
     Ok(out)

@@ -87,7 +87,10 @@ impl Arm {
         if !j.iter().all(|a| a.is_finite()) {
             return None;
         }
-        self.opw.try_forward(&self.to_chain(j)).ok().map(|p| iso_of_pose(&p))
+        self.opw
+            .try_forward(&self.to_chain(j))
+            .ok()
+            .map(|p| iso_of_pose(&p))
     }
 
     /// Every joint solution for tool0 at `pose` (base frame), each angle in

@@ -42,8 +42,8 @@ pub use conf::Conf;
 pub use kinematics::{Arm, ArmPoints, Joints};
 pub use model::{Lookup, Model, lookup, model_by_name, models};
 pub use reach::{
-    CLOSE_TO_SINGULARITY, Event, POSITION_NOT_COMPATIBLE, POSITION_OUTSIDE_REACH, ReachError,
-    Solution, out_of_reach_by, violation,
+    CLOSE_TO_SINGULARITY, Event, LIMIT_TOLERANCE_DEG, POSITION_NOT_COMPATIBLE,
+    POSITION_OUTSIDE_REACH, ReachError, Solution, out_of_reach_by, violation,
 };
 
 /// The working range of each axis, degrees.
@@ -127,7 +127,11 @@ impl Robot {
 
     /// The solution for tool0 at `pose` (base frame), in configuration
     /// `conf` when given (ConfJ/ConfL on), else any within the limits.
-    pub fn reach(&self, pose: &Isometry3<f64>, conf: Option<&Conf>) -> Result<Solution, ReachError> {
+    pub fn reach(
+        &self,
+        pose: &Isometry3<f64>,
+        conf: Option<&Conf>,
+    ) -> Result<Solution, ReachError> {
         reach::reach(self, pose, conf, None)
     }
 

@@ -237,7 +237,11 @@ mod tests {
             "ROB1_120_0.58_3",
             "IRB 120",
         ] {
-            assert_eq!(model_by_name(n).map(|m| m.name.as_str()), Some("IRB 120-3/0.58"), "{n}");
+            assert_eq!(
+                model_by_name(n).map(|m| m.name.as_str()),
+                Some("IRB 120-3/0.58"),
+                "{n}"
+            );
         }
         assert_eq!(
             model_by_name("ROB1_2400_1.55_16").map(|m| m.name.as_str()),

@@ -134,7 +134,13 @@ fn axis_times<'a>(
 }
 
 /// A joint move (MoveJ, MoveAbsJ) from joints `from` to `to`.
-pub fn joint_move(robot: &Robot, from: &Joints, to: &Joints, speed: &Speed, ends: Ends) -> MoveTime {
+pub fn joint_move(
+    robot: &Robot,
+    from: &Joints,
+    to: &Joints,
+    speed: &Speed,
+    ends: Ends,
+) -> MoveTime {
     let mut travel = [0.0; 6];
     for (t, (a, b)) in travel.iter_mut().zip(from.iter().zip(to)) {
         *t = (b - a).abs();
@@ -204,7 +210,9 @@ fn arc(
     let e2 = normal.cross(&e1);
     let angle_of = |p: &Vector3<f64>| {
         let d = p - centre;
-        d.dot(&e2).atan2(d.dot(&e1)).rem_euclid(std::f64::consts::TAU)
+        d.dot(&e2)
+            .atan2(d.dot(&e1))
+            .rem_euclid(std::f64::consts::TAU)
     };
     let total = angle_of(b);
     Some((r * total, move |s: f64| {
@@ -226,7 +234,9 @@ pub fn cartesian_move(
     speed: &Speed,
     ends: Ends,
 ) -> Result<CartesianMove, ReachError> {
-    let start = robot.forward(from).ok_or(ReachError::OutOfReach { by: 0.0 })?;
+    let start = robot
+        .forward(from)
+        .ok_or(ReachError::OutOfReach { by: 0.0 })?;
     let (p0, p1) = (start.translation.vector, to.translation.vector);
     let (q0, q1) = (start.rotation, to.rotation);
     let rotation = q0.angle_to(&q1).to_degrees();
@@ -260,7 +270,13 @@ pub fn cartesian_move(
                 Limit::Tcp,
             ),
             (
-                profile(rotation, speed.v_ori, ORI_ACCEL, ends.from_rest, ends.to_rest),
+                profile(
+                    rotation,
+                    speed.v_ori,
+                    ORI_ACCEL,
+                    ends.from_rest,
+                    ends.to_rest,
+                ),
                 Limit::Orientation,
             ),
         ]

@@ -88,7 +88,11 @@ impl std::fmt::Display for ReachError {
                 write!(f, "the position is {by:.1} mm out of the arm's reach")
             }
             ReachError::JointLimit {
-                axis, angle, bound, by, ..
+                axis,
+                angle,
+                bound,
+                by,
+                ..
             } => write!(
                 f,
                 "axis {axis} would be at {angle:.1} degrees, {by:.1} degrees beyond its limit of {bound:.1}"
@@ -102,14 +106,19 @@ impl std::fmt::Display for ReachError {
     }
 }
 
-/// The first axis beyond its working range, if any: (axis 1-6, bound,
+/// How far (degrees) past a bound an axis may be and still count as
+/// inside: a robtarget is stored in single precision, so the angles
+/// recomputed from a target taught at a bound are off by some 0.001 degree.
+pub const LIMIT_TOLERANCE_DEG: f64 = 0.01;
+
+/// The axis furthest beyond its working range, if any: (axis 1-6, bound,
 /// excess in degrees).
 pub fn violation(limits: &JointLimits, j: &Joints) -> Option<(usize, f64, f64)> {
     let mut worst: Option<(usize, f64, f64)> = None;
     for (i, (a, [lo, hi])) in j.iter().zip(limits.0.iter()).enumerate() {
-        let v = if a < lo {
+        let v = if *a < lo - LIMIT_TOLERANCE_DEG {
             Some((i + 1, *lo, lo - a))
-        } else if a > hi {
+        } else if *a > hi + LIMIT_TOLERANCE_DEG {
             Some((i + 1, *hi, a - hi))
         } else {
             None
@@ -142,8 +151,8 @@ pub fn out_of_reach_by(robot: &Robot, pose: &Isometry3<f64>) -> f64 {
 
 /// The solution for tool0 at `pose` (base frame). With `conf`, the
 /// solution must have that configuration (ConfL/ConfJ on); without, any
-/// solution within the working ranges does, the one nearest `near` (the
-/// robot's current joints) when given, else the first.
+/// solution within the working ranges does: the one nearest `near` (the
+/// robot's current joints) when given, else nearest all axes at zero.
 pub fn reach(
     robot: &Robot,
     pose: &Isometry3<f64>,
@@ -179,12 +188,11 @@ pub fn reach(
             .fold(0.0, f64::max)
     };
     let Some(want) = conf else {
-        let best = match near {
-            Some(n) => within
-                .iter()
-                .min_by(|a, b| distance(a, n).total_cmp(&distance(b, n))),
-            None => within.first(),
-        };
+        // Nearest the robot's joints, else nearest all axes at zero.
+        let n = near.copied().unwrap_or([0.0; 6]);
+        let best = within
+            .iter()
+            .min_by(|a, b| distance(a, &n).total_cmp(&distance(b, &n)));
         return match best {
             Some(j) => Ok(solution(j)),
             None => Err(least_violation(robot, all.iter())),

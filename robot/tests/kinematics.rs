@@ -3,7 +3,7 @@
 
 use nalgebra::{Isometry3, Translation3, UnitQuaternion, Vector3};
 use rapid_robot::frames::{Tool, WObj};
-use rapid_robot::{Conf, JointLimits, ReachError, Robot, models, model_by_name};
+use rapid_robot::{Conf, JointLimits, ReachError, Robot, model_by_name, models};
 
 fn robot(name: &str) -> Robot {
     Robot::new(model_by_name(name).unwrap_or_else(|| panic!("no model {name}")))
@@ -13,7 +13,10 @@ fn robot(name: &str) -> Robot {
 struct Lcg(u64);
 impl Lcg {
     fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
         (self.0 >> 11) as f64 / (1u64 << 53) as f64
     }
     fn between(&mut self, lo: f64, hi: f64) -> f64 {
@@ -39,7 +42,13 @@ fn forward_kinematics_meets_every_published_home_position() {
         let home = r.forward(&[0.0; 6]).expect("finite");
         let err = (home.translation.vector - Vector3::from(m.home)).norm();
         worst = worst.max(err);
-        assert!(err < 0.01, "{}: home {:?}, published {:?}", m.name, home.translation, m.home);
+        assert!(
+            err < 0.01,
+            "{}: home {:?}, published {:?}",
+            m.name,
+            home.translation,
+            m.home
+        );
         assert!(home.rotation.angle_to(&facing) < 1e-9, "{}", m.name);
         assert_eq!(r.conf_of(&[0.0; 6]), Conf::default(), "{}", m.name);
     }
@@ -62,7 +71,11 @@ fn inverse_meets_forward_on_random_poses_in_every_configuration() {
             }
             // Away from the wrist singularity and quadrant edges, where
             // several solutions are the same pose.
-            if j[4].abs() < 3.0 || [j[0], j[3], j[5]].iter().any(|a| (a / 90.0 - (a / 90.0).round()).abs() < 0.03) {
+            if j[4].abs() < 3.0
+                || [j[0], j[3], j[5]]
+                    .iter()
+                    .any(|a| (a / 90.0 - (a / 90.0).round()).abs() < 0.03)
+            {
                 continue;
             }
             let pose = r.forward(&j).expect("finite");
@@ -74,19 +87,32 @@ fn inverse_meets_forward_on_random_poses_in_every_configuration() {
             let back = r.forward(&sol.joints).expect("finite");
             let (dp, da) = pose_error(&pose, &back);
             worst = (worst.0.max(dp), worst.1.max(da));
-            assert!(dp < 1e-6 && da < 1e-6, "{}: {j:?} -> {:?}", m.name, sol.joints);
+            assert!(
+                dp < 1e-6 && da < 1e-6,
+                "{}: {j:?} -> {:?}",
+                m.name,
+                sol.joints
+            );
             // Robots whose cfx is not used reach a pose with the same
             // cf1, cf4 and cf6 in two elbow configurations: either will do.
             if m.cfx == rapid_robot::model::Cfx::Arm {
                 for (a, b) in j.iter().zip(&sol.joints) {
-                    assert!((a - b).abs() < 1e-6, "{}: {j:?} -> {:?} ({conf})", m.name, sol.joints);
+                    assert!(
+                        (a - b).abs() < 1e-6,
+                        "{}: {j:?} -> {:?} ({conf})",
+                        m.name,
+                        sol.joints
+                    );
                 }
             }
             seen.insert((m.name.clone(), conf.cfx));
             tried += 1;
         }
     }
-    eprintln!("round trip: largest errors {:.2e} mm, {:.2e} deg", worst.0, worst.1);
+    eprintln!(
+        "round trip: largest errors {:.2e} mm, {:.2e} deg",
+        worst.0, worst.1
+    );
     // Every arm configuration occurs on the arms that use cfx.
     let irb120: std::collections::HashSet<i32> = seen
         .iter()
@@ -138,13 +164,17 @@ fn confdata_chooses_among_the_solutions() {
     // One turn forward is past axis 6's 400 degrees.
     let want = Conf { cf6: 4, ..want };
     match r.reach(&pose, Some(&want)) {
-        Err(ReachError::JointLimit { axis: 6, angle, by, .. }) => {
+        Err(ReachError::JointLimit {
+            axis: 6, angle, by, ..
+        }) => {
             assert!((angle - 420.0).abs() < 1e-6 && (by - 20.0).abs() < 1e-6);
         }
         other => panic!("{other:?}"),
     }
     // Without confdata (ConfL\Off), the solution nearest the given joints.
-    let s = r.reach_near(&pose, None, &[20.0, 10.0, 20.0, 30.0, 45.0, -280.0]).unwrap();
+    let s = r
+        .reach_near(&pose, None, &[20.0, 10.0, 20.0, 30.0, 45.0, -280.0])
+        .unwrap();
     assert!((s.joints[5] + 300.0).abs() < 1e-6);
 }
 
@@ -158,7 +188,8 @@ fn every_error_case() {
         Err(e @ ReachError::OutOfReach { by }) => {
             // The wrist centre at (1000, 0, 362): 1000 - 579.8 mm past reach.
             let forearm = (70.0f64 * 70.0 + 302.0 * 302.0).sqrt();
-            let expected: f64 = Vector3::new(1000.0f64, 0.0, 290.0 + 72.0 - 290.0).norm() - 270.0 - forearm;
+            let expected: f64 =
+                Vector3::new(1000.0f64, 0.0, 290.0 + 72.0 - 290.0).norm() - 270.0 - forearm;
             assert!((by - expected).abs() < 1e-6, "{by} vs {expected}");
             assert_eq!(e.event().number, 50050);
             assert_eq!(e.rapid_error(), "ERR_OUTSIDE_REACH");
@@ -169,7 +200,11 @@ fn every_error_case() {
     let j = [170.0, 0.0, 0.0, 0.0, 30.0, 0.0];
     let pose = r.forward(&j).unwrap();
     match r.reach(&pose, Some(&r.conf_of(&j))) {
-        Err(e @ ReachError::JointLimit { axis, by, bound, .. }) => {
+        Err(
+            e @ ReachError::JointLimit {
+                axis, by, bound, ..
+            },
+        ) => {
             assert_eq!((axis, bound), (1, 165.0));
             assert!((by - 5.0).abs() < 1e-6, "{by}");
             assert_eq!(e.event().title, "Position outside reach");

@@ -13,6 +13,7 @@ mod calls;
 mod decls;
 pub(crate) mod exprs;
 mod file_wide;
+pub(crate) mod motion;
 pub mod once;
 mod place;
 mod routine;
@@ -122,6 +123,9 @@ pub(crate) struct Cx<'t> {
     /// Lowered initial values of module data for rule E413, made on first
     /// use and kept for the whole check.
     pub(crate) inits: Option<crate::consteval::InitCache>,
+    /// Whether the task turns configuration monitoring off anywhere
+    /// (`ConfL\Off`, `ConfJ\Off`), found on the first move checked.
+    pub(crate) conf_off: Option<motion::ConfOff>,
     /// Signatures of the routines called so far, by the address of their
     /// declaration (and whether it is declared in the task).
     signatures: HashMap<(usize, bool), std::rc::Rc<crate::sema::signature::Signature>>,
@@ -182,6 +186,7 @@ impl<'t> Cx<'t> {
             module_close_memo: HashMap::new(),
             reused_signals: HashMap::new(),
             inits: None,
+            conf_off: None,
             signatures: HashMap::new(),
             clean_literals: HashSet::new(),
         }

@@ -81,6 +81,9 @@ fn check_statement<'t>(cx: &mut Cx<'t>, s: Node<'t>) {
                 calls::procedure_call(cx, s);
             }
         });
+        if kind == kind::PROCEDURE_CALL && cx.task.robot.is_some() {
+            super::motion::check(cx, s);
+        }
         return;
     }
     if crate::syntax_util::is_compound_statement(kind)

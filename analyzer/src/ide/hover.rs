@@ -48,6 +48,11 @@ pub fn hover(task: &Task, unit: usize, offset: usize) -> Option<HoverResult> {
                 markdown.push_str("\n\n---\n\n");
                 markdown.push_str(&extra);
             }
+            // The task's robot: the joint angles of a robtarget's value.
+            if let Some(joints) = crate::robot::joints_of_def(task, &def) {
+                markdown.push_str("\n\n");
+                markdown.push_str(&joints);
+            }
             return Some(HoverResult {
                 range: node.byte_range(),
                 markdown,

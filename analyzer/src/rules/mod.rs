@@ -15,6 +15,7 @@ pub mod builtin_version;
 pub mod call_kind_mismatch;
 pub mod condition_not_bool;
 pub mod conditional_argument;
+pub mod configuration_mismatch;
 pub mod conflicting_alternatives;
 pub mod connect_target;
 pub mod constant_error;
@@ -30,6 +31,7 @@ pub mod handler_only_statement;
 pub mod incomplete_code;
 pub mod index_count;
 pub mod invalid_operands;
+pub mod joint_out_of_range;
 pub mod local_not_visible;
 pub mod missing_alternative;
 pub mod missing_initializer;
@@ -47,6 +49,7 @@ pub mod shared_persistent_mismatch;
 pub mod string_too_long;
 pub mod switch_argument;
 pub mod syntax_error;
+pub mod target_out_of_reach;
 pub mod too_many_dimensions;
 pub mod type_mismatch;
 pub mod unconfigured_signal;
@@ -101,6 +104,8 @@ pub static RULES: &[&Rule] = &[
     &incomplete_code::RULE,
     &constant_error::RULE,
     &persistent_in_routine::RULE,
+    &target_out_of_reach::RULE,
+    &joint_out_of_range::RULE,
     &option_routine::RULE,
     &unconfigured_signal::RULE,
     &nesting_too_deep::RULE,
@@ -113,6 +118,7 @@ pub static RULES: &[&Rule] = &[
     &shadowed_name::RULE,
     &float_equality::RULE,
     &duplicate_module::RULE,
+    &configuration_mismatch::RULE,
 ];
 
 /// The rules a check runs. A rule switched off is not reported, and the

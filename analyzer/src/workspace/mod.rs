@@ -409,6 +409,7 @@ impl Workspace {
             controller.options,
         ));
         task.set_controller_names(mecunits, self.task_ids_for(&key));
+        task.set_robot(self.robot_for(&key));
         if let Some(controller) = controller_of(&key).filter(|_| grouping == Grouping::Backup) {
             let (shared, hash) = match self.controllers.get(controller) {
                 Some(c) => c.clone(),
@@ -507,6 +508,23 @@ impl Workspace {
             ids.insert(crate::names::fold(&format!("{name}Id")));
         }
         ids
+    }
+
+    /// The robot of a task: the `MOC.cfg` robots that apply to it (its
+    /// backup's or the extra paths'), else the project's setting.
+    fn robot_for(&self, key: &str) -> Result<Option<Arc<crate::robot::TaskRobot>>, String> {
+        let by_place = self
+            .configs
+            .iter()
+            .filter(|(path, _)| key.starts_with(config_root(path)))
+            .map(|(_, config)| config);
+        let mocs: Vec<&crate::robot::MocRobot> = self
+            .extra_configs
+            .iter()
+            .chain(by_place)
+            .flat_map(|c| &c.robots)
+            .collect();
+        crate::robot::resolve(key, &mocs, self.controller.robot.as_ref())
     }
 
     /// The configuration that applies to a task: its signals (`None` when
