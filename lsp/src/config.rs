@@ -479,6 +479,29 @@ mod tests {
             bad.contains(":2: [controller]: `arcc` is not an option package"),
             "{bad}"
         );
+        let robot = check("[controller]\nrobot = \"ROB1_120_0.58_3\"\njoint-limits = [[-90, 90], [-110, 110], [-110, 70], [-160, 160], [-120, 120], [-400, 400]]\n").map(|c| c.controller.resolve());
+        assert!(
+            matches!(robot, Ok(Ok(ref o)) if o.robot.as_ref().is_some_and(|r| r.limits.is_some_and(|l| l[0] == [-90.0, 90.0]))),
+            "{robot:?}"
+        );
+        let bad = check("[controller]\nrobot = \"IRB 9999\"\n")
+            .err()
+            .unwrap_or_default();
+        assert!(
+            bad.contains("is not a modelled robot; known: IRB 120-3/0.58"),
+            "{bad}"
+        );
+        let bad = check("[controller]\nrobot = \"IRB 14000\"\n")
+            .err()
+            .unwrap_or_default();
+        assert!(
+            bad.contains("not modelled: IRB 14000: a seven-axis dual arm"),
+            "{bad}"
+        );
+        let bad = check("[controller]\nrobot = \"IRB 120\"\njoint-limits = [[1, 0]]\n")
+            .err()
+            .unwrap_or_default();
+        assert!(bad.contains("six [lower, upper] pairs"), "{bad}");
     }
 
     #[test]
