@@ -73,7 +73,7 @@ impl Arm {
     }
 
     /// The controller's angles (degrees) of the serial chain's.
-    fn from_chain(&self, q: &[f64; 6]) -> Joints {
+    fn of_chain(&self, q: &[f64; 6]) -> Joints {
         let mut j = q.map(f64::to_degrees);
         if self.coupled {
             j[2] += j[1];
@@ -106,7 +106,7 @@ impl Arm {
             .inverse(&p)
             .iter()
             .map(|q| {
-                let mut j = self.from_chain(q);
+                let mut j = self.of_chain(q);
                 for a in &mut j {
                     *a = wrap180(*a);
                 }

@@ -58,7 +58,7 @@ pub struct Speed {
 /// starting and ending at rest or not.
 pub fn profile(d: f64, v: f64, a: f64, from_rest: bool, to_rest: bool) -> f64 {
     let d = d.abs();
-    if d <= 0.0 || !(v > 0.0) || !(a > 0.0) {
+    if d <= 0.0 || v.is_nan() || a.is_nan() || v <= 0.0 || a <= 0.0 {
         return 0.0;
     }
     let ramps = f64::from(u8::from(from_rest) + u8::from(to_rest));
