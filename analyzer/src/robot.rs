@@ -294,7 +294,9 @@ mod tests {
         assert_eq!(r.bounds[0], (Some(-1.5), Some(1.5)));
         assert_eq!(r.bounds[2], (None, Some(1.0)));
         assert!((r.base.translation.vector.x - 500.0).abs() < 1e-9);
-        let t = resolve("b/RAPID/TASK1", &[r], None).unwrap().unwrap();
+        let t = resolve("b/RAPID/TASK1", &[r], None)
+            .expect("a value in a test")
+            .expect("a value in a test");
         assert_eq!(t.robot.model.name, "IRB 120-3/0.58");
         assert!((t.robot.limits.0[0][1] - 1.5f64.to_degrees()).abs() < 1e-9);
         assert!((t.robot.limits.0[2][1] - 1f64.to_degrees()).abs() < 1e-9);
@@ -305,12 +307,18 @@ mod tests {
             limits: None,
         };
         let t = resolve("b/RAPID/TASK1", &[r], Some(&setting))
-            .unwrap()
-            .unwrap();
+            .expect("a value in a test")
+            .expect("a value in a test");
         assert_eq!(t.robot.model.name, "IRB 120-3/0.58");
-        let t = resolve("prog", &[], Some(&setting)).unwrap().unwrap();
+        let t = resolve("prog", &[], Some(&setting))
+            .expect("a value in a test")
+            .expect("a value in a test");
         assert_eq!(t.robot.model.name, "IRB 2600-12/1.65");
-        assert!(resolve("prog", &[], None).unwrap().is_none());
+        assert!(
+            resolve("prog", &[], None)
+                .expect("a value in a test")
+                .is_none()
+        );
         let yumi = RobotSetting {
             name: "IRB 14000".into(),
             limits: None,
@@ -336,10 +344,10 @@ mod tests {
             .units
             .iter()
             .position(|u| u.path == "cell/M.mod")
-            .unwrap();
+            .expect("a value in a test");
         // The base is 500 mm along x: [874,0,630] is the home position.
-        let at = text.find("pHome").unwrap();
-        let h = crate::ide::hover(&task, unit, at).unwrap();
+        let at = text.find("pHome").expect("a value in a test");
+        let h = crate::ide::hover(&task, unit, at).expect("a value in a test");
         assert!(
             h.markdown.contains(
                 "IRB 120-3/0.58 (tool0, wobj0): axes [0.00, 0.00, 0.00, 0.00, 0.00, 0.00]"
@@ -347,8 +355,8 @@ mod tests {
             "{}",
             h.markdown
         );
-        let at = text.find("pFar").unwrap();
-        let h = crate::ide::hover(&task, unit, at).unwrap();
+        let at = text.find("pFar").expect("a value in a test");
+        let h = crate::ide::hover(&task, unit, at).expect("a value in a test");
         assert!(
             h.markdown.contains("mm out of the arm's reach"),
             "{}",

@@ -128,14 +128,14 @@ fn confdata_chooses_among_the_solutions() {
     // A pose several arm configurations reach within the working ranges:
     // each configuration's solution is the one confdata picks.
     let j = [20.0, 10.0, 20.0, 30.0, 45.0, 60.0];
-    let pose = r.forward(&j).unwrap();
+    let pose = r.forward(&j).expect("a value in a test");
     let mut confs = Vec::new();
     for s in r.arm().inverse(&pose) {
         if rapid_robot::violation(&r.limits, &s).is_some() {
             continue;
         }
         let c = r.conf_of(&s);
-        let got = r.reach(&pose, Some(&c)).unwrap();
+        let got = r.reach(&pose, Some(&c)).expect("a value in a test");
         assert_eq!(got.conf, c);
         for (a, b) in s.iter().zip(&got.joints) {
             assert!((a - b).abs() < 1e-6, "{c}: {s:?} {:?}", got.joints);
@@ -159,7 +159,7 @@ fn confdata_chooses_among_the_solutions() {
         cf6: -4,
         cfx: 0,
     };
-    let s = r.reach(&pose, Some(&want)).unwrap();
+    let s = r.reach(&pose, Some(&want)).expect("a value in a test");
     assert!((s.joints[5] + 300.0).abs() < 1e-6, "{:?}", s.joints);
     // One turn forward is past axis 6's 400 degrees.
     let want = Conf { cf6: 4, ..want };
@@ -174,7 +174,7 @@ fn confdata_chooses_among_the_solutions() {
     // Without confdata (ConfL\Off), the solution nearest the given joints.
     let s = r
         .reach_near(&pose, None, &[20.0, 10.0, 20.0, 30.0, 45.0, -280.0])
-        .unwrap();
+        .expect("a value in a test");
     assert!((s.joints[5] + 300.0).abs() < 1e-6);
 }
 
@@ -198,7 +198,7 @@ fn every_error_case() {
     }
     // Beyond axis 1's range (±165): reachable at 170 only.
     let j = [170.0, 0.0, 0.0, 0.0, 30.0, 0.0];
-    let pose = r.forward(&j).unwrap();
+    let pose = r.forward(&j).expect("a value in a test");
     match r.reach(&pose, Some(&r.conf_of(&j))) {
         Err(
             e @ ReachError::JointLimit {
@@ -218,7 +218,7 @@ fn every_error_case() {
     // range stops it, so the error stays a joint limit.
     // Reachable, but not in the programmed configuration.
     let j = [30.0, 10.0, 20.0, 40.0, 50.0, 10.0];
-    let pose = r.forward(&j).unwrap();
+    let pose = r.forward(&j).expect("a value in a test");
     let wrong = Conf {
         cf1: 0,
         cf4: 2,
@@ -236,7 +236,7 @@ fn every_error_case() {
 
 #[test]
 fn moc_bounds_replace_the_data_sheet_limits() {
-    let m = model_by_name("IRB 120-3/0.58").unwrap();
+    let m = model_by_name("IRB 120-3/0.58").expect("a value in a test");
     let limits = JointLimits::of(m).with_moc_bounds(&[
         (Some(-1.0), Some(1.0)),
         (None, None),
@@ -248,7 +248,7 @@ fn moc_bounds_replace_the_data_sheet_limits() {
     assert!((limits.0[0][1] - 57.29578).abs() < 1e-4);
     let r = Robot::new(m).with_limits(limits);
     let j = [60.0, 0.0, 0.0, 0.0, 30.0, 0.0];
-    let pose = r.forward(&j).unwrap();
+    let pose = r.forward(&j).expect("a value in a test");
     assert!(matches!(
         r.reach(&pose, Some(&r.conf_of(&j))),
         Err(ReachError::JointLimit { axis: 1, .. })
@@ -261,8 +261,10 @@ fn parallel_arm_robots_measure_axis_3_from_the_horizontal() {
     // Tilting the lower arm forward with axis 3 at zero keeps the forearm
     // horizontal: the TCP moves forward and down only by the lower arm's
     // arc, and the flange keeps facing forwards.
-    let home = r.forward(&[0.0; 6]).unwrap();
-    let tilted = r.forward(&[0.0, 30.0, 0.0, 0.0, 0.0, 0.0]).unwrap();
+    let home = r.forward(&[0.0; 6]).expect("a value in a test");
+    let tilted = r
+        .forward(&[0.0, 30.0, 0.0, 0.0, 0.0, 0.0])
+        .expect("a value in a test");
     let d = tilted.translation.vector - home.translation.vector;
     let s = 30f64.to_radians();
     assert!((d.x - 705.0 * s.sin()).abs() < 1e-6, "{d:?}");
@@ -286,13 +288,15 @@ fn tool_and_work_object_frames() {
         oframe: Isometry3::translation(10.0, 20.0, 0.0),
     };
     let j = [-10.0, 20.0, 10.0, 30.0, 60.0, -20.0];
-    let (target, conf) = r.calc_rob_t(&j, &tool, &wobj).unwrap();
+    let (target, conf) = r.calc_rob_t(&j, &tool, &wobj).expect("a value in a test");
     let rt = rapid_robot::frames::RobTarget {
         pose: target,
         conf,
         extax: [9e9; 6],
     };
-    let s = r.calc_joint_t(&rt, &tool, &wobj, true).unwrap();
+    let s = r
+        .calc_joint_t(&rt, &tool, &wobj, true)
+        .expect("a value in a test");
     for (a, b) in j.iter().zip(&s.joints) {
         assert!((a - b).abs() < 1e-6, "{j:?} {:?}", s.joints);
     }
@@ -306,13 +310,15 @@ fn tool_and_work_object_frames() {
         uframe: Isometry3::translation(0.0, 0.0, 100.0),
         oframe: Isometry3::identity(),
     };
-    let (target, conf) = r.calc_rob_t(&j, &fixed, &held).unwrap();
+    let (target, conf) = r.calc_rob_t(&j, &fixed, &held).expect("a value in a test");
     let rt = rapid_robot::frames::RobTarget {
         pose: target,
         conf,
         extax: [9e9; 6],
     };
-    let s = r.calc_joint_t(&rt, &fixed, &held, true).unwrap();
+    let s = r
+        .calc_joint_t(&rt, &fixed, &held, true)
+        .expect("a value in a test");
     for (a, b) in j.iter().zip(&s.joints) {
         assert!((a - b).abs() < 1e-6, "{j:?} {:?}", s.joints);
     }

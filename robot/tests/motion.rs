@@ -7,7 +7,7 @@ use rapid_robot::motion::{
 use rapid_robot::{Robot, model_by_name};
 
 fn irb120() -> Robot {
-    Robot::new(model_by_name("IRB 120-3/0.58").unwrap())
+    Robot::new(model_by_name("IRB 120-3/0.58").expect("a value in a test"))
 }
 
 const FINE: Ends = Ends {
@@ -71,7 +71,7 @@ fn joint_move_time_is_the_slowest_axis() {
 fn linear_move_time_and_path() {
     let r = irb120();
     let start = [0.0, 10.0, 10.0, 0.0, 60.0, 0.0];
-    let from = r.forward(&start).unwrap();
+    let from = r.forward(&start).expect("a value in a test");
     let to = Translation3::new(0.0, 100.0, 0.0) * from;
     let m = cartesian_move(
         &r,
@@ -82,11 +82,11 @@ fn linear_move_time_and_path() {
         &speed(100.0),
         FINE,
     )
-    .unwrap();
+    .expect("a value in a test");
     // 100 mm at v100 with 0.5 mm ramps: 1.01 s, the TCP the limit.
     assert_eq!(m.time.limit, Limit::Tcp);
     assert!((m.time.seconds - 1.01).abs() < 1e-9, "{:?}", m.time);
-    let end = r.forward(&m.end.joints).unwrap();
+    let end = r.forward(&m.end.joints).expect("a value in a test");
     assert!((end.translation.vector - to.translation.vector).norm() < 1e-6);
     // A zone at the end: no deceleration.
     let zone = Ends {
@@ -102,7 +102,7 @@ fn linear_move_time_and_path() {
         &speed(100.0),
         zone,
     )
-    .unwrap();
+    .expect("a value in a test");
     assert!((m.time.seconds - 1.005).abs() < 1e-9);
 }
 
@@ -110,7 +110,7 @@ fn linear_move_time_and_path() {
 fn circular_move_follows_the_arc() {
     let r = irb120();
     let start = [0.0, 10.0, 10.0, 0.0, 60.0, 0.0];
-    let from = r.forward(&start).unwrap();
+    let from = r.forward(&start).expect("a value in a test");
     let p = from.translation.vector;
     // A half circle of radius 50 mm: 157.08 mm at v100.
     let via = p + nalgebra::Vector3::new(50.0, 50.0, 0.0);
@@ -118,7 +118,8 @@ fn circular_move_follows_the_arc() {
         (p + nalgebra::Vector3::new(0.0, 100.0, 0.0)).into(),
         from.rotation,
     );
-    let m = cartesian_move(&r, &start, &to, Path::Arc(via), None, &speed(100.0), FINE).unwrap();
+    let m = cartesian_move(&r, &start, &to, Path::Arc(via), None, &speed(100.0), FINE)
+        .expect("a value in a test");
     let length = std::f64::consts::PI * 50.0;
     assert!(
         (m.time.seconds - ((length - 1.0) / 100.0 + 0.02)).abs() < 1e-9,
@@ -131,7 +132,7 @@ fn circular_move_follows_the_arc() {
 fn a_linear_move_out_of_reach_stops() {
     let r = irb120();
     let start = [0.0, 10.0, 10.0, 0.0, 60.0, 0.0];
-    let from = r.forward(&start).unwrap();
+    let from = r.forward(&start).expect("a value in a test");
     let to = Translation3::new(800.0, 0.0, 0.0) * from;
     assert!(
         cartesian_move(

@@ -253,7 +253,7 @@ mod tests {
                 joint: false
             }
         );
-        assert_eq!(conf_off_in("CONFJ \\OFF;").joint, true);
+        assert!(conf_off_in("CONFJ \\OFF;").joint);
         assert_eq!(conf_off_in("! conf\n"), ConfOff::default());
         assert!(is_joint_move("MoveJDO") && is_joint_move("MoveAbsJ") && !is_joint_move("MoveL"));
     }
