@@ -126,6 +126,20 @@ fn check_args<'t>(cx: &mut Cx<'t>, sig: &Signature, args: Option<Node<'t>>, call
         check_args_unknown(cx, args);
         return;
     }
+    let (args, parts, binding) = bind_call(cx, sig, args);
+    for ((arg, parts), bound) in args.iter().zip(&parts).zip(&binding.args) {
+        report_argument(cx, sig, &args, *arg, parts, bound);
+    }
+    report_missing(cx, sig, &binding, call);
+}
+
+/// A call's arguments (the `arguments` node's), their parts and their
+/// binding to `sig`'s parameters.
+pub(super) fn bind_call<'t>(
+    cx: &Cx<'t>,
+    sig: &Signature,
+    args: Option<Node<'t>>,
+) -> (Vec<Node<'t>>, Vec<ArgumentParts<'t>>, Binding) {
     let args = args.map(|a| fields(a, field::ARGUMENT)).unwrap_or_default();
     let parts: Vec<_> = args.iter().map(|&a| argument_parts(a)).collect();
     let given: Vec<Arg<'_>> = parts
@@ -136,10 +150,7 @@ fn check_args<'t>(cx: &mut Cx<'t>, sig: &Signature, args: Option<Node<'t>>, call
         })
         .collect();
     let binding = bind_args(sig, &given);
-    for ((arg, parts), bound) in args.iter().zip(&parts).zip(&binding.args) {
-        report_argument(cx, sig, &args, *arg, parts, bound);
-    }
-    report_missing(cx, sig, &binding, call);
+    (args, parts, binding)
 }
 
 /// The findings of one argument: where it goes, and its value.

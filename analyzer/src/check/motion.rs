@@ -17,9 +17,9 @@ use super::Cx;
 use crate::consteval::{EnvOptions, is_builtin_call, with_env};
 use crate::rules;
 use crate::sema::def::Def;
-use crate::sema::signature::{Arg, Signature, Target, bind_args};
+use crate::sema::signature::{Signature, Target};
 use crate::syntax::{field, kind};
-use crate::syntax_util::{argument_parts, field, fields};
+use crate::syntax_util::field;
 
 /// Does the task turn configuration monitoring off for linear (`ConfL`)
 /// and joint (`ConfJ`) moves anywhere?
@@ -103,18 +103,7 @@ pub(crate) fn check<'t>(cx: &mut Cx<'t>, node: Node<'t>) {
     if wanted[0].is_none() && wanted[2].is_none() {
         return;
     }
-    let args = field(node, field::ARGUMENTS)
-        .map(|a| fields(a, field::ARGUMENT))
-        .unwrap_or_default();
-    let parts: Vec<_> = args.iter().map(|&a| argument_parts(a)).collect();
-    let given: Vec<Arg<'_>> = parts
-        .iter()
-        .map(|p| match p.name {
-            Some(n) => Arg::Named(cx.node_text(n)),
-            None => Arg::Positional,
-        })
-        .collect();
-    let binding = bind_args(&sig, &given);
+    let (_, parts, binding) = super::calls::bind_call(cx, &sig, field(node, field::ARGUMENTS));
     let mut values: [Option<Node<'t>>; 5] = [None; 5];
     for (p, bound) in parts.iter().zip(&binding.args) {
         if let Target::Param(i) = bound.target
