@@ -32,7 +32,7 @@ use crate::project::{Discovery, Environment, SourceFile, Sources};
 
 pub use crate::project::Skip;
 pub use fix::apply_safe_fixes;
-pub use run::run;
+pub use run::{report_in, run};
 pub use settings::{LintSettings, Overrides, normalize};
 
 /// Output formats of `rapid check`.

@@ -16,7 +16,7 @@
 //! when every test passed, 1 when one failed or had an error (or none was
 //! found), 2 for usage errors.
 
-mod report;
+pub mod report;
 
 use std::io::Write;
 use std::path::PathBuf;
