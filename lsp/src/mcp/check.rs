@@ -8,7 +8,7 @@ use rapid_analyzer::diagnostic::{Diagnostic, Severity};
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
-use super::roots::{Confined, resolve};
+use super::roots::{Confined, resolve, resolve_unsaved};
 use super::{Answer, shown};
 use crate::check::{CheckArgs, Checked, Format, apply_safe_fixes, report_in};
 
@@ -124,7 +124,7 @@ fn target(roots: &[PathBuf], path: Option<&str>, text: Option<&str>) -> Result<T
     };
     let file = match path {
         Some(path) => {
-            let path = resolve(roots, path)?;
+            let path = resolve_unsaved(roots, path)?;
             if path.is_dir() {
                 path.join(format!("{}.mod", module_name(text)))
             } else {
@@ -481,7 +481,10 @@ pub fn format(roots: &[PathBuf], params: FormatParams) -> Result<Answer<FormatRe
     let path = params
         .path
         .as_deref()
-        .map(|p| resolve(roots, p))
+        .map(|p| match params.text {
+            Some(_) => resolve_unsaved(roots, p),
+            None => resolve(roots, p),
+        })
         .transpose()?;
     let text = match (&params.text, &path) {
         (Some(text), _) => text.clone(),

@@ -480,10 +480,7 @@ fn symbols_summary(r: &SymbolsReport) -> String {
             super::check::plural(t.modules.len())
         ));
         for x in &t.routines {
-            out.push_str(&format!(
-                "  {} {}  ({}:{})\n",
-                x.kind, x.declaration, x.file, x.line
-            ));
+            out.push_str(&format!("  {}  ({}:{})\n", x.declaration, x.file, x.line));
         }
         for d in &t.data {
             let value = d

@@ -124,9 +124,19 @@ pub fn real_path(path: &Path) -> Option<PathBuf> {
     Some(std::fs::canonicalize(parent).ok()?.join(name))
 }
 
-/// `path` (relative: to the first root) resolved and checked to be inside
-/// `roots`, or why not.
+/// `path` (relative: to the first root), a file or folder that exists,
+/// resolved and checked to be inside `roots`, or why not.
 pub fn resolve(roots: &[PathBuf], path: &str) -> Result<PathBuf, String> {
+    let real = resolve_unsaved(roots, path)?;
+    if !real.exists() {
+        return Err(format!("{path}: no such file or folder"));
+    }
+    Ok(real)
+}
+
+/// [`resolve`] for the file of an unsaved text, which need not exist (its
+/// folder must).
+pub fn resolve_unsaved(roots: &[PathBuf], path: &str) -> Result<PathBuf, String> {
     let given = Path::new(path.trim());
     if given.as_os_str().is_empty() {
         return Err("the path is empty".to_owned());
@@ -303,7 +313,8 @@ mod tests {
             dir.join("inner/a.mod")
         );
         // An unsaved module that does not exist yet, inside.
-        assert!(resolve(&roots, "new.mod").is_ok());
+        assert!(resolve_unsaved(&roots, "new.mod").is_ok());
+        assert!(resolve(&roots, "new.mod").is_err());
         for outside in [
             "../b.mod",
             "..",
