@@ -149,8 +149,12 @@ fn unsaved_file(text: &str) -> PathBuf {
         .join(format!("{}.mod", module_name(text)))
 }
 
-/// The name of the first module of `text` (`untitled` without one).
+/// The name of the first module of `text` (`untitled` without one, or for
+/// a text too large to be a module, which is not parsed).
 fn module_name(text: &str) -> String {
+    if text.len() as u64 > crate::project::MAX_FILE_BYTES {
+        return "untitled".to_owned();
+    }
     let unit = rapid_analyzer::task::Unit::new("<text>".to_owned(), text.to_owned(), None);
     unit.items
         .modules
