@@ -7,9 +7,9 @@
 
 mod support;
 
-use serde_json::{Value, json};
+use serde_json::json;
 use support::mcp::{Client, project, structured, summary};
-use support::{scratch, write};
+use support::write;
 #[test]
 fn every_tool_is_listed_with_its_schemas_and_annotations() {
     let dir = project("list");

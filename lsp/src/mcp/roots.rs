@@ -294,6 +294,10 @@ impl Environment for Confined {
 mod tests {
     use super::*;
 
+    fn nothing_excluded() -> Excluder {
+        std::sync::Arc::new(|_, _| false)
+    }
+
     fn scratch(name: &str) -> PathBuf {
         let dir =
             std::env::temp_dir().join(format!("rapid-mcp-roots-{name}-{}", std::process::id()));
@@ -340,7 +344,7 @@ mod tests {
         let roots = vec![dir.join("inner")];
         assert!(resolve(&roots, "link.mod").is_err());
         let env = Confined::new(roots);
-        let walked = env.walk(&dir.join("inner"), None, &std::sync::Arc::new(|_, _| false));
+        let walked = env.walk(&dir.join("inner"), None, &nothing_excluded());
         assert!(
             !walked
                 .iter()
@@ -362,7 +366,7 @@ mod tests {
         env.lay(dir.join("inner/new.mod"), "MODULE new\nENDMODULE\n".into());
         let read = env.read(&dir.join("inner/a.mod")).expect("read");
         assert!(String::from_utf8_lossy(&read).contains("changed"));
-        let walked = env.walk(&dir, None, &std::sync::Arc::new(|_, _| false));
+        let walked = env.walk(&dir, None, &nothing_excluded());
         let files: Vec<_> = walked
             .iter()
             .filter_map(|w| match w {
