@@ -371,17 +371,15 @@ pub struct FixReport {
 /// `fix`: the safe fixes of a text applied, in up to four passes (a fix can
 /// make room for another); nothing is written.
 pub fn fix(roots: &[PathBuf], params: FixParams) -> Result<Answer<FixReport>, String> {
-    let original = match (&params.text, &params.path) {
-        (Some(text), _) => text.clone(),
-        (None, Some(path)) => {
-            let path = resolve(roots, path)?;
-            let env = Confined::new(roots.to_vec());
-            crate::project::read_source(&env, &path)
-                .map_err(|why| format!("{}: {why}", shown(roots, &path)))?
-                .text
-        }
-        (None, None) => return Err("give `text`, `path`, or both".to_owned()),
+    let path = match params.text {
+        Some(_) => None,
+        None => params
+            .path
+            .as_deref()
+            .map(|p| resolve(roots, p))
+            .transpose()?,
     };
+    let original = text_of(roots, params.text.as_deref(), path.as_deref())?;
     let check_params = CheckParams {
         path: params.path.clone(),
         text: None,
@@ -454,6 +452,17 @@ pub fn fix(roots: &[PathBuf], params: FixParams) -> Result<Answer<FixReport>, St
     Ok(Answer::new(summary, report))
 }
 
+/// The text a request gives, else the text of the file at `path`.
+fn text_of(roots: &[PathBuf], text: Option<&str>, path: Option<&Path>) -> Result<String, String> {
+    match (text, path) {
+        (Some(text), _) => Ok(text.to_owned()),
+        (None, Some(path)) => crate::project::read_source(&Confined::new(roots.to_vec()), path)
+            .map(|file| file.text)
+            .map_err(|why| format!("{}: {why}", shown(roots, path))),
+        (None, None) => Err("give `text`, `path`, or both".to_owned()),
+    }
+}
+
 /// The arguments of `format`.
 #[derive(Debug, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
@@ -490,15 +499,7 @@ pub fn format(roots: &[PathBuf], params: FormatParams) -> Result<Answer<FormatRe
             None => resolve(roots, p),
         })
         .transpose()?;
-    let text = match (&params.text, &path) {
-        (Some(text), _) => text.clone(),
-        (None, Some(path)) => {
-            crate::project::read_source(&env, path)
-                .map_err(|why| format!("{}: {why}", shown(roots, path)))?
-                .text
-        }
-        (None, None) => return Err("give `text`, `path`, or both".to_owned()),
-    };
+    let text = text_of(roots, params.text.as_deref(), path.as_deref())?;
     let start = path
         .clone()
         .unwrap_or_else(|| roots.first().cloned().unwrap_or_default());
