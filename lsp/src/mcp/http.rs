@@ -3,6 +3,7 @@
 //! `Host` is not a loopback name, against DNS rebinding).
 
 use std::net::SocketAddr;
+use std::path::PathBuf;
 use std::sync::Arc;
 
 use hyper_util::rt::TokioIo;
@@ -13,7 +14,11 @@ use rmcp::transport::streamable_http_server::{StreamableHttpServerConfig, Stream
 use super::roots::Roots;
 use super::{MAX_MESSAGE_BYTES, RapidMcp};
 
-pub async fn serve(roots: Arc<Roots>, addr: &str) -> Result<(), String> {
+/// Serves sessions at `addr`, each with its own roots: `given` (`--root`)
+/// and its client's.
+pub async fn serve(given: Vec<PathBuf>, addr: &str) -> Result<(), String> {
+    // Said at the start rather than at the first session.
+    Roots::new(&given)?;
     let addr: SocketAddr = addr
         .parse()
         .map_err(|_| format!("--http {addr}: expected an address such as 127.0.0.1:7343"))?;
@@ -32,9 +37,11 @@ pub async fn serve(roots: Arc<Roots>, addr: &str) -> Result<(), String> {
     }
     let mut config = StreamableHttpServerConfig::default();
     config.max_request_body_bytes = MAX_MESSAGE_BYTES;
-    let server = RapidMcp::new(roots);
     let service = StreamableHttpService::new(
-        move || Ok(server.clone()),
+        move || {
+            let roots = Roots::new(&given).map_err(std::io::Error::other)?;
+            Ok(RapidMcp::new(Arc::new(roots)))
+        },
         Arc::new(LocalSessionManager::default()),
         config,
     );

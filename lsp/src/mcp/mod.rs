@@ -72,10 +72,6 @@ pub struct McpArgs {
 }
 
 pub fn run(args: McpArgs) -> ExitCode {
-    let roots = match Roots::new(&args.roots) {
-        Ok(roots) => Arc::new(roots),
-        Err(e) => return fail(&e),
-    };
     let runtime = match tokio::runtime::Builder::new_multi_thread()
         .enable_all()
         .build()
@@ -85,8 +81,8 @@ pub fn run(args: McpArgs) -> ExitCode {
     };
     let served = runtime.block_on(async move {
         match args.http {
-            Some(addr) => http::serve(roots, &addr).await,
-            None => serve_stdio(roots).await,
+            Some(addr) => http::serve(args.roots, &addr).await,
+            None => serve_stdio(&args.roots).await,
         }
     });
     match served {
@@ -101,8 +97,9 @@ fn fail(message: &str) -> ExitCode {
     ExitCode::from(2)
 }
 
-async fn serve_stdio(roots: Arc<Roots>) -> Result<(), String> {
+async fn serve_stdio(given: &[PathBuf]) -> Result<(), String> {
     use rmcp::ServiceExt;
+    let roots = Arc::new(Roots::new(given)?);
     use rmcp::transport::async_rw::AsyncRwTransport;
     let (stdin, stdout) = rmcp::transport::stdio();
     let transport =
