@@ -37,21 +37,31 @@ pub enum Format {
 /// The catalogue `args` ask for: the whole one, or one version's with its
 /// options (entries it lacks are left out).
 fn catalogue_for(args: &BuiltinsArgs) -> Result<Catalogue, String> {
+    catalogue_of(args.robotware.as_deref(), args.options.as_deref())
+        .map_err(|e| format!("rapid builtins: {e}"))
+}
+
+/// The whole catalogue, or the catalogue of the RobotWare version `robotware`
+/// with the option packages `options` (every one when `None`).
+pub fn catalogue_of(
+    robotware: Option<&str>,
+    options: Option<&[String]>,
+) -> Result<Catalogue, String> {
     let base = rapid_analyzer::catalogue::base();
-    let Some(text) = &args.robotware else {
-        if args.options.is_some() {
-            return Err("rapid builtins: --options needs --robotware".into());
+    let Some(text) = robotware else {
+        if options.is_some() {
+            return Err("--options needs --robotware".into());
         }
         return Ok(base.select(&Selection::default()));
     };
-    let version = Version::parse(text).map_err(|e| format!("rapid builtins: {e}"))?;
-    let options = match &args.options {
-        Some(o) => o.clone(),
+    let version = Version::parse(text).map_err(|e| e.to_string())?;
+    let options = match options {
+        Some(o) => o.to_vec(),
         None => base.packages.iter().map(|p| p.id.clone()).collect(),
     };
     for o in &options {
         if base.package(o).is_none() {
-            return Err(format!("rapid builtins: no option package `{o}`"));
+            return Err(format!("no option package `{o}`"));
         }
     }
     Ok(base.only_available(&Selection::new(Some(version), options)))
@@ -93,13 +103,13 @@ pub fn run(args: BuiltinsArgs) -> ExitCode {
 }
 
 /// One entry found by name.
-enum Entry<'a> {
+pub enum Entry<'a> {
     Routine(&'a Routine),
     DataType(&'a DataType),
     Datum(&'a Datum),
 }
 
-fn find<'a>(cat: &'a Catalogue, name: &str) -> Result<Entry<'a>, String> {
+pub fn find<'a>(cat: &'a Catalogue, name: &str) -> Result<Entry<'a>, String> {
     if let Some(r) = cat.routine(name) {
         return Ok(Entry::Routine(r));
     }
@@ -120,7 +130,7 @@ fn find<'a>(cat: &'a Catalogue, name: &str) -> Result<Entry<'a>, String> {
 }
 
 /// Describes one entry for a person: its signature, then its documentation.
-fn describe(cat: &Catalogue, name: &str) -> Result<String, String> {
+pub fn describe(cat: &Catalogue, name: &str) -> Result<String, String> {
     let mut out = String::new();
     match find(cat, name)? {
         Entry::Routine(r) => {
@@ -217,7 +227,7 @@ fn push_facts(cat: &Catalogue, out: &mut String, facts: &[String], origin: &Orig
 }
 
 /// The whole catalogue for a person: one line per entry.
-fn list_human(cat: &Catalogue) -> String {
+pub fn list_human(cat: &Catalogue) -> String {
     let mut out = String::new();
     out.push_str(&format!("Functions ({})\n", cat.functions.len()));
     for r in &cat.functions {

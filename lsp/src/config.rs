@@ -33,6 +33,7 @@ use std::path::{Path, PathBuf};
 
 use std::collections::BTreeMap;
 
+use crate::project::{Environment, Kind};
 use rapid_analyzer::diagnostic::{Rule, Severity};
 use rapid_analyzer::format::{FormatOptions, Style};
 use rapid_analyzer::rules::RULES;
@@ -328,13 +329,19 @@ pub fn read_text(path: &Path) -> std::io::Result<String> {
         .map_err(|_| std::io::Error::new(std::io::ErrorKind::InvalidData, "not UTF-8 text"))
 }
 
-/// Reads and checks a configuration file.
-pub fn load(path: &Path) -> Result<Config, ConfigError> {
-    let text = read_text(path).map_err(|e| ConfigError {
-        path: path.to_owned(),
-        line: None,
-        message: format!("cannot read the configuration: {e}"),
-    })?;
+/// Reads and checks a configuration file in `env`.
+pub fn load_in(env: &dyn Environment, path: &Path) -> Result<Config, ConfigError> {
+    let text = env
+        .read(path)
+        .and_then(|bytes| {
+            String::from_utf8(bytes)
+                .map_err(|_| std::io::Error::new(std::io::ErrorKind::InvalidData, "not UTF-8 text"))
+        })
+        .map_err(|e| ConfigError {
+            path: path.to_owned(),
+            line: None,
+            message: format!("cannot read the configuration: {e}"),
+        })?;
     parse(&text, path)
 }
 
@@ -421,15 +428,20 @@ fn value_line(text: &str, value: &str) -> Option<usize> {
 /// The nearest `rapid.toml` in `start`'s folder (or `start` itself if it is
 /// a folder) and its parents.
 pub fn find(start: &Path) -> Option<PathBuf> {
+    find_in(&crate::project::Disk, start)
+}
+
+/// [`find`] in `env` (a folder it refuses ends the search).
+pub fn find_in(env: &dyn Environment, start: &Path) -> Option<PathBuf> {
     let start = std::path::absolute(start).ok()?;
-    let mut dir = if start.is_dir() {
+    let mut dir = if env.kind(&start).is_ok_and(|k| k == Kind::Folder) {
         Some(start.as_path())
     } else {
         start.parent()
     };
     while let Some(d) = dir {
         let candidate = d.join(FILE_NAME);
-        if candidate.is_file() {
+        if matches!(env.kind(&candidate), Ok(Kind::File(_))) {
             return Some(candidate);
         }
         dir = d.parent();
@@ -444,8 +456,20 @@ pub fn resolve_with_path(
     explicit: Option<&Path>,
     first_path: &Path,
 ) -> Result<(Config, Option<PathBuf>), ConfigError> {
-    match explicit.map(Path::to_owned).or_else(|| find(first_path)) {
-        Some(path) => load(&path).map(|config| (config, Some(path))),
+    resolve_in(&crate::project::Disk, explicit, first_path)
+}
+
+/// [`resolve_with_path`] in `env`.
+pub fn resolve_in(
+    env: &dyn Environment,
+    explicit: Option<&Path>,
+    first_path: &Path,
+) -> Result<(Config, Option<PathBuf>), ConfigError> {
+    match explicit
+        .map(Path::to_owned)
+        .or_else(|| find_in(env, first_path))
+    {
+        Some(path) => load_in(env, &path).map(|config| (config, Some(path))),
         None => Ok((Config::default(), None)),
     }
 }

@@ -51,33 +51,61 @@ const SUFFIX: &str = ";\nENDMODULE\n";
 const EVAL_PATH: &str = "<expression>";
 
 pub fn run(args: EvalArgs) -> ExitCode {
-    let mut stderr = anstream::stderr();
     let expr_text = args.expr.trim();
+    match evaluate(
+        &crate::project::Disk,
+        expr_text,
+        args.file.as_deref(),
+        args.initial,
+    ) {
+        Err(Failure::Syntax(e)) => syntax_error(&e, expr_text, args.format),
+        Err(Failure::Usage(message)) => {
+            let _ = writeln!(anstream::stderr(), "rapid: eval: {message}");
+            ExitCode::from(2)
+        }
+        Err(Failure::Eval(e)) => report(&Err(e), args.format),
+        Ok(value) => report(&Ok(value), args.format),
+    }
+}
+
+/// Why an expression has no value.
+pub enum Failure {
+    /// It does not parse.
+    Syntax(SyntaxError),
+    /// It is empty, not one expression, or its program cannot be read.
+    Usage(String),
+    /// Its evaluation fails (a run-time error, data that is not constant,
+    /// an unknown name).
+    Eval(EvalError),
+}
+
+/// The value of `expr_text` as the controller computes it, alone or (with
+/// `file`, a module or a folder read through `env`) with a program's data;
+/// `initial`: VAR and PERS data at their initial values.
+pub fn evaluate(
+    env: &dyn crate::project::Environment,
+    expr_text: &str,
+    file: Option<&Path>,
+    initial: bool,
+) -> Result<Evaluation, Failure> {
+    let expr_text = expr_text.trim();
     if expr_text.is_empty() {
-        let _ = writeln!(stderr, "rapid: eval: the expression is empty");
-        return ExitCode::from(2);
+        return Err(Failure::Usage("the expression is empty".to_owned()));
     }
     let source = format!("{PREFIX}{expr_text}{SUFFIX}");
     let expr_unit = Arc::new(Unit::new(EVAL_PATH.to_owned(), source, None));
-    if let Err(e) = check_syntax(&expr_unit, expr_text) {
-        return syntax_error(&e, expr_text, args.format);
-    }
-    let (task, at) = match &args.file {
+    check_syntax(&expr_unit, expr_text).map_err(Failure::Syntax)?;
+    let (task, at) = match file {
         None => (
             Arc::new(Task::new(String::new(), vec![expr_unit.clone()], None)),
             None,
         ),
-        Some(path) => match program(path) {
-            Ok(found) => found,
-            Err(message) => {
-                let _ = writeln!(stderr, "rapid: eval: {}: {message}", path.display());
-                return ExitCode::from(2);
-            }
-        },
+        Some(path) => {
+            program(env, path).map_err(|m| Failure::Usage(format!("{}: {m}", path.display())))?
+        }
     };
     let Some(node) = expression_node(&expr_unit, expr_text) else {
-        let _ = writeln!(stderr, "rapid: eval: not a single expression");
-        return ExitCode::from(2);
+        return Err(Failure::Usage("not a single expression".to_owned()));
     };
     let module = at.and_then(|(unit, offset)| {
         let m = task.units.get(unit)?.items.module_at(offset)?;
@@ -86,13 +114,12 @@ pub fn run(args: EvalArgs) -> ExitCode {
     let expr = lower_with(node, &expr_unit.text, &|name| {
         consteval::is_builtin_call(&task, module, name)
     });
-    let options = if args.initial {
+    let options = if initial {
         EnvOptions::initial_values()
     } else {
         EnvOptions::default()
     };
-    let result = consteval::eval_in(&task, at, &expr, None, options);
-    report(&result, args.format)
+    consteval::eval_in(&task, at, &expr, None, options).map_err(Failure::Eval)
 }
 
 /// Prints the value or the error; the exit code.
@@ -179,10 +206,10 @@ fn expression_node<'u>(unit: &'u Unit, expr: &str) -> Option<tree_sitter::Node<'
 
 /// Syntax errors of the synthetic module, told in the user's text.
 /// Why the expression cannot be evaluated as written.
-struct SyntaxError {
+pub struct SyntaxError {
     /// 1-based character column in the expression.
-    column: Option<usize>,
-    message: String,
+    pub column: Option<usize>,
+    pub message: String,
 }
 
 fn check_syntax(unit: &Unit, expr: &str) -> Result<(), SyntaxError> {
@@ -349,9 +376,7 @@ type Program = (Arc<Task>, Option<(usize, usize)>);
 
 /// The task of `path` (a module, or a folder) and where names resolve: in a
 /// module, at its start; in a folder, the task's globals.
-fn program(path: &Path) -> Result<Program, String> {
-    use crate::project::Environment;
-    let env = &crate::project::Disk;
+fn program(env: &dyn crate::project::Environment, path: &Path) -> Result<Program, String> {
     let around =
         crate::project::load_around(env, &[path.to_owned()]).map_err(|(_, e)| e.to_string())?;
     let mut workspace = around.loaded.workspace;

@@ -8,6 +8,7 @@ mod config;
 mod dap;
 mod eval;
 mod fmt;
+mod mcp;
 mod project;
 mod rules_cmd;
 mod run;
@@ -48,6 +49,10 @@ enum Command {
     /// Run the debug adapter (Debug Adapter Protocol over standard input
     /// and output) for RAPID programs on a simulated controller.
     Dap(dap::DapArgs),
+    /// Run the Model Context Protocol server (stdio, or streamable HTTP on
+    /// loopback) that gives AI assistants the checker, fixes, catalogue,
+    /// evaluator and simulated controller.
+    Mcp(mcp::McpArgs),
     /// Run the test routines of RAPID programs (test_* procedures, modules
     /// named *_test) on a simulated controller.
     Test(test_cmd::TestArgs),
@@ -76,5 +81,6 @@ fn main() -> ExitCode {
         Command::Run(args) => run::run(args),
         Command::Test(args) => test_cmd::run(args),
         Command::Dap(args) => dap::run(args),
+        Command::Mcp(args) => mcp::run(args),
     }
 }

@@ -28,11 +28,11 @@ use rapid_analyzer::task::Unit;
 use rapid_analyzer::workspace::diagnostics_selected;
 use rayon::prelude::*;
 
-use crate::project::{Discovery, Disk, SourceFile, Sources};
+use crate::project::{Discovery, Environment, SourceFile, Sources};
 
 pub use crate::project::Skip;
 pub use fix::apply_safe_fixes;
-pub use run::run;
+pub use run::{report_in, run};
 pub use settings::{LintSettings, Overrides, normalize};
 
 /// Output formats of `rapid check`.
@@ -179,6 +179,7 @@ fn progress_bar(files: usize) -> ProgressBar {
 /// Diagnostics are the analyzer's for the rules `selection` has on for
 /// each file (the settings' severities and suppressions are not applied).
 pub fn check_files(
+    env: &dyn Environment,
     found: &Discovery,
     context: &Discovery,
     extra: &Discovery,
@@ -194,7 +195,7 @@ pub fn check_files(
     rayon::spawn(|| {
         let _ = rapid_analyzer::catalogue::base();
     });
-    let (read, units) = crate::project::read_and_parse(&Disk, files, &|| progress.inc(1));
+    let (read, units) = crate::project::read_and_parse(env, files, &|| progress.inc(1));
     lap("reading, decoding, parsing and item trees", &mut clock);
     let sources = Sources {
         found: Some(found),
@@ -207,7 +208,7 @@ pub fn check_files(
         names,
         asked: checked_paths,
         keys: checked_keys,
-    } = crate::project::assemble(&Disk, &sources, controller, read, units);
+    } = crate::project::assemble(env, &sources, controller, read, units);
     // Skipped files are not checked: the second half of the bar is shorter.
     progress.set_length((files.len() + checked_paths.len()) as u64);
     let tasks = workspace.checks();
@@ -263,10 +264,10 @@ pub fn check_files(
     }
     lap("checking (analyzer)", &mut clock);
     // Freeing every tree and index costs tens of milliseconds on a large
-    // project and the process ends soon after: let the exit reclaim them.
+    // project: off the report's path (`rapid check` exits before it ends;
+    // `rapid mcp` gets the memory back).
     drop(jobs);
-    std::mem::forget(tasks);
-    std::mem::forget(workspace);
+    std::thread::spawn(move || drop((tasks, workspace)));
     read.into_iter()
         .zip(files)
         .zip(names)

@@ -17,7 +17,7 @@ use super::{
     baseline, check_files, lap, normalize, output, progress_bar,
 };
 use crate::config::Config;
-use crate::project::{Discovery, Disk, context, discover, discover_with};
+use crate::project::{Discovery, Disk, Environment, context, discover_in};
 
 pub fn run(args: CheckArgs) -> ExitCode {
     let mut stderr = anstream::stderr();
@@ -39,10 +39,10 @@ fn run_inner(args: CheckArgs, stderr: &mut impl Write) -> Result<ExitCode, Strin
     }
     let mut clock = std::time::Instant::now();
     let started = clock;
-    let setup = settings_of(&args)?;
-    let project = discover_project(&args, &setup, stderr);
+    let setup = settings_of(&Disk, &args)?;
+    let project = discover_project(&Disk, &args, &setup, stderr);
     lap("configuration and discovery", &mut clock);
-    let (outcomes, fixed, fix_failed) = check_and_fix(&args, &setup, &project, stderr);
+    let (outcomes, fixed, fix_failed) = check_and_fix(&Disk, &args, &setup, &project, stderr);
     clock = std::time::Instant::now();
     let (mut report, read_failed) = report_of(outcomes, fixed, &setup.settings, stderr);
     if let Some(path) = &args.baseline {
@@ -61,6 +61,22 @@ fn run_inner(args: CheckArgs, stderr: &mut impl Write) -> Result<ExitCode, Strin
     ))
 }
 
+/// `rapid check`'s steps 1 to 4 in `env`, without fixes, baseline or
+/// output (for `rapid mcp`): the report, the folder of `rapid.toml` (else
+/// the current folder), and whether a path or a file could not be read;
+/// what a run says on stderr goes to `notes`.
+pub fn report_in(
+    env: &dyn Environment,
+    args: &CheckArgs,
+    notes: &mut impl Write,
+) -> Result<(Report, PathBuf, bool), String> {
+    let setup = settings_of(env, args)?;
+    let project = discover_project(env, args, &setup, notes);
+    let (outcomes, fixed, _) = check_and_fix(env, args, &setup, &project, notes);
+    let (report, read_failed) = report_of(outcomes, fixed, &setup.settings, notes);
+    Ok((report, setup.root, project.failed || read_failed))
+}
+
 /// What the run is configured with.
 struct Setup {
     /// The paths to check (the current folder when none is given).
@@ -73,13 +89,13 @@ struct Setup {
 
 /// Step 1: `rapid.toml` (found upwards from the first path, or
 /// `--config`) and the flags over it.
-fn settings_of(args: &CheckArgs) -> Result<Setup, String> {
+fn settings_of(env: &dyn Environment, args: &CheckArgs) -> Result<Setup, String> {
     let paths = if args.paths.is_empty() {
         vec![PathBuf::from(".")]
     } else {
         args.paths.clone()
     };
-    let (config, config_path) = crate::config::resolve_with_path(args.config.as_deref(), &paths[0])
+    let (config, config_path) = crate::config::resolve_in(env, args.config.as_deref(), &paths[0])
         .map_err(|e| e.to_string())?;
     let root = match config_path.as_deref().and_then(Path::parent).map(|dir| {
         if dir.as_os_str().is_empty() {
@@ -124,12 +140,19 @@ struct Project {
 
 /// Step 2: the files to check, the rest of their tasks and the extra
 /// paths; what could not be walked is said on `stderr`.
-fn discover_project(args: &CheckArgs, setup: &Setup, stderr: &mut impl Write) -> Project {
+fn discover_project(
+    env: &dyn Environment,
+    args: &CheckArgs,
+    setup: &Setup,
+    stderr: &mut impl Write,
+) -> Project {
     let paths = &setup.paths;
     let for_walk = setup.settings.clone();
-    let mut found = discover_with(
+    let mut found = discover_in(
+        env,
         paths,
         Arc::new(move |p: &Path, dir: bool| for_walk.is_excluded(p, dir)),
+        None,
     );
     // A file named twice (`rapid check . PROGMOD`, a link) is checked once.
     found.files = super::distinct_files(std::mem::take(&mut found.files));
@@ -148,10 +171,10 @@ fn discover_project(args: &CheckArgs, setup: &Setup, stderr: &mut impl Write) ->
         .map(|p| setup.root.join(p))
         .chain(args.extra_path.iter().cloned())
         .collect();
-    let extra = discover(&extra_paths);
+    let extra = discover_in(env, &extra_paths, Arc::new(|_, _| false), None);
     let for_context = setup.settings.clone();
     let context = context::task_context(
-        &Disk,
+        env,
         &found.files,
         &found.programs,
         paths,
@@ -184,6 +207,7 @@ fn discover_project(args: &CheckArgs, setup: &Setup, stderr: &mut impl Write) ->
 /// checks again (a fix can make room for another, or reveal one): the
 /// outcomes, the number of fixes and whether writing one failed.
 fn check_and_fix(
+    env: &dyn Environment,
     args: &CheckArgs,
     setup: &Setup,
     project: &Project,
@@ -193,6 +217,7 @@ fn check_and_fix(
     let controller = setup.config.controller.resolve().unwrap_or_default();
     let check = || {
         check_files(
+            env,
             &project.found,
             &project.context,
             &project.extra,

@@ -20,7 +20,11 @@ pub struct Found {
 }
 
 pub fn tasks(paths: &[PathBuf]) -> Result<Found, String> {
-    let env = &crate::project::DiskAsNamed;
+    tasks_in(&crate::project::DiskAsNamed, paths)
+}
+
+/// [`tasks`] in `env`.
+pub fn tasks_in(env: &dyn Environment, paths: &[PathBuf]) -> Result<Found, String> {
     let around = crate::project::load_around(env, paths)
         .map_err(|(p, e)| format!("{}: {e}", p.display()))?;
     let mut workspace = around.loaded.workspace;
@@ -49,7 +53,12 @@ pub fn tasks(paths: &[PathBuf]) -> Result<Found, String> {
 /// The one task `path` holds (a module: its task; a folder: its only
 /// task, or the one that declares `entry`).
 pub fn one_task(path: &Path, entry: &str) -> Result<Arc<Task>, String> {
-    let found = tasks(std::slice::from_ref(&path.to_path_buf()))?;
+    one_task_in(&crate::project::DiskAsNamed, path, entry)
+}
+
+/// [`one_task`] in `env`.
+pub fn one_task_in(env: &dyn Environment, path: &Path, entry: &str) -> Result<Arc<Task>, String> {
+    let found = tasks_in(env, std::slice::from_ref(&path.to_path_buf()))?;
     let mut tasks = found.tasks;
     match tasks.len() {
         0 => Err(format!("{}: no RAPID modules found", path.display())),

@@ -15,7 +15,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::sync::Arc;
 
-use rapid_runtime::{Config, Limits, Machine, Outcome, Program, Status, Stream};
+use rapid_runtime::{Config, Limits, Machine, Outcome, Status, Stream};
 
 #[derive(Debug, clap::Args)]
 pub struct RunArgs {
@@ -86,15 +86,77 @@ fn run_inner(args: RunArgs) -> Result<ExitCode, String> {
         .map(|s| load::parse_set(s))
         .collect::<Result<Vec<_>, _>>()?;
     let task = load::one_task(&args.path, &args.entry)?;
+    let out = |_: Stream, line: &str| {
+        let stdout = std::io::stdout();
+        let mut lock = stdout.lock();
+        let _ = writeln!(lock, "{line}");
+    };
+    let ran = run_routine(
+        task,
+        &args.entry,
+        sets,
+        Budget {
+            limits: args.limits.limits(),
+            sandbox: args.sandbox.clone(),
+            trace: args.trace.is_some() || args.plot.is_some(),
+        },
+        Box::new(out),
+    )?;
+    if let Some(path) = &args.trace {
+        let text = serde_json::to_string_pretty(&trace::json(&ran.moves)).unwrap_or_default();
+        std::fs::write(path, text + "\n").map_err(|e| format!("{}: {e}", path.display()))?;
+    }
+    if let Some(path) = &args.plot {
+        let title = args.path.display().to_string();
+        std::fs::write(path, trace::html(&ran.moves, &title))
+            .map_err(|e| format!("{}: {e}", path.display()))?;
+    }
+    report(&ran.outcome);
+    Ok(if ran.outcome.is_success() {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    })
+}
+
+/// What a run may use: its budgets, the folder its file instructions work
+/// in (a fresh temporary one, removed after the run, when `None`), and
+/// whether its moves are recorded.
+pub struct Budget {
+    pub limits: Limits,
+    pub sandbox: Option<PathBuf>,
+    pub trace: bool,
+}
+
+/// A run that ended: how, the moves (when traced), the statements it took
+/// and the simulated time it reached.
+pub struct Ran {
+    pub outcome: Outcome,
+    pub moves: Vec<rapid_runtime::Move>,
+    pub steps: u64,
+    pub clock: f64,
+}
+
+/// Runs the procedure `entry` of `task` with the signal script `sets`,
+/// each output line going to `out` as it comes (for `rapid run` and
+/// `rapid mcp`). An error when the procedure is missing or takes
+/// parameters, or the sandbox cannot be made.
+pub fn run_routine(
+    task: Arc<rapid_analyzer::task::Task>,
+    entry: &str,
+    sets: Vec<rapid_runtime::SignalChange>,
+    budget: Budget,
+    out: Box<dyn rapid_runtime::Output>,
+) -> Result<Ran, String> {
+    let key = task.key.clone();
     let program = load::program(task, &sets);
-    let entry = program.find_routine(&args.entry).ok_or_else(|| {
-        format!(
-            "{}: no procedure {} in the task",
-            args.path.display(),
-            args.entry
-        )
-    })?;
-    if let Some(r) = program.routines().into_iter().find(|r| r.id == entry)
+    let id = program
+        .find_routine(entry)
+        .ok_or_else(|| match key.as_str() {
+            "" => format!("no procedure {entry} in the task"),
+            key => format!("{key}: no procedure {entry} in the task"),
+        })?;
+    if let Some(r) = program.routines().into_iter().find(|r| r.id == id)
         && (r.params > 0 || r.kind != rapid_analyzer::items::RoutineKind::Proc)
     {
         return Err(format!(
@@ -102,47 +164,22 @@ fn run_inner(args: RunArgs) -> Result<ExitCode, String> {
             r.at, r.name
         ));
     }
-    let sandbox = Sandbox::new(args.sandbox.clone())?;
+    let sandbox = Sandbox::new(budget.sandbox)?;
     let config = Config {
-        limits: args.limits.limits(),
+        limits: budget.limits,
         signals: sets,
         sandbox: Some(sandbox.path.clone()),
-        trace: args.trace.is_some() || args.plot.is_some(),
+        trace: budget.trace,
     };
-    let (outcome, moves) = execute(program.clone(), entry, config)?;
-    if let Some(path) = &args.trace {
-        let text = serde_json::to_string_pretty(&trace::json(&moves)).unwrap_or_default();
-        std::fs::write(path, text + "\n").map_err(|e| format!("{}: {e}", path.display()))?;
-    }
-    if let Some(path) = &args.plot {
-        let title = args.path.display().to_string();
-        std::fs::write(path, trace::html(&moves, &title))
-            .map_err(|e| format!("{}: {e}", path.display()))?;
-    }
-    report(&outcome);
-    Ok(if outcome.is_success() {
-        ExitCode::SUCCESS
-    } else {
-        ExitCode::from(1)
-    })
-}
-
-/// Runs `entry` on a large stack, printing the program's output as it
-/// comes; the outcome and the moves.
-fn execute(
-    program: Arc<Program>,
-    entry: u32,
-    config: Config,
-) -> Result<(Outcome, Vec<rapid_runtime::Move>), String> {
     rapid_runtime::on_large_stack(move || {
-        let out = |_: Stream, line: &str| {
-            let stdout = std::io::stdout();
-            let mut lock = stdout.lock();
-            let _ = writeln!(lock, "{line}");
-        };
-        let mut m = Machine::new(program, config, Box::new(out));
-        let outcome = m.run(entry);
-        (outcome, m.moves().to_vec())
+        let mut m = Machine::new(program, config, out);
+        let outcome = m.run(id);
+        Ran {
+            outcome,
+            moves: m.moves().to_vec(),
+            steps: m.steps(),
+            clock: m.clock(),
+        }
     })
     .ok_or_else(|| "the interpreter failed (this is a bug in rapid)".to_owned())
 }

@@ -16,7 +16,7 @@
 //! when every test passed, 1 when one failed or had an error (or none was
 //! found), 2 for usage errors.
 
-mod report;
+pub mod report;
 
 use std::io::Write;
 use std::path::PathBuf;
@@ -25,7 +25,7 @@ use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
 use rapid_analyzer::items::RoutineKind;
-use rapid_runtime::{Config, Machine, Outcome, Program, SignalChange, Status, Stream};
+use rapid_runtime::{Config, Limits, Machine, Outcome, Program, SignalChange, Status, Stream};
 
 use crate::run::{LimitArgs, Sandbox, load};
 
@@ -125,14 +125,13 @@ fn run_inner(args: TestArgs) -> Result<ExitCode, String> {
     for (path, why) in &found.skipped {
         let _ = writeln!(anstream::stderr(), "rapid: test: {}: {why}", path.display());
     }
-    let mut results = Vec::new();
-    for task in &found.tasks {
-        let task = load::with_modules(task, &[(ASSERT_PATH, ASSERT_MODULE)]);
-        let program = load::program(task, &sets);
-        for test in discover(&program, args.filter.as_deref()) {
-            results.push(run_test(&program, &test, &sets, &args)?);
-        }
-    }
+    let results = run_tests(
+        &found.tasks,
+        args.filter.as_deref(),
+        &sets,
+        &args.limits.limits(),
+        args.sandbox.as_ref(),
+    )?;
     let stdout = std::io::stdout();
     let mut out = stdout.lock();
     let written = match args.format {
@@ -151,6 +150,29 @@ fn run_inner(args: TestArgs) -> Result<ExitCode, String> {
     } else {
         ExitCode::from(1)
     })
+}
+
+/// Runs the tests of `tasks` (those whose name contains `filter`), each
+/// on a fresh simulated controller with the signal script `sets`, the
+/// budgets `limits` and the folder `sandbox` (a fresh temporary one per
+/// test when `None`), in the tasks' order (for `rapid test` and `rapid
+/// mcp`).
+pub fn run_tests(
+    tasks: &[Arc<rapid_analyzer::task::Task>],
+    filter: Option<&str>,
+    sets: &[SignalChange],
+    limits: &Limits,
+    sandbox: Option<&PathBuf>,
+) -> Result<Vec<TestResult>, String> {
+    let mut results = Vec::new();
+    for task in tasks {
+        let task = load::with_modules(task, &[(ASSERT_PATH, ASSERT_MODULE)]);
+        let program = load::program(task, sets);
+        for test in discover(&program, filter) {
+            results.push(run_test(&program, &test, sets, limits, sandbox)?);
+        }
+    }
+    Ok(results)
 }
 
 /// A test routine, with the module's `setup` and `teardown`.
@@ -208,11 +230,12 @@ fn run_test(
     program: &Arc<Program>,
     test: &Test,
     sets: &[SignalChange],
-    args: &TestArgs,
+    limits: &Limits,
+    sandbox: Option<&PathBuf>,
 ) -> Result<TestResult, String> {
-    let sandbox = Sandbox::new(args.sandbox.clone())?;
+    let sandbox = Sandbox::new(sandbox.cloned())?;
     let config = Config {
-        limits: args.limits.limits(),
+        limits: limits.clone(),
         signals: sets.to_vec(),
         sandbox: Some(sandbox.path.clone()),
         trace: false,

@@ -6,6 +6,7 @@ use std::path::Path;
 use std::process::{Command, Output, Stdio};
 
 pub mod editor;
+pub mod mcp;
 // The binary's in-process server tests use the same file.
 mod scratch;
 #[allow(unused_imports)]
