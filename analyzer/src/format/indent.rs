@@ -96,7 +96,8 @@ pub(super) fn columns_from(start: usize, s: &str) -> usize {
 /// The unit that the most structure lines of a text already follow, from
 /// their depths and indentation as written: 4, 2, 3, 8 or 1 columns per
 /// level, with the module body and the cases of `TEST` indented or not; new
-/// indentation written with tabs if most indented lines start with one.
+/// indentation written with tabs if most lines indented by a tab's width or
+/// more start with one.
 /// A unit counts only if at least one indented line follows it, and only
 /// if it fits at least half of the lines: a text written flat, on one line
 /// or at random gets the default, 4 spaces with both indented. Ties go to
@@ -105,6 +106,11 @@ pub(super) fn detect<'a>(lines: impl Iterator<Item = (Depth, &'a str)> + Clone) 
     let (mut tab, mut space, mut total) = (0usize, 0usize, 0usize);
     for (depth, indent) in lines.clone() {
         total += usize::from(!depth.is_zero());
+        // a line left of the first tab stop cannot start with a tab: it
+        // says nothing about how deeper lines are written
+        if columns(indent) < TAB_WIDTH {
+            continue;
+        }
         match indent.bytes().next() {
             Some(b'\t') => tab += 1,
             Some(_) => space += 1,

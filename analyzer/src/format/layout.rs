@@ -342,6 +342,10 @@ impl Layout<'_, '_> {
                     None => "",
                 };
                 self.indent[i] = Some(indent.to_owned());
+            } else if i == 0 {
+                // the first token starts the first line, at the column it
+                // is given
+                self.indent[i] = Some(" ".repeat(col));
             }
             self.col[i] = col;
             self.line_first[i] = if starts || i == 0 {
@@ -466,7 +470,9 @@ impl Layout<'_, '_> {
     ///   the end of a body): where the statements of that body go;
     /// - deeper than a line before that opens a block, followed by the
     ///   block's first line, which moved: with that line;
-    /// - else as far from the next code line as it was.
+    /// - else as far from the next code line as it was;
+    /// - but alone in a block, never at the column of the line that opens
+    ///   it (formatted again, it would be like that line): inside it.
     fn comment_gaps(&self, gaps: &mut [Gap]) {
         let toks = self.toks;
         let n = toks.len();
@@ -548,6 +554,21 @@ impl Layout<'_, '_> {
                 Some(self.render(col, new_next))
             } else {
                 None
+            };
+            // Alone in a block, at the column where the line that opens
+            // it goes: formatted again, the comment would read as like
+            // that line, which puts it inside the block. So it goes there
+            // now (formatting twice gives what formatting once gave).
+            let new = match new {
+                Some(s)
+                    if closes
+                        && opens_before
+                        && prev_line.and_then(|p| self.indent[p].as_deref().map(columns))
+                            == Some(columns(&s)) =>
+                {
+                    in_block_before()
+                }
+                new => new,
             };
             *indent = new.unwrap_or_else(|| here.to_owned());
         }
