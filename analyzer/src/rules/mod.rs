@@ -30,6 +30,7 @@ pub mod handler_only_statement;
 pub mod incomplete_code;
 pub mod index_count;
 pub mod invalid_operands;
+pub mod label_names_routine;
 pub mod local_not_visible;
 pub mod missing_alternative;
 pub mod missing_initializer;
@@ -113,6 +114,7 @@ pub static RULES: &[&Rule] = &[
     &shadowed_name::RULE,
     &float_equality::RULE,
     &duplicate_module::RULE,
+    &label_names_routine::RULE,
 ];
 
 /// The rules a check runs. A rule switched off is not reported, and the
