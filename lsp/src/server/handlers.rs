@@ -185,8 +185,8 @@ impl LanguageServer for Backend {
         let p = params.text_document_position;
         let pos = p.position;
         let decl = params.context.include_declaration;
-        self.on_snapshot(&p.text_document.uri, "references", move |s| {
-            let found = ide::references(&s.task, s.unit_idx, s.map().offset(pos), decl);
+        self.on_snapshot_with_peers(&p.text_document.uri, pos, "references", move |s| {
+            let found = ide::references(&s.task, s.unit_idx, s.map().offset(pos), decl, &s.peers);
             requests::locations(s, found)
         })
         .await
@@ -227,9 +227,15 @@ impl LanguageServer for Backend {
         let pos = p.position;
         let new_name = params.new_name;
         let answer = self
-            .on_snapshot(&p.text_document.uri, "rename", move |s| {
-                ide::rename(&s.task, s.unit_idx, s.map().offset(pos), &new_name)
-                    .map(|files| requests::workspace_edit(s, files))
+            .on_snapshot_with_peers(&p.text_document.uri, pos, "rename", move |s| {
+                ide::rename(
+                    &s.task,
+                    s.unit_idx,
+                    s.map().offset(pos),
+                    &new_name,
+                    &s.peers,
+                )
+                .map(|files| requests::workspace_edit(s, files))
             })
             .await?;
         match answer {

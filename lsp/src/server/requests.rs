@@ -302,7 +302,7 @@ pub fn workspace_edit(snap: &Snapshot, files: Vec<(String, Vec<Edit>)>) -> Works
         let converted = if path == snap.path {
             text_edits(&snap.map(), &edits)
         } else {
-            let Some(unit) = snap.task.units.iter().find(|u| u.path == path) else {
+            let Some(unit) = snap.unit_of(&path) else {
                 continue;
             };
             let index = snap.line_index(&path, unit);
