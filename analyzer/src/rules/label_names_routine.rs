@@ -15,8 +15,9 @@ crate::declare_rule! {
     ///
     /// ### What it checks
     /// A label (`name:`) that no `GOTO` of its routine jumps to, whose name
-    /// is a procedure the routine can call: one of the task's, or a
-    /// built-in instruction that needs no argument (`Stop`, `ExitCycle`).
+    /// is a procedure the routine can call: one of the task's (other than
+    /// the routine itself), or a built-in instruction that needs no
+    /// argument (`Stop`, `ExitCycle`).
     ///
     /// ### Why
     /// `R_Home:` where `R_Home;` was meant loads without a complaint, and
@@ -40,9 +41,13 @@ pub(crate) fn check(cx: &mut Cx<'_>, node: Node<'_>) {
         return;
     }
     let mut candidates: Vec<(String, std::ops::Range<usize>, String)> = Vec::new();
+    // a label named after its own routine marks a place in it (a call
+    // there would be a recursion)
+    let own = cx.routine.as_ref().map(|r| fold(&r.decl.name));
     let labels: Vec<(String, std::ops::Range<usize>)> = cx
         .labels
         .iter()
+        .filter(|(key, _)| Some(*key) != own.as_ref())
         .map(|(key, (range, _))| (key.clone(), range.clone()))
         .collect();
     for (key, range) in labels {
