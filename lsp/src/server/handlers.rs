@@ -102,6 +102,11 @@ impl LanguageServer for Backend {
     }
 
     async fn completion(&self, params: CompletionParams) -> Result<Option<CompletionResponse>> {
+        let trigger = params
+            .context
+            .filter(|c| c.trigger_kind == CompletionTriggerKind::TRIGGER_CHARACTER)
+            .and_then(|c| c.trigger_character)
+            .and_then(|c| c.chars().next());
         let p = params.text_document_position;
         let pos = p.position;
         let uri = p.text_document.uri;
@@ -113,7 +118,7 @@ impl LanguageServer for Backend {
             .unwrap_or(false);
         Ok(self
             .on_snapshot(&uri, "completion", move |s| {
-                requests::completion(s, pos, lazy)
+                requests::completion(s, pos, lazy, trigger)
             })
             .await?
             .map(CompletionResponse::List))

@@ -582,3 +582,66 @@ async fn shared_persistents_link_the_tasks_of_a_backup() {
     client.keep(dir);
     client.shutdown().await;
 }
+
+/// Typing a blank or the `=` of `:=` asks for the values of the argument
+/// that starts there (the data of its type, the most used first), and for
+/// nothing elsewhere.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn completion_triggered_by_a_blank_or_an_equals_sign() {
+    let text = "MODULE Main\n    PERS wobjdata wTable := [FALSE, TRUE, \"\", [[0,0,0],[1,0,0,0]], [[0,0,0],[1,0,0,0]]];\n    VAR num count := 0;\n\n    PROC main()\n        MoveL p10, v100, fine, tool0\\WObj:=\n        IF count \n    ENDPROC\nENDMODULE\n";
+    let dir = temp_dir("feat-trigger");
+    let mut client = TestClient::new(dir.to_path_buf(), json!({"diagnosticsDelay": 0})).await;
+    let main = client.open(&dir.join("Main.mod"), text);
+    let ask = |at: Value, trigger: &str| {
+        let mut params = doc_pos(&main, at);
+        params["context"] = json!({"triggerKind": 2, "triggerCharacter": trigger});
+        params
+    };
+    let labels = |list: &Value| -> Vec<String> {
+        let mut items: Vec<(String, String)> = list["items"]
+            .as_array()
+            .into_iter()
+            .flatten()
+            .map(|i| {
+                (
+                    i["sortText"].as_str().unwrap_or_default().to_owned(),
+                    i["label"].as_str().unwrap_or_default().to_owned(),
+                )
+            })
+            .collect();
+        items.sort();
+        items.into_iter().map(|(_, l)| l).collect()
+    };
+    let list = client
+        .call(
+            "textDocument/completion",
+            ask(pos(text, "MoveL p10", 6), " "),
+        )
+        .await;
+    let items = labels(&list);
+    assert!(items.iter().any(|l| l == "Offs"), "{items:?}");
+    assert!(
+        !items.iter().any(|l| l == "count"),
+        "only robtargets: {items:?}"
+    );
+    let list = client
+        .call(
+            "textDocument/completion",
+            ask(pos(text, "\\WObj:=", 7), "="),
+        )
+        .await;
+    assert_eq!(
+        labels(&list).first().map(String::as_str),
+        Some("wTable"),
+        "{list}"
+    );
+    let list = client
+        .call(
+            "textDocument/completion",
+            ask(pos(text, "IF count ", 9), " "),
+        )
+        .await;
+    assert_eq!(labels(&list), Vec::<String>::new(), "{list}");
+    client.keep(dir);
+    client.shutdown().await;
+}
