@@ -422,7 +422,41 @@ impl LanguageServer for Backend {
     }
 }
 
+/// The parameters of `rapid/indentation`.
+#[derive(Debug, serde::Deserialize)]
+#[serde(rename_all = "camelCase")]
+pub struct IndentationParams {
+    pub text_document: TextDocumentIdentifier,
+}
+
+/// The answer of `rapid/indentation`: columns per level, and tabs or
+/// spaces.
+#[derive(Debug, serde::Serialize)]
+pub struct IndentationResult {
+    pub width: usize,
+    pub tabs: bool,
+}
+
 impl Backend {
+    /// `rapid/indentation`: how `rapid fmt` (and formatting here) indents
+    /// the document, with the `[format]` settings: an editor sets its own
+    /// indentation from it (Neovim's `shiftwidth` and `expandtab`), so that
+    /// the lines it indents are indented as the formatter would.
+    pub async fn indentation(
+        &self,
+        params: IndentationParams,
+    ) -> Result<Option<IndentationResult>> {
+        let options = self.format_options();
+        self.on_snapshot(&params.text_document.uri, "indentation", move |s| {
+            let found = rapid_analyzer::format::indentation(&s.unit.text, &options);
+            IndentationResult {
+                width: found.width,
+                tabs: found.tabs,
+            }
+        })
+        .await
+    }
+
     /// Keeps the tokens sent for a document, for the next delta request.
     pub(super) fn remember_tokens(&self, uri: &Uri, data: &[SemanticToken]) -> String {
         let flat = Arc::new(requests::tokens_to_flat(data));

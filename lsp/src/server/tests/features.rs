@@ -645,3 +645,28 @@ async fn completion_triggered_by_a_blank_or_an_equals_sign() {
     client.keep(dir);
     client.shutdown().await;
 }
+
+/// `rapid/indentation` says how the formatter indents a document: the
+/// majority's tabs or spaces (a file of spaces with one line led by a tab
+/// is a file of spaces), or the configured width.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn indentation_is_the_formatters() {
+    let dir = temp_dir("feat-indentation");
+    let spaces = "MODULE A\n    PROC p()\n        x := 1;\n\ty := 2;\n        z := 3;\n    ENDPROC\nENDMODULE\n";
+    let tabs =
+        "MODULE B\n\tPROC p()\n\t\tx := 1;\n        y := 2;\n\t\tz := 3;\n\tENDPROC\nENDMODULE\n";
+    let mut client = TestClient::new(dir.to_path_buf(), json!({"diagnosticsDelay": 0})).await;
+    let a = client.open(&dir.join("A.mod"), spaces);
+    let b = client.open(&dir.join("B.mod"), tabs);
+    let ask = |uri: &str| json!({"textDocument": {"uri": uri}});
+    assert_eq!(
+        client.call("rapid/indentation", ask(&a)).await,
+        json!({"width": 4, "tabs": false})
+    );
+    assert_eq!(
+        client.call("rapid/indentation", ask(&b)).await,
+        json!({"width": 4, "tabs": true})
+    );
+    client.keep(dir);
+    client.shutdown().await;
+}
