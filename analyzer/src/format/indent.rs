@@ -99,15 +99,16 @@ pub(super) fn columns_from(start: usize, s: &str) -> usize {
 /// indentation written with tabs if most of the lines that go a tab's width
 /// in or more start with one.
 ///
-/// A unit counts only if at least one indented line follows it, and only
-/// if it fits at least half of the lines. Failing that, the module body
+/// A unit counts only if at least one indented line follows it: a text
+/// written flat or on one line gets the default, 4 spaces with the module
+/// body and `CASE` indented. A unit must fit at least half of the lines.
+/// Failing that (a text indented at random in places), the module body
 /// goes where most of the module's own lines (declarations, routines'
 /// first and last lines) are, so a module whose routines sit at column 0
 /// keeps them there and a stray line is the one to move: the unit is the
 /// one of those that fits the most lines if it fits at least a third of
-/// them, else 4 columns with `CASE` indented (a text written flat, on one
-/// line or at random). Ties go to the earlier in that order (so to the
-/// default).
+/// them, else 4 columns with `CASE` indented. Ties go to the earlier in
+/// that order (so to the default).
 pub(super) fn detect<'a>(lines: impl Iterator<Item = (Depth, &'a str)> + Clone) -> Unit {
     let (mut total, mut flat, mut indented) = (0usize, 0usize, 0usize);
     for (depth, indent) in lines.clone() {
@@ -126,20 +127,24 @@ pub(super) fn detect<'a>(lines: impl Iterator<Item = (Depth, &'a str)> + Clone) 
             .filter(|(depth, indent)| !depth.is_zero() && unit.column(*depth) == columns(indent))
             .count()
     };
-    let module = flat <= indented;
-    let found = best(&all_units(), lines.clone())
-        .filter(|unit| fits(unit) * 2 >= total)
-        .or_else(|| {
+    let unit = match best(&all_units(), lines.clone()) {
+        // not one line indented: a text written flat or on one line
+        None => Unit::spaces(4),
+        Some(unit) if fits(&unit) * 2 >= total => unit,
+        Some(_) => {
+            let module = flat <= indented;
             let same: Vec<Unit> = all_units()
                 .into_iter()
                 .filter(|u| u.module == module)
                 .collect();
-            best(&same, lines.clone()).filter(|unit| fits(unit) * 3 >= total)
-        });
-    let unit = found.unwrap_or(Unit {
-        module,
-        ..Unit::spaces(4)
-    });
+            best(&same, lines.clone())
+                .filter(|unit| fits(unit) * 3 >= total)
+                .unwrap_or(Unit {
+                    module,
+                    ..Unit::spaces(4)
+                })
+        }
+    };
     // Tabs or spaces: as most of the lines that go a tab's width in or
     // more start (a line left of the first tab stop cannot start with a
     // tab: it says nothing about how deeper lines are written).
@@ -312,14 +317,13 @@ mod tests {
     }
 
     #[test]
-    fn flat_text_gets_the_default_with_its_module_body_where_it_is() {
+    fn flat_text_gets_the_default() {
         let flat = [
             (depth(1, 0, 0), ""),
             (depth(1, 0, 1), ""),
             (depth(1, 0, 2), ""),
         ];
-        let unit = detect(flat.into_iter());
-        assert_eq!((unit.width, unit.module, unit.cases), (4, false, true));
+        assert_eq!(detect(flat.into_iter()), Unit::spaces(4));
         assert_eq!(detect(std::iter::empty()), Unit::spaces(4));
     }
 

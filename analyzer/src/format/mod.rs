@@ -383,17 +383,20 @@ mod tests {
     #[test]
     fn line_endings_are_kept() {
         let crlf = "MODULE M\r\nVAR num a:=1;\r\nENDMODULE\r\n";
-        assert_eq!(fmt(crlf), crlf);
-        assert_eq!(spaced(crlf), "MODULE M\r\nVAR num a := 1;\r\nENDMODULE\r\n");
+        assert_eq!(fmt(crlf), "MODULE M\r\n    VAR num a:=1;\r\nENDMODULE\r\n");
+        assert_eq!(
+            spaced(crlf),
+            "MODULE M\r\n    VAR num a := 1;\r\nENDMODULE\r\n"
+        );
         let cr = "MODULE M\rVAR num a:=1;\rENDMODULE\r";
-        assert_eq!(spaced(cr), "MODULE M\rVAR num a := 1;\rENDMODULE\r");
+        assert_eq!(spaced(cr), "MODULE M\r    VAR num a := 1;\rENDMODULE\r");
         let lf = "MODULE M\nPROC p() x:=1; ENDPROC ENDMODULE";
         assert_eq!(
             spaced(lf),
-            "MODULE M\nPROC p()\n    x := 1;\nENDPROC\nENDMODULE"
+            "MODULE M\n    PROC p()\n        x := 1;\n    ENDPROC\nENDMODULE"
         );
         // as written: the lines are the author's
-        assert_eq!(fmt(lf), lf);
+        assert_eq!(fmt(lf), "MODULE M\n    PROC p() x:=1; ENDPROC ENDMODULE");
     }
 
     #[test]
@@ -412,11 +415,11 @@ mod tests {
         let text = "MODULE m\n! Größe °C\nvar NUM MyVar;\nENDMODULE\n";
         assert_eq!(
             spaced(text),
-            "MODULE m\n! Größe °C\nVAR NUM MyVar;\nENDMODULE\n"
+            "MODULE m\n    ! Größe °C\n    VAR NUM MyVar;\nENDMODULE\n"
         );
         assert_eq!(
             fmt(text),
-            "MODULE m\n! Größe °C\nvar NUM MyVar;\nENDMODULE\n"
+            "MODULE m\n    ! Größe °C\n    var NUM MyVar;\nENDMODULE\n"
         );
     }
 
@@ -455,13 +458,13 @@ mod tests {
         let text = "MODULE M\nPROC p()\nx:=1;\ny:=2;\nENDPROC\nENDMODULE\n";
         let y = text.find("y:=").expect("y");
         for (options, line) in [
-            (FormatOptions::default(), "    y:=2;\n"),
+            (FormatOptions::default(), "        y:=2;\n"),
             (
                 FormatOptions {
                     style: Style::Spaced,
                     ..FormatOptions::default()
                 },
-                "    y := 2;\n",
+                "        y := 2;\n",
             ),
         ] {
             let edits = format_range(text, y..y + 1, &options).expect("formats");
