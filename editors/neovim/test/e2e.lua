@@ -422,11 +422,33 @@ check('a blank after MoveL opens its first argument: the robtargets, the most us
       counts[name] = (counts[name] or 0) + 1
     end
   end
-  local robtargets = {}
-  for _, l in ipairs(lines) do
+  -- in scope where the line goes (after `WaitTime 0.2;`): the module's
+  -- and that routine's own
+  local here = line_of('WaitTime 0.2;') + 1
+  local function opens(l)
+    local u = l:upper()
+    return u:match('^%s*PROC%s') or u:match('^%s*FUNC%s') or u:match('^%s*TRAP%s')
+      or u:match('^%s*LOCAL%s+PROC%s') or u:match('^%s*LOCAL%s+FUNC%s') or u:match('^%s*LOCAL%s+TRAP%s')
+  end
+  local function closes(l)
+    local u = l:upper()
+    return u:match('^%s*ENDPROC') or u:match('^%s*ENDFUNC') or u:match('^%s*ENDTRAP')
+  end
+  local robtargets, start = {}, nil
+  for i, l in ipairs(lines) do
+    if opens(l) then
+      start = i
+    end
     local name = l:match('^%s*[%a]+%s+robtarget%s+([%a_][%w_]*)')
-    if name then
+    local last = i
+    while start and lines[last] and not closes(lines[last]) do
+      last = last + 1
+    end
+    if name and (start == nil or (start <= here and here <= last)) then
       table.insert(robtargets, name)
+    end
+    if closes(l) then
+      start = nil
     end
   end
   table.sort(robtargets, function(a, b)
@@ -459,6 +481,7 @@ check('indentation is the formatter\'s: the file\'s own (4 spaces here), or [for
   vim.cmd('edit ' .. vim.fn.fnameescape(dir .. '/sub/A.mod'))
   local other = vim.api.nvim_get_current_buf()
   local sw = vim.bo[other].shiftwidth
+  client_of(other) -- closed before its server starts, the start fails on a deleted buffer
   close_buffer(other)
   expect(sw == 3, 'shiftwidth %d below a rapid.toml with indent-width = 3', sw)
   -- without a configured width, a file indented by 2 keeps 2 (as rapid fmt does)
@@ -467,6 +490,7 @@ check('indentation is the formatter\'s: the file\'s own (4 spaces here), or [for
   vim.cmd('edit ' .. vim.fn.fnameescape(plain .. '/B.mod'))
   local two = vim.api.nvim_get_current_buf()
   local sw2, et = vim.bo[two].shiftwidth, vim.bo[two].expandtab
+  client_of(two)
   close_buffer(two)
   expect(sw2 == 2 and et, 'shiftwidth %d, expandtab %s for a file indented by 2', sw2, tostring(et))
 end)

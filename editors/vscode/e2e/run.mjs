@@ -77,10 +77,21 @@ const moveLOptionals = moveLParams
 // the robtarget the seeded module uses most: first after `MoveL `
 const words = lines.join("\n").match(/[A-Za-z][A-Za-z0-9_]*/g) ?? [];
 const uses = (name) => words.filter((w) => w.toLowerCase() === name.toLowerCase()).length;
-const robtargets = lines
-  .map((l) => l.match(/^\s*(?:LOCAL\s+|TASK\s+)?(?:VAR|PERS|CONST)\s+robtarget\s+([A-Za-z][A-Za-z0-9_]*)/i)?.[1])
-  .filter(Boolean)
-  .sort((a, b) => uses(b) - uses(a) || a.toLowerCase().localeCompare(b.toLowerCase()));
+// in scope where the test types (after `WaitTime 0.2;`): the module's and
+// that routine's own
+const robtargets = [];
+{
+  let routine = null;
+  const here = lines.findIndex((l) => l.includes("WaitTime 0.2;"));
+  lines.forEach((l, i) => {
+    if (/^\s*(LOCAL\s+)?(PROC|FUNC|TRAP)\b/i.test(l)) routine = i;
+    const name = l.match(/^\s*(?:LOCAL\s+|TASK\s+)?(?:VAR|PERS|CONST)\s+robtarget\s+([A-Za-z][A-Za-z0-9_]*)/i)?.[1];
+    const routineOfHere = routine !== null && routine <= here && !lines.slice(routine, here).some((x) => /^\s*END(PROC|FUNC|TRAP)\b/i.test(x));
+    if (name && (routine === null || (routineOfHere && i <= here))) robtargets.push(name);
+    if (/^\s*END(PROC|FUNC|TRAP)\b/i.test(l)) routine = null;
+  });
+  robtargets.sort((a, b) => uses(b) - uses(a) || a.toLowerCase().localeCompare(b.toLowerCase()));
+}
 log(`expected: ${expected.map((d) => `${d.code} at ${d.line}:${d.column}`).join(", ")}; MoveL optional arguments ${moveLOptionals.join(" ")}`);
 
 // ------------------------------------------------------------ code-server
@@ -180,6 +191,24 @@ async function step(name, fn, always = false) {
 }
 function assert(cond, message) {
   if (!cond) throw new Error(message);
+}
+/// How many times the extension's log says it started `rapid lsp` (from
+/// `command`, when given).
+function serverStarts(command) {
+  const line = command ? `Starting ${command} lsp` : /^Starting /gm;
+  let n = 0;
+  const walk = (dir) => {
+    for (const e of fs.readdirSync(dir, { withFileTypes: true })) {
+      const p = path.join(dir, e.name);
+      if (e.isDirectory()) walk(p);
+      else if (e.name.endsWith("RAPID Language Server.log")) {
+        const text = fs.readFileSync(p, "utf8");
+        n += typeof line === "string" ? text.split(line).length - 1 : (text.match(line) ?? []).length;
+      }
+    }
+  };
+  walk(path.join(data, "logs"));
+  return n;
 }
 
 let browser;
@@ -324,20 +353,7 @@ try {
   });
 
   await step("RAPID: Restart Language Server starts a new server", async () => {
-    const starts = () => {
-      let n = 0;
-      const walk = (dir) => {
-        for (const e of fs.readdirSync(dir, { withFileTypes: true })) {
-          const p = path.join(dir, e.name);
-          if (e.isDirectory()) walk(p);
-          else if (e.name.endsWith("RAPID Language Server.log")) {
-            n += (fs.readFileSync(p, "utf8").match(/^Starting /gm) ?? []).length;
-          }
-        }
-      };
-      walk(path.join(data, "logs"));
-      return n;
-    };
+    const starts = () => serverStarts();
     const before = starts();
     assert(before >= 1, `the log channel shows ${before} server starts`);
     await runCommand("RAPID: Restart Language Server");
@@ -580,21 +596,7 @@ try {
     await preview.first().waitFor({ state: "visible" });
     await page.screenshot({ path: path.join(out, "vscode-install-readme.png") });
     // "Set path" in this remote window asks for the path and starts the server
-    const startsOf = (command) => {
-      let n = 0;
-      const walk = (dir) => {
-        for (const e of fs.readdirSync(dir, { withFileTypes: true })) {
-          const p = path.join(dir, e.name);
-          if (e.isDirectory()) walk(p);
-          else if (e.name.endsWith("RAPID Language Server.log")) {
-            n += fs.readFileSync(p, "utf8").split(`Starting ${command} lsp`).length - 1;
-          }
-        }
-      };
-      walk(path.join(data, "logs"));
-      return n;
-    };
-    const startsBefore = startsOf(rapid);
+    const startsBefore = serverStarts(rapid);
     await runCommand("RAPID: Restart Language Server");
     const again = page.locator(".notifications-toasts .notification-toast", { hasText: bogus });
     await again.first().waitFor({ state: "visible" });
@@ -618,8 +620,8 @@ try {
     while (!saved() && Date.now() < deadline) await page.waitForTimeout(200);
     assert(saved(), "rapid.server.path was not saved");
     // the server starts with the path given
-    while (startsOf(rapid) <= startsBefore && Date.now() < deadline) await page.waitForTimeout(200);
-    assert(startsOf(rapid) > startsBefore, "no server start with the path given");
+    while (serverStarts(rapid) <= startsBefore && Date.now() < deadline) await page.waitForTimeout(200);
+    assert(serverStarts(rapid) > startsBefore, "no server start with the path given");
     fs.writeFileSync(machine, settings);
   });
 } catch (err) {
