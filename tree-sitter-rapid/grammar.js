@@ -99,7 +99,16 @@ function routineBody($) {
 module.exports = grammar({
   name: 'rapid',
 
-  externals: $ => [$.trailing_text, $._error_sentinel],
+  // `_incomplete`: where a half-typed statement breaks off at the end of a
+  // line (after `\`, `:=`, a `,`, inside a string or an aggregate) and
+  // the next line starts with a keyword that cannot continue it (`ENDPROC`,
+  // `ELSE`, `PROC`...), a zero-width stand-in for what is missing. It ends
+  // the broken part, so that error recovery needs one missing `;` and the
+  // statement stays inside its routine. Only the scanner makes it, and only
+  // there, where the text is certainly wrong; the statement then always
+  // lacks its `;` (MISSING in the tree). `_incomplete_string` is the same
+  // at the end of a line inside a string (where `!` and blanks are text).
+  externals: $ => [$.trailing_text, $._error_sentinel, $._incomplete, $._incomplete_string],
 
   extras: $ => [/\s/, /\uFEFF/, $.comment],
 
@@ -343,7 +352,7 @@ module.exports = grammar({
     assignment: $ => seq(
       field('left', $._target),
       ':=',
-      field('right', $._expression),
+      choice(field('right', $._expression), $._incomplete),
       ';',
     ),
 
@@ -467,27 +476,39 @@ module.exports = grammar({
 
     // first argument, then `, argument` or `\optional` (comma optional)
     argument_list: $ => seq(
-      field('argument', $.argument),
+      field('argument', alias($._first_argument, $.argument)),
       unrolledRepeat(choice(
         seq(',', field('argument', $.argument)),
         field('argument', alias($._optional_argument, $.argument)),
       ), 5),
     ),
 
-    argument: $ => choice(
+    // after a comma, the rest of a broken line may be missing
+    argument: $ => choice($._first_argument, $._incomplete),
+
+    _first_argument: $ => choice(
       field('value', choice($._expression, $.star)),
-      seq(field('name', $.identifier), ':=', field('value', choice($._expression, $.star))),
+      seq(
+        field('name', $.identifier),
+        ':=',
+        choice(field('value', choice($._expression, $.star)), $._incomplete),
+      ),
       $._optional_argument,
     ),
 
     // \Switch  \Opt:=value  \Opt?variable
     _optional_argument: $ => seq(
       '\\',
-      field('name', $._name),
-      optional(choice(
-        seq(':=', field('value', choice($._expression, $.star))),
-        seq('?', field('conditional', $._expression)),
-      )),
+      choice(
+        seq(
+          field('name', $._name),
+          optional(choice(
+            seq(':=', choice(field('value', choice($._expression, $.star)), $._incomplete)),
+            seq('?', field('conditional', $._expression)),
+          )),
+        ),
+        $._incomplete,
+      ),
     ),
 
     // `*` in an argument: the target stored in the instruction
@@ -577,7 +598,7 @@ module.exports = grammar({
       '[',
       field('element', $._expression),
       unrolledRepeat(seq(',', field('element', $._expression)), 7),
-      ']',
+      choice(']', seq(optional(','), $._incomplete)),
     ),
 
     component_access: $ => prec(PREC.postfix, seq(
@@ -622,7 +643,7 @@ module.exports = grammar({
     string: $ => seq(
       '"',
       repeat(choice($.string_content, $.escape_sequence)),
-      token.immediate('"'),
+      choice(token.immediate('"'), $._incomplete_string),
     ),
 
     string_content: _ => token.immediate(prec(1, choice(/[^"\\\r\n]+/, '\\'))),

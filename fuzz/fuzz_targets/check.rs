@@ -21,8 +21,8 @@ fuzz_target!(|data: &[u8]| {
         let _ = ide::completions(&task, 0, offset);
         let _ = ide::signature_help(&task, 0, offset);
         let _ = ide::definition(&task, 0, offset);
-        let _ = ide::references(&task, 0, offset, true);
-        let _ = ide::rename(&task, 0, offset, "fresh");
+        let _ = ide::references(&task, 0, offset, true, &[]);
+        let _ = ide::rename(&task, 0, offset, "fresh", &[]);
         let _ = rapid_analyzer::consteval::value_at(&task, 0, offset);
         let _ = ide::selection_ranges(&unit, &[offset]);
     }

@@ -49,12 +49,15 @@ fn measure(input: &Input) {
     for &at in &offsets {
         note("hover", time(|| ide::hover(&task, 0, at)));
         note("definition", time(|| ide::definition(&task, 0, at)));
-        note("references", time(|| ide::references(&task, 0, at, true)));
+        note(
+            "references",
+            time(|| ide::references(&task, 0, at, true, &[])),
+        );
         note(
             "highlights",
             time(|| ide::document_highlights(&task, 0, at)),
         );
-        note("rename", time(|| ide::rename(&task, 0, at, "fresh")));
+        note("rename", time(|| ide::rename(&task, 0, at, "fresh", &[])));
         note("completion", time(|| ide::completions(&task, 0, at)));
         note("selection", time(|| ide::selection_ranges(&unit, &[at])));
     }

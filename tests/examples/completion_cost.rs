@@ -44,7 +44,7 @@ fn main() -> ExitCode {
     let mut n = 0;
     for _ in 0..1000 {
         let t = Instant::now();
-        let items = rapid_analyzer::ide::completions_for(&task, 0, offset, details);
+        let items = rapid_analyzer::ide::completions_for(&task, 0, offset, details, None);
         n = items.len();
         std::hint::black_box(items);
         times.push(t.elapsed().as_secs_f64() * 1e3);

@@ -49,9 +49,9 @@ fn exercise(input: &Input, samples: usize) -> Vec<&'static str> {
         let _ = ide::definition(&task, 0, offset);
         let _ = ide::type_definition(&task, 0, offset);
         let _ = ide::prepare_rename(&task, 0, offset);
-        let _ = ide::references(&task, 0, offset, true);
+        let _ = ide::references(&task, 0, offset, true, &[]);
         let _ = ide::document_highlights(&task, 0, offset);
-        let _ = ide::rename(&task, 0, offset, "fresh");
+        let _ = ide::rename(&task, 0, offset, "fresh", &[]);
         let _ = ide::inlay_hints(
             &task,
             0,

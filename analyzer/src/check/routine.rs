@@ -96,6 +96,7 @@ pub(super) fn check_routine<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &'t Routi
         h.finish()
     };
     stmts::collect_labels(cx, labels);
+    rules::label_names_routine::check(cx, node);
     stmts::check_block(cx, &statements);
     for (h, in_error) in handlers.into_iter().zip([false, true, false]) {
         if let Some(h) = h {

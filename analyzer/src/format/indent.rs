@@ -96,31 +96,72 @@ pub(super) fn columns_from(start: usize, s: &str) -> usize {
 /// The unit that the most structure lines of a text already follow, from
 /// their depths and indentation as written: 4, 2, 3, 8 or 1 columns per
 /// level, with the module body and the cases of `TEST` indented or not; new
-/// indentation written with tabs if most indented lines start with one.
-/// A unit counts only if at least one indented line follows it, and only
-/// if it fits at least half of the lines: a text written flat, on one line
-/// or at random gets the default, 4 spaces with both indented. Ties go to
-/// the earlier in that order (so to the default).
+/// indentation written with tabs if most of the lines that go a tab's width
+/// in or more start with one.
+///
+/// A unit counts only if at least one indented line follows it: a text
+/// written flat or on one line gets the default, 4 spaces with the module
+/// body and `CASE` indented. A unit must fit at least half of the lines.
+/// Failing that (a text indented at random in places), the module body
+/// goes where most of the module's own lines (declarations, routines'
+/// first and last lines) are, so a module whose routines sit at column 0
+/// keeps them there and a stray line is the one to move: the unit is the
+/// one of those that fits the most lines if it fits at least a third of
+/// them, else 4 columns with `CASE` indented. Ties go to the earlier in
+/// that order (so to the default).
 pub(super) fn detect<'a>(lines: impl Iterator<Item = (Depth, &'a str)> + Clone) -> Unit {
-    let (mut tab, mut space, mut total) = (0usize, 0usize, 0usize);
+    let (mut total, mut flat, mut indented) = (0usize, 0usize, 0usize);
     for (depth, indent) in lines.clone() {
         total += usize::from(!depth.is_zero());
+        if depth.is_module_body() {
+            if columns(indent) == 0 {
+                flat += 1;
+            } else {
+                indented += 1;
+            }
+        }
+    }
+    let fits = |unit: &Unit| {
+        lines
+            .clone()
+            .filter(|(depth, indent)| !depth.is_zero() && unit.column(*depth) == columns(indent))
+            .count()
+    };
+    let unit = match best(&all_units(), lines.clone()) {
+        // not one line indented: a text written flat or on one line
+        None => Unit::spaces(4),
+        Some(unit) if fits(&unit) * 2 >= total => unit,
+        Some(_) => {
+            let module = flat <= indented;
+            let same: Vec<Unit> = all_units()
+                .into_iter()
+                .filter(|u| u.module == module)
+                .collect();
+            best(&same, lines.clone())
+                .filter(|unit| fits(unit) * 3 >= total)
+                .unwrap_or(Unit {
+                    module,
+                    ..Unit::spaces(4)
+                })
+        }
+    };
+    // Tabs or spaces: as most of the lines that go a tab's width in or
+    // more start (a line left of the first tab stop cannot start with a
+    // tab: it says nothing about how deeper lines are written).
+    let (mut tab, mut space) = (0usize, 0usize);
+    for (depth, indent) in lines {
+        if unit.column(depth) < TAB_WIDTH {
+            continue;
+        }
         match indent.bytes().next() {
             Some(b'\t') => tab += 1,
             Some(_) => space += 1,
             None => {}
         }
     }
-    let found = best(&all_units(), lines.clone()).filter(|unit| {
-        let fits = lines
-            .clone()
-            .filter(|(depth, indent)| !depth.is_zero() && unit.column(*depth) == columns(indent))
-            .count();
-        fits * 2 >= total
-    });
     Unit {
         tabs: tab > space,
-        ..found.unwrap_or_else(|| Unit::spaces(4))
+        ..unit
     }
 }
 
@@ -284,6 +325,36 @@ mod tests {
         ];
         assert_eq!(detect(flat.into_iter()), Unit::spaces(4));
         assert_eq!(detect(std::iter::empty()), Unit::spaces(4));
+    }
+
+    #[test]
+    fn a_module_at_column_0_stays_there_whatever_a_few_lines_say() {
+        // routines at column 0, their bodies at no one width, and a
+        // routine's first and last lines typed one space in
+        let mut lines = Vec::new();
+        for r in 0..40 {
+            let header = if r == 5 { " " } else { "" };
+            lines.push((depth(1, 0, 0), header));
+            for k in 0..20 {
+                lines.push((depth(1, 0, 1), ["  ", "   ", "     ", "      "][k % 4]));
+            }
+            lines.push((depth(1, 0, 0), header));
+        }
+        let unit = detect(lines.iter().copied());
+        assert!(!unit.module, "{unit:?}");
+        assert_eq!(unit.indent(depth(1, 0, 0)), "");
+        // and with the bodies at one width, that width
+        let mut lines = vec![(depth(1, 0, 0), " "), (depth(1, 0, 1), " ")];
+        for _ in 0..10 {
+            lines.extend([
+                (depth(1, 0, 0), ""),
+                (depth(1, 0, 1), "  "),
+                (depth(1, 0, 2), "    "),
+                (depth(1, 0, 0), ""),
+            ]);
+        }
+        let unit = detect(lines.iter().copied());
+        assert_eq!((unit.width, unit.module), (2, false));
     }
 
     #[test]

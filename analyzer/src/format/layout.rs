@@ -5,7 +5,7 @@
 
 use std::ops::Range;
 
-use super::collect::{Class, Start, Tok};
+use super::collect::{Class, Depth, Start, Tok};
 use super::indent::{self, Unit, columns, columns_from};
 use super::{FormatOptions, Style, spacing, wrap};
 
@@ -167,13 +167,13 @@ struct Layout<'a, 't> {
     anchors: std::collections::HashMap<usize, usize>,
 }
 
-/// The gap before every token.
-pub(super) fn layout(toks: &[Tok<'_>], text: &str, options: &FormatOptions) -> Vec<Gap> {
-    let orig = Original::new(toks, text);
+/// Each token's top-level item of the module (a routine, a run of
+/// declarations), the number of items, and the lines of the text that the
+/// structure starts: their item, depth and indentation as written.
+type Structure<'t> = (Vec<usize>, usize, Vec<(usize, Depth, &'t str)>);
+
+fn structure<'t>(toks: &[Tok<'_>], orig: &Original<'t>) -> Structure<'t> {
     let n = toks.len();
-    // each top-level item of a module (a routine, a run of declarations) and the
-    // lines of the text that the structure starts, with their depth and
-    // indentation as written
     let mut item = vec![0; n];
     let mut lines = Vec::new();
     let mut items = 0;
@@ -196,10 +196,30 @@ pub(super) fn layout(toks: &[Tok<'_>], text: &str, options: &FormatOptions) -> V
         }
         item[i] = items;
     }
-    let file = match options.indent_width {
+    (item, items, lines)
+}
+
+/// The text's indentation unit: configured, or the one most of its
+/// structure lines follow ([`indent::detect`]).
+fn file_unit(lines: &[(usize, Depth, &str)], options: &FormatOptions) -> Unit {
+    match options.indent_width {
         Some(width) => Unit::spaces(width),
         None => indent::detect(lines.iter().map(|&(_, d, s)| (d, s))),
-    };
+    }
+}
+
+/// The unit [`layout`] indents the text of `toks` with.
+pub(super) fn unit(toks: &[Tok<'_>], text: &str, options: &FormatOptions) -> Unit {
+    let orig = Original::new(toks, text);
+    file_unit(&structure(toks, &orig).2, options)
+}
+
+/// The gap before every token.
+pub(super) fn layout(toks: &[Tok<'_>], text: &str, options: &FormatOptions) -> Vec<Gap> {
+    let orig = Original::new(toks, text);
+    let n = toks.len();
+    let (item, items, lines) = structure(toks, &orig);
+    let file = file_unit(&lines, options);
     let mut units = vec![file.clone(); items + 1];
     if options.indent_width.is_none() {
         // each item that consistently follows another unit keeps it
@@ -342,6 +362,10 @@ impl Layout<'_, '_> {
                     None => "",
                 };
                 self.indent[i] = Some(indent.to_owned());
+            } else if i == 0 {
+                // the first token starts the first line, at the column it
+                // is given
+                self.indent[i] = Some(" ".repeat(col));
             }
             self.col[i] = col;
             self.line_first[i] = if starts || i == 0 {
@@ -466,7 +490,9 @@ impl Layout<'_, '_> {
     ///   the end of a body): where the statements of that body go;
     /// - deeper than a line before that opens a block, followed by the
     ///   block's first line, which moved: with that line;
-    /// - else as far from the next code line as it was.
+    /// - else as far from the next code line as it was;
+    /// - but alone in a block, never at the column of the line that opens
+    ///   it (formatted again, it would be like that line): inside it.
     fn comment_gaps(&self, gaps: &mut [Gap]) {
         let toks = self.toks;
         let n = toks.len();
@@ -548,6 +574,21 @@ impl Layout<'_, '_> {
                 Some(self.render(col, new_next))
             } else {
                 None
+            };
+            // Alone in a block, at the column where the line that opens
+            // it goes: formatted again, the comment would read as like
+            // that line, which puts it inside the block. So it goes there
+            // now (formatting twice gives what formatting once gave).
+            let new = match new {
+                Some(s)
+                    if closes
+                        && opens_before
+                        && prev_line.and_then(|p| self.indent[p].as_deref().map(columns))
+                            == Some(columns(&s)) =>
+                {
+                    in_block_before()
+                }
+                new => new,
             };
             *indent = new.unwrap_or_else(|| here.to_owned());
         }

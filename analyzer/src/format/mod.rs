@@ -185,6 +185,36 @@ pub fn format_range(
     ))
 }
 
+/// How a text's lines are indented, as the formatter writes them: columns
+/// per level, and tabs or spaces.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Indentation {
+    pub width: usize,
+    pub tabs: bool,
+}
+
+/// The indentation the formatter writes in `text` with `options`: the
+/// configured width in spaces, else the unit that most of the text's lines
+/// follow (tabs if most of the lines that go a tab's width in start with
+/// one). Editors set their own indentation from it, so that a line they
+/// indent is indented as `rapid fmt` would; a text with syntax errors gets
+/// the answer of what parses.
+pub fn indentation(text: &str, options: &FormatOptions) -> Indentation {
+    let unit = parse(text)
+        .and_then(|tree| collect::collect(tree.root_node(), text, false))
+        .map_or_else(
+            || match options.indent_width {
+                Some(width) => indent::Unit::spaces(width),
+                None => indent::Unit::spaces(4),
+            },
+            |toks| layout::unit(&toks, text, options),
+        );
+    Indentation {
+        width: unit.width,
+        tabs: unit.tabs,
+    }
+}
+
 thread_local! {
     static PARSER: RefCell<Parser> = RefCell::new(crate::syntax::parser());
 }
@@ -443,6 +473,45 @@ mod tests {
                 format!("MODULE M\nPROC p()\nx:=1;\n{line}ENDPROC\nENDMODULE\n")
             );
         }
+    }
+
+    #[test]
+    fn indentation_is_what_the_formatter_writes() {
+        let default = FormatOptions::default();
+        let spaces = "MODULE m\n    PROC p()\n        x := 1;\n\ty := 2;\n        z := 3;\n    ENDPROC\nENDMODULE\n";
+        assert_eq!(
+            indentation(spaces, &default),
+            Indentation {
+                width: 4,
+                tabs: false
+            }
+        );
+        // the one line with a tab is the one to change
+        assert_eq!(fmt(spaces).matches('\t').count(), 0);
+        let tabs = "MODULE m\n\tPROC p()\n\t\tx := 1;\n        y := 2;\n\t\tz := 3;\n\tENDPROC\nENDMODULE\n";
+        assert_eq!(
+            indentation(tabs, &default),
+            Indentation {
+                width: 4,
+                tabs: true
+            }
+        );
+        let two = "MODULE m\n  PROC p()\n    x := 1;\n  ENDPROC\nENDMODULE\n";
+        assert_eq!(indentation(two, &default).width, 2);
+        let configured = FormatOptions {
+            indent_width: Some(3),
+            ..FormatOptions::default()
+        };
+        assert_eq!(
+            indentation(tabs, &configured),
+            Indentation {
+                width: 3,
+                tabs: false
+            }
+        );
+        // half typed: what parses decides
+        let broken = "MODULE m\n  PROC p()\n    x := \n  ENDPROC\nENDMODULE\n";
+        assert_eq!(indentation(broken, &default).width, 2);
     }
 
     #[test]

@@ -6,18 +6,17 @@
 
 use std::collections::HashSet;
 
-use super::context::{Before, before, call_at, partial, statement_start, words};
-use super::signature::active;
+use super::context::{before, call_at, partial, statement_start, words};
 use super::usage::{function_rank, instruction_rank};
 use super::{CompletionItem, CompletionKind};
 use crate::items::{RoutineKind, Storage};
 use crate::names::{fold, same};
 use crate::sema::def::Def;
 use crate::sema::scope::Scope;
-use crate::sema::signature::Signature;
 use crate::task::{Item, Task};
 use crate::ty::Ty;
 
+mod args;
 mod builtins;
 
 use builtins::builtins;
@@ -115,18 +114,22 @@ fn snippet(label: &str, body: &str) -> CompletionItem {
 /// shows. All candidates of the context are returned (the client filters);
 /// `sort_text` orders the likely ones first.
 pub fn completions(task: &Task, unit: usize, offset: usize) -> Vec<CompletionItem> {
-    completions_for(task, unit, offset, true)
+    completions_for(task, unit, offset, true, None)
 }
 
 /// [`completions`]; without `details`, the routines', data's and built-ins'
 /// items have no `detail` (their signatures and declarations, the most of
 /// a statement start's list to build: clients that resolve an item's detail
-/// when they show it do not need them in the list).
+/// when they show it do not need them in the list). `trigger` is the
+/// character whose typing asked for the list, if one did: a blank or the
+/// `=` of `:=` ask only where a value is due (an argument after a call's
+/// name or a comma, a value after `:=`), and get nothing elsewhere.
 pub fn completions_for(
     task: &Task,
     unit: usize,
     offset: usize,
     details: bool,
+    trigger: Option<char>,
 ) -> Vec<CompletionItem> {
     let Some(u) = task.units.get(unit) else {
         return Vec::new();
@@ -142,9 +145,12 @@ pub fn completions_for(
     let b = &bf.text;
     let p = partial(b);
     let prefix = &b[..b.len() - p];
+    if trigger.is_some_and(|c| c == ' ' || c == '=') {
+        return args::values_due(&cx, &bf, prefix, details);
+    }
     match prefix.last() {
         Some(b'.') => return components(&cx, &prefix[..prefix.len() - 1]),
-        Some(b'\\') => return optional_args(&cx, &bf),
+        Some(b'\\') => return args::optional_args(&cx, &bf),
         _ => {}
     }
     let stmt = statement_start(prefix);
@@ -162,7 +168,7 @@ pub fn completions_for(
         if !in_header {
             if stmt_text.windows(2).any(|p| p == b":=") {
                 let ty = w.get(i + 1).cloned();
-                return expression_items(&cx, ty.as_deref(), details);
+                return args::typed_values(&cx, ty.as_deref(), details);
             }
             return if w.len() == i + 1 {
                 types(&cx)
@@ -216,21 +222,15 @@ pub fn completions_for(
     if let Some(call) = call_at(&bf)
         && call.name_start < offset - p
     {
-        let sym = cx.resolve_routine(&call.name, call.is_function);
-        let expected = sym
-            .and_then(|s| Signature::of(&s, cx.task))
-            .and_then(|sig| {
-                let i = active(&sig, &call)?;
-                Some(sig.params.get(i)?.type_name.clone())
-            });
         if call.current.name.is_some() && !call.current.has_value && call.current.optional {
-            return optional_args(&cx, &bf);
+            return args::optional_args(&cx, &bf);
         }
-        return expression_items(&cx, expected.as_deref(), details);
+        let expected = args::expected_type(&cx, &call);
+        return args::typed_values(&cx, expected.as_deref(), details);
     }
     // After `:=`: the left side's type is expected.
     let expected = assignment_target(&cx, stmt_text);
-    expression_items(&cx, expected.as_deref(), details)
+    args::typed_values(&cx, expected.as_deref(), details)
 }
 
 /// The labels of the routine around the cursor.
@@ -306,7 +306,7 @@ fn statement_start_items(cx: &Scope<'_>, details: bool) -> Vec<CompletionItem> {
         out.push(snippet(label, body));
     }
     // Assignments start with a name: the data in scope.
-    data_items(cx, None, details, &mut out);
+    data_items(cx, &Want::default(), details, &mut out);
     out
 }
 
@@ -392,13 +392,20 @@ fn visible_routines(
     }
 }
 
-/// Data in scope; those of type `expected` sort first.
-fn data_items(
-    cx: &Scope<'_>,
-    expected: Option<&str>,
-    details: bool,
-    out: &mut Vec<CompletionItem>,
-) {
+/// What a list of values is for: the type expected (its data sort first,
+/// the most used first), and whether only values of that type are offered.
+#[derive(Default)]
+pub(super) struct Want<'a> {
+    pub expected: Option<&'a str>,
+    pub strict: bool,
+    /// Uses of each name (folded) where the list is asked for.
+    pub uses: Option<&'a std::collections::HashMap<String, usize>>,
+}
+
+/// Data in scope; those of type `want.expected` sort first (the most used
+/// first), and with `want.strict` only those are offered.
+fn data_items(cx: &Scope<'_>, want: &Want<'_>, details: bool, out: &mut Vec<CompletionItem>) {
+    let expected = want.expected;
     let types = cx.task.types();
     let expected_base = expected.map(|e| types.base(&Ty::named(e)));
     let matches = |ty: Option<&str>| -> bool {
@@ -413,16 +420,21 @@ fn data_items(
                     ty: Option<&str>,
                     detail: &dyn Fn() -> String,
                     rank: u8| {
-        if !seen.insert(fold(name)) {
+        let fits = matches(ty);
+        if want.strict && !fits || !seen.insert(fold(name)) {
             return;
         }
-        let first = if matches(ty) { "0" } else { "5" };
-        out.push(item(
-            name,
-            kind,
-            details.then(detail),
-            &format!("{first}{rank}"),
-        ));
+        let sort = if fits {
+            let uses = want
+                .uses
+                .and_then(|u| u.get(&fold(name)))
+                .copied()
+                .unwrap_or(0);
+            format!("0{:05}{rank}", 99_999usize.saturating_sub(uses))
+        } else {
+            format!("5{rank}")
+        };
+        out.push(item(name, kind, details.then(detail), &sort));
     };
     let storage_kind = |s: Storage| match s {
         Storage::Var => CompletionKind::Variable,
@@ -508,10 +520,12 @@ fn data_items(
     }
 }
 
-/// Data and functions for an expression.
-fn expression_items(cx: &Scope<'_>, expected: Option<&str>, details: bool) -> Vec<CompletionItem> {
+/// Data and functions for an expression (with `want.strict`, only those
+/// of the type expected).
+fn expression_items(cx: &Scope<'_>, want: &Want<'_>, details: bool) -> Vec<CompletionItem> {
+    let expected = want.expected;
     let mut out = Vec::new();
-    data_items(cx, expected, details, &mut out);
+    data_items(cx, want, details, &mut out);
     let types = cx.task.types();
     let expected_base = expected.map(|e| types.base(&Ty::named(e)));
     let returns_expected = |ret: Option<&str>| match (expected, &expected_base, ret) {
@@ -526,38 +540,35 @@ fn expression_items(cx: &Scope<'_>, expected: Option<&str>, details: bool) -> Ve
         }
     });
     for (name, detail) in user {
-        let ret = lookup_return(cx, &name);
-        let first = if returns_expected(ret.as_deref()) {
-            "1"
-        } else {
-            "6"
-        };
-        if seen.insert(fold(&name)) {
-            out.push(item(
-                &name,
-                CompletionKind::Function,
-                detail,
-                &format!("{first}1"),
-            ));
+        let fits = returns_expected(lookup_return(cx, &name).as_deref());
+        if want.strict && !fits || !seen.insert(fold(&name)) {
+            continue;
         }
+        let first = if fits { "1" } else { "6" };
+        out.push(item(
+            &name,
+            CompletionKind::Function,
+            detail,
+            &format!("{first}1"),
+        ));
     }
     for (r, (key, sig)) in cx.cat.functions.iter().zip(&builtins(cx.cat).functions) {
-        if seen.insert(key.clone()) {
-            let first = if returns_expected(r.returns.as_deref()) {
-                "1"
-            } else {
-                "6"
-            };
-            out.push(item(
-                &r.name,
-                CompletionKind::Function,
-                details.then(|| sig.clone()),
-                &format!("{first}2{}", function_rank(key)),
-            ));
+        let fits = returns_expected(r.returns.as_deref());
+        if want.strict && !fits || !seen.insert(key.clone()) {
+            continue;
         }
+        let first = if fits { "1" } else { "6" };
+        out.push(item(
+            &r.name,
+            CompletionKind::Function,
+            details.then(|| sig.clone()),
+            &format!("{first}2{}", function_rank(key)),
+        ));
     }
-    for k in EXPRESSION_KEYWORDS {
-        out.push(item(k, CompletionKind::Keyword, None, "7"));
+    if !want.strict {
+        for k in EXPRESSION_KEYWORDS {
+            out.push(item(k, CompletionKind::Keyword, None, "7"));
+        }
     }
     out
 }
@@ -571,67 +582,6 @@ fn lookup_return(cx: &Scope<'_>, name: &str) -> Option<String> {
             .as_ref()
             .map(|t| t.name.clone()),
     }
-}
-
-/// After `\`: the optional parameters of the call not yet given (nor an
-/// alternative of one given). Those that can come next (between the last
-/// argument given and the next required parameter) come first, in order;
-/// then the later ones; those whose place is already past come last.
-fn optional_args(cx: &Scope<'_>, bf: &Before) -> Vec<CompletionItem> {
-    let Some(call) = call_at(bf) else {
-        return Vec::new();
-    };
-    let Some(sym) = cx.resolve_routine(&call.name, call.is_function) else {
-        return Vec::new();
-    };
-    let Some(sig) = Signature::of(&sym, cx.task) else {
-        return Vec::new();
-    };
-    let given: Vec<&str> = call.done.iter().filter_map(|a| a.name.as_deref()).collect();
-    let given_groups: HashSet<u32> = sig
-        .params
-        .iter()
-        .filter(|p| given.iter().any(|g| same(g, &p.name)))
-        .filter_map(|p| p.alt_group)
-        .collect();
-    let at = super::signature::next_position(&sig, &call);
-    let next_required = sig
-        .params
-        .iter()
-        .enumerate()
-        .skip(at)
-        .find(|(_, p)| !p.optional)
-        .map_or(sig.params.len(), |(i, _)| i);
-    let mut out = Vec::new();
-    for (i, p) in sig.params.iter().enumerate() {
-        if !p.optional
-            || given.iter().any(|g| same(g, &p.name))
-            || p.alt_group.is_some_and(|g| given_groups.contains(&g))
-        {
-            continue;
-        }
-        let place = if i < at {
-            2
-        } else if i < next_required {
-            0
-        } else {
-            1
-        };
-        let detail = if p.switch {
-            format!("\\{} (switch)", p.name)
-        } else {
-            format!("\\{} {}", p.type_name, p.name)
-        };
-        out.push(CompletionItem {
-            label: p.name.clone(),
-            kind: CompletionKind::OptionalArgument,
-            detail: Some(detail),
-            insert_text: (!p.switch).then(|| format!("{}:=", p.name)),
-            is_snippet: false,
-            sort_text: Some(format!("{place}{i:03}")),
-        });
-    }
-    out
 }
 
 /// After `.`: the components of the object's type. The object is the

@@ -16,6 +16,7 @@ mod hover;
 mod inlay;
 mod nav;
 pub(crate) mod resolve;
+mod shared;
 pub(crate) mod signature;
 pub(crate) mod structure;
 mod symbols;
@@ -28,7 +29,8 @@ pub use completion::{completion_documentation, completions, completions_for, pre
 pub use hover::hover;
 pub use inlay::{ParameterHints, inlay_hints};
 pub use nav::{
-    definition, document_highlights, prepare_rename, references, rename, type_definition,
+    definition, document_highlights, prepare_rename, references, rename, shared_files,
+    type_definition,
 };
 pub use signature::signature_help;
 pub use structure::{folding_ranges, selection_ranges};

@@ -2,11 +2,12 @@
 
 use std::collections::BTreeMap;
 use std::ops::Range;
+use std::sync::Arc;
 
-use super::Location;
 use super::resolve::{
     Def, DefKey, NamePath, for_each_name_spelt, name_at, resolve, resolve_at, type_def,
 };
+use super::{Location, shared};
 use crate::diagnostic::Edit;
 use crate::names::{fold, same};
 use crate::sema::scope::Scope;
@@ -300,18 +301,39 @@ fn passed_by_reference(cx: &Scope<'_>, path: &NamePath<'_>, lists: &mut ArgLists
 }
 
 /// Every use of the declaration at `offset` in the task's modules
-/// (names compare case-insensitively).
+/// (names compare case-insensitively), and, for a persistent shared by the
+/// tasks of a controller, in each task of `peers` that shares it (see
+/// [`shared_files`]).
 pub fn references(
     task: &Task,
     unit: usize,
     offset: usize,
     include_declaration: bool,
+    peers: &[Arc<Task>],
 ) -> Vec<Location> {
     let Some(def) = def_at(task, unit, offset) else {
         return Vec::new();
     };
+    let mut out = references_of(task, &def, include_declaration);
+    for (peer, r) in shared::linked(task, &def, peers) {
+        out.extend(references_of(peer, &Def::Item(r), include_declaration));
+    }
+    out
+}
+
+/// The files of the other tasks of the controller that declare the
+/// persistent at `offset`, when it is a system-global `PERS` (one datum
+/// for every task of the controller): the caller hands their tasks to
+/// [`references`] and [`rename`] as `peers`. Empty for anything else.
+pub fn shared_files(task: &Task, unit: usize, offset: usize) -> Vec<String> {
+    def_at(task, unit, offset)
+        .map(|def| shared::files(task, &def))
+        .unwrap_or_default()
+}
+
+fn references_of(task: &Task, def: &Def<'_>, include_declaration: bool) -> Vec<Location> {
     let decl = def.location(task).map(|(u, r, _)| (u, r.start));
-    let mut out: Vec<Location> = uses(task, &def, None)
+    let mut out: Vec<Location> = uses(task, def, None)
         .into_iter()
         .filter(|(u, r, _)| include_declaration || decl != Some((*u, r.start)))
         .filter_map(|(u, range, _)| {
@@ -323,7 +345,7 @@ pub fn references(
         })
         .collect();
     if include_declaration
-        && let Some(loc) = location(task, &def)
+        && let Some(loc) = location(task, def)
         && !out
             .iter()
             .any(|l| l.path == loc.path && l.range == loc.range)
@@ -461,19 +483,54 @@ pub(crate) fn invalid_identifier(name: &str) -> Option<String> {
 }
 
 /// Edits per file path renaming the declaration at `offset` and all its
-/// uses; refused for invalid identifiers, reserved words, built-in names
-/// and names already declared where the symbol is seen.
+/// uses (for a persistent shared by the tasks of a controller, in each
+/// task of `peers` that shares it too); refused for invalid identifiers,
+/// reserved words, built-in names, names already declared where the
+/// symbol is seen, and a shared persistent that a task declares with
+/// another type.
 pub fn rename(
     task: &Task,
     unit: usize,
     offset: usize,
     new_name: &str,
+    peers: &[Arc<Task>],
 ) -> Result<Vec<(String, Vec<Edit>)>, String> {
     prepare_rename(task, unit, offset)?;
     if let Some(why) = invalid_identifier(new_name) {
         return Err(why);
     }
     let def = def_at(task, unit, offset).ok_or("there is no name here to rename")?;
+    if let Some(why) = shared::rename_refusal(task, &def) {
+        return Err(why);
+    }
+    let mut by_path = rename_in(task, &def, new_name)?;
+    for (peer, r) in shared::linked(task, &def, peers) {
+        for (path, edits) in rename_in(peer, &Def::Item(r), new_name)? {
+            let list = by_path.entry(path).or_default();
+            for e in edits {
+                if !list.iter().any(|x| x.range == e.range) {
+                    list.push(e);
+                }
+            }
+        }
+    }
+    Ok(by_path
+        .into_iter()
+        .map(|(path, mut edits)| {
+            edits.sort_by_key(|e| e.range.start);
+            (path, edits)
+        })
+        .collect())
+}
+
+/// The edits, by file path, that rename `def` and its uses in `task`; an
+/// error when `new_name` is a built-in's or already denotes something
+/// where the symbol is seen.
+fn rename_in(
+    task: &Task,
+    def: &Def<'_>,
+    new_name: &str,
+) -> Result<BTreeMap<String, Vec<Edit>>, String> {
     let old = def.name(task);
     let cat = task.catalogue;
     if !same(&old, new_name)
@@ -483,7 +540,7 @@ pub fn rename(
     {
         return Err(format!("`{new_name}` is the name of a built-in"));
     }
-    let uses = uses(task, &def, None);
+    let uses = uses(task, def, None);
     // A clash: somewhere the symbol is used or declared, the new name
     // already denotes something else.
     if !same(&old, new_name) {
@@ -520,15 +577,15 @@ pub fn rename(
             return Err(format!("`{new_name}` is already declared in this scope"));
         }
     }
-    let mut by_path: BTreeMap<usize, Vec<Edit>> = BTreeMap::new();
+    let mut by_unit: BTreeMap<usize, Vec<Edit>> = BTreeMap::new();
     for (u, range, _) in uses {
-        by_path.entry(u).or_default().push(Edit {
+        by_unit.entry(u).or_default().push(Edit {
             range,
             replacement: new_name.to_owned(),
         });
     }
     if let Some((u, r, _)) = def.location(task) {
-        let edits = by_path.entry(u).or_default();
+        let edits = by_unit.entry(u).or_default();
         if !edits.iter().any(|e| e.range == r) {
             edits.push(Edit {
                 range: r,
@@ -536,12 +593,9 @@ pub fn rename(
             });
         }
     }
-    Ok(by_path
+    Ok(by_unit
         .into_iter()
-        .filter_map(|(u, mut edits)| {
-            edits.sort_by_key(|e| e.range.start);
-            Some((task.units.get(u)?.path.clone(), edits))
-        })
+        .filter_map(|(u, edits)| Some((task.units.get(u)?.path.clone(), edits)))
         .collect())
 }
 

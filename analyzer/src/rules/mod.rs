@@ -32,6 +32,7 @@ pub mod incomplete_code;
 pub mod index_count;
 pub mod invalid_operands;
 pub mod joint_out_of_range;
+pub mod label_names_routine;
 pub mod local_not_visible;
 pub mod missing_alternative;
 pub mod missing_initializer;
@@ -119,6 +120,7 @@ pub static RULES: &[&Rule] = &[
     &float_equality::RULE,
     &duplicate_module::RULE,
     &configuration_mismatch::RULE,
+    &label_names_routine::RULE,
 ];
 
 /// The rules a check runs. A rule switched off is not reported, and the

@@ -2,7 +2,7 @@ use crate::check::Cx;
 use crate::diagnostic::Related;
 use crate::items::{DataDecl, Scope, Storage};
 use crate::names::fold;
-use crate::task::{Item, SharedPers};
+use crate::task::{Item, SharedPers, Task};
 
 crate::declare_rule! {
     /// A persistent that another task of the controller declares differently.
@@ -35,32 +35,18 @@ crate::declare_rule! {
 /// Reports `decl` (module data of the checked unit) when another task of the
 /// controller declares the same system-global persistent differently.
 pub(crate) fn check(cx: &mut Cx<'_>, decl: &DataDecl) {
-    if decl.storage != Storage::Pers || decl.scope != Scope::Global || cx.task.shared.is_empty() {
+    if cx.task.shared.is_empty() {
         return;
     }
     let Some(ty) = &decl.ty else { return };
-    let Some(others) = cx.task.shared.get(&fold(&decl.name)) else {
-        return;
-    };
-    let own_alias = is_alias(cx, &ty.name);
-    let dims: Vec<&str> = decl
-        .dims
-        .iter()
-        .map(|r| cx.text.get(r.clone()).unwrap_or_default().trim())
-        .collect();
-    let Some(other) = others
-        .iter()
-        .filter(|o| o.task != cx.task.key)
-        .find(|o| differs(&ty.name, own_alias, &dims, o))
+    let Some(other) = elsewhere(cx.task, decl)
+        .into_iter()
+        .find(|o| !same_datum(cx.task, cx.text, decl, o))
     else {
         return;
     };
-    let here = if dims.is_empty() {
-        ty.name.clone()
-    } else {
-        format!("{}{{{}}}", ty.name, dims.join(","))
-    };
-    let task = other.task.rsplit('/').next().unwrap_or(&other.task);
+    let here = own_display(cx.text, decl, &ty.name);
+    let task = task_name(other);
     let mut d = crate::diagnostic::Diagnostic::new(
         &RULE,
         decl.name_range.clone(),
@@ -78,9 +64,54 @@ pub(crate) fn check(cx: &mut Cx<'_>, decl: &DataDecl) {
     cx.report_with(d);
 }
 
-fn is_alias(cx: &Cx<'_>, name: &str) -> bool {
+/// The declarations in the other tasks of the controller of the
+/// system-global persistent `decl` (module data of `task`), if it is one:
+/// a `PERS` neither `TASK` nor `LOCAL`, in a backup's task folder.
+pub(crate) fn elsewhere<'t>(task: &'t Task, decl: &DataDecl) -> Vec<&'t SharedPers> {
+    if decl.storage != Storage::Pers || decl.scope != Scope::Global {
+        return Vec::new();
+    }
+    task.shared
+        .get(&fold(&decl.name))
+        .map(|all| all.iter().filter(|o| o.task != task.key).collect())
+        .unwrap_or_default()
+}
+
+/// Whether `other` declares the same datum as `decl` (of `task`, whose
+/// text is `text`): the same type (or an alias on either side) and the
+/// same dimensions.
+pub(crate) fn same_datum(task: &Task, text: &str, decl: &DataDecl, other: &SharedPers) -> bool {
+    let Some(ty) = &decl.ty else { return true };
+    let dims: Vec<&str> = decl
+        .dims
+        .iter()
+        .map(|r| text.get(r.clone()).unwrap_or_default().trim())
+        .collect();
+    !differs(&ty.name, is_alias(task, &ty.name), &dims, other)
+}
+
+/// The type of `decl` as RAPID writes it, with its dimensions.
+pub(crate) fn own_display(text: &str, decl: &DataDecl, ty: &str) -> String {
+    let dims: Vec<&str> = decl
+        .dims
+        .iter()
+        .map(|r| text.get(r.clone()).unwrap_or_default().trim())
+        .collect();
+    if dims.is_empty() {
+        ty.to_owned()
+    } else {
+        format!("{ty}{{{}}}", dims.join(","))
+    }
+}
+
+/// The task's folder name (`TASK2`) of a declaration elsewhere.
+pub(crate) fn task_name(other: &SharedPers) -> &str {
+    other.task.rsplit('/').next().unwrap_or(&other.task)
+}
+
+fn is_alias(task: &Task, name: &str) -> bool {
     let folded = fold(name);
-    [cx.task.globals.get(&folded), cx.task.locals.get(&folded)]
+    [task.globals.get(&folded), task.locals.get(&folded)]
         .into_iter()
         .flatten()
         .flatten()

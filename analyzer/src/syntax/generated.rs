@@ -517,7 +517,7 @@ pub const KIND_FIELDS: &[(&str, &[FieldInfo])] = &[
             FieldInfo {
                 name: field::RIGHT,
                 multiple: false,
-                required: true,
+                required: false,
                 kinds: &[kind::AGGREGATE, kind::BINARY_EXPRESSION, kind::BOOLEAN, kind::COMPONENT_ACCESS, kind::FUNCTION_CALL, kind::IDENTIFIER, kind::INDEX_EXPRESSION, kind::NUMBER, kind::PARENTHESIZED_EXPRESSION, kind::PLACEHOLDER, kind::STRING, kind::UNARY_EXPRESSION],
             },
         ],

@@ -86,7 +86,18 @@ pub fn syntax_diagnostics(tree: &Tree, text: &str) -> Vec<Diagnostic> {
             }
             false
         } else if node.is_missing() {
-            out.push(missing_diagnostic(node, &language));
+            // the `;` after a string that the end of its line closed: the
+            // string's finding says it
+            let after_open_string = out
+                .iter()
+                .take(quotes.len())
+                .any(|d| d.range.end == node.start_byte());
+            if !after_open_string {
+                out.push(
+                    typos::broken_off(node, text)
+                        .unwrap_or_else(|| missing_diagnostic(node, &language)),
+                );
+            }
             false
         } else {
             node.has_error()

@@ -344,6 +344,55 @@ fn missing_semicolon(error: Node<'_>, language: &Language) -> Option<Diagnostic>
     ))
 }
 
+/// A statement broken off at the end of its line before a line that no
+/// statement continues (`MoveL p10, v100, z10, tool0\` and `ENDPROC`
+/// after it): the grammar closes what is open there and only the `;` is
+/// missing (see `_incomplete` in the grammar). Told at what was left
+/// open: an optional argument's `\`, a `:=`, a `,`, an aggregate's `[`.
+/// `None` for a plain missing `;` (and for a string left open, which
+/// [`unterminated_strings`] tells).
+pub(super) fn broken_off(missing: Node<'_>, text: &str) -> Option<Diagnostic> {
+    if missing.kind() != ";" {
+        return None;
+    }
+    let before = text.get(..missing.start_byte())?.trim_end();
+    let end = before.len();
+    let said = |at: usize, len: usize, message: &str| {
+        Some(Diagnostic::new(
+            &syntax_error::RULE,
+            at..at + len,
+            format!("{message}; the statement is not finished (its `;` is missing too)"),
+        ))
+    };
+    if before.ends_with('\\') {
+        return said(
+            end - 1,
+            1,
+            "the name of an optional argument is missing after `\\`",
+        );
+    }
+    if before.ends_with(":=") {
+        return said(end - 2, 2, "a value is missing after `:=`");
+    }
+    if before.ends_with(',') {
+        // an argument, or an aggregate's element: the innermost bracket says
+        let prev = super::previous_leaf(missing)?;
+        let in_aggregate = std::iter::successors(Some(prev), |n| n.parent())
+            .take_while(|n| !crate::syntax_util::is_simple_statement(n.kind()))
+            .any(|n| n.kind() == kind::AGGREGATE);
+        if !in_aggregate {
+            return said(end - 1, 1, "an argument is missing after `,`");
+        }
+    }
+    // an aggregate that the end of the line closed
+    let prev = super::previous_leaf(missing)?;
+    let open = std::iter::successors(Some(prev), |n| n.parent())
+        .take_while(|n| !crate::syntax_util::is_simple_statement(n.kind()))
+        .filter(|n| n.kind() == kind::AGGREGATE)
+        .find(|n| text.get(n.byte_range()).is_some_and(|t| !t.ends_with(']')))?;
+    said(open.start_byte(), 1, "this aggregate has no closing `]`")
+}
+
 #[cfg(test)]
 mod tests {
     use crate::syntax::{parse, parser, syntax_diagnostics};
@@ -464,6 +513,42 @@ mod tests {
                 "{body}"
             );
         }
+    }
+
+    /// A statement broken off before `ENDPROC` (the routine's end follows
+    /// each body): told at what was left open, and nothing else.
+    #[test]
+    fn half_typed_statements_are_told_at_what_they_left_open() {
+        let cases = [
+            (
+                "    MoveL p10, v100, z10, tool0\\",
+                "1:32",
+                "the name of an optional argument is missing after `\\`",
+            ),
+            (
+                "    MoveL p10, v100, z10, tool0\\WObj:=",
+                "1:37",
+                "a value is missing after `:=`",
+            ),
+            (
+                "    MoveL p10, v100,",
+                "1:20",
+                "an argument is missing after `,`",
+            ),
+            (
+                "    n := [1, 2, ",
+                "1:10",
+                "this aggregate has no closing `]`",
+            ),
+            ("    n :=", "1:7", "a value is missing after `:=`"),
+        ];
+        for (body, at, message) in cases {
+            let message =
+                format!("{message}; the statement is not finished (its `;` is missing too)");
+            assert_eq!(one(body), (at.to_owned(), "E001", message), "{body}");
+        }
+        // the string's finding says it all
+        assert_eq!(one("    TPWrite \"hello;").0, "1:13");
     }
 
     #[test]

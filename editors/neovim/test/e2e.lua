@@ -89,14 +89,18 @@ local function signature(name)
 end
 local wait_time_signature = signature('WaitTime')
 local movel_signature = signature('MoveL')
+-- the optional arguments of MoveL that may follow its last required one
+-- (Tool): what completion offers after `tool\`
 local movel_optionals = {}
 for param in (movel_signature:match('%((.*)%)') or ''):gmatch('[^,|]+') do
   param = vim.trim(param)
-  if param:sub(1, 1) == '\\' then
-    local name = param:gsub('{.-}', ''):match('([%a_][%w_]*)%s*$')
+  local name = param:gsub('{.-}', ''):match('([%a_][%w_]*)%s*%]?$')
+  if param:sub(1, 1) == '\\' or param:sub(1, 2) == '[\\' then
     if name then
       movel_optionals[name:lower()] = true
     end
+  else
+    movel_optionals = {} -- a required one: only the optional ones after it
   end
 end
 
@@ -391,7 +395,7 @@ local function completion_on_new_line(code, context)
   return items, help
 end
 
-check('completion after \\ lists the optional arguments', function()
+check('completion after tool\\ lists only the optional arguments that may follow', function()
   local items = completion_on_new_line('MoveL pPickAbove, v300, fine, tGripper\\',
     { triggerKind = 2, triggerCharacter = '\\' })
   local labels, known = {}, 0
@@ -403,8 +407,60 @@ check('completion after \\ lists the optional arguments', function()
     end
   end
   local total = vim.tbl_count(movel_optionals)
-  expect(known == total, 'completion lists %d of the %d optional arguments of MoveL: %s', known, total,
-    table.concat(labels, ' '))
+  expect(total > 0 and known == total and #labels == total,
+    'completion lists %s; the optional arguments after Tool in `rapid builtins MoveL` are %s',
+    table.concat(labels, ' '), table.concat(vim.tbl_keys(movel_optionals), ' '))
+end)
+
+check('a blank after MoveL opens its first argument: the robtargets, the most used first', function()
+  local items = completion_on_new_line('MoveL ', { triggerKind = 2, triggerCharacter = ' ' })
+  local first = items[1] and items[1].label
+  -- the robtarget the module uses most
+  local counts = {}
+  for _, l in ipairs(lines) do
+    for name in l:gmatch('[%a_][%w_]*') do
+      counts[name] = (counts[name] or 0) + 1
+    end
+  end
+  -- in scope where the line goes (after `WaitTime 0.2;`): the module's
+  -- and that routine's own
+  local here = line_of('WaitTime 0.2;') + 1
+  local function opens(l)
+    local u = l:upper()
+    return u:match('^%s*PROC%s') or u:match('^%s*FUNC%s') or u:match('^%s*TRAP%s')
+      or u:match('^%s*LOCAL%s+PROC%s') or u:match('^%s*LOCAL%s+FUNC%s') or u:match('^%s*LOCAL%s+TRAP%s')
+  end
+  local function closes(l)
+    local u = l:upper()
+    return u:match('^%s*ENDPROC') or u:match('^%s*ENDFUNC') or u:match('^%s*ENDTRAP')
+  end
+  local robtargets, start = {}, nil
+  for i, l in ipairs(lines) do
+    if opens(l) then
+      start = i
+    end
+    local name = l:match('^%s*[%a]+%s+robtarget%s+([%a_][%w_]*)')
+    local last = i
+    while start and lines[last] and not closes(lines[last]) do
+      last = last + 1
+    end
+    if name and (start == nil or (start <= here and here <= last)) then
+      table.insert(robtargets, name)
+    end
+    if closes(l) then
+      start = nil
+    end
+  end
+  table.sort(robtargets, function(a, b)
+    return counts[a] > counts[b] or (counts[a] == counts[b] and a:lower() < b:lower())
+  end)
+  expect(#robtargets > 0 and first == robtargets[1], 'first item %s, expected %s (of %s)', tostring(first),
+    tostring(robtargets[1]), table.concat(robtargets, ' '))
+  for _, item in ipairs(items) do
+    expect(item.label ~= 'nPlaced', 'a num offered for a robtarget')
+  end
+  local none = completion_on_new_line('IF nPlaced ', { triggerKind = 2, triggerCharacter = ' ' })
+  expect(#none == 0, 'a blank after a condition offered %d items', #none)
 end)
 
 check('indentation is the formatter\'s: the file\'s own (4 spaces here), or [format] indent-width of rapid.toml', function()
@@ -425,6 +481,7 @@ check('indentation is the formatter\'s: the file\'s own (4 spaces here), or [for
   vim.cmd('edit ' .. vim.fn.fnameescape(dir .. '/sub/A.mod'))
   local other = vim.api.nvim_get_current_buf()
   local sw = vim.bo[other].shiftwidth
+  client_of(other) -- closed before its server starts, the start fails on a deleted buffer
   close_buffer(other)
   expect(sw == 3, 'shiftwidth %d below a rapid.toml with indent-width = 3', sw)
   -- without a configured width, a file indented by 2 keeps 2 (as rapid fmt does)
@@ -433,8 +490,40 @@ check('indentation is the formatter\'s: the file\'s own (4 spaces here), or [for
   vim.cmd('edit ' .. vim.fn.fnameescape(plain .. '/B.mod'))
   local two = vim.api.nvim_get_current_buf()
   local sw2, et = vim.bo[two].shiftwidth, vim.bo[two].expandtab
+  client_of(two)
   close_buffer(two)
   expect(sw2 == 2 and et, 'shiftwidth %d, expandtab %s for a file indented by 2', sw2, tostring(et))
+end)
+
+check('indentation of mixed files: the server\'s answer, the majority\'s, as rapid fmt writes it', function()
+  local dir = vim.fn.tempname()
+  local spaces = { 'MODULE S', '    PROC p()', '        x := 1;', '\ty := 2;', '        IF x > 0 THEN',
+    '            z := 3;', '        ENDIF', '    ENDPROC', 'ENDMODULE' }
+  local tabs = { 'MODULE T', '\tPROC p()', '\t\tx := 1;', '      y := 2;', '\t\tIF x > 0 THEN',
+    '\t\t\tz := 3;', '\t\tENDIF', '\tENDPROC', 'ENDMODULE' }
+  write_tree(dir, { ['S.mod'] = spaces, ['T.mod'] = tabs })
+  for _, case in ipairs({ { 'S.mod', false }, { 'T.mod', true } }) do
+    local path = dir .. '/' .. case[1]
+    vim.cmd('edit ' .. vim.fn.fnameescape(path))
+    local b = vim.api.nvim_get_current_buf()
+    client_of(b)
+    local ok = vim.wait(TIMEOUT, function()
+      return vim.b[b].rapid_indentation ~= nil
+    end, 50)
+    local answer = vim.b[b].rapid_indentation
+    local et, sw = vim.bo[b].expandtab, vim.bo[b].shiftwidth
+    -- = on the odd line writes it as rapid fmt does
+    vim.api.nvim_win_set_cursor(0, { 4, 0 })
+    vim.cmd('normal! ==')
+    local got = vim.api.nvim_buf_get_lines(b, 3, 4, false)[1]
+    local fmt_out = vim.system({ rapid_bin, 'fmt', '-' }, { stdin = table.concat(vim.fn.readfile(path), '\n') .. '\n', text = true }):wait()
+    local formatted = vim.split(fmt_out.stdout or "", "\n")
+    close_buffer(b)
+    expect(ok, '%s: no answer to rapid/indentation', case[1])
+    expect(answer.tabs == case[2] and answer.width == 4, '%s: the server says %s', case[1], vim.inspect(answer))
+    expect(et == not case[2] and sw == 4, '%s: expandtab %s, shiftwidth %d', case[1], tostring(et), sw)
+    expect(got == formatted[4], '%s: = wrote %q, rapid fmt writes %q', case[1], got, tostring(formatted[4]))
+  end
 end)
 
 check('a file that is not open has its diagnostics too (Cell.sys, as rapid check says)', function()
@@ -589,6 +678,57 @@ check(':RapidRestart starts a new server that publishes the diagnostics again', 
     return false
   end, 50)
   expect(ok, 'no %s diagnostic from the new server', expected[1].code)
+end)
+
+check(':checkhealth rapid: binary and version, parser, queries, server attached, root', function()
+  vim.cmd('buffer ' .. buf)
+  client_of(buf)
+  vim.cmd('checkhealth rapid')
+  local report = table.concat(vim.api.nvim_buf_get_lines(0, 0, -1, false), '\n')
+  vim.cmd('bwipeout!')
+  vim.cmd('buffer ' .. buf)
+  if log_path then
+    vim.fn.writefile(vim.split(report, '\n'), vim.fs.dirname(log_path) .. '/neovim-checkhealth.txt')
+  end
+  local version = vim.trim(run({ rapid_bin, '--version' }))
+  for _, want in ipairs({ version, 'the parser loads', 'the queries are current and load', 'the server is attached',
+    'project root: ' .. ws, 'indentation from the server' }) do
+    expect(report:find(want, 1, true), 'no %q in the report:\n%s', want, report)
+  end
+  expect(not report:find('ERROR', 1, true), 'an error in the report:\n%s', report)
+end)
+
+check('a missing server binary: a message says what is missing and how to install it; :checkhealth says it too', function()
+  local rapid = require('rapid')
+  local saved = vim.deepcopy(rapid.config)
+  local messages = {}
+  local notify = vim.notify
+  vim.notify = function(msg, level)
+    table.insert(messages, { msg = msg, level = level })
+  end
+  local ok, err = pcall(function()
+    rapid.setup(vim.tbl_extend('force', saved, { cmd = { '/no/such/dir/rapid', 'lsp' } }))
+    local dir = vim.fn.tempname()
+    write_tree(dir, { ['M.mod'] = { 'MODULE M', 'ENDMODULE' } })
+    vim.cmd('edit ' .. vim.fn.fnameescape(dir .. '/M.mod'))
+    local b = vim.api.nvim_get_current_buf()
+    vim.wait(1000, function()
+      return #messages > 0
+    end, 50)
+    vim.cmd('checkhealth rapid')
+    local report = table.concat(vim.api.nvim_buf_get_lines(0, 0, -1, false), '\n')
+    vim.cmd('bwipeout!')
+    close_buffer(b)
+    local text = messages[1] and messages[1].msg or ''
+    expect(text:find('/no/such/dir/rapid', 1, true) and text:find('cargo install --path lsp', 1, true),
+      'message: %q', text)
+    expect(messages[1].level == vim.log.levels.WARN, 'level %s', tostring(messages[1].level))
+    expect(report:find('cannot be run', 1, true) and report:find('cargo install --path lsp', 1, true),
+      'report:\n%s', report)
+  end)
+  vim.notify = notify
+  rapid.setup(saved)
+  expect(ok, '%s', tostring(err))
 end)
 
 finish()

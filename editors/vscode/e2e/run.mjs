@@ -64,13 +64,34 @@ const builtin = (name) => {
 };
 const waitTimeSignature = builtin("WaitTime");
 const moveLSignature = builtin("MoveL");
-// the names of the parameters written with a leading backslash
-const moveLOptionals = moveLSignature
+// the names of the parameters written with a leading backslash that come
+// after the last required one (Tool): what may follow `tool\`
+const moveLParams = moveLSignature
   .replace(/^[^(]*\(|\)[^)]*$/g, "")
   .split(/[,|]/)
-  .map((p) => p.trim())
-  .filter((p) => p.startsWith("\\"))
+  .map((p) => p.trim());
+const lastRequired = moveLParams.findLastIndex((p) => !p.startsWith("\\"));
+const moveLOptionals = moveLParams
+  .slice(lastRequired + 1)
   .map((p) => p.split(/\s+/).pop().replace(/\{.*$/, ""));
+// the robtarget the seeded module uses most: first after `MoveL `
+const words = lines.join("\n").match(/[A-Za-z][A-Za-z0-9_]*/g) ?? [];
+const uses = (name) => words.filter((w) => w.toLowerCase() === name.toLowerCase()).length;
+// in scope where the test types (after `WaitTime 0.2;`): the module's and
+// that routine's own
+const robtargets = [];
+{
+  let routine = null;
+  const here = lines.findIndex((l) => l.includes("WaitTime 0.2;"));
+  lines.forEach((l, i) => {
+    if (/^\s*(LOCAL\s+)?(PROC|FUNC|TRAP)\b/i.test(l)) routine = i;
+    const name = l.match(/^\s*(?:LOCAL\s+|TASK\s+)?(?:VAR|PERS|CONST)\s+robtarget\s+([A-Za-z][A-Za-z0-9_]*)/i)?.[1];
+    const routineOfHere = routine !== null && routine <= here && !lines.slice(routine, here).some((x) => /^\s*END(PROC|FUNC|TRAP)\b/i.test(x));
+    if (name && (routine === null || (routineOfHere && i <= here))) robtargets.push(name);
+    if (/^\s*END(PROC|FUNC|TRAP)\b/i.test(l)) routine = null;
+  });
+  robtargets.sort((a, b) => uses(b) - uses(a) || a.toLowerCase().localeCompare(b.toLowerCase()));
+}
 log(`expected: ${expected.map((d) => `${d.code} at ${d.line}:${d.column}`).join(", ")}; MoveL optional arguments ${moveLOptionals.join(" ")}`);
 
 // ------------------------------------------------------------ code-server
@@ -171,6 +192,24 @@ async function step(name, fn, always = false) {
 function assert(cond, message) {
   if (!cond) throw new Error(message);
 }
+/// How many times the extension's log says it started `rapid lsp` (from
+/// `command`, when given).
+function serverStarts(command) {
+  const line = command ? `Starting ${command} lsp` : /^Starting /gm;
+  let n = 0;
+  const walk = (dir) => {
+    for (const e of fs.readdirSync(dir, { withFileTypes: true })) {
+      const p = path.join(dir, e.name);
+      if (e.isDirectory()) walk(p);
+      else if (e.name.endsWith("RAPID Language Server.log")) {
+        const text = fs.readFileSync(p, "utf8");
+        n += typeof line === "string" ? text.split(line).length - 1 : (text.match(line) ?? []).length;
+      }
+    }
+  };
+  walk(path.join(data, "logs"));
+  return n;
+}
 
 let browser;
 let page;
@@ -242,6 +281,19 @@ try {
     return text;
   };
 
+  await step("the workspace starts the server: Problems lists its modules before any is opened", async () => {
+    await runCommand("View: Focus Problems");
+    for (const want of [expected[0], cellExpected[0]]) {
+      const row = page.locator(".markers-panel .monaco-list-row", { hasText: want.code }).filter({
+        hasText: want.message.slice(0, 20),
+      });
+      await row.first().waitFor({ state: "visible", timeout: TIMEOUT });
+    }
+    const tabs = await page.locator(".tabs-container .tab").count();
+    await page.screenshot({ path: path.join(out, "vscode-workspace-problems.png") });
+    assert(tabs === 0, `${tabs} editors are open`);
+  });
+
   // open the seeded module through Quick Open
   await page.keyboard.press("Control+P");
   await page.locator(".quick-input-widget input").waitFor({ state: "visible" });
@@ -301,20 +353,7 @@ try {
   });
 
   await step("RAPID: Restart Language Server starts a new server", async () => {
-    const starts = () => {
-      let n = 0;
-      const walk = (dir) => {
-        for (const e of fs.readdirSync(dir, { withFileTypes: true })) {
-          const p = path.join(dir, e.name);
-          if (e.isDirectory()) walk(p);
-          else if (e.name.endsWith("RAPID Language Server.log")) {
-            n += (fs.readFileSync(p, "utf8").match(/^Starting /gm) ?? []).length;
-          }
-        }
-      };
-      walk(path.join(data, "logs"));
-      return n;
-    };
+    const starts = () => serverStarts();
     const before = starts();
     assert(before >= 1, `the log channel shows ${before} server starts`);
     await runCommand("RAPID: Restart Language Server");
@@ -399,10 +438,11 @@ try {
     }
     await page.waitForTimeout(500);
     const labels = (await rows.allInnerTexts()).map((t) => t.trim().split(/\s/)[0].replace(/^\\/, ""));
-    const known = labels.filter((l) => moveLOptionals.some((o) => o.toLowerCase() === l.toLowerCase()));
-    assert(known.length >= Math.min(3, moveLOptionals.length), `completion rows: ${labels.join(", ")}`);
-    // what can come after the Tool argument first
-    assert(labels[0] === "WObj", `the first row after tGripper\\ is ${labels[0]}: ${labels.join(", ")}`);
+    // only what may come after the Tool argument, in order
+    assert(
+      labels.join(" ") === moveLOptionals.join(" "),
+      `completion rows after tGripper\\: ${labels.join(", ")}; expected ${moveLOptionals.join(", ")}`,
+    );
     // signature help marks that parameter, with its type
     await page.keyboard.press("Escape");
     await page.keyboard.press("Control+Shift+Space");
@@ -424,6 +464,25 @@ try {
     await page.keyboard.press("Escape");
   });
 
+  await step("a blank after MoveL opens its first argument: the robtargets, the most used first", async () => {
+    await page.keyboard.press("Escape");
+    const line = lineOf("WaitTime 0.2;");
+    await goTo(line, lines[line - 1].length + 1);
+    await page.keyboard.press("End");
+    await page.keyboard.press("Enter");
+    await page.keyboard.type("MoveL ", { delay: 20 });
+    const rows = page.locator(".suggest-widget.visible .monaco-list-row");
+    await rows.first().waitFor({ state: "visible", timeout: 10000 });
+    await page.waitForTimeout(500);
+    const labels = (await rows.allInnerTexts()).map((t) => t.trim().split(/\s/)[0]);
+    await page.screenshot({ path: path.join(out, "vscode-completion-first-argument.png") });
+    await page.keyboard.press("Escape");
+    await page.keyboard.press("Control+Z");
+    assert(robtargets.length > 0, "no robtarget in the seeded module");
+    assert(labels[0] === robtargets[0], `first row ${labels[0]}, expected ${robtargets[0]}: ${labels.join(", ")}`);
+    assert(!labels.includes("nPlaced"), `a num offered for a robtarget: ${labels.join(", ")}`);
+  });
+
   await step("MoveL ranks first at the start of a statement", async () => {
     await page.keyboard.press("Escape");
     const line = lineOf("WaitTime 0.2;");
@@ -438,6 +497,31 @@ try {
     await page.keyboard.press("Escape");
     await page.keyboard.press("Control+Z");
     assert(first === "MoveL", `the first row is ${first}`);
+  });
+
+  await step("a controller backup opened as the workspace shows its Problems before any file is opened", async () => {
+    const backup = path.join(tmp, "backup", "CELL_BACKUP");
+    const write = (rel, text) => {
+      fs.mkdirSync(path.dirname(path.join(backup, rel)), { recursive: true });
+      fs.writeFileSync(path.join(backup, rel), text);
+    };
+    write("BACKINFO/backinfo.txt", "backup\n");
+    write("SYSPAR/EIO.cfg", 'EIO:CFG_1.0:6:1::\n#\nEIO_SIGNAL:\n\n      -Name "diGo" -SignalType "DI" -Device "d652"\n');
+    write(
+      "RAPID/TASK1/PROGMOD/Cell.mod",
+      "MODULE Cell\n    PROC main()\n        VAR num nSpare;\n        WaitDI diGo, 1;\n    ENDPROC\nENDMODULE\n",
+    );
+    const want = JSON.parse(spawnSync(rapid, ["check", backup, "--format", "json"], { encoding: "utf8" }).stdout);
+    assert(want.length === 1 && want[0].code === "W201", `rapid check says ${JSON.stringify(want)}`);
+    await page.goto(`http://127.0.0.1:${port}/?folder=${encodeURIComponent(backup)}`);
+    await page.waitForSelector(".monaco-workbench");
+    await page.waitForTimeout(1500);
+    await runCommand("View: Focus Problems");
+    const row = page.locator(".markers-panel .monaco-list-row", { hasText: "W201" }).filter({ hasText: "nSpare" });
+    await row.first().waitFor({ state: "visible", timeout: TIMEOUT });
+    const tabs = await page.locator(".tabs-container .tab").count();
+    await page.screenshot({ path: path.join(out, "vscode-backup-problems.png") });
+    assert(tabs === 0, `${tabs} editors are open`);
   });
 
   await step("one file opened without its folder gets its task from its place (a backup's SYSMOD and SYSPAR)", async () => {
@@ -505,11 +589,39 @@ try {
     await page.screenshot({ path: path.join(out, "vscode-missing-server.png") });
     assert(/does not exist or cannot be run/.test(text), `notification: ${text}`);
     assert(/How to install/.test(text), `notification without the install link: ${text}`);
+    assert(/cargo install --path lsp/.test(text), `notification without how to install: ${text}`);
     // the instructions are the extension's own README (no web page yet)
     await toast.first().locator(".monaco-button", { hasText: "How to install" }).click();
     const preview = page.locator(".tabs-container .tab", { hasText: "README" });
     await preview.first().waitFor({ state: "visible" });
     await page.screenshot({ path: path.join(out, "vscode-install-readme.png") });
+    // "Set path" in this remote window asks for the path and starts the server
+    const startsBefore = serverStarts(rapid);
+    await runCommand("RAPID: Restart Language Server");
+    const again = page.locator(".notifications-toasts .notification-toast", { hasText: bogus });
+    await again.first().waitFor({ state: "visible" });
+    await again.first().locator(".monaco-button", { hasText: "Set path" }).click();
+    const input = page.locator(".quick-input-widget input");
+    await input.waitFor({ state: "visible" });
+    await input.fill(path.join(tmp, "no-such-dir", "still-not-rapid"));
+    await page.waitForTimeout(500);
+    const refused = (await page.locator(".quick-input-widget").innerText()).trim();
+    assert(/does not exist or cannot be run/.test(refused), `a bad path is not refused: ${refused}`);
+    await input.fill(rapid);
+    await page.waitForTimeout(500);
+    await page.screenshot({ path: path.join(out, "vscode-set-path.png") });
+    await page.keyboard.press("Enter");
+    const saved = () =>
+      ["Machine", "User"].some((scope) => {
+        const file = path.join(data, scope, "settings.json");
+        return fs.existsSync(file) && fs.readFileSync(file, "utf8").includes(JSON.stringify(rapid).slice(1, -1));
+      }) && !fs.readFileSync(machine, "utf8").includes(bogus);
+    const deadline = Date.now() + TIMEOUT;
+    while (!saved() && Date.now() < deadline) await page.waitForTimeout(200);
+    assert(saved(), "rapid.server.path was not saved");
+    // the server starts with the path given
+    while (serverStarts(rapid) <= startsBefore && Date.now() < deadline) await page.waitForTimeout(200);
+    assert(serverStarts(rapid) > startsBefore, "no server start with the path given");
     fs.writeFileSync(machine, settings);
   });
 } catch (err) {

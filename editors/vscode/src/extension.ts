@@ -1,7 +1,6 @@
 // The ABB RAPID extension: starts `rapid lsp` and connects VS Code to it;
-// the debugger and the path view are in run.ts.
-import * as fs from "node:fs";
-import * as path from "node:path";
+// finding the binary is in binary.ts, whether a workspace holds RAPID code
+// in workspace.ts, the debugger and the path view in run.ts.
 import * as vscode from "vscode";
 import {
   LanguageClient,
@@ -10,13 +9,18 @@ import {
   type ServerOptions,
   TransportKind,
 } from "vscode-languageclient/node";
+import { askForPath, binaryOrName, findBinary, reportMissing } from "./binary";
 import { registerRun } from "./run";
+import { holdsRapid } from "./workspace";
 
 let client: LanguageClient | undefined;
 /// The extension's folder: its README says how to install the server.
 let extensionUri: vscode.Uri | undefined;
 let log: vscode.OutputChannel | undefined;
 let traceLog: vscode.OutputChannel | undefined;
+/// The server was asked for: the workspace holds RAPID code, or a RAPID
+/// file was opened (until then the extension waits, see `activate`).
+let wanted = false;
 
 export async function activate(context: vscode.ExtensionContext): Promise<void> {
   extensionUri = context.extensionUri;
@@ -26,14 +30,17 @@ export async function activate(context: vscode.ExtensionContext): Promise<void> 
 
   context.subscriptions.push(
     vscode.commands.registerCommand("rapid.restartServer", async () => {
+      wanted = true;
       await stopServer();
       await startServer();
     }),
     vscode.commands.registerCommand("rapid.showServerLog", () => log?.show(true)),
+    vscode.commands.registerCommand("rapid.setServerPath", () => askForPath()),
     vscode.workspace.onDidChangeConfiguration(async (event) => {
       if (
-        event.affectsConfiguration("rapid.server.path") ||
-        event.affectsConfiguration("rapid.server.extraArgs")
+        wanted &&
+        (event.affectsConfiguration("rapid.server.path") ||
+          event.affectsConfiguration("rapid.server.extraArgs"))
       ) {
         await stopServer();
         await startServer();
@@ -44,12 +51,27 @@ export async function activate(context: vscode.ExtensionContext): Promise<void> 
   context.subscriptions.push({ dispose: () => void stopServer() });
   // The `rapid` debugger (`rapid dap`) and "Show path", with the binary
   // found as the server's is.
-  registerRun(context, () => {
-    const config = vscode.workspace.getConfiguration("rapid");
-    const configured = (config.get<string>("server.path") ?? "").trim();
-    return configured ? expandHome(configured) : (findOnPath("rapid") ?? "rapid");
-  });
-  await startServer();
+  registerRun(context, binaryOrName);
+
+  // A workspace with RAPID modules, a backup's BACKINFO or SYSPAR, a
+  // rapid.toml or a .pgf program starts the server at once: it checks every
+  // file, and the Problems panel lists them before any is opened. Any other
+  // workspace (activated for a `.mod` or `.sys` of another language) waits
+  // for a RAPID file to be opened.
+  const rapidOpen = () => vscode.workspace.textDocuments.some((d) => d.languageId === "rapid");
+  if (rapidOpen() || (await holdsRapid())) {
+    wanted = true;
+    await startServer();
+  } else {
+    const waiting = vscode.workspace.onDidOpenTextDocument(async (doc) => {
+      if (doc.languageId === "rapid" && !wanted) {
+        wanted = true;
+        waiting.dispose();
+        await startServer();
+      }
+    });
+    context.subscriptions.push(waiting);
+  }
 }
 
 export async function deactivate(): Promise<void> {
@@ -58,10 +80,10 @@ export async function deactivate(): Promise<void> {
 
 async function startServer(): Promise<void> {
   const config = vscode.workspace.getConfiguration("rapid");
-  const configured = (config.get<string>("server.path") ?? "").trim();
-  const command = configured ? expandHome(configured) : findOnPath("rapid");
-  if (!command || (configured && !isExecutable(command))) {
-    await reportMissingServer(configured);
+  const { command, configured } = findBinary();
+  if (!command) {
+    const readme = extensionUri && vscode.Uri.joinPath(extensionUri, "README.md");
+    void reportMissing(configured, readme, log);
     return;
   }
   const extraArgs = config.get<string[]>("server.extraArgs") ?? [];
@@ -114,66 +136,7 @@ async function stopServer(): Promise<void> {
   }
 }
 
-async function reportMissingServer(configured: string): Promise<void> {
-  const what = configured
-    ? `The rapid binary set in 'rapid.server.path' (${configured}) does not exist or cannot be run.`
-    : "The rapid binary was not found on PATH.";
-  log?.appendLine(`${what} Install it with 'cargo install --path lsp' in a clone of rapid (see the extension's README).`);
-  const choice = await vscode.window.showErrorMessage(
-    `${what} RAPID diagnostics, hover and completion need it.`,
-    "How to install",
-    "Set path",
-  );
-  if (choice === "How to install" && extensionUri) {
-    // The project has no public home yet: its README, shipped with the
-    // extension, says how to install the server.
-    await vscode.commands.executeCommand(
-      "markdown.showPreview",
-      vscode.Uri.joinPath(extensionUri, "README.md"),
-    );
-  } else if (choice === "Set path") {
-    await vscode.commands.executeCommand("workbench.action.openSettings", "rapid.server.path");
-  }
-}
-
 /// The `rapid` settings as plain JSON, for the server's initialization.
 function settingsForServer(): unknown {
   return JSON.parse(JSON.stringify(vscode.workspace.getConfiguration("rapid")));
-}
-
-function expandHome(file: string): string {
-  const home = process.env.HOME ?? process.env.USERPROFILE ?? "";
-  return file.startsWith("~/") && home ? path.join(home, file.slice(2)) : file;
-}
-
-function isExecutable(file: string): boolean {
-  try {
-    const stat = fs.statSync(file);
-    if (!stat.isFile()) {
-      return false;
-    }
-    if (process.platform !== "win32") {
-      fs.accessSync(file, fs.constants.X_OK);
-    }
-    return true;
-  } catch {
-    return false;
-  }
-}
-
-function findOnPath(name: string): string | undefined {
-  const dirs = (process.env.PATH ?? "").split(path.delimiter).filter(Boolean);
-  const exts =
-    process.platform === "win32"
-      ? (process.env.PATHEXT ?? ".EXE;.CMD;.BAT").split(";").map((e) => e.toLowerCase())
-      : [""];
-  for (const dir of dirs) {
-    for (const ext of exts) {
-      const candidate = path.join(dir, name + ext);
-      if (isExecutable(candidate)) {
-        return candidate;
-      }
-    }
-  }
-  return undefined;
 }

@@ -97,6 +97,28 @@ impl Backend {
         self.blocking(what, move || f(&snap)).await.map(Some)
     }
 
+    /// [`Backend::on_snapshot`] with the snapshot's peers: the tasks that
+    /// share the persistent at `pos` ([`State::add_peers`]).
+    pub(super) async fn on_snapshot_with_peers<R: Send + 'static>(
+        &self,
+        uri: &Uri,
+        pos: Position,
+        what: &'static str,
+        f: impl FnOnce(&Snapshot) -> R + Send + 'static,
+    ) -> Result<Option<R>> {
+        let snap = self
+            .mutate(what, |s| {
+                let mut snap = s.snapshot(uri)?;
+                s.add_peers(&mut snap, pos);
+                Some(snap)
+            })
+            .flatten();
+        let Some(snap) = snap else {
+            return Ok(None);
+        };
+        self.blocking(what, move || f(&snap)).await.map(Some)
+    }
+
     /// Runs `f` on a snapshot of `uri`'s file and its diagnostics on the
     /// blocking pool: the cached ones, or a check run there (reusing the
     /// statement results of the file's last check) whose result the

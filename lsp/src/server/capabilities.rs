@@ -83,7 +83,14 @@ pub(super) fn server_capabilities(encoding: PosEncoding, caps: ClientCaps) -> Se
         hover_provider: Some(HoverProviderCapability::Simple(true)),
         completion_provider: Some(CompletionOptions {
             resolve_provider: Some(true),
-            trigger_characters: Some(vec!["\\".to_owned(), ".".to_owned(), ":".to_owned()]),
+            // a blank and the `=` of `:=` ask only where a value is due
+            // (`MoveL `, `\\WObj:=`); the list is empty elsewhere
+            trigger_characters: Some(vec![
+                "\\".to_owned(),
+                ".".to_owned(),
+                " ".to_owned(),
+                "=".to_owned(),
+            ]),
             ..CompletionOptions::default()
         }),
         signature_help_provider: Some(SignatureHelpOptions {

@@ -102,6 +102,11 @@ impl LanguageServer for Backend {
     }
 
     async fn completion(&self, params: CompletionParams) -> Result<Option<CompletionResponse>> {
+        let trigger = params
+            .context
+            .filter(|c| c.trigger_kind == CompletionTriggerKind::TRIGGER_CHARACTER)
+            .and_then(|c| c.trigger_character)
+            .and_then(|c| c.chars().next());
         let p = params.text_document_position;
         let pos = p.position;
         let uri = p.text_document.uri;
@@ -113,7 +118,7 @@ impl LanguageServer for Backend {
             .unwrap_or(false);
         Ok(self
             .on_snapshot(&uri, "completion", move |s| {
-                requests::completion(s, pos, lazy)
+                requests::completion(s, pos, lazy, trigger)
             })
             .await?
             .map(CompletionResponse::List))
@@ -185,8 +190,8 @@ impl LanguageServer for Backend {
         let p = params.text_document_position;
         let pos = p.position;
         let decl = params.context.include_declaration;
-        self.on_snapshot(&p.text_document.uri, "references", move |s| {
-            let found = ide::references(&s.task, s.unit_idx, s.map().offset(pos), decl);
+        self.on_snapshot_with_peers(&p.text_document.uri, pos, "references", move |s| {
+            let found = ide::references(&s.task, s.unit_idx, s.map().offset(pos), decl, &s.peers);
             requests::locations(s, found)
         })
         .await
@@ -227,9 +232,15 @@ impl LanguageServer for Backend {
         let pos = p.position;
         let new_name = params.new_name;
         let answer = self
-            .on_snapshot(&p.text_document.uri, "rename", move |s| {
-                ide::rename(&s.task, s.unit_idx, s.map().offset(pos), &new_name)
-                    .map(|files| requests::workspace_edit(s, files))
+            .on_snapshot_with_peers(&p.text_document.uri, pos, "rename", move |s| {
+                ide::rename(
+                    &s.task,
+                    s.unit_idx,
+                    s.map().offset(pos),
+                    &new_name,
+                    &s.peers,
+                )
+                .map(|files| requests::workspace_edit(s, files))
             })
             .await?;
         match answer {
@@ -411,7 +422,41 @@ impl LanguageServer for Backend {
     }
 }
 
+/// The parameters of `rapid/indentation`.
+#[derive(Debug, serde::Deserialize)]
+#[serde(rename_all = "camelCase")]
+pub struct IndentationParams {
+    pub text_document: TextDocumentIdentifier,
+}
+
+/// The answer of `rapid/indentation`: columns per level, and tabs or
+/// spaces.
+#[derive(Debug, serde::Serialize)]
+pub struct IndentationResult {
+    pub width: usize,
+    pub tabs: bool,
+}
+
 impl Backend {
+    /// `rapid/indentation`: how `rapid fmt` (and formatting here) indents
+    /// the document, with the `[format]` settings: an editor sets its own
+    /// indentation from it (Neovim's `shiftwidth` and `expandtab`), so that
+    /// the lines it indents are indented as the formatter would.
+    pub async fn indentation(
+        &self,
+        params: IndentationParams,
+    ) -> Result<Option<IndentationResult>> {
+        let options = self.format_options();
+        self.on_snapshot(&params.text_document.uri, "indentation", move |s| {
+            let found = rapid_analyzer::format::indentation(&s.unit.text, &options);
+            IndentationResult {
+                width: found.width,
+                tabs: found.tabs,
+            }
+        })
+        .await
+    }
+
     /// Keeps the tokens sent for a document, for the next delta request.
     pub(super) fn remember_tokens(&self, uri: &Uri, data: &[SemanticToken]) -> String {
         let flat = Arc::new(requests::tokens_to_flat(data));

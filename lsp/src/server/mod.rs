@@ -160,7 +160,9 @@ where
 {
     let shut_down = Arc::new(AtomicBool::new(false));
     let flag = shut_down.clone();
-    let (service, socket) = LspService::new(move |client| Backend::new(client, flag));
+    let (service, socket) = LspService::build(move |client| Backend::new(client, flag))
+        .custom_method("rapid/indentation", Backend::indentation)
+        .finish();
     run_service(input, output, service, socket).await;
     shut_down.load(Ordering::SeqCst)
 }
@@ -224,6 +226,7 @@ where
     let flag = shut_down.clone();
     let (service, socket) = LspService::build(move |client| Backend::new(client, flag))
         .custom_method("rapid/testPanic", Backend::test_panic)
+        .custom_method("rapid/indentation", Backend::indentation)
         .finish();
     run_service(input, output, service, socket).await;
     shut_down.load(Ordering::SeqCst)

@@ -46,12 +46,18 @@ fn markdown(value: String) -> MarkupContent {
 /// typed.
 pub const MOST_COMPLETIONS: usize = 400;
 
-/// The completion list at `pos`; with `lazy_detail`, without the items'
-/// details (signatures and declarations, most of the list's size), which
+/// The completion list at `pos` (asked for by typing `trigger`, if one
+/// was typed); with `lazy_detail`, without the items' details (signatures
+/// and declarations, most of the list's size), which
 /// [`resolve_completion`] adds to the item the user looks at.
-pub fn completion(snap: &Snapshot, pos: Position, lazy_detail: bool) -> lsp::CompletionList {
+pub fn completion(
+    snap: &Snapshot,
+    pos: Position,
+    lazy_detail: bool,
+    trigger: Option<char>,
+) -> lsp::CompletionList {
     let offset = snap.map().offset(pos);
-    let mut found = ide::completions_for(&snap.task, snap.unit_idx, offset, !lazy_detail);
+    let mut found = ide::completions_for(&snap.task, snap.unit_idx, offset, !lazy_detail, trigger);
     let complete = cut_list(&mut found, typed_before(&snap.unit.text, offset));
     let items = found
         .into_iter()
@@ -302,7 +308,7 @@ pub fn workspace_edit(snap: &Snapshot, files: Vec<(String, Vec<Edit>)>) -> Works
         let converted = if path == snap.path {
             text_edits(&snap.map(), &edits)
         } else {
-            let Some(unit) = snap.task.units.iter().find(|u| u.path == path) else {
+            let Some(unit) = snap.unit_of(&path) else {
                 continue;
             };
             let index = snap.line_index(&path, unit);

@@ -139,6 +139,10 @@ pub struct Snapshot {
     pub config_generation: u64,
     /// Line indexes of the task's other files, built on demand.
     pub other_indexes: Mutex<HashMap<String, Arc<LineIndex>>>,
+    /// The other tasks of the controller that declare the persistent at
+    /// the request's position, when it is a shared one
+    /// ([`State::add_peers`]); empty otherwise.
+    pub peers: Vec<Arc<Task>>,
 }
 
 impl Snapshot {
@@ -158,12 +162,19 @@ impl Snapshot {
         if path == self.path {
             return Some(Location::new(uri, self.map().range(range)));
         }
-        let unit = self.task.units.iter().find(|u| u.path == path)?;
+        let unit = self.unit_of(path)?;
         let index = self.line_index(path, unit);
         Some(Location::new(
             uri,
             LineMap::new(&unit.text, &index, self.encoding).range(range),
         ))
+    }
+
+    /// A unit of the task, or of one of its [`Snapshot::peers`].
+    pub fn unit_of(&self, path: &str) -> Option<&Arc<Unit>> {
+        std::iter::once(&self.task)
+            .chain(&self.peers)
+            .find_map(|t| t.units.iter().find(|u| u.path == path))
     }
 
     /// The line index of another unit of the task, built once per snapshot.
@@ -272,6 +283,16 @@ impl State {
     }
 
     /// A snapshot of a file: open, or known from disk.
+    /// Sets the snapshot's [`Snapshot::peers`]: the tasks of the files that
+    /// declare the shared persistent at `pos` in other tasks.
+    pub fn add_peers(&mut self, snap: &mut Snapshot, pos: tower_lsp_server::ls_types::Position) {
+        let offset = snap.map().offset(pos);
+        snap.peers = rapid_analyzer::ide::shared_files(&snap.task, snap.unit_idx, offset)
+            .iter()
+            .map(|path| self.ws.task_of(path))
+            .collect();
+    }
+
     pub fn snapshot(&mut self, uri: &Uri) -> Option<Snapshot> {
         let path = path_of(uri);
         let (unit, index, version) = match self.docs.get(&path) {
@@ -303,6 +324,7 @@ impl State {
             selection,
             config_generation: self.config_generation,
             other_indexes: Mutex::default(),
+            peers: Vec::new(),
         })
     }
 

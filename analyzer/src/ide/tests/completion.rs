@@ -81,7 +81,7 @@ fn lists_without_details_are_the_lists_with_their_details_left_out() {
         let (task, unit, offset) = fixture(&src);
         let mut full = crate::ide::completions(&task, unit, offset);
         assert!(full.iter().any(|i| i.detail.is_some()), "{src}");
-        let lean = crate::ide::completions_for(&task, unit, offset, false);
+        let lean = crate::ide::completions_for(&task, unit, offset, false, None);
         for (f, l) in full.iter_mut().zip(&lean) {
             if l.detail.is_none() {
                 f.detail = None;
@@ -133,7 +133,8 @@ fn arguments_offer_data_of_the_expected_type_first() {
 #[test]
 fn after_backslash_the_optional_arguments_left() {
     let items = labels(&in_proc("    MoveL \\Conc, pHome, vSlow \\$0"));
-    assert!(has(&items, "V") && has(&items, "T") && has(&items, "WObj"));
+    assert!(has(&items, "V") && has(&items, "T"));
+    assert!(!has(&items, "WObj"), "its place is after Zone and Tool");
     assert!(!has(&items, "Conc"), "already given");
     assert!(!has(&items, "ToPoint"), "not optional");
     let items = labels(&in_proc("    MoveL pHome, vSlow \\V:=100, fine \\$0"));
@@ -277,24 +278,115 @@ fn signature_help_binds_as_the_checker_does() {
 }
 
 #[test]
-fn after_backslash_the_parameters_that_can_come_next_first() {
-    let first = |src: &str| -> Vec<String> {
-        labels(&in_proc(src))
-            .into_iter()
-            .take(3)
-            .map(|(l, _)| l)
-            .collect()
-    };
+fn after_backslash_only_the_parameters_that_may_come_next() {
+    let all =
+        |src: &str| -> Vec<String> { labels(&in_proc(src)).into_iter().map(|(l, _)| l).collect() };
     assert_eq!(
-        first("    MoveL pHome, vSlow, fine, tool0 \\$0"),
+        all("    MoveL pHome, vSlow, fine, tool0\\$0"),
         ["WObj", "Corr", "TLoad"]
     );
-    assert_eq!(first("    MoveL pHome, vSlow \\$0"), ["V", "T", "Z"]);
-    assert_eq!(first("    MoveL pHome \\$0"), ["ID", "V", "T"]);
-    assert_eq!(first("    MoveL \\$0"), ["Conc", "ID", "V"]);
-    // Those whose place is past come last.
-    let all = labels(&in_proc("    MoveL pHome, vSlow, fine, tool0 \\$0"));
-    assert_eq!(all.last().map(|(l, _)| l.as_str()), Some("Inpos"));
+    assert_eq!(
+        all("    MoveL pHome, vSlow, fine, tool0\\WObj:=wobj0\\$0"),
+        ["Corr", "TLoad"]
+    );
+    assert_eq!(all("    MoveL pHome, vSlow \\$0"), ["V", "T"]);
+    assert_eq!(all("    MoveL pHome, vSlow, z10 \\$0"), ["Z", "Inpos"]);
+    assert_eq!(all("    MoveL pHome \\$0"), ["ID"]);
+    assert_eq!(all("    MoveL \\$0"), ["Conc"]);
+    // typing the name: the same list (the editor filters it)
+    assert_eq!(
+        all("    MoveL pHome, vSlow, fine, tool0\\Co$0"),
+        ["WObj", "Corr", "TLoad"]
+    );
+}
+
+/// The items of the list asked for by typing `trigger` just before `$0`.
+fn triggered(src: &str, trigger: char) -> Vec<String> {
+    let (task, unit, offset) = fixture(src);
+    let mut items = crate::ide::completions_for(&task, unit, offset, false, Some(trigger));
+    items.sort_by(|a, b| a.sort_text.cmp(&b.sort_text).then(a.label.cmp(&b.label)));
+    items.into_iter().map(|i| i.label).collect()
+}
+
+const CELL: &str = "MODULE m\n  PERS wobjdata wTable := [FALSE, TRUE, \"\", [[0,0,0],[1,0,0,0]], [[0,0,0],[1,0,0,0]]];\n  PERS wobjdata wFixture := [FALSE, TRUE, \"\", [[0,0,0],[1,0,0,0]], [[0,0,0],[1,0,0,0]]];\n  PERS loaddata lBox := [1, [0,0,1], [1,0,0,0], 0, 0, 0];\n  CONST robtarget pPick := [[0,0,0],[1,0,0,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];\n  CONST robtarget pPlace := [[0,0,0],[1,0,0,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];\n  VAR num count;\n  PROC main()\n    MoveL pPlace, v100, fine, tool0\\WObj:=wFixture;\n    MoveL pPlace, v100, fine, tool0\\WObj:=wFixture;\n    MoveJ pPick, v100, fine, tool0;\n";
+
+fn in_cell(line: &str) -> String {
+    format!("{CELL}    {line}\n  ENDPROC\nENDMODULE\n")
+}
+
+#[test]
+fn a_typed_argument_offers_the_data_of_its_type_the_most_used_first() {
+    // a blank after the instruction's name opens its first argument
+    let items = triggered(&in_cell("MoveL $0"), ' ');
+    assert_eq!(
+        items.get(..2),
+        Some(&["pPlace".to_owned(), "pPick".to_owned()][..]),
+        "{items:?}"
+    );
+    assert!(
+        items.iter().any(|i| i == "Offs"),
+        "functions that give a robtarget"
+    );
+    assert!(
+        !items.iter().any(|i| i == "count" || i == "Abs"),
+        "{items:?}"
+    );
+    // the wobjdata in scope after \WObj:=, the loaddata after \TLoad:=
+    let items = triggered(&in_cell("MoveL pPick, v100, fine, tool0\\WObj:=$0"), '=');
+    assert_eq!(
+        items.get(..3),
+        Some(
+            &[
+                "wFixture".to_owned(),
+                "wTable".to_owned(),
+                "wobj0".to_owned()
+            ][..]
+        ),
+        "{items:?}"
+    );
+    assert!(
+        !items.iter().any(|i| i == "lBox" || i == "pPick"),
+        "{items:?}"
+    );
+    let items = triggered(&in_cell("MoveL pPick, v100, fine, tool0\\TLoad:=$0"), '=');
+    assert_eq!(items.first().map(String::as_str), Some("lBox"), "{items:?}");
+    assert!(items.iter().all(|i| i != "wTable"), "{items:?}");
+    // asked for without a trigger, the same
+    assert_eq!(
+        labels(&in_cell("MoveL pPick, v100, fine, tool0\\WObj:=$0"))
+            .first()
+            .map(|i| i.0.as_str()),
+        Some("wFixture")
+    );
+    // a number is any expression: everything, numbers first
+    let items = triggered(&in_cell("WaitTime $0"), ' ');
+    assert_eq!(
+        items.first().map(String::as_str),
+        Some("count"),
+        "{items:?}"
+    );
+    assert!(items.iter().any(|i| i == "Abs") && items.iter().any(|i| i == "pPick"));
+}
+
+#[test]
+fn a_blank_or_an_equals_sign_asks_only_where_a_value_is_due() {
+    for (src, trigger) in [
+        (in_cell("IF count > 1 $0"), ' '),
+        (in_cell("count $0"), ' '),
+        (in_cell("MoveL pPick, v100, fine $0"), ' '),
+        (in_cell("IF count = $0"), '='),
+        (in_cell("! MoveL $0"), ' '),
+        (in_cell("MoveL pPick, v100, fine, tool0\\WObj $0"), ' '),
+    ] {
+        assert_eq!(triggered(&src, trigger), Vec::<String>::new(), "{src}");
+    }
+    assert!(!triggered(&in_cell("MoveL pPick, $0"), ' ').is_empty());
+    assert_eq!(
+        triggered(&in_cell("count := $0"), '=')
+            .first()
+            .map(String::as_str),
+        Some("count")
+    );
 }
 
 #[test]

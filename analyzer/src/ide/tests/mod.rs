@@ -10,6 +10,7 @@ mod completion;
 mod hover;
 mod navigation;
 mod robustness;
+mod shared;
 mod structure;
 mod tokens;
 mod uses_oracle;

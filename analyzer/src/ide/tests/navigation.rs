@@ -73,14 +73,14 @@ fn type_definition_of_user_records() {
 fn references_are_case_insensitive_across_modules() {
     let src = "==> a.mod\nMODULE a\n  VAR num counter$0;\n  PROC main()\n    COUNTER := Counter + 1;\n  ENDPROC\nENDMODULE\n==> b.mod\nMODULE b\n  PROC other()\n    VAR num counter;\n    counter := 2;\n    TPWrite \"\"\\Num:=counter;\n  ENDPROC\n  PROC third()\n    counter := 3;\n  ENDPROC\nENDMODULE\n";
     let (task, unit, offset) = fixture(src);
-    let refs: Vec<(String, usize)> = references(&task, unit, offset, true)
+    let refs: Vec<(String, usize)> = references(&task, unit, offset, true, &[])
         .into_iter()
         .map(|l| (l.path, l.range.start))
         .collect();
     // The declaration, two uses in main, one in b.third (b.other has its own).
     assert_eq!(refs.len(), 4, "{refs:?}");
     assert_eq!(refs.iter().filter(|(p, _)| p == "t/b.mod").count(), 1);
-    assert_eq!(references(&task, unit, offset, false).len(), 3);
+    assert_eq!(references(&task, unit, offset, false, &[]).len(), 3);
 }
 
 #[test]
@@ -98,22 +98,25 @@ fn highlights_tell_writes_from_reads() {
 fn rename_edits_every_use_and_refuses_clashes() {
     let src = "==> a.mod\nMODULE a\n  VAR num cnt$0;\n  PROC main()\n    VAR num other;\n    cnt := 1;\n  ENDPROC\nENDMODULE\n==> b.mod\nMODULE b\n  PROC p()\n    CNT := 2;\n  ENDPROC\nENDMODULE\n";
     let (task, unit, offset) = fixture(src);
-    let edits = rename(&task, unit, offset, "total").unwrap_or_else(|e| panic!("{e}"));
+    let edits = rename(&task, unit, offset, "total", &[]).unwrap_or_else(|e| panic!("{e}"));
     let summary: Vec<(String, usize)> = edits.iter().map(|(p, e)| (p.clone(), e.len())).collect();
     assert_eq!(summary, vec![("t/a.mod".into(), 2), ("t/b.mod".into(), 1)]);
     assert!(
-        rename(&task, unit, offset, "other").is_err(),
+        rename(&task, unit, offset, "other", &[]).is_err(),
         "clashes with routine data"
     );
-    assert!(rename(&task, unit, offset, "MoveL").is_err(), "a built-in");
     assert!(
-        rename(&task, unit, offset, "ENDIF").is_err(),
+        rename(&task, unit, offset, "MoveL", &[]).is_err(),
+        "a built-in"
+    );
+    assert!(
+        rename(&task, unit, offset, "ENDIF", &[]).is_err(),
         "a reserved word"
     );
-    assert!(rename(&task, unit, offset, "1abc").is_err());
-    assert!(rename(&task, unit, offset, &"a".repeat(33)).is_err());
+    assert!(rename(&task, unit, offset, "1abc", &[]).is_err());
+    assert!(rename(&task, unit, offset, &"a".repeat(33), &[]).is_err());
     assert!(
-        rename(&task, unit, offset, "CNT").is_ok(),
+        rename(&task, unit, offset, "CNT", &[]).is_ok(),
         "same name, new case"
     );
 }
@@ -145,7 +148,7 @@ fn nothing_panics_on_odd_offsets() {
     let (task, unit, _) = fixture(src);
     for offset in 0..task.units[0].text.len() + 5 {
         let _ = definition(&task, unit, offset);
-        let _ = references(&task, unit, offset, true);
+        let _ = references(&task, unit, offset, true, &[]);
         let _ = prepare_rename(&task, unit, offset);
         let _ = crate::ide::hover(&task, unit, offset);
     }
@@ -155,7 +158,7 @@ fn nothing_panics_on_odd_offsets() {
 fn renaming_a_parameter_renames_named_arguments() {
     let src = "==> a.mod\nMODULE a\n  PROC Grip(\\switch fa$0st, num force)\n    IF Present(fast) TPWrite \"f\";\n  ENDPROC\nENDMODULE\n==> b.mod\nMODULE b\n  PROC main()\n    Grip \\fast, force:=2;\n    Grip 1;\n  ENDPROC\nENDMODULE\n";
     let (task, unit, offset) = fixture(src);
-    let edits = rename(&task, unit, offset, "quick").unwrap_or_else(|e| panic!("{e}"));
+    let edits = rename(&task, unit, offset, "quick", &[]).unwrap_or_else(|e| panic!("{e}"));
     let summary: Vec<(String, usize)> = edits.iter().map(|(p, e)| (p.clone(), e.len())).collect();
     assert_eq!(summary, vec![("t/a.mod".into(), 2), ("t/b.mod".into(), 1)]);
 }

@@ -27,10 +27,10 @@ fn no_feature_panics_anywhere() {
             let _ = ide::signature_help(&task, unit, offset);
             let _ = ide::definition(&task, unit, offset);
             let _ = ide::type_definition(&task, unit, offset);
-            let _ = ide::references(&task, unit, offset, true);
+            let _ = ide::references(&task, unit, offset, true, &[]);
             let _ = ide::document_highlights(&task, unit, offset);
             let _ = ide::prepare_rename(&task, unit, offset);
-            let _ = ide::rename(&task, unit, offset, "fresh");
+            let _ = ide::rename(&task, unit, offset, "fresh", &[]);
             let _ = ide::inlay_hints(&task, unit, offset..len + 2, ide::ParameterHints::All);
             let _ = ide::semantic_tokens(&task, unit, Some(offset..len + 2));
         }

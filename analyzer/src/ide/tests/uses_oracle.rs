@@ -143,7 +143,7 @@ fn the_walk_finds_what_each_name_resolves_to() {
         if *write {
             assert_eq!(here, Some(true), "`{text}` at {} is written", r.start);
         }
-        let refs = references(&task, *u, r.start, true);
+        let refs = references(&task, *u, r.start, true, &[]);
         let mut got: Vec<(usize, usize)> = refs
             .iter()
             .map(|l| {
@@ -200,12 +200,12 @@ fn five_thousand_labels_in_one_routine_answer() {
     let text = &task.units[0].text;
     let first = text.find("l0:").unwrap_or(0);
     // l0: declared once, used by the last GOTO l{n} and by every GOTO l0.
-    let refs = references(&task, 0, first, true);
+    let refs = references(&task, 0, first, true, &[]);
     assert_eq!(refs.len(), 1 + 1 + n);
     assert!(refs.iter().all(|l| &text[l.range.clone()] == "l0"));
     let mid = text.find("l2500:").unwrap_or(0);
-    assert_eq!(references(&task, 0, mid, true).len(), 2);
-    let edits = rename(&task, 0, first, "start").unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(references(&task, 0, mid, true, &[]).len(), 2);
+    let edits = rename(&task, 0, first, "start", &[]).unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(edits.iter().map(|(_, e)| e.len()).sum::<usize>(), 2 + n);
     assert_eq!(document_highlights(&task, 0, first).len(), 2 + n);
 }

@@ -90,22 +90,33 @@ function M.indent_width(path)
   return nil
 end
 
---- A buffer's own indentation, as `rapid fmt` finds it when no width is
---- configured: tabs if indented lines start with one, else the most common
---- step by which a line is indented deeper than the line before it (4 when
---- the buffer has none). Looks at the first 2,000 lines.
+--- A buffer's own indentation until the language server says what the
+--- formatter finds (`rapid/indentation`, see `apply_indentation`): the
+--- most common step by which a line is indented deeper than the line
+--- before it (4 when the buffer has none), with tabs if most of the lines
+--- indented by 4 columns or more start with one (the formatter's rule: a
+--- file of spaces with one line typed with a tab stays a file of spaces).
+--- Looks at the first 2,000 lines.
 ---@param bufnr integer
 ---@return integer width, boolean tabs
 function M.own_indentation(bufnr)
   local lines = vim.api.nvim_buf_get_lines(bufnr, 0, 2000, false)
   local steps, previous = {}, 0
+  local tab_led, space_led = 0, 0
   for _, line in ipairs(lines) do
     if line:find('%S') then
       local lead = line:match('^[ \t]*')
-      if lead:sub(1, 1) == '\t' then
-        return 4, true
+      local n = 0
+      for c in lead:gmatch('.') do
+        n = c == '\t' and (math.floor(n / 4) + 1) * 4 or n + 1
       end
-      local n = #lead
+      if n >= 4 then
+        if lead:sub(1, 1) == '\t' then
+          tab_led = tab_led + 1
+        else
+          space_led = space_led + 1
+        end
+      end
       if n > previous then
         steps[n - previous] = (steps[n - previous] or 0) + 1
       end
@@ -118,11 +129,21 @@ function M.own_indentation(bufnr)
       best, count = step, c
     end
   end
-  return best, false
+  return best, tab_led > space_led
+end
+
+--- Sets the buffer's indentation options: `width` columns per level,
+--- written with tabs or spaces.
+local function set_options(bufnr, width, tabs)
+  vim.bo[bufnr].shiftwidth = width
+  vim.bo[bufnr].softtabstop = tabs and 0 or width
+  vim.bo[bufnr].tabstop = tabs and 4 or vim.bo[bufnr].tabstop
+  vim.bo[bufnr].expandtab = not tabs
 end
 
 --- Indentation as the formatter writes it: the configured width, else the
---- buffer's own. Runs after Neovim's own indent/rapid.vim (which sets 2).
+--- buffer's own (until the server answers). Runs after Neovim's own
+--- indent/rapid.vim (which sets 2).
 local function set_indentation(bufnr)
   local name = vim.api.nvim_buf_get_name(bufnr)
   local width = M.indent_width(name ~= '' and name or (vim.uv.cwd() .. '/x.mod'))
@@ -130,10 +151,71 @@ local function set_indentation(bufnr)
   if not width then
     width, tabs = M.own_indentation(bufnr)
   end
-  vim.bo[bufnr].shiftwidth = width
-  vim.bo[bufnr].softtabstop = tabs and 0 or width
-  vim.bo[bufnr].tabstop = tabs and 4 or vim.bo[bufnr].tabstop
-  vim.bo[bufnr].expandtab = not tabs
+  set_options(bufnr, width, tabs)
+end
+
+--- Asks the language server how the formatter indents the buffer
+--- (`rapid/indentation`: the width of `[format] indent-width`, or the
+--- file's own unit and tabs or spaces as most of its lines have them) and
+--- sets the buffer's options from the answer, so that `=`, `>>` and new
+--- lines indent as `rapid fmt` does. The `indent_width` of the setup wins.
+---@param client vim.lsp.Client
+---@param bufnr integer
+function M.apply_indentation(client, bufnr)
+  if M.config.indent_width then
+    return
+  end
+  local params = { textDocument = { uri = vim.uri_from_bufnr(bufnr) } }
+  local handler = function(err, result)
+    if err or type(result) ~= 'table' or type(result.width) ~= 'number' then
+      return
+    end
+    if vim.api.nvim_buf_is_valid(bufnr) then
+      set_options(bufnr, result.width, result.tabs == true)
+      vim.b[bufnr].rapid_indentation = result
+    end
+  end
+  if vim.fn.has('nvim-0.11') == 1 then
+    client:request('rapid/indentation', params, handler, bufnr)
+  else
+    client.request('rapid/indentation', params, handler, bufnr)
+  end
+end
+
+--- The language server's executable, as the `cmd` of the setup names it,
+--- if it can be run.
+---@return string|nil
+function M.server_binary()
+  local cmd = M.config.cmd
+  local name = type(cmd) == 'table' and cmd[1] or nil
+  if type(name) ~= 'string' or vim.fn.executable(name) == 0 then
+    return nil
+  end
+  return vim.fn.exepath(name)
+end
+
+--- What to say when the language server's binary cannot be run.
+function M.missing_binary_message()
+  local cmd = M.config.cmd
+  local name = type(cmd) == 'table' and tostring(cmd[1]) or tostring(cmd)
+  return table.concat({
+    ('rapid: the language server `%s` was not found%s, so RAPID buffers have no diagnostics, hover or completion.'):format(
+      name, name:find('/') and '' or ' on PATH'),
+    'Install it from a clone of the rapid repository with `cargo install --path lsp` (it puts `rapid` in ~/.cargo/bin),',
+    "or give its path: require('rapid').setup({ cmd = { '/path/to/rapid', 'lsp' } }).",
+    'Then :RapidRestart. :checkhealth rapid checks the whole setup.',
+  }, '\n')
+end
+
+local warned_missing = false
+
+--- Says once per session that the server's binary is missing.
+local function warn_missing()
+  if warned_missing then
+    return
+  end
+  warned_missing = true
+  vim.notify(M.missing_binary_message(), vim.log.levels.WARN)
 end
 
 local function setup_indent()
@@ -159,6 +241,28 @@ local function setup_lsp()
     if has_enable then
       vim.lsp.enable('rapid', false)
     end
+    return
+  end
+  -- the server tells each buffer how the formatter indents it
+  vim.api.nvim_create_autocmd('LspAttach', {
+    group = lsp_group,
+    callback = function(args)
+      local client = vim.lsp.get_client_by_id(args.data.client_id)
+      if client and client.name == 'rapid' then
+        M.apply_indentation(client, args.buf)
+      end
+    end,
+  })
+  if not M.server_binary() then
+    -- nothing to start: say what is missing when a RAPID buffer opens
+    if has_enable then
+      vim.lsp.enable('rapid', false)
+    end
+    vim.api.nvim_create_autocmd('FileType', {
+      group = lsp_group,
+      pattern = 'rapid',
+      callback = warn_missing,
+    })
     return
   end
   if has_enable then
@@ -272,8 +376,10 @@ function M.build_parser(grammar_dir, opts)
 end
 
 --- Stops the rapid language server clients and starts them again for the
---- RAPID buffers.
+--- RAPID buffers (looking for the server's binary again).
 function M.restart()
+  warned_missing = false
+  setup_lsp()
   local get = vim.lsp.get_clients or vim.lsp.get_active_clients
   for _, client in ipairs(get({ name = 'rapid' })) do
     client.stop(client, true)

@@ -509,3 +509,164 @@ fn apply(text: &str, edits: &Value) -> String {
     }
     out
 }
+
+const TASK1: &str = "MODULE Main\n  PERS bool bWaitForJob := FALSE;\n  PROC main()\n    bWaitForJob := TRUE;\n  ENDPROC\nENDMODULE\n";
+const TASK2: &str = "MODULE Main\n  PERS bool bWaitForJob;\n  PROC main()\n    WaitUntil bWaitForJob;\n    bWaitForJob := FALSE;\n  ENDPROC\nENDMODULE\n";
+
+/// A persistent shared by the tasks of a backup: references and rename
+/// reach the tasks whose files are not open; a task that declares it with
+/// another type makes rename refuse, with the reason.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn shared_persistents_link_the_tasks_of_a_backup() {
+    let dir = temp_dir("feat-shared-pers");
+    let t1 = "RAPID/TASK1/PROGMOD/Main.mod";
+    let t3 = "RAPID/TASK3/PROGMOD/Main.mod";
+    write_files(
+        &dir,
+        &[(t1, TASK1), (t3, TASK1), ("BACKINFO/backinfo.txt", "")],
+    );
+    let mut client = TestClient::new(dir.to_path_buf(), json!({"diagnosticsDelay": 0})).await;
+    let task2 = client.open(&dir.join("RAPID/TASK2/PROGMOD/Main.mod"), TASK2);
+    let (uri1, uri3) = (super::uri(&dir.join(t1)), super::uri(&dir.join(t3)));
+    let at = pos(TASK2, "WaitUntil bWaitForJob", 10);
+    let mut params = doc_pos(&task2, at.clone());
+    params["context"] = json!({"includeDeclaration": true});
+    let found = client.call("textDocument/references", params).await;
+    let mut files: Vec<(String, i64)> = found
+        .as_array()
+        .into_iter()
+        .flatten()
+        .map(|l| (l["uri"].as_str().unwrap_or_default().to_owned(), line_of(l)))
+        .collect();
+    files.sort();
+    let mut want = vec![
+        (uri1.clone(), 1),
+        (uri1.clone(), 3),
+        (task2.clone(), 1),
+        (task2.clone(), 3),
+        (task2.clone(), 4),
+        (uri3.clone(), 1),
+        (uri3.clone(), 3),
+    ];
+    want.sort();
+    assert_eq!(files, want, "{found}");
+    let mut params = doc_pos(&task2, at.clone());
+    params["newName"] = json!("bJobReady");
+    let edit = client.call("textDocument/rename", params.clone()).await;
+    let changes = edit["changes"].as_object().cloned().unwrap_or_default();
+    let count = |uri: &str| {
+        changes
+            .get(uri)
+            .and_then(Value::as_array)
+            .map_or(0, Vec::len)
+    };
+    assert_eq!(
+        (count(&uri1), count(&task2), count(&uri3)),
+        (2, 3, 2),
+        "{edit}"
+    );
+    // TASK3 declares it as a num: the same name, another datum
+    let other = TASK1
+        .replace(
+            "PERS bool bWaitForJob := FALSE",
+            "PERS num bWaitForJob := 0",
+        )
+        .replace("TRUE", "1");
+    client.open(&dir.join(t3), &other);
+    let response = client.request("textDocument/rename", params).await;
+    let message = response["error"]["message"].as_str().unwrap_or_default();
+    assert!(
+        message.contains("TASK3") && message.contains("`num`"),
+        "{response}"
+    );
+    client.keep(dir);
+    client.shutdown().await;
+}
+
+/// Typing a blank or the `=` of `:=` asks for the values of the argument
+/// that starts there (the data of its type, the most used first), and for
+/// nothing elsewhere.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn completion_triggered_by_a_blank_or_an_equals_sign() {
+    let text = "MODULE Main\n    PERS wobjdata wTable := [FALSE, TRUE, \"\", [[0,0,0],[1,0,0,0]], [[0,0,0],[1,0,0,0]]];\n    VAR num count := 0;\n\n    PROC main()\n        MoveL p10, v100, fine, tool0\\WObj:=\n        IF count \n    ENDPROC\nENDMODULE\n";
+    let dir = temp_dir("feat-trigger");
+    let mut client = TestClient::new(dir.to_path_buf(), json!({"diagnosticsDelay": 0})).await;
+    let main = client.open(&dir.join("Main.mod"), text);
+    let ask = |at: Value, trigger: &str| {
+        let mut params = doc_pos(&main, at);
+        params["context"] = json!({"triggerKind": 2, "triggerCharacter": trigger});
+        params
+    };
+    let labels = |list: &Value| -> Vec<String> {
+        let mut items: Vec<(String, String)> = list["items"]
+            .as_array()
+            .into_iter()
+            .flatten()
+            .map(|i| {
+                (
+                    i["sortText"].as_str().unwrap_or_default().to_owned(),
+                    i["label"].as_str().unwrap_or_default().to_owned(),
+                )
+            })
+            .collect();
+        items.sort();
+        items.into_iter().map(|(_, l)| l).collect()
+    };
+    let list = client
+        .call(
+            "textDocument/completion",
+            ask(pos(text, "MoveL p10", 6), " "),
+        )
+        .await;
+    let items = labels(&list);
+    assert!(items.iter().any(|l| l == "Offs"), "{items:?}");
+    assert!(
+        !items.iter().any(|l| l == "count"),
+        "only robtargets: {items:?}"
+    );
+    let list = client
+        .call(
+            "textDocument/completion",
+            ask(pos(text, "\\WObj:=", 7), "="),
+        )
+        .await;
+    assert_eq!(
+        labels(&list).first().map(String::as_str),
+        Some("wTable"),
+        "{list}"
+    );
+    let list = client
+        .call(
+            "textDocument/completion",
+            ask(pos(text, "IF count ", 9), " "),
+        )
+        .await;
+    assert_eq!(labels(&list), Vec::<String>::new(), "{list}");
+    client.keep(dir);
+    client.shutdown().await;
+}
+
+/// `rapid/indentation` says how the formatter indents a document: the
+/// majority's tabs or spaces (a file of spaces with one line led by a tab
+/// is a file of spaces), or the configured width.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn indentation_is_the_formatters() {
+    let dir = temp_dir("feat-indentation");
+    let spaces = "MODULE A\n    PROC p()\n        x := 1;\n\ty := 2;\n        z := 3;\n    ENDPROC\nENDMODULE\n";
+    let tabs =
+        "MODULE B\n\tPROC p()\n\t\tx := 1;\n        y := 2;\n\t\tz := 3;\n\tENDPROC\nENDMODULE\n";
+    let mut client = TestClient::new(dir.to_path_buf(), json!({"diagnosticsDelay": 0})).await;
+    let a = client.open(&dir.join("A.mod"), spaces);
+    let b = client.open(&dir.join("B.mod"), tabs);
+    let ask = |uri: &str| json!({"textDocument": {"uri": uri}});
+    assert_eq!(
+        client.call("rapid/indentation", ask(&a)).await,
+        json!({"width": 4, "tabs": false})
+    );
+    assert_eq!(
+        client.call("rapid/indentation", ask(&b)).await,
+        json!({"width": 4, "tabs": true})
+    );
+    client.keep(dir);
+    client.shutdown().await;
+}
