@@ -110,7 +110,9 @@ module.exports = grammar({
   // at the end of a line inside a string (where `!` and blanks are text).
   externals: $ => [$.trailing_text, $._error_sentinel, $._incomplete, $._incomplete_string],
 
-  extras: $ => [/\s/, /\uFEFF/, $.comment],
+  // Blanks are the ASCII ones (space, tab, line breaks, form feed): a
+  // no-break space or an ideographic space is no blank to the controller.
+  extras: $ => [/[ \t\n\r\f\v]/, /\uFEFF/, $.comment],
 
   word: $ => $.identifier,
 
@@ -623,7 +625,9 @@ module.exports = grammar({
 
     _name: $ => choice($.identifier, $.placeholder),
 
-    identifier: _ => /[A-Za-z][A-Za-z0-9_]*/,
+    // A letter of ISO 8859-1 (the controller's character set: A-Z, a-z,
+    // À-Ö, Ø-ö, ø-ÿ), then letters, digits and `_`.
+    identifier: _ => /[A-Za-z\u00C0-\u00D6\u00D8-\u00F6\u00F8-\u00FF][A-Za-z0-9_\u00C0-\u00D6\u00D8-\u00F6\u00F8-\u00FF]*/,
 
     // FlexPendant placeholders: <SMT> <EXP> <ARG> <VAR> <ID> <DDN> ...
     placeholder: _ => token(prec(1, /<[A-Z]{2,4}>/)),

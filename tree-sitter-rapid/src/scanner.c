@@ -43,9 +43,11 @@ void tree_sitter_rapid_external_scanner_deserialize(void *payload, const char *b
   (void)length;
 }
 
+// A letter of ISO 8859-1 (as the grammar's identifier: A-Z, a-z, À-Ö,
+// Ø-ö, ø-ÿ), a digit or `_`.
 static bool is_ident_char(int32_t c) {
   return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
-         c == '_';
+         c == '_' || (c >= 0xC0 && c <= 0xFF && c != 0xD7 && c != 0xF7);
 }
 
 static bool is_newline(int32_t c) { return c == '\n' || c == '\r'; }

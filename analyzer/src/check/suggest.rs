@@ -12,7 +12,7 @@ impl Cx<'_> {
     /// (a data type for a variable) would mislead more than help.
     pub(crate) fn close_match(&mut self, name: &str, kind: Kind) -> Option<String> {
         let key = fold(name);
-        let limit = if key.len() <= 4 { 1 } else { 2 };
+        let limit = if chars(&key) <= 4 { 1 } else { 2 };
         let mut best = None;
         if kind == Kind::Data {
             best = self.routine.as_ref().and_then(|r| {
@@ -95,7 +95,7 @@ fn close_global(task: &Task, key: &str, limit: usize, kind: Kind) -> Option<(usi
     }
     let mut best: Option<(usize, String)> = None;
     for (folded, refs) in &task.globals {
-        if folded.len().abs_diff(key.len()) > limit {
+        if chars(folded).abs_diff(chars(key)) > limit {
             continue;
         }
         let Some(r) = refs.iter().find(|r| kind.matches(r.item)) else {
@@ -151,22 +151,40 @@ impl Kind {
     }
 }
 
-/// Levenshtein distance of two short ASCII strings.
+/// The number of characters of a name (its length in bytes when ASCII).
+fn chars(name: &str) -> usize {
+    if name.is_ascii() {
+        name.len()
+    } else {
+        name.chars().count()
+    }
+}
+
+/// Levenshtein distance of two short names, in characters (a Latin-1
+/// letter is one edit, as the controller counts it).
 pub(crate) fn edit_distance(a: &str, b: &str) -> usize {
-    distance(a.as_bytes(), b.as_bytes(), |x, y| x == y)
+    if a.is_ascii() && b.is_ascii() {
+        return distance(a.as_bytes(), b.as_bytes(), |x, y| x == y);
+    }
+    let (a, b): (Vec<char>, Vec<char>) = (a.chars().collect(), b.chars().collect());
+    distance(&a, &b, |x, y| x == y)
 }
 
 /// [`edit_distance`] between a folded `key` and `name` as if `name` were
-/// folded too (without allocating its folded form).
+/// folded too (without allocating its folded form when ASCII).
 fn edit_distance_folded(key: &str, name: &str) -> usize {
-    distance(key.as_bytes(), name.as_bytes(), |x, y| {
-        x == y.to_ascii_lowercase()
-    })
+    if key.is_ascii() && name.is_ascii() {
+        return distance(key.as_bytes(), name.as_bytes(), |x, y| {
+            x == y.to_ascii_lowercase()
+        });
+    }
+    let (a, b): (Vec<char>, Vec<char>) = (key.chars().collect(), name.chars().collect());
+    distance(&a, &b, |x, y| x == crate::names::fold_char(y))
 }
 
-/// Levenshtein distance of byte strings, or 3 when it is more than 2
+/// Levenshtein distance of two sequences, or 3 when it is more than 2
 /// (callers only care about distances up to 2).
-fn distance(a: &[u8], b: &[u8], eq: impl Fn(u8, u8) -> bool) -> usize {
+fn distance<T: Copy>(a: &[T], b: &[T], eq: impl Fn(T, T) -> bool) -> usize {
     const STACK: usize = 64;
     if a.len().abs_diff(b.len()) > 2 {
         return 3;
@@ -219,6 +237,10 @@ mod distance_tests {
                 "{a} {b}"
             );
         }
+        // a Latin-1 letter is one character, folded as the controller does
+        assert_eq!(super::edit_distance("sensör", "sensor"), 1);
+        assert_eq!(super::edit_distance_folded("varölcüm", "VARÖLCÜM"), 0);
+        assert_eq!(super::edit_distance_folded("ñ", "N"), 1);
         let long = "x".repeat(70);
         assert_eq!(super::edit_distance(&long, &format!("{long}y")), 1);
     }

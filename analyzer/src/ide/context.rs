@@ -63,14 +63,20 @@ pub(crate) fn before(text: &str, offset: usize) -> Before {
     }
 }
 
-fn is_ident(b: u8) -> bool {
-    b.is_ascii_alphanumeric() || b == b'_'
+/// Is byte `i` of `b` part of a name (a Latin-1 letter's two bytes count)?
+fn is_ident(b: &[u8], i: usize) -> bool {
+    crate::names::is_name_byte_at(b, i)
+}
+
+/// The length of the name characters at the start of `b`.
+fn ident_len(b: &[u8]) -> usize {
+    (0..b.len()).take_while(|&i| is_ident(b, i)).count()
 }
 
 /// The identifier being typed at the end of `text` (possibly empty).
 pub(crate) fn partial(text: &[u8]) -> usize {
     let mut i = text.len();
-    while i > 0 && is_ident(text[i - 1]) {
+    while i > 0 && is_ident(text, i - 1) {
         i -= 1;
     }
     text.len() - i
@@ -106,12 +112,9 @@ pub(crate) fn statement_start(b: &[u8]) -> usize {
             }
             _ => {}
         }
-        if depth <= 0 && is_ident(c) && (i < 2 || !is_ident(b[i - 2])) {
+        if depth <= 0 && is_ident(b, i - 1) && (i < 2 || !is_ident(b, i - 2)) {
             // The start of a word: is it a statement opener?
-            let mut j = i - 1;
-            while j < b.len() && is_ident(b[j]) {
-                j += 1;
-            }
+            let j = i - 1 + ident_len(&b[i - 1..]);
             let word = String::from_utf8_lossy(&b[i - 1..j]).to_ascii_lowercase();
             if STATEMENT_OPENERS.contains(&word.as_str()) {
                 return j;
@@ -143,16 +146,16 @@ fn is_header_line(b: &[u8]) -> bool {
 /// The words of a statement prefix (identifiers and keywords), lowercase.
 pub(crate) fn words(b: &[u8]) -> Vec<String> {
     let mut out = Vec::new();
-    let mut cur = String::new();
-    for &c in b {
-        if is_ident(c) {
-            cur.push(char::from(c).to_ascii_lowercase());
-        } else if !cur.is_empty() {
-            out.push(std::mem::take(&mut cur));
+    let mut start = None;
+    for i in 0..=b.len() {
+        match (start, is_ident(b, i)) {
+            (None, true) => start = Some(i),
+            (Some(s), false) => {
+                out.push(crate::names::fold(&String::from_utf8_lossy(&b[s..i])));
+                start = None;
+            }
+            _ => {}
         }
-    }
-    if !cur.is_empty() {
-        out.push(cur);
     }
     out
 }
@@ -196,7 +199,7 @@ fn parse_arg(b: &[u8]) -> ArgCx {
         }
         None => t,
     };
-    let name_len = rest.bytes().take_while(|c| is_ident(*c)).count();
+    let name_len = ident_len(rest.as_bytes());
     let after = rest.get(name_len..).unwrap_or_default().trim_start();
     if arg.optional {
         arg.name = Some(rest.get(..name_len).unwrap_or_default().to_owned());
@@ -254,7 +257,7 @@ pub(crate) fn call_at(bf: &Before) -> Option<CallCx> {
                         j -= 1;
                     }
                     let end = j;
-                    while j > stmt && is_ident(b[j - 1]) {
+                    while j > stmt && is_ident(b, j - 1) {
                         j -= 1;
                     }
                     if j < end && !b[j].is_ascii_digit() {
@@ -278,7 +281,7 @@ pub(crate) fn call_at(bf: &Before) -> Option<CallCx> {
     // A procedure call: the statement's first word followed by arguments.
     let s = &b[stmt..];
     let lead = s.iter().take_while(|c| c.is_ascii_whitespace()).count();
-    let name_len = s[lead..].iter().take_while(|c| is_ident(**c)).count();
+    let name_len = ident_len(&s[lead..]);
     if name_len == 0 {
         return None;
     }

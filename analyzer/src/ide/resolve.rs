@@ -321,22 +321,23 @@ fn spelt_at(range: Range<usize>, text: &str, name: &str) -> Vec<(usize, usize)> 
     let Some(hay) = text.get(range.clone()) else {
         return out;
     };
-    if name.is_empty() || !name.is_ascii() {
+    if name.is_empty() {
         return out;
     }
-    let hay_lower = hay.to_ascii_lowercase();
-    let needle = name.to_ascii_lowercase();
+    // Folding keeps every character's length: offsets stay.
+    let hay_lower = crate::names::fold(hay);
+    let needle = crate::names::fold(name);
     let bytes = hay_lower.as_bytes();
-    let is_ident = |b: u8| b.is_ascii_alphanumeric() || b == b'_';
+    let is_ident = |i: usize| crate::names::is_name_byte_at(bytes, i);
     let mut from = 0;
     while let Some(i) = hay_lower.get(from..).and_then(|h| h.find(&needle)) {
         let start = from + i;
         let end = start + needle.len();
         from = end;
-        if start > 0 && bytes.get(start - 1).is_some_and(|b| is_ident(*b)) {
+        if start > 0 && is_ident(start - 1) {
             continue;
         }
-        if bytes.get(end).is_some_and(|b| is_ident(*b)) {
+        if is_ident(end) {
             continue;
         }
         out.push((range.start + start, range.start + end));

@@ -121,8 +121,8 @@ pub fn document_symbols(unit: &Unit) -> Vec<Symbol> {
 /// Does `query` match `name`: as a substring (rank 0) or its letters in
 /// order (rank 1)? Case-insensitive.
 fn matches(name: &str, query: &str) -> Option<u8> {
-    let n = name.to_ascii_lowercase();
-    let q = query.to_ascii_lowercase();
+    let n = crate::names::fold(name);
+    let q = crate::names::fold(query);
     if n.contains(&q) {
         return Some(if n.starts_with(&q) { 0 } else { 1 });
     }

@@ -6,7 +6,9 @@ crate::declare_rule! {
     /// A name longer than 32 characters.
     ///
     /// ### What it checks
-    /// Identifiers in RAPID are at most 32 characters long.
+    /// Identifiers in RAPID are at most 32 characters long. A letter such as
+    /// `Ö` is one character (one byte of the controller's Latin-1), even
+    /// where the file is UTF-8.
     ///
     /// ### Why
     /// The controller rejects the module.
@@ -23,14 +25,14 @@ const MAX_NAME: usize = 32;
 
 /// A declared name longer than RAPID accepts.
 pub(crate) fn check(cx: &mut Cx<'_>, name: &str, range: Range<usize>) {
-    if name.len() > MAX_NAME {
+    // Names hold only Latin-1 letters, digits and `_`: one byte each on
+    // the controller, one `char` here.
+    let count = name.chars().count();
+    if count > MAX_NAME {
         cx.report(
             &RULE,
             range,
-            format!(
-                "`{name}` has {} characters; names have at most {MAX_NAME}",
-                name.len()
-            ),
+            format!("`{name}` has {count} characters; names have at most {MAX_NAME}"),
         );
     }
 }

@@ -122,7 +122,7 @@ fn is_alias(task: &Task, name: &str) -> bool {
 /// datum: different types (neither an alias), a different number of
 /// dimensions, or different sizes where both are written as numbers.
 fn differs(ty: &str, alias: bool, dims: &[&str], other: &SharedPers) -> bool {
-    if !alias && !other.alias && !ty.eq_ignore_ascii_case(&other.ty) {
+    if !alias && !other.alias && !crate::names::same(ty, &other.ty) {
         return true;
     }
     if dims.len() != other.dims.len() {

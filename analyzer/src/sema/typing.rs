@@ -258,10 +258,7 @@ pub(crate) fn component(types: &Types<'_>, obj: &Ty, name: &str) -> Result<Ty, C
         return Err(ComponentError::OnArray);
     }
     let components = types.components(obj).ok_or(ComponentError::NotRecord)?;
-    match components
-        .iter()
-        .find(|(n, _)| n.eq_ignore_ascii_case(name))
-    {
+    match components.iter().find(|(n, _)| crate::names::same(n, name)) {
         Some((_, t)) => Ok(t.clone()),
         None => Err(ComponentError::NoSuch(
             components.into_iter().map(|(n, _)| n).collect(),

@@ -16,6 +16,7 @@ use crate::rules::{equals_for_assignment, missing_token, syntax_error};
 // generator's.
 #[rustfmt::skip]
 pub mod generated;
+mod characters;
 mod typos;
 
 pub use generated::{field, kind};
@@ -67,6 +68,8 @@ pub fn syntax_diagnostics(tree: &Tree, text: &str) -> Vec<Diagnostic> {
     });
     out.extend(typos::unterminated_strings(text, &errors));
     let quotes: Vec<usize> = out.iter().map(|d| d.range.start).collect();
+    // Characters RAPID does not know: one error per line.
+    let mut stray = Vec::new();
     // Only nodes with an error below them are entered.
     crate::syntax_util::walk_pruned(root, &mut |node| {
         if node.is_error() {
@@ -74,6 +77,10 @@ pub fn syntax_diagnostics(tree: &Tree, text: &str) -> Vec<Diagnostic> {
                 .iter()
                 .any(|&q| node.start_byte() <= q && q < node.end_byte())
             {
+                return false;
+            }
+            if let Some(chars) = characters::stray(node, text) {
+                stray.push(chars);
                 return false;
             }
             let equals = equals_for_assignment(node, text);
@@ -103,6 +110,7 @@ pub fn syntax_diagnostics(tree: &Tree, text: &str) -> Vec<Diagnostic> {
             node.has_error()
         }
     });
+    out.extend(characters::once_per_line(text, stray));
     out.sort_by_key(|d| (d.range.start, d.range.end));
     out
 }

@@ -93,9 +93,9 @@ fn line_words(text: &str, at: usize) -> Vec<String> {
     let end = code_end(text, at);
     text.get(start..end)
         .unwrap_or_default()
-        .split(|c: char| !c.is_ascii_alphanumeric() && c != '_')
+        .split(|c: char| !crate::names::is_name_char(c))
         .filter(|w| !w.is_empty())
-        .map(str::to_ascii_lowercase)
+        .map(crate::names::fold)
         .collect()
 }
 
