@@ -39,7 +39,7 @@ impl ControllerInfo {
     pub fn selection(&self, overrides: &ControllerOverride) -> Selection {
         let robotware = overrides.robotware.or(self.robotware);
         let options = match &overrides.options {
-            Some(o) => o.clone(),
+            Some(o) => crate::catalogue::base().with_included(o),
             None => self.options.clone(),
         };
         Selection::new(robotware, options)
@@ -187,6 +187,15 @@ mod tests {
         assert_eq!(info.options, vec!["arc", "egm", "worldzones"]);
         let none = parse_backinfo(">>SYSTEM_ID:\nArc cell 7\n", crate::catalogue::base());
         assert_eq!(none, ControllerInfo::default());
+        // RobotWare 6's PC Interface brings Socket Messaging.
+        let pc = parse_backinfo(">>OPTIONS:\n616-1 PC Interface\n", crate::catalogue::base());
+        assert_eq!(pc.options, vec!["pcinterface", "socket"]);
+        let sel = pc.selection(&ControllerOverride {
+            robotware: None,
+            options: Some(vec!["pcinterface".into()]),
+            robot: None,
+        });
+        assert!(sel.enabled("socket"));
     }
 
     #[test]

@@ -226,5 +226,13 @@ fn check_origins(cat: &Catalogue, problems: &mut Vec<String>) {
         if p.matches.is_empty() {
             problems.push(format!("package {}: no texts to find it by", p.id));
         }
+        for inc in &p.includes {
+            if cat.package(inc).is_none() || inc.eq_ignore_ascii_case(&p.id) {
+                problems.push(format!(
+                    "package {}: includes unknown package `{inc}`",
+                    p.id
+                ));
+            }
+        }
     }
 }

@@ -309,6 +309,11 @@ pub struct Package {
     pub summary: String,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub note: Option<String>,
+    /// Other packages (ids) that come with this option: a controller that
+    /// has it has them too (RobotWare 6's PC Interface brings Socket
+    /// Messaging).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub includes: Vec<String>,
 }
 
 /// The whole catalogue, or the view of it that one controller has.
@@ -657,14 +662,18 @@ impl Catalogue {
                 o.package.as_deref().unwrap_or("base")
             );
         }
-        out.push_str("\n## Packages\n\n| Id | Option | Found in a backup by |\n|---|---|---|\n");
+        out.push_str(
+            "\n## Packages\n\n| Id | Option | Found in a backup by | Brings |\n|---|---|---|---|\n",
+        );
         for p in &self.packages {
+            let brings: Vec<String> = p.includes.iter().map(|i| format!("`{i}`")).collect();
             let _ = writeln!(
                 out,
-                "| `{}` | {} | {} |",
+                "| `{}` | {} | {} | {} |",
                 p.id,
                 p.name,
-                p.matches.join(", ")
+                p.matches.join(", "),
+                brings.join(", ")
             );
         }
         out

@@ -31,6 +31,8 @@ struct RawPackage {
     matches: Vec<String>,
     summary: String,
     note: Option<String>,
+    #[serde(default)]
+    includes: Vec<String>,
 }
 
 /// Fields every entry has: versions, package, source (read from each
@@ -96,6 +98,7 @@ pub(crate) fn load_file(cat: &mut Catalogue, file: &str, text: &str) -> Result<(
             matches: p.matches,
             summary: p.summary,
             note: p.note,
+            includes: p.includes,
         });
     }
     for mut f in data.function {

@@ -45,15 +45,35 @@ impl Catalogue {
     /// Motion`), in catalogue order.
     pub fn packages_named_in(&self, text: &str) -> Vec<&str> {
         let lower = text.to_ascii_lowercase();
-        self.packages
-            .iter()
-            .filter(|p| {
-                p.matches
-                    .iter()
-                    .any(|m| contains_word(&lower, &m.to_ascii_lowercase()))
-            })
-            .map(|p| p.id.as_str())
-            .collect()
+        let named = self.packages.iter().filter(|p| {
+            p.matches
+                .iter()
+                .any(|m| contains_word(&lower, &m.to_ascii_lowercase()))
+        });
+        let mut out: Vec<&str> = Vec::new();
+        for p in named {
+            for id in std::iter::once(&p.id).chain(&p.includes) {
+                if !out.contains(&id.as_str()) {
+                    out.push(id);
+                }
+            }
+        }
+        out
+    }
+
+    /// The package ids `ids` with those they include ([`crate::Package::includes`]).
+    pub fn with_included(&self, ids: &[String]) -> Vec<String> {
+        let mut out: Vec<String> = ids.to_vec();
+        for id in ids {
+            if let Some(p) = self.package(id) {
+                for inc in &p.includes {
+                    if !out.iter().any(|o| o.eq_ignore_ascii_case(inc)) {
+                        out.push(inc.clone());
+                    }
+                }
+            }
+        }
+        out
     }
 
     /// This catalogue as the controller of `selection` has it: every entry
