@@ -100,13 +100,42 @@ pub fn backup_root(path: &str) -> Option<&str> {
     path.get(..end.saturating_sub(1))
 }
 
-/// Is this file inside a `HOME/` folder (the controller's file area, from
-/// which programs load modules at run time)?
+/// Is this file inside a backup's `HOME/` folder (the controller's file
+/// area, from which programs load modules at run time)? A backup kept
+/// inside another's `HOME/` is a backup of its own: its `RAPID/` is not in
+/// that `HOME/` ([`home_root`]).
 pub fn in_home(path: &str) -> bool {
+    home_root(path).is_some()
+}
+
+/// The backup folder whose `HOME/` holds this file: when the innermost
+/// `RAPID` or `HOME` folder around the file is a controller's `HOME`.
+pub fn home_root(path: &str) -> Option<&str> {
     let normal = path.replace('\\', "/");
     let mut parts: Vec<&str> = normal.split('/').collect();
     parts.pop();
-    (0..parts.len()).any(|i| is_controller_home(&parts, i))
+    let at = (0..parts.len())
+        .rev()
+        .find(|&i| parts[i].eq_ignore_ascii_case("rapid") || is_controller_home(&parts, i))?;
+    if parts[at].eq_ignore_ascii_case("rapid") {
+        return None;
+    }
+    let end = parts[..at].iter().map(|p| p.len() + 1).sum::<usize>();
+    path.get(..end.saturating_sub(1))
+}
+
+/// Is `path` (a file or a folder, either separator) below the folder
+/// `folder`, or that folder itself? Folder names are whole: `b1` does not
+/// hold `b10/x.mod`.
+pub fn is_within(path: &str, folder: &str) -> bool {
+    if folder.is_empty() {
+        return true;
+    }
+    let sep = |b: u8| b == b'/' || b == b'\\';
+    let (p, f) = (path.as_bytes(), folder.as_bytes());
+    p.len() >= f.len()
+        && p.iter().zip(f).all(|(&a, &b)| a == b || (sep(a) && sep(b)))
+        && (p.len() == f.len() || sep(p[f.len()]) || f.last().copied().is_some_and(sep))
 }
 
 /// Is folder `i` of a path's `parts` a controller's `HOME` folder? A
@@ -117,22 +146,37 @@ fn is_controller_home(parts: &[&str], i: usize) -> bool {
     parts[i].eq_ignore_ascii_case("home") && parts[i] != "home"
 }
 
-/// The file names (lowercase, without folders) of the modules a text names
-/// in string literals, as `Load`, `StartLoad` and their file paths do
-/// (`"HOME:/Parts/Part1.mod"`, `\File:="Part1.MOD"`).
-pub fn named_module_files(text: &str) -> Vec<String> {
-    const EXTENSIONS: [&str; 5] = [".mod", ".sys", ".modx", ".sysx", ".prg"];
-    let mut out: Vec<String> = Vec::new();
-    for (_, literal) in crate::lex::string_literals(text) {
-        let lower = literal.to_ascii_lowercase();
-        if EXTENSIONS.iter().any(|e| lower.ends_with(e)) {
-            let name = lower.rsplit(['/', '\\', ':']).next().unwrap_or_default();
-            if !name.is_empty() && !out.iter().any(|n| n == name) {
-                out.push(name.to_owned());
-            }
-        }
+/// The backup folder of a configuration file in its `SYSPAR/` folder.
+pub fn syspar_root(path: &str) -> Option<&str> {
+    let normal = path.replace('\\', "/");
+    let (dir, _) = normal.rsplit_once('/')?;
+    let (parent, last) = dir.rsplit_once('/').unwrap_or(("", dir));
+    if !last.eq_ignore_ascii_case("syspar") {
+        return None;
     }
-    out
+    path.get(..parent.len())
+}
+
+/// The backup a file belongs to: the folder around its innermost `RAPID/`,
+/// `HOME/`, `SYSPAR/` or `BACKINFO/` folder (see
+/// [`backup_root`]).
+pub fn owner_backup(path: &str) -> Option<&str> {
+    let config = syspar_root(path).or_else(|| backinfo_root(path));
+    match (backup_root(path), config) {
+        (Some(a), Some(b)) => Some(if a.len() >= b.len() { a } else { b }),
+        (a, b) => a.or(b),
+    }
+}
+
+/// The backup folder of a file in its `BACKINFO/` folder.
+pub fn backinfo_root(path: &str) -> Option<&str> {
+    let normal = path.replace('\\', "/");
+    let (dir, _) = normal.rsplit_once('/')?;
+    let (parent, last) = dir.rsplit_once('/').unwrap_or(("", dir));
+    if !last.eq_ignore_ascii_case("backinfo") {
+        return None;
+    }
+    path.get(..parent.len())
 }
 
 #[cfg(test)]
@@ -181,6 +225,25 @@ mod tests {
             task_key(r"c:\b\RAPID\TASK1\PROGMOD\a.mod"),
             "c:/b/RAPID/TASK1"
         );
+    }
+
+    #[test]
+    fn a_backup_inside_a_home_folder_is_its_own() {
+        let inner = "b/HOME/Backups/b2/RAPID/TASK1/PROGMOD/m.mod";
+        assert!(!in_home(inner));
+        assert_eq!(backup_root(inner), Some("b/HOME/Backups/b2"));
+        assert_eq!(
+            home_root("b/HOME/Backups/b2/HOME/x.mod"),
+            Some("b/HOME/Backups/b2")
+        );
+        assert_eq!(home_root("b/HOME/Backups/x.mod"), Some("b"));
+        assert_eq!(home_root("b/RAPID/TASK1/x.mod"), None);
+        assert!(is_within("b1/RAPID/TASK1", "b1"));
+        assert!(is_within("b1", "b1"));
+        assert!(!is_within("b10/RAPID/TASK1", "b1"));
+        assert!(is_within(r"c:\w\b1\x.mod", "c:/w/b1"));
+        assert!(is_within("x.mod", ""));
+        assert!(is_within("/b/x.mod", "/"));
     }
 
     #[test]
@@ -238,18 +301,5 @@ mod tests {
         assert_eq!(backup_root("b/HOME/Parts/p.mod"), Some("b"));
         assert_eq!(backup_root("b/RAPID"), Some("b"));
         assert_eq!(backup_root("proj/src"), None);
-    }
-
-    #[test]
-    fn loaded_module_files_are_found_in_strings() {
-        let text = "Load \\Dynamic, \"HOME:/Parts/Part1.mod\";\n\
-                    StartLoad diskhome \\File:=\"part2.MODX\", load1;\n\
-                    TPWrite \"not a file\";\n\
-                    s := \"a.mod\" + \"a.mod\"; ! \"b.mod\"";
-        assert_eq!(
-            named_module_files(text),
-            ["part1.mod", "part2.modx", "a.mod"]
-        );
-        assert!(named_module_files("\"unterminated").is_empty());
     }
 }

@@ -15,6 +15,7 @@ pub mod ide;
 pub mod items;
 pub mod layout;
 pub mod lex;
+pub mod loads;
 pub mod lower;
 pub mod names;
 pub mod nesting;

@@ -35,6 +35,8 @@ pub struct Unit {
     /// arrays (which constant evaluation reads; the interface leaves them out).
     pub constants: u64,
     pub syntax: Vec<Diagnostic>,
+    /// The module files it loads at run time ([`crate::loads`]).
+    pub loads: crate::loads::Loads,
     /// The parts of the text nested too deep to analyse: the tree is that
     /// of a copy of the text with these replaced ([`crate::nesting`]).
     cuts: Vec<crate::nesting::Cut>,
@@ -66,6 +68,7 @@ impl Unit {
         };
         let (tree, cuts) = crate::nesting::bound(&text, tree);
         let items = FileItems::lower(&tree, &text);
+        let loads = crate::loads::of(&tree, &text, &items);
         let mut syntax = crate::syntax::syntax_diagnostics(&tree, &text);
         if !cuts.is_empty() {
             syntax.extend(crate::nesting::diagnostics(&text, &cuts));
@@ -79,6 +82,7 @@ impl Unit {
             tree: UnitTree::new(tree),
             items,
             syntax,
+            loads,
             cuts,
         }
     }
@@ -116,6 +120,7 @@ impl Unit {
                 interface: 0,
                 constants: 0,
                 syntax: Vec::new(),
+                loads: Default::default(),
                 cuts: Vec::new(),
             },
             // No tree even for empty text means the grammar could not be

@@ -56,6 +56,10 @@ pub(super) struct Checked {
     /// The rules checked.
     selection: Selection,
     diagnostics: Arc<Vec<Diagnostic>>,
+    /// The other files its findings point into (related locations), as
+    /// they were: the result holds their positions, which the task's
+    /// interface leaves out.
+    pointed: Vec<Arc<Unit>>,
     /// Statement results, for the next check of this file.
     pub(super) statements: StmtCache,
 }
@@ -83,6 +87,7 @@ impl Check {
     pub fn run(self) -> CheckResult {
         let (diagnostics, statements) =
             diagnostics_selected(&self.task, &self.unit, self.statements, &self.selection);
+        let pointed = pointed_units(&self.task, &diagnostics);
         let diagnostics = Arc::new(diagnostics);
         CheckResult {
             path: self.path,
@@ -93,6 +98,7 @@ impl Check {
                 revision: self.revision,
                 selection: self.selection,
                 diagnostics,
+                pointed,
                 statements,
             },
         }
@@ -117,9 +123,16 @@ impl Workspace {
         selection: &Selection,
     ) -> Option<Arc<Vec<Diagnostic>>> {
         let c = self.checked.get(path)?;
+        let same_places = c.pointed.iter().all(|p| {
+            task.units
+                .iter()
+                .find(|u| u.path == p.path)
+                .is_some_and(|u| Arc::ptr_eq(u, p))
+        });
         (Arc::ptr_eq(&c.unit, unit)
             && c.inputs == CheckInputs::of(task)
-            && c.selection == *selection)
+            && c.selection == *selection
+            && same_places)
             .then(|| c.diagnostics.clone())
     }
 
@@ -194,6 +207,24 @@ impl Workspace {
         self.finish(result, true);
         diagnostics
     }
+}
+
+/// The units of `task` that related locations of `diagnostics` name.
+fn pointed_units(task: &Task, diagnostics: &[Diagnostic]) -> Vec<Arc<Unit>> {
+    let mut out: Vec<Arc<Unit>> = Vec::new();
+    for file in diagnostics
+        .iter()
+        .flat_map(|d| &d.related)
+        .filter_map(|r| r.file.as_deref())
+    {
+        if out.iter().any(|u| u.path == file) {
+            continue;
+        }
+        if let Some(u) = task.units.iter().find(|u| u.path == file) {
+            out.push(u.clone());
+        }
+    }
+    out
 }
 
 /// The diagnostics of one unit of a task, computed afresh: syntax, then

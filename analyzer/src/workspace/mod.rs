@@ -37,12 +37,9 @@ pub struct Workspace {
     /// Views of a task for its units that clash with others, by the task's
     /// key and the unit's path (see [`alternatives`]).
     views: HashMap<String, HashMap<String, Arc<Task>>>,
-    /// Modules of a backup's `HOME/` that a task of the backup loads by
-    /// name, and so belong to it: the module's path to the task's key.
-    adopted: HashMap<String, String>,
-    /// The module files that each unit of a backup's task names in its
-    /// strings (for `Load` and `StartLoad`), by the unit's path.
-    loads: HashMap<String, Vec<String>>,
+    /// Modules of a backup's `HOME/` that a task of the backup loads, and
+    /// so belong to it ([`home`]).
+    adoption: std::sync::Mutex<home::Adoption>,
     /// Module files that exist but could not be read (see
     /// [`Workspace::set_unreadable`]).
     unreadable: std::collections::BTreeSet<String>,
@@ -88,11 +85,13 @@ impl Workspace {
     pub fn set_program(&mut self, path: &str, xml: &str) {
         let modules = parse_program(path, xml);
         self.programs.insert(path.to_owned(), modules);
+        self.mark_backup(path);
         self.programs_changed();
     }
 
     pub fn remove_program(&mut self, path: &str) {
         if self.programs.remove(path).is_some() {
+            self.mark_backup(path);
             self.programs_changed();
         }
     }
@@ -130,9 +129,15 @@ impl Workspace {
 
     /// [`Workspace::task_key`], and how the task's modules are grouped.
     fn locate(&self, path: &str) -> (String, Grouping) {
-        if let Some(key) = self.adopted.get(path) {
-            return (key.clone(), Grouping::Backup);
+        match self.adopted_key(path) {
+            Some(key) => (key, Grouping::Backup),
+            None => self.locate_by_place(path),
         }
+    }
+
+    /// [`Workspace::locate`] by the file's place and the programs, leaving
+    /// out what tasks load from `HOME/`.
+    fn locate_by_place(&self, path: &str) -> (String, Grouping) {
         let (key, grouping) = locate(path);
         if self.programs.is_empty() || grouping == Grouping::Backup {
             return (key, grouping);
@@ -164,8 +169,16 @@ impl Workspace {
     /// interface or constants, or it is new): whether they are to be
     /// checked again.
     pub fn set_unit(&mut self, unit: Unit) -> bool {
-        let loads_changed = self.note_loads(&unit.path, Some(&unit.text));
-        let key = self.task_key(&unit.path);
+        // Which HOME/ modules the backup's tasks load may change with what
+        // the unit loads or which modules it holds.
+        let moved = self.units.get(&unit.path).is_none_or(|old| {
+            old.loads != unit.loads || !same_modules(&old.items.modules, &unit.items.modules)
+        });
+        if moved {
+            self.mark_backup(&unit.path);
+        }
+        // The key as grouped so far (a new adoption drops every task).
+        let key = self.key_so_far(&unit.path);
         let unit = Arc::new(unit);
         // The same file replaced: the task keeps its members.
         let mut members = match self.forget_task(&key) {
@@ -189,10 +202,17 @@ impl Workspace {
         if seen {
             self.forget_sibling_tasks(&key);
         }
-        if loads_changed {
-            self.refresh_adoption();
-        }
         seen
+    }
+
+    /// [`Workspace::task_key`] without working out the adoption of
+    /// `HOME/` modules again (for invalidation while files are set: when
+    /// the adoption changes, [`Workspace::settle`] drops every task).
+    fn key_so_far(&mut self, path: &str) -> String {
+        match self.adopted_so_far(path) {
+            Some(key) => key,
+            None => self.locate_by_place(path).0,
+        }
     }
 
     /// Makes `unit` a member of every task besides the modules their
@@ -227,14 +247,12 @@ impl Workspace {
 
     pub fn remove_file(&mut self, path: &str) {
         if self.units.remove(path).is_some() {
-            let key = self.task_key(path);
+            let key = self.key_so_far(path);
             self.forget_task(&key);
             self.members.remove(&key);
             self.forget_sibling_tasks(&key);
             self.checked.remove(path);
-            if self.note_loads(path, None) {
-                self.refresh_adoption();
-            }
+            self.mark_backup(path);
         }
     }
 
@@ -262,7 +280,7 @@ impl Workspace {
             self.configs.insert(path.to_owned(), parse_config(text));
         }
         self.forget_all_tasks();
-        self.refresh_adoption();
+        self.mark_backup(path);
     }
 
     /// Sets the controller of the project configuration (`[controller]` of
@@ -280,7 +298,7 @@ impl Workspace {
     pub fn controller_of_task(&self, key: &str) -> ControllerInfo {
         let mut info = ControllerInfo::default();
         for (path, system) in &self.systems {
-            if key.starts_with(config_root(path)) {
+            if config_applies(path, key) {
                 info.merge(system);
             }
         }
@@ -297,7 +315,7 @@ impl Workspace {
         }
         if self.configs.remove(path).is_some() {
             self.forget_all_tasks();
-            self.refresh_adoption();
+            self.mark_backup(path);
         }
     }
 
@@ -335,6 +353,7 @@ impl Workspace {
     /// group, or the view of its group made for it when it clashes with
     /// other modules of the group ([`alternatives`]).
     pub fn task_of(&mut self, path: &str) -> Arc<Task> {
+        self.settle();
         let group = self.group_of(path);
         let Some(idx) = group.units.iter().position(|u| u.path == path) else {
             return group;
@@ -360,6 +379,7 @@ impl Workspace {
     /// The whole group of modules a file belongs to (built on demand and
     /// cached).
     fn group_of(&mut self, path: &str) -> Arc<Task> {
+        self.settle();
         let key = self.task_key(path);
         if let Some(t) = self.tasks.get(&key) {
             return t.clone();
@@ -367,14 +387,24 @@ impl Workspace {
         if let Some(units) = self.members.remove(&key) {
             return self.build_task(key, units);
         }
-        let units: Vec<Arc<Unit>> = self
+        let mut units: Vec<Arc<Unit>> = self
             .units
             .values()
             .filter(|u| self.task_key(&u.path) == key)
-            .chain(&self.extras)
             .cloned()
             .collect();
+        units.extend(self.borrowed_units(&key));
+        units.extend(self.extras.iter().cloned());
         self.build_task(key, units)
+    }
+
+    /// The modules task `key` loads from `HOME/` that are checked in
+    /// another task ([`home`]): members it does not check.
+    fn borrowed_units(&self, key: &str) -> Vec<Arc<Unit>> {
+        self.borrowed_by(key)
+            .iter()
+            .filter_map(|p| self.units.get(p).cloned())
+            .collect()
     }
 
     /// Builds and caches the group task `key` of `units`.
@@ -414,10 +444,16 @@ impl Workspace {
             let (shared, hash) = match self.controllers.get(controller) {
                 Some(c) => c.clone(),
                 None => {
+                    // Only this controller's tasks: not a backup kept in
+                    // one of its folders.
                     let (map, hash) = shared_persistents(
                         self.units
                             .values()
-                            .filter(|u| under(&u.path, controller))
+                            .filter(|u| {
+                                under(&u.path, controller)
+                                    && controller_of(&crate::layout::task_key(&u.path))
+                                        == Some(controller)
+                            })
                             .chain(&self.extras),
                     );
                     let c = (Arc::new(map), hash);
@@ -437,8 +473,8 @@ impl Workspace {
         let mut out = Vec::with_capacity(self.units.len());
         for group in self.tasks() {
             for (i, unit) in group.units.iter().enumerate() {
-                if !self.is_own(unit) {
-                    // An extra unit, not one of the files checked.
+                if !self.is_own(unit) || self.task_key(&unit.path) != group.key {
+                    // An extra unit, or one checked in another task.
                     continue;
                 }
                 if group.owns(i) {
@@ -455,6 +491,7 @@ impl Workspace {
     /// clashes with others of its group is checked in a view of its own,
     /// see [`Workspace::checks`]).
     pub fn tasks(&mut self) -> Vec<Arc<Task>> {
+        self.settle();
         // Group the units once (asking `task_of` per task would compute
         // every unit's key again for each task).
         let mut groups: BTreeMap<String, Vec<Arc<Unit>>> = BTreeMap::new();
@@ -464,7 +501,8 @@ impl Workspace {
                 .or_default()
                 .push(unit.clone());
         }
-        for units in groups.values_mut() {
+        for (key, units) in groups.iter_mut() {
+            units.extend(self.borrowed_units(key));
             units.extend(self.extras.iter().cloned());
         }
         groups
@@ -535,7 +573,7 @@ impl Workspace {
         let by_place = self
             .configs
             .iter()
-            .filter(|(path, _)| key.starts_with(config_root(path)))
+            .filter(|(path, _)| config_applies(path, key))
             .map(|(_, config)| config);
         for config in self.extra_configs.iter().chain(by_place) {
             if let Some(s) = &config.signals {
@@ -547,6 +585,11 @@ impl Workspace {
         }
         (signals, mecunits)
     }
+}
+
+/// Do two files hold modules of the same names, in order?
+fn same_modules(a: &[crate::items::Module], b: &[crate::items::Module]) -> bool {
+    a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.name == y.name)
 }
 
 /// Is `path` below `folder` (a normalised prefix ending in `/`), with either
@@ -619,6 +662,22 @@ pub fn program_modules(path: &str, xml: &str) -> Vec<String> {
         at = start + len;
     }
     out
+}
+
+/// Does the configuration file `path` (`SYSPAR/*.cfg`, `BACKINFO/...`, or
+/// one elsewhere) apply to the task `key`? A backup's configuration applies
+/// to its own tasks (the `HOME/` modules' too), never to another backup's,
+/// not even one kept inside it; a configuration elsewhere applies to the
+/// tasks below its folder, but not to a backup below it, which a controller
+/// configured with its own.
+fn config_applies(path: &str, key: &str) -> bool {
+    let backup = crate::layout::backup_root(key);
+    if let Some(root) = home::syspar_root(path).or_else(|| home::backinfo_root(path)) {
+        return backup == Some(root);
+    }
+    let root = config_root(path);
+    crate::layout::is_within(key, root)
+        && backup.is_none_or(|b| !crate::layout::is_within(b, root) || b.len() <= root.len())
 }
 
 /// The folder an I/O configuration applies below: a backup's root for

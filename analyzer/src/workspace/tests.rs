@@ -286,3 +286,23 @@ fn checks_run_outside_the_workspace_and_are_taken_back() {
         .run();
     assert!(only.diagnostics.iter().all(|d| d.rule.code == "W101"));
 }
+
+/// A cached result holds the positions of the other files its findings
+/// point at: an edit that moves them (without changing what they declare)
+/// makes it stale.
+#[test]
+fn related_positions_follow_edits_of_the_other_file() {
+    let a = "MODULE A\n  VAR num counter;\nENDMODULE\n";
+    let b = "MODULE B\n  VAR num counter;\nENDMODULE\n";
+    let mut ws = Workspace::new();
+    ws.set_file("b/RAPID/TASK1/PROGMOD/A.mod", a.into());
+    ws.set_file("b/RAPID/TASK1/PROGMOD/B.mod", b.into());
+    let before = ws.diagnostics("b/RAPID/TASK1/PROGMOD/A.mod");
+    assert_eq!(before[0].related[0].range, 19..26);
+    ws.set_file("b/RAPID/TASK1/PROGMOD/B.mod", format!("! a comment\n{b}"));
+    let cached = ws.diagnostics("b/RAPID/TASK1/PROGMOD/A.mod");
+    let task = ws.task_of("b/RAPID/TASK1/PROGMOD/A.mod");
+    let unit = ws.unit("b/RAPID/TASK1/PROGMOD/A.mod").cloned().expect("A");
+    assert_eq!(*cached, diagnostics_of(&task, &unit));
+    assert_eq!(cached[0].related[0].range, 31..38);
+}

@@ -2,18 +2,22 @@
 //! the files it was given, so that a file's findings depend on its place on
 //! disk and not on the paths named or the folder the command runs from.
 //!
-//! A file's task is where it lives ([`task_key`] of its real path): in a
-//! controller backup, its `RAPID/TASKn` folder (with its `SYSMOD` and
-//! `PROGMOD`) and the backup's `SYSPAR` configuration; elsewhere, the
-//! modules, programs (`.pgf`) and configuration of its own folder. Checking
-//! `PROGMOD/Main.mod` from inside `RAPID/TASK1` thus sees the system
-//! modules of `SYSMOD` as a check of the whole backup does. The task's other
-//! files are analysed with it but not reported.
+//! A file's task is where it lives ([`task_key`] of its real path). In a
+//! controller backup (a file of a task folder under `RAPID/`, or of the
+//! backup's `HOME/`) it is the whole backup but the backups kept inside
+//! it: its task's modules, the `HOME/` modules its tasks load, the other
+//! tasks (which share their persistents), `SYSPAR` and `BACKINFO`.
+//! Elsewhere it is the modules, programs (`.pgf`) and configuration of the
+//! file's own folder. Checking `PROGMOD/Main.mod` from inside
+//! `RAPID/TASK1` thus sees what a check of the whole backup, or of the
+//! repository holding it, sees. The task's other files are analysed with
+//! it but not reported.
 
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 
-use rapid_analyzer::task::{controller_of, task_key};
+use rapid_analyzer::layout::{Grouping, backup_root, home_root, locate, owner_backup};
+use rapid_analyzer::task::task_key;
 use rapid_analyzer::workspace::program_modules;
 
 use super::discover::{Discovery, Excluder, discover_in};
@@ -23,11 +27,11 @@ use super::{Disk, Environment, Kind};
 /// analyzer names it).
 #[derive(Debug, Default, PartialEq, Eq)]
 pub struct TaskFolders {
-    /// The task's folder when it is a backup's `RAPID/TASKn`: its modules
-    /// are in it and its subfolders (`SYSMOD`, `PROGMOD`).
+    /// The backup's folder for a file of a backup: its files are the
+    /// context, but those of backups kept inside it.
     pub deep: Option<PathBuf>,
     /// Folders whose own files belong to the task: the file's folder
-    /// outside a backup; the backup's `SYSPAR` (configuration) inside one.
+    /// outside a backup.
     pub shallow: Vec<PathBuf>,
 }
 
@@ -38,25 +42,41 @@ pub fn task_folders(path: &str) -> TaskFolders {
 
 /// Where the rest of the task of the file `path` lives in `env`.
 pub fn task_folders_in(env: &dyn Environment, path: &str) -> TaskFolders {
+    if let Some(root) = backup_of_file(path) {
+        let root = if root.is_empty() { "." } else { root };
+        return TaskFolders {
+            deep: Some(PathBuf::from(root)).filter(|r| env.kind(r).is_ok()),
+            shallow: Vec::new(),
+        };
+    }
     let key = task_key(path);
     if key.is_empty() {
         return TaskFolders::default();
     }
-    match controller_of(&key) {
-        Some(controller) => TaskFolders {
-            deep: Some(PathBuf::from(&key)),
-            shallow: Path::new(controller)
-                .parent()
-                .map(|root| root.join("SYSPAR"))
-                .filter(|s| env.kind(s).is_ok_and(|k| k == Kind::Folder))
-                .into_iter()
-                .collect(),
-        },
-        None => TaskFolders {
-            deep: None,
-            shallow: vec![PathBuf::from(key)],
-        },
+    TaskFolders {
+        deep: None,
+        shallow: vec![PathBuf::from(key)],
     }
+}
+
+/// The backup folder of a file of a backup's task folder or `HOME/`.
+pub fn backup_of_file(path: &str) -> Option<&str> {
+    if let Some(root) = home_root(path) {
+        return Some(root);
+    }
+    match locate(path).1 {
+        Grouping::Backup => backup_root(path),
+        _ => None,
+    }
+}
+
+/// Is the file `path` of the backup `root` itself, not of a backup kept
+/// inside it?
+fn of_backup(path: &Path, root: &Path, env: &dyn Environment) -> bool {
+    let name = env.name(path);
+    let root = env.name(root);
+    let root = root.trim_end_matches(['/', '\\']);
+    owner_backup(&name).is_some_and(|owner| owner.len() <= root.len())
 }
 
 /// The files of the tasks of `files` that walking `given` (the paths named
@@ -84,7 +104,15 @@ pub fn task_context(
         shallow.extend(folders.shallow.into_iter().filter(|d| !covered(d)));
     }
     let list = |set: BTreeSet<PathBuf>| set.into_iter().collect::<Vec<_>>();
-    let mut out = discover_folders_in(env, &list(deep), &list(shallow), excluded.clone());
+    let mut out = discover_folders_in(env, &[], &list(shallow), excluded.clone());
+    // A backup's files, not those of the backups kept inside it.
+    for root in deep {
+        let mut found = discover_in(env, std::slice::from_ref(&root), excluded.clone(), None);
+        for list in [&mut found.files, &mut found.configs, &mut found.programs] {
+            list.retain(|p| of_backup(p, &root, env));
+        }
+        out.extend(found);
+    }
     // What cannot be walked here is not the run's problem: it was not named.
     out.errors.clear();
     out.warnings.clear();

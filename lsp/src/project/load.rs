@@ -143,20 +143,37 @@ fn add_context(
     asked: &HashSet<String>,
     keys: &BTreeSet<String>,
 ) {
-    let units: Vec<Unit> = context
+    // A backup's files all count: its tasks share persistents and load
+    // modules of its HOME/.
+    let backups: HashSet<&str> = asked
+        .iter()
+        .filter_map(|p| super::context::backup_of_file(p))
+        .collect();
+    let read: Vec<(String, Option<Unit>)> = context
         .files
         .par_iter()
         .filter_map(|p| {
             let path = env.name(p);
-            if asked.contains(&path) || !keys.contains(&workspace.task_key(&path)) {
+            let wanted = keys.contains(&workspace.task_key(&path))
+                || rapid_analyzer::layout::owner_backup(&path).is_some_and(|b| backups.contains(b));
+            if asked.contains(&path) || !wanted {
                 return None;
             }
-            let file = read_source(env, p).ok()?;
-            Some(Unit::new(path, file.text, None))
+            let unit = read_source(env, p)
+                .ok()
+                .map(|file| Unit::new(path.clone(), file.text, None));
+            Some((path, unit))
         })
         .collect();
-    for unit in units {
-        workspace.set_unit(unit);
+    for (path, unit) in read {
+        match unit {
+            Some(unit) => {
+                workspace.set_unit(unit);
+            }
+            // A module of the task that cannot be read leaves it incomplete,
+            // as when it is checked itself.
+            None => workspace.set_unreadable(&path),
+        }
     }
 }
 
