@@ -114,7 +114,7 @@ pub(crate) struct Cx<'t> {
     statement_context: Option<StatementContext>,
     /// "Did you mean" answers by folded name, for the current scope (cleared
     /// by [`Cx::scope_changed`]): an unresolved name tends to recur.
-    pub(crate) close_memo: HashMap<(Kind, String), Option<String>>,
+    pub(crate) close_memo: HashMap<(Kind, String), Option<(usize, String)>>,
     /// The module part of "did you mean", by module, kind and folded name.
     module_close_memo: HashMap<(usize, Kind, String), Option<(usize, String)>>,
     /// The first position of each unconfigured signal's diagnostic that a

@@ -7,10 +7,11 @@ use crate::task::{Item, Task};
 
 impl Cx<'_> {
     /// A visible name of the same kind within a small edit distance of
-    /// `name`: the first closest of the routine's data and parameters, then
-    /// the module's, then the task's globals. A suggestion of another kind
-    /// (a data type for a variable) would mislead more than help.
-    pub(crate) fn close_match(&mut self, name: &str, kind: Kind) -> Option<String> {
+    /// `name`, with that distance: the first closest of the routine's data
+    /// and parameters, then the module's, then the task's globals. A
+    /// suggestion of another kind (a data type for a variable) would mislead
+    /// more than help.
+    pub(crate) fn close_match(&mut self, name: &str, kind: Kind) -> Option<(usize, String)> {
         let key = fold(name);
         let limit = if chars(&key) <= 4 { 1 } else { 2 };
         let mut best = None;
@@ -52,7 +53,7 @@ impl Cx<'_> {
             keep_nearer(&mut best, found);
         }
         keep_nearer(&mut best, close_global(self.task, &key, limit, kind));
-        best.map(|(_, n)| n)
+        best
     }
 }
 
@@ -182,40 +183,50 @@ fn edit_distance_folded(key: &str, name: &str) -> usize {
     distance(&a, &b, |x, y| x == crate::names::fold_char(y))
 }
 
-/// Levenshtein distance of two sequences, or 3 when it is more than 2
-/// (callers only care about distances up to 2).
+/// The edit distance of two sequences (a character added, left out or
+/// changed, or two neighbours swapped, each one edit: the optimal string
+/// alignment distance), or 3 when it is more than 2 (callers only care
+/// about distances up to 2).
 fn distance<T: Copy>(a: &[T], b: &[T], eq: impl Fn(T, T) -> bool) -> usize {
-    const STACK: usize = 64;
     if a.len().abs_diff(b.len()) > 2 {
         return 3;
     }
-    let mut stack = [[0usize; STACK]; 2];
+    let width = b.len() + 1;
+    // Three rows: the one before the previous, the previous, this one (on
+    // the stack for names of usual length).
+    const STACK: usize = 3 * 64;
+    let mut stack = [0usize; STACK];
     let mut heap;
-    let (mut prev, mut cur): (&mut [usize], &mut [usize]) = if b.len() < STACK {
-        let [p, c] = &mut stack;
-        (&mut p[..=b.len()], &mut c[..=b.len()])
+    let rows: &mut [usize] = if 3 * width <= STACK {
+        &mut stack[..3 * width]
     } else {
-        heap = (vec![0; b.len() + 1], vec![0; b.len() + 1]);
-        (&mut heap.0, &mut heap.1)
+        heap = vec![0usize; 3 * width];
+        &mut heap
     };
-    for (j, p) in prev.iter_mut().enumerate() {
-        *p = j;
+    for (j, cell) in rows[width..2 * width].iter_mut().enumerate() {
+        *cell = j;
     }
     for (i, &ca) in a.iter().enumerate() {
+        let (before, rest) = rows.split_at_mut(width);
+        let (prev, cur) = rest.split_at_mut(width);
         cur[0] = i + 1;
         let mut row_min = cur[0];
         for (j, &cb) in b.iter().enumerate() {
             let cost = usize::from(!eq(ca, cb));
-            cur[j + 1] = (prev[j] + cost).min(prev[j + 1] + 1).min(cur[j] + 1);
-            row_min = row_min.min(cur[j + 1]);
+            let mut d = (prev[j] + cost).min(prev[j + 1] + 1).min(cur[j] + 1);
+            if i > 0 && j > 0 && eq(ca, b[j - 1]) && eq(a[i - 1], cb) {
+                d = d.min(before[j - 1] + 1);
+            }
+            cur[j + 1] = d;
+            row_min = row_min.min(d);
         }
         // The distance is at least the smallest value of any row.
         if row_min > 2 {
             return 3;
         }
-        std::mem::swap(&mut prev, &mut cur);
+        rows.rotate_left(width);
     }
-    prev[b.len()]
+    rows[2 * width - 1].min(3)
 }
 
 #[cfg(test)]
@@ -226,7 +237,9 @@ mod distance_tests {
             ("movel", "movel", 0),
             ("movel", "movej", 1),
             ("movel", "mvel", 1),
-            ("ptarget", "ptraget", 2),
+            ("ptarget", "ptraget", 1),
+            ("cuont", "count", 1),
+            ("ptarget", "tpraget", 2),
             ("abc", "abcdef", 3),
             ("", "ab", 2),
         ] {

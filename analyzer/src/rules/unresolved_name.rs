@@ -19,16 +19,23 @@ crate::declare_rule! {
     /// modules, in the built-in catalogue, or in the controller's configuration
     /// (signals from `EIO.cfg`, mechanical units from `MOC.cfg`, the `taskid`
     /// RobotWare declares for each task, such as `T_ROB1Id`, from `SYS.cfg` or the
-    /// backup's task folders). It may be a typing mistake, or it may be declared
-    /// in a module or a RobotWare option that is not part of the checked files; this is why it
-    /// is a warning, reported once per name with its other uses as related
-    /// locations (once per file in the editor, once per task in `rapid check`). In
-    /// a task of a complete controller backup (the backup has its `SYSPAR`, every
-    /// module of the task could be read, and every module `SYS.cfg` loads into the
-    /// task is there) nothing can be missing, and it is an error. In a module of a
-    /// controller's `HOME/` folder that no task here loads, the task it is loaded
-    /// into at run time is not among the checked files, and it is a note.
-    /// The message proposes close matches of the same kind when there are any.
+    /// backup's task folders). It is reported once per name with its other uses
+    /// as related locations (once per file in the editor, once per task in
+    /// `rapid check`), and the message proposes close matches of the same kind
+    /// when there are any. How sure the finding is decides its severity:
+    ///
+    /// - In a task of a complete controller backup (the backup has its `SYSPAR`,
+    ///   every module of the task could be read, and every module `SYS.cfg` loads
+    ///   into the task is there) nothing can be missing: an error.
+    /// - Anywhere else the name may be declared in a module, station data or a
+    ///   RobotWare option that the checked files do not hold (a partial backup, a
+    ///   repository of program modules): a note. When it is one edit (a letter
+    ///   added, left out or changed) away from a declared name of the same kind,
+    ///   it is more likely a typing mistake: a warning that says which name was
+    ///   meant.
+    /// - In a module of a controller's `HOME/` folder that no task here loads,
+    ///   the task it is loaded into at run time is not among the checked files:
+    ///   a note, always.
     ///
     /// ### Why
     /// A module that uses an undeclared name fails to link when it is loaded on the
@@ -166,12 +173,18 @@ impl crate::check::Cx<'_> {
                 close
             }
         };
-        if let Some(close) = close {
+        if let Some((_, close)) = &close {
             message.push_str(&format!("; did you mean `{close}`?"));
         } else if what == "data" && self.task.signals.is_none() {
             message.push_str(" (if it is an I/O signal, give the controller's EIO.cfg)");
         }
         let mut d = self.unresolved_diagnostic(range, message);
+        // Outside a complete backup, a name one edit from a declared one is
+        // likely a typing mistake; any other may be declared elsewhere.
+        let typo = close.as_ref().is_some_and(|(distance, _)| *distance == 1);
+        if !self.task.complete && !self.task.loaded_elsewhere && !typo {
+            d.severity = crate::diagnostic::Severity::Info;
+        }
         if kind == Kind::Data {
             d = d.with_fix(pending_declare_fix());
         }
