@@ -110,6 +110,40 @@ impl Unit {
         &self.cuts
     }
 
+    /// Is this a module of the RobotWare installation that a repository
+    /// happens to hold: RobotWare's own system modules (`BASE.sys`,
+    /// `base_shared.sys`, `basefun.sys`, system modules that RobotWare marks
+    /// `NOSTEPIN`), or a `user.sys` as RobotWare installs it (the registers
+    /// `reg1` to `reg5` and `clock1`, nothing of the user's)? Its
+    /// declarations count; its code is RobotWare's, not the user's, so only
+    /// its syntax errors are reported.
+    pub fn is_robotware(&self) -> bool {
+        const SYSTEM: [&str; 3] = ["base.sys", "base_shared.sys", "basefun.sys"];
+        const USER_DEFAULTS: [&str; 6] = ["reg1", "reg2", "reg3", "reg4", "reg5", "clock1"];
+        let file = self
+            .path
+            .rsplit(['/', '\\'])
+            .next()
+            .unwrap_or_default()
+            .to_ascii_lowercase();
+        let modules = &self.items.modules;
+        if modules.is_empty() || !modules.iter().all(|m| m.attributes.sysmodule) {
+            return false;
+        }
+        if SYSTEM.contains(&file.as_str()) {
+            return modules.iter().all(|m| m.attributes.nostepin);
+        }
+        file == "user.sys"
+            && modules.iter().all(|m| {
+                m.routines.is_empty()
+                    && m.records.is_empty()
+                    && m.aliases.is_empty()
+                    && m.data
+                        .iter()
+                        .all(|d| USER_DEFAULTS.iter().any(|n| crate::names::same(n, &d.name)))
+            })
+    }
+
     fn empty(path: String, text: String, tree: Option<Tree>) -> Unit {
         match tree {
             Some(tree) => Unit {

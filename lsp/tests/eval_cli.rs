@@ -284,3 +284,30 @@ fn an_expression_nested_too_deep_is_refused_with_a_message() {
     assert_eq!(code, Some(2), "{out}{err}");
     assert!(err.contains("nest"), "{err}");
 }
+
+/// The sizes of a `VAR` or `PERS` array are its declaration's: `Dim` of it
+/// is known before the program runs (a name of Latin-1 letters too).
+#[test]
+fn dim_of_a_variable_array_is_its_declared_size() {
+    let dir = std::env::temp_dir().join(format!("rapid-eval-dim-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("folder");
+    let module = dir.join("Grid.mod");
+    std::fs::write(
+        &module,
+        "MODULE Grid\n  CONST num nRows := 4;\n  VAR num grid{nRows, 3};\n  PERS num pÖl{2} := [1, 2];\nENDMODULE\n",
+    )
+    .expect("written");
+    let file = module.to_string_lossy();
+    for (expr, want) in [("Dim(grid, 1) * Dim(grid, 2)", "12"), ("Dim(PÖL, 1)", "2")] {
+        let (code, out, err) = eval(&["--file", &file, expr]);
+        assert_eq!(
+            (code, out.trim(), err.as_str()),
+            (Some(0), want, ""),
+            "{expr}"
+        );
+    }
+    let (code, _, err) = eval(&["--file", &file, "Dim(grid, 3)"]);
+    assert_eq!(code, Some(1));
+    assert!(err.contains("ERR_ILLDIM"), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

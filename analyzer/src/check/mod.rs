@@ -58,6 +58,10 @@ pub fn check_unit_cached(
     let Some(u) = task.units.get(unit) else {
         return (Vec::new(), StmtCache::default());
     };
+    if u.is_robotware() {
+        // RobotWare's code: not the user's to fix.
+        return (Vec::new(), cache);
+    }
     let mut cx = Cx::new(task, unit, u);
     cx.selection = selection.clone();
     cx.cache = cache;

@@ -133,6 +133,58 @@ pub fn is_function(name: &str) -> bool {
 }
 
 #[inline(never)]
+/// `Dim` of a `VAR` or `PERS` array: its sizes are its declaration's,
+/// known before the program runs though its values are not. `None` when
+/// the call is not that (another function, an expression, a size that is
+/// not known), to be evaluated as any call.
+fn declared_dim(
+    ctx: &mut Ctx,
+    name: &str,
+    args: &[Arg],
+    env: &dyn Env,
+) -> Option<Result<Value, EvalError>> {
+    if !name.eq_ignore_ascii_case("Dim") {
+        return None;
+    }
+    let named = |p: &str| {
+        args.iter()
+            .find(|a| a.name.as_deref().is_some_and(|n| n.eq_ignore_ascii_case(p)))
+    };
+    let mut positional = args.iter().filter(|a| a.name.is_none());
+    let array = named("ArrPar").or_else(|| positional.next())?;
+    let dim_no = named("DimNo").or_else(|| positional.next())?;
+    let Some(crate::Expr::Name(array)) = &array.value else {
+        return None;
+    };
+    let crate::env::Lookup::Variable { ty, .. } = env.lookup(array) else {
+        return None;
+    };
+    if ty.dims.is_empty() {
+        return None;
+    }
+    let d = match ctx.eval(
+        dim_no.value.as_ref()?,
+        Some(&crate::Type::named("num")),
+        env,
+    ) {
+        Ok(v) => v.as_f64()?,
+        Err(e) => return Some(Err(e)),
+    };
+    if d.fract() != 0.0 || d < 1.0 || d > ty.dims.len() as f64 {
+        return Some(err(
+            ErrorCode::IllDim,
+            format!(
+                "Dim: the array has no dimension {}",
+                crate::value::format_g(d, 6)
+            ),
+        ));
+    }
+    match ty.dims[d as usize - 1] {
+        0 => None,
+        size => Some(Ok(Value::Num(size as f32))),
+    }
+}
+
 pub(crate) fn call(
     ctx: &mut Ctx,
     name: &str,
@@ -151,6 +203,9 @@ pub(crate) fn call(
     let Some(routine) = env.catalogue().function(name) else {
         return unknown();
     };
+    if let Some(size) = declared_dim(ctx, name, args, env) {
+        return size;
+    }
     let a = args::bind(ctx, name, &routine.params, args, env)?;
     match f {
         Impl::Pure(f) => f(&a),

@@ -172,3 +172,37 @@ fn every_implementation_reads_its_catalogue_signature() {
         }
     }
 }
+
+/// The sizes of a `VAR` or `PERS` array are its declaration's: `Dim` of it
+/// is known though its values are not.
+#[test]
+fn dim_of_a_declared_array_is_known() {
+    use crate::env::{MapEnv, VarKind};
+    use crate::{ErrorCode, Type, Value};
+    let mut env = MapEnv::new();
+    env.variable("grid", VarKind::Var, Type::array("num", vec![4, 3]), None)
+        .variable("open", VarKind::Pers, Type::array("num", vec![0]), None)
+        .variable("n", VarKind::Var, Type::named("num"), None);
+    let dim = |array: &str, k: &str| {
+        let call = Expr::Call {
+            name: "Dim".into(),
+            args: vec![
+                Arg::positional(Expr::Name(array.into())),
+                Arg::positional(Expr::Num(k.into())),
+            ],
+        };
+        crate::eval(&call, &env)
+    };
+    assert_eq!(dim("grid", "1"), Ok(Value::Num(4.0)));
+    assert_eq!(dim("GRID", "2"), Ok(Value::Num(3.0)));
+    assert_eq!(dim("grid", "3").map_err(|e| e.code), Err(ErrorCode::IllDim));
+    // a size that is not known, or no array: as any variable
+    assert_eq!(
+        dim("open", "1").map_err(|e| e.code),
+        Err(ErrorCode::NotConstant)
+    );
+    assert_eq!(
+        dim("n", "1").map_err(|e| e.code),
+        Err(ErrorCode::NotConstant)
+    );
+}
