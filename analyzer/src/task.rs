@@ -307,6 +307,10 @@ pub struct Task {
     /// (empty outside a backup's `RAPID/TASKn` folders): the controller
     /// shares them, so their types must agree. Set with [`Task::set_shared`].
     pub shared: Arc<SharedMap>,
+    /// How the tasks of the same controller meet (MultiMove): their
+    /// names and synchronisation points (empty outside a backup). Set with
+    /// [`Task::set_syncs`].
+    pub(crate) syncs: Arc<crate::sema::sync::ControllerSyncs>,
     /// The catalogue as this task's controller has it (its RobotWare
     /// version and options; the union of every version when unknown). Set
     /// with [`Task::set_catalogue`].
@@ -357,6 +361,8 @@ struct InterfaceInputs {
     robot: Option<String>,
     /// The hash [`shared_persistents`] gave.
     shared: u64,
+    /// The hash of [`Task::syncs`].
+    syncs: u64,
 }
 
 fn sorted<T: Ord>(items: impl Iterator<Item = T>) -> Vec<T> {
@@ -393,6 +399,7 @@ impl Task {
             inputs: self.inputs.clone(),
             constants: self.constants,
             shared: self.shared.clone(),
+            syncs: self.syncs.clone(),
             catalogue: self.catalogue,
             close_names: Default::default(),
             grouping: self.grouping,
@@ -410,6 +417,15 @@ impl Task {
     pub fn set_shared(&mut self, shared: Arc<SharedMap>, hash: u64) {
         self.inputs.shared = hash;
         self.shared = shared;
+        self.interface = hash_of(&self.inputs);
+    }
+
+    /// Sets [`Task::syncs`] (with its hash): the interface hash covers
+    /// them, so cached results are dropped when another task's
+    /// synchronisation changes.
+    pub(crate) fn set_syncs(&mut self, syncs: Arc<crate::sema::sync::ControllerSyncs>, hash: u64) {
+        self.inputs.syncs = hash;
+        self.syncs = syncs;
         self.interface = hash_of(&self.inputs);
     }
 
@@ -458,6 +474,7 @@ impl Task {
             inputs,
             constants: hash_of(&constants),
             shared: Arc::default(),
+            syncs: Arc::default(),
             catalogue: crate::catalogue::base(),
             close_names: Default::default(),
             grouping: Grouping::Folder,

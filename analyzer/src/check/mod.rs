@@ -14,6 +14,7 @@ mod decls;
 pub(crate) mod exprs;
 mod file_wide;
 pub(crate) mod motion;
+pub(crate) mod multimove;
 pub mod once;
 mod place;
 mod routine;

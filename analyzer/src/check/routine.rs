@@ -124,6 +124,7 @@ pub(super) fn check_routine<'t>(cx: &mut Cx<'t>, node: Node<'t>, decl: &'t Routi
         }
         cx.report_with(d);
     }
+    super::multimove::check(cx, decl);
     check_unused_in_routine(cx, decl);
     cx.routine = None;
     cx.scope_changed();

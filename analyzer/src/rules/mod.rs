@@ -37,6 +37,7 @@ pub mod local_not_visible;
 pub mod missing_alternative;
 pub mod missing_initializer;
 pub mod missing_return;
+pub mod missing_sync_id;
 pub mod missing_token;
 pub mod name_too_long;
 pub mod nesting_too_deep;
@@ -49,6 +50,9 @@ pub mod shadowed_name;
 pub mod shared_persistent_mismatch;
 pub mod string_too_long;
 pub mod switch_argument;
+pub mod sync_move_count;
+pub mod sync_task_mismatch;
+pub mod sync_without_stop_point;
 pub mod syntax_error;
 pub mod target_out_of_reach;
 pub mod too_many_dimensions;
@@ -57,6 +61,7 @@ pub mod unconfigured_signal;
 pub mod unknown_argument;
 pub mod unknown_component;
 pub mod unknown_label;
+pub mod unpaired_sync_move;
 pub mod unreachable_code;
 pub mod unresolved_name;
 pub mod unused_data;
@@ -105,6 +110,7 @@ pub static RULES: &[&Rule] = &[
     &incomplete_code::RULE,
     &constant_error::RULE,
     &persistent_in_routine::RULE,
+    &missing_sync_id::RULE,
     &target_out_of_reach::RULE,
     &joint_out_of_range::RULE,
     &option_routine::RULE,
@@ -119,8 +125,12 @@ pub static RULES: &[&Rule] = &[
     &shadowed_name::RULE,
     &float_equality::RULE,
     &duplicate_module::RULE,
-    &configuration_mismatch::RULE,
     &label_names_routine::RULE,
+    &unpaired_sync_move::RULE,
+    &sync_without_stop_point::RULE,
+    &sync_task_mismatch::RULE,
+    &sync_move_count::RULE,
+    &configuration_mismatch::RULE,
 ];
 
 /// The rules a check runs. A rule switched off is not reported, and the

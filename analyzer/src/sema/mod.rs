@@ -5,4 +5,5 @@ pub(crate) mod def;
 pub(crate) mod labels;
 pub(crate) mod scope;
 pub(crate) mod signature;
+pub(crate) mod sync;
 pub(crate) mod typing;

@@ -213,6 +213,12 @@ impl Workspace {
         names
     }
 
+    /// The tasks of backup `root` by their folded names ([`Workspace::task_names`]).
+    pub(super) fn task_names_of(&self, root: &str) -> HashMap<String, String> {
+        let keys = self.backup_task_keys(root);
+        self.task_names(root, keys.iter())
+    }
+
     /// The keys of the tasks of backup `root` that a `SYS.cfg` entry loads
     /// its module into.
     fn entry_tasks(

@@ -45,7 +45,7 @@ pub struct Workspace {
     unreadable: std::collections::BTreeSet<String>,
     /// The shared persistents of each controller (backup), by the
     /// controller's key ([`controller_of`]), with their hash.
-    controllers: HashMap<String, (Arc<SharedMap>, u64)>,
+    controllers: HashMap<String, Controller>,
     /// Each file's last check ([`checks`]).
     checked: HashMap<String, checks::Checked>,
     /// See [`Workspace::revision`].
@@ -441,29 +441,55 @@ impl Workspace {
         task.set_controller_names(mecunits, self.task_ids_for(&key));
         task.set_robot(self.robot_for(&key));
         if let Some(controller) = controller_of(&key).filter(|_| grouping == Grouping::Backup) {
-            let (shared, hash) = match self.controllers.get(controller) {
+            let c = match self.controllers.get(controller) {
                 Some(c) => c.clone(),
                 None => {
-                    // Only this controller's tasks: not a backup kept in
-                    // one of its folders.
-                    let (map, hash) = shared_persistents(
-                        self.units
-                            .values()
-                            .filter(|u| {
-                                under(&u.path, controller)
-                                    && controller_of(&crate::layout::task_key(&u.path))
-                                        == Some(controller)
-                            })
-                            .chain(&self.extras),
-                    );
-                    let c = (Arc::new(map), hash);
+                    let c = self.controller_data(controller);
                     self.controllers.insert(controller.to_owned(), c.clone());
                     c
                 }
             };
-            task.set_shared(shared, hash);
+            task.set_shared(c.shared, c.shared_hash);
+            task.set_syncs(c.syncs, c.syncs_hash);
         }
         task
+    }
+
+    /// What the tasks of `controller` (a backup's `RAPID/` folder) share:
+    /// their persistents and their synchronisation points. Only this
+    /// controller's tasks: not a backup kept in one of its folders.
+    fn controller_data(&self, controller: &str) -> Controller {
+        let mut by_task: BTreeMap<String, Vec<&Arc<Unit>>> = BTreeMap::new();
+        for u in self.units.values().filter(|u| under(&u.path, controller)) {
+            let key = crate::layout::task_key(&u.path);
+            if controller_of(&key) == Some(controller) {
+                by_task.entry(key).or_default().push(u);
+            }
+        }
+        let (map, shared_hash) =
+            shared_persistents(by_task.values().flatten().copied().chain(&self.extras));
+        let names = crate::layout::backup_root(controller)
+            .map(|root| self.task_names_of(root))
+            .unwrap_or_default();
+        let mut syncs = crate::sema::sync::ControllerSyncs::default();
+        for (key, units) in &by_task {
+            let mut own: Vec<String> = names
+                .iter()
+                .filter(|(_, k)| *k == key)
+                .map(|(n, _)| n.clone())
+                .collect();
+            own.sort();
+            let mut task = crate::sema::sync::task_syncs(units.iter().copied());
+            task.complete = self.is_complete(key);
+            syncs.tasks.push((key.clone(), own, task));
+        }
+        let syncs_hash = crate::items::hash_of(&syncs);
+        Controller {
+            shared: Arc::new(map),
+            shared_hash,
+            syncs: Arc::new(syncs),
+            syncs_hash,
+        }
     }
 
     /// Every unit of the workspace with the task it is checked in (its
@@ -585,6 +611,15 @@ impl Workspace {
         }
         (signals, mecunits)
     }
+}
+
+/// What the tasks of one controller share ([`Workspace::controller_data`]).
+#[derive(Clone)]
+struct Controller {
+    shared: Arc<SharedMap>,
+    shared_hash: u64,
+    syncs: Arc<crate::sema::sync::ControllerSyncs>,
+    syncs_hash: u64,
 }
 
 /// Do two files hold modules of the same names, in order?
