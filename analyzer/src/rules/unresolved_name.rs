@@ -30,9 +30,10 @@ crate::declare_rule! {
     /// - Anywhere else the name may be declared in a module, station data or a
     ///   RobotWare option that the checked files do not hold (a partial backup, a
     ///   repository of program modules): a note. When it is one edit (a letter
-    ///   added, left out or changed) away from a declared name of the same kind,
-    ///   it is more likely a typing mistake: a warning that says which name was
-    ///   meant.
+    ///   added, left out, changed, or two swapped) away from a declared name of
+    ///   the same kind, it is more likely a typing mistake: a warning that says
+    ///   which name was meant. Names that differ only in digits (`p10`, `p20`)
+    ///   are a numbered family, not a typing mistake.
     /// - In a module of a controller's `HOME/` folder that no task here loads,
     ///   the task it is loaded into at run time is not among the checked files:
     ///   a note, always.
@@ -153,6 +154,17 @@ fn infer_type(task: &Task, unit: usize, range: Range<usize>) -> Option<String> {
     }
 }
 
+/// Are the two names the same once their digits are left out?
+fn same_but_digits(a: &str, b: &str) -> bool {
+    let letters = |s: &str| {
+        s.chars()
+            .filter(|c| !c.is_ascii_digit())
+            .map(crate::names::fold_char)
+            .collect::<String>()
+    };
+    letters(a) == letters(b)
+}
+
 /// Reporting an unresolved name: the checker calls these where its
 /// resolver finds nothing.
 impl crate::check::Cx<'_> {
@@ -180,8 +192,12 @@ impl crate::check::Cx<'_> {
         }
         let mut d = self.unresolved_diagnostic(range, message);
         // Outside a complete backup, a name one edit from a declared one is
-        // likely a typing mistake; any other may be declared elsewhere.
-        let typo = close.as_ref().is_some_and(|(distance, _)| *distance == 1);
+        // likely a typing mistake; any other may be declared elsewhere. Names
+        // that differ only in their digits are a numbered family (`p10`,
+        // `p20`; `id_A073_Start`, `id_A083_Start`), not a slip of the keys.
+        let typo = close
+            .as_ref()
+            .is_some_and(|(distance, near)| *distance == 1 && !same_but_digits(name, near));
         if !self.task.complete && !self.task.loaded_elsewhere && !typo {
             d.severity = crate::diagnostic::Severity::Info;
         }
