@@ -148,10 +148,16 @@ fn is_controller_home(parts: &[&str], i: usize) -> bool {
 
 /// The backup folder of a configuration file in its `SYSPAR/` folder.
 pub fn syspar_root(path: &str) -> Option<&str> {
+    root_of_folder(path, "syspar")
+}
+
+/// The folder holding the folder `name` (any case) that holds the file
+/// `path`.
+fn root_of_folder<'p>(path: &'p str, name: &str) -> Option<&'p str> {
     let normal = path.replace('\\', "/");
     let (dir, _) = normal.rsplit_once('/')?;
     let (parent, last) = dir.rsplit_once('/').unwrap_or(("", dir));
-    if !last.eq_ignore_ascii_case("syspar") {
+    if !last.eq_ignore_ascii_case(name) {
         return None;
     }
     path.get(..parent.len())
@@ -170,13 +176,7 @@ pub fn owner_backup(path: &str) -> Option<&str> {
 
 /// The backup folder of a file in its `BACKINFO/` folder.
 pub fn backinfo_root(path: &str) -> Option<&str> {
-    let normal = path.replace('\\', "/");
-    let (dir, _) = normal.rsplit_once('/')?;
-    let (parent, last) = dir.rsplit_once('/').unwrap_or(("", dir));
-    if !last.eq_ignore_ascii_case("backinfo") {
-        return None;
-    }
-    path.get(..parent.len())
+    root_of_folder(path, "backinfo")
 }
 
 #[cfg(test)]

@@ -2,7 +2,6 @@ use std::ops::Range;
 
 use crate::check::Cx;
 use crate::diagnostic::{Diagnostic, Related};
-use crate::names::same;
 
 crate::declare_rule! {
     /// Tasks that make different numbers of `\ID` moves between the same sync points.
@@ -60,13 +59,7 @@ pub(crate) fn check(cx: &mut Cx<'_>, within: Range<usize>) {
         else {
             continue;
         };
-        for task in list
-            .iter()
-            .filter(|t| !own_names.iter().any(|n| same(n, t)))
-        {
-            let Some((_, _, other)) = syncs.named(task) else {
-                continue;
-            };
+        for (task, other) in syncs.partners(own_names, list) {
             let theirs: Vec<_> = other
                 .sections
                 .iter()

@@ -47,13 +47,7 @@ pub(crate) fn check(cx: &mut Cx<'_>, within: Range<usize>) {
         let Some(list) = own.list(&p.list) else {
             continue;
         };
-        for task in list
-            .iter()
-            .filter(|t| !own_names.iter().any(|n| same(n, t)))
-        {
-            let Some((_, _, other)) = syncs.named(task) else {
-                continue;
-            };
+        for (task, other) in syncs.partners(own_names, list) {
             let theirs: Vec<&SyncPoint> = other
                 .points
                 .iter()

@@ -340,6 +340,18 @@ impl ControllerSyncs {
             .find(|(_, names, _)| names.iter().any(|n| same(n, name)))
     }
 
+    /// The other tasks of the task list `list` (seen from a task of the
+    /// names `own`) that are here, with their names as the list writes them.
+    pub(crate) fn partners<'a>(
+        &'a self,
+        own: &'a [String],
+        list: &'a [String],
+    ) -> impl Iterator<Item = (&'a String, &'a TaskSyncs)> + 'a {
+        list.iter()
+            .filter(|t| !own.iter().any(|n| same(n, t)))
+            .filter_map(|t| Some((t, &self.named(t)?.2)))
+    }
+
     /// The task of key `key`.
     pub(crate) fn of_key(&self, key: &str) -> Option<&(String, Vec<String>, TaskSyncs)> {
         self.tasks.iter().find(|(k, _, _)| k == key)
