@@ -7,6 +7,7 @@ use std::path::PathBuf;
 
 use rapid_analyzer::catalogue::Origin;
 use rapid_analyzer::items::{RoutineKind, Scope};
+use rapid_analyzer::names::{fold, same};
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
@@ -349,7 +350,7 @@ pub fn list_symbols(
         params
             .name
             .as_ref()
-            .is_none_or(|w| n.to_ascii_lowercase().contains(&w.to_ascii_lowercase()))
+            .is_none_or(|w| fold(n).contains(&fold(w)))
     };
     let mut tasks = Vec::new();
     for task in &found.tasks {
@@ -406,7 +407,7 @@ pub fn list_symbols(
                     let type_ok = params
                         .ty
                         .as_ref()
-                        .is_none_or(|w| w.eq_ignore_ascii_case(ty));
+                        .is_none_or(|w| same(w, ty));
                     if !type_ok || !name_ok(&d.name) {
                         continue;
                     }
@@ -445,7 +446,7 @@ pub fn list_symbols(
                         && params
                             .ty
                             .as_ref()
-                            .is_none_or(|w| w.eq_ignore_ascii_case(ty))
+                            .is_none_or(|w| same(w, ty))
                 })
                 .collect();
             list.sort();

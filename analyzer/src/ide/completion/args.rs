@@ -9,7 +9,7 @@ use super::super::context::{Before, CallCx, call_at, statement_start};
 use super::super::signature::active;
 use super::super::{CompletionItem, CompletionKind};
 use super::{Want, assignment_target, expression_items};
-use crate::names::{fold, same};
+use crate::names::{fold, is_name_byte_at, name_len, same};
 use crate::sema::scope::Scope;
 use crate::sema::signature::Signature;
 use crate::ty::Ty;
@@ -168,22 +168,32 @@ fn use_counts(text: &str) -> HashMap<String, usize> {
                 }
                 i += 1;
             }
-            c if c.is_ascii_alphabetic() => {
-                let start = i;
-                while i < bytes.len() && (bytes[i].is_ascii_alphanumeric() || bytes[i] == b'_') {
-                    i += 1;
-                }
-                if let Some(word) = text.get(start..i) {
-                    *out.entry(fold(word)).or_default() += 1;
-                }
-            }
             c if c.is_ascii_digit() => {
-                while i < bytes.len() && (bytes[i].is_ascii_alphanumeric() || bytes[i] == b'_') {
+                while is_name_byte_at(bytes, i) {
                     i += 1;
                 }
             }
-            _ => i += 1,
+            _ => match text.get(i..).map(name_len) {
+                Some(n) if n > 0 => {
+                    *out.entry(fold(&text[i..i + n])).or_default() += 1;
+                    i += n;
+                }
+                _ => i += 1,
+            },
         }
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::use_counts;
+
+    #[test]
+    fn names_with_latin1_letters_are_counted_whole() {
+        let uses = use_counts("MoveL pÖlç, v100;\n! pÖlç\nx := \"pÖlç\" + PÖLÇ + 2pÖlç;");
+        assert_eq!(uses.get("pölç"), Some(&2));
+        assert_eq!(uses.get("p"), None);
+        assert_eq!(uses.get("movel"), Some(&1));
+    }
 }
