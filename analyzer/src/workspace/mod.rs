@@ -580,7 +580,7 @@ impl Workspace {
         let by_place = self
             .configs
             .iter()
-            .filter(|(path, _)| key.starts_with(config_root(path)))
+            .filter(|(path, _)| config_applies(path, key))
             .map(|(_, config)| config);
         let mocs: Vec<&crate::robot::MocRobot> = self
             .extra_configs

@@ -7,6 +7,18 @@ fn configuration_applies_below_its_root() {
 }
 
 #[test]
+fn a_backups_robot_is_its_own() {
+    let moc = "MOC:CFG_1.0:6:0::\n#\nROBOT:\n\n      -name \"ROB_1\" -use_robot_type \"ROB1_120_0.58_3\"\n";
+    let mut ws = Workspace::new();
+    ws.set_config("b1/SYSPAR/MOC.cfg", moc);
+    let robot = |key: &str| ws.robot_for(key).ok().flatten().is_some();
+    assert!(robot("b1/RAPID/T_ROB1"));
+    // A backup named like a prefix, or one kept in b1's HOME/, has its own.
+    assert!(!robot("b10/RAPID/T_ROB1"));
+    assert!(!robot("b1/HOME/old/b2/RAPID/T_ROB1"));
+}
+
+#[test]
 fn an_edit_in_one_routine_rechecks_only_its_changed_statements() {
     let mut body = String::new();
     for i in 0..200 {

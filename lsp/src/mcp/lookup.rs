@@ -404,10 +404,7 @@ pub fn list_symbols(
                 }
                 for d in m.data.iter().filter(|_| wants("data")) {
                     let ty = d.ty.as_ref().map_or("", |t| t.name.as_str());
-                    let type_ok = params
-                        .ty
-                        .as_ref()
-                        .is_none_or(|w| same(w, ty));
+                    let type_ok = params.ty.as_ref().is_none_or(|w| same(w, ty));
                     if !type_ok || !name_ok(&d.name) {
                         continue;
                     }
@@ -441,13 +438,7 @@ pub fn list_symbols(
         {
             let mut list: Vec<(&String, &&str)> = signals
                 .iter()
-                .filter(|(n, ty)| {
-                    name_ok(n)
-                        && params
-                            .ty
-                            .as_ref()
-                            .is_none_or(|w| same(w, ty))
-                })
+                .filter(|(n, ty)| name_ok(n) && params.ty.as_ref().is_none_or(|w| same(w, ty)))
                 .collect();
             list.sort();
             if list.len() > limit {
