@@ -18,6 +18,10 @@ use crate::names::{NameMap, fold};
 use crate::ty::{Types, UserType};
 use crate::unit_tree::UnitTree;
 
+mod view;
+use view::View;
+pub use view::{Clashes, NameIndex};
+
 /// One parsed file with its item tree. Immutable once built: an edit makes
 /// a new unit (reusing the old tree for an incremental parse).
 #[derive(Debug)]
@@ -232,29 +236,37 @@ pub enum Item {
 }
 
 /// The modules of one task and the index of their names.
-#[derive(Debug)]
+///
+/// A task is cheap to clone: its units, name index and configuration are
+/// shared. A view of a group ([`Task::view`]) shares them with the group
+/// and leaves out the units that clash with its owner when names are
+/// looked up.
+#[derive(Clone, Debug)]
 pub struct Task {
     pub key: String,
-    pub units: Vec<Arc<Unit>>,
+    /// Every unit of the group, a view's left-out ones included (so that
+    /// [`ItemRef::unit`] indexes the same units in the group and its
+    /// views); [`Task::live_units`] leaves those out.
+    pub units: Arc<[Arc<Unit>]>,
     /// Global (non-`LOCAL`) declarations of every module, by folded name.
-    pub globals: NameMap<Vec<ItemRef>>,
+    pub globals: NameIndex,
     /// `LOCAL` declarations, by folded name (to explain why a name is not
     /// visible from another module).
-    pub locals: NameMap<Vec<ItemRef>>,
+    pub locals: NameIndex,
     /// Signals configured for this task (`EIO.cfg`): folded name to data
     /// type (`signaldi`...); `None` when no configuration was given.
-    pub signals: Option<Signals>,
+    pub signals: Option<Arc<Signals>>,
     /// Mechanical units configured for this task (`MOC.cfg`), folded; they
     /// are `mecunit` data.
-    pub mecunits: std::collections::HashSet<String>,
+    pub mecunits: Arc<HashSet<String>>,
     /// The `taskid` data RobotWare declares for each task of the controller
     /// (the task's name and `Id`: `T_ROB1Id`), folded: from `SYS.cfg`'s
     /// tasks and the backup's task folders named after their task.
-    pub task_ids: std::collections::HashSet<String>,
+    pub task_ids: Arc<HashSet<String>>,
     /// The hash of what the task's files and controller declare
     /// ([`InterfaceInputs`]), for cache invalidation.
     pub interface: u64,
-    inputs: InterfaceInputs,
+    inputs: Arc<InterfaceInputs>,
     /// The hash of every unit's [`Unit::constants`], in order.
     pub constants: u64,
     /// The system-global persistents (`PERS`, neither `TASK` nor `LOCAL`)
@@ -268,7 +280,7 @@ pub struct Task {
     /// with [`Task::set_catalogue`].
     pub catalogue: &'static crate::catalogue::Catalogue,
     /// Memo of "did you mean" suggestions among the globals, by folded name.
-    pub(crate) close_names: std::sync::Mutex<HashMap<String, Option<(usize, String)>>>,
+    pub(crate) close_names: Arc<std::sync::Mutex<HashMap<String, Option<(usize, String)>>>>,
     /// How the modules were grouped (set by the workspace).
     pub grouping: Grouping,
     /// A task of a real controller backup (one with its `SYSPAR`) whose
@@ -281,17 +293,12 @@ pub struct Task {
     /// unresolved name is a note, not a warning).
     pub loaded_elsewhere: bool,
     /// A view made for one unit (its index): the task as that unit sees it,
-    /// without the modules that cannot be loaded with it ([`Task::excluded`]).
-    /// `None` for a whole group.
+    /// without the modules that cannot be loaded with it
+    /// ([`Task::left_out`]). `None` for a whole group.
     pub owner: Option<usize>,
-    /// In a view, the modules of the group left out because they clash
-    /// with the owner (another version of it): each with its file and its
-    /// module names and their ranges.
-    pub excluded: Vec<Excluded>,
-    /// In a whole group, the units that clash with others, with the units
-    /// each clashes with: they are checked in views of their own, not in
-    /// this task.
-    pub clashing: HashMap<usize, Vec<usize>>,
+    /// The units of the group that clash with others: each is checked in
+    /// a view of its own, which leaves out the units it clashes with.
+    pub clashes: Arc<Clashes>,
 }
 
 /// What [`Task::interface`] is the hash of: what each file declares for
@@ -319,14 +326,6 @@ fn sorted<T: Ord>(items: impl Iterator<Item = T>) -> Vec<T> {
     out
 }
 
-/// A module file that a view of a task leaves out.
-#[derive(Clone, Debug)]
-pub struct Excluded {
-    pub path: String,
-    /// The names of its modules, as declared, with their name ranges.
-    pub modules: Vec<(String, Range<usize>)>,
-}
-
 impl Task {
     /// This task with `units` in place of its own: the same files in the
     /// same order (their items are what the name index points at), e.g.
@@ -334,33 +333,57 @@ impl Task {
     /// configuration, catalogue view, grouping, view, keys) is kept.
     pub fn with_units(&self, units: Vec<Arc<Unit>>) -> Task {
         Task {
-            key: self.key.clone(),
-            units,
-            globals: self.globals.clone(),
-            locals: self.locals.clone(),
-            signals: self.signals.clone(),
-            mecunits: self.mecunits.clone(),
-            task_ids: self.task_ids.clone(),
-            interface: self.interface,
-            inputs: self.inputs.clone(),
-            constants: self.constants,
-            shared: self.shared.clone(),
-            catalogue: self.catalogue,
+            units: units.into(),
             close_names: Default::default(),
-            grouping: self.grouping,
-            complete: self.complete,
-            loaded_elsewhere: self.loaded_elsewhere,
-            owner: self.owner,
-            excluded: self.excluded.clone(),
-            clashing: self.clashing.clone(),
+            ..self.clone()
         }
+    }
+
+    /// The view of this group for its unit `owner`: the same task without
+    /// the units that clash with `owner` ([`Task::clashes`]), sharing the
+    /// group's units and index.
+    pub fn view(&self, owner: usize) -> Task {
+        let view = Some(View {
+            owner,
+            clashes: self.clashes.clone(),
+        });
+        Task {
+            globals: self.globals.seen_by(view.clone()),
+            locals: self.locals.seen_by(view),
+            owner: Some(owner),
+            close_names: Default::default(),
+            ..self.clone()
+        }
+    }
+
+    /// Does this task (a view) leave unit `u` out?
+    pub fn hides(&self, u: usize) -> bool {
+        self.owner.is_some_and(|o| self.clashes.clash(o, u))
+    }
+
+    /// The units this task sees (all but those a view leaves out), with
+    /// their indexes.
+    pub fn live_units(&self) -> impl Iterator<Item = (usize, &Arc<Unit>)> {
+        self.units
+            .iter()
+            .enumerate()
+            .filter(|(i, _)| !self.hides(*i))
+    }
+
+    /// The units a view leaves out (none for a group).
+    pub fn left_out(&self) -> impl Iterator<Item = &Arc<Unit>> {
+        self.owner
+            .map(|o| self.clashes.partners(o))
+            .unwrap_or_default()
+            .into_iter()
+            .filter_map(|u| self.units.get(u))
     }
 
     /// Sets [`Task::shared`] (with the hash [`shared_persistents`] gave):
     /// the task's interface hash then covers them, so cached results are
     /// dropped when another task's persistents change.
     pub fn set_shared(&mut self, shared: Arc<SharedMap>, hash: u64) {
-        self.inputs.shared = hash;
+        Arc::make_mut(&mut self.inputs).shared = hash;
         self.shared = shared;
         self.interface = hash_of(&self.inputs);
     }
@@ -368,10 +391,11 @@ impl Task {
     /// Sets [`Task::mecunits`] and [`Task::task_ids`]: names resolve
     /// through them, so the interface covers them.
     pub fn set_controller_names(&mut self, mecunits: HashSet<String>, task_ids: HashSet<String>) {
-        self.inputs.mecunits = sorted(mecunits.iter().cloned());
-        self.inputs.task_ids = sorted(task_ids.iter().cloned());
-        self.mecunits = mecunits;
-        self.task_ids = task_ids;
+        let inputs = Arc::make_mut(&mut self.inputs);
+        inputs.mecunits = sorted(mecunits.iter().cloned());
+        inputs.task_ids = sorted(task_ids.iter().cloned());
+        self.mecunits = Arc::new(mecunits);
+        self.task_ids = Arc::new(task_ids);
         self.interface = hash_of(&self.inputs);
     }
 
@@ -399,13 +423,13 @@ impl Task {
         let constants: Vec<u64> = units.iter().map(|u| u.constants).collect();
         Task {
             key,
-            units,
-            globals,
-            locals,
-            signals,
+            units: units.into(),
+            globals: NameIndex::new(globals),
+            locals: NameIndex::new(locals),
+            signals: signals.map(Arc::new),
             mecunits: Default::default(),
             interface: hash_of(&inputs),
-            inputs,
+            inputs: Arc::new(inputs),
             constants: hash_of(&constants),
             shared: Arc::default(),
             catalogue: crate::catalogue::base(),
@@ -415,15 +439,14 @@ impl Task {
             loaded_elsewhere: false,
             task_ids: Default::default(),
             owner: None,
-            excluded: Vec::new(),
-            clashing: Default::default(),
+            clashes: Arc::default(),
         }
     }
 
     /// Sets [`Task::catalogue`] to the view of `selection`: the interface
     /// hash covers it, so cached results are dropped when it changes.
     pub fn set_catalogue(&mut self, selection: &crate::catalogue::Selection) {
-        self.inputs.catalogue = Some(selection.clone());
+        Arc::make_mut(&mut self.inputs).catalogue = Some(selection.clone());
         self.interface = hash_of(&self.inputs);
         self.catalogue = crate::catalogue::view(selection);
     }
@@ -445,7 +468,7 @@ impl Task {
     pub fn owns(&self, idx: usize) -> bool {
         match self.owner {
             Some(owner) => owner == idx,
-            None => !self.clashing.contains_key(&idx),
+            None => !self.clashes.any(idx),
         }
     }
 
@@ -506,7 +529,7 @@ impl Task {
     /// local type used from another module is reported by name resolution).
     pub fn types(&self) -> Types<'_> {
         Types::new(
-            self.units.iter().flat_map(|u| {
+            self.live_units().flat_map(|(_, u)| {
                 u.items.modules.iter().flat_map(|m| {
                     m.records
                         .iter()

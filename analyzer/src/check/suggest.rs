@@ -94,7 +94,7 @@ fn close_global(task: &Task, key: &str, limit: usize, kind: Kind) -> Option<(usi
         return found.clone();
     }
     let mut best: Option<(usize, String)> = None;
-    for (folded, refs) in &task.globals {
+    for (folded, refs) in task.globals.iter() {
         if folded.len().abs_diff(key.len()) > limit {
             continue;
         }

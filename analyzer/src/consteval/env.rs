@@ -23,7 +23,7 @@ impl<'t> Shared<'t> {
     ) -> Shared<'t> {
         let mut offsets = Vec::with_capacity(task.units.len());
         let mut n = 0;
-        for u in &task.units {
+        for u in task.units.iter() {
             offsets.push(n);
             n += u.items.modules.len();
         }

@@ -116,7 +116,7 @@ pub(crate) fn uses(
         _ => None,
     };
     let mut out = Vec::new();
-    for (ui, u) in task.units.iter().enumerate() {
+    for (ui, u) in task.live_units() {
         if only_unit.is_some_and(|o| o != ui) || scope.as_ref().is_some_and(|(su, _)| *su != ui) {
             continue;
         }

@@ -80,10 +80,10 @@ pub(crate) fn check(cx: &mut Cx<'_>, decl: &DataDecl) {
 
 fn is_alias(cx: &Cx<'_>, name: &str) -> bool {
     let folded = fold(name);
-    [cx.task.globals.get(&folded), cx.task.locals.get(&folded)]
-        .into_iter()
-        .flatten()
-        .flatten()
+    cx.task
+        .globals
+        .refs(&folded)
+        .chain(cx.task.locals.refs(&folded))
         .any(|r| matches!(r.item, Item::Alias(_)))
 }
 

@@ -29,7 +29,7 @@ pub(crate) fn visible(task: &Task, unit: usize, module: Option<usize>, key: &str
     if let Some(globals) = task.globals.get(key) {
         own.extend(globals.iter().filter(here));
         if own.is_empty() {
-            return globals.clone();
+            return globals.into_owned();
         }
     }
     own

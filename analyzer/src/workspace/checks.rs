@@ -29,8 +29,9 @@ pub struct CheckInputs {
     pub grouping: Grouping,
     pub complete: bool,
     pub loaded_elsewhere: bool,
-    /// In a view of the task, the files it leaves out.
-    pub excluded: Vec<String>,
+    /// In a view of the task, the unit it is made for (what it leaves out
+    /// follows from the group's interface and the owner).
+    pub owner: Option<usize>,
 }
 
 impl CheckInputs {
@@ -41,7 +42,7 @@ impl CheckInputs {
             grouping: task.grouping,
             complete: task.complete,
             loaded_elsewhere: task.loaded_elsewhere,
-            excluded: task.excluded.iter().map(|e| e.path.clone()).collect(),
+            owner: task.owner,
         }
     }
 }

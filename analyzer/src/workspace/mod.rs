@@ -169,7 +169,7 @@ impl Workspace {
         let unit = Arc::new(unit);
         // The same file replaced: the task keeps its members.
         let mut members = match self.forget_task(&key) {
-            Some(task) => Some(task.units.clone()),
+            Some(task) => Some(task.units.to_vec()),
             None => self.members.remove(&key),
         };
         match members
@@ -339,17 +339,13 @@ impl Workspace {
         let Some(idx) = group.units.iter().position(|u| u.path == path) else {
             return group;
         };
-        let Some(left_out) = group.clashing.get(&idx) else {
+        if group.owns(idx) {
             return group;
-        };
+        }
         if let Some(view) = self.views.get(&group.key).and_then(|v| v.get(path)) {
             return view.clone();
         }
-        let (units, owner, excluded) = alternatives::view_units(&group.units, idx, left_out);
-        let mut view = self.make_task(group.key.clone(), units, group.grouping);
-        view.owner = Some(owner);
-        view.excluded = excluded;
-        let view = Arc::new(view);
+        let view = Arc::new(group.view(idx));
         self.views
             .entry(group.key.clone())
             .or_default()
@@ -385,7 +381,7 @@ impl Workspace {
             _ => Grouping::Folder,
         };
         let mut task = self.make_task(key.clone(), units, grouping);
-        task.clashing = alternatives::clashes(&task.units, grouping);
+        task.clashes = Arc::new(alternatives::clashes(&task.units, grouping));
         let task = Arc::new(task);
         self.tasks.insert(key, task.clone());
         task
