@@ -279,8 +279,9 @@ pub struct Task {
     /// version and options; the union of every version when unknown). Set
     /// with [`Task::set_catalogue`].
     pub catalogue: &'static crate::catalogue::Catalogue,
-    /// Memo of "did you mean" suggestions among the globals, by folded name.
-    pub(crate) close_names: Arc<std::sync::Mutex<HashMap<String, Option<(usize, String)>>>>,
+    /// The global names near others, for "did you mean" (shared by a group
+    /// and its views).
+    pub(crate) close_names: Arc<crate::check::suggest::CloseNames>,
     /// How the modules were grouped (set by the workspace).
     pub grouping: Grouping,
     /// A task of a real controller backup (one with its `SYSPAR`) whose
@@ -334,7 +335,6 @@ impl Task {
     pub fn with_units(&self, units: Vec<Arc<Unit>>) -> Task {
         Task {
             units: units.into(),
-            close_names: Default::default(),
             ..self.clone()
         }
     }
@@ -351,7 +351,6 @@ impl Task {
             globals: self.globals.seen_by(view.clone()),
             locals: self.locals.seen_by(view),
             owner: Some(owner),
-            close_names: Default::default(),
             ..self.clone()
         }
     }
@@ -528,17 +527,30 @@ impl Task {
     /// The types of the task: every record and alias, global or local (a
     /// local type used from another module is reported by name resolution).
     pub fn types(&self) -> Types<'_> {
-        Types::new(
-            self.live_units().flat_map(|(_, u)| {
-                u.items.modules.iter().flat_map(|m| {
-                    m.records
-                        .iter()
-                        .map(UserType::Record)
-                        .chain(m.aliases.iter().map(UserType::Alias))
-                })
-            }),
-            self.catalogue,
-        )
+        Types::of_task(self)
+    }
+
+    /// The record or alias of the folded name `key`, global or local: the
+    /// first declared (by unit, module, records before aliases).
+    pub fn user_type(&self, key: &str) -> Option<UserType<'_>> {
+        let rank = |r: &ItemRef| match r.item {
+            Item::Record(i) => Some((r.unit, r.module, 0, i)),
+            Item::Alias(i) => Some((r.unit, r.module, 1, i)),
+            _ => None,
+        };
+        let first = self
+            .globals
+            .refs(key)
+            .chain(self.locals.refs(key))
+            .filter_map(|r| Some((rank(&r)?, r)))
+            .min_by_key(|(k, _)| *k)?
+            .1;
+        let m = self.module(first)?;
+        match first.item {
+            Item::Record(i) => m.records.get(i).map(UserType::Record),
+            Item::Alias(i) => m.aliases.get(i).map(UserType::Alias),
+            _ => None,
+        }
     }
 }
 

@@ -17,7 +17,7 @@ pub mod once;
 mod place;
 mod routine;
 mod stmts;
-mod suggest;
+pub(crate) mod suggest;
 
 #[cfg(test)]
 pub(crate) use at::checker_type_of;

@@ -179,6 +179,11 @@ impl NameIndex {
             .filter_map(|(k, refs)| Some((k, self.visible(refs)?)))
     }
 
+    /// Every folded name, those a view hides all declarations of included.
+    pub fn names(&self) -> impl Iterator<Item = &String> {
+        self.map.keys()
+    }
+
     /// Every name's declarations.
     pub fn values(&self) -> impl Iterator<Item = Cow<'_, [ItemRef]>> {
         self.iter().map(|(_, refs)| refs)
