@@ -104,6 +104,50 @@ impl Unit {
         }
     }
 
+    /// Calls `f` with the syntax tree: the unit's own when it is in memory,
+    /// else one parsed again for this call only and dropped after it (a
+    /// released tree stays released). For readers of other units than the
+    /// one they work on.
+    pub fn with_tree<R>(&self, f: impl FnOnce(&Tree) -> R) -> R {
+        if let Some(tree) = self.tree.loaded() {
+            return f(tree);
+        }
+        f(&self.parse_again())
+    }
+
+    /// Is the syntax tree in memory (kept, or parsed again by
+    /// [`Unit::tree`] since it was released)?
+    pub fn tree_loaded(&self) -> bool {
+        self.tree.is_loaded()
+    }
+
+    /// This unit with its syntax tree in memory: itself if it is, else a
+    /// copy (the same text, items and findings) with the tree parsed again,
+    /// to check it and drop it ([`Task::with_unit`]).
+    pub fn loaded(self: &Arc<Unit>) -> Arc<Unit> {
+        if self.tree.is_loaded() {
+            return self.clone();
+        }
+        Arc::new(Unit {
+            path: self.path.clone(),
+            text: self.text.clone(),
+            tree: UnitTree::new(self.parse_again()),
+            items: self.items.clone(),
+            interface: self.interface,
+            constants: self.constants,
+            syntax: self.syntax.clone(),
+            cuts: self.cuts.clone(),
+        })
+    }
+
+    pub(crate) fn parse_again(&self) -> Tree {
+        if self.cuts.is_empty() {
+            crate::unit_tree::parse(&self.text)
+        } else {
+            crate::nesting::parse_copy(&self.text, &self.cuts)
+        }
+    }
+
     /// The parts of the text nested too deep to analyse (the tree has a
     /// placeholder or blanks there); empty for almost every file.
     pub fn cuts(&self) -> &[crate::nesting::Cut] {
@@ -300,6 +344,8 @@ pub struct Task {
     /// The units of the group that clash with others: each is checked in
     /// a view of its own, which leaves out the units it clashes with.
     pub clashes: Arc<Clashes>,
+    /// A unit in place of the group's unit of that index ([`Task::with_unit`]).
+    overlay: Option<(usize, Arc<Unit>)>,
 }
 
 /// What [`Task::interface`] is the hash of: what each file declares for
@@ -335,7 +381,34 @@ impl Task {
     pub fn with_units(&self, units: Vec<Arc<Unit>>) -> Task {
         Task {
             units: units.into(),
+            overlay: None,
             ..self.clone()
+        }
+    }
+
+    /// This task with `unit` in place of its unit `idx` (the same file, e.g.
+    /// with its tree parsed again for one check: [`Unit::loaded`]), sharing
+    /// everything else: [`Task::unit`] gives it.
+    pub fn with_unit(&self, idx: usize, unit: Arc<Unit>) -> Task {
+        Task {
+            overlay: Some((idx, unit)),
+            ..self.clone()
+        }
+    }
+
+    /// The unit of index `idx` ([`ItemRef::unit`]).
+    pub fn unit(&self, idx: usize) -> Option<&Arc<Unit>> {
+        match &self.overlay {
+            Some((i, u)) if *i == idx => Some(u),
+            _ => self.units.get(idx),
+        }
+    }
+
+    /// The index of `unit`, which is one of this task's units.
+    pub fn index_of(&self, unit: &Arc<Unit>) -> Option<usize> {
+        match &self.overlay {
+            Some((i, u)) if Arc::ptr_eq(u, unit) => Some(*i),
+            _ => self.units.iter().position(|u| Arc::ptr_eq(u, unit)),
         }
     }
 
@@ -363,10 +436,9 @@ impl Task {
     /// The units this task sees (all but those a view leaves out), with
     /// their indexes.
     pub fn live_units(&self) -> impl Iterator<Item = (usize, &Arc<Unit>)> {
-        self.units
-            .iter()
-            .enumerate()
-            .filter(|(i, _)| !self.hides(*i))
+        (0..self.units.len())
+            .filter(|&i| !self.hides(i))
+            .filter_map(|i| Some((i, self.unit(i)?)))
     }
 
     /// The units a view leaves out (none for a group).
@@ -439,6 +511,7 @@ impl Task {
             task_ids: Default::default(),
             owner: None,
             clashes: Arc::default(),
+            overlay: None,
         }
     }
 
@@ -477,7 +550,7 @@ impl Task {
     }
 
     pub fn module(&self, r: ItemRef) -> Option<&Module> {
-        self.units.get(r.unit)?.items.modules.get(r.module)
+        self.unit(r.unit)?.items.modules.get(r.module)
     }
 
     pub fn data(&self, r: ItemRef) -> Option<&DataDecl> {

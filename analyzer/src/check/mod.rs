@@ -54,7 +54,7 @@ pub fn check_unit_cached(
     cache: StmtCache,
     selection: &Selection,
 ) -> (Vec<Diagnostic>, StmtCache) {
-    let Some(u) = task.units.get(unit) else {
+    let Some(u) = task.unit(unit) else {
         return (Vec::new(), StmtCache::default());
     };
     let mut cx = Cx::new(task, unit, u);
@@ -259,7 +259,7 @@ impl<'t> Cx<'t> {
     pub(crate) fn related_item(&self, r: ItemRef, message: impl Into<String>) -> Option<Related> {
         let (_, range) = self.task.item_name(r)?;
         let file = (r.unit != self.unit_idx)
-            .then(|| self.task.units.get(r.unit).map(|u| u.path.clone()))
+            .then(|| self.task.unit(r.unit).map(|u| u.path.clone()))
             .flatten();
         Some(Related {
             file,

@@ -223,7 +223,7 @@ pub fn diagnostics_selected(
 ) -> (Vec<Diagnostic>, StmtCache) {
     let mut out = unit.syntax.clone();
     let mut next = StmtCache::default();
-    if let Some(idx) = task.units.iter().position(|u| Arc::ptr_eq(u, unit)) {
+    if let Some(idx) = task.index_of(unit) {
         let (found, cache) = crate::check::check_unit_cached(task, idx, cache, selection);
         out.extend(found);
         next = cache;
