@@ -116,10 +116,13 @@ pub fn with_env<R>(
 /// the size of its task.
 pub(crate) struct InitCache {
     /// Per unit, the slots of its modules' data in order.
-    units: Vec<OnceCell<Box<[OnceCell<Option<Expr>>]>>>,
+    units: Vec<OnceCell<Slots>>,
     /// Trees parsed again, by the unit's address.
     trees: std::cell::RefCell<std::collections::HashMap<usize, tree_sitter::Tree>>,
 }
+
+/// The lowered initial values of one unit's module data, in order.
+type Slots = Box<[OnceCell<Option<Expr>>]>;
 
 impl InitCache {
     pub(crate) fn new(task: &Task) -> InitCache {

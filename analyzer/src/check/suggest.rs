@@ -116,11 +116,14 @@ pub(crate) struct CloseNames {
     /// For each folded name asked, the global names within its limit:
     /// (distance, folded name), in the index's order. The same unresolved
     /// name tends to recur in many places and files.
-    near: Mutex<HashMap<String, Arc<[(usize, String)]>>>,
+    near: Mutex<HashMap<String, Near>>,
 }
 
+/// Names near an asked one: (distance, folded name).
+type Near = Arc<[(usize, String)]>;
+
 impl CloseNames {
-    fn near(&self, task: &Task, key: &str, limit: usize) -> Arc<[(usize, String)]> {
+    fn near(&self, task: &Task, key: &str, limit: usize) -> Near {
         let mut memo = self.near.lock().unwrap_or_else(PoisonError::into_inner);
         if let Some(found) = memo.get(key) {
             return found.clone();

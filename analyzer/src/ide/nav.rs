@@ -156,7 +156,7 @@ fn uses_in(
     // A label resolves the same in its whole routine: once per routine.
     let mut label: Option<(usize, Option<DefKey>)> = None;
     let mut lists = ArgLists::default();
-    for_each_name_spelt(node, &u.text, &name, |path| {
+    for_each_name_spelt(node, &u.text, name, |path| {
         let Some(&[(parent, _), (n, field)]) = path.get(path.len().saturating_sub(2)..) else {
             return;
         };
@@ -177,13 +177,13 @@ fn uses_in(
                     r.for_vars.extend(for_vars);
                 }
                 let d = resolve_at(cx, n, parent, field).map(|d| d.key(task));
-                let write = d.as_ref() == Some(&key)
+                let write = d.as_ref() == Some(key)
                     && (is_write(path) || passed_by_reference(cx, path, &mut lists));
                 if let Some(r) = cx.routine.as_mut() {
                     let keep = r.for_vars.len().saturating_sub(pushed);
                     r.for_vars.truncate(keep);
                 }
-                if d.as_ref() == Some(&key) {
+                if d.as_ref() == Some(key) {
                     out.push((ui, n.byte_range(), write));
                 }
                 if is_label && let Some(r) = routine {
@@ -192,7 +192,7 @@ fn uses_in(
                 return;
             }
         };
-        if d.as_ref() == Some(&key) {
+        if d.as_ref() == Some(key) {
             out.push((ui, n.byte_range(), false));
         }
     });

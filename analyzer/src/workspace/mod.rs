@@ -73,6 +73,14 @@ pub struct Workspace {
     /// Configuration that applies to every task whatever its place says
     /// (a project's extra paths), in the order given.
     extra_configs: Vec<Config>,
+    /// The number of units of each task folder of a backup, by key: a
+    /// task folder that gains its first unit or loses its last changes
+    /// the tasks `SYS.cfg` entries name, and so the `HOME/` modules the
+    /// tasks load.
+    backup_tasks: HashMap<String, usize>,
+    /// While [`Workspace::set_units`] adds units: whether the modules that
+    /// tasks load from `HOME/` are to be worked out again once it is done.
+    adoption_stale: Option<bool>,
 }
 
 impl Workspace {
@@ -164,9 +172,18 @@ impl Workspace {
     /// interface or constants, or it is new): whether they are to be
     /// checked again.
     pub fn set_unit(&mut self, unit: Unit) -> bool {
-        let loads_changed = self.note_loads(&unit.path, Some(&unit.text));
+        self.set_shared_unit(Arc::new(unit))
+    }
+
+    /// [`Workspace::set_unit`] of a unit shared with other workspaces (a
+    /// module of the extra paths, parsed once for every part of a
+    /// project).
+    pub fn set_shared_unit(&mut self, unit: Arc<Unit>) -> bool {
+        let mut loads_changed = self.note_loads(&unit.path, Some(&unit.text));
+        if !self.units.contains_key(&unit.path) {
+            loads_changed |= self.count_backup_task(&unit.path, true);
+        }
         let key = self.task_key(&unit.path);
-        let unit = Arc::new(unit);
         // The same file replaced: the task keeps its members.
         let mut members = match self.forget_task(&key) {
             Some(task) => Some(task.units.to_vec()),
@@ -190,9 +207,45 @@ impl Workspace {
             self.forget_sibling_tasks(&key);
         }
         if loads_changed {
-            self.refresh_adoption();
+            match &mut self.adoption_stale {
+                Some(stale) => *stale = true,
+                None => self.refresh_adoption(),
+            }
         }
         seen
+    }
+
+    /// Adds or replaces many units ([`Workspace::set_unit`] of each), working
+    /// out which `HOME/` modules the tasks load once, after the last.
+    pub fn set_units(&mut self, units: impl IntoIterator<Item = Unit>) {
+        self.adoption_stale = Some(false);
+        for unit in units {
+            self.set_unit(unit);
+        }
+        if self.adoption_stale.take() == Some(true) {
+            self.refresh_adoption();
+        }
+    }
+
+    /// Counts a unit of a backup's task folder coming (`added`) or going;
+    /// returns whether its folder gained its first unit or lost its last.
+    fn count_backup_task(&mut self, path: &str, added: bool) -> bool {
+        let (key, grouping) = crate::layout::locate(path);
+        if grouping != Grouping::Backup || crate::layout::in_home(path) {
+            return false;
+        }
+        let count = self.backup_tasks.entry(key.clone()).or_default();
+        if added {
+            *count += 1;
+            *count == 1
+        } else {
+            *count = count.saturating_sub(1);
+            let gone = *count == 0;
+            if gone {
+                self.backup_tasks.remove(&key);
+            }
+            gone
+        }
     }
 
     /// Makes `unit` a member of every task besides the modules their
@@ -211,7 +264,12 @@ impl Workspace {
     /// (a project's extra paths). A task's own configuration wins where
     /// both declare a signal.
     pub fn add_extra_config(&mut self, text: &str) {
-        self.extra_configs.push(parse_config(text));
+        self.add_parsed_extra_config(parse_config(text));
+    }
+
+    /// [`Workspace::add_extra_config`] of a configuration read already.
+    pub fn add_parsed_extra_config(&mut self, config: Config) {
+        self.extra_configs.push(config);
         self.forget_all_tasks();
     }
 
@@ -232,7 +290,8 @@ impl Workspace {
             self.members.remove(&key);
             self.forget_sibling_tasks(&key);
             self.checked.remove(path);
-            if self.note_loads(path, None) {
+            let task_gone = self.count_backup_task(path, false);
+            if self.note_loads(path, None) || task_gone {
                 self.refresh_adoption();
             }
         }
@@ -600,8 +659,9 @@ pub fn program_modules(path: &str, xml: &str) -> Vec<String> {
 }
 
 /// The folder an I/O configuration applies below: a backup's root for
-/// `.../SYSPAR/EIO.cfg`, else the file's own folder.
-fn config_root(path: &str) -> &str {
+/// `.../SYSPAR/EIO.cfg`, else the file's own folder. It applies to the tasks
+/// whose key starts with it.
+pub fn config_root(path: &str) -> &str {
     let dir = path.rsplit_once(['/', '\\']).map_or("", |(d, _)| d);
     match dir.rsplit_once(['/', '\\']) {
         Some((parent, last))
