@@ -8,7 +8,7 @@
 //! its task and the statement results, [`Check::run`] computes, and
 //! [`Workspace::finish`] takes the result back.
 
-use std::sync::Arc;
+use std::sync::{Arc, Weak};
 
 use super::Workspace;
 use crate::check::StmtCache;
@@ -57,6 +57,10 @@ pub(super) struct Checked {
     /// The rules checked.
     selection: Selection,
     diagnostics: Arc<Vec<Diagnostic>>,
+    /// The other files its diagnostics point into (related locations), as
+    /// they were: an edit there moves what they point at even when the
+    /// task's interface (which ignores positions) stays the same.
+    related: Vec<(String, Weak<Unit>)>,
     /// Statement results, for the next check of this file.
     pub(super) statements: StmtCache,
 }
@@ -84,6 +88,7 @@ impl Check {
     pub fn run(self) -> CheckResult {
         let (diagnostics, statements) =
             diagnostics_selected(&self.task, &self.unit, self.statements, &self.selection);
+        let related = related_units(&self.task, &self.unit, &diagnostics);
         let diagnostics = Arc::new(diagnostics);
         CheckResult {
             path: self.path,
@@ -94,10 +99,32 @@ impl Check {
                 revision: self.revision,
                 selection: self.selection,
                 diagnostics,
+                related,
                 statements,
             },
         }
     }
+}
+
+/// The other units of `task` that `diagnostics` (of `unit`) point into.
+fn related_units(
+    task: &Task,
+    unit: &Unit,
+    diagnostics: &[Diagnostic],
+) -> Vec<(String, Weak<Unit>)> {
+    let paths: std::collections::BTreeSet<&str> = diagnostics
+        .iter()
+        .flat_map(|d| &d.related)
+        .filter_map(|r| r.file.as_deref())
+        .filter(|p| *p != unit.path)
+        .collect();
+    if paths.is_empty() {
+        return Vec::new();
+    }
+    task.live_units()
+        .filter(|(_, u)| paths.contains(u.path.as_str()))
+        .map(|(_, u)| (u.path.clone(), Arc::downgrade(u)))
+        .collect()
 }
 
 impl Workspace {
@@ -118,9 +145,15 @@ impl Workspace {
         selection: &Selection,
     ) -> Option<Arc<Vec<Diagnostic>>> {
         let c = self.checked.get(path)?;
+        let same_related = c.related.iter().all(|(p, was)| {
+            self.units
+                .get(p)
+                .is_some_and(|now| std::ptr::eq(Arc::as_ptr(now), was.as_ptr()))
+        });
         (Arc::ptr_eq(&c.unit, unit)
             && c.inputs == CheckInputs::of(task)
-            && c.selection == *selection)
+            && c.selection == *selection
+            && same_related)
             .then(|| c.diagnostics.clone())
     }
 
