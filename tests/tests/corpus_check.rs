@@ -154,13 +154,6 @@ const WARNING_SAMPLE: &[(&str, &str, usize, bool, &str)] = &[
         "a `syncident` TASK5 declares in no module",
     ),
     (
-        "mjkkirschner__TORO/ClassLibrary1/ClassLibrary1/extra/robarchSetup.mod",
-        "E107",
-        18,
-        false,
-        "the folder holds generated test programs (`test0N_001.prg`) side by side with a setup module: not one task, so the shared `j1` is no clash",
-    ),
-    (
         "1200-526406_BACKUP_2026-02-11-1959/RAPID/TASK8/PROGMOD/Head_MainModule.mod",
         "W101",
         226,
