@@ -22,7 +22,7 @@ use std::ops::Range;
 use rapid_evaluator::{
     Env, ErrorCode, EvalError, Evaluation, Expr, Lookup, Options, Type, Value, VarKind,
 };
-use tree_sitter::{Node, TreeCursor};
+use tree_sitter::{Node, Tree, TreeCursor};
 
 use crate::catalogue::{Catalogue, Datum, DatumKind, Mode, TypeKind};
 use crate::check::Cx;
@@ -110,50 +110,62 @@ pub fn with_env<R>(
 /// The lowered initial values of a task's module data, kept by a checker
 /// context for its whole check so that each is lowered from the syntax tree
 /// once, not at every use (lowering depends only on the declaration and its
-/// module).
+/// module); and the trees of other units parsed again to read them (their
+/// own were released), kept for the check. Each unit's slots are made when
+/// one of its data is first asked for: a check costs what it reads, not
+/// the size of its task.
 pub(crate) struct InitCache {
-    /// The first slot and the number of data of each unit's modules.
-    modules: Vec<Vec<(usize, usize)>>,
-    slots: Vec<OnceCell<Option<Expr>>>,
+    /// Per unit, the slots of its modules' data in order.
+    units: Vec<OnceCell<Slots>>,
+    /// Trees parsed again, by the unit's address.
+    trees: std::cell::RefCell<std::collections::HashMap<usize, tree_sitter::Tree>>,
 }
+
+/// The lowered initial values of one unit's module data, in order.
+type Slots = Box<[OnceCell<Option<Expr>>]>;
 
 impl InitCache {
     pub(crate) fn new(task: &Task) -> InitCache {
-        let mut n = 0;
-        let modules = task
-            .units
-            .iter()
-            .map(|u| {
-                u.items
-                    .modules
-                    .iter()
-                    .map(|m| {
-                        let first = n;
-                        n += m.data.len();
-                        (first, m.data.len())
-                    })
-                    .collect()
-            })
-            .collect();
         InitCache {
-            modules,
-            slots: std::iter::repeat_with(OnceCell::new).take(n).collect(),
+            units: std::iter::repeat_with(OnceCell::new)
+                .take(task.units.len())
+                .collect(),
+            trees: Default::default(),
         }
     }
 
-    /// The slot of module data `r`.
-    fn slot(&self, r: ItemRef) -> Option<&OnceCell<Option<Expr>>> {
+    /// The slot of module data `r` of `task`.
+    fn slot(&self, task: &Task, r: ItemRef) -> Option<&OnceCell<Option<Expr>>> {
         let Item::Data(i) = r.item else {
             return None;
         };
-        let &(first, len) = self.modules.get(r.unit)?.get(r.module)?;
-        (i < len).then(|| self.slots.get(first + i))?
+        let modules = &task.unit(r.unit)?.items.modules;
+        if i >= modules.get(r.module)?.data.len() {
+            return None;
+        }
+        let slots = self.units.get(r.unit)?.get_or_init(|| {
+            let n = modules.iter().map(|m| m.data.len()).sum();
+            std::iter::repeat_with(OnceCell::new).take(n).collect()
+        });
+        let first: usize = modules.iter().take(r.module).map(|m| m.data.len()).sum();
+        slots.get(first + i)
+    }
+
+    /// The tree of `unit` (whose own was released), parsed again once per
+    /// check.
+    fn tree_of(&self, unit: &Unit) -> tree_sitter::Tree {
+        let key = std::ptr::from_ref(unit) as usize;
+        self.trees
+            .borrow_mut()
+            .entry(key)
+            .or_insert_with(|| unit.parse_again())
+            .clone()
     }
 }
 
 /// Is `offset` of unit `unit` inside a routine?
 fn in_routine(task: &Task, unit: usize, offset: usize) -> bool {
-    task.units.get(unit).is_some_and(|u| {
+    task.unit(unit).is_some_and(|u| {
         u.items.modules.iter().any(|m| {
             m.routines
                 .iter()
@@ -186,7 +198,7 @@ fn with_routine<'t, R>(
     let Some((unit, offset)) = at else {
         return f(&global);
     };
-    let Some(u) = task.units.get(unit) else {
+    let Some(u) = task.unit(unit) else {
         return f(&global);
     };
     let Some(m) = u.items.module_at(offset) else {
@@ -266,7 +278,7 @@ const NOT_VALUES: &[&str] = &[
 /// fails with a run-time error gives that error. `PERS` data give their
 /// initial value, labelled; `VAR` data are not constant.
 pub fn value_at(task: &Task, unit: usize, offset: usize) -> Option<ConstValue> {
-    let u = task.units.get(unit)?;
+    let u = task.unit(unit)?;
     let root = u.tree().root_node();
     let mut start = root.named_descendant_for_byte_range(offset, offset)?;
     // A cursor just after a name or a closing bracket means that expression
@@ -323,7 +335,7 @@ pub fn value_at(task: &Task, unit: usize, offset: usize) -> Option<ConstValue> {
 /// (white space around it ignored), as [`value_at`] gives it but without
 /// skipping literals.
 pub fn value_of_range(task: &Task, unit: usize, range: Range<usize>) -> Option<ConstValue> {
-    let u = task.units.get(unit)?;
+    let u = task.unit(unit)?;
     let text = u.text.get(range.clone())?;
     let start = range.start + (text.len() - text.trim_start().len());
     let end = range.end - (text.len() - text.trim_end().len());
@@ -358,7 +370,7 @@ fn value_of_node<'t>(
 ) -> Option<ConstValue> {
     let (node, _) = *path.last()?;
     let v = evaluate_node(task, unit, path, env, typing, options)?;
-    let text = task.units.get(unit).map_or("", |u| text_of(node, &u.text));
+    let text = task.unit(unit).map_or("", |u| text_of(node, &u.text));
     if matches!(
         crate::syntax_util::kind(node),
         kind::NUMBER | kind::STRING | kind::BOOLEAN
@@ -380,7 +392,7 @@ fn evaluate_node<'t>(
     typing: Option<&Scope<'t>>,
     options: EnvOptions,
 ) -> Option<ConstValue> {
-    let u = task.units.get(unit)?;
+    let u = task.unit(unit)?;
     let (node, _) = *path.last()?;
     let expected = typing.and_then(|cx| expected_type(cx, path, env));
     let at = module_at(task, unit, node.start_byte());
@@ -392,7 +404,7 @@ fn evaluate_node<'t>(
 /// Where an expression of `unit` is, for [`is_builtin_call`]: the unit and
 /// the module around `offset`.
 fn module_at(task: &Task, unit: usize, offset: usize) -> Option<(usize, usize)> {
-    let m = task.units.get(unit)?.items.module_at(offset)?;
+    let m = task.unit(unit)?.items.module_at(offset)?;
     Some((unit, m))
 }
 

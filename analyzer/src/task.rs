@@ -18,6 +18,10 @@ use crate::names::{NameMap, fold};
 use crate::ty::{Types, UserType};
 use crate::unit_tree::UnitTree;
 
+mod view;
+use view::View;
+pub use view::{Clashes, NameIndex};
+
 /// One parsed file with its item tree. Immutable once built: an edit makes
 /// a new unit (reusing the old tree for an incremental parse).
 #[derive(Debug)]
@@ -101,6 +105,51 @@ impl Unit {
         } else {
             self.tree
                 .get_or_init(|| crate::nesting::parse_copy(&self.text, &self.cuts))
+        }
+    }
+
+    /// Calls `f` with the syntax tree: the unit's own when it is in memory,
+    /// else one parsed again for this call only and dropped after it (a
+    /// released tree stays released). For readers of other units than the
+    /// one they work on.
+    pub fn with_tree<R>(&self, f: impl FnOnce(&Tree) -> R) -> R {
+        if let Some(tree) = self.tree.loaded() {
+            return f(tree);
+        }
+        f(&self.parse_again())
+    }
+
+    /// Is the syntax tree in memory (kept, or parsed again by
+    /// [`Unit::tree`] since it was released)?
+    pub fn tree_loaded(&self) -> bool {
+        self.tree.is_loaded()
+    }
+
+    /// This unit with its syntax tree in memory: itself if it is, else a
+    /// copy (the same text, items and findings) with the tree parsed again,
+    /// to check it and drop it ([`Task::with_unit`]).
+    pub fn loaded(self: &Arc<Unit>) -> Arc<Unit> {
+        if self.tree.is_loaded() {
+            return self.clone();
+        }
+        Arc::new(Unit {
+            path: self.path.clone(),
+            text: self.text.clone(),
+            tree: UnitTree::new(self.parse_again()),
+            items: self.items.clone(),
+            interface: self.interface,
+            constants: self.constants,
+            syntax: self.syntax.clone(),
+            cuts: self.cuts.clone(),
+            loads: self.loads.clone(),
+        })
+    }
+
+    pub(crate) fn parse_again(&self) -> Tree {
+        if self.cuts.is_empty() {
+            crate::unit_tree::parse(&self.text)
+        } else {
+            crate::nesting::parse_copy(&self.text, &self.cuts)
         }
     }
 
@@ -271,21 +320,29 @@ pub enum Item {
 }
 
 /// The modules of one task and the index of their names.
-#[derive(Debug)]
+///
+/// A task is cheap to clone: its units, name index and configuration are
+/// shared. A view of a group ([`Task::view`]) shares them with the group
+/// and leaves out the units that clash with its owner when names are
+/// looked up.
+#[derive(Clone, Debug)]
 pub struct Task {
     pub key: String,
-    pub units: Vec<Arc<Unit>>,
+    /// Every unit of the group, a view's left-out ones included (so that
+    /// [`ItemRef::unit`] indexes the same units in the group and its
+    /// views); [`Task::live_units`] leaves those out.
+    pub units: Arc<[Arc<Unit>]>,
     /// Global (non-`LOCAL`) declarations of every module, by folded name.
-    pub globals: NameMap<Vec<ItemRef>>,
+    pub globals: NameIndex,
     /// `LOCAL` declarations, by folded name (to explain why a name is not
     /// visible from another module).
-    pub locals: NameMap<Vec<ItemRef>>,
+    pub locals: NameIndex,
     /// Signals configured for this task (`EIO.cfg`): folded name to data
     /// type (`signaldi`...); `None` when no configuration was given.
-    pub signals: Option<Signals>,
+    pub signals: Option<Arc<Signals>>,
     /// Mechanical units configured for this task (`MOC.cfg`), folded; they
     /// are `mecunit` data.
-    pub mecunits: std::collections::HashSet<String>,
+    pub mecunits: Arc<HashSet<String>>,
     /// The robot the task's moves are made by (`MOC.cfg`, else the
     /// project's `[controller] robot`); set with [`Task::set_robot`].
     pub robot: Option<Arc<crate::robot::TaskRobot>>,
@@ -294,11 +351,11 @@ pub struct Task {
     /// The `taskid` data RobotWare declares for each task of the controller
     /// (the task's name and `Id`: `T_ROB1Id`), folded: from `SYS.cfg`'s
     /// tasks and the backup's task folders named after their task.
-    pub task_ids: std::collections::HashSet<String>,
+    pub task_ids: Arc<HashSet<String>>,
     /// The hash of what the task's files and controller declare
     /// ([`InterfaceInputs`]), for cache invalidation.
     pub interface: u64,
-    inputs: InterfaceInputs,
+    inputs: Arc<InterfaceInputs>,
     /// The hash of every unit's [`Unit::constants`], in order.
     pub constants: u64,
     /// The system-global persistents (`PERS`, neither `TASK` nor `LOCAL`)
@@ -315,8 +372,9 @@ pub struct Task {
     /// version and options; the union of every version when unknown). Set
     /// with [`Task::set_catalogue`].
     pub catalogue: &'static crate::catalogue::Catalogue,
-    /// Memo of "did you mean" suggestions among the globals, by folded name.
-    pub(crate) close_names: std::sync::Mutex<HashMap<String, Option<(usize, String)>>>,
+    /// The global names near others, for "did you mean" (shared by a group
+    /// and its views).
+    pub(crate) close_names: Arc<crate::check::suggest::CloseNames>,
     /// How the modules were grouped (set by the workspace).
     pub grouping: Grouping,
     /// A task of a real controller backup (one with its `SYSPAR`) whose
@@ -329,17 +387,14 @@ pub struct Task {
     /// unresolved name is a note, not a warning).
     pub loaded_elsewhere: bool,
     /// A view made for one unit (its index): the task as that unit sees it,
-    /// without the modules that cannot be loaded with it ([`Task::excluded`]).
-    /// `None` for a whole group.
+    /// without the modules that cannot be loaded with it
+    /// ([`Task::left_out`]). `None` for a whole group.
     pub owner: Option<usize>,
-    /// In a view, the modules of the group left out because they clash
-    /// with the owner (another version of it): each with its file and its
-    /// module names and their ranges.
-    pub excluded: Vec<Excluded>,
-    /// In a whole group, the units that clash with others, with the units
-    /// each clashes with: they are checked in views of their own, not in
-    /// this task.
-    pub clashing: HashMap<usize, Vec<usize>>,
+    /// The units of the group that clash with others: each is checked in
+    /// a view of its own, which leaves out the units it clashes with.
+    pub clashes: Arc<Clashes>,
+    /// A unit in place of the group's unit of that index ([`Task::with_unit`]).
+    overlay: Option<(usize, Arc<Unit>)>,
 }
 
 /// What [`Task::interface`] is the hash of: what each file declares for
@@ -371,14 +426,6 @@ fn sorted<T: Ord>(items: impl Iterator<Item = T>) -> Vec<T> {
     out
 }
 
-/// A module file that a view of a task leaves out.
-#[derive(Clone, Debug)]
-pub struct Excluded {
-    pub path: String,
-    /// The names of its modules, as declared, with their name ranges.
-    pub modules: Vec<(String, Range<usize>)>,
-}
-
 impl Task {
     /// This task with `units` in place of its own: the same files in the
     /// same order (their items are what the name index points at), e.g.
@@ -386,36 +433,81 @@ impl Task {
     /// configuration, catalogue view, grouping, view, keys) is kept.
     pub fn with_units(&self, units: Vec<Arc<Unit>>) -> Task {
         Task {
-            key: self.key.clone(),
-            units,
-            globals: self.globals.clone(),
-            locals: self.locals.clone(),
-            signals: self.signals.clone(),
-            mecunits: self.mecunits.clone(),
-            robot: self.robot.clone(),
-            robot_note: self.robot_note.clone(),
-            task_ids: self.task_ids.clone(),
-            interface: self.interface,
-            inputs: self.inputs.clone(),
-            constants: self.constants,
-            shared: self.shared.clone(),
-            syncs: self.syncs.clone(),
-            catalogue: self.catalogue,
-            close_names: Default::default(),
-            grouping: self.grouping,
-            complete: self.complete,
-            loaded_elsewhere: self.loaded_elsewhere,
-            owner: self.owner,
-            excluded: self.excluded.clone(),
-            clashing: self.clashing.clone(),
+            units: units.into(),
+            overlay: None,
+            ..self.clone()
         }
+    }
+
+    /// This task with `unit` in place of its unit `idx` (the same file, e.g.
+    /// with its tree parsed again for one check: [`Unit::loaded`]), sharing
+    /// everything else: [`Task::unit`] gives it.
+    pub fn with_unit(&self, idx: usize, unit: Arc<Unit>) -> Task {
+        Task {
+            overlay: Some((idx, unit)),
+            ..self.clone()
+        }
+    }
+
+    /// The unit of index `idx` ([`ItemRef::unit`]).
+    pub fn unit(&self, idx: usize) -> Option<&Arc<Unit>> {
+        match &self.overlay {
+            Some((i, u)) if *i == idx => Some(u),
+            _ => self.units.get(idx),
+        }
+    }
+
+    /// The index of `unit`, which is one of this task's units.
+    pub fn index_of(&self, unit: &Arc<Unit>) -> Option<usize> {
+        match &self.overlay {
+            Some((i, u)) if Arc::ptr_eq(u, unit) => Some(*i),
+            _ => self.units.iter().position(|u| Arc::ptr_eq(u, unit)),
+        }
+    }
+
+    /// The view of this group for its unit `owner`: the same task without
+    /// the units that clash with `owner` ([`Task::clashes`]), sharing the
+    /// group's units and index.
+    pub fn view(&self, owner: usize) -> Task {
+        let view = Some(View {
+            owner,
+            clashes: self.clashes.clone(),
+        });
+        Task {
+            globals: self.globals.seen_by(view.clone()),
+            locals: self.locals.seen_by(view),
+            owner: Some(owner),
+            ..self.clone()
+        }
+    }
+
+    /// Does this task (a view) leave unit `u` out?
+    pub fn hides(&self, u: usize) -> bool {
+        self.owner.is_some_and(|o| self.clashes.clash(o, u))
+    }
+
+    /// The units this task sees (all but those a view leaves out), with
+    /// their indexes.
+    pub fn live_units(&self) -> impl Iterator<Item = (usize, &Arc<Unit>)> {
+        (0..self.units.len())
+            .filter(|&i| !self.hides(i))
+            .filter_map(|i| Some((i, self.unit(i)?)))
+    }
+
+    /// The units a view leaves out (none for a group).
+    pub fn left_out(&self) -> impl Iterator<Item = &Arc<Unit>> {
+        self.owner
+            .map(|o| self.clashes.partners(o))
+            .unwrap_or_default()
+            .into_iter()
+            .filter_map(|u| self.units.get(u))
     }
 
     /// Sets [`Task::shared`] (with the hash [`shared_persistents`] gave):
     /// the task's interface hash then covers them, so cached results are
     /// dropped when another task's persistents change.
     pub fn set_shared(&mut self, shared: Arc<SharedMap>, hash: u64) {
-        self.inputs.shared = hash;
+        Arc::make_mut(&mut self.inputs).shared = hash;
         self.shared = shared;
         self.interface = hash_of(&self.inputs);
     }
@@ -424,7 +516,7 @@ impl Task {
     /// them, so cached results are dropped when another task's
     /// synchronisation changes.
     pub(crate) fn set_syncs(&mut self, syncs: Arc<crate::sema::sync::ControllerSyncs>, hash: u64) {
-        self.inputs.syncs = hash;
+        Arc::make_mut(&mut self.inputs).syncs = hash;
         self.syncs = syncs;
         self.interface = hash_of(&self.inputs);
     }
@@ -432,10 +524,11 @@ impl Task {
     /// Sets [`Task::mecunits`] and [`Task::task_ids`]: names resolve
     /// through them, so the interface covers them.
     pub fn set_controller_names(&mut self, mecunits: HashSet<String>, task_ids: HashSet<String>) {
-        self.inputs.mecunits = sorted(mecunits.iter().cloned());
-        self.inputs.task_ids = sorted(task_ids.iter().cloned());
-        self.mecunits = mecunits;
-        self.task_ids = task_ids;
+        let inputs = Arc::make_mut(&mut self.inputs);
+        inputs.mecunits = sorted(mecunits.iter().cloned());
+        inputs.task_ids = sorted(task_ids.iter().cloned());
+        self.mecunits = Arc::new(mecunits);
+        self.task_ids = Arc::new(task_ids);
         self.interface = hash_of(&self.inputs);
     }
 
@@ -463,15 +556,15 @@ impl Task {
         let constants: Vec<u64> = units.iter().map(|u| u.constants).collect();
         Task {
             key,
-            units,
-            globals,
-            locals,
-            signals,
+            units: units.into(),
+            globals: NameIndex::new(globals),
+            locals: NameIndex::new(locals),
+            signals: signals.map(Arc::new),
             mecunits: Default::default(),
             robot: None,
             robot_note: None,
             interface: hash_of(&inputs),
-            inputs,
+            inputs: Arc::new(inputs),
             constants: hash_of(&constants),
             shared: Arc::default(),
             syncs: Arc::default(),
@@ -482,27 +575,27 @@ impl Task {
             loaded_elsewhere: false,
             task_ids: Default::default(),
             owner: None,
-            excluded: Vec::new(),
-            clashing: Default::default(),
+            clashes: Arc::default(),
+            overlay: None,
         }
     }
 
-    /// Sets [`Task::catalogue`] to the view of `selection`: the interface
-    /// hash covers it, so cached results are dropped when it changes.
     /// Sets the task's robot (or the note why the one named is not used).
     pub fn set_robot(&mut self, robot: Result<Option<Arc<crate::robot::TaskRobot>>, String>) {
         let (robot, note) = match robot {
             Ok(r) => (r, None),
             Err(note) => (None, Some(note)),
         };
-        self.inputs.robot = robot.as_ref().map(|r| r.fingerprint());
+        Arc::make_mut(&mut self.inputs).robot = robot.as_ref().map(|r| r.fingerprint());
         self.interface = hash_of(&self.inputs);
         self.robot = robot;
         self.robot_note = note;
     }
 
+    /// Sets [`Task::catalogue`] to the view of `selection`: the interface
+    /// hash covers it, so cached results are dropped when it changes.
     pub fn set_catalogue(&mut self, selection: &crate::catalogue::Selection) {
-        self.inputs.catalogue = Some(selection.clone());
+        Arc::make_mut(&mut self.inputs).catalogue = Some(selection.clone());
         self.interface = hash_of(&self.inputs);
         self.catalogue = crate::catalogue::view(selection);
     }
@@ -524,7 +617,7 @@ impl Task {
     pub fn owns(&self, idx: usize) -> bool {
         match self.owner {
             Some(owner) => owner == idx,
-            None => !self.clashing.contains_key(&idx),
+            None => !self.clashes.any(idx),
         }
     }
 
@@ -534,7 +627,7 @@ impl Task {
     }
 
     pub fn module(&self, r: ItemRef) -> Option<&Module> {
-        self.units.get(r.unit)?.items.modules.get(r.module)
+        self.unit(r.unit)?.items.modules.get(r.module)
     }
 
     pub fn data(&self, r: ItemRef) -> Option<&DataDecl> {
@@ -584,17 +677,30 @@ impl Task {
     /// The types of the task: every record and alias, global or local (a
     /// local type used from another module is reported by name resolution).
     pub fn types(&self) -> Types<'_> {
-        Types::new(
-            self.units.iter().flat_map(|u| {
-                u.items.modules.iter().flat_map(|m| {
-                    m.records
-                        .iter()
-                        .map(UserType::Record)
-                        .chain(m.aliases.iter().map(UserType::Alias))
-                })
-            }),
-            self.catalogue,
-        )
+        Types::of_task(self)
+    }
+
+    /// The record or alias of the folded name `key`, global or local: the
+    /// first declared (by unit, module, records before aliases).
+    pub fn user_type(&self, key: &str) -> Option<UserType<'_>> {
+        let rank = |r: &ItemRef| match r.item {
+            Item::Record(i) => Some((r.unit, r.module, 0, i)),
+            Item::Alias(i) => Some((r.unit, r.module, 1, i)),
+            _ => None,
+        };
+        let first = self
+            .globals
+            .refs(key)
+            .chain(self.locals.refs(key))
+            .filter_map(|r| Some((rank(&r)?, r)))
+            .min_by_key(|(k, _)| *k)?
+            .1;
+        let m = self.module(first)?;
+        match first.item {
+            Item::Record(i) => m.records.get(i).map(UserType::Record),
+            Item::Alias(i) => m.aliases.get(i).map(UserType::Alias),
+            _ => None,
+        }
     }
 }
 

@@ -109,11 +109,29 @@ pub enum UserType<'a> {
 
 /// Every type a task knows.
 pub struct Types<'a> {
-    user: HashMap<String, UserType<'a>>,
+    user: UserTypes<'a>,
     catalogue: &'static Catalogue,
     /// [`Types::components_shared`] and [`Types::accepts`] by type name
     /// as spelt: aggregates ask the same few questions over and over.
     memo: RefCell<Memo>,
+}
+
+/// Where [`Types`] finds the user's types.
+enum UserTypes<'a> {
+    /// Given as a list (the first of a name wins).
+    Listed(HashMap<String, UserType<'a>>),
+    /// A task's name index ([`crate::task::Task::user_type`]): nothing to
+    /// build per check, whatever the size of the task.
+    Task(&'a crate::task::Task),
+}
+
+impl<'a> UserTypes<'a> {
+    fn get(&self, key: &str) -> Option<UserType<'a>> {
+        match self {
+            UserTypes::Listed(map) => map.get(key).copied(),
+            UserTypes::Task(task) => task.user_type(key),
+        }
+    }
 }
 
 /// A record's components, in order: names and types.
@@ -160,8 +178,18 @@ impl<'a> Types<'a> {
             map.entry(fold(name)).or_insert(t);
         }
         Types {
-            user: map,
+            user: UserTypes::Listed(map),
             catalogue,
+            memo: RefCell::default(),
+        }
+    }
+
+    /// The types of `task`: its records and aliases as its name index finds
+    /// them, and its catalogue's.
+    pub fn of_task(task: &'a crate::task::Task) -> Types<'a> {
+        Types {
+            user: UserTypes::Task(task),
+            catalogue: task.catalogue,
             memo: RefCell::default(),
         }
     }
@@ -172,7 +200,7 @@ impl<'a> Types<'a> {
     }
 
     fn exists_uncached(&self, name: &str) -> bool {
-        with_folded(name, |key| self.user.contains_key(key))
+        with_folded(name, |key| self.user.get(key).is_some())
             || self.catalogue.datatype(name).is_some()
             || name.eq_ignore_ascii_case("switch")
     }
@@ -191,7 +219,7 @@ impl<'a> Types<'a> {
     }
 
     pub fn user(&self, name: &str) -> Option<UserType<'a>> {
-        with_folded(name, |key| self.user.get(key).copied())
+        with_folded(name, |key| self.user.get(key))
     }
 
     /// Follows aliases (user and built-in) to the type they stand for.

@@ -11,6 +11,10 @@
 //!
 //! [`crate::task::Unit::tree`] reads the same whether the tree was kept or
 //! is parsed again (from the unit's own text); once parsed again, it stays.
+//! Readers of other units than the one they work on (a constant declared in
+//! another module, references in every file) use
+//! [`crate::task::Unit::with_tree`], which parses a released tree for the
+//! call only: a released tree stays released.
 
 use std::fmt;
 use std::sync::OnceLock;
@@ -46,20 +50,28 @@ impl UnitTree {
         self.tree.get().is_some()
     }
 
+    /// The tree, if it is in memory.
+    pub fn loaded(&self) -> Option<&Tree> {
+        self.tree.get()
+    }
+
     /// The tree, parsed again from `text` (the unit's text) if it was
     /// released.
     pub fn get(&self, text: &str) -> &Tree {
-        self.tree.get_or_init(|| {
-            let mut parser = crate::syntax::parser();
-            match crate::syntax::parse(&mut parser, text, None)
-                .or_else(|| crate::syntax::parse(&mut parser, "", None))
-            {
-                Some(tree) => tree,
-                // Only a cancelled parse returns no tree, and we never
-                // cancel; an empty text always parses.
-                None => unreachable_tree(),
-            }
-        })
+        self.tree.get_or_init(|| parse(text))
+    }
+}
+
+/// A tree of `text`, as a unit's tree is parsed again.
+pub(crate) fn parse(text: &str) -> Tree {
+    let mut parser = crate::syntax::parser();
+    match crate::syntax::parse(&mut parser, text, None)
+        .or_else(|| crate::syntax::parse(&mut parser, "", None))
+    {
+        Some(tree) => tree,
+        // Only a cancelled parse returns no tree, and we never cancel; an
+        // empty text always parses.
+        None => unreachable_tree(),
     }
 }
 

@@ -322,6 +322,7 @@ fn rendered_messages() {
         "missing-return/fail.mod",
         "unused-data/fail.mod",
         "ambiguous-global/fail",
+        "ambiguous-global/folder_pairs",
         "unresolved-name/fail_repeated.mod",
         "unresolved-name/fail_suggestions.mod",
         "duplicate-module/fail_backup",

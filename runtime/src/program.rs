@@ -255,7 +255,7 @@ impl Program {
         let mut signals: Vec<(String, SignalKind)> = task
             .signals
             .iter()
-            .flatten()
+            .flat_map(|s| s.iter())
             .filter_map(|(n, t)| Some((n.clone(), SignalKind::from_type(t)?)))
             .collect();
         signals.sort_by(|a, b| a.0.cmp(&b.0));

@@ -38,7 +38,7 @@ impl Types {
     pub(crate) fn new(task: &Task) -> Types {
         let mut records = NameMap::default();
         let mut aliases = NameMap::default();
-        for unit in &task.units {
+        for unit in task.units.iter() {
             for m in &unit.items.modules {
                 for r in &m.records {
                     let fields = r

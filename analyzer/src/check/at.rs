@@ -11,7 +11,7 @@ use crate::ty::Ty;
 /// The type the checker gives expression `node` of unit `unit`, checked in
 /// the scopes around it.
 pub(crate) fn checker_type_of(task: &Task, unit: usize, node: Node<'_>) -> Ty {
-    let Some(u) = task.units.get(unit) else {
+    let Some(u) = task.unit(unit) else {
         return Ty::Unknown;
     };
     let Some(scope) = Scope::at(task, unit, node.start_byte()) else {

@@ -19,7 +19,7 @@ pub mod once;
 mod place;
 mod routine;
 mod stmts;
-mod suggest;
+pub(crate) mod suggest;
 
 #[cfg(test)]
 pub(crate) use at::checker_type_of;
@@ -56,7 +56,7 @@ pub fn check_unit_cached(
     cache: StmtCache,
     selection: &Selection,
 ) -> (Vec<Diagnostic>, StmtCache) {
-    let Some(u) = task.units.get(unit) else {
+    let Some(u) = task.unit(unit) else {
         return (Vec::new(), StmtCache::default());
     };
     if u.is_robotware() {
@@ -269,7 +269,7 @@ impl<'t> Cx<'t> {
     pub(crate) fn related_item(&self, r: ItemRef, message: impl Into<String>) -> Option<Related> {
         let (_, range) = self.task.item_name(r)?;
         let file = (r.unit != self.unit_idx)
-            .then(|| self.task.units.get(r.unit).map(|u| u.path.clone()))
+            .then(|| self.task.unit(r.unit).map(|u| u.path.clone()))
             .flatten();
         Some(Related {
             file,

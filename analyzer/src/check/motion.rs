@@ -55,7 +55,7 @@ fn conf_off(cx: &mut Cx<'_>) -> ConfOff {
         return c;
     }
     let mut c = ConfOff::default();
-    for u in &cx.task.units {
+    for (_, u) in cx.task.live_units() {
         let o = conf_off_in(&u.text);
         c.linear |= o.linear;
         c.joint |= o.joint;

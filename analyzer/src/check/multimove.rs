@@ -54,13 +54,17 @@ impl TaskCalls<'_> {
     /// text of their declarations.
     fn user_routines(&self, name: &str) -> impl Iterator<Item = &str> {
         let key = fold(name);
-        let refs = self.task.globals.get(&key).into_iter().flatten();
-        let locals = self.task.locals.get(&key).into_iter().flatten();
-        refs.chain(locals)
+        let refs: Vec<_> = self
+            .task
+            .globals
+            .refs(&key)
+            .chain(self.task.locals.refs(&key))
+            .collect();
+        refs.into_iter()
             .filter(|r| matches!(r.item, Item::Routine(_)))
             .filter_map(|r| {
-                let decl = self.task.routine(*r)?;
-                self.task.units.get(r.unit)?.text.get(decl.range.clone())
+                let decl = self.task.routine(r)?;
+                self.task.unit(r.unit)?.text.get(decl.range.clone())
             })
     }
 

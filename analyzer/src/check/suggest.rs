@@ -1,6 +1,9 @@
 //! "Did you mean": the visible name of the same kind nearest to an
 //! unresolved one, by edit distance.
 
+use std::collections::HashMap;
+use std::sync::{Arc, Mutex, OnceLock, PoisonError};
+
 use super::Cx;
 use crate::names::fold;
 use crate::task::{Item, Task};
@@ -83,36 +86,79 @@ fn keep_nearer(best: &mut Option<(usize, String)>, other: Option<(usize, String)
     }
 }
 
-/// The task's global name closest to `key` within `limit` edits, memoised
-/// per task (the same unresolved name tends to recur in many places).
+/// The task's global name of kind `kind` closest to `key` within `limit`
+/// edits: the first (in the index's order) of the nearest.
 fn close_global(task: &Task, key: &str, limit: usize, kind: Kind) -> Option<(usize, String)> {
-    let mut memo = task
-        .close_names
-        .lock()
-        .unwrap_or_else(std::sync::PoisonError::into_inner);
-    let memo_key = format!("{}{key}", kind.prefix());
-    if let Some(found) = memo.get(&memo_key) {
-        return found.clone();
-    }
+    let near = task.close_names.near(task, key, limit);
     let mut best: Option<(usize, String)> = None;
-    for (folded, refs) in &task.globals {
-        if chars(folded).abs_diff(chars(key)) > limit {
+    for (d, folded) in near.iter() {
+        if best.as_ref().is_some_and(|(bd, _)| d >= bd) {
             continue;
         }
-        let Some(r) = refs.iter().find(|r| kind.matches(r.item)) else {
+        let Some(r) = task.globals.refs(folded).find(|r| kind.matches(r.item)) else {
             continue;
         };
-        let d = edit_distance(key, folded);
-        if d > 0
-            && d <= limit
-            && best.as_ref().is_none_or(|(bd, _)| d < *bd)
-            && let Some((n, _)) = task.item_name(*r)
-        {
-            best = Some((d, n.to_owned()));
+        if let Some((n, _)) = task.item_name(r) {
+            best = Some((*d, n.to_owned()));
         }
     }
-    memo.insert(memo_key, best.clone());
     best
+}
+
+/// The global names of a task near others, for "did you mean": built
+/// once per group and shared by its views (which leave out what they hide
+/// when they pick a name). Asking for a name costs the names of about its
+/// length, not every name of the task.
+#[derive(Debug, Default)]
+pub(crate) struct CloseNames {
+    /// The folded global names by length, each with its place in the
+    /// index's order.
+    by_len: OnceLock<Vec<Vec<(usize, String)>>>,
+    /// For each folded name asked, the global names within its limit:
+    /// (distance, folded name), in the index's order. The same unresolved
+    /// name tends to recur in many places and files.
+    near: Mutex<HashMap<String, Near>>,
+}
+
+/// Names near an asked one: (distance, folded name).
+type Near = Arc<[(usize, String)]>;
+
+impl CloseNames {
+    fn near(&self, task: &Task, key: &str, limit: usize) -> Near {
+        let mut memo = self.near.lock().unwrap_or_else(PoisonError::into_inner);
+        if let Some(found) = memo.get(key) {
+            return found.clone();
+        }
+        let by_len = self.by_len.get_or_init(|| {
+            let mut by_len: Vec<Vec<(usize, String)>> = Vec::new();
+            for (order, name) in task.globals.names().enumerate() {
+                let len = chars(name);
+                if by_len.len() <= len {
+                    by_len.resize_with(len + 1, Vec::new);
+                }
+                by_len[len].push((order, name.clone()));
+            }
+            by_len
+        });
+        let len = chars(key);
+        let lo = len.saturating_sub(limit).min(by_len.len());
+        let hi = (len + limit + 1).min(by_len.len());
+        let mut found: Vec<(usize, usize, &str)> = by_len[lo..hi]
+            .iter()
+            .flatten()
+            .filter_map(|(order, name)| {
+                let d = edit_distance(key, name);
+                (d > 0 && d <= limit).then_some((*order, d, name.as_str()))
+            })
+            .collect();
+        found.sort_unstable_by_key(|&(order, _, _)| order);
+        let found: Arc<[(usize, String)]> = found
+            .into_iter()
+            .map(|(_, d, n)| (d, n.to_owned()))
+            .collect();
+        memo.insert(key.to_owned(), found.clone());
+        found
+    }
 }
 
 /// What kind of name a "did you mean" looks for.
@@ -140,15 +186,6 @@ impl Kind {
                 | (Kind::Routine, Item::Routine(_))
                 | (Kind::Type, Item::Record(_) | Item::Alias(_))
         )
-    }
-
-    /// Keeps the kinds apart in the task's memo of suggestions.
-    fn prefix(self) -> &'static str {
-        match self {
-            Kind::Data => "d:",
-            Kind::Routine => "r:",
-            Kind::Type => "t:",
-        }
     }
 }
 

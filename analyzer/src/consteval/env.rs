@@ -23,7 +23,7 @@ impl<'t> Shared<'t> {
     ) -> Shared<'t> {
         let mut offsets = Vec::with_capacity(task.units.len());
         let mut n = 0;
-        for u in &task.units {
+        for u in task.units.iter() {
             offsets.push(n);
             n += u.items.modules.len();
         }
@@ -37,8 +37,22 @@ impl<'t> Shared<'t> {
     }
 
     pub(super) fn index(&self, unit: usize, module: usize) -> Option<usize> {
-        let count = self.task.units.get(unit)?.items.modules.len();
+        let count = self.task.unit(unit)?.items.modules.len();
         (module < count).then(|| self.offsets.get(unit).map(|o| o + module))?
+    }
+
+    /// Calls `f` with the syntax tree of `unit` (of this task): its own if
+    /// in memory, else one parsed again and kept for the rest of the check
+    /// that asks (a constant of another module is often read many times),
+    /// or for this call only.
+    pub(super) fn with_tree<R>(&self, unit: &Unit, f: impl FnOnce(&Tree) -> R) -> R {
+        if unit.tree_loaded() {
+            return unit.with_tree(f);
+        }
+        match self.inits {
+            Some(inits) => f(&inits.tree_of(unit)),
+            None => unit.with_tree(f),
+        }
     }
 
     fn types(&self) -> &crate::ty::Types<'t> {
@@ -146,7 +160,7 @@ impl Env for ModuleScope<'_, '_> {
             let Some(d) = task.data(r) else {
                 continue;
             };
-            let Some(unit) = task.units.get(r.unit) else {
+            let Some(unit) = task.unit(r.unit) else {
                 return Lookup::Unknown;
             };
             let Some(scope) = self.scope_of(r.unit, r.module) else {
@@ -155,7 +169,7 @@ impl Env for ModuleScope<'_, '_> {
             return data_lookup(
                 self.shared,
                 d,
-                self.shared.inits.and_then(|c| c.slot(r)),
+                self.shared.inits.and_then(|c| c.slot(task, r)),
                 unit,
                 Some(scope),
                 scope,
@@ -284,12 +298,12 @@ pub(super) fn data_lookup<'a>(
     is_builtin: &dyn Fn(&str) -> bool,
     dims_depth: &Cell<u32>,
 ) -> Lookup<'a> {
-    let ty = decl_type(d, unit, dims_env, dims_depth);
+    let ty = decl_type(shared, d, unit, dims_env, dims_depth);
     let lower = || {
-        d.init
-            .as_ref()
-            .and_then(|r| expression_at(unit, r.clone()))
-            .map(|n| lower_with(n, &unit.text, is_builtin))
+        let r = d.init.as_ref()?;
+        shared.with_tree(unit, |tree| {
+            expression_in(tree, r.clone()).map(|n| lower_with(n, &unit.text, is_builtin))
+        })
     };
     let init = || -> Option<Cow<'a, Expr>> {
         match slot {
@@ -322,17 +336,24 @@ pub(super) fn data_lookup<'a>(
 
 /// The declared type of data, with the array sizes that are known (a size
 /// that is not a constant is 0: not checked).
-pub(super) fn decl_type(d: &DataDecl, unit: &Unit, env: &dyn Env, depth: &Cell<u32>) -> Type {
+pub(super) fn decl_type(
+    shared: &Shared<'_>,
+    d: &DataDecl,
+    unit: &Unit,
+    env: &dyn Env,
+    depth: &Cell<u32>,
+) -> Type {
     let name = d.ty.as_ref().map_or("?", |t| t.name.as_str());
     let dims = d
         .dims
         .iter()
-        .map(|r| array_size(unit, r.clone(), env, depth))
+        .map(|r| array_size(shared, unit, r.clone(), env, depth))
         .collect();
     Type::array(name, dims)
 }
 
 pub(super) fn array_size(
+    shared: &Shared<'_>,
     unit: &Unit,
     range: Range<usize>,
     env: &dyn Env,
@@ -347,11 +368,13 @@ pub(super) fn array_size(
     if depth.get() >= 2 {
         return 0;
     }
-    let Some(node) = expression_at(unit, range) else {
+    let lowered = shared.with_tree(unit, |tree| {
+        expression_in(tree, range).map(|n| crate::lower::lower(n, &unit.text))
+    });
+    let Some(expr) = lowered else {
         return 0;
     };
     depth.set(depth.get() + 1);
-    let expr = crate::lower::lower(node, &unit.text);
     let v = rapid_evaluator::eval_as(&expr, Some(&Type::named("num")), env);
     depth.set(depth.get() - 1);
     match v.ok().and_then(|v| v.as_f64()) {
@@ -360,9 +383,9 @@ pub(super) fn array_size(
     }
 }
 
-/// The outermost expression node spanning exactly `range`.
-pub(super) fn expression_at(unit: &Unit, range: Range<usize>) -> Option<Node<'_>> {
-    path_to(unit.tree().root_node(), range.clone())
+/// The outermost expression node of `tree` spanning exactly `range`.
+pub(super) fn expression_in(tree: &Tree, range: Range<usize>) -> Option<Node<'_>> {
+    path_to(tree.root_node(), range.clone())
         .into_iter()
         .map(|(n, _)| n)
         .find(|n| n.byte_range() == range && is_expression(crate::syntax_util::kind(*n)))

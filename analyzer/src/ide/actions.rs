@@ -19,7 +19,7 @@ pub fn code_actions(
     range: Range<usize>,
     diagnostics: &[Diagnostic],
 ) -> Vec<CodeAction> {
-    let Some(u) = task.units.get(unit) else {
+    let Some(u) = task.unit(unit) else {
         return Vec::new();
     };
     let fits = |r: &Range<usize>| {

@@ -131,7 +131,7 @@ pub fn completions_for(
     details: bool,
     trigger: Option<char>,
 ) -> Vec<CompletionItem> {
-    let Some(u) = task.units.get(unit) else {
+    let Some(u) = task.unit(unit) else {
         return Vec::new();
     };
     let bf = before(&u.text, offset);
@@ -370,7 +370,7 @@ fn visible_routines(
     let module = cx.module.map(|(i, _)| i);
     let task = cx.task;
     let mut visit = |r: &crate::task::ItemRef| {
-        let (Some(d), Some(u)) = (task.routine(*r), task.units.get(r.unit)) else {
+        let (Some(d), Some(u)) = (task.routine(*r), task.unit(r.unit)) else {
             return;
         };
         let kind = match d.kind {

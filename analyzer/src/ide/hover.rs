@@ -18,7 +18,7 @@ const MAX_DECL: usize = 160;
 /// Markdown for the name, constant expression or robtarget literal at
 /// `offset`, with the range it describes.
 pub fn hover(task: &Task, unit: usize, offset: usize) -> Option<HoverResult> {
-    let u = task.units.get(unit)?;
+    let u = task.unit(unit)?;
     if let Some(node) = name_at(u.tree(), offset) {
         let def = resolve(task, unit, node);
         if let Some(def) = def {
@@ -130,7 +130,7 @@ pub(crate) fn describe(task: &Task, def: &Def<'_>) -> Option<String> {
             out.push_str("\n\nI/O signal from the configuration (EIO.cfg)");
         }
         Def::Module { unit, module } => {
-            let u = task.units.get(*unit)?;
+            let u = task.unit(*unit)?;
             let m = u.items.modules.get(*module)?;
             let line = first_line_from(&u.text, m.name_range.start);
             out.push_str(&code(&format!("MODULE {line}")));
@@ -158,7 +158,7 @@ pub(crate) fn describe(task: &Task, def: &Def<'_>) -> Option<String> {
             decl,
             routine,
         } => {
-            let u = task.units.get(*unit)?;
+            let u = task.unit(*unit)?;
             out.push_str(&code(&shorten(u.text.get(decl.range.clone())?)));
             let _ = write!(out, "\n\nroutine data of `{}`", routine.name);
             push_comments(&mut out, &u.text, decl.range.start);
@@ -171,7 +171,7 @@ pub(crate) fn describe(task: &Task, def: &Def<'_>) -> Option<String> {
             let _ = write!(out, "\n\ncomponent of `{}`", rec.name);
         }
         Def::Item(r) => {
-            let u = task.units.get(r.unit)?;
+            let u = task.unit(r.unit)?;
             let m = task.module(*r)?;
             let (start, shown) = match r.item {
                 Item::Data(i) => {
@@ -391,13 +391,14 @@ fn robtarget_of_def(task: &Task, def: &Def<'_>) -> Option<String> {
         Def::Local { unit, decl, .. } => (*unit, decl.init.clone()?),
         _ => return None,
     };
-    let u = task.units.get(unit)?;
-    let node = u
-        .tree()
-        .root_node()
-        .named_descendant_for_byte_range(init.start, init.end)?;
-    (node.kind() == kind::AGGREGATE).then_some(())?;
-    decode_robtarget(node, &u.text)
+    let u = task.unit(unit)?;
+    u.with_tree(|tree| {
+        let node = tree
+            .root_node()
+            .named_descendant_for_byte_range(init.start, init.end)?;
+        (node.kind() == kind::AGGREGATE).then_some(())?;
+        decode_robtarget(node, &u.text)
+    })
 }
 
 /// The numbers of an aggregate's elements (each a number, maybe negated).
@@ -534,12 +535,11 @@ fn literal_initialiser(task: &Task, def: &Def<'_>) -> bool {
         },
         _ => return false,
     };
-    task.units
-        .get(unit)
-        .and_then(|u| {
-            u.tree()
-                .root_node()
+    task.unit(unit).is_some_and(|u| {
+        u.with_tree(|tree| {
+            tree.root_node()
                 .named_descendant_for_byte_range(init.start, init.end)
+                .is_some_and(super::inlay::is_literal)
         })
-        .is_some_and(super::inlay::is_literal)
+    })
 }

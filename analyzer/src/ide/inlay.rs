@@ -54,7 +54,7 @@ pub fn inlay_hints(
     range: Range<usize>,
     parameters: ParameterHints,
 ) -> Vec<InlayHint> {
-    let Some(u) = task.units.get(unit) else {
+    let Some(u) = task.unit(unit) else {
         return Vec::new();
     };
     let text = &u.text;

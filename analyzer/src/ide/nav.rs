@@ -13,19 +13,19 @@ use crate::names::{fold, same};
 use crate::sema::scope::Scope;
 use crate::sema::signature::{Arg, Signature, Target, bind_args};
 use crate::syntax::{field, kind};
-use crate::task::{Item, Task};
+use crate::task::{Item, Task, Unit};
 
 fn location(task: &Task, def: &Def<'_>) -> Option<Location> {
     let (unit, range, full_range) = def.location(task)?;
     Some(Location {
-        path: task.units.get(unit)?.path.clone(),
+        path: task.unit(unit)?.path.clone(),
         range,
         full_range,
     })
 }
 
 fn def_at<'t>(task: &'t Task, unit: usize, offset: usize) -> Option<Def<'t>> {
-    let u = task.units.get(unit)?;
+    let u = task.unit(unit)?;
     let node = name_at(u.tree(), offset)?;
     resolve(task, unit, node)
 }
@@ -104,7 +104,7 @@ pub(crate) fn uses(
         Def::Param { .. } => None,
         Def::Local { unit, routine, .. } => Some((*unit, routine.range.clone())),
         Def::ForVar { unit, range, .. } | Def::Label { unit, range, .. } => {
-            let u = task.units.get(*unit);
+            let u = task.unit(*unit);
             let routine = u.and_then(|u| {
                 u.items
                     .modules
@@ -117,64 +117,86 @@ pub(crate) fn uses(
         _ => None,
     };
     let mut out = Vec::new();
-    for (ui, u) in task.units.iter().enumerate() {
+    for (ui, u) in task.live_units() {
         if only_unit.is_some_and(|o| o != ui) || scope.as_ref().is_some_and(|(su, _)| *su != ui) {
             continue;
         }
-        let root = u.tree().root_node();
-        let node = match &scope {
-            Some((_, r)) => root.named_descendant_for_byte_range(r.start, r.end),
-            None => Some(root),
-        };
-        let Some(node) = node else { continue };
-        // The scope of each routine is made once; the FOR variables around
-        // a use (which it does not hold) come from the use's path.
-        let mut scopes = super::tokens::Scopes::new(task, ui);
-        // A label resolves the same in its whole routine: once per routine.
-        let mut label: Option<(usize, Option<DefKey>)> = None;
-        let mut lists = ArgLists::default();
-        for_each_name_spelt(node, &u.text, &name, |path| {
-            let Some(&[(parent, _), (n, field)]) = path.get(path.len().saturating_sub(2)..) else {
-                return;
-            };
-            let Some(cx) = scopes.at(n.start_byte()) else {
-                return;
-            };
-            let is_label = matches!(
-                (parent.kind(), field),
-                (kind::LABEL, Some(field::NAME)) | (kind::GOTO_STATEMENT, Some(field::LABEL))
-            );
-            let routine = cx.routine.as_ref().map(|r| r.decl.range.start);
-            let d = match (&label, routine) {
-                (Some((at, d)), Some(r)) if is_label && *at == r => d.clone(),
-                _ => {
-                    let for_vars = for_vars_around(path, &u.text);
-                    let pushed = for_vars.len();
-                    if let Some(r) = cx.routine.as_mut() {
-                        r.for_vars.extend(for_vars);
-                    }
-                    let d = resolve_at(cx, n, parent, field).map(|d| d.key(task));
-                    let write = d.as_ref() == Some(&key)
-                        && (is_write(path) || passed_by_reference(cx, path, &mut lists));
-                    if let Some(r) = cx.routine.as_mut() {
-                        let keep = r.for_vars.len().saturating_sub(pushed);
-                        r.for_vars.truncate(keep);
-                    }
-                    if d.as_ref() == Some(&key) {
-                        out.push((ui, n.byte_range(), write));
-                    }
-                    if is_label && let Some(r) = routine {
-                        label = Some((r, d));
-                    }
-                    return;
-                }
-            };
-            if d.as_ref() == Some(&key) {
-                out.push((ui, n.byte_range(), false));
-            }
-        });
+        if u.tree_loaded() {
+            uses_in(task, ui, u, &key, &name, scope.as_ref(), &mut out);
+        } else {
+            // A file whose tree was released is read with a tree parsed for
+            // this search only (it stays released).
+            let loaded = u.loaded();
+            let task = task.with_unit(ui, loaded.clone());
+            uses_in(&task, ui, &loaded, &key, &name, scope.as_ref(), &mut out);
+        }
     }
     out
+}
+
+/// The uses of the declaration `key` (named `name`) in unit `ui` of
+/// `task` (in `scope`, a unit and range, if given), added to `out`.
+fn uses_in(
+    task: &Task,
+    ui: usize,
+    u: &Unit,
+    key: &DefKey,
+    name: &str,
+    scope: Option<&(usize, Range<usize>)>,
+    out: &mut Vec<(usize, Range<usize>, bool)>,
+) {
+    let root = u.tree().root_node();
+    let node = match &scope {
+        Some((_, r)) => root.named_descendant_for_byte_range(r.start, r.end),
+        None => Some(root),
+    };
+    let Some(node) = node else { return };
+    // The scope of each routine is made once; the FOR variables around
+    // a use (which it does not hold) come from the use's path.
+    let mut scopes = super::tokens::Scopes::new(task, ui);
+    // A label resolves the same in its whole routine: once per routine.
+    let mut label: Option<(usize, Option<DefKey>)> = None;
+    let mut lists = ArgLists::default();
+    for_each_name_spelt(node, &u.text, name, |path| {
+        let Some(&[(parent, _), (n, field)]) = path.get(path.len().saturating_sub(2)..) else {
+            return;
+        };
+        let Some(cx) = scopes.at(n.start_byte()) else {
+            return;
+        };
+        let is_label = matches!(
+            (parent.kind(), field),
+            (kind::LABEL, Some(field::NAME)) | (kind::GOTO_STATEMENT, Some(field::LABEL))
+        );
+        let routine = cx.routine.as_ref().map(|r| r.decl.range.start);
+        let d = match (&label, routine) {
+            (Some((at, d)), Some(r)) if is_label && *at == r => d.clone(),
+            _ => {
+                let for_vars = for_vars_around(path, &u.text);
+                let pushed = for_vars.len();
+                if let Some(r) = cx.routine.as_mut() {
+                    r.for_vars.extend(for_vars);
+                }
+                let d = resolve_at(cx, n, parent, field).map(|d| d.key(task));
+                let write = d.as_ref() == Some(key)
+                    && (is_write(path) || passed_by_reference(cx, path, &mut lists));
+                if let Some(r) = cx.routine.as_mut() {
+                    let keep = r.for_vars.len().saturating_sub(pushed);
+                    r.for_vars.truncate(keep);
+                }
+                if d.as_ref() == Some(key) {
+                    out.push((ui, n.byte_range(), write));
+                }
+                if is_label && let Some(r) = routine {
+                    label = Some((r, d));
+                }
+                return;
+            }
+        };
+        if d.as_ref() == Some(key) {
+            out.push((ui, n.byte_range(), false));
+        }
+    });
 }
 
 /// The variables of the FOR loops around the end of `path`, outermost
@@ -338,7 +360,7 @@ fn references_of(task: &Task, def: &Def<'_>, include_declaration: bool) -> Vec<L
         .filter(|(u, r, _)| include_declaration || decl != Some((*u, r.start)))
         .filter_map(|(u, range, _)| {
             Some(Location {
-                path: task.units.get(u)?.path.clone(),
+                path: task.unit(u)?.path.clone(),
                 full_range: range.clone(),
                 range,
             })
@@ -436,7 +458,7 @@ pub(crate) fn is_reserved(name: &str) -> bool {
 /// The range of the name at `offset` if it can be renamed; a message
 /// otherwise (reserved words, built-ins, signals, nothing declared).
 pub fn prepare_rename(task: &Task, unit: usize, offset: usize) -> Result<Range<usize>, String> {
-    let u = task.units.get(unit).ok_or("no such file")?;
+    let u = task.unit(unit).ok_or("no such file")?;
     let Some(node) = name_at(u.tree(), offset) else {
         return Err("there is no name here to rename".to_owned());
     };
@@ -549,7 +571,7 @@ fn rename_in(
             // Each scope once (entering one is not free: thousands of uses
             // in one routine entered it thousands of times).
             let within = |r: &Range<usize>| r.start <= range.start && range.start <= r.end;
-            let module = task.units.get(*u).and_then(|unit| {
+            let module = task.unit(*u).and_then(|unit| {
                 unit.items
                     .modules
                     .iter()
@@ -595,7 +617,10 @@ fn rename_in(
     }
     Ok(by_unit
         .into_iter()
-        .filter_map(|(u, edits)| Some((task.units.get(u)?.path.clone(), edits)))
+        .filter_map(|(u, mut edits)| {
+            edits.sort_by_key(|e| e.range.start);
+            Some((task.unit(u)?.path.clone(), edits))
+        })
         .collect())
 }
 

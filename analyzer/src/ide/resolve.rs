@@ -237,11 +237,8 @@ pub(crate) fn component_def<'t>(cx: &Scope<'t>, ty: &Ty, name: &str) -> Option<D
 pub(crate) fn any_item(task: &Task, name: &str, kind: impl Fn(Item) -> bool) -> Option<ItemRef> {
     let key = fold(name);
     task.globals
-        .get(&key)
-        .into_iter()
-        .chain(task.locals.get(&key))
-        .flatten()
-        .copied()
+        .refs(&key)
+        .chain(task.locals.refs(&key))
         .find(|r| kind(r.item))
 }
 
@@ -249,11 +246,8 @@ pub(crate) fn any_item(task: &Task, name: &str, kind: impl Fn(Item) -> bool) -> 
 fn item_declared_at(task: &Task, unit: usize, name: &str, range: Range<usize>) -> Option<ItemRef> {
     let key = fold(name);
     task.globals
-        .get(&key)
-        .into_iter()
-        .chain(task.locals.get(&key))
-        .flatten()
-        .copied()
+        .refs(&key)
+        .chain(task.locals.refs(&key))
         .find(|r| r.unit == unit && task.item_name(*r).is_some_and(|(_, n)| n == range))
 }
 

@@ -12,7 +12,7 @@ use crate::task::Task;
 
 /// The routine of the call around `offset` and the call's context.
 pub(crate) fn call_sig(task: &Task, unit: usize, offset: usize) -> Option<(Signature, CallCx)> {
-    let u = task.units.get(unit)?;
+    let u = task.unit(unit)?;
     let bf = before(&u.text, offset);
     if bf.in_comment || bf.in_string {
         return None;

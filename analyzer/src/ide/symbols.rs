@@ -140,7 +140,7 @@ const MAX_WORKSPACE_SYMBOLS: usize = 500;
 pub fn workspace_symbols(tasks: &[Arc<Task>], query: &str) -> Vec<(String, Symbol)> {
     let mut found: Vec<(u8, String, Symbol)> = Vec::new();
     for task in tasks {
-        for unit in &task.units {
+        for unit in task.units.iter() {
             for m in &unit.items.modules {
                 let module = module_symbol(unit, m, false);
                 let mut all = vec![Symbol {

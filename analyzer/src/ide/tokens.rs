@@ -33,7 +33,7 @@ impl<'t> Scopes<'t> {
     pub(crate) fn new(task: &'t Task, unit: usize) -> Scopes<'t> {
         let mut routines = Vec::new();
         let mut modules = Vec::new();
-        if let Some(u) = task.units.get(unit) {
+        if let Some(u) = task.unit(unit) {
             for m in &u.items.modules {
                 modules.push(m.range.clone());
                 routines.extend(m.routines.iter().map(|r| r.range.clone()));
@@ -92,7 +92,7 @@ pub fn semantic_tokens(
     unit: usize,
     range: Option<Range<usize>>,
 ) -> Vec<SemanticToken> {
-    let Some(u) = task.units.get(unit) else {
+    let Some(u) = task.unit(unit) else {
         return Vec::new();
     };
     let text = &u.text;

@@ -34,9 +34,13 @@ pub(crate) fn check(cx: &mut Cx<'_>, module: &Module) {
     if !cx.task.is_certain() {
         return;
     }
-    let first = cx.task.excluded.iter().find_map(|e| {
-        let (_, range) = e.modules.iter().find(|(n, _)| same(n, &module.name))?;
-        (e.path < cx.unit.path).then(|| (e.path.clone(), range.clone()))
+    let first = cx.task.left_out().find_map(|u| {
+        let m = u
+            .items
+            .modules
+            .iter()
+            .find(|m| same(&m.name, &module.name))?;
+        (u.path < cx.unit.path).then(|| (u.path.clone(), m.name_range.clone()))
     });
     let Some((path, range)) = first else {
         return;

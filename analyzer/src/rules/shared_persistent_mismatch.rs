@@ -111,10 +111,9 @@ pub(crate) fn task_name(other: &SharedPers) -> &str {
 
 fn is_alias(task: &Task, name: &str) -> bool {
     let folded = fold(name);
-    [task.globals.get(&folded), task.locals.get(&folded)]
-        .into_iter()
-        .flatten()
-        .flatten()
+    task.globals
+        .refs(&folded)
+        .chain(task.locals.refs(&folded))
         .any(|r| matches!(r.item, Item::Alias(_)))
 }
 

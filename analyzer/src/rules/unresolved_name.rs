@@ -71,7 +71,7 @@ pub(crate) fn pending_declare_fix() -> Fix {
 /// when none of these tells. Not safe: the type (and VAR) are guesses.
 /// `None` outside a routine.
 pub(crate) fn declare_fix(task: &Task, unit: usize, range: Range<usize>) -> Option<Fix> {
-    let u = task.units.get(unit)?;
+    let u = task.unit(unit)?;
     let name = u.text.get(range.clone())?;
     let routine = routine_around(u.tree().root_node(), range.start)?;
     let ty = infer_type(task, unit, range).unwrap_or_else(|| "num".to_owned());
@@ -121,7 +121,7 @@ fn routine_around(root: Node<'_>, offset: usize) -> Option<Node<'_>> {
 /// The type a name at `range` must have: from an assignment's other side,
 /// or the parameter it is passed to.
 fn infer_type(task: &Task, unit: usize, range: Range<usize>) -> Option<String> {
-    let u = task.units.get(unit)?;
+    let u = task.unit(unit)?;
     let node = u
         .tree()
         .root_node()

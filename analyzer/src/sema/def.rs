@@ -145,7 +145,7 @@ impl Def<'_> {
                 Some((r.unit, range.clone(), range.clone()))
             }
             Def::Module { unit, module } => {
-                let m = task.units.get(*unit)?.items.modules.get(*module)?;
+                let m = task.unit(*unit)?.items.modules.get(*module)?;
                 Some((*unit, m.name_range.clone(), m.range.clone()))
             }
             _ => None,

@@ -29,7 +29,7 @@ pub(crate) fn visible(task: &Task, unit: usize, module: Option<usize>, key: &str
     if let Some(globals) = task.globals.get(key) {
         own.extend(globals.iter().filter(here));
         if own.is_empty() {
-            return globals.clone();
+            return globals.into_owned();
         }
     }
     own
@@ -97,7 +97,7 @@ impl<'t> Scope<'t> {
     /// routine the parameters, the routine data and the variables of the
     /// `FOR` loops that enclose the offset.
     pub(crate) fn at(task: &'t Task, unit: usize, offset: usize) -> Option<Scope<'t>> {
-        let u: &'t Unit = task.units.get(unit)?;
+        let u: &'t Unit = task.unit(unit)?;
         let mut scope = Scope::of_unit(task, unit, u);
         let within = |r: &Range<usize>| r.start <= offset && offset <= r.end;
         scope.module = u

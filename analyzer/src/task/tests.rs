@@ -109,3 +109,43 @@ fn the_interface_covers_each_declared_input() {
         assert!(!changed[..i].contains(h), "change {i}");
     }
 }
+
+/// A unit checked with its tree parsed again ([`Task::with_unit`],
+/// [`Unit::loaded`]) reports what it reports with the tree kept, and the
+/// trees that were released stay released: the other modules whose
+/// constants the check evaluates, and those a hover and a reference search
+/// read, are parsed for the call only.
+#[test]
+fn released_trees_stay_released() {
+    let data =
+        "MODULE Data\n  CONST num n := 3;\n  CONST num k := n * 2;\n  VAR num arr{k};\nENDMODULE\n";
+    let main = "MODULE Main\n  PROC main()\n    VAR num x;\n    x := 10 / (k - 6);\n    x := arr{n};\n    Undeclared;\n  ENDPROC\nENDMODULE\n";
+    let kept: Vec<Arc<Unit>> = [("t/data.mod", data), ("t/main.mod", main)]
+        .into_iter()
+        .map(|(p, t)| Arc::new(Unit::new(p.into(), t.into(), None)))
+        .collect();
+    let released: Vec<Arc<Unit>> = [("t/data.mod", data), ("t/main.mod", main)]
+        .into_iter()
+        .map(|(p, t)| {
+            let mut u = Unit::new(p.into(), t.into(), None);
+            u.release_tree();
+            Arc::new(u)
+        })
+        .collect();
+    let expected = crate::check::check_unit(&Task::new("t".into(), kept, None), 1);
+    assert!(!expected.is_empty());
+    let task = Task::new("t".into(), released.clone(), None);
+    let none_loaded = || released.iter().all(|u| !u.tree_loaded());
+    // main.mod open (its tree in memory), data.mod released
+    let open_main = task.with_unit(1, released[1].loaded());
+    assert_eq!(crate::check::check_unit(&open_main, 1), expected);
+    assert!(none_loaded(), "check");
+    let at = main.find("arr").unwrap_or_default();
+    assert!(crate::ide::hover(&open_main, 1, at).is_some());
+    assert!(none_loaded(), "hover");
+    // data.mod open, main.mod released
+    let open_data = task.with_unit(0, released[0].loaded());
+    let n = data.find("n :=").unwrap_or_default();
+    assert_eq!(crate::ide::references(&open_data, 0, n, true, &[]).len(), 3);
+    assert!(none_loaded(), "references");
+}

@@ -21,7 +21,7 @@ use std::sync::Arc;
 
 use crate::layout::Grouping;
 use crate::names::fold;
-use crate::task::{Excluded, Unit};
+use crate::task::{Clashes, Unit};
 
 /// The entry routine a program starts from unless configured otherwise.
 const ENTRY: &str = "main";
@@ -84,12 +84,11 @@ fn copies(units: &[Arc<Unit>]) -> Vec<(usize, usize)> {
 /// [`copies`] (bounds the pairs counted in a folder of thousands of files).
 const MOST_SHARING: usize = 256;
 
-/// For each unit of a group (by index) that clashes with others, the units
-/// it clashes with, in order: units that declare the same module, and in a
-/// plain folder units that both declare the entry routine or are copies of
-/// one module.
-pub(super) fn clashes(units: &[Arc<Unit>], grouping: Grouping) -> HashMap<usize, Vec<usize>> {
-    // Folded names to the units that declare them.
+/// The units of a group that clash with others: units that declare the
+/// same module, and in a plain folder units that both declare the entry
+/// routine or are copies of one module.
+pub(super) fn clashes(units: &[Arc<Unit>], grouping: Grouping) -> Clashes {
+    // Folded module names to the units that declare them.
     let mut modules: HashMap<String, Vec<usize>> = HashMap::new();
     let mut entries: Vec<usize> = Vec::new();
     for (u, unit) in units.iter().enumerate() {
@@ -104,62 +103,13 @@ pub(super) fn clashes(units: &[Arc<Unit>], grouping: Grouping) -> HashMap<usize,
             }
         }
     }
-    let mut out: HashMap<usize, Vec<usize>> = HashMap::new();
-    let mut clash = |list: &[usize]| {
-        for (i, &a) in list.iter().enumerate() {
-            for &b in &list[i + 1..] {
-                if a != b {
-                    out.entry(a).or_default().push(b);
-                    out.entry(b).or_default().push(a);
-                }
-            }
-        }
+    let mut classes: Vec<Vec<usize>> = modules.into_values().filter(|l| l.len() > 1).collect();
+    classes.push(entries);
+    let pairs = match grouping {
+        Grouping::Folder => copies(units),
+        _ => Vec::new(),
     };
-    for list in modules.values() {
-        clash(list);
-    }
-    clash(&entries);
-    if grouping == Grouping::Folder {
-        for (a, b) in copies(units) {
-            clash(&[a, b]);
-        }
-    }
-    for list in out.values_mut() {
-        list.sort_unstable();
-        list.dedup();
-    }
-    out
-}
-
-/// The units of a view for unit `owner`: every unit of the group but those
-/// it clashes with, the owner's new index among them, and what was left out.
-pub(super) fn view_units(
-    units: &[Arc<Unit>],
-    owner: usize,
-    left_out: &[usize],
-) -> (Vec<Arc<Unit>>, usize, Vec<Excluded>) {
-    let mut kept = Vec::new();
-    let mut excluded = Vec::new();
-    let mut index = 0;
-    for (i, unit) in units.iter().enumerate() {
-        if left_out.contains(&i) {
-            excluded.push(Excluded {
-                path: unit.path.clone(),
-                modules: unit
-                    .items
-                    .modules
-                    .iter()
-                    .map(|m| (m.name.clone(), m.name_range.clone()))
-                    .collect(),
-            });
-            continue;
-        }
-        if i == owner {
-            index = kept.len();
-        }
-        kept.push(unit.clone());
-    }
-    (kept, index, excluded)
+    Clashes::new(units.len(), classes, &pairs)
 }
 
 #[cfg(test)]
@@ -182,9 +132,9 @@ mod tests {
             unit("f/o.mod", other),
         ];
         let found = clashes(&units, Grouping::Folder);
-        assert_eq!(found.get(&0), Some(&vec![1]));
-        assert_eq!(found.get(&1), Some(&vec![0]));
-        assert_eq!(found.get(&2), None);
+        assert_eq!(found.partners(0), vec![1]);
+        assert_eq!(found.partners(1), vec![0]);
+        assert!(!found.any(2));
         // a backup's task loads what it has: never guessed
         assert!(clashes(&units, Grouping::Backup).is_empty());
     }
@@ -203,9 +153,9 @@ mod tests {
             unit("t/c.mod", "MODULE Tools\nENDMODULE\n"),
         ];
         let found = clashes(&units, Grouping::Backup);
-        assert_eq!(found.get(&0), Some(&vec![1]));
-        assert_eq!(found.get(&1), Some(&vec![0]));
-        assert_eq!(found.get(&2), None);
+        assert_eq!(found.partners(0), vec![1]);
+        assert_eq!(found.partners(1), vec![0]);
+        assert!(!found.any(2));
     }
 
     #[test]
@@ -224,22 +174,34 @@ mod tests {
         assert!(clashes(&units, Grouping::Backup).is_empty());
         let found = clashes(&units, Grouping::Folder);
         // `main` twice; the persistent `n` of one type is one object.
-        assert_eq!(found.get(&0), Some(&vec![1]));
-        assert_eq!(found.get(&2), None);
+        assert_eq!(found.partners(0), vec![1]);
+        assert!(!found.any(2));
     }
 
     #[test]
     fn a_view_leaves_out_the_clashing_units() {
-        let units = [
-            unit("t/a.mod", "MODULE Main\nENDMODULE\n"),
-            unit("t/b.mod", "MODULE Main\nENDMODULE\n"),
+        let units = vec![
+            unit("t/a.mod", "MODULE Main\n  PROC p()\n  ENDPROC\nENDMODULE\n"),
+            unit("t/b.mod", "MODULE Main\n  PROC p()\n  ENDPROC\nENDMODULE\n"),
             unit("t/c.mod", "MODULE Tools\nENDMODULE\n"),
         ];
-        let (kept, owner, excluded) = view_units(&units, 1, &[0]);
-        assert_eq!(kept.len(), 2);
-        assert_eq!(kept[owner].path, "t/b.mod");
-        assert_eq!(excluded.len(), 1);
-        assert_eq!(excluded[0].path, "t/a.mod");
-        assert_eq!(excluded[0].modules[0].0, "Main");
+        let mut group = crate::task::Task::new("t".into(), units.clone(), None);
+        group.clashes = Arc::new(clashes(&units, Grouping::Backup));
+        assert!(!group.owns(1) && group.owns(2));
+        assert_eq!(group.globals.get("p").map(|r| r.len()), Some(2));
+        let view = group.view(1);
+        let live: Vec<&str> = view.live_units().map(|(_, u)| u.path.as_str()).collect();
+        assert_eq!(live, ["t/b.mod", "t/c.mod"]);
+        let left: Vec<&str> = view.left_out().map(|u| u.path.as_str()).collect();
+        assert_eq!(left, ["t/a.mod"]);
+        let p = view
+            .globals
+            .get("p")
+            .map(|r| r.to_vec())
+            .unwrap_or_default();
+        assert_eq!(p.len(), 1);
+        assert_eq!(p[0].unit, 1);
+        // the view shares the group's units
+        assert!(Arc::ptr_eq(&view.units, &group.units));
     }
 }

@@ -8,7 +8,7 @@
 //! its task and the statement results, [`Check::run`] computes, and
 //! [`Workspace::finish`] takes the result back.
 
-use std::sync::Arc;
+use std::sync::{Arc, Weak};
 
 use super::Workspace;
 use crate::check::StmtCache;
@@ -29,8 +29,9 @@ pub struct CheckInputs {
     pub grouping: Grouping,
     pub complete: bool,
     pub loaded_elsewhere: bool,
-    /// In a view of the task, the files it leaves out.
-    pub excluded: Vec<String>,
+    /// In a view of the task, the unit it is made for (what it leaves out
+    /// follows from the group's interface and the owner).
+    pub owner: Option<usize>,
 }
 
 impl CheckInputs {
@@ -41,7 +42,7 @@ impl CheckInputs {
             grouping: task.grouping,
             complete: task.complete,
             loaded_elsewhere: task.loaded_elsewhere,
-            excluded: task.excluded.iter().map(|e| e.path.clone()).collect(),
+            owner: task.owner,
         }
     }
 }
@@ -56,10 +57,10 @@ pub(super) struct Checked {
     /// The rules checked.
     selection: Selection,
     diagnostics: Arc<Vec<Diagnostic>>,
-    /// The other files its findings point into (related locations), as
-    /// they were: the result holds their positions, which the task's
-    /// interface leaves out.
-    pointed: Vec<Arc<Unit>>,
+    /// The other files its diagnostics point into (related locations), as
+    /// they were: an edit there moves what they point at even when the
+    /// task's interface (which ignores positions) stays the same.
+    related: Vec<(String, Weak<Unit>)>,
     /// Statement results, for the next check of this file.
     pub(super) statements: StmtCache,
 }
@@ -87,7 +88,7 @@ impl Check {
     pub fn run(self) -> CheckResult {
         let (diagnostics, statements) =
             diagnostics_selected(&self.task, &self.unit, self.statements, &self.selection);
-        let pointed = pointed_units(&self.task, &diagnostics);
+        let related = related_units(&self.task, &self.unit, &diagnostics);
         let diagnostics = Arc::new(diagnostics);
         CheckResult {
             path: self.path,
@@ -98,11 +99,32 @@ impl Check {
                 revision: self.revision,
                 selection: self.selection,
                 diagnostics,
-                pointed,
+                related,
                 statements,
             },
         }
     }
+}
+
+/// The other units of `task` that `diagnostics` (of `unit`) point into.
+fn related_units(
+    task: &Task,
+    unit: &Unit,
+    diagnostics: &[Diagnostic],
+) -> Vec<(String, Weak<Unit>)> {
+    let paths: std::collections::BTreeSet<&str> = diagnostics
+        .iter()
+        .flat_map(|d| &d.related)
+        .filter_map(|r| r.file.as_deref())
+        .filter(|p| *p != unit.path)
+        .collect();
+    if paths.is_empty() {
+        return Vec::new();
+    }
+    task.live_units()
+        .filter(|(_, u)| paths.contains(u.path.as_str()))
+        .map(|(_, u)| (u.path.clone(), Arc::downgrade(u)))
+        .collect()
 }
 
 impl Workspace {
@@ -123,16 +145,16 @@ impl Workspace {
         selection: &Selection,
     ) -> Option<Arc<Vec<Diagnostic>>> {
         let c = self.checked.get(path)?;
-        let same_places = c.pointed.iter().all(|p| {
-            task.units
-                .iter()
-                .find(|u| u.path == p.path)
-                .is_some_and(|u| Arc::ptr_eq(u, p))
+        let same_related = c.related.iter().all(|(p, was)| {
+            self.units
+                .get(p)
+                .or_else(|| self.extras.iter().find(|u| u.path == *p))
+                .is_some_and(|now| std::ptr::eq(Arc::as_ptr(now), was.as_ptr()))
         });
         (Arc::ptr_eq(&c.unit, unit)
             && c.inputs == CheckInputs::of(task)
             && c.selection == *selection
-            && same_places)
+            && same_related)
             .then(|| c.diagnostics.clone())
     }
 
@@ -209,24 +231,6 @@ impl Workspace {
     }
 }
 
-/// The units of `task` that related locations of `diagnostics` name.
-fn pointed_units(task: &Task, diagnostics: &[Diagnostic]) -> Vec<Arc<Unit>> {
-    let mut out: Vec<Arc<Unit>> = Vec::new();
-    for file in diagnostics
-        .iter()
-        .flat_map(|d| &d.related)
-        .filter_map(|r| r.file.as_deref())
-    {
-        if out.iter().any(|u| u.path == file) {
-            continue;
-        }
-        if let Some(u) = task.units.iter().find(|u| u.path == file) {
-            out.push(u.clone());
-        }
-    }
-    out
-}
-
 /// The diagnostics of one unit of a task, computed afresh: syntax, then
 /// semantic, sorted by position.
 pub fn diagnostics_of(task: &Task, unit: &Arc<Unit>) -> Vec<Diagnostic> {
@@ -253,7 +257,7 @@ pub fn diagnostics_selected(
 ) -> (Vec<Diagnostic>, StmtCache) {
     let mut out = unit.syntax.clone();
     let mut next = StmtCache::default();
-    if let Some(idx) = task.units.iter().position(|u| Arc::ptr_eq(u, unit)) {
+    if let Some(idx) = task.index_of(unit) {
         let (found, cache) = crate::check::check_unit_cached(task, idx, cache, selection);
         out.extend(found);
         next = cache;

@@ -169,6 +169,13 @@ impl Workspace {
     /// interface or constants, or it is new): whether they are to be
     /// checked again.
     pub fn set_unit(&mut self, unit: Unit) -> bool {
+        self.set_shared_unit(Arc::new(unit))
+    }
+
+    /// [`Workspace::set_unit`] of a unit shared with other workspaces (a
+    /// module of the extra paths, parsed once for every part of a
+    /// project).
+    pub fn set_shared_unit(&mut self, unit: Arc<Unit>) -> bool {
         // Which HOME/ modules the backup's tasks load may change with what
         // the unit loads or which modules it holds.
         let moved = self.units.get(&unit.path).is_none_or(|old| {
@@ -179,10 +186,9 @@ impl Workspace {
         }
         // The key as grouped so far (a new adoption drops every task).
         let key = self.key_so_far(&unit.path);
-        let unit = Arc::new(unit);
         // The same file replaced: the task keeps its members.
         let mut members = match self.forget_task(&key) {
-            Some(task) => Some(task.units.clone()),
+            Some(task) => Some(task.units.to_vec()),
             None => self.members.remove(&key),
         };
         match members
@@ -203,6 +209,14 @@ impl Workspace {
             self.forget_sibling_tasks(&key);
         }
         seen
+    }
+
+    /// Adds or replaces many units ([`Workspace::set_unit`] of each; which
+    /// `HOME/` modules the tasks load is worked out when first asked).
+    pub fn set_units(&mut self, units: impl IntoIterator<Item = Unit>) {
+        for unit in units {
+            self.set_unit(unit);
+        }
     }
 
     /// [`Workspace::task_key`] without working out the adoption of
@@ -231,7 +245,12 @@ impl Workspace {
     /// (a project's extra paths). A task's own configuration wins where
     /// both declare a signal.
     pub fn add_extra_config(&mut self, text: &str) {
-        self.extra_configs.push(parse_config(text));
+        self.add_parsed_extra_config(parse_config(text));
+    }
+
+    /// [`Workspace::add_extra_config`] of a configuration read already.
+    pub fn add_parsed_extra_config(&mut self, config: Config) {
+        self.extra_configs.push(config);
         self.forget_all_tasks();
     }
 
@@ -358,17 +377,13 @@ impl Workspace {
         let Some(idx) = group.units.iter().position(|u| u.path == path) else {
             return group;
         };
-        let Some(left_out) = group.clashing.get(&idx) else {
+        if group.owns(idx) {
             return group;
-        };
+        }
         if let Some(view) = self.views.get(&group.key).and_then(|v| v.get(path)) {
             return view.clone();
         }
-        let (units, owner, excluded) = alternatives::view_units(&group.units, idx, left_out);
-        let mut view = self.make_task(group.key.clone(), units, group.grouping);
-        view.owner = Some(owner);
-        view.excluded = excluded;
-        let view = Arc::new(view);
+        let view = Arc::new(group.view(idx));
         self.views
             .entry(group.key.clone())
             .or_default()
@@ -415,7 +430,7 @@ impl Workspace {
             _ => Grouping::Folder,
         };
         let mut task = self.make_task(key.clone(), units, grouping);
-        task.clashing = alternatives::clashes(&task.units, grouping);
+        task.clashes = Arc::new(alternatives::clashes(&task.units, grouping));
         let task = Arc::new(task);
         self.tasks.insert(key, task.clone());
         task
@@ -705,7 +720,7 @@ pub fn program_modules(path: &str, xml: &str) -> Vec<String> {
 /// not even one kept inside it; a configuration elsewhere applies to the
 /// tasks below its folder, but not to a backup below it, which a controller
 /// configured with its own.
-fn config_applies(path: &str, key: &str) -> bool {
+pub fn config_applies(path: &str, key: &str) -> bool {
     let backup = crate::layout::backup_root(key);
     if let Some(root) = home::syspar_root(path).or_else(|| home::backinfo_root(path)) {
         return backup == Some(root);
@@ -716,8 +731,9 @@ fn config_applies(path: &str, key: &str) -> bool {
 }
 
 /// The folder an I/O configuration applies below: a backup's root for
-/// `.../SYSPAR/EIO.cfg`, else the file's own folder.
-fn config_root(path: &str) -> &str {
+/// `.../SYSPAR/EIO.cfg`, else the file's own folder ([`config_applies`]
+/// decides which tasks below it).
+pub fn config_root(path: &str) -> &str {
     let dir = path.rsplit_once(['/', '\\']).map_or("", |(d, _)| d);
     match dir.rsplit_once(['/', '\\']) {
         Some((parent, last))

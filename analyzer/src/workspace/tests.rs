@@ -318,3 +318,46 @@ fn related_positions_follow_edits_of_the_other_file() {
     assert_eq!(*cached, diagnostics_of(&task, &unit));
     assert_eq!(cached[0].related[0].range, 31..38);
 }
+
+/// A `HOME/` module that `SYS.cfg` loads into a task joins it whatever the
+/// order the files come in: the task folder may come after the module (a
+/// server reads files in any order), one at a time or all at once.
+#[test]
+fn a_home_module_joins_its_task_whatever_the_order_of_the_files() {
+    let sys = "SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n  -Name \"T_ROB1\"\n#\nCAB_TASK_MODULES:\n  -File \"HOME:/Tool.sys\" -ModName \"Tool\" -Task \"T_ROB1\"\n";
+    let main = "MODULE M\n  PROC main()\n    ToolOn;\n  ENDPROC\nENDMODULE\n";
+    let tool = "MODULE Tool(SYSMODULE)\n  PROC ToolOn()\n  ENDPROC\nENDMODULE\n";
+    let files = |b: &str| {
+        [
+            (format!("{b}/HOME/Tool.sys"), tool),
+            (format!("{b}/RAPID/TASK1/PROGMOD/M.mod"), main),
+        ]
+    };
+    let unresolved = |ws: &mut Workspace, b: &str| {
+        ws.diagnostics(&format!("{b}/RAPID/TASK1/PROGMOD/M.mod"))
+            .iter()
+            .filter(|d| d.rule.code == "W101")
+            .count()
+    };
+    for one_by_one in [true, false] {
+        let mut ws = Workspace::new();
+        ws.set_config("b/SYSPAR/SYS.cfg", sys);
+        ws.set_config("c/SYSPAR/SYS.cfg", sys);
+        let units = files("b")
+            .into_iter()
+            .chain(files("c"))
+            .map(|(p, t)| Unit::new(p, t.to_owned(), None));
+        if one_by_one {
+            for u in units {
+                ws.set_unit(u);
+            }
+        } else {
+            ws.set_units(units);
+        }
+        assert_eq!(unresolved(&mut ws, "b"), 0, "one by one: {one_by_one}");
+        assert_eq!(unresolved(&mut ws, "c"), 0, "one by one: {one_by_one}");
+        // The task folder gone, the module is no longer its task's.
+        ws.remove_file("c/RAPID/TASK1/PROGMOD/M.mod");
+        assert_eq!(ws.task_key("c/HOME/Tool.sys"), "c/HOME");
+    }
+}

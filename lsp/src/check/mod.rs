@@ -14,11 +14,14 @@ mod output;
 mod run;
 mod settings;
 mod suppress;
+#[cfg(test)]
+mod tests;
 
 use std::collections::{HashMap, HashSet};
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
+use std::sync::atomic::{AtomicU64, Ordering};
 
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rapid_analyzer::check::StmtCache;
@@ -178,6 +181,14 @@ fn progress_bar(files: usize) -> ProgressBar {
 /// checked, else, for `extra`, every checked task) but are not reported.
 /// Diagnostics are the analyzer's for the rules `selection` has on for
 /// each file (the settings' severities and suppressions are not applied).
+///
+/// The project is checked in parts that share no task
+/// ([`crate::project::parts`]), each read, parsed, checked and dropped on
+/// its own, so that memory follows the parts in progress, not the project.
+/// A part keeps its files' syntax trees from the parse to the check while
+/// the parts in progress keep less than [`KEEP_TREES`] bytes of text in
+/// trees; a larger part releases each tree once its items are lowered and
+/// parses each file again for its check.
 pub fn check_files(
     env: &dyn Environment,
     found: &Discovery,
@@ -187,7 +198,40 @@ pub fn check_files(
     selection: &(dyn Fn(&std::path::Path) -> Selection + Sync),
     progress: &ProgressBar,
 ) -> Vec<Outcome> {
-    let files = &found.files;
+    let project = Project {
+        env,
+        found,
+        context,
+        extra,
+        controller,
+    };
+    check_in_parts(&project, selection, progress, KEEP_TREES)
+}
+
+/// What [`check_files`] checks.
+struct Project<'a> {
+    env: &'a dyn Environment,
+    found: &'a Discovery,
+    context: &'a Discovery,
+    extra: &'a Discovery,
+    controller: &'a rapid_analyzer::controller::ControllerOverride,
+}
+
+/// [`check_files`], keeping the trees of parts in progress up to
+/// `keep_trees` bytes of text.
+fn check_in_parts(
+    project: &Project<'_>,
+    selection: &(dyn Fn(&std::path::Path) -> Selection + Sync),
+    progress: &ProgressBar,
+    keep_trees: u64,
+) -> Vec<Outcome> {
+    let Project {
+        env,
+        found,
+        context,
+        extra,
+        controller,
+    } = *project;
     let mut clock = std::time::Instant::now();
     // The checker needs the catalogue (some milliseconds to load): load it
     // on a thread that parsing leaves idle (a single large file is parsed
@@ -195,12 +239,80 @@ pub fn check_files(
     rayon::spawn(|| {
         let _ = rapid_analyzer::catalogue::base();
     });
-    let (read, units) = crate::project::read_and_parse(env, files, &|| progress.inc(1));
-    lap("reading, decoding, parsing and item trees", &mut clock);
+    let split = crate::project::parts::split(env, found, context);
+    let extra = crate::project::parts::read_extra(env, extra, &split.names);
+    lap("discovery of the parts, extra paths", &mut clock);
+    let kept = AtomicU64::new(0);
+    let mut results: Vec<PartResult> = split
+        .parts
+        .par_iter()
+        .map(|part| {
+            // Trees kept from parse to check while the parts in progress
+            // keep few enough; else released and parsed again.
+            let keep = kept.fetch_add(part.bytes, Ordering::Relaxed) + part.bytes <= keep_trees;
+            if !keep {
+                kept.fetch_sub(part.bytes, Ordering::Relaxed);
+            }
+            let result = check_part(
+                env, part, &split, &extra, controller, selection, keep, progress,
+            );
+            if keep {
+                kept.fetch_sub(part.bytes, Ordering::Relaxed);
+            }
+            result
+        })
+        .collect();
+    lap("reading, parsing and checking", &mut clock);
+    let mut outcomes: Vec<Option<Outcome>> = found.files.iter().map(|_| None).collect();
+    for result in &mut results {
+        for (position, outcome) in result.outcomes.drain(..) {
+            if let Some(slot) = outcomes.get_mut(position) {
+                *slot = Some(outcome);
+            }
+        }
+    }
+    outcomes
+        .into_iter()
+        .zip(&found.files)
+        .map(|(o, path)| {
+            o.unwrap_or_else(|| {
+                Outcome::Skipped(
+                    path.clone(),
+                    Skip::Unreadable(crate::project::Unreadable::Io(std::io::Error::other(
+                        "not read",
+                    ))),
+                )
+            })
+        })
+        .collect()
+}
+
+/// The most bytes of text whose syntax trees the parts in progress keep
+/// from their parse to their check (trees take about 20 times their text).
+pub const KEEP_TREES: u64 = 2 * 1024 * 1024;
+
+/// The outcome of each file of a part, by its place in the project's list.
+struct PartResult {
+    outcomes: Vec<(usize, Outcome)>,
+}
+
+/// Reads, parses and checks one part of the project ([`check_files`]).
+fn check_part(
+    env: &dyn Environment,
+    part: &crate::project::parts::Part,
+    split: &crate::project::parts::Split,
+    extra: &crate::project::parts::Extra,
+    controller: &rapid_analyzer::controller::ControllerOverride,
+    selection: &(dyn Fn(&std::path::Path) -> Selection + Sync),
+    keep: bool,
+    progress: &ProgressBar,
+) -> PartResult {
+    let files = &part.found.files;
+    let (read, units) = crate::project::read_and_parse_with(env, files, &|| progress.inc(1), !keep);
     let sources = Sources {
-        found: Some(found),
-        context: Some(context),
-        extra: Some(extra),
+        found: Some(&part.found),
+        context: Some(&part.context),
+        extra: None,
     };
     let crate::project::Loaded {
         mut workspace,
@@ -209,17 +321,58 @@ pub fn check_files(
         asked: checked_paths,
         keys: checked_keys,
     } = crate::project::assemble(env, &sources, controller, read, units);
-    // Skipped files are not checked: the second half of the bar is shorter.
-    progress.set_length((files.len() + checked_paths.len()) as u64);
+    crate::project::parts::add_extra(&mut workspace, extra, &split.keys, &checked_keys);
+    let mut by_path = check_loaded(
+        &mut workspace,
+        &checked_paths,
+        &checked_keys,
+        selection,
+        progress,
+    );
+    let outcomes = read
+        .into_iter()
+        .zip(files)
+        .zip(names)
+        .zip(&part.positions)
+        .map(|(((r, path), name), &position)| {
+            let outcome = match r {
+                Ok(file) => {
+                    let diagnostics = name
+                        .and_then(|name| by_path.remove(&name))
+                        .unwrap_or_default();
+                    Outcome::Checked(Checked { file, diagnostics })
+                }
+                Err(why) => {
+                    progress.inc(1);
+                    Outcome::Skipped(path.clone(), why)
+                }
+            };
+            (position, outcome)
+        })
+        .collect();
+    PartResult { outcomes }
+}
+
+/// The diagnostics of the files `checked_paths` of the tasks
+/// `checked_keys` of a workspace, by the analyzer's name of the file; a
+/// file whose tree was released is parsed again for its check only. A name
+/// the checked files lack is one finding per task
+/// ([`rapid_analyzer::check::once::per_task`]).
+fn check_loaded(
+    workspace: &mut rapid_analyzer::workspace::Workspace,
+    checked_paths: &HashSet<String>,
+    checked_keys: &std::collections::BTreeSet<String>,
+    selection: &(dyn Fn(&std::path::Path) -> Selection + Sync),
+    progress: &ProgressBar,
+) -> HashMap<String, Vec<Diagnostic>> {
     let tasks = workspace.checks();
-    lap("extra paths, configuration and task indexes", &mut clock);
-    // One job per checked file, largest first (a task may be one big
-    // backup: its files are spread over the threads too).
     let mut jobs: Vec<(&Arc<rapid_analyzer::task::Task>, &Arc<Unit>)> = tasks
         .iter()
         .filter(|(task, u)| checked_keys.contains(&task.key) && checked_paths.contains(&u.path))
         .map(|(task, u)| (task, u))
         .collect();
+    // One job per checked file, largest first (a task may be one big
+    // backup: its files are spread over the threads too).
     jobs.sort_by(|a, b| {
         b.1.text
             .len()
@@ -230,57 +383,41 @@ pub fn check_files(
         .par_iter()
         .map(|(task, u)| {
             let rules = selection(std::path::Path::new(&u.path));
-            let found = diagnostics_selected(task, u, StmtCache::default(), &rules).0;
-            let d = (u.path.clone(), found);
+            let found = if u.tree_loaded() {
+                diagnostics_selected(task, u, StmtCache::default(), &rules).0
+            } else {
+                let loaded = u.loaded();
+                let idx = task.index_of(u).unwrap_or(usize::MAX);
+                let task = task.with_unit(idx, loaded.clone());
+                diagnostics_selected(&task, &loaded, StmtCache::default(), &rules).0
+            };
             progress.inc(1);
-            d
+            (u.path.clone(), found)
         })
         .collect();
-    // A name the checked files lack is one finding per task, with every
-    // other use as a related location.
-    {
-        let mut findings: Vec<(
-            &Arc<rapid_analyzer::task::Task>,
-            &Arc<Unit>,
-            Vec<Diagnostic>,
-        )> = jobs
-            .iter()
-            .filter_map(|(task, u)| Some((*task, *u, by_path.remove(&u.path)?)))
-            .collect();
-        let mut files: Vec<rapid_analyzer::check::once::FileFindings<'_>> = findings
-            .iter_mut()
-            .map(
-                |(task, u, diagnostics)| rapid_analyzer::check::once::FileFindings {
-                    task: &task.key,
-                    path: &u.path,
-                    text: &u.text,
-                    diagnostics,
-                },
-            )
-            .collect();
-        rapid_analyzer::check::once::per_task(&mut files);
-        drop(files);
-        by_path.extend(findings.into_iter().map(|(_, u, d)| (u.path.clone(), d)));
-    }
-    lap("checking (analyzer)", &mut clock);
-    // Freeing every tree and index costs tens of milliseconds on a large
-    // project: off the report's path (`rapid check` exits before it ends;
-    // `rapid mcp` gets the memory back).
-    drop(jobs);
-    std::thread::spawn(move || drop((tasks, workspace)));
-    read.into_iter()
-        .zip(files)
-        .zip(names)
-        .map(|((r, path), name)| match r {
-            Ok(file) => {
-                let diagnostics = name
-                    .and_then(|name| by_path.remove(&name))
-                    .unwrap_or_default();
-                Outcome::Checked(Checked { file, diagnostics })
-            }
-            Err(why) => Outcome::Skipped(path.clone(), why),
-        })
-        .collect()
+    let mut findings: Vec<(
+        &Arc<rapid_analyzer::task::Task>,
+        &Arc<Unit>,
+        Vec<Diagnostic>,
+    )> = jobs
+        .iter()
+        .filter_map(|(task, u)| Some((*task, *u, by_path.remove(&u.path)?)))
+        .collect();
+    let mut files: Vec<rapid_analyzer::check::once::FileFindings<'_>> = findings
+        .iter_mut()
+        .map(
+            |(task, u, diagnostics)| rapid_analyzer::check::once::FileFindings {
+                task: &task.key,
+                path: &u.path,
+                text: &u.text,
+                diagnostics,
+            },
+        )
+        .collect();
+    rapid_analyzer::check::once::per_task(&mut files);
+    drop(files);
+    by_path.extend(findings.into_iter().map(|(_, u, d)| (u.path.clone(), d)));
+    by_path
 }
 
 /// `files` without those that are the same file as an earlier one.

@@ -363,7 +363,7 @@ pub fn list_symbols(
             signals_configured: task.signals.is_some(),
             truncated: false,
         };
-        for unit in &task.units {
+        for unit in task.units.iter() {
             let file = shown(roots, std::path::Path::new(&unit.path));
             let line_of = |offset: usize| {
                 unit.text[..offset.min(unit.text.len())]

@@ -48,6 +48,17 @@ pub fn read_and_parse(
     files: &[PathBuf],
     done: &(dyn Fn() + Sync),
 ) -> (Vec<Result<SourceFile, Skip>>, Vec<Option<Unit>>) {
+    read_and_parse_with(env, files, done, false)
+}
+
+/// [`read_and_parse`], releasing each unit's tree once its items are
+/// lowered when `release` (it is parsed again where it is needed).
+pub fn read_and_parse_with(
+    env: &dyn Environment,
+    files: &[PathBuf],
+    done: &(dyn Fn() + Sync),
+    release: bool,
+) -> (Vec<Result<SourceFile, Skip>>, Vec<Option<Unit>>) {
     let mut order: Vec<(u64, usize)> = files
         .iter()
         .enumerate()
@@ -58,10 +69,13 @@ pub fn read_and_parse(
         .par_iter()
         .map(|&(_, i)| {
             let read = read_source(env, &files[i]);
-            let unit = read
-                .as_ref()
-                .ok()
-                .map(|f| Unit::new(env.name(&f.path), f.text.clone(), None));
+            let unit = read.as_ref().ok().map(|f| {
+                let mut unit = Unit::new(env.name(&f.path), f.text.clone(), None);
+                if release {
+                    unit.release_tree();
+                }
+                unit
+            });
             done();
             (i, read, unit)
         })
@@ -111,9 +125,7 @@ pub fn assemble(
     if let Some(extra) = sources.extra {
         add_extra(env, &mut workspace, extra, &asked, &keys);
     }
-    for unit in units.into_iter().flatten() {
-        workspace.set_unit(unit);
-    }
+    workspace.set_units(units.into_iter().flatten());
     Loaded {
         workspace,
         read,
@@ -159,9 +171,13 @@ fn add_context(
             if asked.contains(&path) || !wanted {
                 return None;
             }
-            let unit = read_source(env, p)
-                .ok()
-                .map(|file| Unit::new(path.clone(), file.text, None));
+            // Read for its declarations, not checked: its tree is parsed
+            // again where a check reads it.
+            let unit = read_source(env, p).ok().map(|file| {
+                let mut unit = Unit::new(path.clone(), file.text, None);
+                unit.release_tree();
+                unit
+            });
             Some((path, unit))
         })
         .collect();

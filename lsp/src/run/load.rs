@@ -97,7 +97,7 @@ fn declares(task: &Task, routine: &str) -> bool {
 /// `task` with more modules (given as path and text), unless it declares
 /// a routine of theirs already.
 pub fn with_modules(task: &Arc<Task>, modules: &[(&str, &str)]) -> Arc<Task> {
-    let mut units = task.units.clone();
+    let mut units = task.units.to_vec();
     for (path, text) in modules {
         let unit = Unit::new((*path).to_owned(), (*text).to_owned(), None);
         let clash = unit
@@ -113,7 +113,11 @@ pub fn with_modules(task: &Arc<Task>, modules: &[(&str, &str)]) -> Arc<Task> {
     if units.len() == task.units.len() {
         return task.clone();
     }
-    Arc::new(Task::new(task.key.clone(), units, task.signals.clone()))
+    Arc::new(Task::new(
+        task.key.clone(),
+        units,
+        task.signals.as_deref().cloned(),
+    ))
 }
 
 /// A `--set NAME=VALUE[@SECONDS]` option.
