@@ -84,13 +84,6 @@ const WARNING_SAMPLE: &[(&str, &str, usize, bool, &str)] = &[
         "the file holds two copies of module MainModule (a generated program pasted twice, junk between): `Work` is declared in both",
     ),
     (
-        "evenator__masters/RobotStudio/RAPID/ros_config.sys",
-        "E107",
-        34,
-        false,
-        "ros_relay.mod is a self-contained socket relay with its own entry routine that uses nothing of ros_config.sys (the ROS servers' shared data): not one task, so the shared `client_ip` is no clash",
-    ),
-    (
         "1200-526406_BACKUP_2025-12-23-1933/RAPID/TASK7/PROGMOD/Gantry_CheckPrecision.mod",
         "W204",
         350,
