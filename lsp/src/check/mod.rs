@@ -230,7 +230,7 @@ fn check_in_parts(
         found,
         context,
         extra,
-        controller,
+        controller: _,
     } = *project;
     let mut clock = std::time::Instant::now();
     // The checker needs the catalogue (some milliseconds to load): load it
@@ -253,9 +253,7 @@ fn check_in_parts(
             if !keep {
                 kept.fetch_sub(part.bytes, Ordering::Relaxed);
             }
-            let result = check_part(
-                env, part, &split, &extra, controller, selection, keep, progress,
-            );
+            let result = check_part(project, part, &split, &extra, selection, keep, progress);
             if keep {
                 kept.fetch_sub(part.bytes, Ordering::Relaxed);
             }
@@ -298,15 +296,15 @@ struct PartResult {
 
 /// Reads, parses and checks one part of the project ([`check_files`]).
 fn check_part(
-    env: &dyn Environment,
+    project: &Project<'_>,
     part: &crate::project::parts::Part,
     split: &crate::project::parts::Split,
     extra: &crate::project::parts::Extra,
-    controller: &rapid_analyzer::controller::ControllerOverride,
     selection: &(dyn Fn(&std::path::Path) -> Selection + Sync),
     keep: bool,
     progress: &ProgressBar,
 ) -> PartResult {
+    let (env, controller) = (project.env, project.controller);
     let files = &part.found.files;
     let (read, units) = crate::project::read_and_parse_with(env, files, &|| progress.inc(1), !keep);
     let sources = Sources {
