@@ -119,8 +119,8 @@ pub static RULES: &[&Rule] = &[
     &shadowed_name::RULE,
     &float_equality::RULE,
     &duplicate_module::RULE,
-    &configuration_mismatch::RULE,
     &label_names_routine::RULE,
+    &configuration_mismatch::RULE,
 ];
 
 /// The rules a check runs. A rule switched off is not reported, and the
