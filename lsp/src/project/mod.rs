@@ -19,7 +19,7 @@ mod tests;
 use std::path::{Path, PathBuf};
 
 pub use discover::{Discovery, Excluder, discover, discover_in, discover_with};
-pub use load::{Loaded, Sources, assemble, load_around, read_and_parse};
+pub use load::{Loaded, Sources, assemble, load, load_around, read_and_parse};
 pub use source::{SourceFile, Unreadable};
 
 /// Files larger than this are not modules a controller would load: `rapid
