@@ -129,11 +129,22 @@ impl std::hash::Hash for RobotSetting {
     }
 }
 
+/// Where a task's robot is named.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RobotSource {
+    /// The controller's `MOC.cfg` (a backup's, or one beside the modules).
+    MocCfg,
+    /// The project's `[controller] robot` (rapid.toml or the editor's
+    /// settings).
+    Project,
+}
+
 /// A task's robot, and where it comes from.
 #[derive(Clone, Debug, PartialEq)]
 pub struct TaskRobot {
     pub robot: Robot,
-    /// `MOC.cfg ROB_1 (ROB1_120_0.58_3)`, `rapid.toml`.
+    pub source: RobotSource,
+    /// `MOC.cfg ROB_1 (ROB1_120_0.58_3)`, `the project's [controller] robot`.
     pub origin: String,
 }
 
@@ -183,6 +194,7 @@ pub fn resolve(
                 let limits = JointLimits::of(model).with_moc_bounds(&moc.bounds);
                 Ok(Some(Arc::new(TaskRobot {
                     robot: Robot::new(model).with_limits(limits).with_base(moc.base),
+                    source: RobotSource::MocCfg,
                     origin: format!("MOC.cfg {} ({})", moc.name, moc.robot_type),
                 })))
             }
@@ -201,6 +213,7 @@ pub fn resolve(
             let limits = setting.limits.map_or(JointLimits::of(model), JointLimits);
             Ok(Some(Arc::new(TaskRobot {
                 robot: Robot::new(model).with_limits(limits),
+                source: RobotSource::Project,
                 origin: "the project's [controller] robot".into(),
             })))
         }

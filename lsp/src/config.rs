@@ -110,25 +110,7 @@ impl ControllerConfig {
         }
         let robot = match &self.robot {
             Some(name) => {
-                match rapid_robot::lookup(name) {
-                    rapid_robot::Lookup::Found(_) => {}
-                    rapid_robot::Lookup::Unsupported(why) => {
-                        return Err(("robot".into(), format!("not modelled: {why}")));
-                    }
-                    rapid_robot::Lookup::Unknown => {
-                        let known: Vec<&str> = rapid_robot::models()
-                            .iter()
-                            .map(|m| m.name.as_str())
-                            .collect();
-                        return Err((
-                            "robot".into(),
-                            format!(
-                                "`{name}` is not a modelled robot; known: {}",
-                                known.join(", ")
-                            ),
-                        ));
-                    }
-                }
+                rapid_robot::find_model(name).map_err(|why| ("robot".to_owned(), why))?;
                 let limits = match &self.joint_limits {
                     Some(l) => match <[[f64; 2]; 6]>::try_from(l.as_slice()) {
                         Ok(l) if l.iter().all(|[lo, hi]| lo < hi) => Some(l),

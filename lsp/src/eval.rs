@@ -88,38 +88,70 @@ pub fn evaluate(
     file: Option<&Path>,
     initial: bool,
 ) -> Result<Evaluation, Failure> {
-    let expr_text = expr_text.trim();
-    if expr_text.is_empty() {
-        return Err(Failure::Usage("the expression is empty".to_owned()));
-    }
-    let source = format!("{PREFIX}{expr_text}{SUFFIX}");
-    let expr_unit = Arc::new(Unit::new(EVAL_PATH.to_owned(), source, None));
-    check_syntax(&expr_unit, expr_text).map_err(Failure::Syntax)?;
+    let expr = Expression::parse(expr_text)?;
     let (task, at) = match file {
         None => (
-            Arc::new(Task::new(String::new(), vec![expr_unit.clone()], None)),
+            Arc::new(Task::new(String::new(), vec![expr.unit.clone()], None)),
             None,
         ),
         Some(path) => {
             program(env, path).map_err(|m| Failure::Usage(format!("{}: {m}", path.display())))?
         }
     };
-    let Some(node) = expression_node(&expr_unit, expr_text) else {
-        return Err(Failure::Usage("not a single expression".to_owned()));
-    };
-    let module = at.and_then(|(unit, offset)| {
-        let m = task.units.get(unit)?.items.module_at(offset)?;
-        Some((unit, m))
-    });
-    let expr = lower_with(node, &expr_unit.text, &|name| {
-        consteval::is_builtin_call(&task, module, name)
-    });
     let options = if initial {
         EnvOptions::initial_values()
     } else {
         EnvOptions::default()
     };
-    consteval::eval_in(&task, at, &expr, None, options).map_err(Failure::Eval)
+    expr.value_in(&task, at, None, options)
+}
+
+/// An expression parsed (in a small synthetic module), to be evaluated in
+/// a task.
+pub struct Expression {
+    unit: Arc<Unit>,
+    text: String,
+}
+
+impl Expression {
+    /// Parses `text` (blanks around it ignored): an empty text, or one that
+    /// is not a single expression, is refused.
+    pub fn parse(text: &str) -> Result<Expression, Failure> {
+        let text = text.trim();
+        if text.is_empty() {
+            return Err(Failure::Usage("the expression is empty".to_owned()));
+        }
+        let source = format!("{PREFIX}{text}{SUFFIX}");
+        let unit = Arc::new(Unit::new(EVAL_PATH.to_owned(), source, None));
+        check_syntax(&unit, text).map_err(Failure::Syntax)?;
+        Ok(Expression {
+            unit,
+            text: text.to_owned(),
+        })
+    }
+
+    /// Its value in `task`, names resolving at `at` (a unit of the task and
+    /// an offset in it; `None`: the task's global data); `expected`: the
+    /// type an aggregate (`[1, 2, 3]`) is read as.
+    pub fn value_in(
+        &self,
+        task: &Task,
+        at: Option<(usize, usize)>,
+        expected: Option<&rapid_evaluator::Type>,
+        options: EnvOptions,
+    ) -> Result<Evaluation, Failure> {
+        let Some(node) = expression_node(&self.unit, &self.text) else {
+            return Err(Failure::Usage("not a single expression".to_owned()));
+        };
+        let module = at.and_then(|(unit, offset)| {
+            let m = task.units.get(unit)?.items.module_at(offset)?;
+            Some((unit, m))
+        });
+        let expr = lower_with(node, &self.unit.text, &|name| {
+            consteval::is_builtin_call(task, module, name)
+        });
+        consteval::eval_in(task, at, &expr, expected, options).map_err(Failure::Eval)
+    }
 }
 
 /// Prints the value or the error; the exit code.
@@ -372,7 +404,7 @@ fn syntax_error(e: &SyntaxError, expr: &str, format: Format) -> ExitCode {
 
 /// A task, and the unit and offset where names resolve (`None`: the
 /// task's globals).
-type Program = (Arc<Task>, Option<(usize, usize)>);
+pub type Program = (Arc<Task>, Option<(usize, usize)>);
 
 /// The task of `path` (a module, or a folder) and where names resolve: in a
 /// module, at its start; in a folder, the task's globals.
@@ -380,12 +412,31 @@ fn program(env: &dyn crate::project::Environment, path: &Path) -> Result<Program
     let around =
         crate::project::load_around(env, &[path.to_owned()]).map_err(|(_, e)| e.to_string())?;
     let mut workspace = around.loaded.workspace;
-    let is_file = !around.named.is_empty();
-    if let Some(Err(why)) = around
-        .files
+    place(
+        env,
+        path,
+        &mut workspace,
+        &around.files,
+        &around.loaded.read,
+    )
+}
+
+/// The task of `path` in a loaded `workspace` (`files` were found and
+/// `read` in its loading) and where names resolve: for a module, its task
+/// at the module's start; for a folder, its own task's globals (the task
+/// of a module directly in it, else the only task under it).
+pub fn place(
+    env: &dyn crate::project::Environment,
+    path: &Path,
+    workspace: &mut rapid_analyzer::workspace::Workspace,
+    files: &[PathBuf],
+    read: &[Result<crate::project::SourceFile, crate::project::Skip>],
+) -> Result<Program, String> {
+    let is_file = matches!(env.kind(path), Ok(crate::project::Kind::File(_)));
+    if let Some(Err(why)) = files
         .iter()
         .position(|f| f == path)
-        .and_then(|i| around.loaded.read.get(i))
+        .and_then(|i| read.get(i))
         .filter(|_| is_file)
     {
         return Err(why.to_string());
@@ -407,8 +458,7 @@ fn program(env: &dyn crate::project::Environment, path: &Path) -> Result<Program
         return Ok((task, at));
     }
     // The folder's own task: the task of a module directly in it.
-    let wanted = around
-        .files
+    let wanted = files
         .iter()
         .find(|f| f.parent() == Some(path))
         .map(|f| workspace.task_key(&env.name(f)));

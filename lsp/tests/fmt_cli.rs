@@ -7,9 +7,12 @@ use std::process::{Command, Output, Stdio};
 mod support;
 use support::*;
 
-const UNFORMATTED: &str = "MODULE M\nVAR num a:=1;\nENDMODULE\n";
-/// The default layout: only the indentation changes.
-const FORMATTED: &str = "MODULE M\n    VAR num a:=1;\nENDMODULE\n";
+/// A module indented by 4 with one line typed a column in.
+const UNFORMATTED: &str =
+    "MODULE M\n VAR num a:=1;\n    VAR num b:=2;\n    VAR num c:=3;\nENDMODULE\n";
+/// Its layout: only that line's indentation changes.
+const FORMATTED: &str =
+    "MODULE M\n    VAR num a:=1;\n    VAR num b:=2;\n    VAR num c:=3;\nENDMODULE\n";
 
 fn rapid(dir: &Path, args: &[&str], stdin: Option<&[u8]>) -> Output {
     let mut child = Command::new(env!("CARGO_BIN_EXE_rapid"))
@@ -93,7 +96,7 @@ fn diff_prints_a_unified_diff_and_exits_1() {
     assert_eq!(out.status.code(), Some(1));
     assert_eq!(
         text(&out.stdout),
-        "--- a/a.mod\n+++ b/a.mod\n@@ -1,3 +1,3 @@\n MODULE M\n-VAR num a:=1;\n+    VAR num a:=1;\n ENDMODULE\n"
+        "--- a/a.mod\n+++ b/a.mod\n@@ -1,5 +1,5 @@\n MODULE M\n- VAR num a:=1;\n+    VAR num a:=1;\n     VAR num b:=2;\n     VAR num c:=3;\n ENDMODULE\n"
     );
     assert_eq!(
         std::fs::read_to_string(dir.join("a.mod")).expect("read"),
@@ -128,13 +131,15 @@ fn dash_reads_stdin_and_writes_stdout() {
 fn encoding_and_line_endings_are_kept() {
     let dir = scratch("encoding");
     // Latin-1 ("Größe" with 0xF6 and 0xDF), CRLF, no final line break
-    let latin1 = b"MODULE M\r\n! Gr\xF6\xDFe\r\nVAR num a:=1;\r\nENDMODULE";
+    // (written flat, so indented by the default)
+    let latin1 =
+        b"MODULE M\r\n! Gr\xF6\xDFe\r\nVAR num a:=1;\r\nPROC p()\r\na:=2;\r\nENDPROC\r\nENDMODULE";
     std::fs::write(dir.join("a.mod"), latin1).expect("written");
     let out = rapid(&dir, &["a.mod"], None);
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     assert_eq!(
         std::fs::read(dir.join("a.mod")).expect("read"),
-        b"MODULE M\r\n    ! Gr\xF6\xDFe\r\n    VAR num a:=1;\r\nENDMODULE"
+        b"MODULE M\r\n    ! Gr\xF6\xDFe\r\n    VAR num a:=1;\r\n    PROC p()\r\n        a:=2;\r\n    ENDPROC\r\nENDMODULE"
     );
 }
 
@@ -173,7 +178,7 @@ fn rapid_toml_sets_the_layout() {
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     assert_eq!(
         std::fs::read_to_string(dir.join("src/a.mod")).expect("read"),
-        "MODULE M\n  VAR num a := 1;\nENDMODULE\n"
+        "MODULE M\n  VAR num a := 1;\n  VAR num b := 2;\n  VAR num c := 3;\nENDMODULE\n"
     );
 }
 

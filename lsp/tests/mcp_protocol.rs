@@ -28,6 +28,7 @@ fn every_tool_is_listed_with_its_schemas_and_annotations() {
             "format",
             "list_symbols",
             "lookup_builtin",
+            "reach",
             "run",
             "test"
         ]

@@ -107,12 +107,12 @@ pub fn matches(arm: &Arm, model: &Model, j: &Joints, want: &Conf) -> bool {
         && bit(j[4], EDGE_DEG, want.cfx & 1 != 0)
 }
 
-/// The solutions with the turns of each axis that the model's working
-/// range holds (within ±2 turns: axes 4 and 6 turn up to ±400 degrees, axis
-/// 3 of some arms to -230), from solutions in (-180, 180]. With `want`,
-/// axes 1, 4 and 6 take the turn that puts them in its quadrants, within
-/// the range or not (so that a limit error says by how much).
-pub fn with_turns(model: &Model, base: &[Joints], want: Option<&Conf>) -> Vec<Joints> {
+/// The solutions with the turns of each axis that the working ranges
+/// `ranges` hold (within ±2 turns: axes 4 and 6 turn up to ±400 degrees,
+/// axis 3 of some arms to -230), from solutions in (-180, 180]. With
+/// `want`, axes 1, 4 and 6 take the turn that puts them in its quadrants,
+/// within the range or not (so that a limit error says by how much).
+pub fn with_turns(ranges: &[[f64; 2]; 6], base: &[Joints], want: Option<&Conf>) -> Vec<Joints> {
     let mut out = Vec::new();
     let turns = |axis: usize, a: f64| -> Vec<f64> {
         let candidates = (-2..=2).map(|k| a + 360.0 * f64::from(k));
@@ -128,7 +128,7 @@ pub fn with_turns(model: &Model, base: &[Joints], want: Option<&Conf>) -> Vec<Jo
                 return v;
             }
         }
-        let [lo, hi] = model.limits[axis];
+        let [lo, hi] = ranges[axis];
         let mut v: Vec<f64> = candidates
             .filter(|x| *x >= lo - EDGE_DEG && *x <= hi + EDGE_DEG)
             .collect();

@@ -40,7 +40,7 @@ use nalgebra::Isometry3;
 
 pub use conf::Conf;
 pub use kinematics::{Arm, ArmPoints, Joints};
-pub use model::{Lookup, Model, lookup, model_by_name, models};
+pub use model::{Lookup, Model, find_model, lookup, model_by_name, models};
 pub use reach::{
     CLOSE_TO_SINGULARITY, Event, LIMIT_TOLERANCE_DEG, POSITION_NOT_COMPATIBLE,
     POSITION_OUTSIDE_REACH, ReachError, Solution, out_of_reach_by, violation,
@@ -133,6 +133,29 @@ impl Robot {
         conf: Option<&Conf>,
     ) -> Result<Solution, ReachError> {
         reach::reach(self, pose, conf, None)
+    }
+
+    /// The solution a move instruction gets for tool0 at `pose` (base
+    /// frame), or the controller's error for it: out of reach, or beyond a
+    /// working range in every configuration, whatever the confdata; else,
+    /// with `conf` (ConfL/ConfJ on), the solution in that configuration or
+    /// the configuration error. What `rapid check` reports for a move.
+    pub fn move_to(
+        &self,
+        pose: &Isometry3<f64>,
+        conf: Option<&Conf>,
+    ) -> Result<Solution, ReachError> {
+        reach::move_to(self, pose, conf)
+    }
+
+    /// Every joint solution for tool0 at `pose` (base frame) within the
+    /// working ranges: each configuration, with every turn of an axis that
+    /// its range holds (axes 4 and 6 often have two), ordered by
+    /// configuration. At a wrist singularity (axis 5 at zero) any split of
+    /// the rotation between axes 4 and 6 is a solution; the list holds the
+    /// solver's. Empty when the pose is out of reach or beyond the ranges.
+    pub fn solutions(&self, pose: &Isometry3<f64>) -> Vec<Solution> {
+        reach::solutions(self, pose)
     }
 
     /// As [`Robot::reach`], preferring the solution nearest joints `near`

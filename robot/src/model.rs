@@ -96,32 +96,13 @@ struct Key {
     payload: Option<f64>,
 }
 
-/// Reads `IRB 120-3/0.58`, `IRB120`, `IRB 2400/16`, `ROB1_120_0.58_3`,
-/// `ROB1_6700_LeanID_2.65_220`.
+/// Reads `IRB 120-3/0.58`, `IRB120`, `IRB 2400/16`, and MOC.cfg's robot
+/// types ([`moc_key`]).
 fn key_of(name: &str) -> Option<Key> {
     let t = name.trim();
     let upper = t.to_ascii_uppercase();
-    // MOC.cfg's robot type: ROBn_FAMILY[_VARIANT]_REACH_PAYLOAD.
-    if let Some(rest) = upper.strip_prefix("ROB") {
-        let rest = rest.trim_start_matches(|c: char| c.is_ascii_digit());
-        let rest = rest.strip_prefix('_')?;
-        let mut family = String::new();
-        let mut reach = None;
-        let mut payload = None;
-        for part in rest.split('_').filter(|p| !p.is_empty()) {
-            let number = part.parse::<f64>().ok();
-            match number {
-                Some(v) if part.contains('.') && reach.is_none() => reach = Some(v),
-                Some(v) if !family.is_empty() && reach.is_some() => payload = Some(v),
-                Some(_) if family.is_empty() => family.push_str(part),
-                _ => family.push_str(part),
-            }
-        }
-        return (!family.is_empty()).then_some(Key {
-            family,
-            reach,
-            payload,
-        });
+    if upper.starts_with("ROB") {
+        return moc_key(&upper);
     }
     let rest = upper.strip_prefix("IRB").unwrap_or(&upper).trim();
     let compact: String = rest.chars().filter(|c| !c.is_whitespace()).collect();
@@ -147,6 +128,61 @@ fn key_of(name: &str) -> Option<Key> {
     }
     (!family.is_empty()).then(|| Key {
         family: family.to_owned(),
+        reach,
+        payload,
+    })
+}
+
+/// MOC.cfg's robot type (`-use_robot_type` of the `ROBOT` instance):
+/// `ROBn_FAMILY[_VARIANT]_REACH_PAYLOAD` in the spellings controllers
+/// write: `ROB1_120_0.58_3`, `ROB2_6700_2.6_200`, `ROB1_2600ID_2.00_8`,
+/// `ROB1_6700_LeanID_2.65_220`, `ROB1_1200_0.9_5_TypeB`, and with the
+/// robot number apart, the payload before the reach and a revision after
+/// (`ROB_1_2600_12_1.85__03`). The reach is the number with a decimal
+/// point, the payload the first whole number; a number with a leading
+/// zero (`03`) and a `Type` letter (`TypeB`, `Type_B`) are revisions of the
+/// same arm; any other word is a variant (`LeanID`) and part of the family.
+fn moc_key(upper: &str) -> Option<Key> {
+    let rest = upper.strip_prefix("ROB")?.trim_start_matches('_');
+    let rest = rest.trim_start_matches(|c: char| c.is_ascii_digit());
+    let rest = rest.strip_prefix('_')?;
+    let mut family = String::new();
+    let mut variant = String::new();
+    let mut reach = None;
+    let mut payload = None;
+    let mut revision_letter = false;
+    for part in rest.split('_').filter(|p| !p.is_empty()) {
+        if std::mem::take(&mut revision_letter) && part.len() == 1 {
+            continue;
+        }
+        if family.is_empty() {
+            if part.starts_with(|c: char| c.is_ascii_digit()) {
+                family.push_str(part);
+            } else if part != "IRB" {
+                variant.push_str(part);
+            }
+            continue;
+        }
+        let whole = part.bytes().all(|b| b.is_ascii_digit());
+        if part.contains('.') {
+            match part.parse::<f64>() {
+                Ok(v) if reach.is_none() => reach = Some(v),
+                Ok(_) => {}
+                Err(_) => variant.push_str(part),
+            }
+        } else if whole {
+            if payload.is_none() && !part.starts_with('0') {
+                payload = part.parse::<f64>().ok();
+            }
+        } else if part == "TYPE" {
+            revision_letter = true;
+        } else if !(part.starts_with("TYPE") && part.len() == 5) {
+            variant.push_str(part);
+        }
+    }
+    family.push_str(&variant);
+    (!family.is_empty() && family.starts_with(|c: char| c.is_ascii_digit())).then_some(Key {
+        family,
         reach,
         payload,
     })
@@ -201,10 +237,13 @@ pub fn lookup(name: &str) -> Lookup {
     for u in &data().unsupported {
         if u.family.iter().any(|f| {
             let f = f.to_ascii_uppercase();
-            // Named families (`CRB`, `GoFa`) cover their variants; numbered
-            // ones are exact (`52` is not `5200`).
-            let named = f.starts_with(|c: char| c.is_ascii_alphabetic());
-            key.family == f || (named && key.family.starts_with(&f))
+            // A family covers its variants (`CRB` covers `CRB15000`, `1660`
+            // covers `1660ID`), but a number is not a longer one (`52` is
+            // not `5200`).
+            key.family.strip_prefix(&f).is_some_and(|tail| {
+                let named = f.starts_with(|c: char| c.is_ascii_alphabetic());
+                tail.is_empty() || named || tail.starts_with(|c: char| c.is_ascii_alphabetic())
+            })
         }) {
             return Lookup::Unsupported(format!("{name}: {}", u.reason));
         }
@@ -217,6 +256,23 @@ pub fn model_by_name(name: &str) -> Option<&'static Model> {
     match lookup(name) {
         Lookup::Found(m) => Some(m),
         _ => None,
+    }
+}
+
+/// The model `name` denotes ([`lookup`]), or why there is none, for a
+/// message: an arm we do not model (with the reason), or a name that is no
+/// modelled arm (with the names of those that are).
+pub fn find_model(name: &str) -> Result<&'static Model, String> {
+    match lookup(name) {
+        Lookup::Found(m) => Ok(m),
+        Lookup::Unsupported(why) => Err(format!("not modelled: {why}")),
+        Lookup::Unknown => {
+            let known: Vec<&str> = models().iter().map(|m| m.name.as_str()).collect();
+            Err(format!(
+                "`{name}` is not a modelled robot; known: {}",
+                known.join(", ")
+            ))
+        }
     }
 }
 
@@ -261,8 +317,54 @@ mod tests {
         assert!(matches!(lookup("ROB1_460_2.4_110"), Lookup::Unsupported(_)));
         assert!(matches!(lookup("CRB 15000-5/0.95"), Lookup::Unsupported(_)));
         assert_eq!(lookup("ROB1_6700_LeanID_2.65_220"), Lookup::Unknown);
+        assert!(matches!(
+            lookup("IRB 1660ID-4/1.55"),
+            Lookup::Unsupported(_)
+        ));
+        assert_eq!(lookup("IRB 5200"), Lookup::Unknown, "52 is not 5200");
         assert_eq!(lookup(""), Lookup::Unknown);
         assert_eq!(lookup("KR 6 R900"), Lookup::Unknown);
+    }
+
+    /// The `-use_robot_type` spellings of public controller backups
+    /// (SYSPAR/MOC.cfg of ABB-Rapid-Git, abb-rapidserver: IRB 120;
+    /// compas_rcf, PaletizadoCajasConFrascos: IRB 4600; Kraker1: IRB 6660;
+    /// abb_SAMXL_Grinding_RAPID: IRB 1200 Type B; abb-robot-welder: IRB
+    /// 2600ID; Robo_ABB_Injetora: IRB 6700-205/2.80; Tamponadora: IRB 360;
+    /// ABB_ROBOT_Socket: IRB 910SC), and the other forms controllers write
+    /// (robot number apart, payload before reach, a revision after).
+    #[test]
+    fn moc_cfg_robot_types_as_controllers_write_them() {
+        let found = |t: &str| model_by_name(t).map(|m| m.name.as_str());
+        for (t, name) in [
+            ("ROB1_120_0.58_3", "IRB 120-3/0.58"),
+            ("ROB1_4600_2.55_40", "IRB 4600-40/2.55"),
+            ("ROB1_6660_1.90_205", "IRB 6660-205/1.9"),
+            ("ROB1_1200_0.9_5_TypeB", "IRB 1200-5/0.9"),
+            ("ROB1_1200_0.9_5_Type_B", "IRB 1200-5/0.9"),
+            ("ROB_1_2600_12_1.85__03", "IRB 2600-12/1.85"),
+            ("ROB_2_2600_12_1.85", "IRB 2600-12/1.85"),
+            ("ROB2_2600_1.85_12_03", "IRB 2600-12/1.85"),
+            ("rob1_2400_1.55_16", "IRB 2400-10/1.55"),
+            ("ROB1_6650S_3.5_125", "IRB 6650S-125/3.5"),
+        ] {
+            assert_eq!(found(t), Some(name), "{t}");
+        }
+        for t in ["ROB1_2600ID_2.00_8", "ROB1_360_1.6_6", "ROB1_910SC_0.55_3"] {
+            assert!(matches!(lookup(t), Lookup::Unsupported(_)), "{t}");
+        }
+        // An arm of a modelled family whose size is not modelled, and a
+        // variant with another arm, are not guessed.
+        for t in [
+            "ROB1_6700_2.80_205",
+            "ROB1_6700_LeanID_2.65_220",
+            "ROB1_2600_1.85_99",
+            "ROB1_",
+            "ROB_",
+            "ROBOT",
+        ] {
+            assert_eq!(lookup(t), Lookup::Unknown, "{t}");
+        }
     }
 
     #[test]

@@ -165,13 +165,13 @@ pub fn reach(
             by: out_of_reach_by(robot, pose).max(0.1),
         });
     }
-    let mut all = conf::with_turns(robot.model, &base, conf);
+    let mut all = conf::with_turns(&robot.model.limits, &base, conf);
     if let Some(c) = conf {
         let singular: Vec<Joints> = base
             .iter()
             .filter_map(|j| conf::at_singularity(j, c.cf4))
             .collect();
-        all.extend(conf::with_turns(robot.model, &singular, conf));
+        all.extend(conf::with_turns(&robot.model.limits, &singular, conf));
     }
     let solution = |j: &Joints| Solution {
         joints: *j,
@@ -236,6 +236,56 @@ pub fn reach(
         }
         None => Err(least_violation(robot, all.iter())),
     }
+}
+
+/// [`Robot::move_to`].
+pub fn move_to(
+    robot: &Robot,
+    pose: &Isometry3<f64>,
+    conf: Option<&Conf>,
+) -> Result<Solution, ReachError> {
+    let any = reach(robot, pose, None, None);
+    match (any, conf) {
+        (Ok(_), Some(c)) => reach(robot, pose, Some(c), None),
+        (any, _) => any,
+    }
+}
+
+/// [`Robot::solutions`].
+pub fn solutions(robot: &Robot, pose: &Isometry3<f64>) -> Vec<Solution> {
+    let base = robot.arm.inverse(pose);
+    // Turns within the data sheet's ranges or the controller's, whichever
+    // are wider; the controller's decide what is within.
+    let mut ranges = robot.model.limits;
+    for (r, l) in ranges.iter_mut().zip(robot.limits.0) {
+        r[0] = r[0].min(l[0]);
+        r[1] = r[1].max(l[1]);
+    }
+    let mut out: Vec<Solution> = Vec::new();
+    for j in conf::with_turns(&ranges, &base, None) {
+        let seen = out
+            .iter()
+            .any(|s| s.joints.iter().zip(&j).all(|(a, b)| (a - b).abs() < 1e-6));
+        if seen || violation(&robot.limits, &j).is_some() {
+            continue;
+        }
+        out.push(Solution {
+            joints: j,
+            conf: robot.conf_of(&j),
+        });
+    }
+    out.sort_by(|a, b| {
+        let key = |s: &Solution| (s.conf.cfx, s.conf.cf1, s.conf.cf4, s.conf.cf6);
+        key(a).cmp(&key(b)).then_with(|| {
+            a.joints
+                .iter()
+                .zip(&b.joints)
+                .map(|(x, y)| x.total_cmp(y))
+                .find(|o| o.is_ne())
+                .unwrap_or(std::cmp::Ordering::Equal)
+        })
+    });
+    out
 }
 
 /// The joint-limit error of the solution that misses its limits least.

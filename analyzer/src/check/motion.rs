@@ -189,12 +189,9 @@ pub(crate) fn check<'t>(cx: &mut Cx<'t>, node: Node<'t>) {
             continue;
         };
         let flange = frames::flange_in_base(&target.pose, &tool, &wobj, &robot.robot.base);
-        // Reachable at all (any configuration, within the ranges)?
-        let any = robot.robot.reach(&flange, None);
-        let result = match (&any, use_conf) {
-            (Ok(_), true) => robot.robot.reach(&flange, Some(&target.conf)),
-            _ => any,
-        };
+        let result = robot
+            .robot
+            .move_to(&flange, use_conf.then_some(&target.conf));
         let Err(e) = result else {
             continue;
         };

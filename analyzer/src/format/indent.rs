@@ -101,7 +101,9 @@ pub(super) fn columns_from(start: usize, s: &str) -> usize {
 ///
 /// A unit counts only if at least one indented line follows it: a text
 /// written flat or on one line gets the default, 4 spaces with the module
-/// body and `CASE` indented. A unit must fit at least half of the lines.
+/// body and `CASE` indented, except a module of declarations only
+/// (`declarations_only`: no routine, record or block anywhere) at column
+/// 0, which keeps its body there. A unit must fit at least half of the lines.
 /// Failing that (a text indented at random in places), the module body
 /// goes where most of the module's own lines (declarations, routines'
 /// first and last lines) are, so a module whose routines sit at column 0
@@ -109,7 +111,10 @@ pub(super) fn columns_from(start: usize, s: &str) -> usize {
 /// one of those that fits the most lines if it fits at least a third of
 /// them, else 4 columns with `CASE` indented. Ties go to the earlier in
 /// that order (so to the default).
-pub(super) fn detect<'a>(lines: impl Iterator<Item = (Depth, &'a str)> + Clone) -> Unit {
+pub(super) fn detect<'a>(
+    lines: impl Iterator<Item = (Depth, &'a str)> + Clone,
+    declarations_only: bool,
+) -> Unit {
     let (mut total, mut flat, mut indented) = (0usize, 0usize, 0usize);
     for (depth, indent) in lines.clone() {
         total += usize::from(!depth.is_zero());
@@ -128,7 +133,15 @@ pub(super) fn detect<'a>(lines: impl Iterator<Item = (Depth, &'a str)> + Clone) 
             .count()
     };
     let unit = match best(&all_units(), lines.clone()) {
-        // not one line indented: a text written flat or on one line
+        // not one line indented: a module of declarations only, all at
+        // column 0, keeps its body there (it is what the fallback below
+        // makes of one with a few stray lines, so formatting it again
+        // must not indent it); any other text written flat or on one line
+        // gets the default
+        None if declarations_only && flat > 0 && flat == total => Unit {
+            module: false,
+            ..Unit::spaces(4)
+        },
         None => Unit::spaces(4),
         Some(unit) if fits(&unit) * 2 >= total => unit,
         Some(_) => {
@@ -264,14 +277,14 @@ mod tests {
             (depth(1, 0, 1), "        "),
             (depth(1, 0, 0), "  "),
         ];
-        assert_eq!(detect(four.into_iter()), Unit::spaces(4));
+        assert_eq!(detect(four.into_iter(), false), Unit::spaces(4));
         let tabs = [
             (depth(1, 0, 0), "\t"),
             (depth(1, 0, 1), "\t\t"),
             (depth(1, 0, 2), "\t\t\t"),
             (depth(1, 0, 1), "        "),
         ];
-        let unit = detect(tabs.into_iter());
+        let unit = detect(tabs.into_iter(), false);
         assert_eq!((unit.width, unit.tabs), (4, true));
         assert_eq!(unit.indent(depth(1, 0, 1)), "\t\t");
         // RobotStudio's statements: a tab and four spaces
@@ -280,9 +293,9 @@ mod tests {
             (depth(1, 0, 1), "\t    "),
             (depth(1, 0, 1), "\t    "),
         ];
-        assert_eq!(detect(studio.into_iter()).width, 4);
+        assert_eq!(detect(studio.into_iter(), false).width, 4);
         let one = [(depth(1, 0, 0), " "), (depth(1, 0, 0), " ")];
-        assert_eq!(detect(one.into_iter()).width, 1);
+        assert_eq!(detect(one.into_iter(), false).width, 1);
         // no unit fits half of the lines: the default
         let random = [
             (depth(1, 0, 0), "      "),
@@ -290,7 +303,7 @@ mod tests {
             (depth(1, 0, 0), " "),
             (depth(1, 0, 1), "      "),
         ];
-        assert_eq!(detect(random.into_iter()), Unit::spaces(4));
+        assert_eq!(detect(random.into_iter(), false), Unit::spaces(4));
     }
 
     #[test]
@@ -301,7 +314,7 @@ mod tests {
             (depth(1, 0, 1), "    "),
             (depth(1, 0, 2), "        "),
         ];
-        let unit = detect(flat_module.into_iter());
+        let unit = detect(flat_module.into_iter(), false);
         assert_eq!((unit.width, unit.module, unit.cases), (4, false, true));
         assert_eq!(unit.indent(depth(1, 0, 0)), "");
         assert_eq!(unit.indent(depth(1, 0, 2)), "        ");
@@ -312,7 +325,7 @@ mod tests {
             (depth(1, 1, 1), "        "),
             (depth(1, 1, 2), "            "),
         ];
-        let unit = detect(cases.into_iter());
+        let unit = detect(cases.into_iter(), false);
         assert_eq!((unit.module, unit.cases), (true, false));
     }
 
@@ -323,8 +336,30 @@ mod tests {
             (depth(1, 0, 1), ""),
             (depth(1, 0, 2), ""),
         ];
-        assert_eq!(detect(flat.into_iter()), Unit::spaces(4));
-        assert_eq!(detect(std::iter::empty()), Unit::spaces(4));
+        assert_eq!(detect(flat.into_iter(), false), Unit::spaces(4));
+        assert_eq!(detect(std::iter::empty(), true), Unit::spaces(4));
+    }
+
+    #[test]
+    fn declarations_only_at_column_0_stay_there() {
+        // what a module of declarations with a stray indented line
+        // becomes after one formatting: it must be a fixed point
+        let data = [
+            (depth(1, 0, 0), ""),
+            (depth(1, 0, 0), ""),
+            (depth(1, 0, 0), ""),
+        ];
+        let unit = detect(data.into_iter(), true);
+        assert_eq!((unit.module, unit.width), (false, 4));
+        // a routine written on the module's line is not a declaration
+        assert_eq!(detect(data.into_iter(), false), Unit::spaces(4));
+        let stray = [
+            (depth(1, 0, 0), ""),
+            (depth(1, 0, 0), "  "),
+            (depth(1, 0, 0), ""),
+            (depth(1, 0, 0), ""),
+        ];
+        assert!(!detect(stray.into_iter(), true).module);
     }
 
     #[test]
@@ -340,7 +375,7 @@ mod tests {
             }
             lines.push((depth(1, 0, 0), header));
         }
-        let unit = detect(lines.iter().copied());
+        let unit = detect(lines.iter().copied(), false);
         assert!(!unit.module, "{unit:?}");
         assert_eq!(unit.indent(depth(1, 0, 0)), "");
         // and with the bodies at one width, that width
@@ -353,7 +388,7 @@ mod tests {
                 (depth(1, 0, 0), ""),
             ]);
         }
-        let unit = detect(lines.iter().copied());
+        let unit = detect(lines.iter().copied(), false);
         assert_eq!((unit.width, unit.module), (2, false));
     }
 

@@ -201,17 +201,21 @@ fn structure<'t>(toks: &[Tok<'_>], orig: &Original<'t>) -> Structure<'t> {
 
 /// The text's indentation unit: configured, or the one most of its
 /// structure lines follow ([`indent::detect`]).
-fn file_unit(lines: &[(usize, Depth, &str)], options: &FormatOptions) -> Unit {
+fn file_unit(toks: &[Tok<'_>], lines: &[(usize, Depth, &str)], options: &FormatOptions) -> Unit {
+    // declarations only: nothing opens a block deeper than the module body
+    let declarations_only = !toks
+        .iter()
+        .any(|t| t.opens.is_some_and(|d| !d.is_zero() && !d.is_module_body()));
     match options.indent_width {
         Some(width) => Unit::spaces(width),
-        None => indent::detect(lines.iter().map(|&(_, d, s)| (d, s))),
+        None => indent::detect(lines.iter().map(|&(_, d, s)| (d, s)), declarations_only),
     }
 }
 
 /// The unit [`layout`] indents the text of `toks` with.
 pub(super) fn unit(toks: &[Tok<'_>], text: &str, options: &FormatOptions) -> Unit {
     let orig = Original::new(toks, text);
-    file_unit(&structure(toks, &orig).2, options)
+    file_unit(toks, &structure(toks, &orig).2, options)
 }
 
 /// The gap before every token.
@@ -219,7 +223,7 @@ pub(super) fn layout(toks: &[Tok<'_>], text: &str, options: &FormatOptions) -> V
     let orig = Original::new(toks, text);
     let n = toks.len();
     let (item, items, lines) = structure(toks, &orig);
-    let file = file_unit(&lines, options);
+    let file = file_unit(toks, &lines, options);
     let mut units = vec![file.clone(); items + 1];
     if options.indent_width.is_none() {
         // each item that consistently follows another unit keeps it

@@ -383,13 +383,10 @@ mod tests {
     #[test]
     fn line_endings_are_kept() {
         let crlf = "MODULE M\r\nVAR num a:=1;\r\nENDMODULE\r\n";
-        assert_eq!(fmt(crlf), "MODULE M\r\n    VAR num a:=1;\r\nENDMODULE\r\n");
-        assert_eq!(
-            spaced(crlf),
-            "MODULE M\r\n    VAR num a := 1;\r\nENDMODULE\r\n"
-        );
+        assert_eq!(fmt(crlf), crlf);
+        assert_eq!(spaced(crlf), "MODULE M\r\nVAR num a := 1;\r\nENDMODULE\r\n");
         let cr = "MODULE M\rVAR num a:=1;\rENDMODULE\r";
-        assert_eq!(spaced(cr), "MODULE M\r    VAR num a := 1;\rENDMODULE\r");
+        assert_eq!(spaced(cr), "MODULE M\rVAR num a := 1;\rENDMODULE\r");
         let lf = "MODULE M\nPROC p() x:=1; ENDPROC ENDMODULE";
         assert_eq!(
             spaced(lf),
@@ -415,11 +412,11 @@ mod tests {
         let text = "MODULE m\n! Größe °C\nvar NUM MyVar;\nENDMODULE\n";
         assert_eq!(
             spaced(text),
-            "MODULE m\n    ! Größe °C\n    VAR NUM MyVar;\nENDMODULE\n"
+            "MODULE m\n! Größe °C\nVAR NUM MyVar;\nENDMODULE\n"
         );
         assert_eq!(
             fmt(text),
-            "MODULE m\n    ! Größe °C\n    var NUM MyVar;\nENDMODULE\n"
+            "MODULE m\n! Größe °C\nvar NUM MyVar;\nENDMODULE\n"
         );
     }
 

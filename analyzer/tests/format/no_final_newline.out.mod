@@ -1,4 +1,4 @@
 ! fmt: style=spaced
 MODULE NoFinalNewline
-    VAR num a := 1;
+VAR num a := 1;
 ENDMODULE

@@ -35,13 +35,14 @@ use crate::project::{Discovery, Environment, SourceFile, Sources};
 
 pub use crate::project::Skip;
 pub use fix::apply_safe_fixes;
-pub use run::{report_in, run};
+pub use run::{load_in, report_in, run};
 pub use settings::{LintSettings, Overrides, normalize};
 
 /// Output formats of `rapid check`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
 pub enum Format {
     /// The source line with the problem underlined, and a summary.
+    #[default]
     Human,
     /// One line per diagnostic: `file:line:column: severity[code] message (name)`.
     Concise,
@@ -55,7 +56,7 @@ pub enum Format {
     Junit,
 }
 
-#[derive(Debug, clap::Args)]
+#[derive(Debug, Default, clap::Args)]
 pub struct CheckArgs {
     /// Files or folders to check (default: the current folder).
     pub paths: Vec<PathBuf>,

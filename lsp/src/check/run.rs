@@ -77,6 +77,27 @@ pub fn report_in(
     Ok((report, setup.root, project.failed || read_failed))
 }
 
+/// `rapid check`'s steps 1 and 2 and the project they load, without
+/// checking (for `rapid mcp`'s `reach`): the workspace with the
+/// configuration, extra paths and robot a check of `args.paths` has, and
+/// the files found (the order of the workspace's `read`).
+pub fn load_in(
+    env: &dyn Environment,
+    args: &CheckArgs,
+    notes: &mut impl Write,
+) -> Result<(crate::project::Loaded, Vec<PathBuf>), String> {
+    let setup = settings_of(env, args)?;
+    let project = discover_project(env, args, &setup, notes);
+    let controller = setup.config.controller.resolve().unwrap_or_default();
+    let sources = crate::project::Sources {
+        found: Some(&project.found),
+        context: Some(&project.context),
+        extra: Some(&project.extra),
+    };
+    let loaded = crate::project::load(env, &sources, &controller);
+    Ok((loaded, project.found.files))
+}
+
 /// What the run is configured with.
 struct Setup {
     /// The paths to check (the current folder when none is given).

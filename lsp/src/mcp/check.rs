@@ -176,20 +176,10 @@ fn check_args(path: PathBuf, p: &CheckParams) -> Result<CheckArgs, String> {
     Ok(CheckArgs {
         paths: vec![path],
         format: Format::Json,
-        config: None,
         select: p.select.clone(),
         ignore: p.ignore.clone(),
-        exclude: Vec::new(),
-        extra_path: Vec::new(),
-        statistics: false,
-        exit_zero: false,
-        error_on_warnings: false,
-        fix: false,
         min_severity,
-        baseline: None,
-        update_baseline: false,
-        threads: None,
-        timings: false,
+        ..CheckArgs::default()
     })
 }
 

@@ -12,16 +12,17 @@
 //! people (text) and a typed value (`structuredContent`, with its schema).
 //!
 //! Where the tools go: `check.rs` (check, fix, format), `lookup.rs`
-//! (explain_rule, lookup_builtin, evaluate, list_symbols), `exec.rs` (run,
-//! test), `pages.rs` (resources and prompts), `http.rs` (the HTTP
-//! transport), `roots.rs` (what may be read). A `reach` tool (joint
-//! solutions of a target) joins `lookup.rs` once the robot model exists.
+//! (explain_rule, lookup_builtin, evaluate, list_symbols), `reach.rs`
+//! (reach: the joint solutions of a target for the task's robot),
+//! `exec.rs` (run, test), `pages.rs` (resources and prompts), `http.rs`
+//! (the HTTP transport), `roots.rs` (what may be read).
 
 mod check;
 mod exec;
 mod http;
 mod lookup;
 mod pages;
+mod reach;
 mod roots;
 
 use std::path::{Path, PathBuf};
@@ -50,6 +51,7 @@ use lookup::{
     SymbolsParams, SymbolsReport,
 };
 use pages::{FixPromptParams, TestPromptParams};
+use reach::{ReachParams, ReachReport};
 use roots::Roots;
 
 /// The largest message read from stdio or an HTTP request (a module may
@@ -287,6 +289,20 @@ impl RapidMcp {
     ) -> CallToolResult {
         let roots = self.roots(&peer).await;
         blocking(move || lookup::evaluate(&roots, params)).await
+    }
+
+    #[tool(
+        description = "The joint solutions of a robtarget for the task's robot (the one `rapid check` uses: MOC.cfg's, else rapid.toml's [controller] robot, else the `robot` argument): every solution within the working ranges with its confdata, the one the target's confdata selects, or the controller's error for a move there (out of reach by how many mm, an axis beyond its range by how many degrees, another configuration) with its event number and rule. The target, tool and work object are names the task declares or RAPID literals.",
+        annotations(title = "Reach a target", read_only_hint = true, open_world_hint = false),
+        output_schema = schema_for_output::<ReachReport>()
+    )]
+    async fn reach(
+        &self,
+        Parameters(params): Parameters<ReachParams>,
+        peer: Peer<RoleServer>,
+    ) -> CallToolResult {
+        let roots = self.roots(&peer).await;
+        blocking(move || reach::reach(&roots, params)).await
     }
 
     #[tool(
