@@ -151,7 +151,7 @@ pub(crate) fn call(
     let Some(routine) = env.catalogue().function(name) else {
         return unknown();
     };
-    let a = args::bind(ctx, name, &routine.params, args, env)?;
+    let a = args::bind(ctx, name, routine, args, env)?;
     match f {
         Impl::Pure(f) => f(&a),
         Impl::Ctx(f) => f(&a, ctx, env),
