@@ -95,9 +95,11 @@ fn declares(task: &Task, routine: &str) -> bool {
 }
 
 /// `task` with more modules (given as path and text), unless it declares
-/// a routine of theirs already.
+/// a routine of theirs already: the same controller's task (configuration,
+/// catalogue view, controller names), as `rapid check` checks it, with the
+/// modules added ([`Task::with_extra_units`]).
 pub fn with_modules(task: &Arc<Task>, modules: &[(&str, &str)]) -> Arc<Task> {
-    let mut units = task.units.clone();
+    let mut extra = Vec::new();
     for (path, text) in modules {
         let unit = Unit::new((*path).to_owned(), (*text).to_owned(), None);
         let clash = unit
@@ -107,13 +109,13 @@ pub fn with_modules(task: &Arc<Task>, modules: &[(&str, &str)]) -> Arc<Task> {
             .flat_map(|m| m.routines.iter())
             .any(|r| declares(task, &r.name));
         if !clash {
-            units.push(Arc::new(unit));
+            extra.push(Arc::new(unit));
         }
     }
-    if units.len() == task.units.len() {
+    if extra.is_empty() {
         return task.clone();
     }
-    Arc::new(Task::new(task.key.clone(), units, task.signals.clone()))
+    Arc::new(task.with_extra_units(extra))
 }
 
 /// A `--set NAME=VALUE[@SECONDS]` option.
@@ -146,20 +148,25 @@ pub fn parse_set(text: &str) -> Result<SignalChange, String> {
 /// The program of `task`, with the signals `--set` names that its
 /// configuration does not declare (their kind guessed from the name's
 /// first letters: `di`, `do`, `ai`, `ao`, `gi`, `go`; a digital input
-/// otherwise).
+/// otherwise), configured as `EIO.cfg` would ([`Task::with_signals`]).
 pub fn program(task: Arc<Task>, sets: &[SignalChange]) -> Arc<Program> {
     let configured = |n: &str| {
         task.signals
             .as_ref()
             .is_some_and(|s| s.contains_key(&n.to_ascii_lowercase()))
     };
-    let mut extra: Vec<(String, SignalKind)> = Vec::new();
+    let mut extra: Vec<(String, &'static str)> = Vec::new();
     for s in sets {
         if !configured(&s.name) && !extra.iter().any(|(n, _)| n.eq_ignore_ascii_case(&s.name)) {
-            extra.push((s.name.clone(), SignalKind::guess(&s.name)));
+            extra.push((s.name.clone(), SignalKind::guess(&s.name).type_name()));
         }
     }
-    Arc::new(Program::new(task, &extra))
+    let task = if extra.is_empty() {
+        task
+    } else {
+        Arc::new(task.with_signals(&extra))
+    };
+    Arc::new(Program::new(task, &[]))
 }
 
 #[cfg(test)]
