@@ -79,6 +79,9 @@ mod eval;
 mod expr;
 mod functions;
 pub mod geometry;
+/// The linear algebra the geometry is computed with, for callers that
+/// keep poses ([`geometry::isometry`]).
+pub use nalgebra;
 mod literal;
 mod literal_value;
 mod operators;

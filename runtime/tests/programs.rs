@@ -21,7 +21,7 @@ use std::sync::{Arc, Mutex};
 
 use rapid_analyzer::catalogue::{Selection, Version};
 use rapid_analyzer::task::{Task, Unit};
-use rapid_runtime::{Config, Machine, Outcome, Program, SignalChange, SignalKind, Status};
+use rapid_runtime::{Config, Outcome, Program, SignalChange, SignalKind, Status};
 
 struct Expect {
     lines: Vec<String>,
@@ -130,16 +130,11 @@ fn run(path: &std::path::Path) -> (Vec<String>, Option<String>, Outcome) {
     let _ = std::fs::remove_dir_all(&sandbox);
     std::fs::create_dir_all(&sandbox).expect("a sandbox");
     config.sandbox = Some(sandbox.clone());
-    let entry = e.entry.clone();
-    let outcome = rapid_runtime::on_large_stack(move || {
-        let out = move |_: rapid_runtime::Stream, line: &str| {
-            sink.lock().expect("the output").push(line.to_owned())
-        };
-        let mut m = Machine::new(program.clone(), config, Box::new(out));
-        let id = program.find_routine(&entry).expect("the entry routine");
-        m.run(id)
-    })
-    .expect("no panic");
+    let out = move |_: rapid_runtime::Stream, line: &str| {
+        sink.lock().expect("the output").push(line.to_owned())
+    };
+    let id = program.find_routine(&e.entry).expect("the entry routine");
+    let (outcome, _) = rapid_runtime::run_routine(program, id, config, Box::new(out));
     let _ = std::fs::remove_dir_all(&sandbox);
     let lines = lines.lock().expect("the output").clone();
     (lines, brief(&outcome), outcome)

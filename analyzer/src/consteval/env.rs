@@ -112,16 +112,14 @@ impl TypeEnv {
         for unit in &task.units {
             for m in &unit.items.modules {
                 for r in &m.records {
-                    let key = fold(&r.name);
-                    if !records.contains_key(&key) {
-                        records.insert(key, record_layout_in(&types, task.catalogue, &r.name));
-                    }
+                    records
+                        .entry(fold(&r.name))
+                        .or_insert_with(|| record_layout_in(&types, task.catalogue, &r.name));
                 }
                 for a in &m.aliases {
-                    let key = fold(&a.name);
-                    if !aliases.contains_key(&key) {
-                        aliases.insert(key, alias_in(&types, task.catalogue, &a.name));
-                    }
+                    aliases
+                        .entry(fold(&a.name))
+                        .or_insert_with(|| alias_in(&types, task.catalogue, &a.name));
                 }
             }
         }

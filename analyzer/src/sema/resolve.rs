@@ -180,3 +180,115 @@ impl<'t> Resolver<'t> {
         self.scope.task
     }
 }
+
+/// A call and the parameter each of its arguments binds to.
+#[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub struct CallBinding {
+    /// The start of the routine the call is in (`None`: outside routines,
+    /// in a data declaration's value).
+    pub routine: Option<usize>,
+    /// The routine called, named as declared.
+    pub callee: String,
+    /// The parameter of each argument, in the order written.
+    pub params: Vec<String>,
+}
+
+/// The bindings of the calls of unit `unit` as the checker sees them: from
+/// the syntax tree, each call's routine resolved in the scope around it
+/// and its arguments bound with the checker's signature. Calls whose
+/// binding is not complete (an argument that binds to nothing or twice, a
+/// missing one), whose kind does not fit the routine's (a function called
+/// as an instruction), late-bound calls, `Present` and calls in code with
+/// syntax errors are left out. The oracle of any other reader's
+/// bindings (the interpreter's, [`Resolver::bind`] over the lowered body).
+pub fn call_bindings(task: &Task, unit: usize) -> Vec<CallBinding> {
+    use crate::syntax::{field, kind};
+    let Some(u) = task.units.get(unit) else {
+        return Vec::new();
+    };
+    let routines: Vec<std::ops::Range<usize>> = u
+        .items
+        .modules
+        .iter()
+        .flat_map(|m| m.routines.iter().map(|r| r.range.clone()))
+        .collect();
+    let tree = u.tree();
+    let mut calls = Vec::new();
+    crate::syntax_util::walk_pruned(tree.root_node(), &mut |n| {
+        if n.is_error() || n.is_missing() {
+            return false;
+        }
+        if matches!(n.kind(), kind::PROCEDURE_CALL | kind::FUNCTION_CALL) && !n.has_error() {
+            calls.push(n);
+        }
+        true
+    });
+    let mut out = Vec::new();
+    for call in calls {
+        let Some(name) = call.child_by_field_name(field::NAME) else {
+            continue;
+        };
+        if name.kind() != kind::IDENTIFIER {
+            continue;
+        }
+        let name_text = u.text.get(name.byte_range()).unwrap_or_default();
+        let function = call.kind() == kind::FUNCTION_CALL;
+        if function && name_text.eq_ignore_ascii_case("present") {
+            continue;
+        }
+        let routine = routines
+            .iter()
+            .find(|r| r.start <= call.start_byte() && call.end_byte() <= r.end)
+            .map(|r| r.start);
+        let Some(scope) = Scope::at(task, unit, routine.unwrap_or(call.start_byte())) else {
+            continue;
+        };
+        let Some(def) = scope.resolve_routine(name_text, function) else {
+            continue;
+        };
+        let Some(sig) = Signature::of(&def, task) else {
+            continue;
+        };
+        if !sig.known || sig.is_function() != function {
+            continue;
+        }
+        let mut cursor = call.walk();
+        let args: Vec<_> = call
+            .child_by_field_name(field::ARGUMENTS)
+            .map(|a| {
+                a.children_by_field_name(field::ARGUMENT, &mut cursor)
+                    .collect()
+            })
+            .unwrap_or_default();
+        let given: Vec<Arg<'_>> = args
+            .iter()
+            .map(|a| {
+                let optional = {
+                    let mut c = a.walk();
+                    a.children(&mut c).any(|c| c.kind() == "\\")
+                };
+                match a
+                    .child_by_field_name(field::NAME)
+                    .and_then(|n| u.text.get(n.byte_range()))
+                {
+                    Some(n) => Arg::Named(n),
+                    None if optional => Arg::Named(""),
+                    None => Arg::Positional,
+                }
+            })
+            .collect();
+        let b = bind_args(&sig, &given);
+        if !b.is_complete() {
+            continue;
+        }
+        let params = (0..given.len())
+            .filter_map(|k| sig.params.get(b.param_of(k)?).map(|p| p.name.clone()))
+            .collect();
+        out.push(CallBinding {
+            routine,
+            callee: sig.name.clone(),
+            params,
+        });
+    }
+    out
+}

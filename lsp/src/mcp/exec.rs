@@ -399,8 +399,16 @@ pub fn test(roots: &[PathBuf], params: TestParams) -> Result<Answer<TestReport>,
     let path = resolve(roots, &params.path)?;
     let env = Confined::new(roots.to_vec());
     let found = load::tasks_in(&env, std::slice::from_ref(&path))?;
-    let results =
-        crate::test_cmd::run_tests(&found.tasks, params.filter.as_deref(), &sets, &limits, None)?;
+    let results = crate::test_cmd::run_tests(
+        &found.tasks,
+        &crate::test_cmd::TestOptions {
+            filter: params.filter.clone(),
+            sets,
+            limits,
+            sandbox: None,
+        },
+        &mut |_| {},
+    )?;
     let count = |v: Verdict| results.iter().filter(|r| r.verdict == v).count();
     let report = TestReport {
         passed: count(Verdict::Pass),
