@@ -120,7 +120,7 @@ fn every_corpus_module_runs_or_stops_with_a_reason_at_a_real_line() {
                 continue;
             };
             let key = match outcome.status {
-                Status::Finished | Status::Exited | Status::Stopped => {
+                Status::Finished | Status::Exited | Status::Stopped | Status::Halted => {
                     format!("{:?}", outcome.status)
                 }
                 Status::Error => format!(

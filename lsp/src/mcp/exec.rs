@@ -216,6 +216,7 @@ fn status_name(s: Status) -> &'static str {
         Status::Invalid => "invalid",
         Status::Budget => "budget",
         Status::Deadlock => "deadlock",
+        Status::Halted => "halted",
     }
 }
 
@@ -228,7 +229,7 @@ fn place(roots: &[PathBuf], at: &rapid_runtime::Location) -> Place {
 }
 
 fn run_error(roots: &[PathBuf], o: &Outcome) -> Option<RunError> {
-    if matches!(o.status, Status::Finished | Status::Exited) {
+    if matches!(o.status, Status::Finished | Status::Exited | Status::Halted) {
         return None;
     }
     Some(RunError {

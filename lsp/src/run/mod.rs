@@ -371,7 +371,7 @@ fn run_inner(args: RunArgs) -> Result<ExitCode, String> {
 pub fn describe(o: &Outcome) -> Vec<String> {
     let mut lines = Vec::new();
     let head = match o.status {
-        Status::Finished | Status::Exited => return lines,
+        Status::Finished | Status::Exited | Status::Halted => return lines,
         Status::Stopped if o.message.is_empty() => "stopped (Stop)".to_owned(),
         Status::Stopped => format!("stopped: {}", o.message),
         Status::Error => match &o.errno {

@@ -339,7 +339,7 @@ fn judge(
     duration: Duration,
 ) -> TestResult {
     let verdict = match outcome.status {
-        Status::Finished | Status::Exited => Verdict::Pass,
+        Status::Finished | Status::Exited | Status::Halted => Verdict::Pass,
         Status::Error => Verdict::Fail,
         _ => Verdict::Error,
     };

@@ -331,9 +331,12 @@ impl Controller {
             if self.sh.steps >= limit {
                 return Event::Running;
             }
-            let running: Vec<usize> = (0..self.tasks.len())
+            // The static and semistatic tasks (started first, as a
+            // controller starts them) before the normal ones.
+            let mut running: Vec<usize> = (0..self.tasks.len())
                 .filter(|&i| self.tasks[i].is_running())
                 .collect();
+            running.sort_by_key(|&i| self.meta[i].kind == TaskKind::Normal);
             let slice = if running.len() == 1 { LONE_SLICE } else { 1 };
             let mut ran = false;
             for i in running {
@@ -391,7 +394,7 @@ impl Controller {
         for t in &mut self.tasks {
             if t.is_running() {
                 t.finish(Outcome {
-                    status: Status::Stopped,
+                    status: Status::Halted,
                     message: "halted when the normal tasks ended".to_owned(),
                     errno: None,
                     at: t.location(),
@@ -426,7 +429,7 @@ impl Controller {
             real = earlier(real, timer);
             any = earlier(any, timer);
             let wake = t.wake_time();
-            if t.waits_on_time_only() {
+            if t.waits_on_time(&self.sh) {
                 real = earlier(real, wake);
             }
             any = earlier(any, wake);
@@ -439,9 +442,13 @@ impl Controller {
         if t > max {
             self.sh.advance_to(max);
             for i in waiting {
+                let during = match self.tasks[i].waiting_for() {
+                    Some(what) => format!(" ({what} waits)"),
+                    None => String::new(),
+                };
                 let f = crate::machine::Fault {
                     kind: crate::machine::FaultKind::Budget(format!(
-                        "the simulated time budget ({max} s) ran out"
+                        "the simulated time budget ({max} s) ran out{during}"
                     )),
                     skip_depth: None,
                     fatal: true,

@@ -32,8 +32,11 @@ pub enum Status {
     Finished,
     /// `EXIT` (or `ExitCycle`) ended the program.
     Exited,
-    /// `Stop` (or `Break`) stopped it.
+    /// `Stop` (or `Break`) stopped it, or a debugger ended it.
     Stopped,
+    /// A static or semistatic task that still ran when the normal tasks
+    /// ended (the program ended: the simulation ends with it).
+    Halted,
     /// A RAPID error no handler took (its `ERRNO` name in the outcome).
     Error,
     /// An instruction or function the simulation does not support.
@@ -67,7 +70,7 @@ impl Outcome {
     pub fn is_success(&self) -> bool {
         matches!(
             self.status,
-            Status::Finished | Status::Exited | Status::Stopped
+            Status::Finished | Status::Exited | Status::Stopped | Status::Halted
         )
     }
 

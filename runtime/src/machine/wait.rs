@@ -28,8 +28,14 @@ pub(crate) enum WaitKind {
     /// Until the signal compares with the value as asked.
     Signal { name: String, test: SignalTest },
     /// A `WaitUntil` condition is checked again at this time (from
-    /// `again`); `clock`: the condition read the clock.
-    Poll { next: f64, again: Pc, clock: bool },
+    /// `again`); `clock`: the condition read the clock; `steps`: the
+    /// statements the controller had run when it was found false.
+    Poll {
+        next: f64,
+        again: Pc,
+        clock: bool,
+        steps: u64,
+    },
     /// At a rendezvous of tasks (`WaitSyncTask`, `SyncMoveOn`,
     /// `SyncMoveOff`): its key in [`crate::controller::Sync`] and the
     /// round this task arrived in.
@@ -153,14 +159,17 @@ impl Machine {
         }
     }
 
-    /// A wait that can only end when the clock reaches `deadline`, and
-    /// whether anything but time (another task, a signal, an interrupt)
-    /// could end it: for the report of a deadlock.
-    pub(crate) fn waits_on_time_only(&self) -> bool {
+    /// Can the task's wait end with time alone (the end of a `WaitTime`,
+    /// a deadline, a condition that reads the clock or whose data another
+    /// task changed since it was found false)? If no task's can, and
+    /// nothing comes from outside, the run is a deadlock.
+    pub(crate) fn waits_on_time(&self, sh: &Shared) -> bool {
         match self.frames.last().and_then(|f| f.wait.as_ref()) {
             Some(w) => match &w.kind {
                 WaitKind::Time(_) => true,
-                WaitKind::Poll { clock, .. } => *clock || w.deadline.is_some(),
+                WaitKind::Poll { clock, steps, .. } => {
+                    *clock || w.deadline.is_some() || *steps != sh.steps
+                }
                 _ => w.deadline.is_some(),
             },
             None => false,
@@ -282,7 +291,12 @@ impl Machine {
         }
         let clock = std::mem::take(&mut self.read_clock);
         self.block(Wait {
-            kind: WaitKind::Poll { next, again, clock },
+            kind: WaitKind::Poll {
+                next,
+                again,
+                clock,
+                steps: sh.steps,
+            },
             // Reached only through the poll (`next` is never later), which
             // evaluates the condition once more first.
             deadline,
