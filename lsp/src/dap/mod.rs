@@ -492,7 +492,7 @@ fn prepare(args: &Value) -> Result<Launch, String> {
             }],
         }
     } else {
-        load::controller(&path, args["task"].as_str(), entry)?
+        load::controller(&path, args["task"].as_str(), args["entry"].as_str())?
     };
     let errors: Vec<String> = loaded
         .tasks

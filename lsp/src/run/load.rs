@@ -104,8 +104,12 @@ pub struct Loaded {
 /// The controller `path` holds, to run: every task of a backup (or of a
 /// folder of task folders) together, else the one task of `path` (the
 /// one that declares `entry` when a folder holds unrelated ones); `only`
-/// keeps the task of that name.
-pub fn controller(path: &Path, only: Option<&str>, entry: &str) -> Result<Loaded, String> {
+/// keeps the task of that name. A task starts in its `SYS.cfg` entry
+/// routine, else in `entry` (`main` when `None`); `entry` given wins for
+/// the one task `only` names.
+pub fn controller(path: &Path, only: Option<&str>, entry: Option<&str>) -> Result<Loaded, String> {
+    let given = entry;
+    let entry = entry.unwrap_or("main");
     let found = tasks(std::slice::from_ref(&path.to_path_buf()))?;
     if found.tasks.is_empty() {
         return Err(format!("{}: no RAPID modules found", path.display()));
@@ -145,7 +149,9 @@ pub fn controller(path: &Path, only: Option<&str>, entry: &str) -> Result<Loaded
             ));
         };
         let mut t = out.swap_remove(i);
-        t.entry = entry.to_owned();
+        if let Some(e) = given {
+            e.clone_into(&mut t.entry);
+        }
         t.motion = true;
         return Ok(Loaded { tasks: vec![t] });
     }

@@ -34,10 +34,10 @@ pub struct RunArgs {
     /// A module (run with the rest of its task), a task's folder, or a
     /// backup (every task of it).
     pub path: PathBuf,
-    /// The procedure to run (a task's `SYS.cfg` entry wins for the tasks
-    /// of a backup).
-    #[arg(long, default_value = "main", value_name = "NAME")]
-    pub entry: String,
+    /// The procedure to run (default: a task's `SYS.cfg` entry, else
+    /// `main`; with several tasks, their `SYS.cfg` entries win).
+    #[arg(long, value_name = "NAME")]
+    pub entry: Option<String>,
     /// Run only the task of this name (of a backup, or of a folder of
     /// task folders).
     #[arg(long, value_name = "NAME")]
@@ -332,7 +332,7 @@ fn run_inner(args: RunArgs) -> Result<ExitCode, String> {
         .iter()
         .map(|s| load::parse_set(s))
         .collect::<Result<Vec<_>, _>>()?;
-    let loaded = load::controller(&args.path, args.task.as_deref(), &args.entry)?;
+    let loaded = load::controller(&args.path, args.task.as_deref(), args.entry.as_deref())?;
     let sandbox = Sandbox::new(args.sandbox.clone())?;
     let options = RunOptions {
         sets,
