@@ -2,7 +2,8 @@
 //! file, run together, and compares what they print and how each ends
 //! with the expectations written at its end.
 //!
-//! - `!task NAME [normal|semistatic|static] [entry=ROUTINE] [nomotion]`:
+//! - `!task NAME [normal|semistatic|static] [entry=ROUTINE] [nomotion]
+//!   [timed]`: (`timed`: its moves take time, [`TimedRobot`])
 //!   the lines that follow, up to the next `!task` or the expectations,
 //!   are the task's module (its lines keep the file's numbers);
 //! - `!set NAME=VALUE[@SECONDS]`: a scripted signal change;
@@ -20,7 +21,9 @@ mod support;
 use std::sync::{Arc, Mutex};
 
 use rapid_analyzer::task::{Task, TaskKind, Unit};
-use rapid_runtime::world::{InstantRobot, World};
+use rapid_runtime::world::{
+    InstantRobot, JointTarget, Motion, MoveRequest, RobTarget, Robot, RobotError, Tool, WObj, World,
+};
 use rapid_runtime::{Config, Controller, Program, SignalChange, SignalKind, TaskSpec};
 
 struct TaskText {
@@ -28,7 +31,29 @@ struct TaskText {
     kind: TaskKind,
     entry: String,
     motion: bool,
+    timed: bool,
     text: String,
+}
+
+/// A robot whose moves take time: `\T` seconds when given, else one
+/// second (where it arrives is [`InstantRobot`]'s). A stand-in for a
+/// robot model, to see `\Conc` and `\InPos` at work.
+struct TimedRobot(InstantRobot);
+
+impl Robot for TimedRobot {
+    fn move_to(&mut self, request: &MoveRequest<'_>) -> Result<Motion, RobotError> {
+        let mut motion = self.0.move_to(request)?;
+        motion.duration = request.time.unwrap_or(1.0);
+        Ok(motion)
+    }
+
+    fn robtarget(&self, tool: &Tool, wobj: &WObj) -> Result<RobTarget, RobotError> {
+        self.0.robtarget(tool, wobj)
+    }
+
+    fn joints(&self) -> Result<JointTarget, RobotError> {
+        self.0.joints()
+    }
 }
 
 struct Fixture {
@@ -59,6 +84,7 @@ fn parse(text: &str) -> Fixture {
                 kind: TaskKind::Normal,
                 entry: "main".to_owned(),
                 motion: true,
+                timed: false,
                 // Blank lines up to here: the task's lines are the file's.
                 text: "\n".repeat(n + 1),
             };
@@ -68,6 +94,7 @@ fn parse(text: &str) -> Fixture {
                     "semistatic" => task.kind = TaskKind::SemiStatic,
                     "static" => task.kind = TaskKind::Static,
                     "nomotion" => task.motion = false,
+                    "timed" => task.timed = true,
                     w => {
                         task.entry = w.strip_prefix("entry=").expect("entry=NAME").to_owned();
                     }
@@ -138,9 +165,11 @@ fn run(path: &std::path::Path) -> (Vec<String>, Vec<String>) {
             program,
             entry,
             kind: t.kind,
-            robot: t
-                .motion
-                .then(|| Box::new(InstantRobot::new()) as Box<dyn rapid_runtime::world::Robot>),
+            robot: match (t.motion, t.timed) {
+                (false, _) => None,
+                (true, false) => Some(Box::new(InstantRobot::new()) as Box<dyn Robot>),
+                (true, true) => Some(Box::new(TimedRobot(InstantRobot::new())) as Box<dyn Robot>),
+            },
         });
     }
     controller.run();

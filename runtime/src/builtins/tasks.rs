@@ -129,40 +129,58 @@ fn rendezvous(
     timeout_error: &'static str,
 ) -> R<Done> {
     let me = cx.m.number;
-    let (round, complete) = cx.sh.sync.arrive(&key, me, numbers, names);
     let timeout = cx.opt_num(a, "TimeOut")?;
+    let id = key
+        .split_once(':')
+        .map_or(key.as_str(), |(_, id)| id)
+        .to_owned();
+    let deadline = timeout.map(|t| cx.now() + t.max(0.0));
+    let on_timeout = Timeout::Error(
+        timeout_error,
+        format!(
+            "{}: the other tasks did not arrive within \\TimeOut",
+            a.name
+        ),
+    );
+    let what = format!("{} {id}", a.name);
+    // `\InPos`: the task arrives when its robot stands still.
+    let still = super::motion::motion_end(cx);
+    if sync_move.is_none() && a.given("InPos") && still > cx.now() {
+        return Ok(Done::Wait(Box::new(Wait {
+            kind: WaitKind::InPos {
+                at: still,
+                key,
+                numbers: numbers.to_vec(),
+                names: names.to_vec(),
+            },
+            deadline,
+            on_timeout,
+            what,
+        })));
+    }
+    let (round, complete) = cx.sh.sync.arrive(&key, me, numbers, names);
     if complete {
         if let Some(on) = sync_move {
             cx.m.sync_move = if on { cx.sh.sync.group_of(me) } else { None };
         }
         return Ok(Done::Next);
     }
-    let id = key
-        .split_once(':')
-        .map_or(key.as_str(), |(_, id)| id)
-        .to_owned();
     Ok(Done::Wait(Box::new(Wait {
         kind: WaitKind::Sync {
             key,
             round,
             sync_move,
         },
-        deadline: timeout.map(|t| cx.now() + t.max(0.0)),
-        on_timeout: Timeout::Error(
-            timeout_error,
-            format!(
-                "{}: the other tasks did not arrive within \\TimeOut",
-                a.name
-            ),
-        ),
-        what: format!("{} {id}", a.name),
+        deadline,
+        on_timeout,
+        what,
     })))
 }
 
 /// `WaitSyncTask [\InPos] SyncID, TaskList [\TimeOut]`: waits until every
 /// task of the list has arrived at a `WaitSyncTask` of the same
-/// `syncident`. (The robot of a task is in position then: a move that
-/// takes time holds its task until it ends, unless `\Conc`.)
+/// `syncident`; with `\InPos`, a task arrives only when its robot stands
+/// still (after the moves it started with `\Conc`).
 pub(crate) fn wait_sync_task(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     let id = sync_id(cx, a)?;
     let (names, numbers) = task_list(cx, a)?;

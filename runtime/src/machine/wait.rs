@@ -44,6 +44,15 @@ pub(crate) enum WaitKind {
         round: u64,
         sync_move: Option<bool>,
     },
+    /// Until the task's robot stands still (at `at`, the end of its
+    /// motion), then at the rendezvous `key` of the tasks `numbers`
+    /// (`WaitSyncTask \InPos`).
+    InPos {
+        at: f64,
+        key: String,
+        numbers: Vec<usize>,
+        names: Vec<String>,
+    },
     /// Until the bool at the place is `FALSE`, which is then set
     /// (`WaitTestAndSet`).
     Semaphore(Place),
@@ -97,11 +106,47 @@ impl Machine {
             WaitKind::Poll { next, .. } => now >= *next,
             WaitKind::Sync { key, round, .. } => sh.sync.released(key, *round),
             WaitKind::Semaphore(p) => matches!(self.get(sh, p), Some(Value::Bool(false))),
+            WaitKind::InPos {
+                at,
+                key,
+                numbers,
+                names,
+            } => {
+                if now < *at {
+                    false
+                } else {
+                    // In position: the task arrives at the rendezvous now.
+                    let (round, complete) = sh.sync.arrive(key, self.number, numbers, names);
+                    if !complete {
+                        if let Some(f) = self.frames.last_mut()
+                            && let Some(wait) = f.wait.as_mut()
+                        {
+                            wait.kind = WaitKind::Sync {
+                                key: key.clone(),
+                                round,
+                                sync_move: None,
+                            };
+                        }
+                        return self.check_timeout(sh);
+                    }
+                    true
+                }
+            }
         };
         if done {
             self.end_wait(sh, &w)?;
             return Ok(Blocked::Ready);
         }
+        self.check_timeout(sh)
+    }
+
+    /// The wait goes on unless its deadline has come (then the timeout's
+    /// flag or error).
+    fn check_timeout(&mut self, sh: &mut Shared) -> R<Blocked> {
+        let Some(w) = self.frames.last().and_then(|f| f.wait.clone()) else {
+            return Ok(Blocked::Ready);
+        };
+        let now = sh.clock;
         if let Some(d) = w.deadline
             && now >= d
         {
@@ -166,7 +211,7 @@ impl Machine {
     pub(crate) fn waits_on_time(&self, sh: &Shared) -> bool {
         match self.frames.last().and_then(|f| f.wait.as_ref()) {
             Some(w) => match &w.kind {
-                WaitKind::Time(_) => true,
+                WaitKind::Time(_) | WaitKind::InPos { .. } => true,
                 WaitKind::Poll { clock, steps, .. } => {
                     *clock || w.deadline.is_some() || *steps != sh.steps
                 }
@@ -181,7 +226,7 @@ impl Machine {
     pub(crate) fn wake_time(&self) -> Option<f64> {
         let w = self.frames.last()?.wait.as_ref()?;
         let own = match &w.kind {
-            WaitKind::Time(t) => Some(*t),
+            WaitKind::Time(t) | WaitKind::InPos { at: t, .. } => Some(*t),
             WaitKind::Poll { next, .. } => Some(*next),
             _ => None,
         };
