@@ -476,24 +476,23 @@ fn prepare(args: &Value) -> Result<Launch, String> {
         .transpose()?
         .unwrap_or_default();
     let path = std::path::PathBuf::from(program);
-    let loaded = if args["test"].as_bool().unwrap_or(false) {
-        let task = load::one_task(&path, entry)?;
-        let task = load::with_modules(
-            &task,
+    let mut loaded = load::controller(&path, args["task"].as_str(), args["entry"].as_str())?;
+    if args["test"].as_bool().unwrap_or(false) {
+        // A test runs in the task that declares it, as `rapid test` runs
+        // it: that task (its controller's name and configuration) with
+        // the assertion module.
+        loaded.tasks.retain(|t| load::declares(&t.task, entry));
+        let Some(mut t) = loaded.tasks.pop().filter(|_| loaded.tasks.is_empty()) else {
+            return Err(format!("{program}: no task (or several) declares {entry}"));
+        };
+        t.task = load::with_modules(
+            &t.task,
             &[(crate::test_cmd::ASSERT_PATH, crate::test_cmd::ASSERT_MODULE)],
         );
-        load::Loaded {
-            tasks: vec![load::TaskToRun {
-                name: "T_ROB1".to_owned(),
-                task,
-                kind: rapid_runtime::TaskKind::Normal,
-                entry: entry.to_owned(),
-                motion: true,
-            }],
-        }
-    } else {
-        load::controller(&path, args["task"].as_str(), args["entry"].as_str())?
-    };
+        entry.clone_into(&mut t.entry);
+        t.kind = rapid_runtime::TaskKind::Normal;
+        loaded.tasks = vec![t];
+    }
     let errors: Vec<String> = loaded
         .tasks
         .iter()

@@ -199,13 +199,8 @@ fn folder_of_tasks(path: &Path, tasks: &[Arc<Task>]) -> bool {
     })
 }
 
-/// The one task `path` holds (a module: its task; a folder: its only
-/// task, or the one that declares `entry`).
-pub fn one_task(path: &Path, entry: &str) -> Result<Arc<Task>, String> {
-    one_task_in(&crate::project::DiskAsNamed, path, entry)
-}
-
-/// [`one_task`] in `env`.
+/// The one task `path` holds in `env` (a module: its task; a folder: its
+/// only task, or the one that declares `entry`), for `rapid mcp`.
 pub fn one_task_in(env: &dyn Environment, path: &Path, entry: &str) -> Result<Arc<Task>, String> {
     let found = tasks_in(env, std::slice::from_ref(&path.to_path_buf()))?;
     let mut tasks = found.tasks;
@@ -233,7 +228,8 @@ pub fn one_task_in(env: &dyn Environment, path: &Path, entry: &str) -> Result<Ar
     }
 }
 
-fn declares(task: &Task, routine: &str) -> bool {
+/// Does `task` declare a routine named `routine`?
+pub fn declares(task: &Task, routine: &str) -> bool {
     task.units.iter().any(|u| {
         u.items.modules.iter().any(|m| {
             m.routines
