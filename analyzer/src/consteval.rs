@@ -35,12 +35,13 @@ use crate::sema::signature::{Arg, Signature, Target, bind_args};
 use crate::syntax::{field, kind};
 use crate::syntax_util::{field, fields, text_of};
 use crate::task::{Item, ItemRef, Task, Unit};
-use crate::ty::{Ty, UserType};
+use crate::ty::{Ty, Types, UserType};
 
 mod constant_error;
 mod env;
 
 pub(crate) use constant_error::check_constant_errors;
+pub use env::TypeEnv;
 use env::*;
 
 /// The value of a constant expression, for a hover.

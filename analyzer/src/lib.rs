@@ -22,6 +22,7 @@ pub mod nesting;
 pub mod robot;
 pub mod rules;
 mod sema;
+pub use sema::resolve;
 pub mod syntax;
 mod syntax_util;
 pub mod task;

@@ -503,6 +503,54 @@ impl Task {
             .filter_map(|u| self.units.get(u))
     }
 
+    /// This task with more modules after its own (a test harness's
+    /// assertion module, say), its names indexed again; the controller it
+    /// belongs to stays (configuration, catalogue view, controller names,
+    /// shared persistents, synchronisation, grouping, view), so the task is
+    /// the one `rapid check` checks, with more in it.
+    pub fn with_extra_units(&self, extra: impl IntoIterator<Item = Arc<Unit>>) -> Task {
+        let mut units = self.units.to_vec();
+        units.extend(extra);
+        self.rebuilt(units, self.signals.as_deref().cloned())
+    }
+
+    /// This task with more configured I/O signals (name and RAPID type,
+    /// `signaldi`...), as a configuration file would declare them: a
+    /// simulation's scripted signals. Signals it has already keep their
+    /// type.
+    pub fn with_signals(&self, extra: &[(String, &'static str)]) -> Task {
+        let mut signals = self.signals.as_deref().cloned().unwrap_or_default();
+        for (name, ty) in extra {
+            signals.entry(fold(name)).or_insert(ty);
+        }
+        self.rebuilt(self.units.to_vec(), Some(signals))
+    }
+
+    /// A task of `units` and `signals` that belongs to the same controller
+    /// as this one (units after this task's keep their indexes, so its
+    /// clashes and view stay valid).
+    fn rebuilt(&self, units: Vec<Arc<Unit>>, signals: Option<Signals>) -> Task {
+        let mut task = Task::new(self.key.clone(), units, signals);
+        if let Some(selection) = &self.inputs.catalogue {
+            task.set_catalogue(selection);
+        }
+        task.set_controller_names((*self.mecunits).clone(), (*self.task_ids).clone());
+        task.set_robot(match &self.robot_note {
+            Some(note) => Err(note.clone()),
+            None => Ok(self.robot.clone()),
+        });
+        task.set_shared(self.shared.clone(), self.inputs.shared);
+        task.set_syncs(self.syncs.clone(), self.inputs.syncs);
+        task.grouping = self.grouping;
+        task.complete = self.complete;
+        task.loaded_elsewhere = self.loaded_elsewhere;
+        task.clashes = self.clashes.clone();
+        match self.owner {
+            Some(owner) => task.view(owner),
+            None => task,
+        }
+    }
+
     /// Sets [`Task::shared`] (with the hash [`shared_persistents`] gave):
     /// the task's interface hash then covers them, so cached results are
     /// dropped when another task's persistents change.
@@ -747,6 +795,35 @@ pub struct Config {
     pub task_modules: Vec<TaskModule>,
     /// The robots (`MOC.cfg`, sections `ROBOT` and `ARM`).
     pub robots: Vec<crate::robot::MocRobot>,
+    /// How the controller runs each task of `tasks`, in the same order.
+    pub task_settings: Vec<TaskSettings>,
+}
+
+/// How `SYS.cfg` (section `CAB_TASKS`) has the controller run a task.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct TaskSettings {
+    /// `-Name`, as written.
+    pub name: String,
+    /// `-Type`.
+    pub kind: TaskKind,
+    /// `-Entry`: the routine the task starts in; `None` for `main`.
+    pub entry: Option<String>,
+    /// `-MotionTask`: the task moves a robot.
+    pub motion: bool,
+}
+
+/// The `-Type` of a task: when the controller starts it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum TaskKind {
+    /// Started and stopped with the program (`NORMAL`; also when `-Type` is
+    /// not given, as the configurations RobotStudio writes give it for
+    /// every motion task).
+    Normal,
+    /// Started when the controller starts, from the beginning each time
+    /// (`SEMISTATIC`).
+    SemiStatic,
+    /// Started when the controller starts, where it last was (`STATIC`).
+    Static,
 }
 
 /// A module that `SYS.cfg` has the controller load into a task.
@@ -788,10 +865,25 @@ pub fn parse_config(cfg: &str) -> Config {
         let t = l.trim();
         t.ends_with(':') && !t.starts_with('-') && t.to_ascii_uppercase().contains("SIGNAL")
     });
-    let tasks = section_entries(cfg, "CAB_TASKS")
+    let task_settings: Vec<TaskSettings> = section_entries(cfg, "CAB_TASKS")
         .iter()
-        .filter_map(|e| option_value(e, "-Name"))
+        .filter_map(|e| {
+            let kind = match option_value(e, "-Type").map(|t| t.to_ascii_uppercase()) {
+                Some(t) if t == "SEMISTATIC" => TaskKind::SemiStatic,
+                Some(t) if t == "STATIC" => TaskKind::Static,
+                _ => TaskKind::Normal,
+            };
+            Some(TaskSettings {
+                name: option_value(e, "-Name")?,
+                kind,
+                entry: option_value(e, "-Entry"),
+                motion: e
+                    .split_whitespace()
+                    .any(|w| w.eq_ignore_ascii_case("-MotionTask")),
+            })
+        })
         .collect();
+    let tasks = task_settings.iter().map(|t| t.name.clone()).collect();
     let task_modules = section_entries(cfg, "CAB_TASK_MODULES")
         .iter()
         .filter_map(|e| {
@@ -806,6 +898,7 @@ pub fn parse_config(cfg: &str) -> Config {
         tasks,
         task_modules,
         robots: crate::robot::parse_moc_robots(cfg),
+        task_settings,
     }
 }
 

@@ -18,6 +18,7 @@ use std::sync::{Mutex, OnceLock};
 
 use serde::{Deserialize, Serialize};
 
+pub mod binding;
 mod check;
 pub mod operators;
 mod raw;

@@ -235,6 +235,25 @@ pub fn binary(op: Op, left: &str, right: &str) -> Option<&'static str> {
     )
 }
 
+/// Whether `op` takes operands of the numeric types given (`num` or
+/// `dnum` each): [`binary`] for them, looked up in the table once and
+/// kept, for interpreters that ask at every operation.
+pub fn numeric(op: Op, left_dnum: bool, right_dnum: bool) -> bool {
+    static TABLE: std::sync::OnceLock<[[bool; 4]; Op::ALL.len()]> = std::sync::OnceLock::new();
+    let table = TABLE.get_or_init(|| {
+        let name = |dnum: bool| if dnum { "dnum" } else { "num" };
+        let mut t = [[false; 4]; Op::ALL.len()];
+        for (i, op) in Op::ALL.into_iter().enumerate() {
+            for (k, slot) in t[i].iter_mut().enumerate() {
+                *slot = binary(op, name(k >= 2), name(k % 2 == 1)).is_some();
+            }
+        }
+        t
+    });
+    // `ALL` lists the operators in their declaration order (tested).
+    table[op as usize][usize::from(left_dnum) * 2 + usize::from(right_dnum)]
+}
+
 /// The first row of `op` whose operand types the predicates accept: for
 /// callers whose operand types are not single names (the checker takes an
 /// unknown operand to be a num and a bool at once). Equality has no rows.
@@ -255,6 +274,21 @@ pub const OPERAND_TYPES: &[&str] = &["num", "dnum", "string", "bool", "pos", "or
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn numeric_is_the_table_for_num_and_dnum() {
+        for (i, op) in Op::ALL.into_iter().enumerate() {
+            assert_eq!(op as usize, i, "Op::ALL is in declaration order");
+            for (l, r) in [(false, false), (false, true), (true, false), (true, true)] {
+                let name = |dnum: bool| if dnum { "dnum" } else { "num" };
+                assert_eq!(
+                    numeric(op, l, r),
+                    binary(op, name(l), name(r)).is_some(),
+                    "{op:?} {l} {r}"
+                );
+            }
+        }
+    }
 
     #[test]
     fn no_pair_has_two_rows() {

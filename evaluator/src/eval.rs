@@ -169,6 +169,48 @@ impl Ctx {
         }
     }
 
+    /// See [`crate::zero_value`].
+    pub(crate) fn zero(&self, ty: &Type, env: &dyn Env, opaque: &dyn Fn(&str) -> Value) -> Value {
+        self.zero_depth(&ty.name, &ty.dims, env, opaque, 0)
+    }
+
+    fn zero_depth(
+        &self,
+        name: &str,
+        dims: &[usize],
+        env: &dyn Env,
+        opaque: &dyn Fn(&str) -> Value,
+        depth: u32,
+    ) -> Value {
+        if let Some((&n, rest)) = dims.split_first() {
+            let item = self.zero_depth(name, rest, env, opaque, depth);
+            return Value::Array(vec![item; n]);
+        }
+        // Records nest a few levels; a cycle of user records must end.
+        if depth > 16 {
+            return Value::Num(0.0);
+        }
+        match self.kind(&Type::named(name), env) {
+            Kind::Num => Value::Num(0.0),
+            Kind::Dnum => Value::Dnum(0.0),
+            Kind::Bool => Value::Bool(false),
+            Kind::Str => Value::Str(String::new()),
+            Kind::Record(r) => Value::Record {
+                ty: r.0.clone(),
+                fields: r
+                    .1
+                    .iter()
+                    .map(|(f, t)| {
+                        let v = self.zero_depth(&t.name, &t.dims, env, opaque, depth + 1);
+                        (f.clone(), v)
+                    })
+                    .collect(),
+            },
+            Kind::Array(_) => Value::Array(Vec::new()),
+            Kind::Opaque => opaque(&name.to_ascii_lowercase()),
+        }
+    }
+
     /// Counts `n` units of work against the budget.
     pub(crate) fn step(&mut self, n: u64) -> Result<(), EvalError> {
         self.steps = self.steps.saturating_add(n);

@@ -290,3 +290,24 @@ pub fn mir_pos(
     let mirrored = Isometry3::from_parts(Translation3::from(t), from_matrix(r));
     Ok(wobj.inverse() * (mirror * mirrored))
 }
+
+/// The rigid transformation of a translation (mm) and a quaternion
+/// `[q1, q2, q3, q4]` (normalised here; a zero quaternion is no rotation),
+/// for poses computed outside values (a robot's frames).
+pub fn isometry(trans: [f64; 3], rot: [f64; 4]) -> Isometry3<f64> {
+    let q = Quaternion::new(rot[0], rot[1], rot[2], rot[3]);
+    let rot = if q.norm() > 1e-12 {
+        UnitQuaternion::from_quaternion(q)
+    } else {
+        UnitQuaternion::identity()
+    };
+    Isometry3::from_parts(Translation3::new(trans[0], trans[1], trans[2]), rot)
+}
+
+/// The translation and the quaternion `[q1, q2, q3, q4]` of a
+/// transformation ([`isometry`]'s inverse).
+pub fn isometry_parts(iso: &Isometry3<f64>) -> ([f64; 3], [f64; 4]) {
+    let t = iso.translation.vector;
+    let q = iso.rotation;
+    ([t.x, t.y, t.z], [q.w, q.i, q.j, q.k])
+}

@@ -78,7 +78,10 @@ mod error;
 mod eval;
 mod expr;
 mod functions;
-mod geometry;
+pub mod geometry;
+/// The linear algebra the geometry is computed with, for callers that
+/// keep poses ([`geometry::isometry`]).
+pub use nalgebra;
 mod literal;
 mod literal_value;
 mod operators;
@@ -174,6 +177,15 @@ pub fn apply_unary(op: UnOp, v: Value) -> Result<Value, EvalError> {
 /// unchanged.
 pub fn coerce(v: Value, ty: &Type, env: &dyn Env) -> Result<Value, EvalError> {
     eval::Ctx::new(&Options::default()).coerce(v, ty, env)
+}
+
+/// The value data of type `ty` starts with when it has no initial value
+/// (`VAR num n;`): zero, `FALSE`, an empty string, and records and arrays
+/// of those, as the environment's types say; a type the evaluator does not
+/// know (a non-value type such as a signal or a clock, kept by an
+/// interpreter in its own form) is `opaque`'s value for its name.
+pub fn zero_value(ty: &Type, env: &dyn Env, opaque: &dyn Fn(&str) -> Value) -> Value {
+    eval::Ctx::new(&Options::default()).zero(ty, env, opaque)
 }
 
 /// Evaluates with explicit [`Options`].

@@ -138,9 +138,14 @@ pub(crate) fn binary(op: BinOp, a: Value, b: Value) -> Result<Value, EvalError> 
     // The shared operator table says which operands an operator takes
     // (equality compares any two values of one type: `values_equal`).
     if !op.is_equality() {
-        let known = match (a.type_name(), b.type_name()) {
-            (Some(x), Some(y)) => operators::binary(op, x, y).is_some(),
-            _ => false,
+        let known = match (&a, &b) {
+            (Num(_) | Dnum(_), Num(_) | Dnum(_)) => {
+                operators::numeric(op, matches!(a, Dnum(_)), matches!(b, Dnum(_)))
+            }
+            _ => match (a.type_name(), b.type_name()) {
+                (Some(x), Some(y)) => operators::binary(op, x, y).is_some(),
+                _ => false,
+            },
         };
         if !known {
             return mismatch(&a, &b);

@@ -2,7 +2,8 @@
 //! record layouts and alias types.
 
 use rapid_evaluator::{
-    Value, builtin_record_layout, is_builtin_num_alias, is_builtin_string_alias, predefined,
+    EmptyEnv, Type, Value, builtin_record_layout, is_builtin_num_alias, is_builtin_string_alias,
+    predefined,
 };
 
 #[test]
@@ -43,4 +44,32 @@ fn layouts_and_aliases_come_from_the_catalogue() {
     assert!(is_builtin_num_alias("byte") && is_builtin_num_alias("ERRNUM"));
     assert!(!is_builtin_num_alias("num") && !is_builtin_num_alias("stringdig"));
     assert!(is_builtin_string_alias("stringdig") && !is_builtin_string_alias("byte"));
+}
+
+/// Data without an initial value start at zero in the catalogue's record
+/// layouts (and the environment's); a type the evaluator does not know is
+/// the caller's.
+#[test]
+fn zero_values_follow_the_layouts() {
+    let opaque = |name: &str| Value::Str(format!("<{name}>"));
+    let zero = |ty: Type, env: &dyn rapid_evaluator::Env| {
+        rapid_evaluator::zero_value(&ty, env, &opaque).to_string()
+    };
+    assert_eq!(zero(Type::named("pos"), &EmptyEnv), "[0,0,0]");
+    assert_eq!(
+        zero(Type::array("num", vec![2, 3]), &EmptyEnv),
+        "[[0,0,0],[0,0,0]]"
+    );
+    assert_eq!(zero(Type::named("errnum"), &EmptyEnv), "0");
+    assert_eq!(zero(Type::named("bool"), &EmptyEnv), "FALSE");
+    assert_eq!(zero(Type::named("signaldo"), &EmptyEnv), "\"<signaldo>\"");
+    let mut env = rapid_evaluator::MapEnv::new();
+    env.record(
+        "part",
+        vec![
+            ("name".into(), Type::named("string")),
+            ("at".into(), Type::named("pos")),
+        ],
+    );
+    assert_eq!(zero(Type::named("Part"), &env), "[\"\",[0,0,0]]");
 }

@@ -1,8 +1,9 @@
 //! `rapid dap` at the protocol level: a client drives the built binary
 //! over stdin and stdout through a debugging session (breakpoint with a
 //! condition, stack, scopes, variables, evaluate, set variable, step over,
-//! step out, continue, a run-time error stopping at its line, pause), and
-//! the path page a launch with `plot` writes.
+//! step out, continue, a run-time error stopping at its line, pause), the
+//! path page a launch with `plot` writes, and a backup's two tasks as two
+//! threads.
 
 mod support;
 
@@ -349,4 +350,130 @@ fn a_launch_with_plot_writes_the_path_page_when_the_program_ends() {
         html.contains("[100.0,50.0,300.0]"),
         "the MoveL target: {html}"
     );
+}
+
+const CELL_SYS: &str = "SYS:CFG_1.0:6:0::
+#
+CAB_TASKS:
+
+      -Name \"T_ROB1\" -Type \"NORMAL\" -MotionTask
+
+      -Name \"T_ROB2\" -Type \"NORMAL\" -MotionTask
+";
+
+const CELL_ROB1: &str = "MODULE Main1
+  PERS num nShared := 0;
+  PROC main()
+    VAR num n := 1;
+    WaitUntil nShared = 5;
+    TPWrite \"one saw \"\\Num:=nShared;
+  ENDPROC
+ENDMODULE
+";
+
+const CELL_ROB2: &str = "MODULE Main2
+  PERS num nShared := 0;
+  PROC main()
+    VAR num m := 2;
+    WaitTime 1;
+    nShared := 5;
+    TPWrite \"two set it\";
+  ENDPROC
+ENDMODULE
+";
+
+#[test]
+fn the_tasks_of_a_backup_are_threads_inspected_each_on_its_own() {
+    let dir = scratch("dap-tasks");
+    write(
+        &dir,
+        &[
+            ("cell/SYSPAR/SYS.cfg", CELL_SYS),
+            ("cell/RAPID/TASK1/PROGMOD/Main1.mod", CELL_ROB1),
+            ("cell/RAPID/TASK2/PROGMOD/Main2.mod", CELL_ROB2),
+        ],
+    );
+    let cell = dir.join("cell").to_string_lossy().into_owned();
+    let main2 = std::fs::canonicalize(dir.join("cell/RAPID/TASK2/PROGMOD/Main2.mod"))
+        .expect("the module")
+        .to_string_lossy()
+        .into_owned();
+    let mut c = Client::start();
+    c.ok("initialize", json!({"adapterID": "rapid"}));
+    c.event("initialized");
+    c.ok("launch", json!({"program": cell}));
+    c.ok(
+        "setBreakpoints",
+        json!({"source": {"path": main2}, "breakpoints": [{"line": 6}]}),
+    );
+    c.ok("configurationDone", json!({}));
+
+    // T_ROB2 stops at its breakpoint (after its WaitTime); T_ROB1 waits.
+    let stopped = c.event("stopped");
+    assert_eq!(stopped["reason"], "breakpoint");
+    assert_eq!(stopped["threadId"], 2);
+    assert_eq!(stopped["allThreadsStopped"], true);
+    let threads = c.ok("threads", json!({}));
+    assert_eq!(
+        threads["threads"],
+        json!([{"id": 1, "name": "T_ROB1"}, {"id": 2, "name": "T_ROB2"}])
+    );
+    let frame = |c: &mut Client, thread: u64| {
+        let st = c.ok("stackTrace", json!({"threadId": thread}));
+        let f = st["stackFrames"][0].clone();
+        (
+            f["id"].as_u64().unwrap_or(0),
+            f["name"].as_str().unwrap_or("").to_owned(),
+            f["line"].as_u64().unwrap_or(0),
+            f["source"]["name"].as_str().unwrap_or("").to_owned(),
+        )
+    };
+    let (two, name, line, file) = frame(&mut c, 2);
+    assert_eq!(
+        (name.as_str(), line, file.as_str()),
+        ("main", 6, "Main2.mod")
+    );
+    let (one, name, line, file) = frame(&mut c, 1);
+    assert_eq!(
+        (name.as_str(), line, file.as_str()),
+        ("main", 5, "Main1.mod")
+    );
+    assert_ne!(one, two);
+    // Each task's frame sees its own routine data and the shared one.
+    let e = c.ok("evaluate", json!({"expression": "m", "frameId": two}));
+    assert_eq!(e["result"], "2");
+    let e = c.ok("evaluate", json!({"expression": "n", "frameId": one}));
+    assert_eq!(e["result"], "1");
+    let bad = c.request("evaluate", json!({"expression": "m", "frameId": one}));
+    assert_eq!(bad["success"], false);
+    let e = c.ok("evaluate", json!({"expression": "nShared", "frameId": one}));
+    assert_eq!(e["result"], "0");
+
+    // A step of T_ROB2 sets the shared persistent: T_ROB1 sees it.
+    c.ok("next", json!({"threadId": 2}));
+    let stopped = c.event("stopped");
+    assert_eq!(
+        (stopped["reason"].clone(), stopped["threadId"].clone()),
+        (json!("step"), json!(2))
+    );
+    let (one, ..) = frame(&mut c, 1);
+    let e = c.ok("evaluate", json!({"expression": "nShared", "frameId": one}));
+    assert_eq!(e["result"], "5");
+
+    // Continue: both tasks end; their lines say which task printed them.
+    c.ok("continue", json!({"threadId": 2}));
+    assert_eq!(c.event("exited")["exitCode"], 0);
+    c.event("terminated");
+    let mut lines = Vec::new();
+    while let Some(i) = c.events.iter().position(|e| e["event"] == "output") {
+        lines.push(
+            c.events.remove(i)["body"]["output"]
+                .as_str()
+                .unwrap_or("")
+                .to_owned(),
+        );
+    }
+    lines.sort();
+    assert_eq!(lines, vec!["[T_ROB1] one saw 5\n", "[T_ROB2] two set it\n"]);
+    c.ok("disconnect", json!({}));
 }

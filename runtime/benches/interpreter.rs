@@ -3,7 +3,7 @@
 use std::sync::Arc;
 
 use rapid_analyzer::task::{Task, Unit};
-use rapid_runtime::{Config, Machine, Program, Status};
+use rapid_runtime::{Config, Program, Status};
 
 fn main() {
     divan::main();
@@ -20,8 +20,12 @@ fn bench_main(bencher: divan::Bencher<'_, '_>, text: &str) {
     let p = program(text);
     let entry = p.find_routine("main").expect("main");
     bencher.bench(|| {
-        let mut m = Machine::new(p.clone(), Config::default(), Box::new(|_, _: &str| {}));
-        let o = m.run(entry);
+        let (o, _) = rapid_runtime::run_routine(
+            p.clone(),
+            entry,
+            Config::default(),
+            Box::new(|_, _: &str| {}),
+        );
         assert_eq!(o.status, Status::Finished);
     });
 }

@@ -1,198 +1,277 @@
-//! What a debugger sees of a paused machine: the stack, each frame's
-//! variables, its module's data, expressions evaluated in a frame, and
-//! assignments.
+//! What a debugger reads and changes in a stopped controller: each task's
+//! routines, their variables, their modules' data, expressions evaluated
+//! in a routine, assignments.
 
-use rapid_evaluator::{Type, Value};
+use std::sync::Arc;
 
-use crate::Control;
+use rapid_evaluator::Value;
+
 use crate::code::SlotKind;
 use crate::compile::Compiler;
-use crate::machine::{Fault, FaultKind, Machine, Outcome, R, Status, fault};
-use crate::program::{Location, Origin};
+use crate::controller::Controller;
+use crate::machine::{FrameKind, Machine, StackFrame, Yield};
+use crate::program::Origin;
+
+/// A module data object of a task and its value.
+#[derive(Clone, Debug, PartialEq)]
+pub struct DataValue {
+    /// The unit (of the task) and the declaration's range.
+    pub unit: usize,
+    pub range: std::ops::Range<usize>,
+    pub name: String,
+    /// `None`: its starting value could not be computed.
+    pub value: Option<Value>,
+}
 
 /// A variable as a debugger shows it.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Variable {
     pub name: String,
-    /// Its declared type (`num`, `robtarget{3}`).
+    /// Its declared type (`num`, `robtarget{*}`).
     pub ty: String,
     /// `None` for an optional parameter left out.
     pub value: Option<Value>,
 }
 
 impl Machine {
-    pub(crate) fn debug_statement(&mut self) -> R<()> {
-        let Some(mut d) = self.debugger.take() else {
-            return Ok(());
-        };
-        let c = d.statement(self);
-        self.debugger = Some(d);
-        match c {
-            Control::Continue => Ok(()),
-            Control::Terminate => fault(FaultKind::Halt(Status::Stopped)),
-        }
-    }
-
-    pub(crate) fn debug_error(&mut self, outcome: &Outcome) {
-        if let Some(mut d) = self.debugger.take() {
-            d.error(self, outcome);
-            self.debugger = Some(d);
-        }
-    }
-
-    /// The number of active routines.
-    pub fn depth(&self) -> usize {
-        self.frames.len()
-    }
-
-    /// The statement about to run (or running) in the innermost routine.
-    pub fn location(&self) -> Option<Location> {
-        self.here()
-    }
-
-    /// Is the innermost routine running its error handler?
-    pub fn in_error_handler(&self) -> bool {
-        self.frames.last().is_some_and(|f| f.in_handler)
-    }
-
+    /// The index in `frames` of routine frame `frame` (0: the innermost).
     fn frame_index(&self, frame: usize) -> Option<usize> {
-        self.frames.len().checked_sub(frame + 1)
+        let routines: Vec<usize> = (0..self.frames.len())
+            .rev()
+            .filter(|&i| !matches!(self.frames[i].kind, FrameKind::Init | FrameKind::Eval))
+            .collect();
+        routines.get(frame).copied()
+    }
+}
+
+fn shown_type(ty: &rapid_evaluator::Type) -> String {
+    ty.to_string().replace('0', "*")
+}
+
+impl Controller {
+    /// The active routines of task `task`, innermost first.
+    pub fn stack(&self, task: usize) -> Vec<StackFrame> {
+        self.tasks()
+            .get(task)
+            .map(Machine::stack_frames)
+            .unwrap_or_default()
     }
 
-    /// The parameters and data of frame `frame` (0 is the innermost), in
-    /// declaration order (`FOR` variables last).
-    pub fn frame_variables(&self, frame: usize) -> Vec<Variable> {
-        let Some(f) = self.frame_index(frame).and_then(|i| self.frames.get(i)) else {
+    /// The parameters and data of routine frame `frame` of task `task` (0
+    /// is the innermost), in declaration order (`FOR` variables last).
+    pub fn frame_variables(&self, task: usize, frame: usize) -> Vec<Variable> {
+        let Some(m) = self.tasks().get(task) else {
             return Vec::new();
         };
-        f.routine
+        let Some(f) = m.frame_index(frame).and_then(|i| m.frames.get(i)) else {
+            return Vec::new();
+        };
+        f.code
             .slots
             .iter()
             .enumerate()
+            .filter(|(_, s)| s.kind != SlotKind::Hidden)
             .map(|(i, s)| Variable {
                 name: s.name.clone(),
                 ty: if s.kind == SlotKind::For {
                     "num".to_owned()
                 } else {
-                    s.ty.to_string().replace('0', "*")
+                    shown_type(&s.ty)
                 },
-                value: self.slot_value(f.base as usize, i),
+                value: m.slot_value(self.shared(), f.base as usize, i),
             })
             .collect()
     }
 
-    /// The data of the module of frame `frame`.
-    pub fn module_variables(&self, frame: usize) -> Vec<Variable> {
-        let Some(f) = self.frame_index(frame).and_then(|i| self.frames.get(i)) else {
+    /// The data of the module of routine frame `frame` of task `task`.
+    pub fn module_variables(&self, task: usize, frame: usize) -> Vec<Variable> {
+        let Some(m) = self.tasks().get(task) else {
             return Vec::new();
         };
-        let module = self
+        let Some(f) = m.frame_index(frame).and_then(|i| m.frames.get(i)) else {
+            return Vec::new();
+        };
+        let module = f.code.module;
+        let mut out: Vec<(usize, Variable)> = m
             .prog
-            .routines
-            .get(f.routine.id as usize)
-            .map(|r| r.module);
-        self.prog
             .globals
             .iter()
             .enumerate()
-            .filter(
-                |(_, g)| matches!(g.origin, Origin::Module { module: m, .. } if Some(m) == module),
-            )
-            .map(|(i, g)| Variable {
-                name: g.name.clone(),
-                ty: g.ty.to_string().replace('0', "*"),
-                value: self.globals.get(i).cloned(),
+            .filter_map(|(i, g)| match &g.origin {
+                Origin::Module { module: md, range } if *md == module => Some((
+                    range.start,
+                    Variable {
+                        name: g.name.clone(),
+                        ty: shown_type(&g.ty),
+                        value: m.globals.get(i).cloned(),
+                    },
+                )),
+                _ => None,
             })
-            .collect()
+            .collect();
+        for (k, p) in m.prog.pers.iter().enumerate() {
+            if p.module != module {
+                continue;
+            }
+            let value = m
+                .pers_map
+                .get(k)
+                .and_then(|&i| self.shared().pers.get(i as usize))
+                .cloned();
+            out.push((
+                p.range.start,
+                Variable {
+                    name: p.name.clone(),
+                    ty: shown_type(&p.ty),
+                    value,
+                },
+            ));
+        }
+        out.sort_by_key(|(at, _)| *at);
+        out.into_iter().map(|(_, v)| v).collect()
     }
 
-    /// `ERRNO` and `INTNO`.
-    pub fn system_variables(&self) -> Vec<Variable> {
-        [("ERRNO", self.prog.errno), ("INTNO", self.prog.intno)]
+    /// The module data of task `task` with their values now, in the task's
+    /// order (after [`Controller::add_task`]: their starting values).
+    pub fn data_values(&self, task: usize) -> Vec<DataValue> {
+        let Some(m) = self.tasks().get(task) else {
+            return Vec::new();
+        };
+        let unit_of = |module: usize| m.prog.modules.get(module).map_or(0, |md| md.unit);
+        let mut out: Vec<DataValue> = m
+            .prog
+            .globals
+            .iter()
+            .enumerate()
+            .filter_map(|(i, g)| match &g.origin {
+                Origin::Module { module, range } => Some(DataValue {
+                    unit: unit_of(*module),
+                    range: range.clone(),
+                    name: g.name.clone(),
+                    value: matches!(m.init.get(i), Some(crate::machine::Init::Ready))
+                        .then(|| m.globals.get(i).cloned())
+                        .flatten(),
+                }),
+                _ => None,
+            })
+            .collect();
+        for (k, p) in m.prog.pers.iter().enumerate() {
+            let i = m.pers_map.get(k).map(|&i| i as usize);
+            let ready = i.is_some_and(|i| {
+                matches!(
+                    self.shared().pers_init.get(i),
+                    Some(crate::machine::Init::Ready)
+                )
+            });
+            out.push(DataValue {
+                unit: unit_of(p.module),
+                range: p.range.clone(),
+                name: p.name.clone(),
+                value: i
+                    .filter(|_| ready)
+                    .and_then(|i| self.shared().pers.get(i).cloned()),
+            });
+        }
+        out.sort_by_key(|d| (d.unit, d.range.start));
+        out
+    }
+
+    /// `ERRNO` and `INTNO` of task `task`.
+    pub fn system_variables(&self, task: usize) -> Vec<Variable> {
+        let Some(m) = self.tasks().get(task) else {
+            return Vec::new();
+        };
+        [("ERRNO", m.prog.errno), ("INTNO", m.prog.intno)]
             .into_iter()
             .filter_map(|(n, g)| {
                 let g = g?;
                 Some(Variable {
                     name: n.to_owned(),
                     ty: "num".to_owned(),
-                    value: self.globals.get(g as usize).cloned(),
+                    value: m.globals.get(g as usize).cloned(),
                 })
             })
             .collect()
     }
 
-    /// Runs `f` with names resolved in frame `frame`.
-    fn in_frame<T>(
-        &mut self,
-        frame: usize,
-        f: impl FnOnce(&mut Machine, &Compiler<'_>) -> R<T>,
-    ) -> Result<T, String> {
-        let Some(i) = self.frame_index(frame) else {
-            return Err("no such frame".to_owned());
-        };
-        let prog = self.prog.clone();
-        let routine = self.frames[i].routine.clone();
-        let module = prog
-            .routines
-            .get(routine.id as usize)
-            .map_or(0, |r| r.module);
-        let c = Compiler::for_frame(&prog, module, &routine);
-        let saved = self.base;
-        self.base = self.frames[i].base as usize;
-        let debugger = self.debugger.take();
-        let r = f(self, &c);
-        self.debugger = debugger;
-        self.base = saved;
-        r.map_err(|e| describe(self, *e))
-    }
-
-    /// Evaluates an expression written in RAPID in frame `frame`.
-    pub fn evaluate(&mut self, frame: usize, text: &str) -> Result<Value, String> {
+    /// Evaluates an expression written in RAPID in routine frame `frame`
+    /// of task `task` (its names resolve as they do there).
+    pub fn evaluate(&mut self, task: usize, frame: usize, text: &str) -> Result<Value, String> {
         let expr = rapid_analyzer::body::expression_of(text)?;
-        self.in_frame(frame, |m, c| {
-            let e = c.expr(&expr, None);
-            m.eval(&e)
-        })
+        self.in_frame(task, frame, |c| c.eval_code(&expr))
     }
 
     /// Assigns the value of expression `value` to the data `target` (a
-    /// name, a component, an element) in frame `frame`; the value stored.
-    pub fn assign(&mut self, frame: usize, target: &str, value: &str) -> Result<Value, String> {
+    /// name, a component, an element) in routine frame `frame` of task
+    /// `task`; the value stored.
+    pub fn assign(
+        &mut self,
+        task: usize,
+        frame: usize,
+        target: &str,
+        value: &str,
+    ) -> Result<Value, String> {
         let target = rapid_analyzer::body::expression_of(target)?;
         let value = rapid_analyzer::body::expression_of(value)?;
-        self.in_frame(frame, |m, c| {
-            let t = c.expr(&target, None);
-            if !t.is_place() {
-                return crate::machine::invalid("not a data reference");
+        self.in_frame(task, frame, |c| c.assign_code(&target, &value))
+    }
+
+    /// Runs code compiled in a frame's scope on top of the task's stack,
+    /// with no debugger and no interrupts, to its value.
+    fn in_frame(
+        &mut self,
+        task: usize,
+        frame: usize,
+        compile: impl FnOnce(Compiler<'_>) -> crate::code::Code,
+    ) -> Result<Value, String> {
+        let Some((m, sh)) = self.parts(task) else {
+            return Err("no such task".to_owned());
+        };
+        let Some(i) = m.frame_index(frame) else {
+            return Err("no such frame".to_owned());
+        };
+        let target = &m.frames[i];
+        let prog = m.prog.clone();
+        let loops: Vec<(String, std::ops::Range<usize>, u32)> = target
+            .code
+            .for_loops
+            .iter()
+            .filter(|l| (l.start..l.end).contains(&target.pc))
+            .map(|l| (l.name.clone(), l.var_range.clone(), l.slot))
+            .collect();
+        let Some(c) = Compiler::for_frame(&prog, &target.code, &loops) else {
+            return Err("the routine cannot be read".to_owned());
+        };
+        let code = Arc::new(compile(c));
+        let base = target.base;
+        let depth = m.frames.len();
+        let active = std::mem::replace(&mut sh.debug.active, false);
+        let disabled = std::mem::replace(&mut m.interrupts.disabled, true);
+        let pending = m.pending.take();
+        m.push_eval(code, base);
+        m.evaluated = None;
+        let mut guard = 0;
+        while m.frames.len() > depth && guard < 100_000 {
+            guard += 1;
+            match m.run_slice(sh, u32::MAX) {
+                Yield::Evaluated | Yield::Done => break,
+                Yield::Blocked | Yield::Stopped(_) => {
+                    m.evaluated = Some(Err(
+                        "the expression cannot be evaluated here (it waits)".to_owned()
+                    ));
+                    break;
+                }
+                Yield::Slice => {}
             }
-            let ty: Option<Type> = c.type_of(&t);
-            let v = m.eval(&c.expr(&value, ty.as_ref()))?;
-            let conv = ty.as_ref().map_or(crate::code::Conv::None, |t| c.conv(t));
-            let v = m.convert(v, &conv)?;
-            let p = m.place(&t)?;
-            m.store(&p, v.clone())?;
-            Ok(v)
-        })
-    }
-}
-
-fn describe(m: &Machine, f: Fault) -> String {
-    let o = m.outcome_of(f);
-    match o.errno {
-        Some((_, name)) => format!("{name}: {}", o.message),
-        None => o.message,
-    }
-}
-
-impl<'p> Compiler<'p> {
-    /// A compiler that sees the names of a running routine.
-    pub(crate) fn for_frame(
-        prog: &'p crate::program::Program,
-        module: usize,
-        routine: &crate::code::Routine,
-    ) -> Compiler<'p> {
-        let mut c = Compiler::for_module(prog, module);
-        c.adopt_slots(routine);
-        c
+        }
+        while m.frames.len() > depth {
+            m.pop_frame();
+        }
+        sh.debug.active = active;
+        m.interrupts.disabled = disabled;
+        m.pending = pending;
+        m.evaluated
+            .take()
+            .unwrap_or_else(|| Err("the expression has no value".to_owned()))
     }
 }

@@ -1,29 +1,35 @@
-//! An interpreter for ABB RAPID programs, with a simulated controller
-//! around it.
+//! A virtual controller for ABB RAPID programs: the tasks of a controller
+//! run together on a simulated world.
 //!
-//! A [`Program`] is the modules of one task (grouped as `rapid check`
-//! groups them, through the analyzer's [`rapid_analyzer::workspace`]);
-//! a [`Machine`] runs one of its routines with the program's data
-//! initialised as the controller initialises them when it loads the
-//! program (`VAR` data to their initial value or zero, `PERS` data to
-//! their declared value, constants computed). Routines are the analyzer's
-//! lowered bodies ([`rapid_analyzer::body`]), compiled on their first call
-//! with every name resolved; expressions use the evaluator's operators
-//! and pure functions, so values are exactly the controller's
-//! (single-precision `num`, degrees, error codes).
+//! - A [`Program`] is the modules of one task (grouped as `rapid check`
+//!   groups them, through the analyzer's [`rapid_analyzer::workspace`]),
+//!   compiled routine by routine from the analyzer's lowered bodies with
+//!   every name resolved and every call bound by `sema`
+//!   ([`rapid_analyzer::resolve`]): the runtime resolves nothing itself.
+//!   Values and operators are the evaluator's, so results are exactly the
+//!   controller's (single-precision `num`, degrees, error codes).
+//! - A [`Controller`] holds one [`Machine`] per task over one shared world
+//!   (the clock, signals, the persistents the tasks share, files, robots,
+//!   the operator, sockets: [`world`], each a trait a test substitutes). A
+//!   deterministic scheduler interleaves the tasks statement by statement
+//!   and moves the clock only when every task waits; a task's data start
+//!   as the controller sets them when it loads the program (`VAR` data at
+//!   their initial value or zero, `PERS` data at their declared value,
+//!   constants computed).
+//! - Machines keep their frames as data and run a slice at a time, so a
+//!   debugger drives the controller until the next event (a breakpoint, a
+//!   step's end, an error, the end) without a thread of its own, and RAPID
+//!   recursion is bounded by [`Limits::max_depth`], not by the host's
+//!   stack.
 //!
-//! The controller is simulated ([`Machine`] docs): `TPWrite` and
-//! `ErrWrite` go to an [`Output`]; moves complete at once; time passes
-//! only when the program waits; signals start at zero and follow a
-//! script; interrupts run their trap routines; files live in a sandbox
-//! folder. A run never hangs and never panics: statements, simulated time
-//! and call depth are bounded ([`Limits`]), and whatever the simulation
-//! does not support ends the run with a clear [`Outcome`].
+//! A run never hangs and never panics: statements, simulated time and call
+//! depth are bounded ([`Limits`]), and whatever the simulation does not
+//! support ends the task with a clear [`Outcome`].
 //!
 //! ```
 //! use std::sync::{Arc, Mutex};
 //! use rapid_analyzer::task::{Task, Unit};
-//! use rapid_runtime::{Config, Machine, Program, Status, Stream};
+//! use rapid_runtime::{Config, Program, Status, Stream};
 //!
 //! let text = "MODULE m\n  PROC main()\n    TPWrite \"sum: \"\\Num:=1 + 2;\n  ENDPROC\nENDMODULE\n";
 //! let unit = Arc::new(Unit::new("m.mod".into(), text.into(), None));
@@ -32,8 +38,8 @@
 //! let lines = Arc::new(Mutex::new(Vec::new()));
 //! let sink = lines.clone();
 //! let out = move |_: Stream, line: &str| sink.lock().unwrap().push(line.to_owned());
-//! let mut machine = Machine::new(program.clone(), Config::default(), Box::new(out));
-//! let outcome = machine.run(program.find_routine("main").unwrap());
+//! let entry = program.find_routine("main").unwrap();
+//! let (outcome, _) = rapid_runtime::run_routine(program, entry, Config::default(), Box::new(out));
 //! assert_eq!(outcome.status, Status::Finished);
 //! assert_eq!(*lines.lock().unwrap(), vec!["sum: 3"]);
 //! ```
@@ -43,19 +49,21 @@ mod code;
 mod compile;
 mod controller;
 mod debug;
-mod eval;
-mod exec;
+mod interrupts;
 mod machine;
 mod program;
-mod types;
+pub mod world;
 
 use std::path::PathBuf;
+use std::sync::Arc;
 
 pub use builtins::motion::Move;
-pub use controller::SignalChange;
-pub use debug::Variable;
-pub use machine::{Machine, Outcome, StackFrame, Status};
-pub use program::{Location, Program, RoutineSummary, SYSTEM_ERRNO_BASE, SignalKind};
+pub use controller::{Controller, Event, Resume, TaskKind, TaskSpec};
+pub use debug::{DataValue, Variable};
+pub use machine::{Machine, Outcome, StackFrame, Status, Stop};
+pub use program::{
+    LoadError, Location, Program, RoutineSummary, SYSTEM_ERRNO_BASE, SignalKind, load_errors,
+};
 
 /// Where a line of output comes from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -66,7 +74,8 @@ pub enum Stream {
     EventLog,
 }
 
-/// Where a run's output goes: one call per line.
+/// Where a run's output goes: one call per line (named by its task,
+/// `[T_ROB2] text`, when several tasks run).
 pub trait Output: Send {
     fn line(&mut self, stream: Stream, text: &str);
 }
@@ -77,36 +86,23 @@ impl<F: FnMut(Stream, &str) + Send> Output for F {
     }
 }
 
-/// What a debugger decides before a statement.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Control {
-    /// Run the statement.
-    Continue,
-    /// End the run (it stops as `Stop` would).
-    Terminate,
-}
-
-/// A debugger attached to a [`Machine`] ([`Machine::set_debugger`]).
-///
-/// Its methods are called on the thread that runs the program, with the
-/// machine paused at a statement; they may inspect it (stack, variables,
-/// evaluate, assign) as long as they like before returning.
-pub trait Debugger: Send {
-    /// Before each statement ([`Machine::location`] says which).
-    fn statement(&mut self, machine: &mut Machine) -> Control;
-    /// When an error that no handler will take is about to end the run;
-    /// the routines are still active.
-    fn error(&mut self, machine: &mut Machine, outcome: &Outcome);
+/// A change of a signal at a simulated time (`--set di1=1@2.5`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct SignalChange {
+    pub name: String,
+    pub value: f64,
+    /// Seconds after the start of the run.
+    pub at: f64,
 }
 
 /// How far a run may go before it is stopped.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Limits {
-    /// Statements (and loop iterations).
+    /// Statements (and loop iterations), of every task together.
     pub max_steps: u64,
     /// Simulated seconds.
     pub max_time: f64,
-    /// Active routines at once (recursion).
+    /// Active routines at once in a task (recursion).
     pub max_depth: u32,
     /// `RETRY`s of one statement in a row before `ERR_EXCRTYMAX` (the
     /// controller's default is 4).
@@ -133,23 +129,34 @@ pub struct Config {
     /// The folder file instructions work in; without one they are not
     /// supported.
     pub sandbox: Option<PathBuf>,
-    /// Record every move ([`Machine::moves`]).
+    /// Record every move ([`Controller::moves`]).
     pub trace: bool,
 }
 
-/// Runs `f` on a thread with a stack large enough for [`Limits::max_depth`]
-/// nested routines (deep recursion in RAPID is deep recursion here), and
-/// returns its result; a panic becomes `None`.
-pub fn on_large_stack<R: Send + 'static>(f: impl FnOnce() -> R + Send + 'static) -> Option<R> {
-    std::thread::Builder::new()
-        .name("rapid-run".to_owned())
-        .stack_size(STACK_BYTES)
-        .spawn(f)
-        .ok()?
-        .join()
-        .ok()
+/// Runs `routine` (a procedure without parameters) of `program` as the
+/// one task of a simulated controller (an [`world::InstantRobot`], the
+/// world of [`world::World::simulated`]) to its end: the outcome, and the
+/// moves made (with [`Config::trace`]).
+pub fn run_routine(
+    program: Arc<Program>,
+    routine: u32,
+    config: Config,
+    output: Box<dyn Output>,
+) -> (Outcome, Vec<Move>) {
+    let world = world::World::simulated(&config, output);
+    let mut c = Controller::new(config, world);
+    c.add_task(TaskSpec {
+        name: "T_ROB1".to_owned(),
+        program,
+        entry: Some(routine),
+        kind: TaskKind::Normal,
+        robot: Some(Box::new(world::InstantRobot::new())),
+    });
+    c.run();
+    let outcome = c
+        .tasks()
+        .first()
+        .and_then(|t| t.outcome().cloned())
+        .unwrap_or_else(Outcome::finished);
+    (outcome, c.moves().to_vec())
 }
-
-/// The stack [`on_large_stack`] gives: about 1 MB per nested routine in an
-/// unoptimised build, far less in a release build.
-pub const STACK_BYTES: usize = 512 << 20;

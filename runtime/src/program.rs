@@ -1,21 +1,25 @@
-//! A program ready to run: the modules of one task with every name the
-//! interpreter can meet resolved once (module data, routines, the
-//! catalogue's predefined data, configured signals), and routines compiled
-//! on their first call.
+//! A program ready to run: the modules of one task, their data laid out in
+//! storage (module data, the persistents the controller's tasks share,
+//! the catalogue's predefined data and the configured signals), their
+//! routines compiled on their first call. Names are resolved by `sema`
+//! ([`rapid_analyzer::resolve`]) when code is compiled; what is kept here
+//! is where each declaration's value lives.
 
+use std::collections::HashMap;
 use std::ops::Range;
-use std::sync::{Arc, OnceLock};
+use std::sync::{Arc, Mutex, OnceLock};
 
 use rapid_analyzer::catalogue::DatumKind;
+use rapid_analyzer::catalogue::binding::Arg;
+use rapid_analyzer::consteval::TypeEnv;
 use rapid_analyzer::items::{RoutineDecl, RoutineKind, Scope, Storage};
 use rapid_analyzer::names::{NameMap, fold};
-use rapid_analyzer::task::Task;
+use rapid_analyzer::resolve::{Callee, DataRef, Resolver};
+use rapid_analyzer::task::{Item, ItemRef, Task};
 use rapid_analyzer::text::LineIndex;
 use rapid_evaluator::{Type, Value, parse_data_literal};
 
-use crate::code::{Conv, Expr, Routine};
-use crate::compile::Compiler;
-use crate::types::Types;
+use crate::code::Code;
 
 /// A place in a program's source, for messages and debuggers.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -86,26 +90,46 @@ impl SignalKind {
 
     /// The kind of a RAPID signal type name.
     pub fn from_type(name: &str) -> Option<SignalKind> {
-        Some(match fold(name).as_str() {
-            "signaldi" => SignalKind::DigitalIn,
-            "signaldo" => SignalKind::DigitalOut,
-            "signalai" => SignalKind::AnalogIn,
-            "signalao" => SignalKind::AnalogOut,
-            "signalgi" => SignalKind::GroupIn,
-            "signalgo" => SignalKind::GroupOut,
-            _ => return None,
-        })
+        [
+            SignalKind::DigitalIn,
+            SignalKind::DigitalOut,
+            SignalKind::AnalogIn,
+            SignalKind::AnalogOut,
+            SignalKind::GroupIn,
+            SignalKind::GroupOut,
+        ]
+        .into_iter()
+        .find(|k| k.type_name().eq_ignore_ascii_case(name))
+    }
+
+    /// Can the program set it?
+    pub fn is_output(self) -> bool {
+        matches!(
+            self,
+            SignalKind::DigitalOut | SignalKind::AnalogOut | SignalKind::GroupOut
+        )
     }
 }
 
+/// A module of the program.
 pub(crate) struct Module {
     pub unit: usize,
+    /// Its index among its unit's modules.
+    pub index: usize,
     pub name: String,
-    pub data: NameMap<u32>,
-    pub routines: NameMap<u32>,
 }
 
-/// Where a global data object comes from.
+/// Where a data object of the program is stored.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Home {
+    /// In the task ([`Program::globals`]).
+    Global(u32),
+    /// A persistent every task of the controller shares
+    /// ([`Program::pers`]).
+    Pers(u32),
+}
+
+/// Where a data object comes from.
 pub(crate) enum Origin {
     /// Declared in module `module` at `range`.
     Module { module: usize, range: Range<usize> },
@@ -115,50 +139,62 @@ pub(crate) enum Origin {
     Signal,
 }
 
-/// A data object of the task (module data, predefined data, signals).
+/// A data object of the task.
 pub(crate) struct Global {
     pub name: String,
     pub storage: Storage,
     pub ty: Type,
     pub origin: Origin,
-    /// How to compute its starting value (compiled when the program loads).
+    /// Its starting value: known, or computed by code when a run starts.
     pub start: Start,
 }
 
 pub(crate) enum Start {
-    /// Dimensions and initial value, evaluated when a run starts.
-    Eval {
-        dims: Vec<Expr>,
-        init: Option<Expr>,
-        conv: Conv,
-    },
-    /// A value known when the program loads.
     Value(Value),
+    Code(Arc<Code>),
+}
+
+/// A shared persistent of the program: its name (how the controller knows
+/// it across tasks) and its declaration.
+pub(crate) struct Pers {
+    pub name: String,
+    pub ty: Type,
+    pub module: usize,
+    pub range: Range<usize>,
+    pub start: Option<Arc<Code>>,
 }
 
 pub(crate) struct RoutineInfo {
+    pub item: ItemRef,
     pub module: usize,
     pub decl: RoutineDecl,
-    pub compiled: OnceLock<Arc<Routine>>,
+    pub code: OnceLock<Arc<Code>>,
 }
 
 /// A loaded program: build it once per task, run it as often as needed
 /// (each [`crate::Machine`] starts from fresh data).
 pub struct Program {
     pub(crate) task: Arc<Task>,
-    pub(crate) types: Types,
+    /// The task's types, as the evaluator asks for them.
+    pub(crate) types: TypeEnv,
     pub(crate) lines: Vec<LineIndex>,
     pub(crate) modules: Vec<Module>,
     pub(crate) globals: Vec<Global>,
-    pub(crate) global_data: NameMap<u32>,
+    pub(crate) pers: Vec<Pers>,
+    /// Where each module data object is.
+    pub(crate) items: HashMap<ItemRef, Home>,
+    /// Predefined data and configured signals, by folded name.
+    pub(crate) system: NameMap<u32>,
     pub(crate) routines: Vec<RoutineInfo>,
-    pub(crate) global_routines: NameMap<u32>,
+    pub(crate) routine_ids: HashMap<ItemRef, u32>,
     /// The slot of `ERRNO` (and `INTNO`), when the catalogue has them.
     pub(crate) errno: Option<u32>,
     pub(crate) intno: Option<u32>,
-    /// The number of every predefined error (`ERR_*`), by folded name, and
-    /// the names by number.
+    /// The number of every predefined error (`ERR_*`), by folded name.
     pub(crate) errnums: NameMap<f32>,
+    /// Routines named at run time (late binding, `CallByVar`), by the
+    /// calling module and the folded name.
+    late: Mutex<HashMap<(usize, String), Option<u32>>>,
 }
 
 /// The first number given to the predefined errors (`ERR_*`); the
@@ -167,132 +203,112 @@ pub struct Program {
 pub const SYSTEM_ERRNO_BASE: f32 = 1001.0;
 
 impl Program {
-    /// Loads the modules of `task`, with extra signals (name and kind)
-    /// besides the ones its configuration declares.
-    pub fn new(task: Arc<Task>, extra_signals: &[(String, SignalKind)]) -> Program {
-        let lines = task.units.iter().map(|u| LineIndex::new(&u.text)).collect();
-        let types = Types::new(&task);
+    /// Loads the modules of `task`. Signals are the ones its configuration
+    /// declares (see [`Task::with_signals`] for a simulation's own), with
+    /// `extra` besides.
+    pub fn new(task: Arc<Task>, extra: &[(String, SignalKind)]) -> Program {
+        let task = if extra.is_empty() {
+            task
+        } else {
+            let extra: Vec<(String, &'static str)> = extra
+                .iter()
+                .map(|(n, k)| (n.clone(), k.type_name()))
+                .collect();
+            Arc::new(task.with_signals(&extra))
+        };
         let mut p = Program {
-            types,
-            lines,
+            types: TypeEnv::of(&task),
+            lines: task.units.iter().map(|u| LineIndex::new(&u.text)).collect(),
             modules: Vec::new(),
             globals: Vec::new(),
-            global_data: NameMap::default(),
+            pers: Vec::new(),
+            items: HashMap::new(),
+            system: NameMap::default(),
             routines: Vec::new(),
-            global_routines: NameMap::default(),
+            routine_ids: HashMap::new(),
             errno: None,
             intno: None,
             errnums: NameMap::default(),
+            late: Mutex::default(),
             task: task.clone(),
         };
-        let mut raw: Vec<(
-            u32,
-            Vec<rapid_evaluator::Expr>,
-            Option<rapid_evaluator::Expr>,
-        )> = Vec::new();
+        p.lay_out_modules();
+        p.add_system_data();
+        p.add_signals();
+        p.compile_starts();
+        p
+    }
+
+    /// Module data and routines, in the task's order.
+    fn lay_out_modules(&mut self) {
+        let task = self.task.clone();
         for (u, unit) in task.units.iter().enumerate() {
-            for m in &unit.items.modules {
-                let mi = p.modules.len();
-                let mut module = Module {
+            for (mi, m) in unit.items.modules.iter().enumerate() {
+                let module = self.modules.len();
+                self.modules.push(Module {
                     unit: u,
+                    index: mi,
                     name: m.name.clone(),
-                    data: NameMap::default(),
-                    routines: NameMap::default(),
-                };
-                for d in &m.data {
-                    let id = p.globals.len() as u32;
+                });
+                for (i, d) in m.data.iter().enumerate() {
+                    let item = ItemRef {
+                        unit: u,
+                        module: mi,
+                        item: Item::Data(i),
+                    };
                     let ty = Type::array(
                         d.ty.as_ref().map(|t| t.name.clone()).unwrap_or_default(),
                         vec![0; d.dims.len()],
                     );
-                    p.globals.push(Global {
-                        name: d.name.clone(),
-                        storage: d.storage,
-                        ty,
-                        origin: Origin::Module {
-                            module: mi,
+                    let shared = d.storage == Storage::Pers && d.scope == Scope::Global;
+                    let home = if shared {
+                        self.pers.push(Pers {
+                            name: d.name.clone(),
+                            ty,
+                            module,
                             range: d.range.clone(),
-                        },
-                        start: Start::Value(Value::Num(0.0)),
-                    });
-                    let dims = d
-                        .dims
-                        .iter()
-                        .map(|r| {
-                            rapid_analyzer::body::expression_at(unit, r.clone())
-                                .unwrap_or(rapid_evaluator::Expr::Unknown)
-                        })
-                        .collect();
-                    let init = d
-                        .init
-                        .as_ref()
-                        .map(|r| rapid_analyzer::body::expression_at(unit, r.clone()))
-                        .map(|e| e.unwrap_or(rapid_evaluator::Expr::Unknown));
-                    raw.push((id, dims, init));
-                    let key = fold(&d.name);
-                    module.data.entry(key.clone()).or_insert(id);
-                    if d.scope != Scope::Local {
-                        p.global_data.entry(key).or_insert(id);
-                    }
+                            start: None,
+                        });
+                        Home::Pers(self.pers.len() as u32 - 1)
+                    } else {
+                        self.globals.push(Global {
+                            name: d.name.clone(),
+                            storage: d.storage,
+                            ty,
+                            origin: Origin::Module {
+                                module,
+                                range: d.range.clone(),
+                            },
+                            start: Start::Value(Value::Num(0.0)),
+                        });
+                        Home::Global(self.globals.len() as u32 - 1)
+                    };
+                    self.items.insert(item, home);
                 }
-                for r in &m.routines {
-                    let id = p.routines.len() as u32;
-                    p.routines.push(RoutineInfo {
+                for (i, r) in m.routines.iter().enumerate() {
+                    let item = ItemRef {
+                        unit: u,
                         module: mi,
+                        item: Item::Routine(i),
+                    };
+                    self.routine_ids.insert(item, self.routines.len() as u32);
+                    self.routines.push(RoutineInfo {
+                        item,
+                        module,
                         decl: r.clone(),
-                        compiled: OnceLock::new(),
+                        code: OnceLock::new(),
                     });
-                    let key = fold(&r.name);
-                    module.routines.entry(key.clone()).or_insert(id);
-                    if !r.local {
-                        p.global_routines.entry(key).or_insert(id);
-                    }
                 }
-                p.modules.push(module);
             }
         }
-        p.add_system_data();
-        let mut signals: Vec<(String, SignalKind)> = task
-            .signals
-            .iter()
-            .flat_map(|s| s.iter())
-            .filter_map(|(n, t)| Some((n.clone(), SignalKind::from_type(t)?)))
-            .collect();
-        signals.sort_by(|a, b| a.0.cmp(&b.0));
-        signals.extend(extra_signals.iter().cloned());
-        for (name, kind) in signals {
-            p.add_signal(&name, kind);
-        }
-        // Module data: dimensions and initial values compiled in their
-        // module's scope.
-        for (id, dims, init) in raw {
-            let Some(g) = p.globals.get(id as usize) else {
-                continue;
-            };
-            let Origin::Module { module, .. } = g.origin else {
-                continue;
-            };
-            let ty = g.ty.clone();
-            let c = Compiler::for_module(&p, module);
-            let dims = dims
-                .iter()
-                .map(|d| c.expr(d, Some(&Type::named("num"))))
-                .collect();
-            let init = init.map(|e| c.expr(&e, Some(&ty)));
-            let conv = c.conv(&ty);
-            if let Some(g) = p.globals.get_mut(id as usize) {
-                g.start = Start::Eval { dims, init, conv };
-            }
-        }
-        p
     }
 
-    /// The catalogue's predefined data, as globals of every task.
+    /// The catalogue's predefined data, as data of every task.
     fn add_system_data(&mut self) {
         let mut next_errno = SYSTEM_ERRNO_BASE;
         for d in &self.task.catalogue.data {
             let key = fold(&d.name);
-            if self.global_data.contains_key(&key) {
+            if self.system.contains_key(&key) {
                 continue;
             }
             let ty = Type::named(d.ty.clone());
@@ -305,16 +321,9 @@ impl Program {
                 d.value
                     .as_deref()
                     .and_then(parse_data_literal)
-                    .and_then(|e| {
-                        rapid_evaluator::eval_as(
-                            &e,
-                            Some(&ty),
-                            &crate::types::TypesEnv(&self.types),
-                        )
-                        .ok()
-                    })
+                    .and_then(|e| rapid_evaluator::eval_as(&e, Some(&ty), &self.types).ok())
                     .or_else(|| rapid_evaluator::predefined(&d.name))
-                    .unwrap_or_else(|| self.types.zero(&ty))
+                    .unwrap_or_else(|| self.zero(&ty))
             };
             let storage = match d.kind {
                 DatumKind::Const => Storage::Const,
@@ -334,28 +343,82 @@ impl Program {
                 "intno" => self.intno = Some(id),
                 _ => {}
             }
-            self.global_data.insert(key, id);
+            self.system.insert(key, id);
         }
     }
 
-    fn add_signal(&mut self, name: &str, kind: SignalKind) {
-        let key = fold(name);
-        if self.global_data.contains_key(&key) {
-            return;
+    /// The signals the task's configuration declares, in name order.
+    fn add_signals(&mut self) {
+        let mut signals: Vec<(String, &'static str)> = self
+            .task
+            .signals
+            .iter()
+            .flat_map(|s| s.iter())
+            .map(|(n, t)| (n.clone(), *t))
+            .collect();
+        signals.sort();
+        for (name, ty) in signals {
+            let key = fold(&name);
+            if self.system.contains_key(&key) {
+                continue;
+            }
+            let id = self.globals.len() as u32;
+            self.globals.push(Global {
+                name: name.clone(),
+                storage: Storage::Var,
+                ty: Type::named(ty),
+                origin: Origin::Signal,
+                start: Start::Value(signal_value(ty, &name)),
+            });
+            self.system.insert(key, id);
         }
-        let id = self.globals.len() as u32;
-        let ty = kind.type_name();
-        self.globals.push(Global {
-            name: name.to_owned(),
-            storage: Storage::Var,
-            ty: Type::named(ty),
-            origin: Origin::Signal,
-            start: Start::Value(Value::Record {
-                ty: ty.to_owned(),
-                fields: vec![("name".to_owned(), Value::Str(name.to_owned()))],
-            }),
-        });
-        self.global_data.insert(key, id);
+    }
+
+    /// The code that computes each module data object's starting value.
+    fn compile_starts(&mut self) {
+        let task = self.task.clone();
+        let mut starts = Vec::new();
+        for (item, home) in &self.items {
+            let Some(d) = task.data(*item) else { continue };
+            let Some(module) = self.module_of(item.unit, item.module) else {
+                continue;
+            };
+            let Some(r) = Resolver::in_module(&task, item.unit, item.module) else {
+                continue;
+            };
+            let code = crate::compile::data_start(self, r, module, d, *home);
+            starts.push((*home, code));
+        }
+        for (home, code) in starts {
+            let code = Arc::new(code);
+            match home {
+                Home::Global(g) => {
+                    if let Some(g) = self.globals.get_mut(g as usize) {
+                        g.start = Start::Code(code);
+                    }
+                }
+                Home::Pers(k) => {
+                    if let Some(p) = self.pers.get_mut(k as usize) {
+                        p.start = Some(code);
+                    }
+                }
+            }
+        }
+    }
+
+    /// The program's module of module `index` of unit `unit`.
+    pub(crate) fn module_of(&self, unit: usize, index: usize) -> Option<usize> {
+        self.modules
+            .iter()
+            .position(|m| m.unit == unit && m.index == index)
+    }
+
+    /// The value data of type `ty` starts with when not initialised.
+    pub(crate) fn zero(&self, ty: &Type) -> Value {
+        if ty.dims.iter().product::<usize>() > MAX_ELEMENTS {
+            return Value::Array(Vec::new());
+        }
+        rapid_evaluator::zero_value(ty, &self.types, &opaque_zero)
     }
 
     /// The signals of the program (configured or given), with their kinds.
@@ -368,25 +431,20 @@ impl Program {
     }
 
     /// The routine an entry point or a test names: a global routine, else
-    /// a `LOCAL` one of that name.
+    /// a `LOCAL` one of that name (as the controller's `Task` named
+    /// entry works from any module).
     pub fn find_routine(&self, name: &str) -> Option<u32> {
-        let key = fold(name);
-        self.global_routines.get(&key).copied().or_else(|| {
-            self.modules
-                .iter()
-                .find_map(|m| m.routines.get(&key).copied())
-        })
-    }
-
-    /// The routine `name` as module `module` sees it: its own (`LOCAL`
-    /// ones too), else a global one.
-    pub(crate) fn routine_from(&self, module: usize, name: &str) -> Option<u32> {
-        let key = fold(name);
-        self.modules
-            .get(module)
-            .and_then(|m| m.routines.get(&key))
-            .or_else(|| self.global_routines.get(&key))
-            .copied()
+        let global = self
+            .routines
+            .iter()
+            .position(|r| !r.decl.local && r.decl.name.eq_ignore_ascii_case(name));
+        global
+            .or_else(|| {
+                self.routines
+                    .iter()
+                    .position(|r| r.decl.name.eq_ignore_ascii_case(name))
+            })
+            .map(|i| i as u32)
     }
 
     /// Every routine of the program, in the task's order.
@@ -428,17 +486,22 @@ impl Program {
         }
     }
 
+    /// The 1-based line of byte `offset` of unit `unit`.
+    pub(crate) fn line(&self, unit: usize, offset: usize) -> u32 {
+        self.location(unit, offset).line as u32
+    }
+
     /// The task the program was loaded from.
     pub fn task(&self) -> &Arc<Task> {
         &self.task
     }
 
     /// The compiled form of routine `id` (compiled on first use).
-    pub(crate) fn routine(&self, id: u32) -> Option<&Arc<Routine>> {
+    pub(crate) fn code(&self, id: u32) -> Option<&Arc<Code>> {
         let info = self.routines.get(id as usize)?;
         Some(
-            info.compiled
-                .get_or_init(|| Arc::new(Compiler::routine(self, id))),
+            info.code
+                .get_or_init(|| Arc::new(crate::compile::routine(self, id))),
         )
     }
 
@@ -449,4 +512,224 @@ impl Program {
             .find(|(_, v)| **v == n)
             .map(|(k, _)| k.to_ascii_uppercase())
     }
+
+    /// The procedure `name` names when called at run time from module
+    /// `module` (late binding, `CallByVar`), resolved as a call written
+    /// there would be: the module's own routines, then the task's. A name
+    /// `Module:Routine` names a routine of that module.
+    pub(crate) fn routine_named(&self, module: usize, name: &str) -> Option<u32> {
+        let key = (module, fold(name));
+        if let Ok(cache) = self.late.lock()
+            && let Some(hit) = cache.get(&key)
+        {
+            return *hit;
+        }
+        let found = self.resolve_routine(module, name);
+        if let Ok(mut cache) = self.late.lock() {
+            cache.insert(key, found);
+        }
+        found
+    }
+
+    fn resolve_routine(&self, module: usize, name: &str) -> Option<u32> {
+        let (module, name) = match name.split_once(':') {
+            Some((m, r)) => (
+                self.modules
+                    .iter()
+                    .position(|md| md.name.eq_ignore_ascii_case(m.trim()))?,
+                r.trim(),
+            ),
+            None => (module, name),
+        };
+        let m = self.modules.get(module)?;
+        let resolver = Resolver::in_module(&self.task, m.unit, m.index)?;
+        match resolver.routine(name, false)? {
+            Callee::Routine(item) => self.routine_ids.get(&item).copied(),
+            Callee::Builtin(_) => None,
+        }
+    }
+
+    /// The data object `name` names at run time from module `module`
+    /// (`GetDataVal`, `SetDataVal`), resolved as a name written there.
+    pub(crate) fn data_named(&self, module: usize, name: &str) -> Option<Home> {
+        let m = self.modules.get(module)?;
+        let resolver = Resolver::in_module(&self.task, m.unit, m.index)?;
+        match resolver.data(name)?.what {
+            DataRef::Item(item) => self.items.get(&item).copied(),
+            DataRef::Builtin(d) => self.system.get(&fold(&d.name)).map(|&g| Home::Global(g)),
+            DataRef::Signal { name, .. } => self.system.get(&fold(&name)).map(|&g| Home::Global(g)),
+            _ => None,
+        }
+    }
+
+    /// The arguments of a call of routine `id` made at run time (late
+    /// binding), written with `names`, bound to its parameters: the
+    /// parameter of each argument.
+    pub(crate) fn bind_late(
+        &self,
+        id: u32,
+        names: &[Option<Box<str>>],
+    ) -> Result<Vec<u32>, String> {
+        let info = self
+            .routines
+            .get(id as usize)
+            .ok_or("a routine that does not exist")?;
+        let m = self
+            .modules
+            .get(info.module)
+            .ok_or("a routine that does not exist")?;
+        let resolver = Resolver::in_module(&self.task, m.unit, m.index)
+            .ok_or("a module that cannot be read")?;
+        let shapes: Vec<Arg<'_>> = names
+            .iter()
+            .map(|n| match n {
+                Some(n) => Arg::Named(n),
+                None => Arg::Positional,
+            })
+            .collect();
+        let b = resolver
+            .bind(&Callee::Routine(info.item), &shapes)
+            .ok_or("the routine's parameters are not known")?;
+        if !b.is_complete() {
+            return Err(format!(
+                "the arguments do not fit the parameters of {}",
+                info.decl.name
+            ));
+        }
+        Ok((0..names.len())
+            .filter_map(|k| b.param_of(k).map(|i| i as u32))
+            .collect())
+    }
+
+    /// Every call of the program bound, as the interpreter bound it: by
+    /// unit, the routine it is in (by its start; `None` for a data
+    /// object's value) with the routine called and the parameter of each
+    /// argument. Compiles every routine. For the oracle that compares the
+    /// interpreter's bindings with the checker's
+    /// ([`rapid_analyzer::resolve::call_bindings`]).
+    pub fn call_bindings(&self) -> Vec<(usize, rapid_analyzer::resolve::CallBinding)> {
+        let mut codes: Vec<(Option<usize>, Arc<Code>)> = Vec::new();
+        for id in 0..self.routines.len() {
+            if let Some(code) = self.code(id as u32) {
+                codes.push((Some(code.range.start), code.clone()));
+            }
+        }
+        for g in &self.globals {
+            if let Start::Code(code) = &g.start {
+                codes.push((None, code.clone()));
+            }
+        }
+        codes.extend(
+            self.pers
+                .iter()
+                .filter_map(|p| Some((None, p.start.clone()?))),
+        );
+        codes
+            .into_iter()
+            .flat_map(|(routine, code)| {
+                code.bindings
+                    .iter()
+                    .map(|(callee, params)| {
+                        (
+                            code.unit,
+                            rapid_analyzer::resolve::CallBinding {
+                                routine,
+                                callee: callee.clone(),
+                                params: params.clone(),
+                            },
+                        )
+                    })
+                    .collect::<Vec<_>>()
+            })
+            .collect()
+    }
+
+    /// The global of predefined data or a signal named `name`.
+    pub(crate) fn system_global(&self, name: &str) -> Option<u32> {
+        self.system.get(&fold(name)).copied()
+    }
+}
+
+/// The largest array the interpreter makes (elements in all).
+pub(crate) const MAX_ELEMENTS: usize = 1 << 20;
+
+/// The value of a signal data object: the signal it stands for (an empty
+/// name: none, as a signal variable before `AliasIO`).
+pub(crate) fn signal_value(ty: &str, name: &str) -> Value {
+    Value::Record {
+        ty: ty.to_owned(),
+        fields: vec![("name".to_owned(), Value::Str(name.to_owned()))],
+    }
+}
+
+/// The starting value of a type the simulation keeps in its own form
+/// (signals, clocks, files, sockets, task and unit references).
+pub(crate) fn opaque_zero(folded: &str) -> Value {
+    let record = |fields: Vec<(&str, Value)>| Value::Record {
+        ty: folded.to_owned(),
+        fields: fields.into_iter().map(|(n, v)| (n.to_owned(), v)).collect(),
+    };
+    match folded {
+        s if s.starts_with("signal") => signal_value(s, ""),
+        "clock" => record(vec![
+            ("running", Value::Bool(false)),
+            ("start", Value::Dnum(0.0)),
+            ("elapsed", Value::Dnum(0.0)),
+        ]),
+        "iodev" | "dir" | "socketdev" => record(vec![("handle", Value::Num(0.0))]),
+        _ => record(Vec::new()),
+    }
+}
+
+/// An error that keeps the controller from loading a task (and so from
+/// running it): a syntax error, or what the checker finds the controller
+/// would refuse when it loads and links the modules (names, types,
+/// arguments; not `constant-error`, which the controller meets only when
+/// the statement runs).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct LoadError {
+    pub at: Location,
+    /// The rule's code and name (`E001`, `syntax-error`).
+    pub code: &'static str,
+    pub name: &'static str,
+    pub message: String,
+}
+
+impl std::fmt::Display for LoadError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "{}:{}:{}: error[{}] {} ({})",
+            self.at.path, self.at.line, self.at.column, self.code, self.message, self.name
+        )
+    }
+}
+
+/// The errors that keep the controller from loading `task`, in the order
+/// of its files and of their positions: the checker's errors (at their
+/// default severities, which inline suppressions and a project's
+/// configuration do not change: the controller knows neither).
+pub fn load_errors(task: &Task) -> Vec<LoadError> {
+    let mut out = Vec::new();
+    for (_, unit) in task.own_units() {
+        let lines = LineIndex::new(&unit.text);
+        for d in rapid_analyzer::workspace::diagnostics_of(task, unit) {
+            let load_time = d.rule.code != "E413";
+            if d.severity != rapid_analyzer::diagnostic::Severity::Error || !load_time {
+                continue;
+            }
+            let (line, column) = lines.human(d.range.start, &unit.text);
+            out.push(LoadError {
+                at: Location {
+                    path: unit.path.clone(),
+                    line,
+                    column,
+                },
+                code: d.rule.code,
+                name: d.rule.name,
+                message: d.message,
+            });
+        }
+    }
+    out
 }

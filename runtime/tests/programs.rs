@@ -17,11 +17,13 @@
 //! `UPDATE_EXPECT=1` rewrites the `!>` and `!!` lines with what the runs
 //! give (review the diff).
 
+mod support;
+
 use std::sync::{Arc, Mutex};
 
 use rapid_analyzer::catalogue::{Selection, Version};
 use rapid_analyzer::task::{Task, Unit};
-use rapid_runtime::{Config, Machine, Outcome, Program, SignalChange, SignalKind, Status};
+use rapid_runtime::{Config, Outcome, Program, SignalChange, SignalKind};
 
 struct Expect {
     lines: Vec<String>,
@@ -51,13 +53,7 @@ fn parse(text: &str) -> Expect {
         } else if let Some(rest) = t.strip_prefix("!! ") {
             e.outcome = Some(rest.trim().to_owned());
         } else if let Some(rest) = t.strip_prefix("!set ") {
-            let (name, value) = rest.trim().split_once('=').expect("!set NAME=VALUE");
-            let (value, at) = value.split_once('@').unwrap_or((value, "0"));
-            e.signals.push(SignalChange {
-                name: name.to_owned(),
-                value: value.parse().expect("a number"),
-                at: at.parse().expect("seconds"),
-            });
+            e.signals.push(support::signal_change(rest));
         } else if let Some(rest) = t.strip_prefix("!entry ") {
             e.entry = rest.trim().to_owned();
         } else if let Some(rest) = t.strip_prefix("!steps ") {
@@ -67,28 +63,6 @@ fn parse(text: &str) -> Expect {
         }
     }
     e
-}
-
-/// The outcome in the fixtures' words.
-fn brief(o: &Outcome) -> Option<String> {
-    let line = o.at.as_ref().map_or(0, |l| l.line);
-    Some(match o.status {
-        Status::Finished => return None,
-        Status::Exited => "exited".to_owned(),
-        Status::Stopped => format!("stopped at {line}"),
-        Status::Error => format!(
-            "{} at {line}",
-            o.errno.as_ref().map_or("?", |(_, n)| n.as_str())
-        ),
-        Status::Unsupported => format!(
-            "{} at {line}",
-            o.message
-                .replace("not supported in simulation", "unsupported")
-        ),
-        Status::Invalid => format!("invalid at {line}"),
-        Status::Budget => format!("budget at {line}"),
-        Status::Deadlock => format!("deadlock at {line}"),
-    })
 }
 
 fn run(path: &std::path::Path) -> (Vec<String>, Option<String>, Outcome) {
@@ -130,19 +104,14 @@ fn run(path: &std::path::Path) -> (Vec<String>, Option<String>, Outcome) {
     let _ = std::fs::remove_dir_all(&sandbox);
     std::fs::create_dir_all(&sandbox).expect("a sandbox");
     config.sandbox = Some(sandbox.clone());
-    let entry = e.entry.clone();
-    let outcome = rapid_runtime::on_large_stack(move || {
-        let out = move |_: rapid_runtime::Stream, line: &str| {
-            sink.lock().expect("the output").push(line.to_owned())
-        };
-        let mut m = Machine::new(program.clone(), config, Box::new(out));
-        let id = program.find_routine(&entry).expect("the entry routine");
-        m.run(id)
-    })
-    .expect("no panic");
+    let out = move |_: rapid_runtime::Stream, line: &str| {
+        sink.lock().expect("the output").push(line.to_owned())
+    };
+    let id = program.find_routine(&e.entry).expect("the entry routine");
+    let (outcome, _) = rapid_runtime::run_routine(program, id, config, Box::new(out));
     let _ = std::fs::remove_dir_all(&sandbox);
     let lines = lines.lock().expect("the output").clone();
-    (lines, brief(&outcome), outcome)
+    (lines, support::brief(&outcome), outcome)
 }
 
 fn rewrite(path: &std::path::Path, lines: &[String], outcome: &Option<String>) {

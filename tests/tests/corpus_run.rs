@@ -2,7 +2,9 @@
 //! runs (its `main`, or else the module's first procedure without
 //! parameters) to its end, or stops with a controller error at a real line
 //! of the program, or at an instruction named as not supported in
-//! simulation, or when a budget runs out; never a panic, never a hang.
+//! simulation, or when a budget runs out; never a panic, never a hang. A
+//! task the checker finds the controller would not load does not run (its
+//! first error is at a real line too).
 //!
 //! `cargo test -p rapid-tests --test corpus_run -- --nocapture` prints how
 //! the runs ended; with `RAPID_RUN_ALL=1` every procedure without
@@ -15,7 +17,7 @@ use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use rapid_analyzer::items::RoutineKind;
-use rapid_runtime::{Config, Limits, Machine, Program, Status};
+use rapid_runtime::{Config, Limits, Program, Status};
 
 #[test]
 fn every_corpus_module_runs_or_stops_with_a_reason_at_a_real_line() {
@@ -45,8 +47,29 @@ fn every_corpus_module_runs_or_stops_with_a_reason_at_a_real_line() {
     let mut problems = Vec::new();
     let mut slowest = (Duration::ZERO, String::new());
     let mut runs = 0;
+    let mut not_loaded: HashSet<String> = HashSet::new();
     for (path, _) in &loaded.modules {
         let task = ws.task_of(path);
+        if not_loaded.contains(&task.key) {
+            continue;
+        }
+        let errors = rapid_runtime::load_errors(&task);
+        if let Some(first) = errors.first() {
+            not_loaded.insert(task.key.clone());
+            *by_status
+                .entry("not loaded (checker errors)".to_owned())
+                .or_default() += 1;
+            let real = lines
+                .get(first.at.path.as_str())
+                .is_some_and(|&n| first.at.line >= 1 && first.at.line <= n);
+            if !real {
+                problems.push(format!("{path}: a load error at no real line: {first}"));
+            }
+            if std::env::var_os("RAPID_RUN_VERBOSE").is_some() {
+                println!("{path}: not loaded: {first}");
+            }
+            continue;
+        }
         let program = Arc::new(Program::new(task.clone(), &[]));
         let routines = program.routines();
         let entry = routines
@@ -84,21 +107,20 @@ fn every_corpus_module_runs_or_stops_with_a_reason_at_a_real_line() {
             let id = entry.id;
             let p = program.clone();
             let started = Instant::now();
-            let outcome = rapid_runtime::on_large_stack(move || {
-                let mut m = Machine::new(p, config, Box::new(|_, _: &str| {}));
-                m.run(id)
+            let outcome = std::panic::catch_unwind(move || {
+                rapid_runtime::run_routine(p, id, config, Box::new(|_, _: &str| {})).0
             });
             let took = started.elapsed();
             let what = format!("{path} ({})", entry.name);
             if took > slowest.0 {
                 slowest = (took, what.clone());
             }
-            let Some(outcome) = outcome else {
+            let Ok(outcome) = outcome else {
                 problems.push(format!("{what}: the interpreter panicked"));
                 continue;
             };
             let key = match outcome.status {
-                Status::Finished | Status::Exited | Status::Stopped => {
+                Status::Finished | Status::Exited | Status::Stopped | Status::Halted => {
                     format!("{:?}", outcome.status)
                 }
                 Status::Error => format!(

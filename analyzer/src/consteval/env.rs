@@ -60,27 +60,11 @@ impl<'t> Shared<'t> {
     }
 
     fn record_layout(&self, name: &str) -> Option<Vec<(String, Type)>> {
-        match self.types().user(name) {
-            Some(UserType::Record(r)) => Some(
-                r.components
-                    .iter()
-                    .map(|(n, t, _)| {
-                        let ty = t.as_ref().map_or("?", |t| t.name.as_str());
-                        (n.clone(), Type::named(ty))
-                    })
-                    .collect(),
-            ),
-            Some(UserType::Alias(_)) => None,
-            None => catalogue_layout(self.task.catalogue, name),
-        }
+        record_layout_in(self.types(), self.task.catalogue, name)
     }
 
     fn alias_of(&self, name: &str) -> Option<Type> {
-        match self.types().user(name) {
-            Some(UserType::Alias(a)) => a.of.as_ref().map(|t| Type::named(&t.name)),
-            Some(UserType::Record(_)) => None,
-            None => catalogue_alias(self.task.catalogue, name),
-        }
+        alias_in(self.types(), self.task.catalogue, name)
     }
 
     /// The initial value to offer for data of this storage.
@@ -90,6 +74,100 @@ impl<'t> Shared<'t> {
             Storage::Pers => self.options.pers_initial,
             Storage::Var => self.options.var_initial,
         }
+    }
+}
+
+/// The components of record type `name`: a user record of `types`, else
+/// a record of the catalogue view `cat`.
+fn record_layout_in(types: &Types<'_>, cat: &Catalogue, name: &str) -> Option<Vec<(String, Type)>> {
+    match types.user(name) {
+        Some(UserType::Record(r)) => Some(
+            r.components
+                .iter()
+                .map(|(n, t, _)| {
+                    let ty = t.as_ref().map_or("?", |t| t.name.as_str());
+                    (n.clone(), Type::named(ty))
+                })
+                .collect(),
+        ),
+        Some(UserType::Alias(_)) => None,
+        None => catalogue_layout(cat, name),
+    }
+}
+
+/// The type alias type `name` stands for: a user alias of `types`, else
+/// an alias of the catalogue view `cat`.
+fn alias_in(types: &Types<'_>, cat: &Catalogue, name: &str) -> Option<Type> {
+    match types.user(name) {
+        Some(UserType::Alias(a)) => a.of.as_ref().map(|t| Type::named(&t.name)),
+        Some(UserType::Record(_)) => None,
+        None => catalogue_alias(cat, name),
+    }
+}
+
+/// The types of a task as the evaluator asks for them (records and
+/// aliases, the task's then its catalogue view's), computed once and
+/// owned: for a reader that keeps them while it runs the task's code (the
+/// interpreter coerces values and builds aggregates with them). Names
+/// resolve to nothing.
+pub struct TypeEnv {
+    records: crate::names::NameMap<Option<Vec<(String, Type)>>>,
+    aliases: crate::names::NameMap<Option<Type>>,
+    catalogue: &'static Catalogue,
+}
+
+impl TypeEnv {
+    /// The types of `task` (its user types are looked up now; the
+    /// catalogue's on demand).
+    pub fn of(task: &Task) -> TypeEnv {
+        let types = task.types();
+        let mut records = crate::names::NameMap::default();
+        let mut aliases = crate::names::NameMap::default();
+        for unit in task.units.iter() {
+            for m in &unit.items.modules {
+                for r in &m.records {
+                    records
+                        .entry(fold(&r.name))
+                        .or_insert_with(|| record_layout_in(&types, task.catalogue, &r.name));
+                }
+                for a in &m.aliases {
+                    aliases
+                        .entry(fold(&a.name))
+                        .or_insert_with(|| alias_in(&types, task.catalogue, &a.name));
+                }
+            }
+        }
+        TypeEnv {
+            records,
+            aliases,
+            catalogue: task.catalogue,
+        }
+    }
+}
+
+impl Env for TypeEnv {
+    fn lookup(&self, _name: &str) -> Lookup<'_> {
+        Lookup::Unknown
+    }
+
+    fn record_layout(&self, type_name: &str) -> Option<Vec<(String, Type)>> {
+        match self.records.get(&fold(type_name)) {
+            Some(layout) => layout.clone(),
+            None if self.aliases.contains_key(&fold(type_name)) => None,
+            None => catalogue_layout(self.catalogue, type_name),
+        }
+    }
+
+    fn alias_of(&self, type_name: &str) -> Option<Type> {
+        match self.aliases.get(&fold(type_name)) {
+            Some(of) => of.clone(),
+            None if self.records.contains_key(&fold(type_name)) => None,
+            None => catalogue_alias(self.catalogue, type_name),
+        }
+    }
+
+    fn catalogue(&self) -> &Catalogue {
+        self.catalogue
     }
 }
 

@@ -1,8 +1,10 @@
 //! Semantic facts computed from the syntax without reporting anything, for
-//! the checker and the editor features alike.
+//! the checker and the editor features alike; [`resolve`] gives them to
+//! readers outside the analyzer (the interpreter).
 
 pub(crate) mod def;
 pub(crate) mod labels;
+pub mod resolve;
 pub(crate) mod scope;
 pub(crate) mod signature;
 pub(crate) mod sync;

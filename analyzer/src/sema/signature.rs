@@ -34,7 +34,7 @@ pub(crate) struct Param {
 impl Param {
     /// Bound by position: neither optional nor an alternative.
     pub fn positional(&self) -> bool {
-        !self.optional && self.alt_group.is_none()
+        crate::catalogue::binding::Parameter::positional(self)
     }
 }
 
@@ -160,134 +160,22 @@ impl Signature {
     }
 }
 
-/// An argument of a call, as far as binding needs it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum Arg<'a> {
-    /// A value without a name: it goes to the next positional parameter.
-    Positional,
-    /// `\Name`, `\Name:=value` or `Name:=value`.
-    Named(&'a str),
-}
+pub(crate) use crate::catalogue::binding::{Arg, Binding, BoundArg, Target};
 
-/// Where an argument goes.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum Target {
-    /// The parameter of this index.
-    Param(usize),
-    /// A name the routine has no parameter of.
-    UnknownName,
-    /// A positional argument after every positional parameter was bound.
-    TooMany,
-}
-
-/// One argument's binding.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) struct BoundArg {
-    pub target: Target,
-    /// The previous argument bound to the same parameter (a duplicate).
-    pub repeats: Option<usize>,
-    /// Another member of the parameter's `|` group, given before: the
-    /// two exclude each other.
-    pub excludes: Option<usize>,
-}
-
-/// A call's arguments bound to a signature's parameters.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub(crate) struct Binding {
-    /// One per argument, in order.
-    pub args: Vec<BoundArg>,
-    /// The positional parameters no argument is bound to: those after the
-    /// last bound one first, then those skipped before it.
-    pub missing: Vec<usize>,
-    /// The required `|` groups of which no member is given.
-    pub missing_groups: Vec<u32>,
-}
-
-impl Binding {
-    /// The parameter after the last one an argument is bound to (where the
-    /// next argument goes, when arguments come in the parameters' order).
-    pub fn next_param(&self) -> usize {
-        self.args
-            .iter()
-            .filter_map(|a| match a.target {
-                Target::Param(i) => Some(i + 1),
-                _ => None,
-            })
-            .max()
-            .unwrap_or(0)
+impl crate::catalogue::binding::Parameter for Param {
+    fn name(&self) -> &str {
+        &self.name
+    }
+    fn optional(&self) -> bool {
+        self.optional
+    }
+    fn alt_group(&self) -> Option<u32> {
+        self.alt_group
     }
 }
 
-/// Binds `args` to the parameters of `sig`: a positional argument goes to
-/// the next positional parameter, a named one to its own (and positional
-/// ones after it continue after it).
+/// Binds `args` to the parameters of `sig` (the catalogue's
+/// [`crate::catalogue::binding::bind_args`], the one binder).
 pub(crate) fn bind_args(sig: &Signature, args: &[Arg<'_>]) -> Binding {
-    let positional: Vec<usize> = sig
-        .params
-        .iter()
-        .enumerate()
-        .filter(|(_, p)| p.positional())
-        .map(|(i, _)| i)
-        .collect();
-    let mut next = 0;
-    let mut last_given: Vec<Option<usize>> = vec![None; sig.params.len()];
-    let mut group_given: Vec<(u32, usize)> = Vec::new();
-    let mut out = Binding::default();
-    for (k, arg) in args.iter().enumerate() {
-        let target = match arg {
-            Arg::Positional => match positional.get(next) {
-                Some(&i) => {
-                    next += 1;
-                    Target::Param(i)
-                }
-                None => Target::TooMany,
-            },
-            Arg::Named(name) => match sig.param(name) {
-                Some(i) => {
-                    if let Some(at) = positional.iter().position(|&r| r == i) {
-                        next = next.max(at + 1);
-                    }
-                    Target::Param(i)
-                }
-                None => Target::UnknownName,
-            },
-        };
-        let mut bound = BoundArg {
-            target,
-            repeats: None,
-            excludes: None,
-        };
-        if let Target::Param(i) = target {
-            if let Some(slot) = last_given.get_mut(i) {
-                bound.repeats = slot.replace(k);
-            }
-            if let Some(g) = sig.params.get(i).and_then(|p| p.alt_group) {
-                match group_given.iter().find(|(h, _)| *h == g) {
-                    Some(&(_, other)) if other != i => bound.excludes = Some(other),
-                    Some(_) => {}
-                    None => group_given.push((g, i)),
-                }
-            }
-        }
-        out.args.push(bound);
-    }
-    let unbound = |i: &&usize| last_given.get(**i).is_some_and(Option::is_none);
-    let split = next.min(positional.len());
-    out.missing = positional[split..]
-        .iter()
-        .filter(unbound)
-        .chain(positional[..split].iter().filter(unbound))
-        .copied()
-        .collect();
-    out.missing_groups = sig
-        .groups
-        .iter()
-        .filter(|g| g.required && !group_given.iter().any(|(h, _)| *h == g.id))
-        .map(|g| g.id)
-        .collect();
-    out
+    crate::catalogue::binding::bind_args(&sig.params, &sig.groups, args)
 }
-
-#[cfg(test)]
-#[path = "signature_tests.rs"]
-mod tests;

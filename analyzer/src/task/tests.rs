@@ -2,9 +2,18 @@ use super::*;
 
 #[test]
 fn tasks_and_their_modules_come_from_sys_cfg() {
-    let cfg = "SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n\n  -Name \"T_ROB1\" -Type \"NORMAL\" \\\n   -MotionTask \n\n  -Name \"T_PLC\" -Type \"SEMISTATIC\"\n#\nCAB_TASK_MODULES:\n\n  -File \"HOME:/user.sys\" -ModName \"user\" -AllTask\n  -File \"RELEASE:/options/x.sys\" -ModName \"x\" \\\n   -Task \"T_ROB1\" -Hidden\n#\nCAB_EXEC_HOOKS:\n  -Routine \"r\" -Shelf \"POWER_ON\"\n";
+    let cfg = "SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n\n  -Name \"T_ROB1\" -Type \"NORMAL\" \\\n   -MotionTask \n\n  -Name \"T_PLC\" -Type \"SEMISTATIC\" -Entry \"plc\"\n#\nCAB_TASK_MODULES:\n\n  -File \"HOME:/user.sys\" -ModName \"user\" -AllTask\n  -File \"RELEASE:/options/x.sys\" -ModName \"x\" \\\n   -Task \"T_ROB1\" -Hidden\n#\nCAB_EXEC_HOOKS:\n  -Routine \"r\" -Shelf \"POWER_ON\"\n";
     let config = parse_config(cfg);
     assert_eq!(config.tasks, ["T_ROB1", "T_PLC"]);
+    let kinds: Vec<(TaskKind, bool)> = config
+        .task_settings
+        .iter()
+        .map(|t| (t.kind, t.motion))
+        .collect();
+    assert_eq!(
+        kinds,
+        [(TaskKind::Normal, true), (TaskKind::SemiStatic, false)]
+    );
     assert_eq!(
         config.task_modules,
         [
@@ -21,6 +30,7 @@ fn tasks_and_their_modules_come_from_sys_cfg() {
     assert_eq!(config.task_modules[0].home_path(), Some("user.sys"));
     assert_eq!(config.task_modules[1].home_path(), None);
     assert_eq!(config.task_modules[1].file_name(), "x.sys");
+    assert_eq!(config.task_settings[1].entry.as_deref(), Some("plc"));
 }
 
 #[test]
@@ -148,4 +158,40 @@ fn released_trees_stay_released() {
     let n = data.find("n :=").unwrap_or_default();
     assert_eq!(crate::ide::references(&open_data, 0, n, true, &[]).len(), 3);
     assert!(none_loaded(), "references");
+}
+
+/// A task with more modules or signals is the same controller's task: the
+/// catalogue view, controller names and grouping stay.
+#[test]
+fn extra_units_and_signals_keep_the_controller() {
+    let unit = |path: &str, text: &str| Arc::new(Unit::new(path.into(), text.into(), None));
+    let mut task = Task::new(
+        "b/RAPID/TASK1".into(),
+        vec![unit(
+            "b/RAPID/TASK1/A.mod",
+            "MODULE A\n  PROC main()\n  ENDPROC\nENDMODULE\n",
+        )],
+        None,
+    );
+    let version = crate::catalogue::Version::parse("5.0").expect("a version");
+    task.set_catalogue(&crate::catalogue::Selection::new(Some(version), Vec::new()));
+    task.set_controller_names(["rob1".to_owned()].into(), ["t_rob1id".to_owned()].into());
+    task.grouping = Grouping::Backup;
+    let more = task.with_extra_units([unit(
+        "<t>/B.sys",
+        "MODULE B\n  PROC helper()\n  ENDPROC\nENDMODULE\n",
+    )]);
+    assert!(std::ptr::eq(more.catalogue, task.catalogue));
+    assert_eq!(more.mecunits, task.mecunits);
+    assert_eq!(more.task_ids, task.task_ids);
+    assert_eq!(more.grouping, Grouping::Backup);
+    assert_eq!(more.units.len(), 2);
+    assert!(more.globals.contains_key("helper") && more.globals.contains_key("main"));
+    let wired = more.with_signals(&[("di_part".to_owned(), "signaldi")]);
+    assert_eq!(
+        wired.signals.as_ref().and_then(|s| s.get("di_part")),
+        Some(&"signaldi")
+    );
+    assert!(std::ptr::eq(wired.catalogue, task.catalogue));
+    assert_ne!(wired.interface, more.interface);
 }

@@ -558,6 +558,23 @@ impl Workspace {
             .collect()
     }
 
+    /// How the controller of the backup task `key` runs its tasks: the
+    /// `CAB_TASKS` of the backup's `SYS.cfg`, in order (task *n* is kept
+    /// in `RAPID/TASKn`). Empty outside a backup or without a `SYS.cfg`.
+    pub fn controller_tasks(&self, key: &str) -> Vec<crate::task::TaskSettings> {
+        if crate::layout::controller_of(key).is_none() {
+            return Vec::new();
+        }
+        let Some(root) = crate::layout::backup_root(key) else {
+            return Vec::new();
+        };
+        self.configs
+            .iter()
+            .filter(|(p, _)| home::syspar_root(p) == Some(root))
+            .flat_map(|(_, c)| c.task_settings.iter().cloned())
+            .collect()
+    }
+
     /// The `taskid` data of the controller a backup task `key` belongs to
     /// (folded `<task name>id`): its `SYS.cfg` tasks, and its task folders
     /// named after a task (`T_ROB1`; `TASKn` folders are numbered, not

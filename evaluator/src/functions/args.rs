@@ -1,7 +1,8 @@
 //! Binding a call's arguments to the parameters of the function's catalogue
 //! signature, and reading them in an implementation.
 
-use rapid_catalogue::{ANYTYPE, Mode, Param};
+use rapid_catalogue::binding::{self, Target};
+use rapid_catalogue::{ANYTYPE, Mode, Param, Routine};
 
 use crate::env::Env;
 use crate::error::{ErrorCode, EvalError, err};
@@ -174,41 +175,48 @@ pub(crate) fn bad<T>(func: &str, msg: impl std::fmt::Display) -> Result<T, EvalE
     err(ErrorCode::BadArguments, format!("{func}: {msg}"))
 }
 
-/// Binds `args` to `params` as RAPID does: positional arguments fill the
-/// required parameters in order, `\Name` ones name theirs; switches take
-/// no value; members of one `|` group exclude each other. Value arguments
-/// are then evaluated as their parameter's type.
+/// Binds `args` to the parameters of `routine` with the one binder
+/// ([`rapid_catalogue::binding::bind_args`]: positional arguments fill the
+/// positional parameters in order, named ones name theirs; members of one
+/// `|` group exclude each other), then checks what the binding says:
+/// switches take no value, the others need one. Value arguments are then
+/// evaluated as their parameter's type.
 pub(crate) fn bind<'a>(
     ctx: &mut Ctx,
     func: &'a str,
-    params: &'a [Param],
+    routine: &'a Routine,
     args: &'a [Arg],
     env: &dyn Env,
 ) -> Result<Args<'a>, EvalError> {
-    let required = |p: &Param| !p.optional && !p.switch;
+    let params = routine.params.as_slice();
+    let shapes: Vec<binding::Arg<'_>> = args
+        .iter()
+        .map(|a| match &a.name {
+            Some(n) => binding::Arg::Named(n),
+            None => binding::Arg::Positional,
+        })
+        .collect();
+    let bound = binding::bind_args(params, &routine.alt_groups, &shapes);
     let mut slots: Vec<Slot<'a>> = params.iter().map(|_| Slot::Empty).collect();
     let mut pending: Vec<Option<&'a Expr>> = params.iter().map(|_| None).collect();
-    let mut bound = vec![false; params.len()];
-    for arg in args {
-        let i = match &arg.name {
-            Some(n) => match params.iter().position(|p| p.name.eq_ignore_ascii_case(n)) {
-                Some(i) => i,
-                None => return bad(func, format_args!("there is no parameter {n}")),
-            },
-            None => match params
-                .iter()
-                .enumerate()
-                .position(|(i, p)| required(p) && !bound[i])
-            {
-                Some(i) => i,
-                None => return bad(func, "too many arguments"),
-            },
+    for (arg, b) in args.iter().zip(&bound.args) {
+        let i = match b.target {
+            Target::Param(i) => i,
+            Target::UnknownName => {
+                let n = arg.name.as_deref().unwrap_or_default();
+                return bad(func, format_args!("there is no parameter {n}"));
+            }
+            Target::TooMany => return bad(func, "too many arguments"),
         };
-        let p = &params[i];
-        if bound[i] {
+        let Some(p) = params.get(i) else {
+            return bad(func, "too many arguments");
+        };
+        if b.repeats.is_some() {
             return bad(func, format_args!("argument {} is given twice", p.name));
         }
-        bound[i] = true;
+        if b.excludes.is_some() {
+            return bad(func, "mutually exclusive arguments are given together");
+        }
         match (pass(p), &arg.value) {
             (Pass::Switch, None) => slots[i] = Slot::Sw,
             (Pass::Switch, Some(_)) => {
@@ -222,19 +230,16 @@ pub(crate) fn bind<'a>(
             (Pass::Value, Some(e)) => pending[i] = Some(e),
         }
     }
-    for (i, p) in params.iter().enumerate() {
-        if required(p) && !bound[i] {
-            return bad(func, format_args!("argument {} is missing", p.name));
-        }
-        if p.alt_group.is_some()
-            && bound[i]
-            && params
-                .iter()
-                .enumerate()
-                .any(|(j, q)| j > i && q.alt_group == p.alt_group && bound[j])
-        {
-            return bad(func, "mutually exclusive arguments are given together");
-        }
+    if let Some(p) = bound.missing.first().and_then(|&i| params.get(i)) {
+        return bad(func, format_args!("argument {} is missing", p.name));
+    }
+    if let Some(&g) = bound.missing_groups.first() {
+        let names: Vec<String> = params
+            .iter()
+            .filter(|p| p.alt_group == Some(g))
+            .map(|p| format!("\\{}", p.name))
+            .collect();
+        return bad(func, format_args!("one of {} is needed", names.join(", ")));
     }
     for (i, p) in params.iter().enumerate() {
         if let Some(e) = pending[i] {

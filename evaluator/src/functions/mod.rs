@@ -206,7 +206,7 @@ pub(crate) fn call(
     if let Some(size) = declared_dim(ctx, name, args, env) {
         return size;
     }
-    let a = args::bind(ctx, name, &routine.params, args, env)?;
+    let a = args::bind(ctx, name, routine, args, env)?;
     match f {
         Impl::Pure(f) => f(&a),
         Impl::Ctx(f) => f(&a, ctx, env),

@@ -1,15 +1,12 @@
-//! The debugger on the program's thread: decides where to stop (pause,
-//! steps, breakpoints with their conditions, errors that end the run) and,
-//! while stopped, answers the requests that read or change the program's
-//! state (stack, scopes, variables, evaluate, set variable).
+//! What the adapter answers while the controller is stopped: stacks (a
+//! thread per task), scopes, variables, evaluations and assignments. A
+//! frame id names a task and a routine frame of it; a variables reference
+//! names a scope or a record or array shown.
 
 use std::collections::HashMap;
-use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::mpsc::Receiver;
-use std::sync::{Arc, Mutex};
 
 use rapid_evaluator::Value;
-use rapid_runtime::{Control, Debugger, Machine, Outcome, Variable};
+use rapid_runtime::{Controller, Variable};
 use serde_json::{Value as Json, json};
 
 use super::wire::Writer;
@@ -21,53 +18,18 @@ pub struct Breakpoint {
     pub condition: Option<String>,
 }
 
-/// What the adapter's two threads share.
-#[derive(Default)]
-pub struct Shared {
-    /// Breakpoints by the file's canonical path.
-    pub breakpoints: Mutex<HashMap<String, Vec<Breakpoint>>>,
-    /// A pause was asked for.
-    pub pause: AtomicBool,
-    /// The program is stopped, answering requests.
-    pub paused: AtomicBool,
-    /// The session ends.
-    pub terminate: AtomicBool,
-}
-
-/// What the adapter sends the program's thread.
-pub enum Command {
-    /// A request answered while stopped.
-    Request(Json),
-    Resume(Resume),
-    Terminate,
-}
-
-#[derive(Clone, Copy)]
-pub enum Resume {
-    Continue,
-    Next,
-    StepIn,
-    StepOut,
-}
-
-#[derive(Clone, Copy)]
-enum Mode {
-    Run,
-    StepIn,
-    /// Stop at the next statement of this depth or less.
-    StepOver(usize),
-    /// Stop at the next statement of less than this depth.
-    StepOut(usize),
-}
+/// Frame ids: `task * FRAMES + frame`.
+const FRAMES: usize = 1_000_000;
 
 /// What a `variablesReference` stands for while stopped.
 enum Ref {
-    Locals(usize),
-    Module(usize),
-    System,
-    /// A record or an array: the frame, the RAPID expression that names it,
-    /// whether it is an element of an array, and its value.
+    Locals(usize, usize),
+    Module(usize, usize),
+    System(usize),
+    /// A record or an array: the task and frame, the RAPID expression that
+    /// names it, whether it is an element of an array, and its value.
     Value {
+        task: usize,
         frame: usize,
         path: String,
         element: bool,
@@ -75,32 +37,16 @@ enum Ref {
     },
 }
 
-pub struct DapDebugger {
-    shared: Arc<Shared>,
-    commands: Receiver<Command>,
-    writer: Writer,
-    mode: Mode,
-    stop_on_entry: bool,
+#[derive(Default)]
+pub struct Inspector {
     refs: Vec<Ref>,
     canonical: HashMap<String, String>,
 }
 
-impl DapDebugger {
-    pub fn new(
-        shared: Arc<Shared>,
-        commands: Receiver<Command>,
-        writer: Writer,
-        stop_on_entry: bool,
-    ) -> DapDebugger {
-        DapDebugger {
-            shared,
-            commands,
-            writer,
-            mode: Mode::Run,
-            stop_on_entry,
-            refs: Vec::new(),
-            canonical: HashMap::new(),
-        }
+impl Inspector {
+    /// The controller stopped: earlier references no longer hold.
+    pub fn stopped(&mut self) {
+        self.refs.clear();
     }
 
     /// The canonical path of a unit's path (as breakpoints name files).
@@ -113,86 +59,26 @@ impl DapDebugger {
         c
     }
 
-    fn breakpoint_hit(&mut self, m: &mut Machine, path: &str, line: usize) -> bool {
-        let key = self.canonical(path);
-        let conditions: Vec<Option<String>> = match self.shared.breakpoints.lock() {
-            Ok(b) => b
-                .get(&key)
-                .map(|list| {
-                    list.iter()
-                        .filter(|b| b.line == line)
-                        .map(|b| b.condition.clone())
-                        .collect()
-                })
-                .unwrap_or_default(),
-            Err(_) => return false,
-        };
-        conditions.into_iter().any(|c| match c {
-            None => true,
-            Some(c) => match m.evaluate(0, &c) {
-                Ok(Value::Bool(b)) => b,
-                Ok(other) => {
-                    self.writer.event(
-                        "output",
-                        json!({"category": "console", "output": format!("breakpoint condition `{c}` is {other}, not a bool\n")}),
-                    );
-                    true
-                }
-                Err(e) => {
-                    self.writer.event(
-                        "output",
-                        json!({"category": "console", "output": format!("breakpoint condition `{c}`: {e}\n")}),
-                    );
-                    true
-                }
-            },
-        })
-    }
-
-    /// Stops: tells the client, answers its requests, and returns how to go
-    /// on.
-    fn stop(&mut self, m: &mut Machine, body: Json) -> Control {
-        self.refs.clear();
-        self.shared.paused.store(true, Ordering::SeqCst);
-        self.writer.event("stopped", body);
-        let control = loop {
-            match self.commands.recv() {
-                Ok(Command::Request(req)) => self.answer(m, &req),
-                Ok(Command::Resume(r)) => {
-                    let depth = m.depth();
-                    self.mode = match r {
-                        Resume::Continue => Mode::Run,
-                        Resume::Next => Mode::StepOver(depth),
-                        Resume::StepIn => Mode::StepIn,
-                        Resume::StepOut => Mode::StepOut(depth),
-                    };
-                    break Control::Continue;
-                }
-                Ok(Command::Terminate) | Err(_) => break Control::Terminate,
-            }
-        };
-        self.shared.paused.store(false, Ordering::SeqCst);
-        control
-    }
-
     fn add(&mut self, r: Ref) -> usize {
         self.refs.push(r);
         self.refs.len()
     }
 
-    fn answer(&mut self, m: &mut Machine, req: &Json) {
+    pub fn answer(&mut self, c: &mut Controller, writer: &Writer, req: &Json) {
         let args = &req["arguments"];
-        let frame = |key: &str| args[key].as_u64().unwrap_or(0) as usize;
+        let number = |key: &str| args[key].as_u64().unwrap_or(0) as usize;
+        let frame_of = |id: usize| (id / FRAMES, id % FRAMES);
         match req["command"].as_str().unwrap_or_default() {
             "stackTrace" => {
-                let frames: Vec<Json> = m
-                    .stack_frames()
+                let task = number("threadId").saturating_sub(1);
+                let frames: Vec<Json> = c
+                    .stack(task)
                     .iter()
                     .enumerate()
                     .map(|(i, f)| {
                         let path = self.canonical(&f.at.path);
                         json!({
-                            "id": i,
+                            "id": task * FRAMES + i,
                             "name": f.routine,
                             "source": {"name": file_name(&path), "path": path},
                             "line": f.at.line,
@@ -201,66 +87,70 @@ impl DapDebugger {
                     })
                     .collect();
                 let total = frames.len();
-                self.writer
-                    .respond(req, json!({"stackFrames": frames, "totalFrames": total}));
+                writer.respond(req, json!({"stackFrames": frames, "totalFrames": total}));
             }
             "scopes" => {
-                let f = frame("frameId");
+                let (task, frame) = frame_of(number("frameId"));
                 let scopes = json!([
-                    {"name": "Locals", "presentationHint": "locals", "variablesReference": self.add(Ref::Locals(f)), "expensive": false},
-                    {"name": "Module", "variablesReference": self.add(Ref::Module(f)), "expensive": false},
-                    {"name": "System", "variablesReference": self.add(Ref::System), "expensive": false},
+                    {"name": "Locals", "presentationHint": "locals", "variablesReference": self.add(Ref::Locals(task, frame)), "expensive": false},
+                    {"name": "Module", "variablesReference": self.add(Ref::Module(task, frame)), "expensive": false},
+                    {"name": "System", "variablesReference": self.add(Ref::System(task)), "expensive": false},
                 ]);
-                self.writer.respond(req, json!({"scopes": scopes}));
+                writer.respond(req, json!({"scopes": scopes}));
             }
             "variables" => {
-                let r = frame("variablesReference");
-                let vars = self.children(m, r);
-                self.writer.respond(req, json!({"variables": vars}));
+                let vars = self.children(c, number("variablesReference"));
+                writer.respond(req, json!({"variables": vars}));
             }
             "setVariable" => {
-                let r = frame("variablesReference");
                 let name = args["name"].as_str().unwrap_or_default();
                 let text = args["value"].as_str().unwrap_or_default();
-                let Some((f, target)) = self.target(r, name) else {
-                    return self.writer.fail(req, "this variable cannot be changed");
+                let Some((task, frame, target)) = self.target(number("variablesReference"), name)
+                else {
+                    return writer.fail(req, "this variable cannot be changed");
                 };
-                match m.assign(f, &target, text) {
+                match c.assign(task, frame, &target, text) {
                     Ok(v) => {
-                        let (shown, reference) = self.show(f, &target, false, &v);
-                        self.writer.respond(
+                        let (shown, reference) = self.show(task, frame, &target, false, &v);
+                        writer.respond(
                             req,
                             json!({"value": shown, "type": type_of(&v), "variablesReference": reference}),
                         );
                     }
-                    Err(e) => self.writer.fail(req, &e),
+                    Err(e) => writer.fail(req, &e),
                 }
             }
             "evaluate" => {
-                let f = frame("frameId");
+                let (task, frame) = frame_of(number("frameId"));
                 let text = args["expression"].as_str().unwrap_or_default();
-                match m.evaluate(f, text) {
+                match c.evaluate(task, frame, text) {
                     Ok(v) => {
-                        let (shown, reference) = self.show(f, text, false, &v);
-                        self.writer.respond(
+                        let (shown, reference) = self.show(task, frame, text, false, &v);
+                        writer.respond(
                             req,
                             json!({"result": shown, "type": type_of(&v), "variablesReference": reference}),
                         );
                     }
-                    Err(e) => self.writer.fail(req, &e),
+                    Err(e) => writer.fail(req, &e),
                 }
             }
-            other => self
-                .writer
-                .fail(req, &format!("{other} is not answered while stopped")),
+            other => writer.fail(req, &format!("{other} is not answered while stopped")),
         }
     }
 
     /// The text of a value and, for a record or an array, a reference to
     /// its parts.
-    fn show(&mut self, frame: usize, path: &str, element: bool, v: &Value) -> (String, usize) {
+    fn show(
+        &mut self,
+        task: usize,
+        frame: usize,
+        path: &str,
+        element: bool,
+        v: &Value,
+    ) -> (String, usize) {
         let reference = match v {
             Value::Record { .. } | Value::Array(_) => self.add(Ref::Value {
+                task,
                 frame,
                 path: path.to_owned(),
                 element,
@@ -271,14 +161,21 @@ impl DapDebugger {
         (v.to_string(), reference)
     }
 
-    fn variable(&mut self, frame: usize, path: String, element: bool, var: &Variable) -> Json {
+    fn variable(
+        &mut self,
+        task: usize,
+        frame: usize,
+        path: String,
+        element: bool,
+        var: &Variable,
+    ) -> Json {
         let name = var.name.clone();
         match &var.value {
             None => {
                 json!({"name": name, "value": "<not present>", "type": var.ty, "variablesReference": 0})
             }
             Some(v) => {
-                let (shown, reference) = self.show(frame, &path, element, v);
+                let (shown, reference) = self.show(task, frame, &path, element, v);
                 json!({
                     "name": name,
                     "value": shown,
@@ -290,18 +187,20 @@ impl DapDebugger {
         }
     }
 
-    fn children(&mut self, m: &Machine, r: usize) -> Vec<Json> {
-        let (frame, vars, parent): (usize, Vec<Variable>, Option<(String, bool)>) =
+    fn children(&mut self, c: &Controller, r: usize) -> Vec<Json> {
+        type Parent = Option<(String, bool)>;
+        let (task, frame, vars, parent): (usize, usize, Vec<Variable>, Parent) =
             match self.refs.get(r.wrapping_sub(1)) {
-                Some(Ref::Locals(f)) => (*f, m.frame_variables(*f), None),
-                Some(Ref::Module(f)) => (*f, m.module_variables(*f), None),
-                Some(Ref::System) => (0, m.system_variables(), None),
+                Some(Ref::Locals(t, f)) => (*t, *f, c.frame_variables(*t, *f), None),
+                Some(Ref::Module(t, f)) => (*t, *f, c.module_variables(*t, *f), None),
+                Some(Ref::System(t)) => (*t, 0, c.system_variables(*t), None),
                 Some(Ref::Value {
+                    task,
                     frame,
                     path,
                     element,
                     value,
-                }) => (*frame, parts(value), Some((path.clone(), *element))),
+                }) => (*task, *frame, parts(value), Some((path.clone(), *element))),
                 None => return Vec::new(),
             };
         vars.iter()
@@ -310,69 +209,25 @@ impl DapDebugger {
                     None => (v.name.clone(), false),
                     Some((p, element)) => child_path(p, *element, &v.name),
                 };
-                self.variable(frame, path, element, v)
+                self.variable(task, frame, path, element, v)
             })
             .collect()
     }
 
-    /// The frame and the expression naming child `name` of reference `r`.
-    fn target(&self, r: usize, name: &str) -> Option<(usize, String)> {
+    /// The task, frame and expression naming child `name` of reference
+    /// `r`.
+    fn target(&self, r: usize, name: &str) -> Option<(usize, usize, String)> {
         match self.refs.get(r.wrapping_sub(1))? {
-            Ref::Locals(f) | Ref::Module(f) => Some((*f, name.to_owned())),
-            Ref::System => Some((0, name.to_owned())),
+            Ref::Locals(t, f) | Ref::Module(t, f) => Some((*t, *f, name.to_owned())),
+            Ref::System(t) => Some((*t, 0, name.to_owned())),
             Ref::Value {
+                task,
                 frame,
                 path,
                 element,
                 ..
-            } => Some((*frame, child_path(path, *element, name).0)),
+            } => Some((*task, *frame, child_path(path, *element, name).0)),
         }
-    }
-}
-
-impl Debugger for DapDebugger {
-    fn statement(&mut self, m: &mut Machine) -> Control {
-        if self.shared.terminate.load(Ordering::SeqCst) {
-            return Control::Terminate;
-        }
-        let Some(at) = m.location() else {
-            return Control::Continue;
-        };
-        let depth = m.depth();
-        let reason = if std::mem::take(&mut self.stop_on_entry) {
-            Some("entry")
-        } else if self.shared.pause.swap(false, Ordering::SeqCst) {
-            Some("pause")
-        } else {
-            match self.mode {
-                Mode::StepIn => Some("step"),
-                Mode::StepOver(d) if depth <= d => Some("step"),
-                Mode::StepOut(d) if depth < d => Some("step"),
-                _ => None,
-            }
-        };
-        let reason = match reason {
-            Some(r) => Some(r),
-            None if self.breakpoint_hit(m, &at.path, at.line) => Some("breakpoint"),
-            None => None,
-        };
-        match reason {
-            Some(reason) => self.stop(
-                m,
-                json!({"reason": reason, "threadId": 1, "allThreadsStopped": true}),
-            ),
-            None => Control::Continue,
-        }
-    }
-
-    fn error(&mut self, m: &mut Machine, outcome: &Outcome) {
-        let name = outcome.errno.as_ref().map_or("error", |(_, n)| n.as_str());
-        let text = format!("{name}: {}", outcome.message);
-        let _ = self.stop(
-            m,
-            json!({"reason": "exception", "description": text, "text": text, "threadId": 1, "allThreadsStopped": true}),
-        );
-        self.mode = Mode::Run;
     }
 }
 

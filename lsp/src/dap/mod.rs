@@ -1,44 +1,48 @@
 //! `rapid dap`: a debug adapter (Debug Adapter Protocol over stdin and
-//! stdout) for RAPID programs on the simulated controller.
+//! stdout) for RAPID programs on the virtual controller.
 //!
-//! `launch` arguments: `program` (a module or a task's folder), `entry`
-//! (the procedure, `main` by default; a test routine too), `test` (load
-//! the assertion module as `rapid test` does), `stopOnEntry`, `signals`
-//! (`["di1=1@2.5"]`, as `rapid run --set`), `maxSteps` and `maxTime` (the
-//! budgets, as `rapid run`'s), `noDebug`, `plot` (a file: when the
-//! program ends, the page that `rapid run --plot` writes, drawing the
-//! run's motion; the VS Code extension's "Show path" opens it). The
-//! program runs on
-//! its own thread; it stops at line breakpoints (with conditions), steps
-//! (over, into, out), pauses, and stops at a run-time error that no
-//! handler takes. While stopped, the stack, the scopes (the routine's
-//! data, its module's data, `ERRNO`/`INTNO`) and their values can be read
-//! and changed, and expressions evaluated in any frame. `TPWrite` and
+//! `launch` arguments: `program` (a module, a task's folder, or a backup:
+//! its tasks run together, each a thread), `entry` (the procedure, `main`
+//! by default; a test routine too), `task` (run only that task), `test`
+//! (load the assertion module as `rapid test` does), `stopOnEntry`,
+//! `signals` (`["di1=1@2.5"]`, as `rapid run --set`), `maxSteps` and
+//! `maxTime` (the budgets, as `rapid run`'s), `noDebug`, `plot` (a file:
+//! when the program ends, the page that `rapid run --plot` writes, drawing
+//! the run's motion; the VS Code extension's "Show path" opens it).
+//!
+//! The adapter drives the controller itself, in slices, between messages
+//! (a thread only reads the input): it runs until the next event (a
+//! breakpoint, with its condition; the end of a step; a pause; an error
+//! no handler takes; the end), and every task is a thread. While stopped,
+//! the stack, the scopes (the routine's data, its module's data,
+//! `ERRNO`/`INTNO`) and their values can be read and changed, and
+//! expressions evaluated in any frame of any task. `TPWrite` and
 //! `ErrWrite` lines are output events.
 
 mod debugger;
 mod wire;
 
+use std::collections::HashMap;
 use std::process::ExitCode;
-use std::sync::Arc;
-use std::sync::atomic::Ordering;
-use std::sync::mpsc::{Sender, channel};
+use std::sync::mpsc::{Receiver, TryRecvError, channel};
 
-use rapid_runtime::{Config, Machine, Program, Stream};
+use rapid_runtime::{Controller, Event, Resume, Stop, Stream};
 use serde_json::{Value, json};
 
-use crate::run::{Sandbox, load};
-use debugger::{Breakpoint, Command, DapDebugger, Resume, Shared, canonical};
+use crate::run::{RunOptions, Sandbox, load};
+use debugger::{Breakpoint, Inspector, canonical};
 use wire::{Writer, read_message};
 
 #[derive(Debug, clap::Args)]
 pub struct DapArgs {}
 
+/// How many statements run between two looks at the client's messages.
+const SLICE: u64 = 20_000;
+
 /// A launch waiting for `configurationDone`.
 struct Launch {
-    program: Arc<Program>,
-    entry: u32,
-    config: Config,
+    loaded: load::Loaded,
+    options: RunOptions,
     stop_on_entry: bool,
     debug: bool,
     /// Where to write the path page at the end, and its title.
@@ -47,47 +51,96 @@ struct Launch {
 
 struct Session {
     writer: Writer,
-    shared: Arc<Shared>,
-    commands: Option<Sender<Command>>,
     launch: Option<Launch>,
     configured: bool,
-    worker: Option<std::thread::JoinHandle<()>>,
+    controller: Option<Controller>,
+    /// The program runs (no stop is shown).
+    running: bool,
+    /// A pause was asked for and not yet met.
+    pausing: bool,
+    /// Breakpoints by the file's canonical path.
+    breakpoints: HashMap<String, Vec<Breakpoint>>,
+    /// The module files of the tasks: canonical path to the path the
+    /// tasks know them by.
+    units: HashMap<String, Vec<String>>,
+    inspector: Inspector,
+    sandbox: Option<Sandbox>,
+    plot: Option<(std::path::PathBuf, String)>,
 }
 
 pub fn run(_args: DapArgs) -> ExitCode {
-    let writer = Writer::new(Box::new(std::io::stdout()));
-    let mut session = Session {
-        writer,
-        shared: Arc::default(),
-        commands: None,
-        launch: None,
-        configured: false,
-        worker: None,
-    };
-    let stdin = std::io::stdin();
-    let mut input = stdin.lock();
-    loop {
-        match read_message(&mut input) {
-            Ok(Some(message)) => {
-                if !session.handle(&message) {
+    let (tx, rx) = channel();
+    std::thread::spawn(move || {
+        let stdin = std::io::stdin();
+        let mut input = stdin.lock();
+        loop {
+            match read_message(&mut input) {
+                Ok(Some(m)) => {
+                    if tx.send(Ok(m)).is_err() {
+                        break;
+                    }
+                }
+                Ok(None) => break,
+                Err(e) => {
+                    let _ = tx.send(Err(e.to_string()));
                     break;
                 }
             }
-            Ok(None) => break,
-            Err(e) => {
-                let _ = std::io::Write::write_all(
-                    &mut std::io::stderr(),
-                    format!("rapid: dap: {e}\n").as_bytes(),
-                );
-                break;
-            }
         }
-    }
+    });
+    let mut session = Session {
+        writer: Writer::new(Box::new(std::io::stdout())),
+        launch: None,
+        configured: false,
+        controller: None,
+        running: false,
+        pausing: false,
+        breakpoints: HashMap::new(),
+        units: HashMap::new(),
+        inspector: Inspector::default(),
+        sandbox: None,
+        plot: None,
+    };
+    session.serve(&rx);
     session.end();
     ExitCode::SUCCESS
 }
 
 impl Session {
+    /// Answers messages and runs the program between them until the
+    /// session ends.
+    fn serve(&mut self, rx: &Receiver<Result<Value, String>>) {
+        loop {
+            let message = if self.running {
+                match rx.try_recv() {
+                    Ok(m) => Some(m),
+                    Err(TryRecvError::Empty) => None,
+                    Err(TryRecvError::Disconnected) => return,
+                }
+            } else {
+                match rx.recv() {
+                    Ok(m) => Some(m),
+                    Err(_) => return,
+                }
+            };
+            match message {
+                Some(Ok(m)) => {
+                    if !self.handle(&m) {
+                        return;
+                    }
+                }
+                Some(Err(e)) => {
+                    let _ = std::io::Write::write_all(
+                        &mut std::io::stderr(),
+                        format!("rapid: dap: {e}\n").as_bytes(),
+                    );
+                    return;
+                }
+                None => self.run_slice(),
+            }
+        }
+    }
+
     /// Handles one message; `false` when the session is over.
     fn handle(&mut self, req: &Value) -> bool {
         if req["type"] != "request" {
@@ -138,9 +191,8 @@ impl Session {
                     .iter()
                     .map(|b| json!({"verified": true, "line": b.line}))
                     .collect();
-                if let Ok(mut all) = self.shared.breakpoints.lock() {
-                    all.insert(path, list);
-                }
+                self.breakpoints.insert(path.clone(), list);
+                self.apply_breakpoints(&path);
                 self.writer.respond(req, json!({"breakpoints": answer}));
             }
             "setExceptionBreakpoints" => self.writer.respond(req, json!({})),
@@ -149,36 +201,51 @@ impl Session {
                 self.writer.respond(req, json!({}));
                 self.start();
             }
-            "threads" => self
-                .writer
-                .respond(req, json!({"threads": [{"id": 1, "name": "T_ROB1"}]})),
+            "threads" => {
+                let threads: Vec<Value> = match &self.controller {
+                    Some(c) => c
+                        .tasks()
+                        .iter()
+                        .enumerate()
+                        .map(|(i, t)| json!({"id": i + 1, "name": t.name()}))
+                        .collect(),
+                    None => vec![json!({"id": 1, "name": "T_ROB1"})],
+                };
+                self.writer.respond(req, json!({"threads": threads}));
+            }
             "stackTrace" | "scopes" | "variables" | "setVariable" | "evaluate" => {
-                if self.shared.paused.load(Ordering::SeqCst) {
-                    self.send(Command::Request(req.clone()));
-                } else if req["command"] == "stackTrace" {
-                    self.writer
-                        .respond(req, json!({"stackFrames": [], "totalFrames": 0}));
-                } else {
-                    self.writer.fail(req, "the program is running");
+                match (&mut self.controller, self.running) {
+                    (Some(c), false) => self.inspector.answer(c, &self.writer, req),
+                    _ if req["command"] == "stackTrace" => self
+                        .writer
+                        .respond(req, json!({"stackFrames": [], "totalFrames": 0})),
+                    _ => self.writer.fail(req, "the program is running"),
                 }
             }
             "continue" | "next" | "stepIn" | "stepOut" => {
+                let task = args["threadId"].as_u64().unwrap_or(1).saturating_sub(1) as usize;
                 let how = match req["command"].as_str() {
-                    Some("next") => Resume::Next,
-                    Some("stepIn") => Resume::StepIn,
-                    Some("stepOut") => Resume::StepOut,
+                    Some("next") => Resume::StepOver { task },
+                    Some("stepIn") => Resume::StepIn { task },
+                    Some("stepOut") => Resume::StepOut { task },
                     _ => Resume::Continue,
                 };
                 self.writer
                     .respond(req, json!({"allThreadsContinued": true}));
-                self.send(Command::Resume(how));
+                if let Some(c) = &mut self.controller {
+                    c.resume(how);
+                    self.running = true;
+                }
             }
             "pause" => {
-                self.shared.pause.store(true, Ordering::SeqCst);
+                if let Some(c) = &mut self.controller {
+                    c.pause();
+                    self.pausing = true;
+                }
                 self.writer.respond(req, json!({}));
             }
             "terminate" => {
-                self.stop_program();
+                self.finish_program(true);
                 self.writer.respond(req, json!({}));
             }
             "disconnect" => {
@@ -195,90 +262,200 @@ impl Session {
         true
     }
 
-    fn send(&self, command: Command) {
-        if let Some(tx) = &self.commands {
-            let _ = tx.send(command);
-        }
-    }
-
-    fn stop_program(&self) {
-        self.shared.terminate.store(true, Ordering::SeqCst);
-        self.send(Command::Terminate);
-    }
-
-    /// Starts the launched program once the client's configuration is done.
+    /// Builds the controller of the launched program once the client's
+    /// configuration is done, and lets it run.
     fn start(&mut self) {
-        if self.worker.is_some() {
+        if self.controller.is_some() {
             return;
         }
-        let Some(launch) = self.launch.take() else {
+        let Some(mut launch) = self.launch.take() else {
             return;
         };
-        let (tx, rx) = channel();
-        self.commands = Some(tx);
-        let debugger = DapDebugger::new(
-            self.shared.clone(),
-            rx,
-            self.writer.clone(),
-            launch.stop_on_entry,
-        );
+        let sandbox = Sandbox::new(None).ok();
+        launch.options.sandbox = sandbox.as_ref().map(|s| s.path.clone());
+        self.sandbox = sandbox;
         let writer = self.writer.clone();
-        let worker = std::thread::Builder::new()
-            .name("rapid-dap-program".to_owned())
-            .stack_size(rapid_runtime::STACK_BYTES)
-            .spawn(move || {
-                let sandbox = Sandbox::new(None);
-                let mut config = launch.config;
-                config.sandbox = sandbox.as_ref().ok().map(|s| s.path.clone());
-                let out_writer = writer.clone();
-                let out = move |_: Stream, line: &str| {
-                    out_writer.event(
-                        "output",
-                        json!({"category": "stdout", "output": format!("{line}\n")}),
-                    );
-                };
-                let mut m = Machine::new(launch.program, config, Box::new(out));
+        let out = move |_: Stream, line: &str| {
+            writer.event(
+                "output",
+                json!({"category": "stdout", "output": format!("{line}\n")}),
+            );
+        };
+        match crate::run::build(&launch.loaded, &launch.options, Box::new(out)) {
+            Ok(mut c) => {
                 if launch.debug {
-                    m.set_debugger(Box::new(debugger));
+                    c.debug(launch.stop_on_entry);
                 }
-                let outcome = m.run(launch.entry);
-                if let Some((file, title)) = &launch.plot {
-                    let page = crate::run::trace::html(m.moves(), title);
-                    if let Err(e) = std::fs::write(file, page) {
-                        writer.event(
-                            "output",
-                            json!({"category": "stderr", "output": format!("{}: {e}\n", file.display())}),
-                        );
+                for t in &launch.loaded.tasks {
+                    for u in t.task.units.iter() {
+                        self.units
+                            .entry(canonical(&u.path))
+                            .or_default()
+                            .push(u.path.clone());
                     }
                 }
-                for line in crate::run::describe(&outcome) {
-                    writer.event(
-                        "output",
-                        json!({"category": "stderr", "output": format!("{line}\n")}),
-                    );
+                self.controller = Some(c);
+                self.plot = launch.plot;
+                let paths: Vec<String> = self.breakpoints.keys().cloned().collect();
+                for p in paths {
+                    self.apply_breakpoints(&p);
                 }
-                let code = if outcome.is_success() { 0 } else { 1 };
-                writer.event("exited", json!({"exitCode": code}));
-                writer.event("terminated", json!({}));
-            });
-        match worker {
-            Ok(w) => self.worker = Some(w),
+                self.running = true;
+            }
             Err(e) => {
                 self.writer.event(
                     "output",
-                    json!({"category": "stderr", "output": format!("cannot start the program: {e}\n")}),
+                    json!({"category": "stderr", "output": format!("{e}\n")}),
                 );
+                self.writer.event("exited", json!({"exitCode": 2}));
                 self.writer.event("terminated", json!({}));
             }
         }
     }
 
-    /// Ends the program and waits for its thread.
-    fn end(&mut self) {
-        self.stop_program();
-        if let Some(w) = self.worker.take() {
-            let _ = w.join();
+    /// Gives the controller the breakpoint lines of a file.
+    fn apply_breakpoints(&mut self, canonical_path: &str) {
+        let Some(c) = &mut self.controller else {
+            return;
+        };
+        let lines: Vec<u32> = self
+            .breakpoints
+            .get(canonical_path)
+            .map(|l| l.iter().map(|b| b.line as u32).collect())
+            .unwrap_or_default();
+        for unit_path in self.units.get(canonical_path).into_iter().flatten() {
+            c.set_breakpoints(unit_path, &lines);
         }
+    }
+
+    /// Runs the program until the next event or the end of a slice.
+    fn run_slice(&mut self) {
+        let Some(c) = &mut self.controller else {
+            self.running = false;
+            return;
+        };
+        let mut event = c.run_for(SLICE);
+        if matches!(event, Event::Running) && self.pausing {
+            event = c.take_pause().unwrap_or(Event::Running);
+        }
+        match event {
+            Event::Running => {}
+            Event::Stopped { task, stop } => {
+                if let Stop::Breakpoint = stop
+                    && !self.condition_holds(task)
+                {
+                    if let Some(c) = &mut self.controller {
+                        c.resume(Resume::Continue);
+                    }
+                    return;
+                }
+                self.pausing = false;
+                self.running = false;
+                self.inspector.stopped();
+                let thread = task + 1;
+                let body = match stop {
+                    Stop::Entry => json!({"reason": "entry"}),
+                    Stop::Breakpoint => json!({"reason": "breakpoint"}),
+                    Stop::Step => json!({"reason": "step"}),
+                    Stop::Pause => json!({"reason": "pause"}),
+                    Stop::Error(o) => {
+                        let name = o.errno.as_ref().map_or("error", |(_, n)| n.as_str());
+                        let text = format!("{name}: {}", o.message);
+                        json!({"reason": "exception", "description": text, "text": text})
+                    }
+                };
+                let mut body = body;
+                body["threadId"] = json!(thread);
+                body["allThreadsStopped"] = json!(true);
+                self.writer.event("stopped", body);
+            }
+            Event::Ended => self.finish_program(false),
+        }
+    }
+
+    /// Does a condition of a breakpoint at the line task `task` stopped
+    /// at hold (one without a condition always does)?
+    fn condition_holds(&mut self, task: usize) -> bool {
+        let Some(c) = &mut self.controller else {
+            return true;
+        };
+        let Some(at) = c.stack(task).first().map(|f| f.at.clone()) else {
+            return true;
+        };
+        let conditions: Vec<Option<String>> = self
+            .breakpoints
+            .get(&canonical(&at.path))
+            .map(|list| {
+                list.iter()
+                    .filter(|b| b.line == at.line)
+                    .map(|b| b.condition.clone())
+                    .collect()
+            })
+            .unwrap_or_default();
+        if conditions.is_empty() {
+            return true;
+        }
+        conditions.into_iter().any(|cond| match cond {
+            None => true,
+            Some(text) => match c.evaluate(task, 0, &text) {
+                Ok(rapid_evaluator::Value::Bool(b)) => b,
+                Ok(other) => {
+                    self.writer.event(
+                        "output",
+                        json!({"category": "console", "output": format!("breakpoint condition `{text}` is {other}, not a bool\n")}),
+                    );
+                    true
+                }
+                Err(e) => {
+                    self.writer.event(
+                        "output",
+                        json!({"category": "console", "output": format!("breakpoint condition `{text}`: {e}\n")}),
+                    );
+                    true
+                }
+            },
+        })
+    }
+
+    /// The program ended (or is ended now): the path page, how the tasks
+    /// ended, `exited` and `terminated`.
+    fn finish_program(&mut self, now: bool) {
+        let Some(mut c) = self.controller.take() else {
+            return;
+        };
+        if now {
+            c.terminate();
+        }
+        self.running = false;
+        let report = crate::run::report_of(&c);
+        if let Some((file, title)) = &self.plot {
+            let page = crate::run::trace::html(&report.moves, title);
+            if let Err(e) = std::fs::write(file, page) {
+                self.writer.event(
+                    "output",
+                    json!({"category": "stderr", "output": format!("{}: {e}\n", file.display())}),
+                );
+            }
+        }
+        for line in report.describe() {
+            self.writer.event(
+                "output",
+                json!({"category": "stderr", "output": format!("{line}\n")}),
+            );
+        }
+        let code = if report.is_success() { 0 } else { 1 };
+        self.writer.event("exited", json!({"exitCode": code}));
+        self.writer.event("terminated", json!({}));
+        self.sandbox = None;
+    }
+
+    /// Ends the program (if it runs) and removes its sandbox.
+    fn end(&mut self) {
+        if let Some(mut c) = self.controller.take() {
+            c.terminate();
+        }
+        self.running = false;
+        self.sandbox = None;
     }
 }
 
@@ -299,14 +476,35 @@ fn prepare(args: &Value) -> Result<Launch, String> {
         .transpose()?
         .unwrap_or_default();
     let path = std::path::PathBuf::from(program);
-    let mut task = load::one_task(&path, entry)?;
+    let mut loaded = load::controller(&path, args["task"].as_str(), args["entry"].as_str())?;
     if args["test"].as_bool().unwrap_or(false) {
-        task = load::with_modules(
-            &task,
+        // A test runs in the task that declares it, as `rapid test` runs
+        // it: that task (its controller's name and configuration) with
+        // the assertion module.
+        loaded.tasks.retain(|t| load::declares(&t.task, entry));
+        let Some(mut t) = loaded.tasks.pop().filter(|_| loaded.tasks.is_empty()) else {
+            return Err(format!("{program}: no task (or several) declares {entry}"));
+        };
+        t.task = load::with_modules(
+            &t.task,
             &[(crate::test_cmd::ASSERT_PATH, crate::test_cmd::ASSERT_MODULE)],
         );
+        entry.clone_into(&mut t.entry);
+        t.kind = rapid_runtime::TaskKind::Normal;
+        loaded.tasks = vec![t];
     }
-    let program = load::program(task, &sets);
+    let errors: Vec<String> = loaded
+        .tasks
+        .iter()
+        .flat_map(|t| rapid_runtime::load_errors(&t.task))
+        .map(|e| e.to_string())
+        .collect();
+    if !errors.is_empty() {
+        return Err(format!(
+            "the controller would not load the program:\n{}",
+            errors.join("\n")
+        ));
+    }
     let defaults = rapid_runtime::Limits::default();
     let plot = args["plot"].as_str().filter(|p| !p.is_empty()).map(|p| {
         (
@@ -314,24 +512,17 @@ fn prepare(args: &Value) -> Result<Launch, String> {
             format!("{} ({entry})", path.display()),
         )
     });
-    let entry_id = program.find_routine(entry).ok_or_else(|| {
-        format!(
-            "{program}: no procedure {entry} in the task",
-            program = path.display()
-        )
-    })?;
     Ok(Launch {
-        program,
-        entry: entry_id,
-        config: Config {
-            signals: sets,
+        loaded,
+        options: RunOptions {
+            sets,
             limits: rapid_runtime::Limits {
                 max_steps: args["maxSteps"].as_u64().unwrap_or(defaults.max_steps),
                 max_time: args["maxTime"].as_f64().unwrap_or(defaults.max_time),
                 ..defaults
             },
+            sandbox: None,
             trace: plot.is_some(),
-            ..Config::default()
         },
         stop_on_entry: args["stopOnEntry"].as_bool().unwrap_or(false),
         debug: !args["noDebug"].as_bool().unwrap_or(false),

@@ -216,6 +216,7 @@ fn status_name(s: Status) -> &'static str {
         Status::Invalid => "invalid",
         Status::Budget => "budget",
         Status::Deadlock => "deadlock",
+        Status::Halted => "halted",
     }
 }
 
@@ -228,7 +229,7 @@ fn place(roots: &[PathBuf], at: &rapid_runtime::Location) -> Place {
 }
 
 fn run_error(roots: &[PathBuf], o: &Outcome) -> Option<RunError> {
-    if matches!(o.status, Status::Finished | Status::Exited) {
+    if matches!(o.status, Status::Finished | Status::Exited | Status::Halted) {
         return None;
     }
     Some(RunError {
@@ -399,8 +400,16 @@ pub fn test(roots: &[PathBuf], params: TestParams) -> Result<Answer<TestReport>,
     let path = resolve(roots, &params.path)?;
     let env = Confined::new(roots.to_vec());
     let found = load::tasks_in(&env, std::slice::from_ref(&path))?;
-    let results =
-        crate::test_cmd::run_tests(&found.tasks, params.filter.as_deref(), &sets, &limits, None)?;
+    let results = crate::test_cmd::run_tests(
+        &found.tasks,
+        &crate::test_cmd::TestOptions {
+            filter: params.filter.clone(),
+            sets,
+            limits,
+            sandbox: None,
+        },
+        &mut |_| {},
+    )?;
     let count = |v: Verdict| results.iter().filter(|r| r.verdict == v).count();
     let report = TestReport {
         passed: count(Verdict::Pass),

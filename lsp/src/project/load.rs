@@ -262,9 +262,24 @@ pub fn load_around(
                 });
                 named.push(p.clone());
             }
-            Ok(_) => roots.push(p.clone()),
+            Ok(_) => {
+                // A backup's task folder (or a folder in it) is loaded with
+                // the rest of its task: its modules and the backup's
+                // configuration.
+                let inside = env.name(&p.join("x.mod"));
+                let folders = super::context::task_folders_in(env, &inside);
+                match folders.deep {
+                    Some(deep) => {
+                        roots.extend(folders.shallow);
+                        roots.push(deep);
+                    }
+                    None => roots.push(p.clone()),
+                }
+            }
         }
     }
+    let mut seen = std::collections::HashSet::new();
+    roots.retain(|r| seen.insert(r.clone()));
     let mut found = super::discover_in(env, &roots, Arc::new(|_, _| false), None);
     let listed = super::context::program_members(env, found.programs.iter());
     for n in named.iter().chain(&listed) {

@@ -1,21 +1,26 @@
 //! Loading the task(s) a path holds for `rapid run`, `rapid test` and
 //! `rapid dap`: the files are found and grouped as `rapid check` finds and
 //! groups them (a backup's `RAPID/TASKn`, the modules a `.pgf` lists, else
-//! a folder), through the analyzer's `Workspace`.
+//! a folder), through the analyzer's `Workspace`; a backup's `SYS.cfg`
+//! says what each task is called, when it starts and where.
 
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-use rapid_analyzer::task::{Task, Unit};
+use rapid_analyzer::layout::controller_of;
+use rapid_analyzer::task::{Task, TaskKind, TaskSettings, Unit};
 use rapid_runtime::{Program, SignalChange, SignalKind};
 
 use crate::project::Environment;
 
 /// The tasks found under `paths` (each named file's task whole: the other
-/// modules of its folder or backup task are loaded with it). Files that
-/// cannot be read are reported in `skipped`.
+/// modules of its folder or backup task are loaded with it), each with
+/// what `SYS.cfg` says of it. Files that cannot be read are reported in
+/// `skipped`.
 pub struct Found {
     pub tasks: Vec<Arc<Task>>,
+    /// By task: its `SYS.cfg` entry, when its controller has one.
+    pub settings: Vec<Option<TaskSettings>>,
     pub skipped: Vec<(PathBuf, String)>,
 }
 
@@ -47,16 +52,155 @@ pub fn tasks_in(env: &dyn Environment, paths: &[PathBuf]) -> Result<Found, Strin
         t
     };
     tasks.retain(|t| !t.units.is_empty());
-    Ok(Found { tasks, skipped })
+    let settings = tasks
+        .iter()
+        .map(|t| settings_of(&t.key, &workspace.controller_tasks(&t.key)))
+        .collect();
+    Ok(Found {
+        tasks,
+        settings,
+        skipped,
+    })
 }
 
-/// The one task `path` holds (a module: its task; a folder: its only
-/// task, or the one that declares `entry`).
-pub fn one_task(path: &Path, entry: &str) -> Result<Arc<Task>, String> {
-    one_task_in(&crate::project::DiskAsNamed, path, entry)
+/// The `SYS.cfg` entry of the task kept in folder `key`: task *n* for
+/// `RAPID/TASKn`, else the entry named as the folder.
+fn settings_of(key: &str, all: &[TaskSettings]) -> Option<TaskSettings> {
+    let folder = folder_name(key);
+    let numbered = folder
+        .get(..4)
+        .filter(|h| h.eq_ignore_ascii_case("task"))
+        .and_then(|_| folder.get(4..)?.parse::<usize>().ok());
+    match numbered {
+        Some(n) => all.get(n.checked_sub(1)?).cloned(),
+        None => all
+            .iter()
+            .find(|t| t.name.eq_ignore_ascii_case(folder))
+            .cloned(),
+    }
 }
 
-/// [`one_task`] in `env`.
+fn folder_name(key: &str) -> &str {
+    key.rsplit(['/', '\\']).next().unwrap_or(key)
+}
+
+/// A task of a controller to run.
+pub struct TaskToRun {
+    /// The task's name on the controller (`T_ROB1`).
+    pub name: String,
+    pub task: Arc<Task>,
+    pub kind: TaskKind,
+    /// The routine it starts in.
+    pub entry: String,
+    /// It moves a robot.
+    pub motion: bool,
+}
+
+/// The controller a path holds: its tasks.
+pub struct Loaded {
+    pub tasks: Vec<TaskToRun>,
+}
+
+/// The controller `path` holds, to run: every task of a backup (or of a
+/// folder of task folders) together, else the one task of `path` (the
+/// one that declares `entry` when a folder holds unrelated ones); `only`
+/// keeps the task of that name. A task starts in its `SYS.cfg` entry
+/// routine, else in `entry` (`main` when `None`); `entry` given wins for
+/// the one task `only` names.
+pub fn controller(path: &Path, only: Option<&str>, entry: Option<&str>) -> Result<Loaded, String> {
+    let given = entry;
+    let entry = entry.unwrap_or("main");
+    let found = tasks(std::slice::from_ref(&path.to_path_buf()))?;
+    if found.tasks.is_empty() {
+        return Err(format!("{}: no RAPID modules found", path.display()));
+    }
+    let together =
+        found.tasks.len() > 1 && (one_backup(&found.tasks) || folder_of_tasks(path, &found.tasks));
+    let lone = found.tasks.len() == 1;
+    let mut out: Vec<TaskToRun> = found
+        .tasks
+        .iter()
+        .zip(&found.settings)
+        .map(|(t, s)| {
+            let name = match s {
+                Some(s) => s.name.clone(),
+                None if lone && !t.is_backup() => "T_ROB1".to_owned(),
+                None => folder_name(&t.key).to_owned(),
+            };
+            TaskToRun {
+                name,
+                task: t.clone(),
+                kind: s.as_ref().map_or(TaskKind::Normal, |s| s.kind),
+                entry: s
+                    .as_ref()
+                    .and_then(|s| s.entry.clone())
+                    .unwrap_or_else(|| entry.to_owned()),
+                motion: s.as_ref().is_none_or(|s| s.motion),
+            }
+        })
+        .collect();
+    if let Some(name) = only {
+        let Some(i) = out.iter().position(|t| t.name.eq_ignore_ascii_case(name)) else {
+            let names: Vec<&str> = out.iter().map(|t| t.name.as_str()).collect();
+            return Err(format!(
+                "{}: no task {name} (the tasks: {})",
+                path.display(),
+                names.join(", ")
+            ));
+        };
+        let mut t = out.swap_remove(i);
+        if let Some(e) = given {
+            e.clone_into(&mut t.entry);
+        }
+        t.motion = true;
+        return Ok(Loaded { tasks: vec![t] });
+    }
+    if lone || together {
+        return Ok(Loaded { tasks: out });
+    }
+    let with_entry: Vec<usize> = (0..out.len())
+        .filter(|&i| declares(&out[i].task, entry))
+        .collect();
+    match with_entry.as_slice() {
+        [i] => {
+            let mut t = out.swap_remove(*i);
+            t.name = "T_ROB1".to_owned();
+            Ok(Loaded { tasks: vec![t] })
+        }
+        _ => {
+            let keys: Vec<&str> = out.iter().map(|t| t.task.key.as_str()).take(5).collect();
+            Err(format!(
+                "{}: the folder holds {} tasks; name one of them (e.g. {})",
+                path.display(),
+                out.len(),
+                keys.join(", ")
+            ))
+        }
+    }
+}
+
+/// Are these the tasks of one controller's backup?
+fn one_backup(tasks: &[Arc<Task>]) -> bool {
+    let first = controller_of(&tasks[0].key);
+    first.is_some() && tasks.iter().all(|t| controller_of(&t.key) == first)
+}
+
+/// Is `path` a folder whose subfolders are the tasks (`cell/T_ROB1`,
+/// `cell/T_ROB2`)?
+fn folder_of_tasks(path: &Path, tasks: &[Arc<Task>]) -> bool {
+    let Ok(dir) = std::fs::canonicalize(path) else {
+        return false;
+    };
+    tasks.iter().all(|t| {
+        Path::new(&t.key)
+            .parent()
+            .and_then(|p| std::fs::canonicalize(p).ok())
+            .is_some_and(|p| p == dir)
+    })
+}
+
+/// The one task `path` holds in `env` (a module: its task; a folder: its
+/// only task, or the one that declares `entry`), for `rapid mcp`.
 pub fn one_task_in(env: &dyn Environment, path: &Path, entry: &str) -> Result<Arc<Task>, String> {
     let found = tasks_in(env, std::slice::from_ref(&path.to_path_buf()))?;
     let mut tasks = found.tasks;
@@ -84,7 +228,8 @@ pub fn one_task_in(env: &dyn Environment, path: &Path, entry: &str) -> Result<Ar
     }
 }
 
-fn declares(task: &Task, routine: &str) -> bool {
+/// Does `task` declare a routine named `routine`?
+pub fn declares(task: &Task, routine: &str) -> bool {
     task.units.iter().any(|u| {
         u.items.modules.iter().any(|m| {
             m.routines
@@ -95,9 +240,11 @@ fn declares(task: &Task, routine: &str) -> bool {
 }
 
 /// `task` with more modules (given as path and text), unless it declares
-/// a routine of theirs already.
+/// a routine of theirs already: the same controller's task (configuration,
+/// catalogue view, controller names), as `rapid check` checks it, with the
+/// modules added ([`Task::with_extra_units`]).
 pub fn with_modules(task: &Arc<Task>, modules: &[(&str, &str)]) -> Arc<Task> {
-    let mut units = task.units.to_vec();
+    let mut extra = Vec::new();
     for (path, text) in modules {
         let unit = Unit::new((*path).to_owned(), (*text).to_owned(), None);
         let clash = unit
@@ -107,17 +254,13 @@ pub fn with_modules(task: &Arc<Task>, modules: &[(&str, &str)]) -> Arc<Task> {
             .flat_map(|m| m.routines.iter())
             .any(|r| declares(task, &r.name));
         if !clash {
-            units.push(Arc::new(unit));
+            extra.push(Arc::new(unit));
         }
     }
-    if units.len() == task.units.len() {
+    if extra.is_empty() {
         return task.clone();
     }
-    Arc::new(Task::new(
-        task.key.clone(),
-        units,
-        task.signals.as_deref().cloned(),
-    ))
+    Arc::new(task.with_extra_units(extra))
 }
 
 /// A `--set NAME=VALUE[@SECONDS]` option.
@@ -147,23 +290,32 @@ pub fn parse_set(text: &str) -> Result<SignalChange, String> {
     })
 }
 
-/// The program of `task`, with the signals `--set` names that its
-/// configuration does not declare (their kind guessed from the name's
-/// first letters: `di`, `do`, `ai`, `ao`, `gi`, `go`; a digital input
-/// otherwise).
-pub fn program(task: Arc<Task>, sets: &[SignalChange]) -> Arc<Program> {
+/// `task` with the signals `--set` names that its configuration does not
+/// declare (their kind guessed from the name's first letters: `di`, `do`,
+/// `ai`, `ao`, `gi`, `go`; a digital input otherwise), configured as
+/// `EIO.cfg` would ([`Task::with_signals`]).
+pub fn with_set_signals(task: Arc<Task>, sets: &[SignalChange]) -> Arc<Task> {
     let configured = |n: &str| {
         task.signals
             .as_ref()
             .is_some_and(|s| s.contains_key(&n.to_ascii_lowercase()))
     };
-    let mut extra: Vec<(String, SignalKind)> = Vec::new();
+    let mut extra: Vec<(String, &'static str)> = Vec::new();
     for s in sets {
         if !configured(&s.name) && !extra.iter().any(|(n, _)| n.eq_ignore_ascii_case(&s.name)) {
-            extra.push((s.name.clone(), SignalKind::guess(&s.name)));
+            extra.push((s.name.clone(), SignalKind::guess(&s.name).type_name()));
         }
     }
-    Arc::new(Program::new(task, &extra))
+    if extra.is_empty() {
+        task
+    } else {
+        Arc::new(task.with_signals(&extra))
+    }
+}
+
+/// The program of `task` with the `--set` signals ([`with_set_signals`]).
+pub fn program(task: Arc<Task>, sets: &[SignalChange]) -> Arc<Program> {
+    Arc::new(Program::new(with_set_signals(task, sets), &[]))
 }
 
 #[cfg(test)]
@@ -195,5 +347,25 @@ mod tests {
                 .expect_err("invalid")
                 .contains("signal name")
         );
+    }
+
+    #[test]
+    fn sys_cfg_entries_are_found_by_task_folder() {
+        let entry = |name: &str, kind| TaskSettings {
+            name: name.to_owned(),
+            kind,
+            entry: None,
+            motion: false,
+        };
+        let all = [
+            entry("T_ROB1", TaskKind::Normal),
+            entry("T_BACK", TaskKind::SemiStatic),
+        ];
+        let of = |key: &str| settings_of(key, &all).map(|s| s.name);
+        assert_eq!(of("b/RAPID/TASK2").as_deref(), Some("T_BACK"));
+        assert_eq!(of("b/RAPID/TASK1").as_deref(), Some("T_ROB1"));
+        assert_eq!(of("b/RAPID/t_back").as_deref(), Some("T_BACK"));
+        assert_eq!(of("b/RAPID/TASK3"), None);
+        assert_eq!(of("b/RAPID/TASK0"), None);
     }
 }

@@ -1,11 +1,21 @@
-//! `rapid run`: runs a task's entry routine on the simulated controller.
+//! `rapid run`: runs a controller's tasks on the virtual controller: a
+//! backup's (or a folder of task folders') every task together, the
+//! static and semistatic ones first, else the one task of a module or a
+//! folder.
 //!
 //! The program's output (`TPWrite`, `ErrWrite`) goes to stdout, one line
-//! each; how the run ended goes to stderr when it did not end normally,
-//! with the error's name, message, line and the active routines. Exit
-//! status: 0 when the run ends normally (its end, `EXIT`, `Stop`), 1 when
-//! it ends otherwise, 2 for usage errors and programs that cannot be
-//! loaded.
+//! each (named by its task, `[T_ROB2] ...`, when several run); how the run
+//! ended goes to stderr when it did not end normally, with the error's
+//! name, message, line and the active routines. A program the controller
+//! would not load (a syntax error, what the checker finds it would refuse)
+//! does not run: its errors go to stderr. Exit status: 0 when every task
+//! ends normally (its end, `EXIT`, `Stop`), 1 when one ends otherwise, 2
+//! for usage errors and programs that cannot be loaded.
+//!
+//! [`execute`] is the same run as a library call (for `rapid mcp`): loaded
+//! tasks ([`load::controller`]) and options in, the output to a sink (any
+//! `FnMut(Stream, &str)`), each task's outcome back, or why the program
+//! cannot start ([`NotRun`]).
 
 pub mod load;
 pub mod trace;
@@ -13,17 +23,25 @@ pub mod trace;
 use std::io::Write;
 use std::path::PathBuf;
 use std::process::ExitCode;
-use std::sync::Arc;
 
-use rapid_runtime::{Config, Limits, Machine, Outcome, Status, Stream};
+use rapid_runtime::world::{InstantRobot, World};
+use rapid_runtime::{
+    Config, Controller, Limits, Move, Outcome, Output, SignalChange, Status, Stream, TaskSpec,
+};
 
 #[derive(Debug, clap::Args)]
 pub struct RunArgs {
-    /// A module (run with the rest of its task) or a task's folder.
+    /// A module (run with the rest of its task), a task's folder, or a
+    /// backup (every task of it).
     pub path: PathBuf,
-    /// The procedure to run.
-    #[arg(long, default_value = "main", value_name = "NAME")]
-    pub entry: String,
+    /// The procedure to run (default: a task's `SYS.cfg` entry, else
+    /// `main`; with several tasks, their `SYS.cfg` entries win).
+    #[arg(long, value_name = "NAME")]
+    pub entry: Option<String>,
+    /// Run only the task of this name (of a backup, or of a folder of
+    /// task folders).
+    #[arg(long, value_name = "NAME")]
+    pub task: Option<String>,
     /// Set a signal: NAME=VALUE at the start, NAME=VALUE@SECONDS later
     /// (repeatable). Signals that EIO.cfg does not declare are declared by
     /// their name: di*, do*, ai*, ao*, gi*, go* (else a digital input).
@@ -46,13 +64,13 @@ pub struct RunArgs {
 /// The budgets of a run.
 #[derive(Debug, Clone, clap::Args)]
 pub struct LimitArgs {
-    /// Stop after this many statements.
+    /// Stop after this many statements (of every task together).
     #[arg(long, default_value_t = Limits::default().max_steps, value_name = "N")]
     pub max_steps: u64,
     /// Stop after this many seconds of simulated time.
     #[arg(long, default_value_t = Limits::default().max_time, value_name = "SECONDS")]
     pub max_time: f64,
-    /// Stop beyond this many nested routine calls.
+    /// Stop beyond this many nested routine calls (RAPID recursion).
     #[arg(long, default_value_t = Limits::default().max_depth, value_name = "N")]
     pub max_depth: u32,
 }
@@ -68,55 +86,157 @@ impl LimitArgs {
     }
 }
 
-pub fn run(args: RunArgs) -> ExitCode {
-    let mut stderr = anstream::stderr();
-    match run_inner(args) {
-        Ok(code) => code,
-        Err(message) => {
-            let _ = writeln!(stderr, "rapid: run: {message}");
-            ExitCode::from(2)
+/// How to run loaded tasks.
+#[derive(Clone, Debug)]
+pub struct RunOptions {
+    /// Scripted signal changes.
+    pub sets: Vec<SignalChange>,
+    pub limits: Limits,
+    /// The folder file instructions work in.
+    pub sandbox: Option<PathBuf>,
+    /// Record the moves.
+    pub trace: bool,
+}
+
+/// How a run ended.
+#[derive(Clone, Debug)]
+pub struct RunReport {
+    /// Each task's name and outcome, in the controller's order.
+    pub tasks: Vec<(String, Outcome)>,
+    /// The moves made (with [`RunOptions::trace`]).
+    pub moves: Vec<Move>,
+}
+
+impl RunReport {
+    /// Did every task end normally?
+    pub fn is_success(&self) -> bool {
+        self.tasks.iter().all(|(_, o)| o.is_success())
+    }
+
+    /// The lines that say how the tasks ended (nothing for normal ends),
+    /// each task's named when several ran.
+    pub fn describe(&self) -> Vec<String> {
+        let several = self.tasks.len() > 1;
+        let mut out = Vec::new();
+        for (name, o) in &self.tasks {
+            for line in describe(o) {
+                out.push(if several {
+                    format!("[{name}] {line}")
+                } else {
+                    line
+                });
+            }
+        }
+        out
+    }
+}
+
+/// Why a run could not start.
+#[derive(Clone, Debug)]
+pub enum NotRun {
+    /// The controller would not load the program: the checker's errors,
+    /// one line each (`file:line:column: error[CODE] message (name)`).
+    LoadErrors(Vec<String>),
+    /// Anything else (no such entry routine...).
+    Other(String),
+}
+
+impl std::fmt::Display for NotRun {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            NotRun::LoadErrors(lines) => {
+                writeln!(f, "the controller would not load the program:")?;
+                for l in lines {
+                    writeln!(f, "{l}")?;
+                }
+                Ok(())
+            }
+            NotRun::Other(m) => f.write_str(m),
         }
     }
 }
 
-fn run_inner(args: RunArgs) -> Result<ExitCode, String> {
-    let sets = args
-        .set
-        .iter()
-        .map(|s| load::parse_set(s))
-        .collect::<Result<Vec<_>, _>>()?;
-    let task = load::one_task(&args.path, &args.entry)?;
-    let out = |_: Stream, line: &str| {
-        let stdout = std::io::stdout();
-        let mut lock = stdout.lock();
-        let _ = writeln!(lock, "{line}");
+/// Runs loaded tasks together on a virtual controller (the library
+/// entry point of `rapid run`): each task's entry routine starts (the
+/// static and semistatic tasks first), the program's lines go to
+/// `output`, and each task's outcome comes back. A program the controller
+/// would not load is not run.
+pub fn execute(
+    loaded: &load::Loaded,
+    options: &RunOptions,
+    output: Box<dyn Output>,
+) -> Result<RunReport, NotRun> {
+    let mut controller = build(loaded, options, output)?;
+    controller.run();
+    Ok(report_of(&controller))
+}
+
+/// The virtual controller of loaded tasks, ready to run (each task's
+/// entry routine starts with the first statement run): for [`execute`],
+/// and for a debugger that drives it itself.
+pub fn build(
+    loaded: &load::Loaded,
+    options: &RunOptions,
+    output: Box<dyn Output>,
+) -> Result<Controller, NotRun> {
+    let mut errors = Vec::new();
+    for t in &loaded.tasks {
+        errors.extend(
+            rapid_runtime::load_errors(&t.task)
+                .iter()
+                .map(ToString::to_string),
+        );
+    }
+    if !errors.is_empty() {
+        return Err(NotRun::LoadErrors(errors));
+    }
+    let config = Config {
+        limits: options.limits.clone(),
+        signals: options.sets.clone(),
+        sandbox: options.sandbox.clone(),
+        trace: options.trace,
     };
-    let ran = run_routine(
-        task,
-        &args.entry,
-        sets,
-        Budget {
-            limits: args.limits.limits(),
-            sandbox: args.sandbox.clone(),
-            trace: args.trace.is_some() || args.plot.is_some(),
-        },
-        Box::new(out),
-    )?;
-    if let Some(path) = &args.trace {
-        let text = serde_json::to_string_pretty(&trace::json(&ran.moves)).unwrap_or_default();
-        std::fs::write(path, text + "\n").map_err(|e| format!("{}: {e}", path.display()))?;
+    let world = World::simulated(&config, output);
+    let mut controller = Controller::new(config, world);
+    let mut started = 0;
+    for t in &loaded.tasks {
+        let program = load::program(t.task.clone(), &options.sets);
+        let entry = program.find_routine(&t.entry);
+        if let Some(id) = entry
+            && let Some(r) = program.routines().into_iter().find(|r| r.id == id)
+            && (r.params > 0 || r.kind != rapid_analyzer::items::RoutineKind::Proc)
+        {
+            return Err(NotRun::Other(format!(
+                "{}: {} is not a procedure without parameters",
+                r.at, r.name
+            )));
+        }
+        if entry.is_some() {
+            started += 1;
+        } else if loaded.tasks.len() == 1 {
+            return Err(NotRun::Other(format!(
+                "{}: no procedure {} in the task",
+                t.task.key, t.entry
+            )));
+        }
+        controller.add_task(TaskSpec {
+            name: t.name.clone(),
+            program,
+            entry,
+            kind: t.kind,
+            robot: t
+                .motion
+                .then(|| Box::new(InstantRobot::new()) as Box<dyn rapid_runtime::world::Robot>),
+        });
     }
-    if let Some(path) = &args.plot {
-        let title = args.path.display().to_string();
-        std::fs::write(path, trace::html(&ran.moves, &title))
-            .map_err(|e| format!("{}: {e}", path.display()))?;
+    if started == 0 {
+        let entries: Vec<&str> = loaded.tasks.iter().map(|t| t.entry.as_str()).collect();
+        return Err(NotRun::Other(format!(
+            "no task has its entry routine ({})",
+            entries.join(", ")
+        )));
     }
-    report(&ran.outcome);
-    Ok(if ran.outcome.is_success() {
-        ExitCode::SUCCESS
-    } else {
-        ExitCode::from(1)
-    })
+    Ok(controller)
 }
 
 /// What a run may use: its budgets, the folder its file instructions work
@@ -128,8 +248,8 @@ pub struct Budget {
     pub trace: bool,
 }
 
-/// A run that ended: how, the moves (when traced), the statements it took
-/// and the simulated time it reached.
+/// A run of one task that ended: how, the moves (when traced), the
+/// statements it took and the simulated time it reached.
 pub struct Ran {
     pub outcome: Outcome,
     pub moves: Vec<rapid_runtime::Move>,
@@ -137,59 +257,113 @@ pub struct Ran {
     pub clock: f64,
 }
 
-/// Runs the procedure `entry` of `task` with the signal script `sets`,
-/// each output line going to `out` as it comes (for `rapid run` and
-/// `rapid mcp`). An error when the procedure is missing or takes
-/// parameters, or the sandbox cannot be made.
+/// Runs the procedure `entry` of `task` alone on a virtual controller
+/// with the signal script `sets`, each output line going to `out` as it
+/// comes (for `rapid mcp`). An error when the controller would not load
+/// the task, the procedure is missing or takes parameters, or the sandbox
+/// cannot be made.
 pub fn run_routine(
-    task: Arc<rapid_analyzer::task::Task>,
+    task: std::sync::Arc<rapid_analyzer::task::Task>,
     entry: &str,
-    sets: Vec<rapid_runtime::SignalChange>,
+    sets: Vec<SignalChange>,
     budget: Budget,
-    out: Box<dyn rapid_runtime::Output>,
+    out: Box<dyn Output>,
 ) -> Result<Ran, String> {
-    let key = task.key.clone();
-    let program = load::program(task, &sets);
-    let id = program
-        .find_routine(entry)
-        .ok_or_else(|| match key.as_str() {
-            "" => format!("no procedure {entry} in the task"),
-            key => format!("{key}: no procedure {entry} in the task"),
-        })?;
-    if let Some(r) = program.routines().into_iter().find(|r| r.id == id)
-        && (r.params > 0 || r.kind != rapid_analyzer::items::RoutineKind::Proc)
-    {
-        return Err(format!(
-            "{}: {} is not a procedure without parameters",
-            r.at, r.name
-        ));
-    }
+    let loaded = load::Loaded {
+        tasks: vec![load::TaskToRun {
+            name: "T_ROB1".to_owned(),
+            task,
+            kind: rapid_runtime::TaskKind::Normal,
+            entry: entry.to_owned(),
+            motion: true,
+        }],
+    };
     let sandbox = Sandbox::new(budget.sandbox)?;
-    let config = Config {
+    let options = RunOptions {
+        sets,
         limits: budget.limits,
-        signals: sets,
         sandbox: Some(sandbox.path.clone()),
         trace: budget.trace,
     };
-    rapid_runtime::on_large_stack(move || {
-        let mut m = Machine::new(program, config, out);
-        let outcome = m.run(id);
-        Ran {
-            outcome,
-            moves: m.moves().to_vec(),
-            steps: m.steps(),
-            clock: m.clock(),
-        }
+    let mut controller = build(&loaded, &options, out).map_err(|e| e.to_string())?;
+    controller.run();
+    let mut report = report_of(&controller);
+    let (_, outcome) = report
+        .tasks
+        .pop()
+        .ok_or_else(|| format!("no procedure {entry} in the task"))?;
+    Ok(Ran {
+        outcome,
+        moves: report.moves,
+        steps: controller.steps(),
+        clock: controller.clock(),
     })
-    .ok_or_else(|| "the interpreter failed (this is a bug in rapid)".to_owned())
 }
 
-/// How the run ended, on stderr (nothing for a normal end).
-pub fn report(outcome: &Outcome) {
+/// Each started task's outcome, and the moves.
+pub fn report_of(controller: &Controller) -> RunReport {
+    RunReport {
+        tasks: controller
+            .outcomes()
+            .into_iter()
+            .filter_map(|(name, o)| Some((name, o?)))
+            .collect(),
+        moves: controller.moves().to_vec(),
+    }
+}
+
+pub fn run(args: RunArgs) -> ExitCode {
+    let mut stderr = anstream::stderr();
+    match run_inner(args) {
+        Ok(code) => code,
+        Err(message) => {
+            let _ = write!(stderr, "rapid: run: {message}");
+            if !message.ends_with('\n') {
+                let _ = writeln!(stderr);
+            }
+            ExitCode::from(2)
+        }
+    }
+}
+
+fn run_inner(args: RunArgs) -> Result<ExitCode, String> {
+    let sets = args
+        .set
+        .iter()
+        .map(|s| load::parse_set(s))
+        .collect::<Result<Vec<_>, _>>()?;
+    let loaded = load::controller(&args.path, args.task.as_deref(), args.entry.as_deref())?;
+    let sandbox = Sandbox::new(args.sandbox.clone())?;
+    let options = RunOptions {
+        sets,
+        limits: args.limits.limits(),
+        sandbox: Some(sandbox.path.clone()),
+        trace: args.trace.is_some() || args.plot.is_some(),
+    };
+    let out = |_: Stream, line: &str| {
+        let stdout = std::io::stdout();
+        let mut lock = stdout.lock();
+        let _ = writeln!(lock, "{line}");
+    };
+    let report = execute(&loaded, &options, Box::new(out)).map_err(|e| e.to_string())?;
+    if let Some(path) = &args.trace {
+        let text = serde_json::to_string_pretty(&trace::json(&report.moves)).unwrap_or_default();
+        std::fs::write(path, text + "\n").map_err(|e| format!("{}: {e}", path.display()))?;
+    }
+    if let Some(path) = &args.plot {
+        let title = args.path.display().to_string();
+        std::fs::write(path, trace::html(&report.moves, &title))
+            .map_err(|e| format!("{}: {e}", path.display()))?;
+    }
     let mut err = anstream::stderr();
-    for line in describe(outcome) {
+    for line in report.describe() {
         let _ = writeln!(err, "{line}");
     }
+    Ok(if report.is_success() {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    })
 }
 
 /// The lines that say how a run ended: the error and where, then the
@@ -197,8 +371,9 @@ pub fn report(outcome: &Outcome) {
 pub fn describe(o: &Outcome) -> Vec<String> {
     let mut lines = Vec::new();
     let head = match o.status {
-        Status::Finished | Status::Exited => return lines,
-        Status::Stopped => "stopped (Stop)".to_owned(),
+        Status::Finished | Status::Exited | Status::Halted => return lines,
+        Status::Stopped if o.message.is_empty() => "stopped (Stop)".to_owned(),
+        Status::Stopped => format!("stopped: {}", o.message),
         Status::Error => match &o.errno {
             Some((_, name)) => format!("error: {name}: {}", o.message),
             None => format!("error: {}", o.message),
@@ -206,7 +381,7 @@ pub fn describe(o: &Outcome) -> Vec<String> {
         Status::Unsupported => format!("error: {}", o.message),
         Status::Invalid => format!("error: the program cannot run: {}", o.message),
         Status::Budget => format!("error: {}", o.message),
-        Status::Deadlock => format!("error: {}", o.message),
+        Status::Deadlock => format!("error: deadlock: {}", o.message),
     };
     lines.push(head);
     if let Some(at) = &o.at {

@@ -6,13 +6,14 @@ use serde_json::{Value, json};
 
 /// The moves as JSON: `{"moves": [{"instruction", "target", "file",
 /// "line", "pos", "orient", "via", "joints", "speed", "speed_name",
-/// "zone", "tool", "wobj"}]}` (positions in mm in world coordinates,
+/// "zone", "tool", "wobj"}]}`, and `"task"` when several tasks ran
+/// (positions in mm in world coordinates,
 /// orientations as quaternions `[q1, q2, q3, q4]`; absent fields are null).
 pub fn json(moves: &[Move]) -> Value {
     let moves: Vec<Value> = moves
         .iter()
         .map(|m| {
-            json!({
+            let mut o = json!({
                 "instruction": m.instruction,
                 "target": m.target,
                 "file": m.at.path,
@@ -26,7 +27,11 @@ pub fn json(moves: &[Move]) -> Value {
                 "zone": m.zone,
                 "tool": m.tool,
                 "wobj": m.wobj,
-            })
+            });
+            if let Some(task) = &m.task {
+                o["task"] = json!(task);
+            }
+            o
         })
         .collect();
     json!({ "moves": moves })
@@ -142,6 +147,7 @@ mod tests {
             zone: Some("fine".to_owned()),
             tool: Some("tool0".to_owned()),
             wobj: None,
+            task: None,
         }
     }
 

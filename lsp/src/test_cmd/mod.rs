@@ -25,7 +25,10 @@ use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
 use rapid_analyzer::items::RoutineKind;
-use rapid_runtime::{Config, Limits, Machine, Outcome, Program, SignalChange, Status, Stream};
+use rapid_runtime::world::{InstantRobot, World};
+use rapid_runtime::{
+    Config, Controller, Outcome, Program, SignalChange, Status, Stream, TaskKind, TaskSpec,
+};
 
 use crate::run::{LimitArgs, Sandbox, load};
 
@@ -125,13 +128,15 @@ fn run_inner(args: TestArgs) -> Result<ExitCode, String> {
     for (path, why) in &found.skipped {
         let _ = writeln!(anstream::stderr(), "rapid: test: {}: {why}", path.display());
     }
-    let results = run_tests(
-        &found.tasks,
-        args.filter.as_deref(),
-        &sets,
-        &args.limits.limits(),
-        args.sandbox.as_ref(),
-    )?;
+    let options = TestOptions {
+        filter: args.filter.clone(),
+        sets,
+        limits: args.limits.limits(),
+        sandbox: args.sandbox.clone(),
+    };
+    let results = run_tests(&found.tasks, &options, &mut |e| {
+        let _ = writeln!(anstream::stderr(), "rapid: test: {e}");
+    })?;
     let stdout = std::io::stdout();
     let mut out = stdout.lock();
     let written = match args.format {
@@ -152,24 +157,46 @@ fn run_inner(args: TestArgs) -> Result<ExitCode, String> {
     })
 }
 
-/// Runs the tests of `tasks` (those whose name contains `filter`), each
-/// on a fresh simulated controller with the signal script `sets`, the
-/// budgets `limits` and the folder `sandbox` (a fresh temporary one per
-/// test when `None`), in the tasks' order (for `rapid test` and `rapid
-/// mcp`).
+/// How to run tests.
+#[derive(Clone, Debug, Default)]
+pub struct TestOptions {
+    /// Only the tests whose name (or `module.name`) contains this text.
+    pub filter: Option<String>,
+    /// Scripted signal changes, for every test.
+    pub sets: Vec<SignalChange>,
+    pub limits: rapid_runtime::Limits,
+    /// The folder file instructions work in (default: a fresh temporary
+    /// folder per test).
+    pub sandbox: Option<PathBuf>,
+}
+
+/// Runs the tests of `tasks` (the library entry point of `rapid test`):
+/// each task with the assertion module, each test on a fresh controller.
+/// The tests of a task the controller would not load are errors, and
+/// `load_error` is told each of its errors.
 pub fn run_tests(
     tasks: &[Arc<rapid_analyzer::task::Task>],
-    filter: Option<&str>,
-    sets: &[SignalChange],
-    limits: &Limits,
-    sandbox: Option<&PathBuf>,
+    options: &TestOptions,
+    load_error: &mut dyn FnMut(&rapid_runtime::LoadError),
 ) -> Result<Vec<TestResult>, String> {
     let mut results = Vec::new();
     for task in tasks {
         let task = load::with_modules(task, &[(ASSERT_PATH, ASSERT_MODULE)]);
-        let program = load::program(task, sets);
-        for test in discover(&program, filter) {
-            results.push(run_test(&program, &test, sets, limits, sandbox)?);
+        let errors = rapid_runtime::load_errors(&task);
+        let program = load::program(task, &options.sets);
+        let tests = discover(&program, options.filter.as_deref());
+        if let Some(first) = errors.first() {
+            // The controller would not load the task: none of its tests runs.
+            for e in &errors {
+                load_error(e);
+            }
+            for test in &tests {
+                results.push(not_loaded(test, first));
+            }
+            continue;
+        }
+        for test in tests {
+            results.push(run_test(&program, &test, options)?);
         }
     }
     Ok(results)
@@ -229,49 +256,80 @@ pub fn discover(program: &Program, filter: Option<&str>) -> Vec<Test> {
 fn run_test(
     program: &Arc<Program>,
     test: &Test,
-    sets: &[SignalChange],
-    limits: &Limits,
-    sandbox: Option<&PathBuf>,
+    options: &TestOptions,
 ) -> Result<TestResult, String> {
-    let sandbox = Sandbox::new(sandbox.cloned())?;
+    let sandbox = Sandbox::new(options.sandbox.clone())?;
     let config = Config {
-        limits: limits.clone(),
-        signals: sets.to_vec(),
+        limits: options.limits.clone(),
+        signals: options.sets.clone(),
         sandbox: Some(sandbox.path.clone()),
         trace: false,
     };
     let lines: Arc<Mutex<Vec<(Stream, String)>>> = Arc::default();
     let sink = lines.clone();
-    let program2 = program.clone();
-    let (id, setup, teardown) = (test.id, test.setup, test.teardown);
+    let out = move |s: Stream, line: &str| {
+        if let Ok(mut l) = sink.lock() {
+            l.push((s, line.to_owned()));
+        }
+    };
     let started = Instant::now();
-    let outcome = rapid_runtime::on_large_stack(move || {
-        let out = move |s: Stream, line: &str| {
-            if let Ok(mut l) = sink.lock() {
-                l.push((s, line.to_owned()));
-            }
-        };
-        let mut m = Machine::new(program2, config, Box::new(out));
-        let mut outcome = match setup {
-            Some(s) => m.run(s),
-            None => m.run(id),
-        };
-        if setup.is_some() && outcome.is_success() {
-            outcome = m.run(id);
+    let world = World::simulated(&config, Box::new(out));
+    let mut c = Controller::new(config, world);
+    c.add_task(TaskSpec {
+        name: "T_ROB1".to_owned(),
+        program: program.clone(),
+        entry: None,
+        kind: TaskKind::Normal,
+        robot: Some(Box::new(InstantRobot::new())),
+    });
+    let mut run = |routine: u32| -> Outcome {
+        if let Err(why) = c.start_routine(0, routine) {
+            return Outcome {
+                status: Status::Invalid,
+                message: why,
+                errno: None,
+                at: None,
+                stack: Vec::new(),
+            };
         }
-        if let Some(t) = teardown {
-            let after = m.run(t);
-            if outcome.is_success() {
-                outcome = after;
-            }
+        c.run();
+        c.tasks()
+            .first()
+            .and_then(|t| t.outcome().cloned())
+            .unwrap_or_else(|| Outcome {
+                status: Status::Invalid,
+                message: "the test did not end".to_owned(),
+                errno: None,
+                at: None,
+                stack: Vec::new(),
+            })
+    };
+    let mut outcome = run(test.setup.unwrap_or(test.id));
+    if test.setup.is_some() && outcome.is_success() {
+        outcome = run(test.id);
+    }
+    if let Some(t) = test.teardown {
+        let after = run(t);
+        if outcome.is_success() {
+            outcome = after;
         }
-        outcome
-    })
-    .ok_or_else(|| "the interpreter failed (this is a bug in rapid)".to_owned())?;
+    }
     let duration = started.elapsed();
     drop(sandbox);
     let lines = lines.lock().map(|l| l.clone()).unwrap_or_default();
     Ok(judge(test, outcome, lines, duration))
+}
+
+/// The result of a test of a task the controller would not load.
+fn not_loaded(test: &Test, error: &rapid_runtime::LoadError) -> TestResult {
+    let outcome = Outcome {
+        status: Status::Invalid,
+        message: format!("the controller would not load the task: {error}"),
+        errno: None,
+        at: Some(error.at.clone()),
+        stack: Vec::new(),
+    };
+    judge(test, outcome, Vec::new(), Duration::ZERO)
 }
 
 fn judge(
@@ -281,7 +339,7 @@ fn judge(
     duration: Duration,
 ) -> TestResult {
     let verdict = match outcome.status {
-        Status::Finished | Status::Exited => Verdict::Pass,
+        Status::Finished | Status::Exited | Status::Halted => Verdict::Pass,
         Status::Error => Verdict::Fail,
         _ => Verdict::Error,
     };

@@ -3,142 +3,164 @@
 
 use rapid_evaluator::{BinOp, Type, Value};
 
-use super::Args;
-use crate::machine::{FaultKind, Machine, R, Status, fault, invalid, named_error};
-use crate::types::TypesEnv;
+use super::{Args, Cx, Done};
+use crate::machine::{
+    FaultKind, Place, R, Root, Status, Wait, WaitKind, fault, invalid, named_error,
+};
+use crate::program::Home;
 
-fn step(m: &mut Machine, a: &Args<'_>, op: BinOp, by: Value) -> R<()> {
-    let p = m.place_arg(a, "Name")?;
-    let v = m.get(&p).cloned().unwrap_or(Value::Num(0.0));
-    let r = rapid_evaluator::apply_binary(op, v, by, &TypesEnv(&m.prog.types))
-        .or_else(|e| m.eval_error(e))?;
-    m.store(&p, r)
+fn step(cx: &mut Cx<'_>, a: &Args, op: BinOp, by: Value) -> R<Done> {
+    let p = cx.place_arg(a, "Name")?;
+    let v = cx.m.load(cx.sh, &p)?;
+    let r = rapid_evaluator::apply_binary(op, v, by, &cx.m.prog.types)
+        .or_else(|e| cx.m.eval_error(e))?;
+    cx.store(&p, r)?;
+    Ok(Done::Next)
 }
 
 /// `Incr Name`.
-pub(crate) fn incr(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    step(m, a, BinOp::Add, Value::Num(1.0))
+pub(crate) fn incr(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    step(cx, a, BinOp::Add, Value::Num(1.0))
 }
 
 /// `Decr Name`.
-pub(crate) fn decr(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    step(m, a, BinOp::Sub, Value::Num(1.0))
+pub(crate) fn decr(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    step(cx, a, BinOp::Sub, Value::Num(1.0))
 }
 
 /// `Add Name, AddValue`.
-pub(crate) fn add(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    let by = m.req(a, "AddValue")?;
-    let by = m.scalar(by)?;
-    step(m, a, BinOp::Add, by)
+pub(crate) fn add(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let by = cx.req(a, "AddValue")?;
+    let by = cx.m.scalar(cx.sh, by)?;
+    step(cx, a, BinOp::Add, by)
 }
 
 /// `Clear Name`.
-pub(crate) fn clear(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    let p = m.place_arg(a, "Name")?;
-    let zero = match m.get(&p) {
+pub(crate) fn clear(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let p = cx.place_arg(a, "Name")?;
+    let zero = match cx.m.get(cx.sh, &p) {
         Some(Value::Dnum(_)) => Value::Dnum(0.0),
         _ => Value::Num(0.0),
     };
-    m.store(&p, zero)
+    cx.store(&p, zero)?;
+    Ok(Done::Next)
 }
 
 /// `BookErrNo ErrorName`: books a new error number for `RAISE`, known by
 /// the variable's name in messages.
-pub(crate) fn book_err_no(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    let p = m.place_arg(a, "ErrorName")?;
-    let name = m
+pub(crate) fn book_err_no(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let p = cx.place_arg(a, "ErrorName")?;
+    let name = cx
         .arg_name(a, "ErrorName")
         .unwrap_or_else(|| "booked error".to_owned());
-    let n = FIRST_BOOKED + m.booked.len() as f32;
-    m.booked.push((n, name));
-    m.store(&p, Value::Num(n))
+    let n = FIRST_BOOKED + cx.m.booked.len() as f32;
+    cx.m.booked.push((n, name));
+    cx.store(&p, Value::Num(n))?;
+    Ok(Done::Next)
 }
 
 /// The first number `BookErrNo` gives (numbers 1 to 90 are the
 /// program's own).
 const FIRST_BOOKED: f32 = 500.0;
 
-/// The global data object (or data of the running routine's module) named
-/// by a string at run time.
-fn data_named(m: &Machine, name: &str) -> Option<u32> {
-    let key = name.to_ascii_lowercase();
-    let module = m
-        .frames
-        .last()
-        .and_then(|f| m.prog.routines.get(f.routine.id as usize))
-        .map(|r| r.module);
-    module
-        .and_then(|i| m.prog.modules.get(i))
-        .and_then(|md| md.data.get(&key))
-        .or_else(|| m.prog.global_data.get(&key))
-        .copied()
+/// The data object named by a string at run time, as the running
+/// routine's module sees the name.
+fn data_named(cx: &Cx<'_>, name: &str) -> R<Place> {
+    let module = cx.m.frames.last().map_or(usize::MAX, |f| f.code.module);
+    let root = match cx.m.prog.data_named(module, name) {
+        Some(Home::Global(g)) => Root::Global(g),
+        Some(Home::Pers(k)) => match cx.m.pers_map.get(k as usize) {
+            Some(&i) => Root::Pers(i),
+            None => return no_symbol(cx, name),
+        },
+        None => return no_symbol(cx, name),
+    };
+    Ok(Place::root(root))
 }
 
-fn no_symbol<T>(m: &Machine, name: &str) -> R<T> {
+fn no_symbol<T>(cx: &Cx<'_>, name: &str) -> R<T> {
     fault(named_error(
-        &m.prog,
+        &cx.m.prog,
         "ERR_SYM_ACCESS",
         format!("there is no data object {name}"),
     ))
 }
 
 /// `GetDataVal Object, Value`: copies the data object named `Object`.
-pub(crate) fn get_data_val(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    let name = m.string(a, "Object")?;
-    let Some(g) = data_named(m, &name) else {
-        return no_symbol(m, &name);
-    };
-    m.ensure_global(g)?;
-    let v = m
-        .globals
-        .get(g as usize)
-        .cloned()
-        .unwrap_or(Value::Num(0.0));
-    let p = m.place_arg(a, "Value")?;
-    m.store(&p, v)
+pub(crate) fn get_data_val(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let name = cx.string(a, "Object")?;
+    let from = data_named(cx, &name)?;
+    let v = cx.m.load(cx.sh, &from)?;
+    let p = cx.place_arg(a, "Value")?;
+    cx.store(&p, v)?;
+    Ok(Done::Next)
 }
 
 /// `SetDataVal Object, Value`: sets the data object named `Object`.
-pub(crate) fn set_data_val(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    let name = m.string(a, "Object")?;
-    let Some(g) = data_named(m, &name) else {
-        return no_symbol(m, &name);
-    };
-    m.ensure_global(g)?;
-    let v = m.req(a, "Value")?;
-    let p = crate::machine::Place {
-        root: crate::machine::Root::Global(g),
-        path: Vec::new(),
-    };
-    m.store(&p, v)
+pub(crate) fn set_data_val(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let name = cx.string(a, "Object")?;
+    let to = data_named(cx, &name)?;
+    let v = cx.req(a, "Value")?;
+    cx.store(&to, v)?;
+    Ok(Done::Next)
 }
 
 /// `CallByVar Name, Number`: calls the procedure `Name` followed by the
 /// number.
-pub(crate) fn call_by_var(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    let name = m.string(a, "Name")?;
-    let n = m.num(a, "Number")?;
+pub(crate) fn call_by_var(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let name = cx.string(a, "Name")?;
+    let n = cx.num(a, "Number")?;
     if n.fract() != 0.0 || n < 0.0 {
         return fault(named_error(
-            &m.prog,
+            &cx.m.prog,
             "ERR_REFUNKPRC",
             format!("CallByVar: {n} is not a whole number"),
         ));
     }
-    m.call_by_name(&format!("{name}{n}"), &[])
+    let full = format!("{name}{n}");
+    let module = cx.m.frames.last().map_or(usize::MAX, |f| f.code.module);
+    let Some(id) = cx.m.prog.routine_named(module, &full) else {
+        return fault(named_error(
+            &cx.m.prog,
+            "ERR_REFUNKPRC",
+            format!("there is no procedure {full}"),
+        ));
+    };
+    let is_proc =
+        cx.m.prog
+            .routines
+            .get(id as usize)
+            .is_some_and(|r| r.decl.kind == rapid_analyzer::items::RoutineKind::Proc);
+    if !is_proc {
+        return fault(named_error(
+            &cx.m.prog,
+            "ERR_CALLPROC",
+            format!("{full} is not a procedure"),
+        ));
+    }
+    Ok(Done::Call(id))
 }
 
-/// `WaitTime Time`.
-pub(crate) fn wait_time(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    let t = m.num(a, "Time")?;
+/// `WaitTime [\InPos] Time`.
+pub(crate) fn wait_time(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let t = cx.num(a, "Time")?;
     if t < 0.0 {
         return fault(named_error(
-            &m.prog,
+            &cx.m.prog,
             "ERR_ARGVALERR",
             format!("WaitTime: {t} is a negative time"),
         ));
     }
-    m.wait(t)
+    let mut until = cx.now() + t;
+    if a.given("InPos") {
+        until = until.max(super::motion::motion_end(cx));
+    }
+    Ok(Done::Wait(Box::new(Wait {
+        kind: WaitKind::Time(until),
+        deadline: None,
+        on_timeout: crate::machine::Timeout::Error("ERR_WAIT_MAXTIME", String::new()),
+        what: format!("WaitTime {t}"),
+    })))
 }
 
 fn clock_fields(v: &Value) -> (bool, f64, f64) {
@@ -161,21 +183,22 @@ fn clock_value(running: bool, start: f64, elapsed: f64) -> Value {
     }
 }
 
-fn update_clock(m: &mut Machine, a: &Args<'_>, f: impl Fn(bool, f64, f64, f64) -> Value) -> R<()> {
-    let p = m.place_arg(a, "Clock")?;
-    let (running, start, elapsed) = clock_fields(m.get(&p).unwrap_or(&Value::Num(0.0)));
-    let now = m.ctl.clock;
-    m.store(&p, f(running, start, elapsed, now))
+fn update_clock(cx: &mut Cx<'_>, a: &Args, f: impl Fn(bool, f64, f64, f64) -> Value) -> R<Done> {
+    let p = cx.place_arg(a, "Clock")?;
+    let (running, start, elapsed) = clock_fields(&cx.m.load(cx.sh, &p)?);
+    let now = cx.now();
+    cx.store(&p, f(running, start, elapsed, now))?;
+    Ok(Done::Next)
 }
 
 /// `ClkReset Clock`.
-pub(crate) fn clk_reset(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    update_clock(m, a, |running, _, _, now| clock_value(running, now, 0.0))
+pub(crate) fn clk_reset(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    update_clock(cx, a, |running, _, _, now| clock_value(running, now, 0.0))
 }
 
 /// `ClkStart Clock`.
-pub(crate) fn clk_start(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    update_clock(m, a, |running, start, elapsed, now| {
+pub(crate) fn clk_start(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    update_clock(cx, a, |running, start, elapsed, now| {
         if running {
             clock_value(true, start, elapsed)
         } else {
@@ -185,8 +208,8 @@ pub(crate) fn clk_start(m: &mut Machine, a: &Args<'_>) -> R<()> {
 }
 
 /// `ClkStop Clock`.
-pub(crate) fn clk_stop(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    update_clock(m, a, |running, start, elapsed, now| {
+pub(crate) fn clk_stop(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    update_clock(cx, a, |running, start, elapsed, now| {
         if running {
             clock_value(false, now, elapsed + (now - start))
         } else {
@@ -197,68 +220,66 @@ pub(crate) fn clk_stop(m: &mut Machine, a: &Args<'_>) -> R<()> {
 
 /// `ClkRead(Clock [\HighRes])`: seconds, to 0.01 s (0.001 s with
 /// `\HighRes`).
-pub(crate) fn clk_read(m: &mut Machine, a: &Args<'_>) -> R<Value> {
-    let v = m.req(a, "Clock")?;
+pub(crate) fn clk_read(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    cx.m.read_clock = true;
+    let v = cx.req(a, "Clock")?;
     let (running, start, elapsed) = clock_fields(&v);
-    let t = elapsed + if running { m.ctl.clock - start } else { 0.0 };
-    let unit = if m.given(a, "HighRes") { 1000.0 } else { 100.0 };
+    let t = elapsed + if running { cx.now() - start } else { 0.0 };
+    let unit = if a.given("HighRes") { 1000.0 } else { 100.0 };
     Ok(Value::Num(((t * unit + 1e-9).floor() / unit) as f32))
 }
 
-/// `Stop` and `Break`: the program stops.
-pub(crate) fn stop(_: &mut Machine, _: &Args<'_>) -> R<()> {
+/// `Stop` and `Break`: the task stops.
+pub(crate) fn stop(_: &mut Cx<'_>, _: &mut Args) -> R<Done> {
     fault(FaultKind::Halt(Status::Stopped))
 }
 
 /// `ExitCycle`: the cycle ends; a single run ends with it.
-pub(crate) fn exit_cycle(_: &mut Machine, _: &Args<'_>) -> R<()> {
+pub(crate) fn exit_cycle(_: &mut Cx<'_>, _: &mut Args) -> R<Done> {
     fault(FaultKind::Halt(Status::Exited))
 }
 
 /// `Dim(ArrPar, DimNo)`: the size of a dimension of an array, read in
 /// place.
-pub(crate) fn dim(m: &mut Machine, a: &Args<'_>) -> R<Value> {
-    let d = m.num(a, "DimNo")?;
+pub(crate) fn dim(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    let d = cx.num(a, "DimNo")?;
     let owned;
-    let v = match m.opt_place(a, "ArrPar") {
-        Ok(Some(p)) => match m.get(&p) {
+    let v = match a.place_of("ArrPar") {
+        Some(p) => match cx.m.get(cx.sh, p) {
             Some(v) => v,
             None => return invalid("Dim: the array no longer exists"),
         },
-        _ => {
-            owned = m.req(a, "ArrPar")?;
+        None => {
+            owned = cx.req(a, "ArrPar")?;
             &owned
         }
+    };
+    let no_dim = || {
+        fault(named_error(
+            &cx.m.prog,
+            "ERR_ILLDIM",
+            format!("Dim: the array has no dimension {d}"),
+        ))
     };
     let mut v = v;
     let mut k = 1.0;
     loop {
         let Value::Array(items) = v else {
-            return fault(named_error(
-                &m.prog,
-                "ERR_ILLDIM",
-                format!("Dim: the array has no dimension {d}"),
-            ));
+            return no_dim();
         };
         if k == d {
             return Ok(Value::Num(items.len() as f32));
         }
         match items.first() {
             Some(first) if k < d => v = first,
-            _ => {
-                return fault(named_error(
-                    &m.prog,
-                    "ERR_ILLDIM",
-                    format!("Dim: the array has no dimension {d}"),
-                ));
-            }
+            _ => return no_dim(),
         }
         k += 1.0;
     }
 }
 
 /// The type of a value, for reading text into data of the same type.
-pub(crate) fn type_of_value(v: &Value) -> Option<Type> {
+fn type_of_value(v: &Value) -> Option<Type> {
     match v {
         Value::Array(items) => {
             let inner = type_of_value(items.first()?)?;
@@ -272,18 +293,18 @@ pub(crate) fn type_of_value(v: &Value) -> Option<Type> {
 
 /// `StrToVal(Str, Val)`: reads a value written as RAPID writes it into
 /// `Val`; `FALSE` (and `Val` unchanged) when the text does not fit.
-pub(crate) fn str_to_val(m: &mut Machine, a: &Args<'_>) -> R<Value> {
-    let text = m.string(a, "Str")?;
-    let p = m.place_arg(a, "Val")?;
-    let Some(ty) = m.get(&p).and_then(type_of_value) else {
+pub(crate) fn str_to_val(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    let text = cx.string(a, "Str")?;
+    let p = cx.place_arg(a, "Val")?;
+    let Some(ty) = cx.m.get(cx.sh, &p).and_then(type_of_value) else {
         return invalid("StrToVal: the type of Val is not known");
     };
     let Some(expr) = rapid_evaluator::parse_data_literal(&text) else {
         return Ok(Value::Bool(false));
     };
-    match rapid_evaluator::eval_as(&expr, Some(&ty), &TypesEnv(&m.prog.types)) {
+    match rapid_evaluator::eval_as(&expr, Some(&ty), &cx.m.prog.types) {
         Ok(v) => {
-            m.store(&p, v)?;
+            cx.store(&p, v)?;
             Ok(Value::Bool(true))
         }
         Err(_) => Ok(Value::Bool(false)),
@@ -291,15 +312,16 @@ pub(crate) fn str_to_val(m: &mut Machine, a: &Args<'_>) -> R<Value> {
 }
 
 /// Seconds since midnight of the simulated date, and the day.
-fn time_of_day(m: &Machine) -> (u64, u64) {
-    let t = m.ctl.clock.max(0.0) as u64;
+fn time_of_day(cx: &mut Cx<'_>) -> (u64, u64) {
+    cx.m.read_clock = true;
+    let t = cx.now().max(0.0) as u64;
     (t % 86_400, t / 86_400)
 }
 
 /// `CTime()`: the simulated time of day, `hh:mm:ss` (runs start at
 /// midnight).
-pub(crate) fn c_time(m: &mut Machine, _: &Args<'_>) -> R<Value> {
-    let (s, _) = time_of_day(m);
+pub(crate) fn c_time(cx: &mut Cx<'_>, _: &mut Args) -> R<Value> {
+    let (s, _) = time_of_day(cx);
     Ok(Value::Str(format!(
         "{:02}:{:02}:{:02}",
         s / 3600,
@@ -310,8 +332,8 @@ pub(crate) fn c_time(m: &mut Machine, _: &Args<'_>) -> R<Value> {
 
 /// `CDate()`: the simulated date, `yyyy-mm-dd` (runs start on Monday
 /// 2024-01-01).
-pub(crate) fn c_date(m: &mut Machine, _: &Args<'_>) -> R<Value> {
-    let (_, day) = time_of_day(m);
+pub(crate) fn c_date(cx: &mut Cx<'_>, _: &mut Args) -> R<Value> {
+    let (_, day) = time_of_day(cx);
     let (y, mo, d) = civil_from_days(19_723 + day as i64);
     Ok(Value::Str(format!("{y:04}-{mo:02}-{d:02}")))
 }
@@ -331,15 +353,15 @@ fn civil_from_days(z: i64) -> (i64, u32, u32) {
 }
 
 /// `GetTime(\WDay | \Hour | \Min | \Sec)` of the simulated clock.
-pub(crate) fn get_time(m: &mut Machine, a: &Args<'_>) -> R<Value> {
-    let (s, day) = time_of_day(m);
-    let v = if m.given(a, "WDay") {
+pub(crate) fn get_time(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    let (s, day) = time_of_day(cx);
+    let v = if a.given("WDay") {
         (day % 7) + 1
-    } else if m.given(a, "Hour") {
+    } else if a.given("Hour") {
         s / 3600
-    } else if m.given(a, "Min") {
+    } else if a.given("Min") {
         s / 60 % 60
-    } else if m.given(a, "Sec") {
+    } else if a.given("Sec") {
         s % 60
     } else {
         return invalid("GetTime needs one of \\WDay, \\Hour, \\Min or \\Sec");
@@ -347,39 +369,35 @@ pub(crate) fn get_time(m: &mut Machine, a: &Args<'_>) -> R<Value> {
     Ok(Value::Num(v as f32))
 }
 
-/// `GetTaskName()`: the simulated task is `T_ROB1`.
-pub(crate) fn get_task_name(_: &mut Machine, _: &Args<'_>) -> R<Value> {
-    Ok(Value::Str("T_ROB1".to_owned()))
-}
-
 /// `RobOS()`: `FALSE`, as on a virtual controller.
-pub(crate) fn rob_os(_: &mut Machine, _: &Args<'_>) -> R<Value> {
+pub(crate) fn rob_os(_: &mut Cx<'_>, _: &mut Args) -> R<Value> {
     Ok(Value::Bool(false))
 }
 
 /// `OpMode()`: automatic mode (`OP_AUTO`).
-pub(crate) fn op_mode(m: &mut Machine, _: &Args<'_>) -> R<Value> {
-    system_constant(m, "OP_AUTO")
+pub(crate) fn op_mode(cx: &mut Cx<'_>, _: &mut Args) -> R<Value> {
+    system_constant(cx, "OP_AUTO")
 }
 
 /// `RunMode()`: continuous (`RUN_CONT_CYCLE`).
-pub(crate) fn run_mode(m: &mut Machine, _: &Args<'_>) -> R<Value> {
-    system_constant(m, "RUN_CONT_CYCLE")
+pub(crate) fn run_mode(cx: &mut Cx<'_>, _: &mut Args) -> R<Value> {
+    system_constant(cx, "RUN_CONT_CYCLE")
 }
 
 /// `IsStopMoveAct()`: `FALSE`: nothing stops the simulated motion.
-pub(crate) fn is_stop_move_act(_: &mut Machine, _: &Args<'_>) -> R<Value> {
+pub(crate) fn is_stop_move_act(_: &mut Cx<'_>, _: &mut Args) -> R<Value> {
     Ok(Value::Bool(false))
 }
 
 /// The value of a predefined constant of the catalogue.
-fn system_constant(m: &mut Machine, name: &str) -> R<Value> {
-    let Some(&g) = m.prog.global_data.get(&name.to_ascii_lowercase()) else {
-        return invalid(format!("the constant {name} is not in the catalogue"));
-    };
-    m.ensure_global(g)?;
-    Ok(m.globals
-        .get(g as usize)
-        .cloned()
-        .unwrap_or(Value::Num(0.0)))
+fn system_constant(cx: &mut Cx<'_>, name: &str) -> R<Value> {
+    match cx.m.prog.system_global(name) {
+        Some(g) => Ok(cx
+            .m
+            .globals
+            .get(g as usize)
+            .cloned()
+            .unwrap_or(Value::Num(0.0))),
+        None => invalid(format!("the constant {name} is not in the catalogue")),
+    }
 }

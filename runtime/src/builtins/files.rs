@@ -1,15 +1,14 @@
-//! Files, in a sandbox folder: every device (`HOME:`, `TEMP:`...) is that
-//! folder, and no path leaves it. Without a sandbox, file instructions are
-//! not supported.
+//! Files, through the world's [`crate::world::FileSystem`]: `Open`,
+//! `Write`, `ReadStr`... The controller keeps the open files (an `iodev`
+//! holds its handle); what is read is read whole when the file is opened.
 
 use std::collections::HashMap;
-use std::io::Write as _;
-use std::path::{Component, Path, PathBuf};
 
-use rapid_evaluator::Value;
+use rapid_evaluator::{MAX_STRING_LEN, Value};
 
-use super::Args;
-use crate::machine::{FaultKind, Machine, R, fault, invalid, named_error};
+use super::{Args, Cx, Done};
+use crate::machine::{FaultKind, R, fault, invalid, named_error};
+use crate::world::{FileError, FileKind};
 
 #[derive(Clone, Copy, PartialEq, Eq)]
 enum Mode {
@@ -19,163 +18,121 @@ enum Mode {
 }
 
 struct OpenFile {
+    path: String,
     mode: Mode,
     /// What is read (the whole file, read when opened).
     data: Vec<u8>,
     pos: usize,
-    file: Option<std::fs::File>,
 }
 
-pub(crate) struct Files {
-    sandbox: Option<PathBuf>,
+/// The files the program has open, by handle.
+#[derive(Default)]
+pub(crate) struct OpenFiles {
     open: HashMap<i32, OpenFile>,
     next: i32,
 }
 
-impl Files {
-    pub(crate) fn new(sandbox: Option<PathBuf>) -> Files {
-        Files {
-            sandbox,
-            open: HashMap::new(),
-            next: 0,
-        }
+/// The fault of a file operation that failed.
+fn file_error<T>(cx: &Cx<'_>, what: &str, code: &str, e: FileError) -> R<T> {
+    match e {
+        FileError::Unsupported(why) => fault(FaultKind::Unsupported(format!("{what} ({why})"))),
+        FileError::Denied(m) => fault(named_error(&cx.m.prog, "ERR_FILEACC", m)),
+        FileError::NotFound(m) | FileError::Other(m) => fault(named_error(&cx.m.prog, code, m)),
     }
 }
 
-/// The sandbox path of a controller path (`HOME:/logs/a.txt`).
-fn resolve(m: &Machine, name: &str, what: &'static str) -> R<PathBuf> {
-    let Some(root) = &m.ctl.files.sandbox else {
-        return fault(FaultKind::Unsupported(format!(
-            "{what} (file instructions need a sandbox folder: --sandbox DIR)"
-        )));
-    };
-    let rest = match name.split_once(':') {
-        Some((dev, rest)) if !dev.contains(['/', '\\']) => rest,
-        _ => name,
-    };
-    let mut out = root.clone();
-    for c in Path::new(&rest.replace('\\', "/")).components() {
-        match c {
-            Component::Normal(p) => out.push(p),
-            Component::RootDir | Component::CurDir => {}
-            _ => {
-                return fault(named_error(
-                    &m.prog,
-                    "ERR_FILEACC",
-                    format!("{name}: the path leaves the sandbox folder"),
-                ));
-            }
-        }
-    }
-    Ok(out)
-}
-
-/// `Open` fails with `ERR_FILEOPEN`, whatever the reason.
-fn file_error<T>(m: &Machine, name: &str, e: &std::io::Error) -> R<T> {
-    fault(named_error(&m.prog, "ERR_FILEOPEN", format!("{name}: {e}")))
-}
-
-fn handle(m: &mut Machine, a: &Args<'_>) -> R<i32> {
-    let v = m.req(a, "IODevice")?;
+fn handle(cx: &mut Cx<'_>, a: &Args) -> R<i32> {
+    let v = cx.req(a, "IODevice")?;
     Ok(v.field("handle").and_then(Value::as_f64).unwrap_or(0.0) as i32)
 }
 
-fn open_file<'m>(m: &'m mut Machine, a: &Args<'_>) -> R<&'m mut OpenFile> {
-    let h = handle(m, a)?;
-    if !m.ctl.files.open.contains_key(&h) {
+fn open_file<'c>(cx: &'c mut Cx<'_>, a: &Args) -> R<&'c mut OpenFile> {
+    let h = handle(cx, a)?;
+    if !cx.sh.open.open.contains_key(&h) {
         return fault(named_error(
-            &m.prog,
+            &cx.m.prog,
             "ERR_FILEACC",
             format!("{}: the file is not open", a.name),
         ));
     }
-    match m.ctl.files.open.get_mut(&h) {
+    match cx.sh.open.open.get_mut(&h) {
         Some(f) => Ok(f),
         None => invalid("the file is not open"),
     }
 }
 
 /// `Open Object [\File] IODevice [\Read] | [\Write] | [\Append] [\Bin]`.
-pub(crate) fn open(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    let mut name = m.string(a, "Object")?;
-    if let Some(f) = m.opt_string(a, "File")? {
+pub(crate) fn open(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let mut name = cx.string(a, "Object")?;
+    if let Some(f) = cx.opt_string(a, "File")? {
         if !name.ends_with(['/', ':']) {
             name.push('/');
         }
         name.push_str(&f);
     }
-    let path = resolve(m, &name, "Open")?;
-    let mode = if m.given(a, "Read") {
+    let mode = if a.given("Read") {
         Mode::Read
-    } else if m.given(a, "Append") {
+    } else if a.given("Append") {
         Mode::Append
     } else {
         Mode::Write
     };
-    let entry = match mode {
-        Mode::Read => match std::fs::read(&path) {
-            Ok(data) => OpenFile {
-                mode,
-                data,
-                pos: 0,
-                file: None,
-            },
-            Err(e) => return file_error(m, &name, &e),
+    let data = match mode {
+        Mode::Read => match cx.sh.files.read(&name) {
+            Ok(data) => data,
+            Err(e) => return file_error(cx, "Open", "ERR_FILEOPEN", e),
         },
         Mode::Write | Mode::Append => {
-            let f = std::fs::OpenOptions::new()
-                .create(true)
-                .write(true)
-                .append(mode == Mode::Append)
-                .truncate(mode == Mode::Write)
-                .open(&path);
-            match f {
-                Ok(f) => OpenFile {
-                    mode,
-                    data: Vec::new(),
-                    pos: 0,
-                    file: Some(f),
-                },
-                Err(e) => return file_error(m, &name, &e),
+            if let Err(e) = cx.sh.files.write(&name, &[], mode == Mode::Append) {
+                return file_error(cx, "Open", "ERR_FILEOPEN", e);
             }
+            Vec::new()
         }
     };
-    m.ctl.files.next += 1;
-    let h = m.ctl.files.next;
-    m.ctl.files.open.insert(h, entry);
-    let p = m.place_arg(a, "IODevice")?;
-    m.store(
+    cx.sh.open.next += 1;
+    let h = cx.sh.open.next;
+    cx.sh.open.open.insert(
+        h,
+        OpenFile {
+            path: name,
+            mode,
+            data,
+            pos: 0,
+        },
+    );
+    let p = cx.place_arg(a, "IODevice")?;
+    cx.store(
         &p,
         Value::Record {
             ty: "iodev".to_owned(),
             fields: vec![("handle".to_owned(), Value::Num(h as f32))],
         },
-    )
+    )?;
+    Ok(Done::Next)
 }
 
 /// `Close IODevice`.
-pub(crate) fn close(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    let h = handle(m, a)?;
-    m.ctl.files.open.remove(&h);
-    Ok(())
+pub(crate) fn close(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let h = handle(cx, a)?;
+    cx.sh.open.open.remove(&h);
+    Ok(Done::Next)
 }
 
-fn write_bytes(m: &mut Machine, a: &Args<'_>, bytes: &[u8]) -> R<()> {
+fn write_bytes(cx: &mut Cx<'_>, a: &Args, bytes: &[u8]) -> R<Done> {
     let name = a.name;
-    let f = open_file(m, a)?;
-    let ok = f.mode != Mode::Read
-        && f.file
-            .as_mut()
-            .is_some_and(|file| file.write_all(bytes).is_ok());
-    if ok {
-        Ok(())
-    } else {
-        fault(named_error(
-            &m.prog,
+    let f = open_file(cx, a)?;
+    if f.mode == Mode::Read {
+        return fault(named_error(
+            &cx.m.prog,
             "ERR_FILEACC",
             format!("{name}: the file is not open for writing"),
-        ))
+        ));
     }
+    let path = f.path.clone();
+    if let Err(e) = cx.sh.files.write(&path, bytes, true) {
+        return file_error(cx, name, "ERR_FILEACC", e);
+    }
+    Ok(Done::Next)
 }
 
 /// Latin-1 bytes of a RAPID string.
@@ -184,25 +141,25 @@ fn latin1(s: &str) -> Vec<u8> {
 }
 
 /// `Write IODevice, String [\Num] ... [\NoNewLine]`.
-pub(crate) fn write(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    let mut text = m.string(a, "String")?;
-    text.push_str(&super::output::value_suffix(m, a)?);
-    if !m.given(a, "NoNewLine") {
+pub(crate) fn write(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let mut text = cx.string(a, "String")?;
+    text.push_str(&super::output::value_suffix(cx, a)?);
+    if !a.given("NoNewLine") {
         text.push('\n');
     }
-    write_bytes(m, a, &latin1(&text))
+    write_bytes(cx, a, &latin1(&text))
 }
 
 /// `WriteStrBin IODevice, Str`.
-pub(crate) fn write_str_bin(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    let s = m.string(a, "Str")?;
-    write_bytes(m, a, &latin1(&s))
+pub(crate) fn write_str_bin(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let s = cx.string(a, "Str")?;
+    write_bytes(cx, a, &latin1(&s))
 }
 
 /// `WriteBin IODevice, Buffer, NChar`.
-pub(crate) fn write_bin(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    let buffer = m.req(a, "Buffer")?;
-    let n = m.num(a, "NChar")? as usize;
+pub(crate) fn write_bin(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let buffer = cx.req(a, "Buffer")?;
+    let n = cx.num(a, "NChar")? as usize;
     let Value::Array(items) = buffer else {
         return invalid("WriteBin: Buffer must be an array of num");
     };
@@ -211,20 +168,20 @@ pub(crate) fn write_bin(m: &mut Machine, a: &Args<'_>) -> R<()> {
         .take(n)
         .map(|v| v.as_f64().unwrap_or(0.0).clamp(0.0, 255.0) as u8)
         .collect();
-    write_bytes(m, a, &bytes)
+    write_bytes(cx, a, &bytes)
 }
 
 /// `Rewind IODevice`.
-pub(crate) fn rewind(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    let f = open_file(m, a)?;
+pub(crate) fn rewind(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let f = open_file(cx, a)?;
     f.pos = 0;
-    Ok(())
+    Ok(Done::Next)
 }
 
-fn readable<'m>(m: &'m mut Machine, a: &Args<'_>) -> R<&'m mut OpenFile> {
+fn readable<'c>(cx: &'c mut Cx<'_>, a: &Args) -> R<&'c mut OpenFile> {
     let name = a.name;
-    let prog = m.prog.clone();
-    let f = open_file(m, a)?;
+    let prog = cx.m.prog.clone();
+    let f = open_file(cx, a)?;
     if f.mode != Mode::Read {
         return fault(named_error(
             &prog,
@@ -235,7 +192,7 @@ fn readable<'m>(m: &'m mut Machine, a: &Args<'_>) -> R<&'m mut OpenFile> {
     Ok(f)
 }
 
-/// Reads up to a delimiter (not more than 80 characters): the part read,
+/// Reads up to a delimiter (not more than a string holds): the part read,
 /// or `None` at the end of the file.
 fn read_part(f: &mut OpenFile, delims: &[u8], discard_headers: bool) -> Option<String> {
     if discard_headers {
@@ -247,23 +204,25 @@ fn read_part(f: &mut OpenFile, delims: &[u8], discard_headers: bool) -> Option<S
         return None;
     }
     let mut out = String::new();
+    let mut n = 0;
     while let Some(&b) = f.data.get(f.pos) {
         if delims.contains(&b) {
             f.pos += 1;
             break;
         }
-        if out.len() >= 80 {
+        if n >= MAX_STRING_LEN {
             break;
         }
         out.push(char::from(b));
+        n += 1;
         f.pos += 1;
     }
     Some(out)
 }
 
-fn delimiters(m: &mut Machine, a: &Args<'_>, extra_cr: bool) -> R<Vec<u8>> {
+fn delimiters(cx: &mut Cx<'_>, a: &Args, extra_cr: bool) -> R<Vec<u8>> {
     let mut d = vec![b'\n'];
-    if let Some(s) = m.opt_string(a, "Delim")? {
+    if let Some(s) = cx.opt_string(a, "Delim")? {
         d.extend(latin1(&s));
         if extra_cr {
             d.push(b'\r');
@@ -274,11 +233,11 @@ fn delimiters(m: &mut Machine, a: &Args<'_>, extra_cr: bool) -> R<Vec<u8>> {
 
 /// `ReadStr(IODevice [\Delim] [\RemoveCR] [\DiscardHeaders])`: `"EOF"` at
 /// the end of the file.
-pub(crate) fn read_str(m: &mut Machine, a: &Args<'_>) -> R<Value> {
-    let delims = delimiters(m, a, false)?;
-    let discard = m.given(a, "DiscardHeaders");
-    let remove_cr = m.given(a, "RemoveCR");
-    let f = readable(m, a)?;
+pub(crate) fn read_str(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    let delims = delimiters(cx, a, false)?;
+    let discard = a.given("DiscardHeaders");
+    let remove_cr = a.given("RemoveCR");
+    let f = readable(cx, a)?;
     Ok(Value::Str(match read_part(f, &delims, discard) {
         None => "EOF".to_owned(),
         Some(mut s) => {
@@ -291,16 +250,16 @@ pub(crate) fn read_str(m: &mut Machine, a: &Args<'_>) -> R<Value> {
 }
 
 /// `ReadNum(IODevice [\Delim])`: 9.999E36 at the end of the file.
-pub(crate) fn read_num(m: &mut Machine, a: &Args<'_>) -> R<Value> {
-    let delims = delimiters(m, a, true)?;
-    let f = readable(m, a)?;
+pub(crate) fn read_num(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    let delims = delimiters(cx, a, true)?;
+    let f = readable(cx, a)?;
     let Some(s) = read_part(f, &delims, true) else {
         return Ok(Value::Num(9.999e36));
     };
     match rapid_evaluator::parse_num_literal(s.trim()) {
         Ok(x) => Ok(Value::Num(x as f32)),
         Err(_) => fault(named_error(
-            &m.prog,
+            &cx.m.prog,
             "ERR_RCVDATA",
             format!("ReadNum: {s:?} is not a number"),
         )),
@@ -308,8 +267,8 @@ pub(crate) fn read_num(m: &mut Machine, a: &Args<'_>) -> R<Value> {
 }
 
 /// `ReadBin(IODevice)`: the next byte, -1 at the end of the file.
-pub(crate) fn read_bin(m: &mut Machine, a: &Args<'_>) -> R<Value> {
-    let f = readable(m, a)?;
+pub(crate) fn read_bin(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    let f = readable(cx, a)?;
     Ok(Value::Num(match f.data.get(f.pos) {
         Some(&b) => {
             f.pos += 1;
@@ -320,51 +279,45 @@ pub(crate) fn read_bin(m: &mut Machine, a: &Args<'_>) -> R<Value> {
 }
 
 /// `IsFile(Path [\Directory] | [\RegFile] ...)`.
-pub(crate) fn is_file(m: &mut Machine, a: &Args<'_>) -> R<Value> {
-    let name = m.string(a, "Path")?;
-    let path = resolve(m, &name, "IsFile")?;
-    let meta = std::fs::metadata(&path).ok();
-    Ok(Value::Bool(match meta {
+pub(crate) fn is_file(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    let name = cx.string(a, "Path")?;
+    let kind = cx.sh.files.kind(&name);
+    Ok(Value::Bool(match kind {
         None => false,
-        Some(meta) if m.given(a, "Directory") => meta.is_dir(),
-        Some(meta) if m.given(a, "RegFile") => meta.is_file(),
+        Some(k) if a.given("Directory") => k == FileKind::Directory,
+        Some(k) if a.given("RegFile") => k == FileKind::File,
         Some(_) => true,
     }))
 }
 
 fn fs_op(
-    m: &mut Machine,
-    a: &Args<'_>,
-    param: &str,
-    op: fn(&Path) -> std::io::Result<()>,
-) -> R<()> {
-    let name = m.string(a, param)?;
-    let path = resolve(m, &name, a.name)?;
-    op(&path).or_else(|e| {
-        let code = if e.kind() == std::io::ErrorKind::NotFound {
-            "ERR_FILNOTFND"
-        } else {
-            "ERR_FILEACC"
-        };
-        fault(named_error(
-            &m.prog,
-            code,
-            format!("{}: {name}: {e}", a.name),
-        ))
-    })
+    cx: &mut Cx<'_>,
+    a: &Args,
+    op: fn(&mut dyn crate::world::FileSystem, &str) -> Result<(), FileError>,
+) -> R<Done> {
+    let name = cx.string(a, "Path")?;
+    match op(cx.sh.files.as_mut(), &name) {
+        Ok(()) => Ok(Done::Next),
+        Err(FileError::NotFound(m)) => fault(named_error(
+            &cx.m.prog,
+            "ERR_FILNOTFND",
+            format!("{}: {m}", a.name),
+        )),
+        Err(e) => file_error(cx, a.name, "ERR_FILEACC", e),
+    }
 }
 
 /// `RemoveFile Path`.
-pub(crate) fn remove_file(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    fs_op(m, a, "Path", |p| std::fs::remove_file(p))
+pub(crate) fn remove_file(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    fs_op(cx, a, |fs, p| fs.remove_file(p))
 }
 
 /// `MakeDir Path`.
-pub(crate) fn make_dir(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    fs_op(m, a, "Path", |p| std::fs::create_dir(p))
+pub(crate) fn make_dir(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    fs_op(cx, a, |fs, p| fs.make_dir(p))
 }
 
 /// `RemoveDir Path`.
-pub(crate) fn remove_dir(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    fs_op(m, a, "Path", |p| std::fs::remove_dir(p))
+pub(crate) fn remove_dir(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    fs_op(cx, a, |fs, p| fs.remove_dir(p))
 }

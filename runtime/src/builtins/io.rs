@@ -1,148 +1,124 @@
-//! I/O signals, waits and interrupts.
+//! I/O signals (through the world's [`crate::world::Io`]), waits for them,
+//! and interrupts.
 
 use rapid_evaluator::Value;
 
-use super::Args;
-use crate::machine::{Machine, R, fault, invalid, named_error};
-use crate::program::SignalKind;
+use super::{Args, Cx, Done};
+use crate::SignalKind;
+use crate::machine::{R, SignalTest, Timeout, Wait, WaitKind, fault, invalid, named_error};
 
-/// The signal a signal argument stands for: its folded name and kind.
-fn signal(m: &mut Machine, a: &Args<'_>, param: &str) -> R<(String, SignalKind)> {
-    let v = m.req(a, param)?;
-    if !m.is_signal(&v) {
+/// The signal a signal argument stands for: its name and kind.
+fn signal(cx: &mut Cx<'_>, a: &Args, param: &str) -> R<(String, SignalKind)> {
+    let v = cx.req(a, param)?;
+    if !crate::machine::is_signal(&v) {
         return invalid(format!(
             "{}: {param} must be a signal, not {}",
             a.name,
             crate::machine::describe(&v)
         ));
     }
-    let s = m.signal_of(&v)?;
-    Ok((s.name.clone(), s.kind))
+    cx.m.signal_of(cx.sh, &v)
 }
 
-fn write_signal(m: &mut Machine, a: &Args<'_>, name: &str, value: f64) -> R<()> {
-    let _ = a;
-    m.ctl.set_signal_value(name, value);
-    Ok(())
-}
-
-fn digital(m: &Machine, a: &Args<'_>, value: f64) -> R<f64> {
+fn digital(cx: &Cx<'_>, a: &Args, value: f64) -> R<f64> {
     if value == 0.0 || value == 1.0 {
         Ok(value)
     } else {
         fault(named_error(
-            &m.prog,
+            &cx.m.prog,
             "ERR_ARGVALERR",
             format!("{}: {value} is not a digital value (0 or 1)", a.name),
         ))
     }
 }
 
-fn check_output(m: &Machine, a: &Args<'_>, name: &str, kind: SignalKind) -> R<()> {
-    let _ = m;
-    match kind {
-        SignalKind::DigitalOut | SignalKind::AnalogOut | SignalKind::GroupOut => Ok(()),
-        _ => invalid(format!(
+fn check_output(a: &Args, name: &str, kind: SignalKind) -> R<()> {
+    if kind.is_output() {
+        Ok(())
+    } else {
+        invalid(format!(
             "{}: {name} is an input; only outputs can be set",
             a.name
-        )),
+        ))
     }
 }
 
-/// `SetDO Signal, Value` and `SetGO Signal, Value`.
-pub(crate) fn set_do(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    let (name, kind) = signal(m, a, "Signal")?;
-    check_output(m, a, &name, kind)?;
-    let mut value = m.num(a, "Value")?;
+/// `SetDO Signal, Value [\SDelay]` and `SetGO Signal, Value`.
+pub(crate) fn set_do(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let (name, kind) = signal(cx, a, "Signal")?;
+    check_output(a, &name, kind)?;
+    let mut value = cx.num(a, "Value")?;
     if kind == SignalKind::DigitalOut {
-        value = digital(m, a, value)?;
+        value = digital(cx, a, value)?;
     } else if value < 0.0 || value.fract() != 0.0 {
         return fault(named_error(
-            &m.prog,
+            &cx.m.prog,
             "ERR_ARGVALERR",
             format!("{}: {value} is not a group value", a.name),
         ));
     }
-    if let Some(delay) = m.opt_num(a, "SDelay")? {
-        schedule(m, &name, value, delay);
-        return Ok(());
+    match cx.opt_num(a, "SDelay")? {
+        Some(delay) => cx.sh.set_signal_later(&name, value, delay),
+        None => cx.sh.set_signal(&name, value),
     }
-    write_signal(m, a, &name, value)
-}
-
-/// A signal change `delay` seconds from now.
-fn schedule(m: &mut Machine, name: &str, value: f64, delay: f64) {
-    let at = m.ctl.clock + delay.max(0.0);
-    let pos = m.ctl.script.partition_point(|c| c.at <= at);
-    m.ctl.script.insert(
-        pos,
-        crate::SignalChange {
-            name: name.to_owned(),
-            value,
-            at,
-        },
-    );
+    Ok(Done::Next)
 }
 
 /// `Set Signal`.
-pub(crate) fn set(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    let (name, kind) = signal(m, a, "Signal")?;
-    check_output(m, a, &name, kind)?;
-    write_signal(m, a, &name, 1.0)
+pub(crate) fn set(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let (name, kind) = signal(cx, a, "Signal")?;
+    check_output(a, &name, kind)?;
+    cx.sh.set_signal(&name, 1.0);
+    Ok(Done::Next)
 }
 
 /// `Reset Signal`.
-pub(crate) fn reset(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    let (name, kind) = signal(m, a, "Signal")?;
-    check_output(m, a, &name, kind)?;
-    write_signal(m, a, &name, 0.0)
+pub(crate) fn reset(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let (name, kind) = signal(cx, a, "Signal")?;
+    check_output(a, &name, kind)?;
+    cx.sh.set_signal(&name, 0.0);
+    Ok(Done::Next)
 }
 
 /// `InvertDO Signal`.
-pub(crate) fn invert_do(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    let (name, kind) = signal(m, a, "Signal")?;
-    check_output(m, a, &name, kind)?;
-    let v = m
-        .ctl
-        .signals
-        .get(&name.to_ascii_lowercase())
-        .map_or(0.0, |s| s.value);
-    write_signal(m, a, &name, 1.0 - v)
+pub(crate) fn invert_do(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let (name, kind) = signal(cx, a, "Signal")?;
+    check_output(a, &name, kind)?;
+    let v = cx.sh.io.read(&name).unwrap_or(0.0);
+    cx.sh.set_signal(&name, 1.0 - v);
+    Ok(Done::Next)
 }
 
 /// `PulseDO [\High] [\PLength] Signal`: 1 now, back after the pulse
 /// (0.2 s unless given).
-pub(crate) fn pulse_do(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    let (name, kind) = signal(m, a, "Signal")?;
-    check_output(m, a, &name, kind)?;
-    let length = m.opt_num(a, "PLength")?.unwrap_or(0.2);
-    let before = m
-        .ctl
-        .signals
-        .get(&name.to_ascii_lowercase())
-        .map_or(0.0, |s| s.value);
-    write_signal(m, a, &name, 1.0)?;
-    if !(m.given(a, "High") && before == 1.0) {
-        schedule(m, &name, before, length);
+pub(crate) fn pulse_do(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let (name, kind) = signal(cx, a, "Signal")?;
+    check_output(a, &name, kind)?;
+    let length = cx.opt_num(a, "PLength")?.unwrap_or(0.2);
+    let before = cx.sh.io.read(&name).unwrap_or(0.0);
+    cx.sh.set_signal(&name, 1.0);
+    if !(a.given("High") && before == 1.0) {
+        cx.sh.set_signal_later(&name, before, length);
     }
-    Ok(())
+    Ok(Done::Next)
 }
 
 /// `SetAO Signal, Value`.
-pub(crate) fn set_ao(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    let (name, kind) = signal(m, a, "Signal")?;
-    check_output(m, a, &name, kind)?;
-    let value = m.num(a, "Value")?;
-    write_signal(m, a, &name, value)
+pub(crate) fn set_ao(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let (name, kind) = signal(cx, a, "Signal")?;
+    check_output(a, &name, kind)?;
+    let value = cx.num(a, "Value")?;
+    cx.sh.set_signal(&name, value);
+    Ok(Done::Next)
 }
 
 /// `AliasIO FromSignal, ToSignal`: a signal variable stands for a
 /// configured signal (named by a string or given as a signal).
-pub(crate) fn alias_io(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    let from = m.req(a, "FromSignal")?;
+pub(crate) fn alias_io(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let from = cx.req(a, "FromSignal")?;
     let name = match &from {
         Value::Str(s) => s.clone(),
-        v if m.is_signal(v) => match v.field("name") {
+        v if crate::machine::is_signal(v) => match v.field("name") {
             Some(Value::Str(s)) => s.clone(),
             _ => String::new(),
         },
@@ -153,146 +129,109 @@ pub(crate) fn alias_io(m: &mut Machine, a: &Args<'_>) -> R<()> {
             ));
         }
     };
-    let Some(s) = m.ctl.signals.get(&name.to_ascii_lowercase()) else {
+    let Some((canonical, _)) = cx.sh.io.signal(&name) else {
         return fault(named_error(
-            &m.prog,
+            &cx.m.prog,
             "ERR_ALIASIO_DEF",
             format!("AliasIO: there is no signal {name}"),
         ));
     };
-    let canonical = s.name.clone();
-    let p = m.place_arg(a, "ToSignal")?;
-    let ty = match m.get(&p) {
+    let p = cx.place_arg(a, "ToSignal")?;
+    let ty = match cx.m.get(cx.sh, &p) {
         Some(Value::Record { ty, .. }) => ty.clone(),
         _ => return invalid("AliasIO: ToSignal must be a signal variable"),
     };
-    m.store(
-        &p,
-        Value::Record {
-            ty,
-            fields: vec![("name".to_owned(), Value::Str(canonical))],
-        },
-    )
+    cx.store(&p, crate::program::signal_value(&ty, &canonical))?;
+    Ok(Done::Next)
 }
 
 /// `AliasIOReset Signal`: the signal variable stands for no signal again.
-pub(crate) fn alias_io_reset(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    let p = m.place_arg(a, "Signal")?;
-    let ty = match m.get(&p) {
-        Some(v @ Value::Record { ty, .. }) if m.is_signal(v) => ty.clone(),
+pub(crate) fn alias_io_reset(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let p = cx.place_arg(a, "Signal")?;
+    let ty = match cx.m.get(cx.sh, &p) {
+        Some(v @ Value::Record { ty, .. }) if crate::machine::is_signal(v) => ty.clone(),
         _ => return invalid("AliasIOReset: Signal must be a signal variable"),
     };
-    m.store(
-        &p,
-        Value::Record {
-            ty,
-            fields: vec![("name".to_owned(), Value::Str(String::new()))],
-        },
-    )
+    cx.store(&p, crate::program::signal_value(&ty, ""))?;
+    Ok(Done::Next)
 }
 
 /// `DInput`, `DOutput`, `AInput`, `AOutput`, `GInput`, `GOutput`: the
 /// signal's value.
-pub(crate) fn input(m: &mut Machine, a: &Args<'_>) -> R<Value> {
-    let v = m.req(a, "Signal")?;
-    m.signal_value(&v).map(Value::Num)
+pub(crate) fn input(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    let v = cx.req(a, "Signal")?;
+    cx.m.signal_value(cx.sh, &v).map(Value::Num)
 }
 
 /// `TestDI(Signal)`: whether a digital input is 1.
-pub(crate) fn test_di(m: &mut Machine, a: &Args<'_>) -> R<Value> {
-    let v = m.req(a, "Signal")?;
-    m.signal_value(&v).map(|x| Value::Bool(x == 1.0))
+pub(crate) fn test_di(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    let v = cx.req(a, "Signal")?;
+    cx.m.signal_value(cx.sh, &v).map(|x| Value::Bool(x == 1.0))
 }
 
-/// The end of a wait that may time out: `ERR_WAIT_MAXTIME`, or the time
-/// flag set when one is given.
-fn timed_out(m: &mut Machine, a: &Args<'_>, what: &str) -> R<()> {
-    if let Some(p) = m.opt_place(a, "TimeFlag")? {
-        return m.store(&p, Value::Bool(true));
+/// The time flag of a wait that may time out is cleared; what happens at
+/// the time-out: the flag set, or `ERR_WAIT_MAXTIME`.
+fn timeout(cx: &mut Cx<'_>, a: &Args, what: &str) -> R<Timeout> {
+    match cx.opt_place(a, "TimeFlag")? {
+        Some(p) => {
+            cx.store(&p, Value::Bool(false))?;
+            Ok(Timeout::Flag(p))
+        }
+        None => Ok(Timeout::Error(
+            "ERR_WAIT_MAXTIME",
+            format!("{}: {what} did not happen within \\MaxTime", a.name),
+        )),
     }
-    fault(named_error(
-        &m.prog,
-        "ERR_WAIT_MAXTIME",
-        format!("{}: {what} did not happen within \\MaxTime", a.name),
-    ))
 }
 
-fn clear_flag(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    if let Some(p) = m.opt_place(a, "TimeFlag")? {
-        m.store(&p, Value::Bool(false))?;
+/// A wait for a signal, which ends when the signal passes `test`.
+fn wait_signal(cx: &mut Cx<'_>, a: &Args, name: String, test: SignalTest, what: String) -> R<Done> {
+    if cx.sh.io.read(&name).is_some_and(|v| test.holds(v)) {
+        if let Some(p) = cx.opt_place(a, "TimeFlag")? {
+            cx.store(&p, Value::Bool(false))?;
+        }
+        return Ok(Done::Next);
     }
-    Ok(())
-}
-
-/// `WaitUntil Cond [\MaxTime] [\TimeFlag] [\PollRate]`: the condition is
-/// checked again every `PollRate` seconds of simulated time (0.1 s).
-pub(crate) fn wait_until(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    let Some(cond) = a.expr("Cond") else {
-        return invalid("WaitUntil: the condition is missing");
-    };
-    let max = m.opt_num(a, "MaxTime")?;
-    let poll = m.opt_num(a, "PollRate")?.unwrap_or(0.1).max(0.01);
-    clear_flag(m, a)?;
-    let ok = m.wait_until("WaitUntil", max, poll, false, &mut |m| m.truth(cond))?;
-    if ok {
-        Ok(())
-    } else {
-        timed_out(m, a, "the condition")
-    }
+    let max = cx.opt_num(a, "MaxTime")?;
+    let on_timeout = timeout(cx, a, &what)?;
+    Ok(Done::Wait(Box::new(Wait {
+        kind: WaitKind::Signal { name, test },
+        deadline: max.map(|m| cx.now() + m.max(0.0)),
+        on_timeout,
+        what,
+    })))
 }
 
 /// `WaitDI Signal, Value [\MaxTime] [\TimeFlag]` (and `WaitDO`, `WaitGI`,
 /// `WaitGO`): waits until the signal has the value.
-pub(crate) fn wait_di(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    let (name, _) = signal(m, a, "Signal")?;
-    let value = m.num(a, "Value")?;
-    let max = m.opt_num(a, "MaxTime")?;
-    clear_flag(m, a)?;
-    let key = name.to_ascii_lowercase();
+pub(crate) fn wait_di(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let (name, _) = signal(cx, a, "Signal")?;
+    let value = cx.num(a, "Value")?;
     let what = format!("{} {name}, {value}", a.name);
-    let ok = m.wait_until(&what, max, 0.1, true, &mut |m| {
-        Ok(m.ctl.signals.get(&key).is_some_and(|s| s.value == value))
-    })?;
-    if ok {
-        Ok(())
-    } else {
-        timed_out(m, a, &format!("{name} = {value}"))
-    }
+    wait_signal(cx, a, name, SignalTest::Equal(value), what)
 }
 
 /// `WaitAI Signal, [\LT] | [\GT], Value` (and `WaitAO`).
-pub(crate) fn wait_ai(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    let (name, _) = signal(m, a, "Signal")?;
-    let value = m.num(a, "Value")?;
-    let lt = m.given(a, "LT");
-    let gt = m.given(a, "GT");
-    let max = m.opt_num(a, "MaxTime")?;
-    clear_flag(m, a)?;
-    let key = name.to_ascii_lowercase();
-    let what = format!("{} {name}", a.name);
-    let ok = m.wait_until(&what, max, 0.1, true, &mut |m| {
-        let v = m.ctl.signals.get(&key).map_or(0.0, |s| s.value);
-        Ok(if lt {
-            v < value
-        } else if gt {
-            v > value
-        } else {
-            v == value
-        })
-    })?;
-    if ok {
-        Ok(())
+pub(crate) fn wait_ai(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let (name, _) = signal(cx, a, "Signal")?;
+    let value = cx.num(a, "Value")?;
+    let test = if a.given("LT") {
+        SignalTest::Below(value)
+    } else if a.given("GT") {
+        SignalTest::Above(value)
     } else {
-        timed_out(m, a, "the value")
-    }
+        SignalTest::Equal(value)
+    };
+    let what = format!("{} {name}", a.name);
+    wait_signal(cx, a, name, test, what)
 }
 
-fn interrupt_number(m: &mut Machine, a: &Args<'_>) -> R<i32> {
-    let v = m.req(a, "Interrupt")?;
+fn interrupt_number(cx: &mut Cx<'_>, a: &Args) -> R<i32> {
+    let v = cx.req(a, "Interrupt")?;
     let id = v.as_f64().unwrap_or(0.0) as i32;
-    if !m.ctl.interrupts.is_connected(id) {
+    if !cx.m.interrupts.is_connected(id) {
         return fault(named_error(
-            &m.prog,
+            &cx.m.prog,
             "ERR_CNTNOTVAR",
             format!(
                 "{}: the interrupt is not connected to a trap routine (CONNECT)",
@@ -305,70 +244,70 @@ fn interrupt_number(m: &mut Machine, a: &Args<'_>) -> R<i32> {
 
 /// `ISignalDI [\Single] Signal, TriggValue, Interrupt` (and `ISignalDO`):
 /// an interrupt each time the signal changes to the value.
-pub(crate) fn i_signal(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    let (name, _) = signal(m, a, "Signal")?;
-    let value = m.num(a, "TriggValue")?;
-    let id = interrupt_number(m, a)?;
-    let single = m.given(a, "Single") || m.given(a, "SingleSafe");
-    m.ctl.interrupts.add_watch(id, &name, Some(value), single);
-    Ok(())
+pub(crate) fn i_signal(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let (name, _) = signal(cx, a, "Signal")?;
+    let value = cx.num(a, "TriggValue")?;
+    let id = interrupt_number(cx, a)?;
+    let single = a.given("Single") || a.given("SingleSafe");
+    cx.m.interrupts.add_watch(id, &name, Some(value), single);
+    Ok(Done::Next)
 }
 
 /// `ISignalGI` and `ISignalGO`: an interrupt at every change.
-pub(crate) fn i_signal_any(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    let (name, _) = signal(m, a, "Signal")?;
-    let id = interrupt_number(m, a)?;
-    let single = m.given(a, "Single") || m.given(a, "SingleSafe");
-    m.ctl.interrupts.add_watch(id, &name, None, single);
-    Ok(())
+pub(crate) fn i_signal_any(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let (name, _) = signal(cx, a, "Signal")?;
+    let id = interrupt_number(cx, a)?;
+    let single = a.given("Single") || a.given("SingleSafe");
+    cx.m.interrupts.add_watch(id, &name, None, single);
+    Ok(Done::Next)
 }
 
 /// `ITimer [\Single] Time, Interrupt`.
-pub(crate) fn i_timer(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    let t = m.num(a, "Time")?;
+pub(crate) fn i_timer(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let t = cx.num(a, "Time")?;
     if t <= 0.0 {
         return fault(named_error(
-            &m.prog,
+            &cx.m.prog,
             "ERR_ARGVALERR",
             format!("ITimer: {t} is not a positive time"),
         ));
     }
-    let id = interrupt_number(m, a)?;
-    let single = m.given(a, "Single") || m.given(a, "SingleSafe");
-    let now = m.ctl.clock;
-    m.ctl.interrupts.add_timer(id, now, t, single);
-    Ok(())
+    let id = interrupt_number(cx, a)?;
+    let single = a.given("Single") || a.given("SingleSafe");
+    let now = cx.now();
+    cx.m.interrupts.add_timer(id, now, t, single);
+    Ok(Done::Next)
 }
 
 /// `IDelete Interrupt`.
-pub(crate) fn i_delete(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    let v = m.req(a, "Interrupt")?;
-    m.ctl.interrupts.delete(v.as_f64().unwrap_or(0.0) as i32);
-    Ok(())
+pub(crate) fn i_delete(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let v = cx.req(a, "Interrupt")?;
+    cx.m.interrupts.delete(v.as_f64().unwrap_or(0.0) as i32);
+    Ok(Done::Next)
 }
 
 /// `IDisable`: interrupts wait until `IEnable`.
-pub(crate) fn i_disable(m: &mut Machine, _: &Args<'_>) -> R<()> {
-    m.ctl.interrupts.disabled = true;
-    Ok(())
+pub(crate) fn i_disable(cx: &mut Cx<'_>, _: &mut Args) -> R<Done> {
+    cx.m.interrupts.disabled = true;
+    Ok(Done::Next)
 }
 
 /// `IEnable`.
-pub(crate) fn i_enable(m: &mut Machine, _: &Args<'_>) -> R<()> {
-    m.ctl.interrupts.disabled = false;
-    Ok(())
+pub(crate) fn i_enable(cx: &mut Cx<'_>, _: &mut Args) -> R<Done> {
+    cx.m.interrupts.disabled = false;
+    Ok(Done::Next)
 }
 
 /// `ISleep Interrupt`: the interrupt is ignored until `IWatch`.
-pub(crate) fn i_sleep(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    let id = interrupt_number(m, a)?;
-    m.ctl.interrupts.sleep(id, true);
-    Ok(())
+pub(crate) fn i_sleep(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let id = interrupt_number(cx, a)?;
+    cx.m.interrupts.sleep(id, true);
+    Ok(Done::Next)
 }
 
 /// `IWatch Interrupt`.
-pub(crate) fn i_watch(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    let id = interrupt_number(m, a)?;
-    m.ctl.interrupts.sleep(id, false);
-    Ok(())
+pub(crate) fn i_watch(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let id = interrupt_number(cx, a)?;
+    cx.m.interrupts.sleep(id, false);
+    Ok(Done::Next)
 }

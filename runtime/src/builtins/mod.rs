@@ -1,6 +1,7 @@
-//! The instructions and functions of the simulated controller. Each
-//! receives its arguments bound to the catalogue's parameters (by name)
-//! and evaluates the ones it needs.
+//! The instructions and functions of the simulated controller. Each gets
+//! its arguments bound to the catalogue's parameters of the task's view
+//! (the binding the compiler made, [`crate::code::BuiltinSite`]) and reads
+//! them by parameter name; waits come back as data ([`Done::Wait`]).
 //!
 //! Anything the catalogue knows and this module does not implement stops
 //! a run with "not supported in simulation: NAME".
@@ -10,17 +11,35 @@ pub(crate) mod files;
 pub(crate) mod io;
 pub(crate) mod motion;
 pub(crate) mod output;
+pub(crate) mod sockets;
+pub(crate) mod tasks;
 
-use rapid_analyzer::catalogue::{self, base as catalogue};
+use rapid_analyzer::catalogue::Routine as CatalogueRoutine;
 use rapid_evaluator::Value;
 
-use crate::code::{ArgValue, Expr};
-use crate::machine::{Machine, Place, R, Slot, invalid};
+use crate::controller::Shared;
+use crate::machine::{ArgVal, Machine, Place, R, Root, Wait, invalid};
+
+/// What an instruction leaves the task to do.
+pub(crate) enum Done {
+    /// Go on with the next operation.
+    Next,
+    /// Wait (the instruction is done when the wait ends).
+    Wait(Box<Wait>),
+    /// Call the procedure of the program without arguments (`CallByVar`).
+    Call(u32),
+}
+
+/// A built-in's view of the machine and the controller.
+pub(crate) struct Cx<'a> {
+    pub m: &'a mut Machine,
+    pub sh: &'a mut Shared,
+}
 
 /// An instruction of the simulated controller.
-pub(crate) type InsFn = fn(&mut Machine, &Args<'_>) -> R<()>;
+pub(crate) type InsFn = fn(&mut Cx<'_>, &mut Args) -> R<Done>;
 /// A function of the simulated controller.
-pub(crate) type FuncFn = fn(&mut Machine, &Args<'_>) -> R<Value>;
+pub(crate) type FuncFn = fn(&mut Cx<'_>, &mut Args) -> R<Value>;
 
 /// The implemented instructions, by their catalogue names.
 const INSTRUCTIONS: &[(&str, InsFn)] = &[
@@ -28,6 +47,8 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("ErrWrite", output::err_write),
     ("TPErase", output::nothing),
     ("TPShow", output::nothing),
+    ("TPReadFK", output::tp_read_fk),
+    ("TPReadNum", output::tp_read_num),
     ("Incr", data::incr),
     ("Decr", data::decr),
     ("Add", data::add),
@@ -43,7 +64,6 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("Stop", data::stop),
     ("Break", data::stop),
     ("ExitCycle", data::exit_cycle),
-    ("WaitUntil", io::wait_until),
     ("WaitDI", io::wait_di),
     ("WaitDO", io::wait_di),
     ("WaitGI", io::wait_di),
@@ -58,6 +78,7 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("SetAO", io::set_ao),
     ("SetGO", io::set_do),
     ("AliasIO", io::alias_io),
+    ("AliasIOReset", io::alias_io_reset),
     ("ISignalDI", io::i_signal),
     ("ISignalDO", io::i_signal),
     ("ISignalGI", io::i_signal_any),
@@ -81,12 +102,12 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("TriggL", motion::move_to_point),
     ("TriggJ", motion::move_to_point),
     ("TriggC", motion::move_to_point),
+    ("WaitRob", motion::wait_rob),
     ("ConfL", motion::setting),
     ("ConfJ", motion::setting),
     ("SingArea", motion::setting),
     ("AccSet", motion::setting),
     ("VelSet", motion::setting),
-    ("WaitRob", motion::setting),
     ("StopMove", motion::setting),
     ("StartMove", motion::setting),
     ("StorePath", motion::setting),
@@ -101,7 +122,6 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("EOffsOff", motion::setting),
     ("EOffsSet", motion::setting),
     ("EOffsOn", motion::setting),
-    ("AliasIOReset", io::alias_io_reset),
     ("Open", files::open),
     ("Close", files::close),
     ("Write", files::write),
@@ -111,6 +131,16 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("RemoveFile", files::remove_file),
     ("MakeDir", files::make_dir),
     ("RemoveDir", files::remove_dir),
+    ("SocketCreate", sockets::socket_create),
+    ("SocketConnect", sockets::socket_connect),
+    ("SocketSend", sockets::socket_send),
+    ("SocketReceive", sockets::socket_receive),
+    ("SocketClose", sockets::socket_close),
+    ("WaitSyncTask", tasks::wait_sync_task),
+    ("SyncMoveOn", tasks::sync_move_on),
+    ("SyncMoveOff", tasks::sync_move_off),
+    ("SyncMoveUndo", tasks::sync_move_undo),
+    ("WaitTestAndSet", tasks::wait_test_and_set),
 ];
 
 /// The implemented functions that are not pure (the pure ones are the
@@ -122,7 +152,6 @@ const FUNCTIONS: &[(&str, FuncFn)] = &[
     ("CTime", data::c_time),
     ("CDate", data::c_date),
     ("GetTime", data::get_time),
-    ("GetTaskName", data::get_task_name),
     ("RobOS", data::rob_os),
     ("OpMode", data::op_mode),
     ("RunMode", data::run_mode),
@@ -137,117 +166,133 @@ const FUNCTIONS: &[(&str, FuncFn)] = &[
     ("CRobT", motion::c_rob_t),
     ("CPos", motion::c_pos),
     ("CJointT", motion::c_joint_t),
+    ("CalcJointT", motion::calc_joint_t),
+    ("CalcRobT", motion::calc_rob_t),
     ("ReadStr", files::read_str),
     ("ReadNum", files::read_num),
     ("ReadBin", files::read_bin),
     ("IsFile", files::is_file),
+    ("GetTaskName", tasks::get_task_name),
+    ("TestAndSet", tasks::test_and_set),
+    ("IsSyncMoveOn", tasks::is_sync_move_on),
+    ("TaskRunMec", tasks::task_run_mec),
+    ("TaskRunRob", tasks::task_run_rob),
 ];
 
-/// The implemented instruction `key` (folded): its name and code.
-pub(crate) fn instruction(key: &str) -> Option<(&'static str, InsFn)> {
+/// The implemented instruction `name`: its catalogue name and code.
+pub(crate) fn instruction(name: &str) -> Option<(&'static str, InsFn)> {
     INSTRUCTIONS
         .iter()
-        .find(|(n, _)| n.eq_ignore_ascii_case(key))
+        .find(|(n, _)| n.eq_ignore_ascii_case(name))
         .copied()
 }
 
-/// The implemented controller function `key` (folded).
-pub(crate) fn function(key: &str) -> Option<(&'static str, FuncFn)> {
+/// The implemented controller function `name`.
+pub(crate) fn function(name: &str) -> Option<(&'static str, FuncFn)> {
     FUNCTIONS
         .iter()
-        .find(|(n, _)| n.eq_ignore_ascii_case(key))
+        .find(|(n, _)| n.eq_ignore_ascii_case(name))
         .copied()
 }
 
-/// The arguments of a built-in, by the catalogue's parameter names.
-pub(crate) struct Args<'a> {
+/// The arguments of a built-in, by the catalogue's parameters (of the
+/// task's view, the signature the call was bound with).
+pub(crate) struct Args {
     pub name: &'static str,
-    sig: Option<&'static catalogue::Routine>,
-    values: &'a [Option<ArgValue>],
+    sig: &'static CatalogueRoutine,
+    /// By parameter index.
+    values: Vec<Option<ArgVal>>,
+    /// The data each parameter's argument names, by parameter index.
+    names: Vec<Option<Box<str>>>,
 }
 
-impl<'a> Args<'a> {
-    pub(crate) fn new(name: &'static str, values: &'a [Option<ArgValue>]) -> Args<'a> {
-        let c = catalogue();
+impl Args {
+    pub(crate) fn new(
+        name: &'static str,
+        sig: &'static CatalogueRoutine,
+        params: &[u32],
+        names: &[Option<Box<str>>],
+        given: Vec<ArgVal>,
+    ) -> Args {
+        let mut values: Vec<Option<ArgVal>> = vec![None; sig.params.len()];
+        let mut named: Vec<Option<Box<str>>> = vec![None; sig.params.len()];
+        for ((a, &i), n) in given.into_iter().zip(params).zip(names) {
+            if let Some(slot) = values.get_mut(i as usize) {
+                *slot = Some(a);
+            }
+            if let Some(slot) = named.get_mut(i as usize) {
+                slot.clone_from(n);
+            }
+        }
         Args {
             name,
-            sig: c.instruction(name).or_else(|| c.function(name)),
+            sig,
             values,
+            names: named,
         }
     }
 
-    fn slot(&self, param: &str) -> Option<&'a ArgValue> {
-        let i = self
-            .sig?
+    fn index(&self, param: &str) -> Option<usize> {
+        self.sig
             .params
             .iter()
-            .position(|p| p.name.eq_ignore_ascii_case(param))?;
-        self.values.get(i)?.as_ref()
+            .position(|p| p.name.eq_ignore_ascii_case(param))
+    }
+
+    fn slot(&self, param: &str) -> Option<&ArgVal> {
+        self.values.get(self.index(param)?)?.as_ref()
     }
 
     /// Is `param` given as `*`?
     pub(crate) fn is_star(&self, param: &str) -> bool {
-        matches!(self.slot(param), Some(ArgValue::Star))
+        matches!(self.slot(param), Some(ArgVal::Star))
     }
 
-    /// The expression given for `param`, if it is an expression.
-    pub(crate) fn expr(&self, param: &str) -> Option<&'a Expr> {
+    /// Was `param` given (a switch set, an optional argument present)?
+    pub(crate) fn given(&self, param: &str) -> bool {
+        !matches!(self.slot(param), None | Some(ArgVal::Absent))
+    }
+
+    /// The place given for `param`, when a data reference was given.
+    pub(crate) fn place_of(&self, param: &str) -> Option<&Place> {
         match self.slot(param)? {
-            ArgValue::Expr(e) => Some(e),
+            ArgVal::Place(p) => Some(p),
             _ => None,
         }
     }
 }
 
 /// A required argument's value, or the fault that says it is missing.
-fn required<T>(a: &Args<'_>, param: &str, v: Option<T>) -> R<T> {
+fn required<T>(a: &Args, param: &str, v: Option<T>) -> R<T> {
     match v {
         Some(v) => Ok(v),
         None => invalid(format!("{}: the argument {param} is missing", a.name)),
     }
 }
 
-impl Machine {
-    /// Was `param` given (a switch set, an optional argument present)?
-    pub(crate) fn given(&self, a: &Args<'_>, param: &str) -> bool {
-        match a.slot(param) {
-            None => false,
-            Some(ArgValue::Conditional(s)) => !matches!(
-                self.stack.get(self.base + *s as usize),
-                None | Some(Slot::Absent)
-            ),
-            Some(_) => true,
-        }
-    }
-
+impl Cx<'_> {
     /// The value of `param`, if given.
-    pub(crate) fn opt(&mut self, a: &Args<'_>, param: &str) -> R<Option<Value>> {
+    pub(crate) fn opt(&mut self, a: &Args, param: &str) -> R<Option<Value>> {
         match a.slot(param) {
-            None => Ok(None),
-            Some(ArgValue::Expr(e)) => self.eval(e).map(Some),
-            Some(ArgValue::Switch) => Ok(Some(Value::Bool(true))),
-            Some(ArgValue::Star) => invalid(format!("{}: * stands for {param}", a.name)),
-            Some(ArgValue::Conditional(s)) => {
-                let s = *s;
-                match self.stack.get(self.base + s as usize) {
-                    None | Some(Slot::Absent) => Ok(None),
-                    _ => self.eval(&Expr::Local(s)).map(Some),
-                }
-            }
+            None | Some(ArgVal::Absent) => Ok(None),
+            Some(ArgVal::Value(v)) => Ok(Some(v.clone())),
+            Some(ArgVal::Place(p)) => self.m.load(self.sh, p).map(Some),
+            Some(ArgVal::Switch) => Ok(Some(Value::Bool(true))),
+            Some(ArgVal::Star) => invalid(format!("{}: * stands for {param}", a.name)),
         }
     }
 
     /// The value of a required `param`.
-    pub(crate) fn req(&mut self, a: &Args<'_>, param: &str) -> R<Value> {
+    pub(crate) fn req(&mut self, a: &Args, param: &str) -> R<Value> {
         let v = self.opt(a, param)?;
         required(a, param, v)
     }
 
     /// A numeric argument (a signal gives its value).
-    pub(crate) fn opt_num(&mut self, a: &Args<'_>, param: &str) -> R<Option<f64>> {
+    pub(crate) fn opt_num(&mut self, a: &Args, param: &str) -> R<Option<f64>> {
         match self.opt(a, param)? {
             None => Ok(None),
-            Some(v) => match self.scalar(v)? {
+            Some(v) => match self.m.scalar(self.sh, v)? {
                 Value::Num(x) => Ok(Some(f64::from(x))),
                 Value::Dnum(x) => Ok(Some(x)),
                 other => invalid(format!(
@@ -259,12 +304,12 @@ impl Machine {
         }
     }
 
-    pub(crate) fn num(&mut self, a: &Args<'_>, param: &str) -> R<f64> {
+    pub(crate) fn num(&mut self, a: &Args, param: &str) -> R<f64> {
         let v = self.opt_num(a, param)?;
         required(a, param, v)
     }
 
-    pub(crate) fn opt_string(&mut self, a: &Args<'_>, param: &str) -> R<Option<String>> {
+    pub(crate) fn opt_string(&mut self, a: &Args, param: &str) -> R<Option<String>> {
         match self.opt(a, param)? {
             None => Ok(None),
             Some(Value::Str(s)) => Ok(Some(s)),
@@ -276,24 +321,16 @@ impl Machine {
         }
     }
 
-    pub(crate) fn string(&mut self, a: &Args<'_>, param: &str) -> R<String> {
+    pub(crate) fn string(&mut self, a: &Args, param: &str) -> R<String> {
         let v = self.opt_string(a, param)?;
         required(a, param, v)
     }
 
     /// The data `param` refers to (a `VAR`, `INOUT` or `PERS` argument).
-    pub(crate) fn opt_place(&mut self, a: &Args<'_>, param: &str) -> R<Option<Place>> {
+    pub(crate) fn opt_place(&mut self, a: &Args, param: &str) -> R<Option<Place>> {
         match a.slot(param) {
-            None => Ok(None),
-            Some(ArgValue::Expr(e)) if e.is_place() => self.place(e).map(Some),
-            Some(ArgValue::Conditional(s)) => {
-                let s = *s;
-                match self.stack.get(self.base + s as usize) {
-                    None | Some(Slot::Absent) => Ok(None),
-                    _ => self.place(&Expr::Local(s)).map(Some),
-                }
-            }
-            Some(ArgValue::Expr(e)) if let Some(f) = e.failure() => self.failure(&f),
+            None | Some(ArgVal::Absent) => Ok(None),
+            Some(ArgVal::Place(p)) => Ok(Some(p.clone())),
             Some(_) => invalid(format!(
                 "{}: {param} must be a variable or a persistent",
                 a.name
@@ -301,22 +338,60 @@ impl Machine {
         }
     }
 
-    pub(crate) fn place_arg(&mut self, a: &Args<'_>, param: &str) -> R<Place> {
+    pub(crate) fn place_arg(&mut self, a: &Args, param: &str) -> R<Place> {
         let v = self.opt_place(a, param)?;
         required(a, param, v)
     }
 
-    /// The name of the data an argument names directly (`p10`), for
-    /// traces and booked error names.
-    pub(crate) fn arg_name(&self, a: &Args<'_>, param: &str) -> Option<String> {
-        match a.expr(param)? {
-            Expr::Global(g) => self.prog.globals.get(*g as usize).map(|g| g.name.clone()),
-            Expr::Local(s) => self
-                .frames
-                .last()
-                .and_then(|f| f.routine.slots.get(*s as usize))
-                .map(|s| s.name.clone()),
-            _ => None,
+    /// Stores a value at a place.
+    pub(crate) fn store(&mut self, p: &Place, v: Value) -> R<()> {
+        self.m.store(self.sh, p, v)
+    }
+
+    /// The name of the data an argument names directly (`p10`), for traces,
+    /// booked error names and synchronization points.
+    pub(crate) fn arg_name(&self, a: &Args, param: &str) -> Option<String> {
+        if let Some(Some(n)) = a.index(param).and_then(|i| a.names.get(i)) {
+            return Some(n.to_string());
+        }
+        let p = a.place_of(param)?;
+        if !p.path.is_empty() {
+            return None;
+        }
+        self.m.data_name(p.root)
+    }
+
+    /// The simulated time now.
+    pub(crate) fn now(&self) -> f64 {
+        self.sh.clock
+    }
+
+    /// A line on the pendant or in the event log.
+    pub(crate) fn print(&mut self, stream: crate::Stream, text: &str) {
+        self.sh.print(&self.m.name, stream, text);
+    }
+}
+
+impl Machine {
+    /// The declared name of the data at a place's root.
+    pub(crate) fn data_name(&self, root: Root) -> Option<String> {
+        match root {
+            Root::Global(g) => self.prog.globals.get(g as usize).map(|g| g.name.clone()),
+            Root::Pers(i) => {
+                let k = self.pers_map.iter().position(|&x| x == i)?;
+                self.prog.pers.get(k).map(|p| p.name.clone())
+            }
+            Root::Stack(s) => {
+                let f = self
+                    .frames
+                    .iter()
+                    .rev()
+                    .find(|f| (f.base as usize) <= s as usize)?;
+                f.code
+                    .slots
+                    .get(s as usize - f.base as usize)
+                    .map(|s| s.name.clone())
+            }
         }
     }
 }

@@ -1,11 +1,19 @@
-//! Motion: moves complete at once and leave the robot at their target,
-//! which `CRobT`, `CPos` and `CJointT` then read; with tracing on, each
-//! move is recorded in world coordinates (through the work object).
+//! Motion: the move instructions hand the task's robot
+//! ([`crate::world::Robot`]) what a real arm needs, in the robot's own
+//! data ([`crate::world::RobTarget`]...); the task waits for a move that
+//! takes time (unless `\Conc`). `CRobT`, `CPos`, `CJointT`, `CalcJointT`
+//! and `CalcRobT` ask the robot. With tracing on, each move is recorded in
+//! world coordinates (through the work object).
 
 use rapid_evaluator::Value;
+use rapid_evaluator::geometry::{iso_of, orient_value, pos_value};
 
-use super::Args;
-use crate::machine::{Machine, R, fault, invalid, named_error};
+use super::{Args, Cx, Done};
+use crate::machine::{FaultKind, R, Timeout, Wait, WaitKind, fault, invalid, named_error};
+use crate::world::{
+    JointTarget, MoveKind, MoveRequest, MoveTarget, Pose, RobTarget, RobotError, Speed, Tool, WObj,
+    Zone,
+};
 
 /// A move as a trace records it.
 #[derive(Clone, Debug, PartialEq)]
@@ -30,284 +38,494 @@ pub struct Move {
     pub zone: Option<String>,
     pub tool: Option<String>,
     pub wobj: Option<String>,
+    /// The task that moved (when several run).
+    pub task: Option<String>,
 }
 
-type Pose = ([f64; 3], [f64; 4]);
+fn num(v: Option<&Value>, name: &str) -> f64 {
+    v.and_then(|v| v.field(name))
+        .and_then(Value::as_f64)
+        .unwrap_or(0.0)
+}
 
-const IDENTITY: Pose = ([0.0; 3], [1.0, 0.0, 0.0, 0.0]);
-
-fn nums<const N: usize>(v: Option<&Value>, names: [&str; N]) -> Option<[f64; N]> {
-    let v = v?;
+fn nums<const N: usize>(v: Option<&Value>, names: [&str; N]) -> [f64; N] {
     let mut out = [0.0; N];
     for (slot, n) in out.iter_mut().zip(names) {
-        *slot = v.field(n)?.as_f64()?;
+        *slot = num(v, n);
     }
-    Some(out)
+    out
 }
 
-fn pos_of(v: Option<&Value>) -> Option<[f64; 3]> {
-    nums(v, ["x", "y", "z"])
-}
+const EXTAX: [&str; 6] = ["eax_a", "eax_b", "eax_c", "eax_d", "eax_e", "eax_f"];
 
-fn quat_of(v: Option<&Value>) -> Option<[f64; 4]> {
-    let q = nums(v, ["q1", "q2", "q3", "q4"])?;
-    let n = q.iter().map(|x| x * x).sum::<f64>().sqrt();
-    if n < 1e-9 {
-        return Some([1.0, 0.0, 0.0, 0.0]);
+impl Cx<'_> {
+    /// A pose from a record with `trans` and `rot` (pose, robtarget), its
+    /// orientation checked as the controller checks it (`ERR_ILLQUAT`).
+    fn pose(&self, v: &Value) -> R<Pose> {
+        let iso = iso_of(v).or_else(|e| self.m.eval_error(e))?;
+        Ok(Pose::from_isometry(&iso))
     }
-    Some(q.map(|x| x / n))
+
+    fn robtarget(&self, v: &Value) -> R<RobTarget> {
+        Ok(RobTarget {
+            pose: self.pose(v)?,
+            robconf: nums(v.field("robconf"), ["cf1", "cf4", "cf6", "cfx"]),
+            extax: nums(v.field("extax"), EXTAX),
+        })
+    }
+
+    fn tool(&mut self, a: &Args, param: &str) -> R<Tool> {
+        let Some(v) = self.opt(a, param)? else {
+            return Ok(Tool::default());
+        };
+        Ok(Tool {
+            robhold: !matches!(v.field("robhold"), Some(Value::Bool(false))),
+            tframe: match v.field("tframe") {
+                Some(f) => self.pose(f)?,
+                None => Pose::IDENTITY,
+            },
+            mass: num(v.field("tload"), "mass"),
+            cog: nums(
+                v.field("tload").and_then(|l| l.field("cog")),
+                ["x", "y", "z"],
+            ),
+        })
+    }
+
+    fn wobj(&mut self, a: &Args) -> R<WObj> {
+        let Some(v) = self.opt(a, "WObj")? else {
+            return Ok(WObj::default());
+        };
+        let frame = |cx: &Self, name: &str| match v.field(name) {
+            Some(f) => cx.pose(f),
+            None => Ok(Pose::IDENTITY),
+        };
+        Ok(WObj {
+            robhold: matches!(v.field("robhold"), Some(Value::Bool(true))),
+            ufprog: !matches!(v.field("ufprog"), Some(Value::Bool(false))),
+            ufmec: match v.field("ufmec") {
+                Some(Value::Str(s)) => s.clone(),
+                _ => String::new(),
+            },
+            uframe: frame(self, "uframe")?,
+            oframe: frame(self, "oframe")?,
+        })
+    }
+
+    /// The robot of the task, or of the one `\TaskRef`/`\TaskName` names.
+    fn robot_index(&mut self, a: &Args) -> R<usize> {
+        let other = match self.opt(a, "TaskName")? {
+            Some(Value::Str(n)) => Some(n),
+            _ => match self.opt(a, "TaskRef")? {
+                Some(v) => match v.field("name") {
+                    Some(Value::Str(n)) => n.strip_suffix("id").map(str::to_owned),
+                    _ => None,
+                },
+                None => None,
+            },
+        };
+        let index = match other {
+            Some(name) => match self.sh.task_named(&name) {
+                Some(i) => i,
+                None => {
+                    return fault(named_error(
+                        &self.m.prog,
+                        "ERR_TASKNAME",
+                        format!("{}: there is no task {name}", a.name),
+                    ));
+                }
+            },
+            None => self.m.number.saturating_sub(1),
+        };
+        match self.sh.robots.get(index) {
+            Some(Some(_)) => Ok(index),
+            _ => invalid(format!(
+                "{}: the task {} moves no robot",
+                a.name,
+                self.sh.names.get(index).map_or("", String::as_str)
+            )),
+        }
+    }
+
+    fn robot_error<T>(&self, a: &Args, e: RobotError) -> R<T> {
+        match e {
+            RobotError::Unsupported(m) => fault(FaultKind::Unsupported(m)),
+            RobotError::OutOfReach(m) => fault(named_error(
+                &self.m.prog,
+                "ERR_OUTSIDE_REACH",
+                format!("{}: {m}", a.name),
+            )),
+            RobotError::JointLimit { axis, message } => fault(named_error(
+                &self.m.prog,
+                "ERR_ROBLIMIT",
+                format!("{}: axis {axis}: {message}", a.name),
+            )),
+            RobotError::Other(m) => invalid(format!("{}: {m}", a.name)),
+        }
+    }
 }
 
-/// A pose from a record with `trans` and `rot` (pose, robtarget).
-fn pose_of(v: &Value) -> Option<Pose> {
-    Some((pos_of(v.field("trans"))?, quat_of(v.field("rot"))?))
-}
-
-fn qmul(a: [f64; 4], b: [f64; 4]) -> [f64; 4] {
-    [
-        a[0] * b[0] - a[1] * b[1] - a[2] * b[2] - a[3] * b[3],
-        a[0] * b[1] + a[1] * b[0] + a[2] * b[3] - a[3] * b[2],
-        a[0] * b[2] - a[1] * b[3] + a[2] * b[0] + a[3] * b[1],
-        a[0] * b[3] + a[1] * b[2] - a[2] * b[1] + a[3] * b[0],
-    ]
-}
-
-fn rotate(q: [f64; 4], v: [f64; 3]) -> [f64; 3] {
-    let p = qmul(
-        qmul(q, [0.0, v[0], v[1], v[2]]),
-        [q[0], -q[1], -q[2], -q[3]],
-    );
-    [p[1], p[2], p[3]]
-}
-
-/// `a` then `b` (b expressed in a's frame).
-fn compose(a: Pose, b: Pose) -> Pose {
-    let t = rotate(a.1, b.0);
-    (
-        [a.0[0] + t[0], a.0[1] + t[1], a.0[2] + t[2]],
-        qmul(a.1, b.1),
-    )
-}
-
-fn inverse(a: Pose) -> Pose {
-    let qi = [a.1[0], -a.1[1], -a.1[2], -a.1[3]];
-    let t = rotate(qi, a.0);
-    ([-t[0], -t[1], -t[2]], qi)
-}
-
-/// The frame of a work object in world coordinates (user frame, then
-/// object frame).
-fn wobj_frame(w: Option<&Value>) -> Pose {
-    let Some(w) = w else {
-        return IDENTITY;
+fn robtarget_value(t: &RobTarget) -> R<Value> {
+    let (trans, rot) = (t.pose.trans, t.pose.rot);
+    let pos = pos_value(&rapid_evaluator::nalgebra::Vector3::new(
+        trans[0], trans[1], trans[2],
+    ));
+    let q = rapid_evaluator::geometry::isometry([0.0; 3], rot).rotation;
+    let (Ok(pos), Ok(rot)) = (pos, orient_value(&q, false)) else {
+        return invalid("the robot's position is outside the range of num");
     };
-    let u = w.field("uframe").and_then(pose_of).unwrap_or(IDENTITY);
-    let o = w.field("oframe").and_then(pose_of).unwrap_or(IDENTITY);
-    compose(u, o)
+    let record = |ty: &str, names: &[&str], values: &[f64]| Value::Record {
+        ty: ty.to_owned(),
+        fields: names
+            .iter()
+            .zip(values)
+            .map(|(n, v)| ((*n).to_owned(), Value::Num(*v as f32)))
+            .collect(),
+    };
+    Ok(Value::Record {
+        ty: "robtarget".to_owned(),
+        fields: vec![
+            ("trans".to_owned(), pos),
+            ("rot".to_owned(), rot),
+            (
+                "robconf".to_owned(),
+                record("confdata", &["cf1", "cf4", "cf6", "cfx"], &t.robconf),
+            ),
+            ("extax".to_owned(), record("extjoint", &EXTAX, &t.extax)),
+        ],
+    })
 }
 
-fn tool_frame(t: Option<&Value>) -> Pose {
-    t.and_then(|t| t.field("tframe"))
-        .and_then(pose_of)
-        .unwrap_or(IDENTITY)
-}
-
-fn speed_of(v: Option<&Value>) -> Option<f64> {
-    v?.field("v_tcp")?.as_f64()
-}
-
-fn zone_of(m: &Machine, a: &Args<'_>, v: Option<&Value>) -> Option<String> {
-    if let Some(name) = m.arg_name(a, "Zone") {
-        return Some(name);
+fn jointtarget_value(j: &JointTarget) -> Value {
+    let record = |ty: &str, names: &[&str], values: &[f64]| Value::Record {
+        ty: ty.to_owned(),
+        fields: names
+            .iter()
+            .zip(values)
+            .map(|(n, v)| ((*n).to_owned(), Value::Num(*v as f32)))
+            .collect(),
+    };
+    Value::Record {
+        ty: "jointtarget".to_owned(),
+        fields: vec![
+            (
+                "robax".to_owned(),
+                record(
+                    "robjoint",
+                    &["rax_1", "rax_2", "rax_3", "rax_4", "rax_5", "rax_6"],
+                    &j.robax,
+                ),
+            ),
+            ("extax".to_owned(), record("extjoint", &EXTAX, &j.extax)),
+        ],
     }
-    let v = v?;
-    if matches!(v.field("finep"), Some(Value::Bool(true))) {
-        return Some("fine".to_owned());
-    }
-    v.field("pzone_tcp")
-        .and_then(Value::as_f64)
-        .map(|z| format!("{z} mm"))
 }
 
-/// Moves to a robtarget (`ToPoint`, or `CirPoint` too for a circle).
-fn move_to(m: &mut Machine, a: &Args<'_>, target: &str) -> R<()> {
-    if a.is_star(target) {
-        return fault(crate::machine::FaultKind::Unsupported(format!(
+fn jointtarget(v: &Value) -> R<JointTarget> {
+    if v.field("robax").is_none() {
+        return invalid("not a jointtarget");
+    }
+    Ok(JointTarget {
+        robax: nums(
+            v.field("robax"),
+            ["rax_1", "rax_2", "rax_3", "rax_4", "rax_5", "rax_6"],
+        ),
+        extax: nums(v.field("extax"), EXTAX),
+    })
+}
+
+fn kind_of(instruction: &str) -> MoveKind {
+    let lower = instruction.to_ascii_lowercase();
+    if lower.ends_with("absj") {
+        MoveKind::AbsoluteJoint
+    } else if lower.contains('c') && (lower.ends_with('c') || lower.ends_with("cdo")) {
+        MoveKind::Circular
+    } else if lower.ends_with('j') || lower.ends_with("jdo") {
+        MoveKind::Joint
+    } else {
+        MoveKind::Linear
+    }
+}
+
+/// When the task's robot ends its last move.
+pub(crate) fn motion_end(cx: &Cx<'_>) -> f64 {
+    cx.sh
+        .motion_until
+        .get(cx.m.number.saturating_sub(1))
+        .copied()
+        .unwrap_or(0.0)
+}
+
+/// Makes a move: the robot is asked, the move recorded, and the task waits
+/// for a move that takes time (unless `\Conc`).
+fn do_move(cx: &mut Cx<'_>, a: &Args, target_param: &str) -> R<Done> {
+    if a.is_star(target_param) {
+        return fault(FaultKind::Unsupported(format!(
             "{} * (a target stored in the instruction, not in the program)",
             a.name
         )));
     }
-    let to = m.req(a, target)?;
-    let Some(local) = pose_of(&to) else {
-        return invalid(format!("{}: {target} is not a robtarget", a.name));
+    let kind = kind_of(a.name);
+    let to_value = cx.req(a, target_param)?;
+    let to = if kind == MoveKind::AbsoluteJoint {
+        match jointtarget(&to_value) {
+            Ok(j) => MoveTarget::Joints(j),
+            Err(_) => {
+                return invalid(format!("{}: {target_param} is not a jointtarget", a.name));
+            }
+        }
+    } else {
+        if to_value.field("trans").is_none() {
+            return invalid(format!("{}: {target_param} is not a robtarget", a.name));
+        }
+        MoveTarget::Cartesian(cx.robtarget(&to_value)?)
     };
-    let wobj = m.opt(a, "WObj")?;
-    let tool = m.opt(a, "Tool")?;
-    let frame = wobj_frame(wobj.as_ref());
-    let world = compose(frame, local);
-    let via = match m.opt(a, "CirPoint")? {
-        Some(c) => pose_of(&c).map(|p| compose(frame, p).0),
+    let via = match cx.opt(a, "CirPoint")? {
+        Some(c) => Some(cx.robtarget(&c)?),
         None => None,
     };
-    m.ctl.robot.tcp = world;
-    m.ctl.robot.tool = tool;
-    m.ctl.robot.robconf = to.field("robconf").cloned();
-    m.ctl.robot.extax = to.field("extax").cloned();
-    record(m, a, target, Some(world), via, None)
+    let speed_value = cx.opt(a, "Speed")?;
+    let zone_value = cx.opt(a, "Zone")?;
+    let speed = Speed {
+        v_tcp: num(speed_value.as_ref(), "v_tcp"),
+        v_ori: num(speed_value.as_ref(), "v_ori"),
+        v_leax: num(speed_value.as_ref(), "v_leax"),
+        v_reax: num(speed_value.as_ref(), "v_reax"),
+    };
+    let zone = Zone {
+        finep: zone_value
+            .as_ref()
+            .is_none_or(|z| matches!(z.field("finep"), Some(Value::Bool(true)))),
+        pzone_tcp: num(zone_value.as_ref(), "pzone_tcp"),
+        pzone_ori: num(zone_value.as_ref(), "pzone_ori"),
+        pzone_eax: num(zone_value.as_ref(), "pzone_eax"),
+        zone_ori: num(zone_value.as_ref(), "zone_ori"),
+        zone_leax: num(zone_value.as_ref(), "zone_leax"),
+        zone_reax: num(zone_value.as_ref(), "zone_reax"),
+    };
+    let tool = cx.tool(a, "Tool")?;
+    let wobj = cx.wobj(a)?;
+    let time = cx.opt_num(a, "T")?;
+    let velocity = cx.opt_num(a, "V")?;
+    let conc = a.given("Conc");
+    let index = cx.robot_index(a)?;
+    let start = cx.now().max(motion_end(cx));
+    let request = MoveRequest {
+        instruction: a.name,
+        kind,
+        to,
+        via,
+        speed,
+        time,
+        velocity,
+        zone,
+        tool,
+        wobj: wobj.clone(),
+        conc,
+        at: start,
+    };
+    let result = match cx.sh.robots.get_mut(index).and_then(Option::as_mut) {
+        Some(robot) => robot.move_to(&request),
+        None => return invalid(format!("{}: the task moves no robot", a.name)),
+    };
+    let motion = match result {
+        Ok(m) => m,
+        Err(e) => return cx.robot_error(a, e),
+    };
+    let end = start + motion.duration.max(0.0);
+    if let Some(slot) = cx.sh.motion_until.get_mut(index) {
+        *slot = end;
+    }
+    if cx.sh.trace {
+        record(
+            cx,
+            a,
+            target_param,
+            &request,
+            speed_value.as_ref(),
+            zone_value.as_ref(),
+        );
+    }
+    if end > cx.now() && !conc {
+        return Ok(Done::Wait(Box::new(Wait {
+            kind: WaitKind::Time(end),
+            deadline: None,
+            on_timeout: Timeout::Error("ERR_WAIT_MAXTIME", String::new()),
+            what: format!("{} (the robot moves)", a.name),
+        })));
+    }
+    Ok(Done::Next)
 }
 
-/// Records a move for the trace (with [`crate::Config::trace`]); the
-/// speed and zone arguments are evaluated in any case.
+/// Records a move for the trace, in world coordinates.
 fn record(
-    m: &mut Machine,
-    a: &Args<'_>,
-    target: &str,
-    world: Option<Pose>,
-    via: Option<[f64; 3]>,
-    joints: Option<Vec<f64>>,
-) -> R<()> {
-    // Evaluated with or without a trace, so that a run fails the same way.
-    let speed = m.opt(a, "Speed")?;
-    let zone = m.opt(a, "Zone")?;
-    if !m.config.trace {
-        return Ok(());
-    }
-    let record = crate::Move {
-        instruction: a.name.to_owned(),
-        target: m.arg_name(a, target),
-        at: m.here().unwrap_or_else(|| m.prog.location(0, 0)),
-        pos: world.map(|w| w.0),
-        orient: world.map(|w| w.1),
-        via,
-        joints,
-        speed: speed_of(speed.as_ref()),
-        speed_name: m.arg_name(a, "Speed"),
-        zone: zone_of(m, a, zone.as_ref()),
-        tool: m.arg_name(a, "Tool"),
-        wobj: m.arg_name(a, "WObj"),
+    cx: &mut Cx<'_>,
+    a: &Args,
+    target_param: &str,
+    request: &MoveRequest<'_>,
+    speed: Option<&Value>,
+    zone: Option<&Value>,
+) {
+    let frame = request.wobj.frame();
+    let (pos, orient, joints) = match &request.to {
+        MoveTarget::Cartesian(t) => {
+            let world = frame.then(&t.pose);
+            (Some(world.trans), Some(world.rot), None)
+        }
+        MoveTarget::Joints(j) => (None, None, Some(j.robax.to_vec())),
     };
-    m.ctl.moves.push(record);
-    Ok(())
+    let zone_name = cx.arg_name(a, "Zone").or_else(|| {
+        let z = zone?;
+        if matches!(z.field("finep"), Some(Value::Bool(true))) {
+            return Some("fine".to_owned());
+        }
+        z.field("pzone_tcp")
+            .and_then(Value::as_f64)
+            .map(|z| format!("{z} mm"))
+    });
+    let m = Move {
+        instruction: a.name.to_owned(),
+        target: cx.arg_name(a, target_param),
+        at: cx.m.location().unwrap_or_else(|| cx.m.prog.location(0, 0)),
+        pos,
+        orient,
+        via: request.via.map(|v| frame.then(&v.pose).trans),
+        joints,
+        speed: speed.and_then(|s| s.field("v_tcp")).and_then(Value::as_f64),
+        speed_name: cx.arg_name(a, "Speed"),
+        zone: zone_name,
+        tool: cx.arg_name(a, "Tool"),
+        wobj: cx.arg_name(a, "WObj"),
+        task: (cx.sh.names.len() > 1).then(|| cx.m.name.clone()),
+    };
+    cx.sh.moves.push(m);
 }
 
 /// `MoveL`, `MoveJ`, `MoveC` and the `Trigg` moves.
-pub(crate) fn move_to_point(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    move_to(m, a, "ToPoint")
+pub(crate) fn move_to_point(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    do_move(cx, a, "ToPoint")
 }
 
 /// `MoveLDO`, `MoveJDO`, `MoveCDO`: the move, then the signal set.
-pub(crate) fn move_do(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    move_to(m, a, "ToPoint")?;
-    let s = m.req(a, "Signal")?;
-    let name = m.signal_of(&s)?.name.clone();
-    let v = m.num(a, "Value")?;
-    m.ctl.set_signal_value(&name, v);
-    Ok(())
+pub(crate) fn move_do(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let done = do_move(cx, a, "ToPoint")?;
+    let s = cx.req(a, "Signal")?;
+    let (name, _) = cx.m.signal_of(cx.sh, &s)?;
+    let v = cx.num(a, "Value")?;
+    cx.sh.set_signal(&name, v);
+    Ok(done)
 }
 
-/// `MoveAbsJ ToJointPos, ...`: the joints are recorded; the TCP is not
-/// computed (no kinematic model), so `CRobT` keeps the last Cartesian
-/// position.
-pub(crate) fn move_abs_j(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    let to = m.req(a, "ToJointPos")?;
-    let joints = nums(
-        to.field("robax"),
-        ["rax_1", "rax_2", "rax_3", "rax_4", "rax_5", "rax_6"],
-    );
-    if joints.is_none() {
-        return invalid("MoveAbsJ: ToJointPos is not a jointtarget");
-    }
-    m.ctl.robot.joints = Some(to);
-    record(m, a, "ToJointPos", None, None, joints.map(|j| j.to_vec()))
+/// `MoveAbsJ ToJointPos, ...`.
+pub(crate) fn move_abs_j(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    do_move(cx, a, "ToJointPos")
 }
 
 /// `SearchL`, `SearchJ`, `SearchC`: the search hits when its signal is 1
 /// as the robot reaches `ToPoint` (script the signal with `--set`); the
 /// hit position is then `ToPoint`. Without a hit, `ERR_WHLSEARCH`.
-pub(crate) fn search(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    move_to(m, a, "ToPoint")?;
-    let s = m.req(a, "Signal")?;
-    let hit = m.signal_value(&s)? == 1.0;
+pub(crate) fn search(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    do_move(cx, a, "ToPoint")?;
+    let s = cx.req(a, "Signal")?;
+    let hit = cx.m.signal_value(cx.sh, &s)? == 1.0;
     if !hit {
         return fault(named_error(
-            &m.prog,
+            &cx.m.prog,
             "ERR_WHLSEARCH",
             format!("{}: the search signal never became 1", a.name),
         ));
     }
-    let to = m.req(a, "ToPoint")?;
-    let p = m.place_arg(a, "SearchPoint")?;
-    m.store(&p, to)
+    let to = cx.req(a, "ToPoint")?;
+    let p = cx.place_arg(a, "SearchPoint")?;
+    cx.store(&p, to)?;
+    Ok(Done::Next)
+}
+
+/// `WaitRob [\InPos] | [\ZeroSpeed]`: until the robot stands still.
+pub(crate) fn wait_rob(cx: &mut Cx<'_>, _: &mut Args) -> R<Done> {
+    let end = motion_end(cx);
+    if end <= cx.now() {
+        return Ok(Done::Next);
+    }
+    Ok(Done::Wait(Box::new(Wait {
+        kind: WaitKind::Time(end),
+        deadline: None,
+        on_timeout: Timeout::Error("ERR_WAIT_MAXTIME", String::new()),
+        what: "WaitRob (the robot moves)".to_owned(),
+    })))
 }
 
 /// Motion settings that do not change where the robot goes.
-pub(crate) fn setting(_: &mut Machine, _: &Args<'_>) -> R<()> {
-    Ok(())
+pub(crate) fn setting(_: &mut Cx<'_>, _: &mut Args) -> R<Done> {
+    Ok(Done::Next)
 }
 
-/// The current TCP as a robtarget in the given tool and work object.
-fn current(m: &mut Machine, a: &Args<'_>) -> R<Value> {
-    let tool = m.opt(a, "Tool")?;
-    let wobj = m.opt(a, "WObj")?;
-    let flange = compose(
-        m.ctl.robot.tcp,
-        inverse(tool_frame(m.ctl.robot.tool.as_ref())),
-    );
-    let tcp = compose(flange, tool_frame(tool.as_ref()));
-    let (p, q) = compose(inverse(wobj_frame(wobj.as_ref())), tcp);
-    let zero = m
-        .prog
-        .types
-        .zero(&rapid_evaluator::Type::named("robtarget"));
-    let robconf = m
-        .ctl
-        .robot
-        .robconf
-        .clone()
-        .or_else(|| zero.field("robconf").cloned())
-        .unwrap_or(Value::Num(0.0));
-    let extax = m.ctl.robot.extax.clone().unwrap_or_else(|| Value::Record {
-        ty: "extjoint".to_owned(),
-        fields: ["eax_a", "eax_b", "eax_c", "eax_d", "eax_e", "eax_f"]
-            .iter()
-            .map(|n| ((*n).to_owned(), Value::Num(9e9)))
-            .collect(),
-    });
-    Ok(Value::Record {
-        ty: "robtarget".to_owned(),
-        fields: vec![
-            (
-                "trans".to_owned(),
-                Value::pos(p[0] as f32, p[1] as f32, p[2] as f32),
-            ),
-            (
-                "rot".to_owned(),
-                Value::orient([q[0] as f32, q[1] as f32, q[2] as f32, q[3] as f32]),
-            ),
-            ("robconf".to_owned(), robconf),
-            ("extax".to_owned(), extax),
-        ],
-    })
-}
-
-/// `CRobT([\Tool] [\WObj])`.
-pub(crate) fn c_rob_t(m: &mut Machine, a: &Args<'_>) -> R<Value> {
-    current(m, a)
+/// `CRobT([\TaskRef] | [\TaskName] [\Tool] [\WObj])`.
+pub(crate) fn c_rob_t(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    let index = cx.robot_index(a)?;
+    let tool = cx.tool(a, "Tool")?;
+    let wobj = cx.wobj(a)?;
+    let r = match cx.sh.robots.get(index).and_then(Option::as_ref) {
+        Some(robot) => robot.robtarget(&tool, &wobj),
+        None => return invalid("the task moves no robot"),
+    };
+    match r {
+        Ok(t) => robtarget_value(&t),
+        Err(e) => cx.robot_error(a, e),
+    }
 }
 
 /// `CPos([\Tool] [\WObj])`.
-pub(crate) fn c_pos(m: &mut Machine, a: &Args<'_>) -> R<Value> {
-    let t = current(m, a)?;
+pub(crate) fn c_pos(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    let t = c_rob_t(cx, a)?;
     Ok(t.field("trans")
         .cloned()
         .unwrap_or(Value::pos(0.0, 0.0, 0.0)))
 }
 
-/// `CJointT()`: the joints of the last `MoveAbsJ` (zero before any).
-pub(crate) fn c_joint_t(m: &mut Machine, _: &Args<'_>) -> R<Value> {
-    Ok(m.ctl.robot.joints.clone().unwrap_or_else(|| {
-        m.prog
-            .types
-            .zero(&rapid_evaluator::Type::named("jointtarget"))
-    }))
+/// `CJointT([\TaskRef] | [\TaskName])`.
+pub(crate) fn c_joint_t(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    let index = cx.robot_index(a)?;
+    let r = match cx.sh.robots.get(index).and_then(Option::as_ref) {
+        Some(robot) => robot.joints(),
+        None => return invalid("the task moves no robot"),
+    };
+    match r {
+        Ok(j) => Ok(jointtarget_value(&j)),
+        Err(e) => cx.robot_error(a, e),
+    }
+}
+
+/// `CalcJointT(Rob_target, Tool [\WObj])`.
+pub(crate) fn calc_joint_t(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    let index = cx.robot_index(a)?;
+    let target = cx.req(a, "Rob_target")?;
+    let target = cx.robtarget(&target)?;
+    let tool = cx.tool(a, "Tool")?;
+    let wobj = cx.wobj(a)?;
+    let r = match cx.sh.robots.get(index).and_then(Option::as_ref) {
+        Some(robot) => robot.calc_joints(&target, &tool, &wobj),
+        None => return invalid("the task moves no robot"),
+    };
+    match r {
+        Ok(j) => Ok(jointtarget_value(&j)),
+        Err(e) => cx.robot_error(a, e),
+    }
+}
+
+/// `CalcRobT(Joint_target, Tool [\WObj])`.
+pub(crate) fn calc_rob_t(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    let index = cx.robot_index(a)?;
+    let joints = cx.req(a, "Joint_target")?;
+    let joints = jointtarget(&joints)?;
+    let tool = cx.tool(a, "Tool")?;
+    let wobj = cx.wobj(a)?;
+    let r = match cx.sh.robots.get(index).and_then(Option::as_ref) {
+        Some(robot) => robot.calc_robtarget(&joints, &tool, &wobj),
+        None => return invalid("the task moves no robot"),
+    };
+    match r {
+        Ok(t) => robtarget_value(&t),
+        Err(e) => cx.robot_error(a, e),
+    }
 }

@@ -1,31 +1,34 @@
-//! The FlexPendant and the event log: `TPWrite`, `ErrWrite`.
+//! The FlexPendant and the event log: `TPWrite`, `ErrWrite`, and the
+//! questions to the operator (`TPReadFK`, `TPReadNum`), which go to the
+//! world's [`crate::world::Pendant`].
 
 use rapid_evaluator::{Value, format_dnum, format_num};
 
-use super::Args;
+use super::{Args, Cx, Done};
 use crate::Stream;
-use crate::machine::{Machine, R, invalid};
+use crate::machine::{FaultKind, R, fault, invalid};
+use crate::world::{Answer, Question};
 
 /// `TPWrite String [\Num] | [\Bool] | [\Pos] | [\Orient] | [\Dnum]`: the
 /// text, then the value as the pendant writes it (a num with up to six
 /// significant digits, a dnum with up to fifteen, `TRUE`/`FALSE`, a pos or
 /// an orient as an aggregate).
-pub(crate) fn tp_write(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    let mut line = m.string(a, "String")?;
-    line.push_str(&value_suffix(m, a)?);
-    m.out.line(Stream::Pendant, &line);
-    Ok(())
+pub(crate) fn tp_write(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let mut line = cx.string(a, "String")?;
+    line.push_str(&value_suffix(cx, a)?);
+    cx.print(Stream::Pendant, &line);
+    Ok(Done::Next)
 }
 
 /// The optional value of `TPWrite` and `Write`, as text.
-pub(crate) fn value_suffix(m: &mut Machine, a: &Args<'_>) -> R<String> {
-    if let Some(x) = m.opt_num(a, "Num")? {
+pub(crate) fn value_suffix(cx: &mut Cx<'_>, a: &Args) -> R<String> {
+    if let Some(x) = cx.opt_num(a, "Num")? {
         return Ok(format_num(x as f32));
     }
-    if let Some(x) = m.opt_num(a, "Dnum")? {
+    if let Some(x) = cx.opt_num(a, "Dnum")? {
         return Ok(format_dnum(x));
     }
-    if let Some(v) = m.opt(a, "Bool")? {
+    if let Some(v) = cx.opt(a, "Bool")? {
         return match v {
             Value::Bool(true) => Ok("TRUE".to_owned()),
             Value::Bool(false) => Ok("FALSE".to_owned()),
@@ -37,7 +40,7 @@ pub(crate) fn value_suffix(m: &mut Machine, a: &Args<'_>) -> R<String> {
         };
     }
     for p in ["Pos", "Orient"] {
-        if let Some(v) = m.opt(a, p)? {
+        if let Some(v) = cx.opt(a, p)? {
             return Ok(v.to_string());
         }
     }
@@ -47,27 +50,76 @@ pub(crate) fn value_suffix(m: &mut Machine, a: &Args<'_>) -> R<String> {
 /// `ErrWrite [\W] | [\I] Header Reason [\RL2] [\RL3] [\RL4]`: one line for
 /// the event log entry: its number (80001 for an error, 80002 for a
 /// warning, 80003 for information), the header, then the reason lines.
-pub(crate) fn err_write(m: &mut Machine, a: &Args<'_>) -> R<()> {
-    let number = if m.given(a, "W") {
+pub(crate) fn err_write(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let number = if a.given("W") {
         80002
-    } else if m.given(a, "I") {
+    } else if a.given("I") {
         80003
     } else {
         80001
     };
-    let header = m.string(a, "Header")?;
-    let mut line = format!("{number} {header}: {}", m.string(a, "Reason")?);
+    let header = cx.string(a, "Header")?;
+    let mut line = format!("{number} {header}: {}", cx.string(a, "Reason")?);
     for p in ["RL2", "RL3", "RL4"] {
-        if let Some(s) = m.opt_string(a, p)? {
+        if let Some(s) = cx.opt_string(a, p)? {
             line.push(' ');
             line.push_str(&s);
         }
     }
-    m.out.line(Stream::EventLog, &line);
-    Ok(())
+    cx.print(Stream::EventLog, &line);
+    Ok(Done::Next)
 }
 
 /// Instructions that change only what the pendant shows.
-pub(crate) fn nothing(_: &mut Machine, _: &Args<'_>) -> R<()> {
-    Ok(())
+pub(crate) fn nothing(_: &mut Cx<'_>, _: &mut Args) -> R<Done> {
+    Ok(Done::Next)
+}
+
+/// `TPReadFK Answer, Text, FK1, FK2, FK3, FK4, FK5 ...`: the operator
+/// presses a function key; its number (1 to 5) goes to `Answer`.
+pub(crate) fn tp_read_fk(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let text = cx.string(a, "TPText")?;
+    let mut keys = Vec::new();
+    for k in ["TPFK1", "TPFK2", "TPFK3", "TPFK4", "TPFK5"] {
+        keys.push(cx.opt_string(a, k)?.unwrap_or_default());
+    }
+    let answer = cx.sh.pendant.ask(
+        &cx.m.name,
+        &Question::FunctionKeys {
+            text: &text,
+            keys: &keys,
+        },
+    );
+    let p = cx.place_arg(a, "TPAnswer")?;
+    match answer {
+        Some(Answer::Key(k)) if k < keys.len() => {
+            cx.store(&p, Value::Num((k + 1) as f32))?;
+            Ok(Done::Next)
+        }
+        _ => no_operator(a),
+    }
+}
+
+/// `TPReadNum Answer, Text`: the operator enters a number.
+pub(crate) fn tp_read_num(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let text = cx.string(a, "TPText")?;
+    let answer = cx
+        .sh
+        .pendant
+        .ask(&cx.m.name, &Question::Number { text: &text });
+    let p = cx.place_arg(a, "TPAnswer")?;
+    match answer {
+        Some(Answer::Number(x)) => {
+            cx.store(&p, Value::Num(x as f32))?;
+            Ok(Done::Next)
+        }
+        _ => no_operator(a),
+    }
+}
+
+fn no_operator<T>(a: &Args) -> R<T> {
+    fault(FaultKind::Unsupported(format!(
+        "{} (no operator answers in the simulation)",
+        a.name
+    )))
 }

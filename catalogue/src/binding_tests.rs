@@ -11,6 +11,12 @@
 
 use super::*;
 
+/// A signature: its parameters and `|` groups.
+struct Signature {
+    params: Vec<Param>,
+    groups: Vec<AltGroup>,
+}
+
 fn signature(spec: &str) -> Signature {
     let mut params = Vec::new();
     let mut groups = Vec::new();
@@ -32,25 +38,22 @@ fn signature(spec: &str) -> Signature {
             };
             params.push(Param {
                 name: name.to_owned(),
-                ty: Ty::num(),
-                type_name: "num".to_owned(),
-                mode: Mode::In,
+                ty: "num".to_owned(),
+                mode: Some(crate::Mode::In),
                 optional,
                 switch: false,
+                array: 0,
                 alt_group: group,
+                since: None,
                 any_rank: false,
             });
         }
     }
-    Signature {
-        name: "R".to_owned(),
-        kind: RoutineKind::Proc,
-        params,
-        groups,
-        returns: None,
-        known: true,
-        doc: None,
-    }
+    Signature { params, groups }
+}
+
+fn bind(s: &Signature, args: &[Arg<'_>]) -> Binding {
+    bind_args(&s.params, &s.groups, args)
 }
 
 fn call(spec: &str) -> Vec<Arg<'_>> {
@@ -129,7 +132,7 @@ fn binds_arguments_as_the_table_says() {
     let mut failures = Vec::new();
     for (sig, args, want) in table {
         let s = signature(sig);
-        let got = show(&s, &bind_args(&s, &call(args)));
+        let got = show(&s, &bind(&s, &call(args)));
         if got != *want {
             failures.push(format!("{sig} / {args}: got `{got}`, want `{want}`"));
         }
@@ -140,8 +143,8 @@ fn binds_arguments_as_the_table_says() {
 #[test]
 fn next_param_is_after_the_last_bound_one() {
     let s = signature("\\C, A, \\V|\\T, B, \\W");
-    assert_eq!(bind_args(&s, &call("")).next_param(), 0);
-    assert_eq!(bind_args(&s, &call("C")).next_param(), 1);
-    assert_eq!(bind_args(&s, &call("_ V")).next_param(), 3);
-    assert_eq!(bind_args(&s, &call("_ _ Nope")).next_param(), 5);
+    assert_eq!(bind(&s, &call("")).next_param(), 0);
+    assert_eq!(bind(&s, &call("C")).next_param(), 1);
+    assert_eq!(bind(&s, &call("_ V")).next_param(), 3);
+    assert_eq!(bind(&s, &call("_ _ Nope")).next_param(), 5);
 }

@@ -1,0 +1,568 @@
+//! The virtual controller: one world shared by every task (the clock,
+//! signals, persistents, files, robots, the pendant) and one machine per
+//! task, under a deterministic scheduler. Tasks take turns statement by
+//! statement, in the order they were added (so the same program prints the
+//! same lines every run); when every task waits, the clock moves to the
+//! next thing that can end a wait (a signal scripted to change, a timer,
+//! the end of a `WaitTime` or a move, a poll of `WaitUntil`); when nothing
+//! can, the run is a deadlock, reported with each task's line.
+
+mod debug;
+mod sync;
+
+use std::sync::Arc;
+
+use rapid_analyzer::names::{NameMap, fold};
+use rapid_evaluator::Value;
+
+pub(crate) use debug::Debug;
+pub use debug::Resume;
+pub(crate) use sync::Sync;
+
+use crate::machine::{Init, Machine, Outcome, Status, Stop, Yield};
+use crate::program::Program;
+use crate::world::{FileSystem, Io, Pendant, Robot, Sockets, World};
+use crate::{Config, Limits, Move, Output, Stream};
+
+pub use rapid_analyzer::task::TaskKind;
+
+/// A task to run.
+pub struct TaskSpec {
+    /// The task's name (`T_ROB1`).
+    pub name: String,
+    pub program: Arc<Program>,
+    /// The routine it starts in (a procedure without parameters); `None`:
+    /// loaded, not started.
+    pub entry: Option<u32>,
+    pub kind: TaskKind,
+    /// The robot it moves (a motion task), if any.
+    pub robot: Option<Box<dyn Robot>>,
+}
+
+/// What the controller shares between its tasks.
+pub(crate) struct Shared {
+    pub clock: f64,
+    pub limits: Limits,
+    pub trace: bool,
+    /// Statements run, by every task.
+    pub steps: u64,
+    /// The persistents the tasks share (and their state), by index.
+    pub pers: Vec<Value>,
+    pub pers_init: Vec<Init>,
+    pers_names: NameMap<u32>,
+    pub io: Box<dyn Io>,
+    /// Signal changes the controller makes later (pulses, `\SDelay`):
+    /// time, signal, value; earliest first.
+    pub timed: Vec<(f64, String, f64)>,
+    /// Every signal change so far, for the tasks' interrupts.
+    pub events: Vec<(String, f64)>,
+    pub sync: Sync,
+    pub files: Box<dyn FileSystem>,
+    pub open: crate::builtins::files::OpenFiles,
+    pub pendant: Box<dyn Pendant>,
+    pub sockets: Box<dyn Sockets>,
+    output: Box<dyn Output>,
+    /// Each task's robot, by task index.
+    pub robots: Vec<Option<Box<dyn Robot>>>,
+    /// When each task's robot ends its last move.
+    pub motion_until: Vec<f64>,
+    pub moves: Vec<Move>,
+    /// Each task's name, by index.
+    pub names: Vec<String>,
+    pub debug: Debug,
+}
+
+impl Shared {
+    /// The index of the shared persistent `name` (made on first use).
+    pub(crate) fn persistent(&mut self, name: &str) -> u32 {
+        let key = fold(name);
+        if let Some(&i) = self.pers_names.get(&key) {
+            return i;
+        }
+        let i = self.pers.len() as u32;
+        self.pers.push(Value::Num(0.0));
+        self.pers_init.push(Init::Pending);
+        self.pers_names.insert(key, i);
+        i
+    }
+
+    /// A persistent's starting value (the first task that sets it wins).
+    pub(crate) fn set_persistent(&mut self, i: u32, v: Value) {
+        let i = i as usize;
+        if matches!(self.pers_init.get(i), Some(Init::Ready)) {
+            return;
+        }
+        if let Some(slot) = self.pers.get_mut(i) {
+            *slot = v;
+        }
+        if let Some(s) = self.pers_init.get_mut(i) {
+            *s = Init::Ready;
+        }
+    }
+
+    /// Sets a signal; a change is an event for the interrupts.
+    pub(crate) fn set_signal(&mut self, name: &str, value: f64) {
+        let old = self.io.read(name);
+        self.io.write(name, value);
+        if old.is_some_and(|o| o != value) {
+            self.events.push((name.to_owned(), value));
+        }
+    }
+
+    /// Sets a signal `delay` seconds from now.
+    pub(crate) fn set_signal_later(&mut self, name: &str, value: f64, delay: f64) {
+        let at = self.clock + delay.max(0.0);
+        let pos = self.timed.partition_point(|c| c.0 <= at);
+        self.timed.insert(pos, (at, name.to_owned(), value));
+    }
+
+    /// A line the program prints, from task `task` (named when several
+    /// tasks run).
+    pub(crate) fn print(&mut self, task: &str, stream: Stream, text: &str) {
+        if self.names.len() > 1 {
+            self.output.line(stream, &format!("[{task}] {text}"));
+        } else {
+            self.output.line(stream, text);
+        }
+    }
+
+    /// The time of the next change from outside or of the controller's
+    /// own.
+    fn next_event(&self) -> Option<f64> {
+        let timed = self.timed.first().map(|c| c.0);
+        match (self.io.next_change(), timed) {
+            (Some(a), Some(b)) => Some(a.min(b)),
+            (a, b) => a.or(b),
+        }
+    }
+
+    /// Moves the clock to `t`, applying the changes due by then.
+    fn advance_to(&mut self, t: f64) {
+        for (name, value) in self.io.advance(t) {
+            self.events.push((name, value));
+        }
+        let due = self.timed.partition_point(|c| c.0 <= t);
+        let changes: Vec<(f64, String, f64)> = self.timed.drain(..due).collect();
+        for (_, name, value) in changes {
+            self.set_signal(&name, value);
+        }
+        self.clock = self.clock.max(t);
+    }
+
+    /// The index of the task named `name`.
+    pub(crate) fn task_named(&self, name: &str) -> Option<usize> {
+        self.names.iter().position(|n| n.eq_ignore_ascii_case(name))
+    }
+}
+
+/// What running the controller came to.
+#[derive(Clone, Debug)]
+pub enum Event {
+    /// A debugger stops task `task` (its index).
+    Stopped { task: usize, stop: Stop },
+    /// Every task ended: see [`Controller::outcomes`].
+    Ended,
+    /// The statements given are used up; the run goes on.
+    Running,
+}
+
+struct Meta {
+    kind: TaskKind,
+    entry: Option<u32>,
+}
+
+/// A controller with its tasks.
+pub struct Controller {
+    sh: Shared,
+    tasks: Vec<Machine>,
+    meta: Vec<Meta>,
+    started: bool,
+}
+
+/// How many statements a lone task runs between the scheduler's checks.
+const LONE_SLICE: u32 = 4096;
+
+impl Controller {
+    pub fn new(config: Config, world: World) -> Controller {
+        Controller {
+            sh: Shared {
+                clock: 0.0,
+                limits: config.limits.clone(),
+                trace: config.trace,
+                steps: 0,
+                pers: Vec::new(),
+                pers_init: Vec::new(),
+                pers_names: NameMap::default(),
+                io: world.io,
+                timed: Vec::new(),
+                events: Vec::new(),
+                sync: Sync::default(),
+                files: world.files,
+                open: Default::default(),
+                pendant: world.pendant,
+                sockets: world.sockets,
+                output: world.output,
+                robots: Vec::new(),
+                motion_until: Vec::new(),
+                moves: Vec::new(),
+                names: Vec::new(),
+                debug: Debug::default(),
+            },
+            tasks: Vec::new(),
+            meta: Vec::new(),
+            started: false,
+        }
+    }
+
+    /// Adds a task (its data initialised as the controller loads it); its
+    /// index.
+    pub fn add_task(&mut self, spec: TaskSpec) -> usize {
+        for (name, kind) in spec.program.signals() {
+            self.sh.io.declare(&name, kind);
+        }
+        let index = self.tasks.len();
+        self.sh.names.push(spec.name.clone());
+        self.sh.robots.push(spec.robot);
+        self.sh.motion_until.push(0.0);
+        let m = Machine::new(spec.program, spec.name, index + 1, &mut self.sh);
+        self.tasks.push(m);
+        self.meta.push(Meta {
+            kind: spec.kind,
+            entry: spec.entry,
+        });
+        index
+    }
+
+    /// The tasks.
+    pub fn tasks(&self) -> &[Machine] {
+        &self.tasks
+    }
+
+    /// The simulated time, in seconds since the run started.
+    pub fn clock(&self) -> f64 {
+        self.sh.clock
+    }
+
+    /// Statements run so far, by every task.
+    pub fn steps(&self) -> u64 {
+        self.sh.steps
+    }
+
+    /// The moves made so far (with [`Config::trace`]).
+    pub fn moves(&self) -> &[Move] {
+        &self.sh.moves
+    }
+
+    /// Each task's outcome (`None`: not started, or still running).
+    pub fn outcomes(&self) -> Vec<(String, Option<Outcome>)> {
+        self.tasks
+            .iter()
+            .map(|t| (t.name.clone(), t.outcome().cloned()))
+            .collect()
+    }
+
+    /// Starts routine `routine` of task `task` now (as a test harness runs
+    /// one routine after another on the same data).
+    pub fn start_routine(&mut self, task: usize, routine: u32) -> Result<(), String> {
+        self.begin();
+        self.started = true;
+        match self.tasks.get_mut(task) {
+            Some(m) => m.start(routine),
+            None => Err("no such task".to_owned()),
+        }
+    }
+
+    /// Starts every task's entry routine: the static and semistatic tasks
+    /// first, as a controller starts them when it starts, then the normal
+    /// ones. An entry that cannot start ends its task at once.
+    fn start(&mut self) {
+        if self.started {
+            return;
+        }
+        self.begin();
+        self.started = true;
+        let mut order: Vec<usize> = (0..self.tasks.len()).collect();
+        order.sort_by_key(|&i| self.meta[i].kind == TaskKind::Normal);
+        for i in order {
+            let Some(entry) = self.meta[i].entry else {
+                continue;
+            };
+            if let Err(why) = self.tasks[i].start(entry) {
+                self.tasks[i].finish(Outcome {
+                    status: Status::Invalid,
+                    message: why,
+                    errno: None,
+                    at: None,
+                    stack: Vec::new(),
+                });
+            }
+        }
+    }
+
+    /// The world as the run begins: the signal values scripted for the
+    /// start.
+    fn begin(&mut self) {
+        if !self.started {
+            let now = self.sh.clock;
+            self.sh.advance_to(now);
+        }
+    }
+
+    /// Runs to the end (no debugger).
+    pub fn run(&mut self) -> Event {
+        loop {
+            match self.run_for(u64::MAX) {
+                Event::Running => continue,
+                other => return other,
+            }
+        }
+    }
+
+    /// Runs at most `statements` statements (of every task), until a
+    /// debugger stop or the end.
+    pub fn run_for(&mut self, statements: u64) -> Event {
+        self.start();
+        let limit = self.sh.steps.saturating_add(statements);
+        loop {
+            if self.normal_tasks_ended() {
+                self.halt_others();
+                return Event::Ended;
+            }
+            if self.sh.steps >= limit {
+                return Event::Running;
+            }
+            // The static and semistatic tasks (started first, as a
+            // controller starts them) before the normal ones.
+            let mut running: Vec<usize> = (0..self.tasks.len())
+                .filter(|&i| self.tasks[i].is_running())
+                .collect();
+            running.sort_by_key(|&i| self.meta[i].kind == TaskKind::Normal);
+            let slice = if running.len() == 1 { LONE_SLICE } else { 1 };
+            let mut ran = false;
+            for i in running {
+                match self.tasks[i].run_slice(&mut self.sh, slice) {
+                    Yield::Slice | Yield::Done | Yield::Evaluated => ran = true,
+                    Yield::Blocked => {}
+                    Yield::Stopped(stop) => return Event::Stopped { task: i, stop },
+                }
+            }
+            if !ran && let Some(e) = self.advance_clock() {
+                return e;
+            }
+            self.forget_seen_events();
+        }
+    }
+
+    /// Drops the signal events every task has seen.
+    fn forget_seen_events(&mut self) {
+        if self.sh.events.len() < 1024 {
+            return;
+        }
+        let seen = self
+            .tasks
+            .iter()
+            .map(|t| t.events_seen)
+            .min()
+            .unwrap_or(0)
+            .min(self.sh.events.len());
+        self.sh.events.drain(..seen);
+        for t in &mut self.tasks {
+            t.events_seen -= seen;
+        }
+    }
+
+    /// Have the normal tasks all ended (or, without normal tasks, every
+    /// task)?
+    fn normal_tasks_ended(&self) -> bool {
+        let normal: Vec<&Machine> = self
+            .tasks
+            .iter()
+            .zip(&self.meta)
+            .filter(|(_, m)| m.kind == TaskKind::Normal)
+            .map(|(t, _)| t)
+            .collect();
+        if normal.is_empty() {
+            self.tasks.iter().all(Machine::is_done)
+        } else {
+            normal.iter().all(|t| t.is_done())
+        }
+    }
+
+    /// The program has ended: the static and semistatic tasks still
+    /// running are halted with it.
+    fn halt_others(&mut self) {
+        for t in &mut self.tasks {
+            if t.is_running() {
+                t.finish(Outcome {
+                    status: Status::Halted,
+                    message: "halted when the normal tasks ended".to_owned(),
+                    errno: None,
+                    at: t.location(),
+                    stack: t.stack_frames(),
+                });
+            }
+        }
+    }
+
+    /// Every running task waits: the clock moves to the next time that can
+    /// end a wait; a deadlock or the end of the time budget ends the tasks
+    /// that wait.
+    fn advance_clock(&mut self) -> Option<Event> {
+        let waiting: Vec<usize> = (0..self.tasks.len())
+            .filter(|&i| self.tasks[i].is_running())
+            .collect();
+        if waiting.is_empty() {
+            return None;
+        }
+        let earlier = |a: Option<f64>, b: Option<f64>| match (a, b) {
+            (Some(a), Some(b)) => Some(a.min(b)),
+            (a, b) => a.or(b),
+        };
+        // What can end a wait (`real`), and the next time anything is
+        // looked at again (`any`: also the polls of conditions that
+        // nothing will change).
+        let mut real = self.sh.next_event();
+        let mut any = real;
+        for &i in &waiting {
+            let t = &self.tasks[i];
+            let timer = t.interrupts.next_due();
+            real = earlier(real, timer);
+            any = earlier(any, timer);
+            let wake = t.wake_time();
+            if t.waits_on_time(&self.sh) {
+                real = earlier(real, wake);
+            }
+            any = earlier(any, wake);
+        }
+        let (Some(_), Some(t)) = (real, any) else {
+            return self.deadlock(&waiting);
+        };
+        let t = t.max(self.sh.clock);
+        let max = self.sh.limits.max_time;
+        if t > max {
+            self.sh.advance_to(max);
+            for i in waiting {
+                let during = match self.tasks[i].waiting_for() {
+                    Some(what) => format!(" ({what} waits)"),
+                    None => String::new(),
+                };
+                let f = crate::machine::Fault {
+                    kind: crate::machine::FaultKind::Budget(format!(
+                        "the simulated time budget ({max} s) ran out{during}"
+                    )),
+                    skip_depth: None,
+                    fatal: true,
+                    trace: None,
+                    reported: false,
+                };
+                if let Some(Yield::Stopped(stop)) = self.tasks[i].handle(&mut self.sh, Box::new(f))
+                {
+                    return Some(Event::Stopped { task: i, stop });
+                }
+            }
+            return None;
+        }
+        self.sh.advance_to(t);
+        for task in &mut self.tasks {
+            task.interrupts.expire(t);
+        }
+        None
+    }
+
+    /// Nothing can end the waits: each waiting task ends in a deadlock.
+    fn deadlock(&mut self, waiting: &[usize]) -> Option<Event> {
+        let lone = self.tasks.len() == 1;
+        let report: Vec<String> = waiting
+            .iter()
+            .map(|&i| {
+                let t = &self.tasks[i];
+                let at = t.location().map(|l| l.to_string()).unwrap_or_default();
+                let what = t.waiting_for().unwrap_or_default();
+                format!("{} at {at} ({what})", t.name)
+            })
+            .collect();
+        let others = if lone {
+            "nothing the simulation runs can change it (script a signal change with --set NAME=VALUE@SECONDS)".to_owned()
+        } else {
+            format!("every task waits: {}", report.join("; "))
+        };
+        for &i in waiting {
+            let f = self.tasks[i].deadlock(&others);
+            if let Some(Yield::Stopped(stop)) = self.tasks[i].handle(&mut self.sh, f) {
+                return Some(Event::Stopped { task: i, stop });
+            }
+        }
+        None
+    }
+
+    // The debugger's side.
+
+    /// Attaches a debugger: stops are looked for from now on.
+    pub fn debug(&mut self, stop_on_entry: bool) {
+        self.sh.debug.active = true;
+        self.sh.debug.entry = stop_on_entry;
+    }
+
+    /// The breakpoint lines of a module file (its path as the task names
+    /// it).
+    pub fn set_breakpoints(&mut self, path: &str, lines: &[u32]) {
+        self.sh.debug.set_breakpoints(path, lines);
+    }
+
+    /// How to go on after a stop.
+    pub fn resume(&mut self, how: Resume) {
+        let task = match how {
+            Resume::Continue => None,
+            Resume::StepIn { task } | Resume::StepOver { task } | Resume::StepOut { task } => {
+                Some(task)
+            }
+        };
+        let depth = task
+            .and_then(|t| self.tasks.get(t))
+            .map_or(0, Machine::depth);
+        self.sh.debug.resume(how, depth);
+    }
+
+    /// Asks for a stop at the next statement of any task.
+    pub fn pause(&mut self) {
+        self.sh.debug.pause = true;
+    }
+
+    /// A pause asked for that no statement has met yet (every task waits):
+    /// it stops now, in the first task that runs.
+    pub fn take_pause(&mut self) -> Option<Event> {
+        if !std::mem::take(&mut self.sh.debug.pause) {
+            return None;
+        }
+        let task = self.tasks.iter().position(Machine::is_running)?;
+        Some(Event::Stopped {
+            task,
+            stop: Stop::Pause,
+        })
+    }
+
+    /// Ends every task now (a debugger's terminate): they stop as `Stop`
+    /// stops them.
+    pub fn terminate(&mut self) {
+        for t in &mut self.tasks {
+            if t.is_running() {
+                t.finish(Outcome {
+                    status: Status::Stopped,
+                    message: String::new(),
+                    errno: None,
+                    at: t.location(),
+                    stack: t.stack_frames(),
+                });
+            }
+        }
+    }
+
+    pub(crate) fn parts(&mut self, task: usize) -> Option<(&mut Machine, &mut Shared)> {
+        let m = self.tasks.get_mut(task)?;
+        Some((m, &mut self.sh))
+    }
+
+    pub(crate) fn shared(&self) -> &Shared {
+        &self.sh
+    }
+}

@@ -1,0 +1,353 @@
+//! Waits: a frame whose instruction waits keeps what it waits for as
+//! data ([`Wait`]); the task is blocked until it holds (or times out), and
+//! the trap routines of interrupts still run meanwhile, on top of the
+//! waiting frame.
+
+use rapid_evaluator::Value;
+
+use super::{Boundary, FaultKind, Machine, Place, R, fault, named_error};
+use crate::code::Pc;
+use crate::controller::Shared;
+
+/// What a frame waits for.
+#[derive(Clone, Debug)]
+pub(crate) struct Wait {
+    pub kind: WaitKind,
+    /// `\MaxTime`, `\TimeOut`: when the wait gives up.
+    pub deadline: Option<f64>,
+    pub on_timeout: Timeout,
+    /// The instruction and what it waits for, for a deadlock's report.
+    pub what: String,
+}
+
+#[derive(Clone, Debug)]
+pub(crate) enum WaitKind {
+    /// Until the clock reaches this time (`WaitTime`, a move that takes
+    /// time).
+    Time(f64),
+    /// Until the signal compares with the value as asked.
+    Signal { name: String, test: SignalTest },
+    /// A `WaitUntil` condition is checked again at this time (from
+    /// `again`); `clock`: the condition read the clock; `steps`: the
+    /// statements the controller had run when it was found false.
+    Poll {
+        next: f64,
+        again: Pc,
+        clock: bool,
+        steps: u64,
+    },
+    /// At a rendezvous of tasks (`WaitSyncTask`, `SyncMoveOn`,
+    /// `SyncMoveOff`): its key in [`crate::controller::Sync`] and the
+    /// round this task arrived in.
+    Sync {
+        key: String,
+        round: u64,
+        sync_move: Option<bool>,
+    },
+    /// Until the task's robot stands still (at `at`, the end of its
+    /// motion), then at the rendezvous `key` of the tasks `numbers`
+    /// (`WaitSyncTask \InPos`).
+    InPos {
+        at: f64,
+        key: String,
+        numbers: Vec<usize>,
+        names: Vec<String>,
+    },
+    /// Until the bool at the place is `FALSE`, which is then set
+    /// (`WaitTestAndSet`).
+    Semaphore(Place),
+}
+
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum SignalTest {
+    Equal(f64),
+    Below(f64),
+    Above(f64),
+}
+
+impl SignalTest {
+    pub(crate) fn holds(self, v: f64) -> bool {
+        match self {
+            SignalTest::Equal(x) => v == x,
+            SignalTest::Below(x) => v < x,
+            SignalTest::Above(x) => v > x,
+        }
+    }
+}
+
+/// What happens when a wait times out.
+#[derive(Clone, Debug)]
+pub(crate) enum Timeout {
+    /// The error (`ERR_WAIT_MAXTIME`...), with a message.
+    Error(&'static str, String),
+    /// `\TimeFlag`: the flag is set and the program goes on.
+    Flag(Place),
+}
+
+/// Where a blocked task stands.
+pub(crate) enum Blocked {
+    /// It waits.
+    Waiting,
+    /// It can run.
+    Ready,
+}
+
+impl Machine {
+    /// Checks the innermost frame's wait: still waiting, or done (then the
+    /// frame goes on; a timeout may fail it).
+    pub(crate) fn check_wait(&mut self, sh: &mut Shared) -> R<Blocked> {
+        let Some(w) = self.frames.last().and_then(|f| f.wait.clone()) else {
+            return Ok(Blocked::Ready);
+        };
+        let now = sh.clock;
+        let done = match &w.kind {
+            WaitKind::Time(t) => now >= *t,
+            WaitKind::Signal { name, test } => sh.io.read(name).is_some_and(|v| test.holds(v)),
+            WaitKind::Poll { next, .. } => now >= *next,
+            WaitKind::Sync { key, round, .. } => sh.sync.released(key, *round),
+            WaitKind::Semaphore(p) => matches!(self.get(sh, p), Some(Value::Bool(false))),
+            WaitKind::InPos {
+                at,
+                key,
+                numbers,
+                names,
+            } => {
+                if now < *at {
+                    false
+                } else {
+                    // In position: the task arrives at the rendezvous now.
+                    let (round, complete) = sh.sync.arrive(key, self.number, numbers, names);
+                    if !complete {
+                        if let Some(f) = self.frames.last_mut()
+                            && let Some(wait) = f.wait.as_mut()
+                        {
+                            wait.kind = WaitKind::Sync {
+                                key: key.clone(),
+                                round,
+                                sync_move: None,
+                            };
+                        }
+                        return self.check_timeout(sh);
+                    }
+                    true
+                }
+            }
+        };
+        if done {
+            self.end_wait(sh, &w)?;
+            return Ok(Blocked::Ready);
+        }
+        self.check_timeout(sh)
+    }
+
+    /// The wait goes on unless its deadline has come (then the timeout's
+    /// flag or error).
+    fn check_timeout(&mut self, sh: &mut Shared) -> R<Blocked> {
+        let Some(w) = self.frames.last().and_then(|f| f.wait.clone()) else {
+            return Ok(Blocked::Ready);
+        };
+        let now = sh.clock;
+        if let Some(d) = w.deadline
+            && now >= d
+        {
+            self.clear_wait();
+            if let WaitKind::Sync { key, .. } = &w.kind {
+                sh.sync.leave(key, self.number);
+            }
+            return match w.on_timeout {
+                Timeout::Flag(p) => {
+                    self.store(sh, &p, Value::Bool(true))?;
+                    Ok(Blocked::Ready)
+                }
+                Timeout::Error(name, message) => fault(named_error(&self.prog, name, message)),
+            };
+        }
+        Ok(Blocked::Waiting)
+    }
+
+    fn clear_wait(&mut self) {
+        if let Some(f) = self.frames.last_mut() {
+            f.wait = None;
+        }
+    }
+
+    /// The wait holds: what it does then.
+    fn end_wait(&mut self, sh: &mut Shared, w: &super::Wait) -> R<()> {
+        self.clear_wait();
+        match &w.kind {
+            WaitKind::Poll { again, .. } => {
+                if let Some(f) = self.frames.last_mut() {
+                    f.pc = *again;
+                    f.boundary = Boundary::None;
+                }
+            }
+            WaitKind::Semaphore(p) => self.store(sh, p, Value::Bool(true))?,
+            WaitKind::Sync {
+                sync_move: Some(on),
+                ..
+            } => {
+                self.sync_move = if *on {
+                    sh.sync.group_of(self.number)
+                } else {
+                    None
+                };
+            }
+            _ => {}
+        }
+        Ok(())
+    }
+
+    /// The innermost frame waits for `w`.
+    pub(crate) fn block(&mut self, w: Wait) {
+        if let Some(f) = self.frames.last_mut() {
+            f.wait = Some(Box::new(w));
+        }
+    }
+
+    /// Can the task's wait end with time alone (the end of a `WaitTime`,
+    /// a deadline, a condition that reads the clock or whose data another
+    /// task changed since it was found false)? If no task's can, and
+    /// nothing comes from outside, the run is a deadlock.
+    pub(crate) fn waits_on_time(&self, sh: &Shared) -> bool {
+        match self.frames.last().and_then(|f| f.wait.as_ref()) {
+            Some(w) => match &w.kind {
+                WaitKind::Time(_) | WaitKind::InPos { .. } => true,
+                WaitKind::Poll { clock, steps, .. } => {
+                    *clock || w.deadline.is_some() || *steps != sh.steps
+                }
+                _ => w.deadline.is_some(),
+            },
+            None => false,
+        }
+    }
+
+    /// When the task's wait should be looked at again: the end of a
+    /// `WaitTime` or a move, the next poll, a deadline.
+    pub(crate) fn wake_time(&self) -> Option<f64> {
+        let w = self.frames.last()?.wait.as_ref()?;
+        let own = match &w.kind {
+            WaitKind::Time(t) | WaitKind::InPos { at: t, .. } => Some(*t),
+            WaitKind::Poll { next, .. } => Some(*next),
+            _ => None,
+        };
+        match (own, w.deadline) {
+            (Some(a), Some(b)) => Some(a.min(b)),
+            (a, b) => a.or(b),
+        }
+    }
+
+    /// What the task waits for, for a report.
+    pub(crate) fn waiting_for(&self) -> Option<String> {
+        self.frames
+            .last()
+            .and_then(|f| f.wait.as_ref())
+            .map(|w| w.what.clone())
+    }
+
+    /// The deadlock of this task: it waits, and nothing can end the wait.
+    pub(crate) fn deadlock(&self, others: &str) -> Box<super::Fault> {
+        let what = self.waiting_for().unwrap_or_else(|| "the task".to_owned());
+        let message = format!("{what} waits forever: {others}");
+        Box::new(super::Fault {
+            kind: FaultKind::Deadlock(message),
+            skip_depth: None,
+            fatal: true,
+            trace: None,
+            reported: false,
+        })
+    }
+}
+
+impl Machine {
+    /// `WaitUntil` starts: its `\MaxTime`, `\PollRate` and `\TimeFlag` to
+    /// its state's hidden slots (from `w.state`), the time flag cleared.
+    pub(crate) fn wait_until_start(
+        &mut self,
+        sh: &mut Shared,
+        base: usize,
+        w: &crate::code::WaitUntil,
+    ) -> R<()> {
+        let flag = if w.time_flag { self.places.pop() } else { None };
+        let number = |m: &mut Machine| -> R<Option<f64>> {
+            match m.vals.pop() {
+                Some(v) => Ok(m.scalar(sh, v)?.as_f64()),
+                None => Ok(None),
+            }
+        };
+        let poll = if w.poll_rate { number(self)? } else { None };
+        let max = if w.max_time { number(self)? } else { None };
+        let s = base + w.state as usize;
+        let slots = [
+            super::Slot::Val(Value::Dnum(sh.clock)),
+            max.map_or(super::Slot::Absent, |m| super::Slot::Val(Value::Dnum(m))),
+            super::Slot::Val(Value::Dnum(poll.unwrap_or(0.1).max(0.01))),
+            flag.clone().map_or(super::Slot::Absent, super::Slot::Ref),
+        ];
+        for (k, v) in slots.into_iter().enumerate() {
+            if let Some(slot) = self.slots.get_mut(s + k) {
+                *slot = v;
+            }
+        }
+        if let Some(p) = flag {
+            self.store(sh, &p, Value::Bool(false))?;
+        }
+        self.read_clock = false;
+        Ok(())
+    }
+
+    /// A `WaitUntil` condition was evaluated: go on (`true`) when it holds
+    /// or the wait timed out with a time flag, else the frame waits for
+    /// the next poll (at most until `\MaxTime`).
+    pub(crate) fn wait_until_check(
+        &mut self,
+        sh: &mut Shared,
+        base: usize,
+        w: &crate::code::WaitUntil,
+        holds: bool,
+        again: Pc,
+    ) -> R<bool> {
+        if holds {
+            return Ok(true);
+        }
+        let s = base + w.state as usize;
+        let num = |m: &Machine, k: usize| match m.slots.get(s + k) {
+            Some(super::Slot::Val(v)) => v.as_f64(),
+            _ => None,
+        };
+        let start = num(self, 0).unwrap_or(sh.clock);
+        let poll = num(self, 2).unwrap_or(0.1);
+        let deadline = num(self, 1).map(|m| start + m);
+        if deadline.is_some_and(|d| sh.clock >= d) {
+            return match self.slots.get(s + 3).cloned() {
+                Some(super::Slot::Ref(p)) => {
+                    self.store(sh, &p, Value::Bool(true))?;
+                    Ok(true)
+                }
+                _ => fault(named_error(
+                    &self.prog,
+                    "ERR_WAIT_MAXTIME",
+                    "WaitUntil: the condition did not happen within \\MaxTime".to_owned(),
+                )),
+            };
+        }
+        let mut next = sh.clock + poll;
+        if let Some(d) = deadline {
+            next = next.min(d);
+        }
+        let clock = std::mem::take(&mut self.read_clock);
+        self.block(Wait {
+            kind: WaitKind::Poll {
+                next,
+                again,
+                clock,
+                steps: sh.steps,
+            },
+            // Reached only through the poll (`next` is never later), which
+            // evaluates the condition once more first.
+            deadline,
+            on_timeout: Timeout::Error("ERR_WAIT_MAXTIME", String::new()),
+            what: "WaitUntil".to_owned(),
+        });
+        Ok(false)
+    }
+}

@@ -1,0 +1,54 @@
+//! The controller's world: what a program touches outside its own data.
+//! Each part is a trait, so a test (or a richer simulation) substitutes
+//! it; the defaults are the simulated controller's behaviour.
+//!
+//! | part | trait | default |
+//! |---|---|---|
+//! | the robot arm of a motion task | [`Robot`] | [`InstantRobot`]: moves arrive at once, no kinematics |
+//! | files (`Open`, `Write`, `ReadStr`...) | [`FileSystem`] | [`SandboxFs`]: a folder, no path leaves it |
+//! | I/O signals | [`Io`] | [`ScriptedIo`]: zero at the start, a script of timed changes |
+//! | the operator at the FlexPendant | [`Pendant`] | [`NoOperator`]: no answers |
+//! | sockets | [`Sockets`] | [`NoSockets`]: not supported |
+//! | printed lines (`TPWrite`, `ErrWrite`) | [`crate::Output`] | the caller's sink |
+
+mod files;
+mod io;
+mod pendant;
+mod robot;
+mod sockets;
+
+pub use files::{FileError, FileKind, FileSystem, MemoryFs, SandboxFs};
+pub use io::{Io, ScriptedIo};
+pub use pendant::{Answer, NoOperator, Pendant, Question};
+pub use robot::{
+    InstantRobot, JointTarget, Motion, MoveKind, MoveRequest, MoveTarget, Pose, RobTarget, Robot,
+    RobotError, Speed, Tool, WObj, Zone,
+};
+pub use sockets::{NoSockets, SocketError, Sockets};
+
+use crate::{Config, Output};
+
+/// The world a controller runs in (its robots are given per task, see
+/// [`crate::TaskSpec`]).
+pub struct World {
+    pub io: Box<dyn Io>,
+    pub files: Box<dyn FileSystem>,
+    pub pendant: Box<dyn Pendant>,
+    pub sockets: Box<dyn Sockets>,
+    pub output: Box<dyn Output>,
+}
+
+impl World {
+    /// The simulated controller's world: the signals scripted in `config`,
+    /// files in its sandbox folder (none: file instructions are not
+    /// supported), no operator, no sockets, lines to `output`.
+    pub fn simulated(config: &Config, output: Box<dyn Output>) -> World {
+        World {
+            io: Box::new(ScriptedIo::new(config.signals.clone())),
+            files: Box::new(SandboxFs::new(config.sandbox.clone())),
+            pendant: Box::new(NoOperator),
+            sockets: Box::new(NoSockets),
+            output,
+        }
+    }
+}
