@@ -5,6 +5,7 @@
 pub mod body;
 pub mod carry;
 pub mod catalogue;
+pub mod cfg;
 pub mod check;
 pub mod consteval;
 pub mod controller;
