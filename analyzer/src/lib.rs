@@ -10,6 +10,7 @@ pub mod check;
 pub mod consteval;
 pub mod controller;
 pub mod diagnostic;
+pub mod diff;
 pub mod edit;
 pub mod format;
 pub mod ide;

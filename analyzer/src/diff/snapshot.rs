@@ -1,0 +1,160 @@
+//! A module file reduced to what [`super::compare`] compares.
+
+use std::collections::{BTreeSet, HashMap};
+
+use tree_sitter::Node;
+
+use super::lines::Liner;
+use super::{DataSnapshot, ModuleSnapshot, RoutineSnapshot, TypeSnapshot};
+use crate::names::fold;
+use crate::syntax::{field, kind};
+use crate::syntax_util::{field, fields, kind as kind_of};
+use crate::task::Task;
+use crate::text::LineIndex;
+
+/// The modules of unit `unit` of `task` (the task its names resolve in:
+/// its group, or its view when it clashes with others), their file named
+/// `file`. Data values come from the constant evaluator.
+pub fn modules_of(task: &Task, unit: usize, file: &str) -> Vec<ModuleSnapshot> {
+    let Some(u) = task.units.get(unit) else {
+        return Vec::new();
+    };
+    let values = crate::consteval::module_data_values(task, unit);
+    let index = LineIndex::new(&u.text);
+    let text = u.text.as_str();
+    let root = u.tree().root_node();
+    let mut nodes: HashMap<usize, Node<'_>> = HashMap::new();
+    let mut cursor = root.walk();
+    for n in root.named_children(&mut cursor) {
+        if kind_of(n) == kind::MODULE {
+            nodes.insert(n.start_byte(), n);
+        }
+    }
+    let line_of = |offset: usize| index.line_col(offset).line + 1;
+    let mut out = Vec::new();
+    for (m, module) in u.items.modules.iter().enumerate() {
+        let Some(node) = nodes.get(&module.range.start).copied() else {
+            continue;
+        };
+        let mut liner = Liner::new(text, &index);
+        let mut snap = ModuleSnapshot {
+            name: module.name.clone(),
+            file: file.to_owned(),
+            line: line_of(module.range.start),
+            attributes: field(node, field::ATTRIBUTES)
+                .map(|a| {
+                    fields(a, field::ATTRIBUTE)
+                        .iter()
+                        .map(|n| text[n.byte_range()].trim().to_ascii_uppercase())
+                        .collect()
+                })
+                .unwrap_or_default(),
+            ..ModuleSnapshot::default()
+        };
+        let data_at: HashMap<usize, usize> = module
+            .data
+            .iter()
+            .enumerate()
+            .map(|(i, d)| (d.range.start, i))
+            .collect();
+        for item in fields(node, field::BODY) {
+            let k = kind_of(item);
+            match k {
+                kind::PROCEDURE_DECLARATION
+                | kind::FUNCTION_DECLARATION
+                | kind::TRAP_DECLARATION => {
+                    let Some(name) = field(item, field::NAME) else {
+                        continue;
+                    };
+                    snap.routines.push(RoutineSnapshot {
+                        name: text[name.byte_range()].to_owned(),
+                        kind: match k {
+                            kind::PROCEDURE_DECLARATION => "PROC",
+                            kind::FUNCTION_DECLARATION => "FUNC",
+                            _ => "TRAP",
+                        },
+                        line: line_of(item.start_byte()),
+                        lines: liner.routine(item),
+                    });
+                }
+                kind::RECORD_DECLARATION | kind::ALIAS_DECLARATION => {
+                    let Some(name) = field(item, field::NAME) else {
+                        continue;
+                    };
+                    snap.types.push(TypeSnapshot {
+                        name: text[name.byte_range()].to_owned(),
+                        line: line_of(item.start_byte()),
+                        lines: liner.one_line(item, 0).into_iter().collect(),
+                    });
+                }
+                kind::DATA_DECLARATION => {
+                    let Some(&i) = data_at.get(&item.start_byte()) else {
+                        continue;
+                    };
+                    let Some(d) = module.data.get(i) else {
+                        continue;
+                    };
+                    // Every name of the declaration, for the built-ins used.
+                    let _ = liner.one_line(item, 0);
+                    let dims = field(item, field::DIMENSIONS)
+                        .map(|l| {
+                            fields(l, field::DIMENSION)
+                                .into_iter()
+                                .filter_map(|n| liner.one_line(n, 0).map(|l| l.key))
+                                .collect()
+                        })
+                        .unwrap_or_default();
+                    snap.data.push(DataSnapshot {
+                        name: d.name.clone(),
+                        line: line_of(d.range.start),
+                        storage: d.storage,
+                        scope: d.scope,
+                        ty: d.ty.as_ref().map(|t| t.name.clone()).unwrap_or_default(),
+                        dims,
+                        init: field(item, field::VALUE).and_then(|v| liner.one_line(v, 0)),
+                        value: values.get(m).and_then(|v| v.get(i)).cloned().flatten(),
+                    });
+                }
+                _ => {}
+            }
+        }
+        snap.declared = declared(module);
+        snap.names = std::mem::take(&mut liner.names);
+        out.push(snap);
+    }
+    out
+}
+
+fn declared(module: &crate::items::Module) -> BTreeSet<String> {
+    crate::task::module_items(module)
+        .map(|(name, _, _)| fold(name))
+        .collect()
+}
+
+/// The tasks of a workspace as snapshots: each file's modules (in the task
+/// that resolves its names, [`crate::workspace::Workspace::checks`]),
+/// grouped by task, each task named by `task_name` of its key and each
+/// file by `file_name` of its path; tasks in the order of their names.
+pub fn tasks_of(
+    workspace: &mut crate::workspace::Workspace,
+    task_name: &dyn Fn(&str) -> String,
+    file_name: &dyn Fn(&str) -> String,
+) -> Vec<super::TaskSnapshot> {
+    let mut tasks: std::collections::BTreeMap<String, super::TaskSnapshot> = Default::default();
+    for (task, unit) in workspace.checks() {
+        let Some(idx) = task.units.iter().position(|u| u.path == unit.path) else {
+            continue;
+        };
+        let name = task_name(&task.key);
+        let entry = tasks
+            .entry(name.clone())
+            .or_insert_with(|| super::TaskSnapshot {
+                name,
+                modules: Vec::new(),
+            });
+        entry
+            .modules
+            .extend(modules_of(&task, idx, &file_name(&unit.path)));
+    }
+    tasks.into_values().collect()
+}
