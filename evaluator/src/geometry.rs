@@ -306,8 +306,13 @@ pub fn distance_mm(old: &Value, new: &Value) -> Option<f64> {
 /// orientation. `None` when either is not an orientation or is not
 /// normalised ([`unit_quat`]).
 pub fn rotation_deg(old: &Value, new: &Value) -> Option<f64> {
-    let quat = |v: &Value| unit_quat(orient_of(v.field("rot").unwrap_or(v)).ok()?).ok();
-    let r = quat(old)?.inverse() * quat(new)?;
+    let orient = |v: &Value| orient_of(v.field("rot").unwrap_or(v)).ok();
+    let (a, b) = (unit_quat(orient(old)?).ok()?, unit_quat(orient(new)?).ok()?);
+    // One orientation written twice: no turn, not the rounding of one.
+    if orient(old) == orient(new) {
+        return Some(0.0);
+    }
+    let r = a.inverse() * b;
     let v = r.imag().norm();
     Some((2.0 * v.atan2(r.w.abs())).to_degrees())
 }
@@ -331,10 +336,11 @@ mod change_tests {
     #[test]
     fn distances_and_angles_between_frames() {
         let a = pose([0.0, 0.0, 0.0], [1.0, 0.0, 0.0, 0.0]);
-        let b = pose([3.0, 4.0, 0.0], [0.707107, 0.0, 0.0, 0.707107]);
+        let b = pose([3.0, 4.0, 0.0], [0.6, 0.0, 0.0, 0.8]);
         assert_eq!(distance_mm(&a, &b), Some(5.0));
+        // About z by twice atan(0.8 / 0.6).
         let angle = rotation_deg(&a, &b).expect("an angle");
-        assert!((angle - 90.0).abs() < 1e-4, "{angle}");
+        assert!((angle - 106.260_205).abs() < 1e-4, "{angle}");
         // -q is the same orientation.
         let c = pose([0.0; 3], [-1.0, 0.0, 0.0, 0.0]);
         assert_eq!(rotation_deg(&a, &c), Some(0.0));
@@ -360,7 +366,7 @@ mod change_tests {
             fields: vec![
                 (
                     "uframe".into(),
-                    pose([100.0, 0.0, 0.0], [0.707107, 0.0, 0.0, 0.707107]),
+                    pose([100.0, 0.0, 0.0], [0.6, 0.0, 0.0, 0.8]),
                 ),
                 (
                     "oframe".into(),
@@ -369,7 +375,8 @@ mod change_tests {
             ],
         };
         let f = wobj_frame(&wobj).expect("a frame");
-        let origin = Value::pos(100.0, 10.0, 0.0);
+        // cos and sin of that turn are -0.28 and 0.96.
+        let origin = Value::pos(97.2, 9.6, 0.0);
         assert!(distance_mm(&f, &origin).expect("a distance") < 1e-4);
     }
 }

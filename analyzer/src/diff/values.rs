@@ -56,7 +56,7 @@ struct Acc {
 /// Compares two values of a datum.
 pub fn compare_values(old: &Value, new: &Value) -> ValueChange {
     let mut acc = Acc::default();
-    walk("", old, new, &mut acc);
+    walk("", old, new, true, &mut acc);
     let mut motion = Motion {
         joints_deg: acc.joints,
         joints: acc.joint_changes,
@@ -116,11 +116,32 @@ fn is_frame(v: &Value) -> bool {
         && v.field(ROT).is_some_and(|r| type_is(r, "orient"))
 }
 
-fn walk(path: &str, old: &Value, new: &Value, acc: &mut Acc) {
+/// Compares two values below `path`; with `frames` false, positions and
+/// orientations are compared as plain fields (a tool's load: its centre of
+/// gravity moving is not the tool moving).
+fn walk(path: &str, old: &Value, new: &Value, frames: bool, acc: &mut Acc) {
     if old == new {
         return;
     }
     match (old, new) {
+        (Value::Record { ty: a, fields: fa }, Value::Record { ty: b, fields: fb })
+            if !frames && a.eq_ignore_ascii_case(b) && fa.len() == fb.len() =>
+        {
+            let leaf = fa
+                .iter()
+                .all(|(_, v)| !matches!(v, Value::Record { .. } | Value::Array(_)));
+            if leaf {
+                acc.fields.push(FieldChange {
+                    path: path.to_owned(),
+                    old: old.to_string(),
+                    new: new.to_string(),
+                });
+            } else {
+                for ((name, x), (_, y)) in fa.iter().zip(fb) {
+                    walk(&join(path, name), x, y, false, acc);
+                }
+            }
+        }
         (Value::Record { ty: a, fields: fa }, Value::Record { ty: b, fields: fb })
             if a.eq_ignore_ascii_case(b) && fa.len() == fb.len() =>
         {
@@ -171,20 +192,22 @@ fn walk(path: &str, old: &Value, new: &Value, acc: &mut Acc) {
                     }
                     for ((name, x), (_, y)) in fa.iter().zip(fb) {
                         if !name.eq_ignore_ascii_case(TRANS) && !name.eq_ignore_ascii_case(ROT) {
-                            walk(&join(path, name), x, y, acc);
+                            walk(&join(path, name), x, y, true, acc);
                         }
                     }
                 }
                 _ => {
+                    let tool = ty == "tooldata";
                     for ((name, x), (_, y)) in fa.iter().zip(fb) {
-                        walk(&join(path, name), x, y, acc);
+                        let frames = !(tool && name.eq_ignore_ascii_case("tload"));
+                        walk(&join(path, name), x, y, frames, acc);
                     }
                 }
             }
         }
         (Value::Array(a), Value::Array(b)) if a.len() == b.len() => {
             for (i, (x, y)) in a.iter().zip(b).enumerate() {
-                walk(&format!("{path}{{{}}}", i + 1), x, y, acc);
+                walk(&format!("{path}{{{}}}", i + 1), x, y, frames, acc);
             }
         }
         _ => acc.fields.push(FieldChange {
