@@ -1,0 +1,268 @@
+//! `rapid diff` end to end: the built binary on the fixture pairs of
+//! `tests/diff/` (one per kind of change, each an `old` and a `new` side),
+//! in every format, and on git revisions of a scratch repository.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output, Stdio};
+
+mod support;
+use support::*;
+
+/// The fixture pairs.
+fn fixtures() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/diff")
+}
+
+const CASES: &[&str] = &[
+    "targets",
+    "routines",
+    "declarations",
+    "modules",
+    "layout",
+    "config",
+    "robotware",
+    "thresholds",
+];
+
+fn diff(dir: &Path, args: &[&str]) -> Output {
+    let mut all = vec!["diff"];
+    all.extend_from_slice(args);
+    rapid(dir, &all)
+}
+
+#[test]
+fn every_kind_of_change_in_every_format() {
+    for case in CASES {
+        let (old, new) = (format!("{case}/old"), format!("{case}/new"));
+        for format in ["human", "markdown", "json"] {
+            let out = diff(
+                &fixtures(),
+                &[&old, &new, "--format", format, "--exit-code"],
+            );
+            let expected = if *case == "layout" { 0 } else { 1 };
+            assert_eq!(out.status.code(), Some(expected), "{case}: {}", show(&out));
+            assert!(out.stderr.is_empty(), "{case}: {}", show(&out));
+            if format == "json" {
+                let v: serde_json::Value =
+                    serde_json::from_slice(&out.stdout).expect("the report is JSON");
+                assert_eq!(v["old"], old.as_str());
+            }
+            insta::assert_snapshot!(format!("diff_{case}_{format}"), text(&out.stdout));
+        }
+    }
+}
+
+#[test]
+fn the_fixture_sides_are_programs_the_checker_loads() {
+    // The fixtures are real RAPID: a syntax error would make their
+    // comparison meaningless.
+    let out = rapid(
+        &fixtures(),
+        &["check", ".", "--select", "E0", "--format", "concise"],
+    );
+    assert_eq!(out.status.code(), Some(0), "{}", show(&out));
+}
+
+#[test]
+fn small_moves_are_left_out_below_the_thresholds() {
+    let args = [
+        "thresholds/old",
+        "thresholds/new",
+        "--ignore-moves-below",
+        "0.1mm",
+        "--ignore-moves-below",
+        "0.05deg",
+        "--exit-code",
+    ];
+    let out = diff(&fixtures(), &args);
+    assert_eq!(out.status.code(), Some(1), "{}", show(&out));
+    let report = text(&out.stdout);
+    // p3 moved 0.5 mm; p4's configuration changed; p1 and p2 are small.
+    assert!(report.contains("p3") && report.contains("p4"), "{report}");
+    assert!(
+        !report.contains(" p1 ") && !report.contains(" p2 "),
+        "{report}"
+    );
+    assert!(report.contains("2 smaller moves left out"), "{report}");
+    // Only small moves: nothing changed beyond the thresholds.
+    let out = diff(
+        &fixtures(),
+        &[
+            "thresholds/old/Touch.mod",
+            "thresholds/new/Touch.mod",
+            "--ignore-moves-below",
+            "1",
+            "--ignore-moves-below",
+            "1deg",
+            "--exit-code",
+        ],
+    );
+    assert_eq!(out.status.code(), Some(1), "{}", show(&out));
+    assert!(text(&out.stdout).contains("conf [0,0,0,0] → [0,0,1,0]"));
+}
+
+#[test]
+fn bad_arguments_say_what_is_wrong() {
+    let out = diff(&fixtures(), &["targets/old", "nowhere/new"]);
+    assert_eq!(out.status.code(), Some(2), "{}", show(&out));
+    assert!(
+        text(&out.stderr).contains("`targets/old` is a path here"),
+        "{}",
+        show(&out)
+    );
+    let out = diff(&fixtures(), &["a", "b", "--ignore-moves-below", "far"]);
+    assert_eq!(out.status.code(), Some(2), "{}", show(&out));
+    assert!(
+        text(&out.stderr).contains("not an amount like 0.1mm"),
+        "{}",
+        show(&out)
+    );
+}
+
+fn git(dir: &Path, args: &[&str]) -> Output {
+    let out = Command::new("git")
+        .args([
+            "-c",
+            "user.name=t",
+            "-c",
+            "user.email=t@t",
+            "-c",
+            "commit.gpgsign=false",
+        ])
+        .args(args)
+        .current_dir(dir)
+        .stdin(Stdio::null())
+        .output()
+        .expect("git runs");
+    assert!(out.status.success(), "git {args:?}: {}", show(&out));
+    out
+}
+
+/// Copies a fixture side into `dir/cell`, replacing what was there.
+fn put(dir: &Path, side: &Path) {
+    let cell = dir.join("cell");
+    let _ = std::fs::remove_dir_all(&cell);
+    for path in all_files(side) {
+        let rel = path.strip_prefix(side).expect("below the side");
+        let to = cell.join(rel);
+        std::fs::create_dir_all(to.parent().expect("a folder")).expect("folder");
+        std::fs::copy(&path, &to).expect("copied");
+    }
+}
+
+fn all_files(dir: &Path) -> Vec<PathBuf> {
+    let mut out = Vec::new();
+    for entry in std::fs::read_dir(dir).expect("a folder").flatten() {
+        let p = entry.path();
+        if p.is_dir() {
+            out.extend(all_files(&p));
+        } else {
+            out.push(p);
+        }
+    }
+    out
+}
+
+/// The report without its first line (which names the sides).
+fn body(out: &Output) -> String {
+    let t = text(&out.stdout);
+    t.split_once('\n')
+        .map_or(t.clone(), |(_, rest)| rest.to_owned())
+}
+
+#[test]
+fn git_revisions_compare_as_their_folders_do() {
+    let dir = scratch("diff-git");
+    git(&dir, &["init", "-q"]);
+    // Two commits of a backup (the targets and configuration fixtures
+    // merged into one cell).
+    for side in ["old", "new"] {
+        put(&dir, &fixtures().join("config").join(side));
+        let targets = fixtures().join("targets").join(side).join("Cell.mod");
+        std::fs::copy(targets, dir.join("cell/RAPID/TASK1/PROGMOD/Cell.mod")).expect("copied");
+        git(&dir, &["add", "-A"]);
+        git(&dir, &["commit", "-q", "-m", side]);
+    }
+    std::fs::create_dir_all(dir.join("old")).expect("folder");
+    git(&dir, &["worktree", "add", "-q", "old", "HEAD~1"]);
+    let folders = diff(&dir, &["old/cell", "cell"]);
+    let revisions = diff(&dir, &["HEAD~1", "HEAD", "--", "cell"]);
+    assert_eq!(revisions.status.code(), Some(0), "{}", show(&revisions));
+    assert!(body(&folders).contains("Cell.mod"), "{}", show(&folders));
+    assert_eq!(body(&revisions), body(&folders));
+    assert!(text(&revisions.stdout).starts_with("rapid diff HEAD~1:cell → HEAD:cell"));
+    // From inside the folder, a revision against the working tree.
+    std::fs::write(
+        dir.join("cell/RAPID/TASK1/PROGMOD/Extra.mod"),
+        "MODULE Extra\nENDMODULE\n",
+    )
+    .expect("written");
+    let sub = dir.join("cell");
+    let worktree = diff(&sub, &["HEAD", "--format", "json", "--", "RAPID"]);
+    let v: serde_json::Value = serde_json::from_slice(&worktree.stdout).expect("JSON");
+    assert_eq!(v["new"], "RAPID (working tree)", "{}", show(&worktree));
+    assert_eq!(
+        v["tasks"][0]["modules"][0]["name"],
+        "Extra",
+        "{}",
+        show(&worktree)
+    );
+    // Not a revision, not a path.
+    let out = diff(&dir, &["nosuchrev", "HEAD"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(
+        text(&out.stderr).contains("`nosuchrev` is neither"),
+        "{}",
+        show(&out)
+    );
+}
+
+#[test]
+fn git_diff_shows_the_semantic_diff_through_a_driver() {
+    let dir = scratch("diff-driver");
+    git(&dir, &["init", "-q"]);
+    std::fs::write(dir.join(".gitattributes"), "*.mod diff=rapid\n").expect("written");
+    for side in ["old", "new"] {
+        let from = fixtures().join("targets").join(side).join("Cell.mod");
+        std::fs::copy(from, dir.join("Cell.mod")).expect("copied");
+        git(&dir, &["add", "-A"]);
+        git(&dir, &["commit", "-q", "-m", side]);
+    }
+    let driver = format!("{} diff --git-driver", env!("CARGO_BIN_EXE_rapid"));
+    let out = git(
+        &dir,
+        &[
+            "-c",
+            &format!("diff.rapid.command={driver}"),
+            "diff",
+            "HEAD~1",
+            "HEAD",
+        ],
+    );
+    let report = text(&out.stdout);
+    assert!(
+        report.starts_with("rapid diff a/Cell.mod → b/Cell.mod"),
+        "{report}"
+    );
+    assert!(
+        report.contains("pPick") && report.contains("5 mm"),
+        "{report}"
+    );
+    // A file added: its module is added.
+    std::fs::write(
+        dir.join("New.mod"),
+        "MODULE New\n  VAR num n := 1;\nENDMODULE\n",
+    )
+    .expect("written");
+    git(&dir, &["add", "-A"]);
+    let out = git(
+        &dir,
+        &[
+            "-c",
+            &format!("diff.rapid.command={driver}"),
+            "diff",
+            "--cached",
+        ],
+    );
+    assert!(text(&out.stdout).contains("New added"), "{}", show(&out));
+}
