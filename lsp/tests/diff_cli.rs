@@ -191,6 +191,33 @@ fn git_revisions_compare_as_their_folders_do() {
     assert!(body(&folders).contains("Cell.mod"), "{}", show(&folders));
     assert_eq!(body(&revisions), body(&folders));
     assert!(text(&revisions.stdout).starts_with("rapid diff HEAD~1:cell → HEAD:cell"));
+    // `git difftool --dir-diff` as the README sets it up: folders of the
+    // files that changed (the working tree's linked in), compared whole.
+    let tool = format!(
+        "difftool.rapid.cmd={} diff \"$LOCAL\" \"$REMOTE\"",
+        env!("CARGO_BIN_EXE_rapid")
+    );
+    let out = git(
+        &dir,
+        &[
+            "-c",
+            &tool,
+            "difftool",
+            "--dir-diff",
+            "--tool=rapid",
+            "HEAD~1",
+            "--",
+            "cell",
+        ],
+    );
+    let dir_diff = text(&out.stdout);
+    let (_, dir_body) = dir_diff.split_once('\n').unwrap_or_default();
+    assert_eq!(
+        dir_body.replace("cell/", ""),
+        body(&folders),
+        "{}",
+        show(&out)
+    );
     // From inside the folder, a revision against the working tree.
     std::fs::write(
         dir.join("cell/RAPID/TASK1/PROGMOD/Extra.mod"),

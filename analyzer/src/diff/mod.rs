@@ -204,19 +204,25 @@ impl Report {
             && self.builtins.as_ref().is_none_or(|b| b.changed.is_empty())
     }
 
-    /// Counts for a summary line.
+    /// Counts for a summary line: modules by status; routines, data and
+    /// types of the changed modules (an added or removed module brings or
+    /// takes all of its own).
     pub fn summary(&self) -> Summary {
         let mut s = Summary::default();
-        for t in &self.tasks {
-            for m in &t.modules {
-                s.modules += 1;
-                s.routines += m.routines.len();
-                s.types += m.types.len();
-                for d in &m.data {
-                    if d.motion.as_ref().is_some_and(Motion::is_move) {
-                        s.moves += 1;
-                    } else {
-                        s.data += 1;
+        for m in self.tasks.iter().flat_map(|t| &t.modules) {
+            match m.status {
+                Status::Added => s.modules_added += 1,
+                Status::Removed => s.modules_removed += 1,
+                Status::Changed => {
+                    s.modules_changed += 1;
+                    s.routines += m.routines.len();
+                    s.types += m.types.len();
+                    for d in &m.data {
+                        if d.motion.as_ref().is_some_and(Motion::is_move) {
+                            s.moves += 1;
+                        } else {
+                            s.data += 1;
+                        }
                     }
                 }
             }
@@ -230,12 +236,17 @@ impl Report {
 /// How many things changed, by kind.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
 pub struct Summary {
-    pub modules: usize,
+    pub modules_added: usize,
+    pub modules_removed: usize,
+    pub modules_changed: usize,
+    /// Routines added, removed or changed in the changed modules.
     pub routines: usize,
-    /// Data whose value moved a position, frame or joint.
+    /// Data of the changed modules whose value moved a position, frame or
+    /// joint.
     pub moves: usize,
-    /// Other data added, removed or changed.
+    /// Other data of the changed modules added, removed or changed.
     pub data: usize,
+    /// Records and aliases of the changed modules.
     pub types: usize,
     /// Configuration instances added, removed or changed.
     pub config: usize,

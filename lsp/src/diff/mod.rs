@@ -20,7 +20,9 @@ use std::process::ExitCode;
 
 use rapid_analyzer::diff::{Options, Report, compare};
 
-use crate::project::Disk;
+// Files are named as the paths given name them, not by their real place:
+// `git difftool --dir-diff` links the working tree's files into its folder.
+use crate::project::DiskAsNamed as Disk;
 
 #[derive(Debug, clap::Args)]
 #[command(after_help = "Examples:

@@ -178,7 +178,9 @@ fn summary_words(report: &Report) -> String {
             parts.push(format!("{n} {}", if n == 1 { one } else { many }));
         }
     };
-    count(s.modules, "module", "modules");
+    count(s.modules_added, "module added", "modules added");
+    count(s.modules_removed, "module removed", "modules removed");
+    count(s.modules_changed, "module changed", "modules changed");
     count(s.routines, "routine", "routines");
     count(s.moves, "position moved", "positions moved");
     count(s.data, "datum", "data");
@@ -188,7 +190,7 @@ fn summary_words(report: &Report) -> String {
     let mut out = if parts.is_empty() {
         "No changes".to_owned()
     } else {
-        format!("Changed: {}", parts.join(", "))
+        parts.join(", ")
     };
     if report.ignored_moves > 0 {
         out.push_str(&format!(
