@@ -102,6 +102,11 @@ impl<'a> Liner<'a> {
                     self.statement(child, inner, out);
                 }
             } else {
+                // `ENDPROC`, `ENDIF`...: a line of their own, even after an
+                // empty body.
+                if !child.is_named() && k.starts_with("end") {
+                    self.flush(&mut tokens, depth, out);
+                }
                 let mut comments = Vec::new();
                 self.tokens(child, &mut tokens, &mut comments);
                 // A comment inside a header goes after the header.

@@ -177,6 +177,13 @@ fn declarations_change_in_storage_type_and_value_and_come_and_go() {
         .map(|x| (x.name.as_str(), x.status))
         .collect();
     assert_eq!(routines, [("p", Status::Removed), ("q", Status::Added)]);
+    // An empty routine is its two lines.
+    let q: Vec<&str> = r.tasks[0].modules[0].routines[1].hunks[0]
+        .lines
+        .iter()
+        .map(|l| l.text.as_str())
+        .collect();
+    assert_eq!(q, ["PROC q()", "ENDPROC"]);
 }
 
 #[test]
