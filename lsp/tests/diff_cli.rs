@@ -53,6 +53,24 @@ fn every_kind_of_change_in_every_format() {
 }
 
 #[test]
+fn one_thread_reports_what_many_do() {
+    // Both sides and their files are read and reduced on the thread pool.
+    for case in ["targets", "modules", "config"] {
+        let (old, new) = (format!("{case}/old"), format!("{case}/new"));
+        let args = ["diff", old.as_str(), new.as_str(), "--format", "json"];
+        let many = rapid(&fixtures(), &args);
+        let one = Command::new(env!("CARGO_BIN_EXE_rapid"))
+            .args(args)
+            .current_dir(fixtures())
+            .env("RAYON_NUM_THREADS", "1")
+            .stdin(Stdio::null())
+            .output()
+            .expect("the rapid binary runs");
+        assert_eq!(text(&one.stdout), text(&many.stdout), "{case}");
+    }
+}
+
+#[test]
 fn the_fixture_sides_are_programs_the_checker_loads() {
     // The fixtures are real RAPID: a syntax error would make their
     // comparison meaningless.

@@ -243,7 +243,8 @@ fn data_diffs(
     if o.scope != n.scope {
         changed.push("scope");
     }
-    if fold(&o.ty) != fold(&n.ty) || o.dims != n.dims {
+    let dims = |d: &DataSnapshot| d.dims.iter().map(|l| l.key.clone()).collect::<Vec<_>>();
+    if fold(&o.ty) != fold(&n.ty) || dims(o) != dims(n) {
         changed.push("type");
     }
     let same_init = o.init.as_ref().map(|l| &l.key) == n.init.as_ref().map(|l| &l.key);

@@ -9,13 +9,16 @@
 //! come first, sorted by name, so that reordering them changes nothing.
 
 use std::collections::BTreeSet;
+use std::fmt::Write as _;
 use std::ops::Range;
 
 use tree_sitter::Node;
 
 use crate::names::fold;
 use crate::syntax::{field, kind};
-use crate::syntax_util::{field, is_compound_statement, is_simple_statement, kind as kind_of};
+use crate::syntax_util::{
+    field, is_compound_statement, is_simple_statement, kind as kind_of, walk_pruned,
+};
 use crate::text::LineIndex;
 
 /// One line as compared.
@@ -39,8 +42,21 @@ pub(crate) struct Liner<'a> {
     pub names: BTreeSet<String>,
 }
 
-/// Tokens gathered for one line: (range, key).
-type Tokens = Vec<(Range<usize>, String)>;
+/// How a token is compared.
+#[derive(Clone, Copy)]
+enum Key {
+    /// A name: folded.
+    Folded,
+    /// A keyword: upper case.
+    Upper,
+    /// As written (strings, comments, placeholders, punctuation).
+    Raw,
+    /// A number, by the bits of its value.
+    Number(u64),
+}
+
+/// Tokens gathered for one line.
+type Tokens = Vec<(Range<usize>, Key)>;
 
 impl<'a> Liner<'a> {
     pub fn new(text: &'a str, index: &'a LineIndex) -> Liner<'a> {
@@ -154,20 +170,28 @@ impl<'a> Liner<'a> {
         tokens.clear();
     }
 
-    fn line(&self, tokens: &[(Range<usize>, String)], depth: u16) -> Option<Line> {
+    fn line(&self, tokens: &[(Range<usize>, Key)], depth: u16) -> Option<Line> {
         let first = tokens.first()?;
         let mut key = String::new();
         let mut text = String::new();
         let mut end = first.0.start;
         for (range, k) in tokens {
+            let written = &self.text[range.clone()];
             if !key.is_empty() {
                 key.push(' ');
             }
-            key.push_str(k);
+            match k {
+                Key::Folded => key.extend(written.chars().map(|c| c.to_ascii_lowercase())),
+                Key::Upper => key.extend(written.chars().map(|c| c.to_ascii_uppercase())),
+                Key::Raw => key.push_str(written),
+                Key::Number(bits) => {
+                    let _ = write!(key, "#{bits:x}");
+                }
+            }
             if range.start > end && !text.is_empty() {
                 text.push(' ');
             }
-            text.push_str(&collapse(&self.text[range.clone()]));
+            text.push_str(&collapse(written));
             end = range.end;
         }
         Some(Line {
@@ -178,37 +202,40 @@ impl<'a> Liner<'a> {
         })
     }
 
-    /// The tokens under `node` in order, comments apart.
+    /// The tokens under `node` in order, comments apart (one cursor for
+    /// the whole walk).
     fn tokens<'t>(&mut self, node: Node<'t>, out: &mut Tokens, comments: &mut Vec<Node<'t>>) {
-        let k = kind_of(node);
-        if k == kind::COMMENT {
-            comments.push(node);
-            return;
-        }
-        if node.is_missing() || node.byte_range().is_empty() {
-            return;
-        }
-        let leaf = node.child_count() == 0 || k == kind::STRING || k == kind::NUMBER;
-        if !leaf {
-            let mut cursor = node.walk();
-            for child in node.children(&mut cursor) {
-                self.tokens(child, out, comments);
+        walk_pruned(node, &mut |n| {
+            let k = kind_of(n);
+            if k == kind::COMMENT {
+                comments.push(n);
+                return false;
             }
-            return;
-        }
-        let text = &self.text[node.byte_range()];
-        let key = match k {
-            kind::IDENTIFIER | kind::TYPE_IDENTIFIER => {
-                let name = fold(text);
-                self.names.insert(name.clone());
-                name
+            if n.is_missing() || n.byte_range().is_empty() {
+                return false;
             }
-            kind::NUMBER => number_key(text),
-            kind::STRING | kind::PLACEHOLDER => text.to_owned(),
-            _ if !node.is_named() => text.to_ascii_uppercase(),
-            _ => text.to_owned(),
-        };
-        out.push((node.byte_range(), key));
+            let leaf = n.child_count() == 0 || k == kind::STRING || k == kind::NUMBER;
+            if !leaf {
+                return true;
+            }
+            let written = &self.text[n.byte_range()];
+            let key = match k {
+                kind::IDENTIFIER | kind::TYPE_IDENTIFIER => {
+                    crate::names::with_folded(written, |name| {
+                        if !self.names.contains(name) {
+                            self.names.insert(name.to_owned());
+                        }
+                    });
+                    Key::Folded
+                }
+                kind::NUMBER => number_key(written),
+                kind::STRING | kind::PLACEHOLDER => Key::Raw,
+                _ if !n.is_named() => Key::Upper,
+                _ => Key::Raw,
+            };
+            out.push((n.byte_range(), key));
+            false
+        });
     }
 }
 
@@ -241,11 +268,12 @@ fn opens_block(k: &str) -> bool {
 }
 
 /// A number by its value where it reads as a decimal (`1.0`, `1.`, `1E0`
-/// are `1`), else as written in lower case (`0xFF`).
-fn number_key(text: &str) -> String {
+/// are `1`), else as written (`0xFF`, compared in any case: `0XFF`).
+fn number_key(text: &str) -> Key {
     match text.parse::<f64>() {
-        Ok(x) if x.is_finite() => format!("{x}"),
-        _ => text.to_ascii_lowercase(),
+        Ok(x) if x.is_finite() => Key::Number((x + 0.0).to_bits()),
+        _ if text.bytes().any(|b| b.is_ascii_uppercase()) => Key::Folded,
+        _ => Key::Raw,
     }
 }
 

@@ -120,9 +120,9 @@ pub struct DataSnapshot {
     pub line: usize,
     pub storage: Storage,
     pub scope: Scope,
-    /// The type as written (`robtarget`), and its dimensions' tokens.
+    /// The type as written (`robtarget`), and its dimensions.
     pub ty: String,
-    pub dims: Vec<String>,
+    pub dims: Vec<Line>,
     /// The initialiser as written (blanks collapsed) and as compared.
     pub init: Option<Line>,
     /// Its value, when the evaluator knows it.
@@ -140,7 +140,8 @@ impl DataSnapshot {
         let dims = if self.dims.is_empty() {
             String::new()
         } else {
-            format!("{{{}}}", self.dims.join(","))
+            let dims: Vec<&str> = self.dims.iter().map(|d| d.text.as_str()).collect();
+            format!("{{{}}}", dims.join(","))
         };
         format!(
             "{scope}{} {} {}{dims}",

@@ -9,7 +9,7 @@ use super::{DataSnapshot, ModuleSnapshot, RoutineSnapshot, TypeSnapshot};
 use crate::names::fold;
 use crate::syntax::{field, kind};
 use crate::syntax_util::{field, fields, kind as kind_of};
-use crate::task::Task;
+use crate::task::{Task, Unit};
 use crate::text::LineIndex;
 
 /// The modules of unit `unit` of `task` (the task its names resolve in:
@@ -19,7 +19,7 @@ pub fn modules_of(task: &Task, unit: usize, file: &str) -> Vec<ModuleSnapshot> {
     let Some(u) = task.units.get(unit) else {
         return Vec::new();
     };
-    let values = crate::consteval::module_data_values(task, unit);
+    let mut values = crate::consteval::module_data_values(task, unit);
     let index = LineIndex::new(&u.text);
     let text = u.text.as_str();
     let root = u.tree().root_node();
@@ -94,13 +94,15 @@ pub fn modules_of(task: &Task, unit: usize, file: &str) -> Vec<ModuleSnapshot> {
                     let Some(d) = module.data.get(i) else {
                         continue;
                     };
-                    // Every name of the declaration, for the built-ins used.
-                    let _ = liner.one_line(item, 0);
+                    // Its type is a name it uses (its value's are in `init`).
+                    if let Some(t) = &d.ty {
+                        liner.names.insert(fold(&t.name));
+                    }
                     let dims = field(item, field::DIMENSIONS)
                         .map(|l| {
                             fields(l, field::DIMENSION)
                                 .into_iter()
-                                .filter_map(|n| liner.one_line(n, 0).map(|l| l.key))
+                                .filter_map(|n| liner.one_line(n, 0))
                                 .collect()
                         })
                         .unwrap_or_default();
@@ -112,7 +114,10 @@ pub fn modules_of(task: &Task, unit: usize, file: &str) -> Vec<ModuleSnapshot> {
                         ty: d.ty.as_ref().map(|t| t.name.clone()).unwrap_or_default(),
                         dims,
                         init: field(item, field::VALUE).and_then(|v| liner.one_line(v, 0)),
-                        value: values.get(m).and_then(|v| v.get(i)).cloned().flatten(),
+                        value: values
+                            .get_mut(m)
+                            .and_then(|v| v.get_mut(i))
+                            .and_then(Option::take),
                     });
                 }
                 _ => {}
@@ -131,30 +136,48 @@ fn declared(module: &crate::items::Module) -> BTreeSet<String> {
         .collect()
 }
 
-/// The tasks of a workspace as snapshots: each file's modules (in the task
-/// that resolves its names, [`crate::workspace::Workspace::checks`]),
-/// grouped by task, each task named by `task_name` of its key and each
-/// file by `file_name` of its path; tasks in the order of their names.
-pub fn tasks_of(
-    workspace: &mut crate::workspace::Workspace,
-    task_name: &dyn Fn(&str) -> String,
-    file_name: &dyn Fn(&str) -> String,
-) -> Vec<super::TaskSnapshot> {
+/// The modules of `unit` in `task` ([`modules_of`] by the unit's path),
+/// its file named `file`: what [`tasks_of`] does for each file, which a
+/// caller may do in parallel.
+pub fn unit_modules(task: &Task, unit: &Unit, file: &str) -> Vec<ModuleSnapshot> {
+    match task.units.iter().position(|u| u.path == unit.path) {
+        Some(idx) => modules_of(task, idx, file),
+        None => Vec::new(),
+    }
+}
+
+/// Groups each file's modules by task name: tasks in the order of their
+/// names, modules in the order given.
+pub fn group(per_file: Vec<(String, Vec<ModuleSnapshot>)>) -> Vec<super::TaskSnapshot> {
     let mut tasks: std::collections::BTreeMap<String, super::TaskSnapshot> = Default::default();
-    for (task, unit) in workspace.checks() {
-        let Some(idx) = task.units.iter().position(|u| u.path == unit.path) else {
-            continue;
-        };
-        let name = task_name(&task.key);
+    for (name, modules) in per_file {
         let entry = tasks
             .entry(name.clone())
             .or_insert_with(|| super::TaskSnapshot {
                 name,
                 modules: Vec::new(),
             });
-        entry
-            .modules
-            .extend(modules_of(&task, idx, &file_name(&unit.path)));
+        entry.modules.extend(modules);
     }
     tasks.into_values().collect()
+}
+
+/// The tasks of a workspace as snapshots: each file's modules (in the task
+/// that resolves its names, [`crate::workspace::Workspace::checks`]),
+/// grouped by task, each task named by `task_name` of its key and each
+/// file by `file_name` of its path.
+pub fn tasks_of(
+    workspace: &mut crate::workspace::Workspace,
+    task_name: &dyn Fn(&str) -> String,
+    file_name: &dyn Fn(&str) -> String,
+) -> Vec<super::TaskSnapshot> {
+    let per_file = workspace
+        .checks()
+        .iter()
+        .map(|(task, unit)| {
+            let modules = unit_modules(task, unit, &file_name(&unit.path));
+            (task_name(&task.key), modules)
+        })
+        .collect();
+    group(per_file)
 }

@@ -7,6 +7,7 @@ use std::sync::Arc;
 use rapid_analyzer::controller::ControllerOverride;
 use rapid_analyzer::diff::{Snapshot, snapshot};
 use rapid_analyzer::text::{Decoded, decode};
+use rayon::prelude::*;
 
 use crate::project::{self, Discovery, Environment, Kind, Sources, Walked};
 
@@ -64,7 +65,17 @@ pub fn side(env: &dyn Environment, root: &Path) -> Result<Side, String> {
             rest.replace('\\', "/")
         }
     };
-    let tasks = snapshot::tasks_of(&mut loaded.workspace, &relative, &relative);
+    // Each file reduced on the thread pool.
+    let per_file = loaded
+        .workspace
+        .checks()
+        .par_iter()
+        .map(|(task, unit)| {
+            let modules = snapshot::unit_modules(task, unit, &relative(&unit.path));
+            (relative(&task.key), modules)
+        })
+        .collect();
+    let tasks = snapshot::group(per_file);
     let controller = loaded
         .workspace
         .tasks()

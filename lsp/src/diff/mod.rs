@@ -166,9 +166,11 @@ fn sides(args: &DiffArgs, cwd: &Path) -> Result<Sides, String> {
             old: old_arg.to_owned(),
             new: new.to_owned(),
         };
-        let old = load::side(&Disk, &load::disk_root(cwd, Path::new(old_arg)))?;
-        let new = load::side(&Disk, &load::disk_root(cwd, Path::new(new)))?;
-        return Ok((old, new, titles));
+        let (old, new) = rayon::join(
+            || load::side(&Disk, &load::disk_root(cwd, Path::new(old_arg))),
+            || load::side(&Disk, &load::disk_root(cwd, Path::new(new))),
+        );
+        return Ok((old?, new?, titles));
     }
     if args.paths.len() > 1 {
         return Err("give one path after `--`".to_owned());
