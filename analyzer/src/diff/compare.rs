@@ -115,8 +115,13 @@ fn module_diff(
         data_diffs(a, b, options, ignored, &mut data);
     }
     sort_data(&mut data);
+    // A file the same on both sides: its routines and types are too.
+    let same_text = o.same_text || n.same_text;
     let mut routines = Vec::new();
-    for (a, b) in pairs(&o.routines, &n.routines, |r| fold(&r.name)) {
+    for (a, b) in pairs(&o.routines, &n.routines, |r| fold(&r.name))
+        .into_iter()
+        .filter(|_| !same_text)
+    {
         let (name, kind) = match (a, b) {
             (_, Some(r)) | (Some(r), None) => (r.name.clone(), r.kind),
             (None, None) => continue,
@@ -129,7 +134,10 @@ fn module_diff(
         ));
     }
     let mut types = Vec::new();
-    for (a, b) in pairs(&o.types, &n.types, |t| fold(&t.name)) {
+    for (a, b) in pairs(&o.types, &n.types, |t| fold(&t.name))
+        .into_iter()
+        .filter(|_| !same_text)
+    {
         let (name, kind) = match (a, b) {
             (_, Some(t)) | (Some(t), None) => (t.name.clone(), type_kind(&t.lines)),
             (None, None) => continue,

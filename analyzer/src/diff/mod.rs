@@ -93,6 +93,10 @@ pub struct ModuleSnapshot {
     pub names: BTreeSet<String>,
     /// The names the module declares (data, routines, types), folded.
     pub declared: BTreeSet<String>,
+    /// Reduced as [`snapshot::Depth::SameText`]: its file is the same on
+    /// the other side, so its routines and types are not compared (they
+    /// have no lines) and only its data's values are.
+    pub same_text: bool,
 }
 
 /// A routine as the list of its lines.

@@ -12,10 +12,28 @@ use crate::syntax_util::{field, fields, kind as kind_of};
 use crate::task::{Task, Unit};
 use crate::text::LineIndex;
 
+/// What to reduce a file to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Depth {
+    /// Everything: statement lines, initialisers, names used.
+    Full,
+    /// The file's text is the same on the other side: its routines and
+    /// initialisers need no comparing (only its data's values, which may
+    /// come from other files), and the names it uses are not collected.
+    SameText,
+}
+
+/// A digest of a file's text, to tell the files whose text is the same on
+/// both sides ([`Depth::SameText`]).
+pub fn text_digest(text: &str) -> u64 {
+    crate::items::hash_of(&text)
+}
+
 /// The modules of unit `unit` of `task` (the task its names resolve in:
 /// its group, or its view when it clashes with others), their file named
 /// `file`. Data values come from the constant evaluator.
-pub fn modules_of(task: &Task, unit: usize, file: &str) -> Vec<ModuleSnapshot> {
+pub fn modules_of(task: &Task, unit: usize, file: &str, depth: Depth) -> Vec<ModuleSnapshot> {
+    let full = depth == Depth::Full;
     let Some(u) = task.units.get(unit) else {
         return Vec::new();
     };
@@ -49,6 +67,7 @@ pub fn modules_of(task: &Task, unit: usize, file: &str) -> Vec<ModuleSnapshot> {
                         .collect()
                 })
                 .unwrap_or_default(),
+            same_text: !full,
             ..ModuleSnapshot::default()
         };
         let data_at: HashMap<usize, usize> = module
@@ -74,7 +93,11 @@ pub fn modules_of(task: &Task, unit: usize, file: &str) -> Vec<ModuleSnapshot> {
                             _ => "TRAP",
                         },
                         line: line_of(item.start_byte()),
-                        lines: liner.routine(item),
+                        lines: if full {
+                            liner.routine(item)
+                        } else {
+                            Vec::new()
+                        },
                     });
                 }
                 kind::RECORD_DECLARATION | kind::ALIAS_DECLARATION => {
@@ -84,7 +107,11 @@ pub fn modules_of(task: &Task, unit: usize, file: &str) -> Vec<ModuleSnapshot> {
                     snap.types.push(TypeSnapshot {
                         name: text[name.byte_range()].to_owned(),
                         line: line_of(item.start_byte()),
-                        lines: liner.one_line(item, 0).into_iter().collect(),
+                        lines: if full {
+                            liner.one_line(item, 0).into_iter().collect()
+                        } else {
+                            Vec::new()
+                        },
                     });
                 }
                 kind::DATA_DECLARATION => {
@@ -113,7 +140,9 @@ pub fn modules_of(task: &Task, unit: usize, file: &str) -> Vec<ModuleSnapshot> {
                         scope: d.scope,
                         ty: d.ty.as_ref().map(|t| t.name.clone()).unwrap_or_default(),
                         dims,
-                        init: field(item, field::VALUE).and_then(|v| liner.one_line(v, 0)),
+                        init: field(item, field::VALUE)
+                            .filter(|_| full)
+                            .and_then(|v| liner.one_line(v, 0)),
                         value: values
                             .get_mut(m)
                             .and_then(|v| v.get_mut(i))
@@ -139,9 +168,9 @@ fn declared(module: &crate::items::Module) -> BTreeSet<String> {
 /// The modules of `unit` in `task` ([`modules_of`] by the unit's path),
 /// its file named `file`: what [`tasks_of`] does for each file, which a
 /// caller may do in parallel.
-pub fn unit_modules(task: &Task, unit: &Unit, file: &str) -> Vec<ModuleSnapshot> {
+pub fn unit_modules(task: &Task, unit: &Unit, file: &str, depth: Depth) -> Vec<ModuleSnapshot> {
     match task.units.iter().position(|u| u.path == unit.path) {
-        Some(idx) => modules_of(task, idx, file),
+        Some(idx) => modules_of(task, idx, file, depth),
         None => Vec::new(),
     }
 }
@@ -175,7 +204,7 @@ pub fn tasks_of(
         .checks()
         .iter()
         .map(|(task, unit)| {
-            let modules = unit_modules(task, unit, &file_name(&unit.path));
+            let modules = unit_modules(task, unit, &file_name(&unit.path), Depth::Full);
             (task_name(&task.key), modules)
         })
         .collect();

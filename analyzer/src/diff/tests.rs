@@ -368,3 +368,53 @@ fn built_ins_whose_signature_changed_between_versions() {
     assert_eq!(names, ["EGMSetupUC"]);
     assert!(b.changed[0].new.contains("APTR") && !b.changed[0].old.contains("APTR"));
 }
+
+#[test]
+fn a_file_the_same_on_both_sides_is_compared_by_its_values_only() {
+    let a = "MODULE A\n  CONST robtarget pTool := Offs(pBase, 0, 0, 10);\n  PROC p()\n    MoveL pTool, v100, fine, tool0;\n  ENDPROC\nENDMODULE\n";
+    let b_old = "MODULE B\n  CONST robtarget pBase := [[0,0,0],[1,0,0,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];\nENDMODULE\n";
+    let b_new = b_old.replace("[[0,0,0]", "[[0,0,4]");
+    // Reduced as `rapid diff` does: A.mod's text is the same on both sides.
+    let reduce = |b: &str| {
+        let mut ws = Workspace::new();
+        ws.set_file("t/A.mod", a.to_owned());
+        ws.set_file("t/B.mod", b.to_owned());
+        let per_file = ws
+            .checks()
+            .iter()
+            .map(|(task, unit)| {
+                let depth = if unit.path.ends_with("A.mod") {
+                    snapshot::Depth::SameText
+                } else {
+                    snapshot::Depth::Full
+                };
+                (
+                    "t".to_owned(),
+                    snapshot::unit_modules(task, unit, &unit.path, depth),
+                )
+            })
+            .collect();
+        Snapshot {
+            tasks: snapshot::group(per_file),
+            ..Snapshot::default()
+        }
+    };
+    let fast = compare(&reduce(b_old), &reduce(&b_new), &Options::default());
+    let full = compare(
+        &side(&[("t/A.mod", a), ("t/B.mod", b_old)]),
+        &side(&[("t/A.mod", a), ("t/B.mod", &b_new)]),
+        &Options::default(),
+    );
+    let names = |r: &Report| -> Vec<(String, bool)> {
+        data_of(r)
+            .iter()
+            .map(|d| (d.name.clone(), d.derived))
+            .collect()
+    };
+    assert_eq!(
+        names(&fast),
+        [("pTool".into(), true), ("pBase".into(), false)]
+    );
+    assert_eq!(names(&fast), names(&full));
+    assert!(fast.tasks[0].modules.iter().all(|m| m.routines.is_empty()));
+}

@@ -1,6 +1,7 @@
 //! One side of a comparison read through the project loader: a backup, a
 //! task folder or a module, on the disk or in a git revision.
 
+use std::collections::HashSet;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
@@ -11,9 +12,13 @@ use rayon::prelude::*;
 
 use crate::project::{self, Discovery, Environment, Kind, Sources, Walked};
 
-/// What a side is.
+/// A side read and parsed, not yet reduced ([`Side::reduce`]).
 pub struct Side {
-    pub snapshot: Snapshot,
+    workspace: rapid_analyzer::workspace::Workspace,
+    /// The analyzer's name of the side's folder: files and tasks are named
+    /// by their path below it.
+    base: String,
+    configs: Vec<(String, rapid_analyzer::cfg::CfgFile)>,
     /// Files that could not be read, with why (a module skipped makes the
     /// comparison incomplete: said, never silent).
     pub problems: Vec<String>,
@@ -44,7 +49,7 @@ pub fn side(env: &dyn Environment, root: &Path) -> Result<Side, String> {
         found: Some(&found),
         ..Sources::default()
     };
-    let mut loaded = project::load(env, &sources, &ControllerOverride::default());
+    let loaded = project::load(env, &sources, &ControllerOverride::default());
     for (r, path) in loaded.read.iter().zip(&found.files) {
         if let Err(why) = r {
             problems.push(format!("{}: {why}", path.display()));
@@ -54,9 +59,33 @@ pub fn side(env: &dyn Environment, root: &Path) -> Result<Side, String> {
         Kind::File(_) => env.name(root.parent().unwrap_or(Path::new(""))),
         _ => env.name(root),
     };
-    let relative = |name: &str| -> String {
+    let mut side = Side {
+        workspace: loaded.workspace,
+        base,
+        configs: Vec::new(),
+        problems,
+    };
+    if kind == Kind::Folder {
+        side.configs = configs(env, root, &|name| side.relative(name));
+    }
+    Ok(side)
+}
+
+/// A side with nothing (a file git says did not exist: `/dev/null`).
+pub fn nothing() -> Side {
+    Side {
+        workspace: rapid_analyzer::workspace::Workspace::new(),
+        base: String::new(),
+        configs: Vec::new(),
+        problems: Vec::new(),
+    }
+}
+
+impl Side {
+    /// A name below the side's folder (`.` for the folder itself).
+    fn relative(&self, name: &str) -> String {
         let rest = name
-            .strip_prefix(base.as_str())
+            .strip_prefix(self.base.as_str())
             .map(|r| r.trim_start_matches(['/', '\\']))
             .unwrap_or(name);
         if rest.is_empty() {
@@ -64,37 +93,51 @@ pub fn side(env: &dyn Environment, root: &Path) -> Result<Side, String> {
         } else {
             rest.replace('\\', "/")
         }
-    };
-    // Each file reduced on the thread pool.
-    let per_file = loaded
-        .workspace
-        .checks()
-        .par_iter()
-        .map(|(task, unit)| {
-            let modules = snapshot::unit_modules(task, unit, &relative(&unit.path));
-            (relative(&task.key), modules)
-        })
-        .collect();
-    let tasks = snapshot::group(per_file);
-    let controller = loaded
-        .workspace
-        .tasks()
-        .first()
-        .map(|t| loaded.workspace.controller_of_task(&t.key))
-        .unwrap_or_default();
-    let configs = match kind {
-        Kind::Folder => configs(env, root, &relative),
-        _ => Vec::new(),
-    };
-    Ok(Side {
-        snapshot: Snapshot {
-            tasks,
-            configs,
+    }
+
+    /// The RobotWare version and options the side's backup names.
+    pub fn controller(&mut self) -> rapid_analyzer::controller::ControllerInfo {
+        let first = self.workspace.tasks().first().map(|t| t.key.clone());
+        first
+            .map(|k| self.workspace.controller_of_task(&k))
+            .unwrap_or_default()
+    }
+
+    /// Each module file by its path below the side, with its text's digest.
+    pub fn files(&self) -> HashSet<(String, u64)> {
+        self.workspace
+            .paths()
+            .filter_map(|p| self.workspace.unit(p))
+            .map(|u| (self.relative(&u.path), snapshot::text_digest(&u.text)))
+            .collect()
+    }
+
+    /// The side reduced to what is compared, each file on the thread pool;
+    /// a file in `same` (its path and digest) is the same on the other side
+    /// and is reduced to its data's values only.
+    pub fn reduce(mut self, same: &HashSet<(String, u64)>) -> Snapshot {
+        let controller = self.controller();
+        let checks = self.workspace.checks();
+        let per_file = checks
+            .par_iter()
+            .map(|(task, unit)| {
+                let file = self.relative(&unit.path);
+                let depth = if same.contains(&(file.clone(), snapshot::text_digest(&unit.text))) {
+                    snapshot::Depth::SameText
+                } else {
+                    snapshot::Depth::Full
+                };
+                let modules = snapshot::unit_modules(task, unit, &file, depth);
+                (self.relative(&task.key), modules)
+            })
+            .collect();
+        Snapshot {
+            tasks: snapshot::group(per_file),
+            configs: std::mem::take(&mut self.configs),
             robotware: controller.robotware,
             options: controller.options,
-        },
-        problems,
-    })
+        }
+    }
 }
 
 /// Every `.cfg` file below `root`, read and named by its path below it.
@@ -130,14 +173,6 @@ fn configs(
     }
     out.sort_by(|a, b| a.0.cmp(&b.0));
     out
-}
-
-/// An empty side (a file git says did not exist: `/dev/null`).
-pub fn nothing() -> Side {
-    Side {
-        snapshot: Snapshot::default(),
-        problems: Vec::new(),
-    }
 }
 
 /// The working tree's paths, for a side read from the disk.

@@ -18,7 +18,9 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
-use rapid_analyzer::diff::{Options, Report, compare};
+use std::collections::HashSet;
+
+use rapid_analyzer::diff::{Options, Report, Snapshot, compare};
 
 // Files are named as the paths given name them, not by their real place:
 // `git difftool --dir-diff` links the working tree's files into its folder.
@@ -113,6 +115,7 @@ pub fn run(args: DiffArgs) -> ExitCode {
     for p in old.problems.iter().chain(&new.problems) {
         let _ = writeln!(stderr, "rapid diff: {p}");
     }
+    let (old, new) = reduce(old, new);
     let mut options = Options::default();
     for t in &args.ignore_moves_below {
         match *t {
@@ -120,7 +123,7 @@ pub fn run(args: DiffArgs) -> ExitCode {
             Threshold::Deg(x) => options.rotations_below_deg = x,
         }
     }
-    let report = compare(&old.snapshot, &new.snapshot, &options);
+    let report = compare(&old, &new, &options);
     let stdout = std::io::stdout();
     let colours = anstream::AutoStream::choice(&stdout);
     let mut buffered = std::io::BufWriter::new(stdout.lock());
@@ -141,6 +144,19 @@ pub fn run(args: DiffArgs) -> ExitCode {
     } else {
         ExitCode::SUCCESS
     }
+}
+
+/// Both sides reduced, at once. A file with the same path and text on both
+/// sides is reduced to its data's values (its routines cannot differ),
+/// unless the two backups name different RobotWare versions: then every
+/// name the program uses is needed, to list the built-ins that changed.
+fn reduce(mut old: load::Side, mut new: load::Side) -> (Snapshot, Snapshot) {
+    let versions = (old.controller().robotware, new.controller().robotware);
+    let same: HashSet<(String, u64)> = match versions {
+        (Some(a), Some(b)) if a != b => HashSet::new(),
+        _ => old.files().intersection(&new.files()).cloned().collect(),
+    };
+    rayon::join(|| old.reduce(&same), || new.reduce(&same))
 }
 
 /// What the two sides are called in the report.
