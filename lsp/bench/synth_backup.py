@@ -8,11 +8,12 @@ handlers), with names and numbers from a seeded generator, so the output is
 the same on every run. Each backup has one task of N modules of about 300
 lines (the corpus's average module is 305 lines), its SYSPAR (EIO.cfg with
 200 signals, MOC.cfg, SYS.cfg) and BACKINFO. The new backup differs as a
-real one does after a few weeks: one target in ten moved, one routine in
-twenty with a changed statement, five signals remapped, one module added,
-one removed.
+real one does after a few weeks: in CHANGED modules (default 10) one target
+in four re-taught and a statement edited, five signals remapped, one module
+added, one removed; the other modules are as they were.
 
-    python3 lsp/bench/synth_backup.py 100 /tmp/backups
+    python3 lsp/bench/synth_backup.py 100 /tmp/backups        # 10 modules changed
+    python3 lsp/bench/synth_backup.py 100 /tmp/all 100        # every module changed
     rapid diff /tmp/backups/old /tmp/backups/new
 """
 
@@ -110,12 +111,14 @@ def backup(root, modules, remapped):
 def changed(lines, rng):
     """The module a few weeks later: targets re-taught, a statement edited."""
     out = []
+    edited = False
     for line in lines:
-        if "PERS robtarget" in line and rng.random() < 0.1:
+        if "PERS robtarget" in line and rng.random() < 0.25:
             name = line.split(":=")[0]
             line = f"{name}:= {robtarget(rng)};"
-        elif line.strip().startswith("WaitTime 0.5") and rng.random() < 0.05 * 4:
+        elif line.strip().startswith("WaitTime 0.5") and not edited:
             line = line.replace("0.5", "0.8")
+            edited = True
         out.append(line)
     return out
 
@@ -123,9 +126,16 @@ def changed(lines, rng):
 def main():
     n = int(sys.argv[1]) if len(sys.argv) > 1 else 100
     root = sys.argv[2] if len(sys.argv) > 2 else "backups"
+    n_changed = int(sys.argv[3]) if len(sys.argv) > 3 else 10
     rng = random.Random(20261128)
     old = {i: module(i, rng) for i in range(n)}
-    new = {i: changed(lines, rng) for i, lines in old.items() if i != 0}
+    # Every (n // n_changed)-th module changed; module 0 removed.
+    step = max(1, n // max(1, n_changed))
+    new = {
+        i: changed(lines, rng) if i % step == 1 % step else lines
+        for i, lines in old.items()
+        if i != 0
+    }
     new[n] = module(n, rng)
     backup(os.path.join(root, "old"), old, set())
     backup(os.path.join(root, "new"), new, {3, 40, 77, 120, 199})
