@@ -22,6 +22,7 @@ const CASES: &[&str] = &[
     "config",
     "robotware",
     "thresholds",
+    "reach",
 ];
 
 fn diff(dir: &Path, args: &[&str]) -> Output {
@@ -117,6 +118,78 @@ fn small_moves_are_left_out_below_the_thresholds() {
     );
     assert_eq!(out.status.code(), Some(1), "{}", show(&out));
     assert!(text(&out.stdout).contains("conf [0,0,0,0] → [0,0,1,0]"));
+}
+
+#[test]
+fn a_moved_target_says_whether_the_backups_robot_still_reaches_it() {
+    // MOC.cfg names an IRB 120: the answer is the check's (E601 at the
+    // same move), with the move's tool and work object.
+    let out = diff(&fixtures(), &["reach/old", "reach/new", "--format", "json"]);
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("the report is JSON");
+    let data = &v["tasks"][0]["modules"][0]["data"];
+    let reach = |name: &str| {
+        data.as_array()
+            .and_then(|d| d.iter().find(|d| d["name"] == name))
+            .map(|d| d["motion"]["reach"].clone())
+            .unwrap_or_default()
+    };
+    assert_eq!(reach("pPick")["reachable"], true, "{}", show(&out));
+    assert_eq!(
+        reach("pPick")["detail"],
+        "conf [0,0,0,0] on the IRB 120-3/0.58"
+    );
+    assert_eq!(reach("pPlace")["reachable"], false);
+    let why = reach("pPlace")["detail"]
+        .as_str()
+        .unwrap_or_default()
+        .to_owned();
+    assert!(
+        why.contains("329.2 mm out of the arm's reach") && why.contains("MoveL at Cell.mod:14"),
+        "{why}"
+    );
+    assert!(reach("pSpare").is_null(), "no move uses pSpare");
+    let check = rapid(&fixtures(), &["check", "reach/new", "--format", "concise"]);
+    assert!(text(&check.stdout).contains("Cell.mod:14:11: error[E601] `pPlace` is 329.2 mm"));
+    // Without a robot (no MOC.cfg), no answer.
+    let out = diff(&fixtures(), &["reach/old/RAPID", "reach/new/RAPID"]);
+    assert!(!text(&out.stdout).contains("reachable"), "{}", show(&out));
+}
+
+#[test]
+fn the_exit_code_is_0_when_every_move_is_below_the_thresholds() {
+    let dir = scratch("diff-exit-code");
+    let module = |x: &str| {
+        format!(
+            "MODULE M\n  PERS robtarget p := [[{x},0,0],[1,0,0,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];\nENDMODULE\n"
+        )
+    };
+    std::fs::write(dir.join("old.mod"), module("100")).expect("written");
+    std::fs::write(dir.join("new.mod"), module("100.05")).expect("written");
+    let args = [
+        "old.mod",
+        "new.mod",
+        "--exit-code",
+        "--ignore-moves-below",
+        "0.1mm",
+    ];
+    let out = diff(&dir, &args);
+    assert_eq!(out.status.code(), Some(0), "{}", show(&out));
+    assert!(
+        text(&out.stdout).contains("1 smaller move left out"),
+        "{}",
+        show(&out)
+    );
+    let out = diff(
+        &dir,
+        &[
+            "old.mod",
+            "new.mod",
+            "--exit-code",
+            "--ignore-moves-below",
+            "0.01mm",
+        ],
+    );
+    assert_eq!(out.status.code(), Some(1), "{}", show(&out));
 }
 
 #[test]

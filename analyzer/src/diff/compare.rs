@@ -238,7 +238,6 @@ fn data_diffs(
                 derived: false,
                 motion: None,
                 fields: Vec::new(),
-                new_value: if added { d.value.clone() } else { None },
             });
             return;
         }
@@ -290,7 +289,6 @@ fn data_diffs(
         derived: false,
         motion: None,
         fields: Vec::new(),
-        new_value: n.value.clone(),
     };
     if value_changed {
         diff.changed.push("value");
@@ -354,7 +352,6 @@ fn elements(
                         derived: !init_changed,
                         motion: change.motion,
                         fields: change.fields,
-                        new_value: Some(y.clone()),
                     });
                 }
             }

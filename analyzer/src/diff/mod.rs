@@ -42,6 +42,7 @@ pub mod builtins;
 mod compare;
 pub mod config;
 pub mod lines;
+mod reach;
 pub mod snapshot;
 #[cfg(test)]
 mod tests;
@@ -353,9 +354,6 @@ pub struct DataDiff {
     /// Other components whose value changed (`v_tcp`, `tload.mass`).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub fields: Vec<FieldChange>,
-    /// The new value, for [`Report::annotate_reach`].
-    #[serde(skip)]
-    pub new_value: Option<rapid_evaluator::Value>,
 }
 
 /// A declaration and value on one side.
@@ -425,13 +423,13 @@ impl Motion {
     }
 }
 
-/// Whether a robot reaches a target, as a robot model answers (filled in
-/// by the caller through [`Report::annotate_reach`]; this crate has no
-/// model of the robot).
+/// Whether the new side's robot reaches a moved target at the moves that
+/// use it ([`Report::annotate_reach`]).
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
 pub struct Reach {
     pub reachable: bool,
-    /// The configuration the model reaches it in (`[0,-1,0,0]`), or why not.
+    /// The configuration the robot reaches it in (`conf [0,-1,0,0] on the
+    /// IRB 120`), or why not and at which move.
     pub detail: String,
 }
 
@@ -451,26 +449,4 @@ pub struct FieldChange {
     pub path: String,
     pub old: String,
     pub new: String,
-}
-
-impl Report {
-    /// Fills in [`Motion::reach`] of every moved `robtarget`: `reach` is
-    /// asked with the task's name and the new value (as RAPID writes it)
-    /// and answers when it has a robot model for that task. The seam for a
-    /// robot model: this crate computes no kinematics.
-    pub fn annotate_reach(&mut self, reach: &dyn Fn(&str, &DataDiff) -> Option<Reach>) {
-        for t in &mut self.tasks {
-            for m in &mut t.modules {
-                for d in &mut m.data {
-                    if d.motion.is_none() {
-                        continue;
-                    }
-                    let r = reach(&t.name, d);
-                    if let Some(motion) = d.motion.as_mut() {
-                        motion.reach = r;
-                    }
-                }
-            }
-        }
-    }
 }

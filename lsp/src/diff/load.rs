@@ -115,7 +115,7 @@ impl Side {
     /// The side reduced to what is compared, each file on the thread pool;
     /// a file in `same` (its path and digest) is the same on the other side
     /// and is reduced to its data's values only.
-    pub fn reduce(mut self, same: &HashSet<(String, u64)>) -> Snapshot {
+    pub fn reduce(&mut self, same: &HashSet<(String, u64)>) -> Snapshot {
         let controller = self.controller();
         let checks = self.workspace.checks();
         let per_file = checks
@@ -136,6 +136,17 @@ impl Side {
             configs: std::mem::take(&mut self.configs),
             robotware: controller.robotware,
             options: controller.options,
+        }
+    }
+}
+
+impl Side {
+    /// Says of each moved target of `report` whether this side's task
+    /// robot still reaches it, and in which configuration (the analyzer's
+    /// [`rapid_analyzer::diff::Report::annotate_reach`]).
+    pub fn annotate_reach(&mut self, report: &mut rapid_analyzer::diff::Report) {
+        for task in self.workspace.tasks() {
+            report.annotate_reach(&self.relative(&task.key), &task);
         }
     }
 }

@@ -105,7 +105,7 @@ fn parse_threshold(s: &str) -> Result<Threshold, String> {
 pub fn run(args: DiffArgs) -> ExitCode {
     let mut stderr = anstream::stderr();
     let cwd = std::env::current_dir().unwrap_or_else(|_| PathBuf::from("."));
-    let (old, new, titles) = match sides(&args, &cwd) {
+    let (mut old, mut new, titles) = match sides(&args, &cwd) {
         Ok(s) => s,
         Err(e) => {
             let _ = writeln!(stderr, "rapid diff: {e}");
@@ -115,7 +115,7 @@ pub fn run(args: DiffArgs) -> ExitCode {
     for p in old.problems.iter().chain(&new.problems) {
         let _ = writeln!(stderr, "rapid diff: {p}");
     }
-    let (old, new) = reduce(old, new);
+    let (old_snapshot, new_snapshot) = reduce(&mut old, &mut new);
     let mut options = Options::default();
     for t in &args.ignore_moves_below {
         match *t {
@@ -123,7 +123,8 @@ pub fn run(args: DiffArgs) -> ExitCode {
             Threshold::Deg(x) => options.rotations_below_deg = x,
         }
     }
-    let report = compare(&old, &new, &options);
+    let mut report = compare(&old_snapshot, &new_snapshot, &options);
+    new.annotate_reach(&mut report);
     let stdout = std::io::stdout();
     let colours = anstream::AutoStream::choice(&stdout);
     let mut buffered = std::io::BufWriter::new(stdout.lock());
@@ -150,7 +151,7 @@ pub fn run(args: DiffArgs) -> ExitCode {
 /// sides is reduced to its data's values (its routines cannot differ),
 /// unless the two backups name different RobotWare versions: then every
 /// name the program uses is needed, to list the built-ins that changed.
-fn reduce(mut old: load::Side, mut new: load::Side) -> (Snapshot, Snapshot) {
+fn reduce(old: &mut load::Side, new: &mut load::Side) -> (Snapshot, Snapshot) {
     let versions = (old.controller().robotware, new.controller().robotware);
     let same: HashSet<(String, u64)> = match versions {
         (Some(a), Some(b)) if a != b => HashSet::new(),
