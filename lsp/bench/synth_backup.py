@@ -7,7 +7,7 @@ synth_module.py (targets, procedures with moves, IF/FOR/WHILE/TEST, error
 handlers), with names and numbers from a seeded generator, so the output is
 the same on every run. Each backup has one task of N modules of about 300
 lines (the corpus's average module is 305 lines), its SYSPAR (EIO.cfg with
-200 signals, MOC.cfg, SYS.cfg) and BACKINFO. The new backup differs as a
+200 signals, MOC.cfg with an IRB 2400, SYS.cfg) and BACKINFO. The new backup differs as a
 real one does after a few weeks: in CHANGED modules (default 10) one target
 in four re-taught and a statement edited, five signals remapped, one module
 added, one removed; the other modules are as they were.
@@ -73,6 +73,10 @@ MOC = [
     "MECHANICAL_UNIT:",
     "",
     '      -name "ROB_1" -use_robot "ROB_1" -stand_by_state  -activate_at_start_up',
+    "#",
+    "ROBOT:",
+    "",
+    '      -name "ROB_1" -use_robot_type "ROB1_2400_1.55_16" -use_joint_0 "rob1_1"',
     "#",
     "ARM:",
     "",

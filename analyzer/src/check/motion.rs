@@ -20,7 +20,7 @@ use crate::sema::def::Def;
 use crate::sema::signature::{Signature, Target};
 use crate::syntax::{field, kind};
 use crate::syntax_util::field;
-use crate::task::Task;
+use crate::task::{Task, Unit};
 
 /// Does the task turn configuration monitoring off for linear (`ConfL`)
 /// and joint (`ConfJ`) moves anywhere?
@@ -94,11 +94,12 @@ pub struct MoveReach {
     pub result: Result<Solution, ReachError>,
 }
 
-/// Every move target of `task` whose target, tool and work object have
-/// known values, with what the task's robot makes of it: the check of
-/// `target-out-of-reach`, `joint-out-of-range` and
-/// `configuration-mismatch` run with a log (none without a robot).
-pub fn move_reaches(task: &Task) -> Vec<MoveReach> {
+/// Every move target in the units of `task` that `wanted` lets through,
+/// whose target, tool and work object have known values, with what the
+/// task's robot makes of it: the check of `target-out-of-reach`,
+/// `joint-out-of-range` and `configuration-mismatch` run with a log (none
+/// without a robot).
+pub fn move_reaches(task: &Task, wanted: &dyn Fn(&Unit) -> bool) -> Vec<MoveReach> {
     if task.robot.is_none() {
         return Vec::new();
     }
@@ -110,6 +111,9 @@ pub fn move_reaches(task: &Task) -> Vec<MoveReach> {
     let selection = Selection::of(|r| mine.iter().any(|m| m.code == r.code));
     let mut out = Vec::new();
     for (i, unit) in task.units.iter().enumerate() {
+        if !wanted(unit) {
+            continue;
+        }
         let mut cx = Cx::new(task, i, unit);
         cx.selection = selection.clone();
         cx.reaches = Some(Vec::new());

@@ -31,15 +31,28 @@ impl Report {
         let Some(diff) = self.tasks.iter_mut().find(|t| t.name == task_name) else {
             return;
         };
-        let moved = diff
+        // The names of the moved data (an element's array): only the
+        // files that mention one are checked.
+        let moved: Vec<String> = diff
             .modules
             .iter()
             .flat_map(|m| &m.data)
-            .any(|d| d.motion.as_ref().is_some_and(|m| m.is_move()));
-        if !moved {
+            .filter(|d| d.motion.as_ref().is_some_and(|m| m.is_move()))
+            .map(|d| {
+                d.name
+                    .split('{')
+                    .next()
+                    .unwrap_or_default()
+                    .to_ascii_lowercase()
+            })
+            .collect();
+        if moved.is_empty() {
             return;
         }
-        let reaches = move_reaches(task);
+        let reaches = move_reaches(task, &|unit| {
+            let text = unit.text.to_ascii_lowercase();
+            moved.iter().any(|name| text.contains(name.as_str()))
+        });
         let model = &robot.robot.model.name;
         for d in diff.modules.iter_mut().flat_map(|m| &mut m.data) {
             let Some(motion) = d.motion.as_mut() else {
