@@ -95,7 +95,7 @@ pub fn moc_robots(file: &CfgFile) -> Vec<MocRobot> {
             .next()
             .and_then(|d| d.parse().ok())
             .filter(|a| (1..=6).contains(a));
-        let (Some(n), Some(axis)) = (robot_number(&name), axis) else {
+        let (Some(n), Some(axis)) = (robot_number(name), axis) else {
             continue;
         };
         if let Some(r) = robots.iter_mut().find(|r| robot_number(&r.name) == Some(n)) {
