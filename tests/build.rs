@@ -6,7 +6,7 @@
 
 use std::path::PathBuf;
 
-fn main() {
+pub fn main() {
     println!("cargo::rustc-check-cfg=cfg(no_corpus)");
     println!("cargo::rerun-if-env-changed=RAPID_CORPUS");
     let dir = match std::env::var_os("RAPID_CORPUS") {

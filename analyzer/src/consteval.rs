@@ -232,6 +232,38 @@ pub fn eval_in(
     })
 }
 
+/// The values of the module data of unit `unit` of `task`, per module
+/// and datum in the order of [`crate::items::Module::data`]: a `CONST`'s
+/// value, or the value a `PERS` or `VAR` declaration gives (the value a
+/// backup saved), typed by its declaration; `None` where it is not known
+/// (no initial value, an unknown name, a run-time error). Names resolve as
+/// at the module's top level.
+pub fn module_data_values(task: &Task, unit: usize) -> Vec<Vec<Option<Value>>> {
+    let Some(u) = task.units.get(unit) else {
+        return Vec::new();
+    };
+    let inits = InitCache::new(task);
+    let options = EnvOptions::initial_values();
+    u.items
+        .modules
+        .iter()
+        .map(|m| {
+            let at = Some((unit, m.name_range.start));
+            with_routine(task, at, options, None, Some(&inits), |env| {
+                m.data
+                    .iter()
+                    .map(|d| {
+                        let name = Expr::Name(d.name.clone());
+                        rapid_evaluator::eval_with(&name, None, env, &options.evaluator_options())
+                            .ok()
+                            .map(|e| e.value)
+                    })
+                    .collect()
+            })
+        })
+        .collect()
+}
+
 /// Is a call of `name` a call of the built-in function, as seen from
 /// module `module` of unit `unit` (no user routine of that name hides it)?
 /// With `at` `None`, only global routines hide built-ins.

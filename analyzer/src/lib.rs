@@ -5,10 +5,12 @@
 pub mod body;
 pub mod carry;
 pub mod catalogue;
+pub mod cfg;
 pub mod check;
 pub mod consteval;
 pub mod controller;
 pub mod diagnostic;
+pub mod diff;
 pub mod edit;
 pub mod format;
 pub mod ide;

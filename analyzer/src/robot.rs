@@ -11,7 +11,7 @@ use std::sync::Arc;
 use nalgebra::{Isometry3, Quaternion, Translation3, UnitQuaternion};
 use rapid_robot::{JointLimits, Lookup, Robot};
 
-use crate::task::{option_value, section_entries};
+use crate::cfg::{CfgFile, Instance};
 
 /// A `ROBOT` instance of `MOC.cfg` with its arms' joint bounds.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -29,8 +29,8 @@ pub struct MocRobot {
     pub coordinated: Option<String>,
 }
 
-fn number(entry: &str, option: &str) -> Option<f64> {
-    option_value(entry, option)?.parse().ok()
+fn number(entry: &Instance, attr: &str) -> Option<f64> {
+    entry.get(attr)?.trim().parse().ok()
 }
 
 /// The robot number of an instance name: `ROB_2` and `rob2_3` give 2.
@@ -43,21 +43,24 @@ fn robot_number(name: &str) -> Option<u32> {
 
 /// The robots of a `MOC.cfg` (none when it has no `ROBOT` section).
 pub fn parse_moc_robots(cfg: &str) -> Vec<MocRobot> {
+    moc_robots(&crate::cfg::parse(cfg))
+}
+
+/// The robots of a configuration file already read ([`crate::cfg`]).
+pub fn moc_robots(file: &CfgFile) -> Vec<MocRobot> {
     let mut robots: Vec<MocRobot> = Vec::new();
-    for e in section_entries(cfg, "ROBOT") {
-        let (Some(name), Some(robot_type)) = (
-            option_value(&e, "-name"),
-            option_value(&e, "-use_robot_type"),
-        ) else {
+    for e in file.instances("ROBOT") {
+        let (Some(name), Some(robot_type)) = (e.get("name"), e.get("use_robot_type")) else {
             continue;
         };
-        let m = |o: &str| number(&e, o).unwrap_or(0.0) * 1000.0;
-        let q = |o: &str, d: f64| number(&e, o).unwrap_or(d);
+        let (name, robot_type) = (name.to_owned(), robot_type.to_owned());
+        let m = |o: &str| number(e, o).unwrap_or(0.0) * 1000.0;
+        let q = |o: &str, d: f64| number(e, o).unwrap_or(d);
         let rotation = Quaternion::new(
-            q("-base_frame_orient_u0", 1.0),
-            q("-base_frame_orient_u1", 0.0),
-            q("-base_frame_orient_u2", 0.0),
-            q("-base_frame_orient_u3", 0.0),
+            q("base_frame_orient_u0", 1.0),
+            q("base_frame_orient_u1", 0.0),
+            q("base_frame_orient_u2", 0.0),
+            q("base_frame_orient_u3", 0.0),
         );
         let rotation = if rotation.norm() > 0.5 {
             UnitQuaternion::from_quaternion(rotation)
@@ -70,17 +73,20 @@ pub fn parse_moc_robots(cfg: &str) -> Vec<MocRobot> {
             bounds: Default::default(),
             base: Isometry3::from_parts(
                 Translation3::new(
-                    m("-base_frame_pos_x"),
-                    m("-base_frame_pos_y"),
-                    m("-base_frame_pos_z"),
+                    m("base_frame_pos_x"),
+                    m("base_frame_pos_y"),
+                    m("base_frame_pos_z"),
                 ),
                 rotation,
             ),
-            coordinated: option_value(&e, "-base_frame_coordinated").filter(|s| !s.is_empty()),
+            coordinated: e
+                .get("base_frame_coordinated")
+                .filter(|s| !s.is_empty())
+                .map(str::to_owned),
         });
     }
-    for e in section_entries(cfg, "ARM") {
-        let Some(name) = option_value(&e, "-name") else {
+    for e in file.instances("ARM") {
+        let Some(name) = e.get("name") else {
             continue;
         };
         // `rob1_3`: robot 1, axis 3.
@@ -89,13 +95,13 @@ pub fn parse_moc_robots(cfg: &str) -> Vec<MocRobot> {
             .next()
             .and_then(|d| d.parse().ok())
             .filter(|a| (1..=6).contains(a));
-        let (Some(n), Some(axis)) = (robot_number(&name), axis) else {
+        let (Some(n), Some(axis)) = (robot_number(name), axis) else {
             continue;
         };
         if let Some(r) = robots.iter_mut().find(|r| robot_number(&r.name) == Some(n)) {
             r.bounds[axis - 1] = (
-                number(&e, "-lower_joint_bound"),
-                number(&e, "-upper_joint_bound"),
+                number(e, "lower_joint_bound"),
+                number(e, "upper_joint_bound"),
             );
         }
     }

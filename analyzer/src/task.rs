@@ -857,168 +857,93 @@ impl TaskModule {
     }
 }
 
-/// Reads a configuration file: the signals of `EIO.cfg`, the mechanical
-/// units of `MOC.cfg`, the tasks and task modules of `SYS.cfg` (whatever the
-/// file is called).
+/// Reads a configuration file ([`crate::cfg`]): the signals of `EIO.cfg`,
+/// the mechanical units of `MOC.cfg`, the tasks and task modules of
+/// `SYS.cfg` (whatever the file is called).
 pub fn parse_config(cfg: &str) -> Config {
-    let has_signals = cfg.lines().any(|l| {
-        let t = l.trim();
-        t.ends_with(':') && !t.starts_with('-') && t.to_ascii_uppercase().contains("SIGNAL")
-    });
-    let task_settings: Vec<TaskSettings> = section_entries(cfg, "CAB_TASKS")
-        .iter()
+    config_of(&crate::cfg::parse(cfg))
+}
+
+/// What a task's checks need of a configuration file already read.
+pub fn config_of(file: &crate::cfg::CfgFile) -> Config {
+    let has_signals = file.types.iter().any(is_signal_type);
+    let task_settings: Vec<TaskSettings> = file
+        .instances("CAB_TASKS")
         .filter_map(|e| {
-            let kind = match option_value(e, "-Type").map(|t| t.to_ascii_uppercase()) {
+            let kind = match e.get("Type").map(|t| t.to_ascii_uppercase()) {
                 Some(t) if t == "SEMISTATIC" => TaskKind::SemiStatic,
                 Some(t) if t == "STATIC" => TaskKind::Static,
                 _ => TaskKind::Normal,
             };
             Some(TaskSettings {
-                name: option_value(e, "-Name")?,
+                name: e.get("Name")?.to_owned(),
                 kind,
-                entry: option_value(e, "-Entry"),
-                motion: e
-                    .split_whitespace()
-                    .any(|w| w.eq_ignore_ascii_case("-MotionTask")),
+                entry: e.get("Entry").map(str::to_owned),
+                motion: e.has("MotionTask"),
             })
         })
         .collect();
     let tasks = task_settings.iter().map(|t| t.name.clone()).collect();
-    let task_modules = section_entries(cfg, "CAB_TASK_MODULES")
-        .iter()
+    let task_modules = file
+        .instances("CAB_TASK_MODULES")
         .filter_map(|e| {
-            let file = option_value(e, "-File")?;
-            let task = option_value(e, "-Task").filter(|_| !e.contains("-AllTask"));
+            let file = e.get("File")?.to_owned();
+            let task = e
+                .get("Task")
+                .filter(|_| !e.has("AllTask"))
+                .map(str::to_owned);
             Some(TaskModule { file, task })
         })
         .collect();
+    let mecunits = file
+        .instances("MECHANICAL_UNIT")
+        .filter_map(|e| e.get("name").map(fold))
+        .collect();
     Config {
-        signals: has_signals.then(|| parse_eio_signals(cfg)),
-        mecunits: parse_moc_units(cfg),
+        signals: has_signals.then(|| signals_of(file)),
+        mecunits,
         tasks,
         task_modules,
-        robots: crate::robot::parse_moc_robots(cfg),
+        robots: crate::robot::moc_robots(file),
         task_settings,
     }
 }
 
-/// The entries of a section of a configuration file (`NAME:` then entries
-/// starting with `-`, continued over lines that end in `\`), each as one
-/// line.
-pub(crate) fn section_entries(cfg: &str, section: &str) -> Vec<String> {
-    let mut out = Vec::new();
-    let mut inside = false;
-    let mut entry = String::new();
-    let mut continued = false;
-    for line in cfg.lines() {
-        let t = line.trim();
-        if !continued && t.ends_with(':') && !t.starts_with('-') && !t.contains(' ') {
-            if !entry.is_empty() {
-                out.push(std::mem::take(&mut entry));
-            }
-            inside = t[..t.len() - 1].eq_ignore_ascii_case(section);
-            continue;
-        }
-        if !inside {
-            continue;
-        }
-        if t.starts_with('-') && !continued && !entry.is_empty() {
-            out.push(std::mem::take(&mut entry));
-        }
-        continued = t.ends_with('\\');
-        entry.push(' ');
-        entry.push_str(t.trim_end_matches('\\'));
-    }
-    if !entry.trim().is_empty() {
-        out.push(entry);
-    }
-    out
-}
-
-/// The `-name` of every entry of the `MECHANICAL_UNIT:` section, folded.
-fn parse_moc_units(cfg: &str) -> Vec<String> {
-    let mut out = Vec::new();
-    let mut in_units = false;
-    for line in cfg.lines() {
-        let t = line.trim();
-        if t.ends_with(':') && !t.starts_with('-') && !t.contains(' ') {
-            in_units = t.eq_ignore_ascii_case("MECHANICAL_UNIT:");
-            continue;
-        }
-        if in_units {
-            let lower = t.to_ascii_lowercase();
-            let mut rest = lower.as_str();
-            while let Some(at) = rest.find("-name ") {
-                let value = rest[at + 6..].trim_start();
-                let name = match value.strip_prefix('"') {
-                    Some(q) => q.split('"').next().unwrap_or_default(),
-                    None => value.split_whitespace().next().unwrap_or_default(),
-                };
-                if !name.is_empty() {
-                    out.push(name.to_owned());
-                }
-                rest = &rest[at + 6..];
-            }
-        }
-    }
-    out
+/// Is this a type of I/O signals (its name holds `SIGNAL`: `EIO_SIGNAL`,
+/// `EIO_USER_SIGNAL`)?
+pub fn is_signal_type(t: &crate::cfg::CfgType) -> bool {
+    t.name.to_ascii_uppercase().contains("SIGNAL")
 }
 
 /// The signals declared in an I/O configuration file (`EIO.cfg`): every
-/// entry of a section whose name holds `SIGNAL`, with its `-Name` and
-/// `-SignalType` (DI, DO, AI, AO, GI, GO). Entries may continue over lines
-/// ending in `\`.
+/// instance of a type whose name holds `SIGNAL`, with its `-Name` and
+/// `-SignalType` (DI, DO, AI, AO, GI, GO).
 pub fn parse_eio_signals(cfg: &str) -> Signals {
-    let mut out = HashMap::new();
-    let mut in_signals = false;
-    let mut entry = String::new();
-    let flush = |entry: &mut String, out: &mut Signals| {
-        if let Some(name) = option_value(entry, "-Name") {
-            let ty = match option_value(entry, "-SignalType")
-                .map(|t| t.to_ascii_uppercase())
-                .as_deref()
-            {
-                Some("DI") => "signaldi",
-                Some("DO") => "signaldo",
-                Some("AI") => "signalai",
-                Some("AO") => "signalao",
-                Some("GI") => "signalgi",
-                Some("GO") => "signalgo",
-                _ => "signaldi",
-            };
-            out.insert(fold(&name), ty);
-        }
-        entry.clear();
-    };
-    for line in cfg.lines() {
-        let trimmed = line.trim();
-        if trimmed.ends_with(':') && !trimmed.starts_with('-') && !trimmed.contains(' ') {
-            flush(&mut entry, &mut out);
-            in_signals = trimmed.to_ascii_uppercase().contains("SIGNAL");
-            continue;
-        }
-        if !in_signals {
-            continue;
-        }
-        if trimmed.starts_with("-Name") {
-            flush(&mut entry, &mut out);
-        }
-        entry.push(' ');
-        entry.push_str(trimmed.trim_end_matches('\\'));
-    }
-    flush(&mut entry, &mut out);
-    out
+    signals_of(&crate::cfg::parse(cfg))
 }
 
-/// The value of `-Option "value"` (or `-Option value`) in a config entry.
-pub(crate) fn option_value(entry: &str, option: &str) -> Option<String> {
-    let at = entry.find(&format!("{option} "))?;
-    let rest = entry[at + option.len()..].trim_start();
-    let value = match rest.strip_prefix('"') {
-        Some(q) => q.split('"').next().unwrap_or_default(),
-        None => rest.split_whitespace().next().unwrap_or_default(),
-    };
-    (!value.is_empty()).then(|| value.to_owned())
+fn signals_of(file: &crate::cfg::CfgFile) -> Signals {
+    let mut out = HashMap::new();
+    for e in file
+        .types
+        .iter()
+        .filter(|t| is_signal_type(t))
+        .flat_map(|t| &t.instances)
+    {
+        let Some(name) = e.get("Name") else {
+            continue;
+        };
+        let ty = match e.get("SignalType").map(str::to_ascii_uppercase).as_deref() {
+            Some("DO") => "signaldo",
+            Some("AI") => "signalai",
+            Some("AO") => "signalao",
+            Some("GI") => "signalgi",
+            Some("GO") => "signalgo",
+            _ => "signaldi",
+        };
+        out.insert(fold(name), ty);
+    }
+    out
 }
 
 #[cfg(test)]

@@ -579,3 +579,50 @@ fn chained_edits_recheck_like_fresh_checks() {
     }
     assert!(compared > 500, "only {compared} comparisons");
 }
+
+/// `check::move_reaches` (what `rapid diff` says of a moved target's
+/// reach) is the motion check's own answer: on the fixtures of its three
+/// rules, every move it finds unreachable is a diagnostic at that target,
+/// and every such diagnostic a move it finds unreachable.
+#[test]
+fn move_reaches_agree_with_the_motion_rules() {
+    let motion = [
+        "target-out-of-reach",
+        "joint-out-of-range",
+        "configuration-mismatch",
+    ];
+    let mut judged = 0;
+    for fixture in fixtures() {
+        if !motion.iter().any(|m| fixture.name.starts_with(m)) {
+            continue;
+        }
+        let mut ws = fixture.workspace();
+        for task in ws.tasks() {
+            let reaches = rapid_analyzer::check::move_reaches(&task, &|_| true);
+            judged += reaches.len();
+            for (i, unit) in task.units.iter().enumerate() {
+                let failed: BTreeSet<usize> = reaches
+                    .iter()
+                    .filter(|r| r.unit == i && r.result.is_err())
+                    .map(|r| r.offset)
+                    .collect();
+                let mut reported: BTreeSet<usize> = ws
+                    .diagnostics(&unit.path)
+                    .iter()
+                    .filter(|d| motion.contains(&d.rule.name))
+                    .map(|d| d.range.start)
+                    .collect();
+                // A joint target (`MoveAbsJ`) is checked against the
+                // working ranges, with no position to reach: not logged.
+                reported.retain(|at| {
+                    let line_start = unit.text[..*at].rfind('\n').map_or(0, |n| n + 1);
+                    !unit.text[line_start..*at]
+                        .to_ascii_lowercase()
+                        .contains("moveabsj")
+                });
+                assert_eq!(failed, reported, "{} {}", fixture.name, unit.path);
+            }
+        }
+    }
+    assert!(judged > 3, "the fixtures judge moves ({judged})");
+}

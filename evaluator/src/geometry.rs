@@ -311,3 +311,93 @@ pub fn isometry_parts(iso: &Isometry3<f64>) -> ([f64; 3], [f64; 4]) {
     let q = iso.rotation;
     ([t.x, t.y, t.z], [q.w, q.i, q.j, q.k])
 }
+
+/// The distance in mm between two `pos` values (or the origins of two
+/// pose-like values: `pose`, `robtarget`); `None` when either is neither.
+pub fn distance_mm(old: &Value, new: &Value) -> Option<f64> {
+    let at = |v: &Value| vec_of(v.field("trans").unwrap_or(v)).ok();
+    Some((at(new)? - at(old)?).norm())
+}
+
+/// The angle in degrees (0 to 180) of the rotation that turns one
+/// orientation into another: of two `orient` values, or of the `rot`
+/// components of two pose-like values. Computed from the relative
+/// quaternion's vector part and scalar (`2 atan2(|v|, |w|)`), which stays
+/// accurate for tiny angles where `acos` does not; `q` and `-q` are one
+/// orientation. `None` when either is not an orientation or is not
+/// normalised ([`unit_quat`]).
+pub fn rotation_deg(old: &Value, new: &Value) -> Option<f64> {
+    let orient = |v: &Value| orient_of(v.field("rot").unwrap_or(v)).ok();
+    let (a, b) = (unit_quat(orient(old)?).ok()?, unit_quat(orient(new)?).ok()?);
+    // One orientation written twice: no turn, not the rounding of one.
+    if orient(old) == orient(new) {
+        return Some(0.0);
+    }
+    let r = a.inverse() * b;
+    let v = r.imag().norm();
+    Some((2.0 * v.atan2(r.w.abs())).to_degrees())
+}
+
+/// The frame a work object (`wobjdata`) puts its targets in: its user
+/// frame `uframe` times its object frame `oframe`, as a `pose`.
+pub fn wobj_frame(wobj: &Value) -> Option<Value> {
+    let user = iso_of(wobj.field("uframe")?).ok()?;
+    let object = iso_of(wobj.field("oframe")?).ok()?;
+    pose_value(&(user * object), false).ok()
+}
+
+#[cfg(test)]
+mod change_tests {
+    use super::*;
+
+    fn pose(t: [f32; 3], q: [f32; 4]) -> Value {
+        Value::pose(t, q)
+    }
+
+    #[test]
+    fn distances_and_angles_between_frames() {
+        let a = pose([0.0, 0.0, 0.0], [1.0, 0.0, 0.0, 0.0]);
+        let b = pose([3.0, 4.0, 0.0], [0.6, 0.0, 0.0, 0.8]);
+        assert_eq!(distance_mm(&a, &b), Some(5.0));
+        // About z by twice atan(0.8 / 0.6).
+        let angle = rotation_deg(&a, &b).expect("an angle");
+        assert!((angle - 106.260_205).abs() < 1e-4, "{angle}");
+        // -q is the same orientation.
+        let c = pose([0.0; 3], [-1.0, 0.0, 0.0, 0.0]);
+        assert_eq!(rotation_deg(&a, &c), Some(0.0));
+        // A tiny turn is measured, not lost to rounding: 0.01 degrees.
+        let half = (0.005f64).to_radians();
+        let d = pose([0.0; 3], [half.cos() as f32, half.sin() as f32, 0.0, 0.0]);
+        let tiny = rotation_deg(&a, &d).expect("an angle");
+        assert!((tiny - 0.01).abs() < 1e-4, "{tiny}");
+        // Unusable orientations and non-frames give nothing.
+        let bad = pose([0.0; 3], [0.0; 4]);
+        assert_eq!(rotation_deg(&a, &bad), None);
+        assert_eq!(distance_mm(&a, &Value::Num(1.0)), None);
+        assert_eq!(
+            distance_mm(&Value::pos(1.0, 1.0, 1.0), &Value::pos(1.0, 1.0, 2.0)),
+            Some(1.0)
+        );
+    }
+
+    #[test]
+    fn a_work_object_frame_is_user_times_object() {
+        let wobj = Value::Record {
+            ty: "wobjdata".into(),
+            fields: vec![
+                (
+                    "uframe".into(),
+                    pose([100.0, 0.0, 0.0], [0.6, 0.0, 0.0, 0.8]),
+                ),
+                (
+                    "oframe".into(),
+                    pose([10.0, 0.0, 0.0], [1.0, 0.0, 0.0, 0.0]),
+                ),
+            ],
+        };
+        let f = wobj_frame(&wobj).expect("a frame");
+        // cos and sin of that turn are -0.28 and 0.96.
+        let origin = Value::pos(97.2, 9.6, 0.0);
+        assert!(distance_mm(&f, &origin).expect("a distance") < 1e-4);
+    }
+}

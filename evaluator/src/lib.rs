@@ -92,7 +92,10 @@ pub use env::{EmptyEnv, Env, Lookup, MapEnv, VarKind, predefined};
 pub use error::{ErrorCode, EvalError};
 pub use expr::{Arg, BinOp, Expr, Type, UnOp};
 pub use functions::{FUNCTIONS, is_function};
-pub use geometry::{euler_zyx_deg, iso_of, orient_value, pos_value, pose_value, unit_quat};
+pub use geometry::{
+    distance_mm, euler_zyx_deg, iso_of, orient_value, pos_value, pose_value, rotation_deg,
+    unit_quat, wobj_frame,
+};
 pub use literal::{MAX_STRING_LEN, parse_num_literal, parse_string_literal};
 pub use literal_value::parse_data_literal;
 pub use types::{builtin_record_layout, is_builtin_num_alias, is_builtin_string_alias};

@@ -6,6 +6,7 @@ mod builtins;
 mod check;
 mod config;
 mod dap;
+mod diff;
 mod eval;
 mod fmt;
 mod mcp;
@@ -53,6 +54,10 @@ enum Command {
     /// loopback) that gives AI assistants the checker, fixes, catalogue,
     /// evaluator and simulated controller.
     Mcp(mcp::McpArgs),
+    /// Show what really changed between two backups, task folders,
+    /// modules or git revisions: modules, routines, data, moved targets,
+    /// configuration.
+    Diff(diff::DiffArgs),
     /// Run the test routines of RAPID programs (test_* procedures, modules
     /// named *_test) on a simulated controller.
     Test(test_cmd::TestArgs),
@@ -82,5 +87,6 @@ fn main() -> ExitCode {
         Command::Test(args) => test_cmd::run(args),
         Command::Dap(args) => dap::run(args),
         Command::Mcp(args) => mcp::run(args),
+        Command::Diff(args) => diff::run(args),
     }
 }

@@ -24,6 +24,7 @@ pub(crate) mod suggest;
 #[cfg(test)]
 pub(crate) use at::checker_type_of;
 pub use cache::StmtCache;
+pub use motion::{MoveReach, move_reaches, reach_target};
 pub(crate) use place::Place;
 pub(crate) use suggest::Kind;
 
@@ -131,6 +132,9 @@ pub(crate) struct Cx<'t> {
     /// Whether the task turns configuration monitoring off anywhere
     /// (`ConfL\Off`, `ConfJ\Off`), found on the first move checked.
     pub(crate) conf_off: Option<motion::ConfOff>,
+    /// The moves' targets as [`motion::check`] judged them, when asked for
+    /// ([`move_reaches`]).
+    pub(crate) reaches: Option<Vec<MoveReach>>,
     /// Signatures of the routines called so far, by the address of their
     /// declaration (and whether it is declared in the task).
     signatures: HashMap<(usize, bool), std::rc::Rc<crate::sema::signature::Signature>>,
@@ -192,6 +196,7 @@ impl<'t> Cx<'t> {
             reused_signals: HashMap::new(),
             inits: None,
             conf_off: None,
+            reaches: None,
             signatures: HashMap::new(),
             clean_literals: HashSet::new(),
         }

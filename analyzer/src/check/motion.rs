@@ -9,17 +9,18 @@
 //! statement's key does not hold. It runs only in tasks with a robot.
 
 use rapid_evaluator::{Options, Type, Value};
-use rapid_robot::frames::{self, Tool, WObj};
-use rapid_robot::{ReachError, violation};
+use rapid_robot::frames::{self, RobTarget, Tool, WObj};
+use rapid_robot::{ReachError, Robot, Solution, violation};
 use tree_sitter::Node;
 
 use super::Cx;
 use crate::consteval::{EnvOptions, is_builtin_call, with_env};
-use crate::rules;
+use crate::rules::{self, Selection};
 use crate::sema::def::Def;
 use crate::sema::signature::{Signature, Target};
 use crate::syntax::{field, kind};
 use crate::syntax_util::field;
+use crate::task::{Task, Unit};
 
 /// Does the task turn configuration monitoring off for linear (`ConfL`)
 /// and joint (`ConfJ`) moves anywhere?
@@ -62,6 +63,64 @@ fn conf_off(cx: &mut Cx<'_>) -> ConfOff {
     }
     cx.conf_off = Some(c);
     c
+}
+
+/// Where a move's target puts the robot: its flange through the work
+/// object's frames, the tool's TCP and the robot's base; a joint solution
+/// in any configuration within the working ranges, then (`use_conf`: the
+/// configuration is monitored) in the target's `confdata`.
+pub fn reach_target(
+    robot: &Robot,
+    target: &RobTarget,
+    tool: &Tool,
+    wobj: &WObj,
+    use_conf: bool,
+) -> Result<Solution, ReachError> {
+    let flange = frames::flange_in_base(&target.pose, tool, wobj, &robot.base);
+    robot.move_to(&flange, use_conf.then_some(&target.conf))
+}
+
+/// One target of a move as the check judged it ([`move_reaches`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct MoveReach {
+    /// The target as written (`pPick`, `Offs(pPick, 0, 0, 50)`).
+    pub target: String,
+    /// The instruction (`MoveL`).
+    pub instruction: String,
+    /// The unit and byte offset of the target.
+    pub unit: usize,
+    pub offset: usize,
+    /// The joint solution the controller would use, or why there is none.
+    pub result: Result<Solution, ReachError>,
+}
+
+/// Every move target in the units of `task` that `wanted` lets through,
+/// whose target, tool and work object have known values, with what the
+/// task's robot makes of it: the check of `target-out-of-reach`,
+/// `joint-out-of-range` and `configuration-mismatch` run with a log (none
+/// without a robot).
+pub fn move_reaches(task: &Task, wanted: &dyn Fn(&Unit) -> bool) -> Vec<MoveReach> {
+    if task.robot.is_none() {
+        return Vec::new();
+    }
+    let mine = [
+        &rules::target_out_of_reach::RULE,
+        &rules::joint_out_of_range::RULE,
+        &rules::configuration_mismatch::RULE,
+    ];
+    let selection = Selection::of(|r| mine.iter().any(|m| m.code == r.code));
+    let mut out = Vec::new();
+    for (i, unit) in task.units.iter().enumerate() {
+        if !wanted(unit) {
+            continue;
+        }
+        let mut cx = Cx::new(task, i, unit);
+        cx.selection = selection.clone();
+        cx.reaches = Some(Vec::new());
+        cx.check();
+        out.extend(cx.reaches.take().unwrap_or_default());
+    }
+    out
 }
 
 /// Is this a joint move (configuration monitored by `ConfJ`)?
@@ -188,14 +247,21 @@ pub(crate) fn check<'t>(cx: &mut Cx<'t>, node: Node<'t>) {
         let Some(Ok(target)) = evaluate(n, "robtarget").map(|v| frames::robtarget(&v)) else {
             continue;
         };
-        let flange = frames::flange_in_base(&target.pose, &tool, &wobj, &robot.robot.base);
-        let result = robot
-            .robot
-            .move_to(&flange, use_conf.then_some(&target.conf));
+        let result = reach_target(&robot.robot, &target, &tool, &wobj, use_conf);
+        let what = cx.node_text(n).to_owned();
+        let unit = cx.unit_idx;
+        if let Some(log) = cx.reaches.as_mut() {
+            log.push(MoveReach {
+                target: what.clone(),
+                instruction: name.to_owned(),
+                unit,
+                offset: n.start_byte(),
+                result: result.clone(),
+            });
+        }
         let Err(e) = result else {
             continue;
         };
-        let what = cx.node_text(n).to_owned();
         match e {
             ReachError::OutOfReach { by } => {
                 rules::target_out_of_reach::report(cx, n.byte_range(), &what, by, &robot_name);

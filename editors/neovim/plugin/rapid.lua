@@ -32,3 +32,11 @@ end, { nargs = '?', complete = 'dir', desc = 'Build the RAPID tree-sitter parser
 vim.api.nvim_create_user_command('RapidRestart', function()
   rapid.restart()
 end, { desc = 'Restart the rapid language server' })
+
+vim.api.nvim_create_user_command('RapidDiff', function(args)
+  require('rapid.diff').open(args.fargs)
+end, {
+  nargs = '+',
+  complete = 'file',
+  desc = 'Show what changed between a backup and the project (or two backups, or git revisions): rapid diff',
+})

@@ -731,4 +731,13 @@ check('a missing server binary: a message says what is missing and how to instal
   expect(ok, '%s', tostring(err))
 end)
 
+-- :RapidDiff, in a file of its own
+dofile(vim.fs.dirname(debug.getinfo(1, 'S').source:sub(2)) .. '/diff.lua')({
+  check = check,
+  expect = expect,
+  run = run,
+  ws = ws,
+  rapid_bin = rapid_bin,
+})
+
 finish()

@@ -16,6 +16,7 @@ import { fileURLToPath } from "node:url";
 import { chromium } from "playwright-core";
 import { makeWorkspace } from "../../e2e-workspace.mjs";
 import { debugSteps } from "./debug.mjs";
+import { diffSteps } from "./diff.mjs";
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 const repo = path.resolve(here, "../../..");
@@ -175,8 +176,9 @@ server.stderr.pipe(serverLog);
 let passed = 0;
 let failed = 0;
 const failures = [];
-// RAPID_E2E_ONLY=debug runs the debugger's checks alone (while working on them)
-const onlyDebug = process.env.RAPID_E2E_ONLY === "debug";
+// RAPID_E2E_ONLY=debug (or diff) runs the debugger's (or Compare with
+// backup's) checks alone (while working on them)
+const onlyDebug = process.env.RAPID_E2E_ONLY !== undefined;
 async function step(name, fn, always = false) {
   if (onlyDebug && !always) return;
   try {
@@ -499,6 +501,10 @@ try {
     assert(first === "MoveL", `the first row is ${first}`);
   });
 
+  // "Compare with backup…" and its view, on this workspace
+  const only = process.env.RAPID_E2E_ONLY;
+  await diffSteps({ page, ws, tmp, out, rapid, assert, runCommand, TIMEOUT, step: (n, f) => step(n, f, only === "diff") });
+
   await step("a controller backup opened as the workspace shows its Problems before any file is opened", async () => {
     const backup = path.join(tmp, "backup", "CELL_BACKUP");
     const write = (rel, text) => {
@@ -576,7 +582,7 @@ try {
   });
 
   // the debugger and the path view, in a workspace of their own
-  const debugStep = (name, fn) => step(name, fn, true);
+  const debugStep = (name, fn) => step(name, fn, only !== "diff");
   await debugSteps({ page, port, tmp, out, rapid, repo, step: debugStep, assert, runCommand, goTo, TIMEOUT });
 
   await step("a missing server binary gives a message with a link to the install instructions", async () => {

@@ -10,6 +10,7 @@ import {
   TransportKind,
 } from "vscode-languageclient/node";
 import { askForPath, binaryOrName, findBinary, reportMissing } from "./binary";
+import { registerDiff } from "./diff";
 import { registerRun } from "./run";
 import { holdsRapid } from "./workspace";
 
@@ -49,9 +50,10 @@ export async function activate(context: vscode.ExtensionContext): Promise<void> 
   );
 
   context.subscriptions.push({ dispose: () => void stopServer() });
-  // The `rapid` debugger (`rapid dap`) and "Show path", with the binary
-  // found as the server's is.
+  // The `rapid` debugger (`rapid dap`), "Show path" and "Compare with
+  // backup…", with the binary found as the server's is.
   registerRun(context, binaryOrName);
+  registerDiff(context, binaryOrName);
 
   // A workspace with RAPID modules, a backup's BACKINFO or SYSPAR, a
   // rapid.toml or a .pgf program starts the server at once: it checks every

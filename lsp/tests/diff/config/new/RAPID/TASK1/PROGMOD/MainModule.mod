@@ -1,0 +1,4 @@
+MODULE MainModule
+  PROC main()
+  ENDPROC
+ENDMODULE

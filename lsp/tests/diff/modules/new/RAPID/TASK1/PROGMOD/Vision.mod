@@ -1,0 +1,5 @@
+MODULE Vision
+  VAR num nCam := 1;
+  PROC snap()
+  ENDPROC
+ENDMODULE

@@ -1,0 +1,4 @@
+MODULE Conveyor
+  PROC conveyor()
+  ENDPROC
+ENDMODULE

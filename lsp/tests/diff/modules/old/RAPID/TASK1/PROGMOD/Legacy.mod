@@ -1,0 +1,4 @@
+MODULE Legacy
+  PROC legacy()
+  ENDPROC
+ENDMODULE

@@ -1,0 +1,5 @@
+MODULE MainModule
+  PROC main()
+    TPWrite "hello";
+  ENDPROC
+ENDMODULE

@@ -1,0 +1,4 @@
+MODULE Plc
+  PROC plc()
+  ENDPROC
+ENDMODULE
