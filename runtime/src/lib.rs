@@ -131,6 +131,9 @@ pub struct Config {
     pub sandbox: Option<PathBuf>,
     /// Record every move ([`Controller::moves`]).
     pub trace: bool,
+    /// The operator's scripted answers, one a line
+    /// ([`world::parse_answer`]'s forms), for [`world::World::simulated`].
+    pub answers: Vec<String>,
 }
 
 /// Runs `routine` (a procedure without parameters) of `program` as the

@@ -644,6 +644,15 @@ impl Program {
             .collect()
     }
 
+    /// The number of the predefined error `name` (`ERR_TP_MAXTIME`), 0
+    /// when the catalogue has no such error.
+    pub(crate) fn errnum(&self, name: &str) -> f32 {
+        self.errnums
+            .get(&name.to_ascii_lowercase())
+            .copied()
+            .unwrap_or(0.0)
+    }
+
     /// The global of predefined data or a signal named `name`.
     pub(crate) fn system_global(&self, name: &str) -> Option<u32> {
         self.system.get(&fold(name)).copied()

@@ -523,6 +523,19 @@ fn prepare(args: &Value) -> Result<Launch, String> {
             },
             sandbox: None,
             trace: plot.is_some(),
+            // The operator's answers (`"answers": ["1", "@2 Yes"]`): a
+            // debuggee has no terminal of its own.
+            operator: crate::run::operator::OperatorOptions {
+                answers: args["answers"]
+                    .as_array()
+                    .map(|a| {
+                        a.iter()
+                            .map(|v| v.as_str().map_or_else(|| v.to_string(), str::to_owned))
+                            .collect()
+                    })
+                    .unwrap_or_default(),
+                terminal: false,
+            },
         },
         stop_on_entry: args["stopOnEntry"].as_bool().unwrap_or(false),
         debug: !args["noDebug"].as_bool().unwrap_or(false),

@@ -18,6 +18,7 @@
 //! cannot start ([`NotRun`]).
 
 pub mod load;
+pub mod operator;
 pub mod trace;
 
 use std::io::Write;
@@ -57,6 +58,16 @@ pub struct RunArgs {
     /// folder, removed after the run).
     #[arg(long, value_name = "DIR")]
     pub sandbox: Option<PathBuf>,
+    /// The operator's answers to the pendant's questions (`TPReadFK`,
+    /// `UIMessageBox`...), one a line, in order: a function key's number
+    /// or label, a number, a button or list item, text; `@SECONDS VALUE`
+    /// answers after that many simulated seconds, `-` never answers; `#`
+    /// starts a comment.
+    #[arg(long, value_name = "FILE")]
+    pub answers: Option<PathBuf>,
+    /// One more answer, after those of --answers (repeatable).
+    #[arg(long = "answer", value_name = "VALUE")]
+    pub answer: Vec<String>,
     #[command(flatten)]
     pub limits: LimitArgs,
 }
@@ -96,6 +107,8 @@ pub struct RunOptions {
     pub sandbox: Option<PathBuf>,
     /// Record the moves.
     pub trace: bool,
+    /// The operator's answers.
+    pub operator: operator::OperatorOptions,
 }
 
 /// How a run ended.
@@ -195,8 +208,10 @@ pub fn build(
         signals: options.sets.clone(),
         sandbox: options.sandbox.clone(),
         trace: options.trace,
+        ..Config::default()
     };
-    let world = World::simulated(&config, output);
+    let mut world = World::simulated(&config, output);
+    world.pendant = options.operator.pendant().map_err(NotRun::Other)?;
     let mut controller = Controller::new(config, world);
     let mut started = 0;
     for t in &loaded.tasks {
@@ -339,6 +354,7 @@ fn run_inner(args: RunArgs) -> Result<ExitCode, String> {
         limits: args.limits.limits(),
         sandbox: Some(sandbox.path.clone()),
         trace: args.trace.is_some() || args.plot.is_some(),
+        operator: operator::OperatorOptions::from_args(args.answers.as_deref(), &args.answer)?,
     };
     let out = |_: Stream, line: &str| {
         let stdout = std::io::stdout();
@@ -382,6 +398,7 @@ pub fn describe(o: &Outcome) -> Vec<String> {
         Status::Invalid => format!("error: the program cannot run: {}", o.message),
         Status::Budget => format!("error: {}", o.message),
         Status::Deadlock => format!("error: deadlock: {}", o.message),
+        Status::Operator => format!("stopped: {}", o.message),
     };
     lines.push(head);
     if let Some(at) = &o.at {

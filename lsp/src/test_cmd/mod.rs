@@ -264,6 +264,7 @@ fn run_test(
         signals: options.sets.clone(),
         sandbox: Some(sandbox.path.clone()),
         trace: false,
+        ..Config::default()
     };
     let lines: Arc<Mutex<Vec<(Stream, String)>>> = Arc::default();
     let sink = lines.clone();

@@ -11,6 +11,7 @@ pub(crate) mod files;
 pub(crate) mod io;
 pub(crate) mod motion;
 pub(crate) mod output;
+pub(crate) mod pendant;
 pub(crate) mod sockets;
 pub(crate) mod tasks;
 
@@ -47,8 +48,11 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("ErrWrite", output::err_write),
     ("TPErase", output::nothing),
     ("TPShow", output::nothing),
-    ("TPReadFK", output::tp_read_fk),
-    ("TPReadNum", output::tp_read_num),
+    ("TPReadFK", pendant::tp_read_fk),
+    ("TPReadNum", pendant::tp_read_num),
+    ("TPReadDnum", pendant::tp_read_num),
+    ("UIMsgBox", pendant::ui_msg_box),
+    ("UIShow", output::nothing),
     ("Incr", data::incr),
     ("Decr", data::decr),
     ("Add", data::add),
@@ -156,6 +160,14 @@ const FUNCTIONS: &[(&str, FuncFn)] = &[
     ("OpMode", data::op_mode),
     ("RunMode", data::run_mode),
     ("IsStopMoveAct", data::is_stop_move_act),
+    ("UIMessageBox", pendant::ui_message_box),
+    ("UINumEntry", pendant::ui_num_entry),
+    ("UIDnumEntry", pendant::ui_num_entry),
+    ("UINumTune", pendant::ui_num_tune),
+    ("UIDnumTune", pendant::ui_num_tune),
+    ("UIAlphaEntry", pendant::ui_alpha_entry),
+    ("UIListView", pendant::ui_list_view),
+    ("UIClientExist", pendant::ui_client_exist),
     ("DInput", io::input),
     ("DOutput", io::input),
     ("AInput", io::input),

@@ -19,7 +19,7 @@ mod sockets;
 
 pub use files::{FileError, FileKind, FileSystem, MemoryFs, SandboxFs};
 pub use io::{Io, ScriptedIo};
-pub use pendant::{Answer, NoOperator, Pendant, Question};
+pub use pendant::{Expect, NoOperator, Pendant, Question, Reply, ScriptedOperator, parse_answer};
 pub use robot::{
     InstantRobot, JointTarget, Motion, MoveKind, MoveRequest, MoveTarget, Pose, RobTarget, Robot,
     RobotError, Speed, Tool, WObj, Zone,
@@ -41,12 +41,14 @@ pub struct World {
 impl World {
     /// The simulated controller's world: the signals scripted in `config`,
     /// files in its sandbox folder (none: file instructions are not
-    /// supported), no operator, no sockets, lines to `output`.
+    /// supported), an operator who gives the answers of `config` (lines
+    /// that do not parse are left out: [`ScriptedOperator::new`] says
+    /// why), no sockets, lines to `output`.
     pub fn simulated(config: &Config, output: Box<dyn Output>) -> World {
         World {
             io: Box::new(ScriptedIo::new(config.signals.clone())),
             files: Box::new(SandboxFs::new(config.sandbox.clone())),
-            pendant: Box::new(NoOperator),
+            pendant: Box::new(ScriptedOperator::new(&config.answers).unwrap_or_default()),
             sockets: Box::new(NoSockets),
             output,
         }
