@@ -64,3 +64,26 @@ fn an_answer_that_does_not_fit_the_question_is_named() {
     assert_eq!(out.status.code(), Some(2), "{}", show(&out));
     assert!(show(&out).contains("delay in seconds"), "{}", show(&out));
 }
+
+#[test]
+fn signals_no_eio_cfg_declares_are_taken_from_their_use_with_a_note() {
+    let dir = scratch("run-taken-signals");
+    write(
+        &dir,
+        &[(
+            "Gripper.mod",
+            "MODULE Gripper
+  PROC main()
+    WaitDI part_present, 1;
+    SetDO grip_close, 1;
+    TPWrite \"closed \"\\Num:=DOutput(grip_close);
+    IF part_present = 1 SetAO conveyor_speed, 2.5;
+    TPWrite \"speed \"\\Num:=AOutput(conveyor_speed);
+  ENDPROC
+ENDMODULE
+",
+        )],
+    );
+    let out = rapid(&dir, &["run", "Gripper.mod", "--set", "part_present=1@0.5"]);
+    insta::assert_snapshot!(show(&out));
+}

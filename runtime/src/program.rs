@@ -714,26 +714,92 @@ impl std::fmt::Display for LoadError {
     }
 }
 
+/// A signal the task uses that its configuration does not declare (or
+/// that has no `EIO.cfg`), declared by the simulation from its first use.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct TakenSignal {
+    pub name: String,
+    pub kind: SignalKind,
+    /// The use it was taken from.
+    pub at: Location,
+}
+
+impl std::fmt::Display for TakenSignal {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "{}:{}:{}: note: {} is declared by no EIO.cfg here: simulated as a {} from its use",
+            self.at.path,
+            self.at.line,
+            self.at.column,
+            self.name,
+            self.kind.type_name()
+        )
+    }
+}
+
+/// What the controller's loader finds in a task: the errors that keep it
+/// from loading, and the signals it uses that no configuration declares.
+#[derive(Clone, Debug, Default)]
+pub struct LoadCheck {
+    pub errors: Vec<LoadError>,
+    /// One a name, at its first use.
+    pub signals: Vec<TakenSignal>,
+}
+
+impl LoadCheck {
+    /// The signals taken from use, for [`Program::new`].
+    pub fn extra_signals(&self) -> Vec<(String, SignalKind)> {
+        self.signals
+            .iter()
+            .map(|s| (s.name.clone(), s.kind))
+            .collect()
+    }
+}
+
+/// The errors that keep the controller from loading `task` (see
+/// [`load_check`]), the signals the configuration lacks aside.
+pub fn load_errors(task: &Task) -> Vec<LoadError> {
+    load_check(task).errors
+}
+
 /// The errors that keep the controller from loading `task`, in the order
 /// of its files and of their positions: the checker's errors (at their
 /// default severities, which inline suppressions and a project's
-/// configuration do not change: the controller knows neither).
-pub fn load_errors(task: &Task) -> Vec<LoadError> {
-    let mut out = Vec::new();
+/// configuration do not change: the controller knows neither). A signal
+/// that no configuration declares is not an error here: it is taken from
+/// its use (a `signaldo` where `SetDO` takes one), once a name.
+pub fn load_check(task: &Task) -> LoadCheck {
+    let mut out = LoadCheck::default();
     for (_, unit) in task.own_units() {
         let lines = LineIndex::new(&unit.text);
         for d in rapid_analyzer::workspace::diagnostics_of(task, unit) {
+            let (line, column) = lines.human(d.range.start, &unit.text);
+            let at = Location {
+                path: unit.path.clone(),
+                line,
+                column,
+            };
+            if let Some((name, ty)) = rapid_analyzer::rules::unconfigured_signal::taken_signal(&d) {
+                let known = out
+                    .signals
+                    .iter()
+                    .any(|s| s.name.eq_ignore_ascii_case(name));
+                if !known && let Some(kind) = SignalKind::from_type(ty) {
+                    out.signals.push(TakenSignal {
+                        name: name.to_owned(),
+                        kind,
+                        at,
+                    });
+                }
+                continue;
+            }
             let load_time = d.rule.code != "E413";
             if d.severity != rapid_analyzer::diagnostic::Severity::Error || !load_time {
                 continue;
             }
-            let (line, column) = lines.human(d.range.start, &unit.text);
-            out.push(LoadError {
-                at: Location {
-                    path: unit.path.clone(),
-                    line,
-                    column,
-                },
+            out.errors.push(LoadError {
+                at,
                 code: d.rule.code,
                 name: d.rule.name,
                 message: d.message,

@@ -281,7 +281,7 @@ impl Session {
                 json!({"category": "stdout", "output": format!("{line}\n")}),
             );
         };
-        match crate::run::build(&launch.loaded, &launch.options, Box::new(out)) {
+        match crate::run::build(&launch.loaded, &launch.options, Box::new(out)).map(|b| b.0) {
             Ok(mut c) => {
                 if launch.debug {
                     c.debug(launch.stop_on_entry);

@@ -290,32 +290,28 @@ pub fn parse_set(text: &str) -> Result<SignalChange, String> {
     })
 }
 
-/// `task` with the signals `--set` names that its configuration does not
-/// declare (their kind guessed from the name's first letters: `di`, `do`,
-/// `ai`, `ao`, `gi`, `go`; a digital input otherwise), configured as
-/// `EIO.cfg` would ([`Task::with_signals`]).
-pub fn with_set_signals(task: Arc<Task>, sets: &[SignalChange]) -> Arc<Task> {
+/// The program of `task`, with the signals taken from their use
+/// (`taken`, [`rapid_runtime::load_check`]) and the signals `--set` names
+/// that neither its configuration declares nor its use shows (their kind
+/// guessed from the name's first letters: `di`, `do`, `ai`, `ao`, `gi`,
+/// `go`; a digital input otherwise).
+pub fn program(
+    task: Arc<Task>,
+    sets: &[SignalChange],
+    taken: &[(String, SignalKind)],
+) -> Arc<Program> {
     let configured = |n: &str| {
         task.signals
             .as_ref()
             .is_some_and(|s| s.contains_key(&n.to_ascii_lowercase()))
     };
-    let mut extra: Vec<(String, &'static str)> = Vec::new();
+    let mut extra: Vec<(String, SignalKind)> = taken.to_vec();
     for s in sets {
         if !configured(&s.name) && !extra.iter().any(|(n, _)| n.eq_ignore_ascii_case(&s.name)) {
-            extra.push((s.name.clone(), SignalKind::guess(&s.name).type_name()));
+            extra.push((s.name.clone(), SignalKind::guess(&s.name)));
         }
     }
-    if extra.is_empty() {
-        task
-    } else {
-        Arc::new(task.with_signals(&extra))
-    }
-}
-
-/// The program of `task` with the `--set` signals ([`with_set_signals`]).
-pub fn program(task: Arc<Task>, sets: &[SignalChange]) -> Arc<Program> {
-    Arc::new(Program::new(with_set_signals(task, sets), &[]))
+    Arc::new(Program::new(task, &extra))
 }
 
 #[cfg(test)]

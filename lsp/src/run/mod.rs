@@ -44,8 +44,9 @@ pub struct RunArgs {
     #[arg(long, value_name = "NAME")]
     pub task: Option<String>,
     /// Set a signal: NAME=VALUE at the start, NAME=VALUE@SECONDS later
-    /// (repeatable). Signals that EIO.cfg does not declare are declared by
-    /// their name: di*, do*, ai*, ao*, gi*, go* (else a digital input).
+    /// (repeatable). Signals that no EIO.cfg declares are taken from their
+    /// use in the program (with a note), else from their name: di*, do*,
+    /// ai*, ao*, gi*, go* (else a digital input).
     #[arg(long = "set", value_name = "SIG=V[@T]")]
     pub set: Vec<String>,
     /// Write the motion as JSON.
@@ -118,6 +119,8 @@ pub struct RunReport {
     pub tasks: Vec<(String, Outcome)>,
     /// The moves made (with [`RunOptions::trace`]).
     pub moves: Vec<Move>,
+    /// Notes on the run: the signals taken from their use.
+    pub notes: Vec<String>,
 }
 
 impl RunReport {
@@ -179,26 +182,30 @@ pub fn execute(
     options: &RunOptions,
     output: Box<dyn Output>,
 ) -> Result<RunReport, NotRun> {
-    let mut controller = build(loaded, options, output)?;
+    let (mut controller, notes) = build(loaded, options, output)?;
     controller.run();
-    Ok(report_of(&controller))
+    let mut report = report_of(&controller);
+    report.notes = notes;
+    Ok(report)
 }
 
 /// The virtual controller of loaded tasks, ready to run (each task's
 /// entry routine starts with the first statement run): for [`execute`],
-/// and for a debugger that drives it itself.
+/// and for a debugger that drives it itself. With it, the notes of the
+/// signals no configuration declares, which the run takes from their use.
 pub fn build(
     loaded: &load::Loaded,
     options: &RunOptions,
     output: Box<dyn Output>,
-) -> Result<Controller, NotRun> {
+) -> Result<(Controller, Vec<String>), NotRun> {
     let mut errors = Vec::new();
+    let mut notes = Vec::new();
+    let mut checks = Vec::new();
     for t in &loaded.tasks {
-        errors.extend(
-            rapid_runtime::load_errors(&t.task)
-                .iter()
-                .map(ToString::to_string),
-        );
+        let check = rapid_runtime::load_check(&t.task);
+        errors.extend(check.errors.iter().map(ToString::to_string));
+        notes.extend(check.signals.iter().map(ToString::to_string));
+        checks.push(check);
     }
     if !errors.is_empty() {
         return Err(NotRun::LoadErrors(errors));
@@ -214,8 +221,8 @@ pub fn build(
     world.pendant = options.operator.pendant().map_err(NotRun::Other)?;
     let mut controller = Controller::new(config, world);
     let mut started = 0;
-    for t in &loaded.tasks {
-        let program = load::program(t.task.clone(), &options.sets);
+    for (t, check) in loaded.tasks.iter().zip(&checks) {
+        let program = load::program(t.task.clone(), &options.sets, &check.extra_signals());
         let entry = program.find_routine(&t.entry);
         if let Some(id) = entry
             && let Some(r) = program.routines().into_iter().find(|r| r.id == id)
@@ -251,7 +258,7 @@ pub fn build(
             entries.join(", ")
         )));
     }
-    Ok(controller)
+    Ok((controller, notes))
 }
 
 /// What a run may use: its budgets, the folder its file instructions work
@@ -324,6 +331,7 @@ pub fn report_of(controller: &Controller) -> RunReport {
             .filter_map(|(name, o)| Some((name, o?)))
             .collect(),
         moves: controller.moves().to_vec(),
+        notes: Vec::new(),
     }
 }
 
@@ -372,7 +380,7 @@ fn run_inner(args: RunArgs) -> Result<ExitCode, String> {
             .map_err(|e| format!("{}: {e}", path.display()))?;
     }
     let mut err = anstream::stderr();
-    for line in report.describe() {
+    for line in report.notes.iter().chain(&report.describe()) {
         let _ = writeln!(err, "{line}");
     }
     Ok(if report.is_success() {

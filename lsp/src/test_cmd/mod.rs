@@ -182,8 +182,9 @@ pub fn run_tests(
     let mut results = Vec::new();
     for task in tasks {
         let task = load::with_modules(task, &[(ASSERT_PATH, ASSERT_MODULE)]);
-        let errors = rapid_runtime::load_errors(&task);
-        let program = load::program(task, &options.sets);
+        let check = rapid_runtime::load_check(&task);
+        let program = load::program(task, &options.sets, &check.extra_signals());
+        let errors = check.errors;
         let tests = discover(&program, options.filter.as_deref());
         if let Some(first) = errors.first() {
             // The controller would not load the task: none of its tests runs.
