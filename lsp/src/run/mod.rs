@@ -19,6 +19,7 @@
 
 pub mod load;
 pub mod operator;
+pub mod sockets;
 pub mod trace;
 
 use std::io::Write;
@@ -69,6 +70,10 @@ pub struct RunArgs {
     /// One more answer, after those of --answers (repeatable).
     #[arg(long = "answer", value_name = "VALUE")]
     pub answer: Vec<String>,
+    /// Sockets: where the host reaches an address the program names
+    /// (repeatable; the default is the loopback interface, same port).
+    #[arg(long = "socket-map", value_name = "ADDR:PORT=HOST:PORT")]
+    pub socket_map: Vec<String>,
     #[command(flatten)]
     pub limits: LimitArgs,
 }
@@ -110,6 +115,8 @@ pub struct RunOptions {
     pub trace: bool,
     /// The operator's answers.
     pub operator: operator::OperatorOptions,
+    /// Where the host's sockets reach the addresses the program names.
+    pub socket_map: Vec<sockets::SocketMap>,
 }
 
 /// How a run ended.
@@ -219,6 +226,7 @@ pub fn build(
     };
     let mut world = World::simulated(&config, output);
     world.pendant = options.operator.pendant().map_err(NotRun::Other)?;
+    world.sockets = Box::new(sockets::HostSockets::new(options.socket_map.clone()));
     let mut controller = Controller::new(config, world);
     let mut started = 0;
     for (t, check) in loaded.tasks.iter().zip(&checks) {
@@ -363,6 +371,11 @@ fn run_inner(args: RunArgs) -> Result<ExitCode, String> {
         sandbox: Some(sandbox.path.clone()),
         trace: args.trace.is_some() || args.plot.is_some(),
         operator: operator::OperatorOptions::from_args(args.answers.as_deref(), &args.answer)?,
+        socket_map: args
+            .socket_map
+            .iter()
+            .map(|m| sockets::parse_map(m))
+            .collect::<Result<_, _>>()?,
     };
     let out = |_: Stream, line: &str| {
         let stdout = std::io::stdout();

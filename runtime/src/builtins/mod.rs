@@ -12,6 +12,7 @@ pub(crate) mod io;
 pub(crate) mod motion;
 pub(crate) mod output;
 pub(crate) mod pendant;
+pub(crate) mod rawbytes;
 pub(crate) mod sockets;
 pub(crate) mod tasks;
 
@@ -140,6 +141,13 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("SocketSend", sockets::socket_send),
     ("SocketReceive", sockets::socket_receive),
     ("SocketClose", sockets::socket_close),
+    ("SocketBind", sockets::socket_bind),
+    ("SocketListen", sockets::socket_listen),
+    ("SocketAccept", sockets::socket_accept),
+    ("ClearRawBytes", rawbytes::clear_raw_bytes),
+    ("CopyRawBytes", rawbytes::copy_raw_bytes),
+    ("PackRawBytes", rawbytes::pack_raw_bytes),
+    ("UnpackRawBytes", rawbytes::unpack_raw_bytes),
     ("WaitSyncTask", tasks::wait_sync_task),
     ("SyncMoveOn", tasks::sync_move_on),
     ("SyncMoveOff", tasks::sync_move_off),
@@ -168,6 +176,8 @@ const FUNCTIONS: &[(&str, FuncFn)] = &[
     ("UIAlphaEntry", pendant::ui_alpha_entry),
     ("UIListView", pendant::ui_list_view),
     ("UIClientExist", pendant::ui_client_exist),
+    ("SocketGetStatus", sockets::socket_get_status),
+    ("RawBytesLen", rawbytes::raw_bytes_len),
     ("DInput", io::input),
     ("DOutput", io::input),
     ("AInput", io::input),

@@ -137,7 +137,7 @@ impl Shared {
     }
 
     /// Moves the clock to `t`, applying the changes due by then.
-    fn advance_to(&mut self, t: f64) {
+    pub(crate) fn advance_to(&mut self, t: f64) {
         for (name, value) in self.io.advance(t) {
             self.events.push((name, value));
         }

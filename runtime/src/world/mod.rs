@@ -24,7 +24,7 @@ pub use robot::{
     InstantRobot, JointTarget, Motion, MoveKind, MoveRequest, MoveTarget, Pose, RobTarget, Robot,
     RobotError, Speed, Tool, WObj, Zone,
 };
-pub use sockets::{NoSockets, SocketError, Sockets};
+pub use sockets::{NoSockets, SocketError, SocketState, Sockets};
 
 use crate::{Config, Output};
 
