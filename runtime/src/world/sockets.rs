@@ -115,3 +115,98 @@ impl Sockets for NoSockets {
         SocketState::Closed
     }
 }
+
+/// A controller on a network where nobody answers: sockets are created,
+/// bound and listen, but a connection never comes and a connect gets no
+/// answer, each after its whole `\Time` (simulated); a receive or send on
+/// a socket that is not connected fails as closed. The default of
+/// [`super::World::simulated`]: deterministic, and a program that waits
+/// for its peer waits as it would in a cell with the peer switched off.
+#[derive(Debug, Default)]
+pub struct EmptyNetwork {
+    states: Vec<SocketState>,
+    waited: f64,
+}
+
+impl EmptyNetwork {
+    fn slot(&mut self, socket: u32) -> Result<&mut SocketState, SocketError> {
+        match self.states.get_mut((socket as usize).wrapping_sub(1)) {
+            Some(s) if *s != SocketState::Closed => Ok(s),
+            _ => Err(SocketError::Closed(
+                "the socket is not created, or closed".to_owned(),
+            )),
+        }
+    }
+
+    fn nobody(&mut self, timeout: f64, what: &str) -> SocketError {
+        self.waited += timeout;
+        SocketError::Timeout(format!("{what} within {timeout} s (nobody on the network)"))
+    }
+}
+
+impl Sockets for EmptyNetwork {
+    fn create(&mut self, udp: bool) -> Result<u32, SocketError> {
+        if udp {
+            return Err(SocketError::Unsupported);
+        }
+        self.states.push(SocketState::Created);
+        Ok(self.states.len() as u32)
+    }
+    fn connect(
+        &mut self,
+        socket: u32,
+        address: &str,
+        port: u32,
+        timeout: f64,
+    ) -> Result<(), SocketError> {
+        self.slot(socket)?;
+        Err(self.nobody(timeout, &format!("no connection to {address}:{port}")))
+    }
+    fn bind(&mut self, socket: u32, _: &str, _: u32) -> Result<(), SocketError> {
+        *self.slot(socket)? = SocketState::Bound;
+        Ok(())
+    }
+    fn listen(&mut self, socket: u32) -> Result<(), SocketError> {
+        let s = self.slot(socket)?;
+        if *s != SocketState::Bound {
+            return Err(SocketError::Failed("the socket is not bound".to_owned()));
+        }
+        *s = SocketState::Listening;
+        Ok(())
+    }
+    fn accept(&mut self, socket: u32, timeout: f64) -> Result<(u32, String), SocketError> {
+        if *self.slot(socket)? != SocketState::Listening {
+            return Err(SocketError::Failed(
+                "the socket is not listening".to_owned(),
+            ));
+        }
+        Err(self.nobody(timeout, "no connection came"))
+    }
+    fn send(&mut self, socket: u32, _: &[u8]) -> Result<(), SocketError> {
+        self.slot(socket)?;
+        Err(SocketError::Closed(
+            "the socket is not connected".to_owned(),
+        ))
+    }
+    fn receive(&mut self, socket: u32, _: usize, _: bool, _: f64) -> Result<Vec<u8>, SocketError> {
+        self.slot(socket)?;
+        Err(SocketError::Closed(
+            "the socket is not connected".to_owned(),
+        ))
+    }
+    fn close(&mut self, socket: u32) -> Result<(), SocketError> {
+        if let Ok(s) = self.slot(socket) {
+            *s = SocketState::Closed;
+        }
+        Ok(())
+    }
+    fn state(&self, socket: u32) -> SocketState {
+        self.states
+            .get((socket as usize).wrapping_sub(1))
+            .copied()
+            .unwrap_or(SocketState::Closed)
+    }
+    fn waited(&mut self) -> f64 {
+        std::mem::take(&mut self.waited)
+    }
+}
