@@ -536,7 +536,7 @@ fn prepare(args: &Value) -> Result<Launch, String> {
                     .unwrap_or_default(),
                 terminal: false,
             },
-            socket_map: Vec::new(),
+            socket_map: Some(Vec::new()),
         },
         stop_on_entry: args["stopOnEntry"].as_bool().unwrap_or(false),
         debug: !args["noDebug"].as_bool().unwrap_or(false),

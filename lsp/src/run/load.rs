@@ -121,23 +121,7 @@ pub fn controller(path: &Path, only: Option<&str>, entry: Option<&str>) -> Resul
         .tasks
         .iter()
         .zip(&found.settings)
-        .map(|(t, s)| {
-            let name = match s {
-                Some(s) => s.name.clone(),
-                None if lone && !t.is_backup() => "T_ROB1".to_owned(),
-                None => folder_name(&t.key).to_owned(),
-            };
-            TaskToRun {
-                name,
-                task: t.clone(),
-                kind: s.as_ref().map_or(TaskKind::Normal, |s| s.kind),
-                entry: s
-                    .as_ref()
-                    .and_then(|s| s.entry.clone())
-                    .unwrap_or_else(|| entry.to_owned()),
-                motion: s.as_ref().is_none_or(|s| s.motion),
-            }
-        })
+        .map(|(t, s)| to_run(t, s.as_ref(), lone, entry))
         .collect();
     if let Some(name) = only {
         let Some(i) = out.iter().position(|t| t.name.eq_ignore_ascii_case(name)) else {
@@ -176,6 +160,32 @@ pub fn controller(path: &Path, only: Option<&str>, entry: Option<&str>) -> Resul
                 keys.join(", ")
             ))
         }
+    }
+}
+
+/// A task to run, as `SYS.cfg` says (`settings`): its name (`T_ROB1` for
+/// the lone task outside a backup, else the folder's), kind, entry
+/// routine (`entry` when `SYS.cfg` names none) and whether it moves a
+/// robot.
+pub fn to_run(
+    t: &Arc<Task>,
+    settings: Option<&TaskSettings>,
+    lone: bool,
+    entry: &str,
+) -> TaskToRun {
+    let name = match settings {
+        Some(s) => s.name.clone(),
+        None if lone && !t.is_backup() => "T_ROB1".to_owned(),
+        None => folder_name(&t.key).to_owned(),
+    };
+    TaskToRun {
+        name,
+        task: t.clone(),
+        kind: settings.map_or(TaskKind::Normal, |s| s.kind),
+        entry: settings
+            .and_then(|s| s.entry.clone())
+            .unwrap_or_else(|| entry.to_owned()),
+        motion: settings.is_none_or(|s| s.motion),
     }
 }
 

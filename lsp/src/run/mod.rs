@@ -17,6 +17,8 @@
 //! `FnMut(Stream, &str)`), each task's outcome back, or why the program
 //! cannot start ([`NotRun`]).
 
+#[cfg(test)]
+mod corpus;
 pub mod load;
 pub mod operator;
 pub mod sockets;
@@ -115,8 +117,9 @@ pub struct RunOptions {
     pub trace: bool,
     /// The operator's answers.
     pub operator: operator::OperatorOptions,
-    /// Where the host's sockets reach the addresses the program names.
-    pub socket_map: Vec<sockets::SocketMap>,
+    /// The host's sockets, reaching the addresses the program names as
+    /// mapped; `None`: the simulated network, where nobody answers.
+    pub socket_map: Option<Vec<sockets::SocketMap>>,
 }
 
 /// How a run ended.
@@ -226,7 +229,9 @@ pub fn build(
     };
     let mut world = World::simulated(&config, output);
     world.pendant = options.operator.pendant().map_err(NotRun::Other)?;
-    world.sockets = Box::new(sockets::HostSockets::new(options.socket_map.clone()));
+    if let Some(map) = &options.socket_map {
+        world.sockets = Box::new(sockets::HostSockets::new(map.clone()));
+    }
     let mut controller = Controller::new(config, world);
     let mut started = 0;
     for (t, check) in loaded.tasks.iter().zip(&checks) {
@@ -371,11 +376,12 @@ fn run_inner(args: RunArgs) -> Result<ExitCode, String> {
         sandbox: Some(sandbox.path.clone()),
         trace: args.trace.is_some() || args.plot.is_some(),
         operator: operator::OperatorOptions::from_args(args.answers.as_deref(), &args.answer)?,
-        socket_map: args
-            .socket_map
-            .iter()
-            .map(|m| sockets::parse_map(m))
-            .collect::<Result<_, _>>()?,
+        socket_map: Some(
+            args.socket_map
+                .iter()
+                .map(|m| sockets::parse_map(m))
+                .collect::<Result<_, _>>()?,
+        ),
     };
     let out = |_: Stream, line: &str| {
         let stdout = std::io::stdout();

@@ -7,7 +7,7 @@
 use rapid_evaluator::Value;
 
 use super::{Args, Cx, Done};
-use crate::machine::{FaultKind, R, fault, invalid, named_error};
+use crate::machine::{FaultKind, R, Timeout, Wait, WaitKind, fault, invalid, named_error};
 use crate::world::SocketError;
 
 /// The controller's default `\Time` of a socket wait, in seconds.
@@ -19,6 +19,14 @@ const MAX_STRING: usize = 80;
 fn socket_error<T>(cx: &mut Cx<'_>, a: &Args, e: SocketError) -> R<T> {
     cx.socket_time();
     match e {
+        SocketError::NeverAnswers { after, message } => {
+            // Reached only through `done`, which waits first.
+            fault(named_error(
+                &cx.m.prog,
+                "ERR_SOCK_TIMEOUT",
+                format!("{}: {message} ({after} s)", a.name),
+            ))
+        }
         SocketError::Unsupported => fault(FaultKind::Unsupported(a.name.to_owned())),
         SocketError::Closed(m) | SocketError::Failed(m) => fault(named_error(
             &cx.m.prog,
@@ -65,20 +73,44 @@ fn time(cx: &mut Cx<'_>, a: &Args) -> R<f64> {
     Ok(cx.opt_num(a, "Time")?.unwrap_or(DEFAULT_TIME).max(0.0))
 }
 
-fn done<T>(cx: &mut Cx<'_>, a: &Args, r: Result<T, SocketError>) -> R<T> {
+/// The result of a socket operation; `None`: nothing will come, and the
+/// instruction waits ([`waiting`]).
+fn done<T>(cx: &mut Cx<'_>, a: &Args, r: Result<T, SocketError>) -> R<Option<T>> {
     match r {
         Ok(v) => {
             cx.socket_time();
-            Ok(v)
+            Ok(Some(v))
+        }
+        Err(SocketError::NeverAnswers { after, message }) => {
+            // The task waits the whole time (other tasks run), then the
+            // wait times out with the error.
+            let w = Wait {
+                kind: WaitKind::Never,
+                deadline: Some(cx.now() + after.max(0.0)),
+                on_timeout: Timeout::Error("ERR_SOCK_TIMEOUT", format!("{}: {message}", a.name)),
+                what: format!("{} ({message})", a.name),
+            };
+            cx.m.function_wait = Some(Box::new(w));
+            Ok(None)
         }
         Err(e) => socket_error(cx, a, e),
+    }
+}
+
+/// The wait of an operation that gets no answer.
+fn waiting(cx: &mut Cx<'_>) -> R<Done> {
+    match cx.m.function_wait.take() {
+        Some(w) => Ok(Done::Wait(w)),
+        None => invalid("a socket wait that is not there"),
     }
 }
 
 /// `SocketCreate Socket [\UDP]`.
 pub(crate) fn socket_create(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     let r = cx.sh.sockets.create(a.given("UDP"));
-    let id = done(cx, a, r)?;
+    let Some(id) = done(cx, a, r)? else {
+        return waiting(cx);
+    };
     store_socket(cx, a, "Socket", id)?;
     Ok(Done::Next)
 }
@@ -90,7 +122,9 @@ pub(crate) fn socket_connect(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     let port = cx.num(a, "Port")?.max(0.0) as u32;
     let t = time(cx, a)?;
     let r = cx.sh.sockets.connect(s, &address, port, t);
-    done(cx, a, r)?;
+    if done(cx, a, r)?.is_none() {
+        return waiting(cx);
+    }
     Ok(Done::Next)
 }
 
@@ -100,7 +134,9 @@ pub(crate) fn socket_bind(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     let address = cx.string(a, "LocalAddress")?;
     let port = cx.num(a, "LocalPort")?.max(0.0) as u32;
     let r = cx.sh.sockets.bind(s, &address, port);
-    done(cx, a, r)?;
+    if done(cx, a, r)?.is_none() {
+        return waiting(cx);
+    }
     Ok(Done::Next)
 }
 
@@ -108,7 +144,9 @@ pub(crate) fn socket_bind(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
 pub(crate) fn socket_listen(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     let s = socket(cx, a, "Socket")?;
     let r = cx.sh.sockets.listen(s);
-    done(cx, a, r)?;
+    if done(cx, a, r)?.is_none() {
+        return waiting(cx);
+    }
     Ok(Done::Next)
 }
 
@@ -117,7 +155,9 @@ pub(crate) fn socket_accept(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     let s = socket(cx, a, "Socket")?;
     let t = time(cx, a)?;
     let r = cx.sh.sockets.accept(s, t);
-    let (client, address) = done(cx, a, r)?;
+    let Some((client, address)) = done(cx, a, r)? else {
+        return waiting(cx);
+    };
     store_socket(cx, a, "ClientSocket", client)?;
     if let Some(p) = cx.opt_place(a, "ClientAddress")? {
         cx.store(&p, Value::Str(address))?;
@@ -150,7 +190,9 @@ pub(crate) fn socket_send(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
         .opt_num(a, "NoOfBytes")?
         .map_or(bytes.len(), |n| n.max(0.0) as usize);
     let r = cx.sh.sockets.send(s, &bytes[..n.min(bytes.len())]);
-    done(cx, a, r)?;
+    if done(cx, a, r)?.is_none() {
+        return waiting(cx);
+    }
     Ok(Done::Next)
 }
 
@@ -186,7 +228,9 @@ pub(crate) fn socket_receive(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
         .sh
         .sockets
         .receive(s, exact.unwrap_or(room), exact.is_some(), t);
-    let bytes = done(cx, a, r)?;
+    let Some(bytes) = done(cx, a, r)? else {
+        return waiting(cx);
+    };
     match target {
         Target::Str(p) => {
             let text: String = bytes.iter().map(|b| char::from(*b)).collect();
@@ -222,7 +266,9 @@ pub(crate) fn socket_close(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     let s = socket(cx, a, "Socket")?;
     if s != 0 {
         let r = cx.sh.sockets.close(s);
-        done(cx, a, r)?;
+        if done(cx, a, r)?.is_none() {
+            return waiting(cx);
+        }
     }
     store_socket(cx, a, "Socket", 0)?;
     Ok(Done::Next)

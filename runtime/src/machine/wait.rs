@@ -56,6 +56,9 @@ pub(crate) enum WaitKind {
     /// Until the bool at the place is `FALSE`, which is then set
     /// (`WaitTestAndSet`).
     Semaphore(Place),
+    /// Until the deadline, which fails the wait (a socket nobody
+    /// answers).
+    Never,
     /// Until the operator answers, or a break signal breaks the dialog
     /// (`TPReadFK`, `UIMessageBox`...).
     Operator(Box<OperatorWait>),
@@ -154,6 +157,7 @@ impl Machine {
                     true
                 }
             }
+            WaitKind::Never => false,
             WaitKind::Operator(o) => {
                 let broken = o
                     .breaks

@@ -9,7 +9,7 @@
 //! the time waited.
 
 /// Why a socket operation failed.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum SocketError {
     /// Sockets are not available in this simulation.
     Unsupported,
@@ -18,6 +18,9 @@ pub enum SocketError {
     Closed(String),
     /// Nothing came in time (`ERR_SOCK_TIMEOUT`).
     Timeout(String),
+    /// Nothing will come: the task waits `after` simulated seconds (other
+    /// tasks run meanwhile), then times out (`ERR_SOCK_TIMEOUT`).
+    NeverAnswers { after: f64, message: String },
     /// Anything else the controller reports as a socket error (an address
     /// in use, an operation the socket's state does not allow):
     /// `ERR_SOCK_CLOSED` too, with the host's reason.
@@ -125,7 +128,6 @@ impl Sockets for NoSockets {
 #[derive(Debug, Default)]
 pub struct EmptyNetwork {
     states: Vec<SocketState>,
-    waited: f64,
 }
 
 impl EmptyNetwork {
@@ -139,8 +141,10 @@ impl EmptyNetwork {
     }
 
     fn nobody(&mut self, timeout: f64, what: &str) -> SocketError {
-        self.waited += timeout;
-        SocketError::Timeout(format!("{what} within {timeout} s (nobody on the network)"))
+        SocketError::NeverAnswers {
+            after: timeout,
+            message: format!("{what} within {timeout} s (nobody on the network)"),
+        }
     }
 }
 
@@ -205,8 +209,5 @@ impl Sockets for EmptyNetwork {
             .get((socket as usize).wrapping_sub(1))
             .copied()
             .unwrap_or(SocketState::Closed)
-    }
-    fn waited(&mut self) -> f64 {
-        std::mem::take(&mut self.waited)
     }
 }
