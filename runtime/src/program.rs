@@ -745,9 +745,23 @@ pub struct LoadCheck {
     pub errors: Vec<LoadError>,
     /// One a name, at its first use.
     pub signals: Vec<TakenSignal>,
+    /// The mechanical units it names that no `MOC.cfg` declares.
+    pub units: Vec<String>,
 }
 
 impl LoadCheck {
+    /// `task` with the mechanical units taken from their use.
+    pub fn with_units(&self, task: Arc<Task>) -> Arc<Task> {
+        if self.units.is_empty() {
+            return task;
+        }
+        let mut t = task.with_signals(&[]);
+        let mut units = task.mecunits.clone();
+        units.extend(self.units.iter().map(|u| fold(u)));
+        t.set_controller_names(units, task.task_ids.clone());
+        Arc::new(t)
+    }
+
     /// The signals taken from use, for [`Program::new`].
     pub fn extra_signals(&self) -> Vec<(String, SignalKind)> {
         self.signals
@@ -781,6 +795,12 @@ pub fn load_check(task: &Task) -> LoadCheck {
                 column,
             };
             if let Some((name, ty)) = rapid_analyzer::rules::unconfigured_signal::taken_signal(&d) {
+                if ty == "mecunit" {
+                    if !out.units.iter().any(|u| u.eq_ignore_ascii_case(name)) {
+                        out.units.push(name.to_owned());
+                    }
+                    continue;
+                }
                 let known = out
                     .signals
                     .iter()

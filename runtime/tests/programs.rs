@@ -93,6 +93,16 @@ fn run(path: &std::path::Path) -> (Vec<String>, Option<String>, Outcome) {
         .iter()
         .map(|s| (s.name.clone(), SignalKind::guess(&s.name)))
         .collect();
+    // Signals and units no configuration declares are taken from their
+    // use, as `rapid run` takes them.
+    let check = rapid_runtime::load_check(&task);
+    let task = check.with_units(task);
+    let mut signals = signals;
+    for (n, k) in check.extra_signals() {
+        if !signals.iter().any(|(s, _)| s.eq_ignore_ascii_case(&n)) {
+            signals.push((n, k));
+        }
+    }
     let program = Arc::new(Program::new(task, &signals));
     let lines = Arc::new(Mutex::new(Vec::new()));
     let sink = lines.clone();

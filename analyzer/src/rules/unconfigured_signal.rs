@@ -58,11 +58,7 @@ impl crate::check::Cx<'_> {
             self.report_unresolved(node.byte_range(), message);
         } else {
             // Reported at every use; `check_unit` keeps the first per name.
-            let kind = if mecunit {
-                String::new()
-            } else {
-                format!(" (`{ty}`)")
-            };
+            let kind = format!(" (`{ty}`)");
             self.report(
                 &RULE,
                 node.byte_range(),
@@ -72,21 +68,24 @@ impl crate::check::Cx<'_> {
     }
 }
 
-/// The signal a diagnostic of this rule (or an `unresolved-name` of a
-/// signal the configuration lacks) says a name is taken for: its name and
-/// type (`signaldo`), for a simulation that declares it from its use.
+/// The signal or mechanical unit a diagnostic of this rule (or an
+/// `unresolved-name` of a signal the configuration lacks) says a name is
+/// taken for: its name and type (`signaldo`, `mecunit`), for a simulation
+/// that declares it from its use.
 pub fn taken_signal(d: &crate::diagnostic::Diagnostic) -> Option<(&str, &str)> {
     let m = d.message.as_str();
     let (name, rest) = if d.rule.code == RULE.code {
         let rest = m.strip_prefix('`')?;
-        let (name, rest) = rest.split_once("` is taken to be an I/O signal (`")?;
+        let (name, rest) = rest
+            .split_once("` is taken to be an I/O signal (`")
+            .or_else(|| rest.split_once("` is taken to be a mechanical unit (`"))?;
         (name, rest)
     } else {
         let rest = m.strip_prefix("no signal named `")?;
         rest.split_once("` (`")?
     };
     let (ty, _) = rest.split_once("`)")?;
-    ty.starts_with("signal").then_some((name, ty))
+    (ty.starts_with("signal") || ty == "mecunit").then_some((name, ty))
 }
 
 #[cfg(test)]
@@ -119,6 +118,7 @@ mod tests {
                 ("part", "signaldi"),
                 ("aoSpeed", "signalao"),
                 ("sensor", "signaldi"),
+                ("STN1", "mecunit"),
             ])
         );
     }

@@ -300,22 +300,24 @@ pub fn parse_set(text: &str) -> Result<SignalChange, String> {
     })
 }
 
-/// The program of `task`, with the signals taken from their use
-/// (`taken`, [`rapid_runtime::load_check`]) and the signals `--set` names
+/// The program of `task`, with the signals and mechanical units taken
+/// from their use (`check`, [`rapid_runtime::load_check`]) and the signals `--set` names
 /// that neither its configuration declares nor its use shows (their kind
 /// guessed from the name's first letters: `di`, `do`, `ai`, `ao`, `gi`,
 /// `go`; a digital input otherwise).
 pub fn program(
     task: Arc<Task>,
     sets: &[SignalChange],
-    taken: &[(String, SignalKind)],
+    check: &rapid_runtime::LoadCheck,
 ) -> Arc<Program> {
+    let task = check.with_units(task);
+    let taken = check.extra_signals();
     let configured = |n: &str| {
         task.signals
             .as_ref()
             .is_some_and(|s| s.contains_key(&n.to_ascii_lowercase()))
     };
-    let mut extra: Vec<(String, SignalKind)> = taken.to_vec();
+    let mut extra: Vec<(String, SignalKind)> = taken;
     for s in sets {
         if !configured(&s.name) && !extra.iter().any(|(n, _)| n.eq_ignore_ascii_case(&s.name)) {
             extra.push((s.name.clone(), SignalKind::guess(&s.name)));

@@ -235,7 +235,7 @@ pub fn build(
     let mut controller = Controller::new(config, world);
     let mut started = 0;
     for (t, check) in loaded.tasks.iter().zip(&checks) {
-        let program = load::program(t.task.clone(), &options.sets, &check.extra_signals());
+        let program = load::program(t.task.clone(), &options.sets, check);
         let entry = program.find_routine(&t.entry);
         if let Some(id) = entry
             && let Some(r) = program.routines().into_iter().find(|r| r.id == id)

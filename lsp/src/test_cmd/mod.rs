@@ -183,7 +183,7 @@ pub fn run_tests(
     for task in tasks {
         let task = load::with_modules(task, &[(ASSERT_PATH, ASSERT_MODULE)]);
         let check = rapid_runtime::load_check(&task);
-        let program = load::program(task, &options.sets, &check.extra_signals());
+        let program = load::program(task, &options.sets, &check);
         let errors = check.errors;
         let tests = discover(&program, options.filter.as_deref());
         if let Some(first) = errors.first() {

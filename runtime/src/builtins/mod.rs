@@ -15,6 +15,7 @@ pub(crate) mod pendant;
 pub(crate) mod rawbytes;
 pub(crate) mod sockets;
 pub(crate) mod tasks;
+pub(crate) mod units;
 
 use rapid_analyzer::catalogue::Routine as CatalogueRoutine;
 use rapid_evaluator::Value;
@@ -144,6 +145,9 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("SocketBind", sockets::socket_bind),
     ("SocketListen", sockets::socket_listen),
     ("SocketAccept", sockets::socket_accept),
+    ("ActUnit", units::act_unit),
+    ("DeactUnit", units::deact_unit),
+    ("MotionSup", motion::setting),
     ("ClearRawBytes", rawbytes::clear_raw_bytes),
     ("CopyRawBytes", rawbytes::copy_raw_bytes),
     ("PackRawBytes", rawbytes::pack_raw_bytes),
@@ -178,6 +182,7 @@ const FUNCTIONS: &[(&str, FuncFn)] = &[
     ("UIClientExist", pendant::ui_client_exist),
     ("SocketGetStatus", sockets::socket_get_status),
     ("RawBytesLen", rawbytes::raw_bytes_len),
+    ("IsMechUnitActive", units::is_mech_unit_active),
     ("DInput", io::input),
     ("DOutput", io::input),
     ("AInput", io::input),
