@@ -213,3 +213,33 @@ fn a_rapid_client_talks_to_a_server_in_the_harness() {
         "exit 0\n--- stdout\nconnected TRUE\nbytes 10\nvalue -7\ntimed out TRUE\n--- stderr\n"
     );
 }
+
+#[test]
+fn list_unsupported_names_each_call_a_run_would_stop_at() {
+    let dir = scratch("run-list-unsupported");
+    write(
+        &dir,
+        &[(
+            "Cell.mod",
+            "MODULE Cell
+  VAR egmident egm;
+  PROC main()
+    TPWrite \"start\";
+    IF FALSE THEN
+      EGMGetId egm;
+    ENDIF
+    vision;
+  ENDPROC
+  PROC vision()
+    EGMReset egm;
+  ENDPROC
+ENDMODULE
+",
+        )],
+    );
+    let out = rapid(&dir, &["run", "Cell.mod", "--list-unsupported"]);
+    assert_eq!(
+        show(&out),
+        "exit 0\n--- stdout\nCell.mod:6:7: EGMGetId\nCell.mod:11:5: EGMReset\n2 calls the simulation does not support\n--- stderr\n"
+    );
+}

@@ -467,6 +467,35 @@ impl Program {
             .collect()
     }
 
+    /// The instructions and functions of the simulated controller that a
+    /// run would stop at (not supported in the simulation), with where
+    /// each is called, in the order of the routines and their statements
+    /// (every routine is compiled, whether a run reaches it or not).
+    pub fn unsupported(&self) -> Vec<(String, Location)> {
+        let mut out = Vec::new();
+        for id in 0..self.routines.len() as u32 {
+            let Some(code) = self.code(id) else { continue };
+            for (pc, op) in code.ops.iter().enumerate() {
+                let crate::code::Op::Fail(i) = op else {
+                    continue;
+                };
+                let Some(crate::code::Failure::Unsupported(name)) = code.failures.get(*i as usize)
+                else {
+                    continue;
+                };
+                // The innermost statement whose operations hold it.
+                let offset = code
+                    .stmts
+                    .iter()
+                    .filter(|s| (s.start as usize) <= pc && pc < s.end as usize)
+                    .min_by_key(|s| s.end - s.start)
+                    .map_or(code.range.start, |s| s.range.start);
+                out.push((name.clone(), self.location(code.unit, offset)));
+            }
+        }
+        out
+    }
+
     /// The source location of byte `offset` of unit `unit`.
     pub fn location(&self, unit: usize, offset: usize) -> Location {
         match (self.task.units.get(unit), self.lines.get(unit)) {

@@ -41,7 +41,7 @@ pub enum Class {
 impl Class {
     fn of(o: &Outcome) -> Class {
         match o.status {
-            Status::Finished | Status::Exited | Status::Stopped => Class::Ended,
+            Status::Finished | Status::Exited | Status::Stopped | Status::Halted => Class::Ended,
             Status::Deadlock | Status::Operator => Class::Idle,
             Status::Budget => Class::Budget,
             Status::Unsupported => Class::Unsupported,

@@ -76,6 +76,11 @@ pub struct RunArgs {
     /// (repeatable; the default is the loopback interface, same port).
     #[arg(long = "socket-map", value_name = "ADDR:PORT=HOST:PORT")]
     pub socket_map: Vec<String>,
+    /// List the instructions and functions of the tasks that the
+    /// simulation does not support (where a run would stop), without
+    /// running.
+    #[arg(long)]
+    pub list_unsupported: bool,
     #[command(flatten)]
     pub limits: LimitArgs,
 }
@@ -369,6 +374,10 @@ fn run_inner(args: RunArgs) -> Result<ExitCode, String> {
         .map(|s| load::parse_set(s))
         .collect::<Result<Vec<_>, _>>()?;
     let loaded = load::controller(&args.path, args.task.as_deref(), args.entry.as_deref())?;
+    if args.list_unsupported {
+        list_unsupported(&loaded, &sets);
+        return Ok(ExitCode::SUCCESS);
+    }
     let sandbox = Sandbox::new(args.sandbox.clone())?;
     let options = RunOptions {
         sets,
@@ -407,6 +416,34 @@ fn run_inner(args: RunArgs) -> Result<ExitCode, String> {
     } else {
         ExitCode::from(1)
     })
+}
+
+/// `--list-unsupported`: each call the simulation does not support, one
+/// line each (`file:line:column: NAME`, named by its task when several),
+/// then how many.
+fn list_unsupported(loaded: &load::Loaded, sets: &[SignalChange]) {
+    let stdout = std::io::stdout();
+    let mut out = stdout.lock();
+    let several = loaded.tasks.len() > 1;
+    let mut count = 0;
+    for t in &loaded.tasks {
+        let check = rapid_runtime::load_check(&t.task);
+        let program = load::program(t.task.clone(), sets, &check);
+        for (name, at) in program.unsupported() {
+            count += 1;
+            let task = if several {
+                format!(" [{}]", t.name)
+            } else {
+                String::new()
+            };
+            let _ = writeln!(out, "{}:{}:{}: {name}{task}", at.path, at.line, at.column);
+        }
+    }
+    let _ = writeln!(
+        out,
+        "{count} call{} the simulation does not support",
+        if count == 1 { "" } else { "s" }
+    );
 }
 
 /// The lines that say how a run ended: the error and where, then the
