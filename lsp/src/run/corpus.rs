@@ -98,7 +98,7 @@ pub fn sweep(dir: &Path) -> Result<Vec<TaskRun>, String> {
     let found = load::tasks(&[dir.to_path_buf()])?;
     let mut groups: BTreeMap<String, Vec<usize>> = BTreeMap::new();
     for (i, t) in found.tasks.iter().enumerate() {
-        let group = controller_of(&t.key).map_or_else(|| t.key.clone(), |c| format!("{c}"));
+        let group = controller_of(&t.key).map_or_else(|| t.key.clone(), |c| c.to_string());
         groups.entry(group).or_default().push(i);
     }
     let sandbox = super::Sandbox::new(None)?;
@@ -151,14 +151,8 @@ pub fn page(runs: &[TaskRun]) -> String {
         s,
         "`rapid run` over `../shared/corpus` (real RAPID programs from public repositories, test input only): every controller backup with all its tasks together, every other task (grouped as `rapid check` groups them) alone from its `main`. No operator answers (a question stops the task waiting for the operator), a network where nobody answers, at most 100,000 statements and 300 simulated seconds a run. A task without an entry routine (a library of modules) has nothing to run and is not counted.\n"
     );
-    let groups: [(&str, Box<dyn Fn(&TaskRun) -> bool>); 3] = [
-        (
-            "controller backups' tasks",
-            Box::new(|r: &TaskRun| r.backup),
-        ),
-        ("other tasks", Box::new(|r: &TaskRun| !r.backup)),
-        ("all tasks", Box::new(|_: &TaskRun| true)),
-    ];
+    // The controller backups' tasks, the other tasks, all.
+    let groups: [fn(&TaskRun) -> bool; 3] = [|r| r.backup, |r| !r.backup, |_| true];
     let _ = writeln!(
         s,
         "| class | controller backups' tasks | other tasks | all tasks |\n| --- | ---: | ---: | ---: |"
@@ -176,7 +170,7 @@ pub fn page(runs: &[TaskRun]) -> String {
     for c in classes {
         let counts: Vec<String> = groups
             .iter()
-            .map(|(_, f)| {
+            .map(|f| {
                 runs.iter()
                     .filter(|r| f(r) && r.class == c)
                     .count()
@@ -187,7 +181,7 @@ pub fn page(runs: &[TaskRun]) -> String {
     }
     let shares: Vec<String> = groups
         .iter()
-        .map(|(_, f)| {
+        .map(|f| {
             let counted: Vec<&TaskRun> = runs
                 .iter()
                 .filter(|r| f(r) && r.class != Class::NoEntry)

@@ -188,13 +188,13 @@ mod tests {
         assert_eq!(parse_answer("-"), Ok(Some(None)));
         assert_eq!(parse_answer("# a comment"), Ok(None));
         assert_eq!(parse_answer("   "), Ok(None));
-        assert!(parse_answer("@x 1").unwrap_err().contains("delay"));
+        assert!(parse_answer("@x 1").expect_err("invalid").contains("delay"));
         assert!(parse_answer("@-1 1").is_err());
         let s = ScriptedOperator::new(&["1", "", "-", "@1 OK"]).expect("valid");
         assert_eq!(s.answers.len(), 3);
         assert!(
             ScriptedOperator::new(&["1", "@z"])
-                .unwrap_err()
+                .expect_err("invalid")
                 .starts_with("line 2:")
         );
     }
