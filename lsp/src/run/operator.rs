@@ -71,10 +71,15 @@ impl Pendant for Operator {
                 self.terminal = false;
                 None
             }
-            Ok(_) => parse_answer(&line).ok().flatten().flatten().or(Some(Reply {
-                text: String::new(),
-                after: 0.0,
-            })),
+            // A line as the script's lines read (`-`: no answer), a blank
+            // line an empty answer, anything else as typed.
+            Ok(_) => match parse_answer(&line) {
+                Ok(Some(answer)) => answer,
+                Ok(None) | Err(_) => Some(Reply {
+                    text: line.trim().to_owned(),
+                    after: 0.0,
+                }),
+            },
         }
     }
 }
