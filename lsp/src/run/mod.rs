@@ -286,6 +286,8 @@ pub struct Budget {
     pub limits: Limits,
     pub sandbox: Option<PathBuf>,
     pub trace: bool,
+    /// The operator's answers, one a question ([`operator`]'s forms).
+    pub answers: Vec<String>,
 }
 
 /// A run of one task that ended: how, the moves (when traced), the
@@ -324,8 +326,14 @@ pub fn run_routine(
         limits: budget.limits,
         sandbox: Some(sandbox.path.clone()),
         trace: budget.trace,
+        operator: operator::OperatorOptions {
+            answers: budget.answers,
+            terminal: false,
+        },
+        // The simulated network: a request opens no sockets of the host.
+        socket_map: None,
     };
-    let mut controller = build(&loaded, &options, out).map_err(|e| e.to_string())?;
+    let (mut controller, _) = build(&loaded, &options, out).map_err(|e| e.to_string())?;
     controller.run();
     let mut report = report_of(&controller);
     let (_, outcome) = report
