@@ -785,9 +785,9 @@ impl LoadCheck {
             return task;
         }
         let mut t = task.with_signals(&[]);
-        let mut units = task.mecunits.clone();
+        let mut units = (*task.mecunits).clone();
         units.extend(self.units.iter().map(|u| fold(u)));
-        t.set_controller_names(units, task.task_ids.clone());
+        t.set_controller_names(units, (*task.task_ids).clone());
         Arc::new(t)
     }
 
