@@ -139,10 +139,10 @@ const TESTS: &str = "MODULE Calc_test
   ENDPROC
 
   PROC talks()
-    SocketClose sock;
+    EGMGetId egm;
   ENDPROC
 
-  VAR socketdev sock;
+  VAR egmident egm;
 ENDMODULE
 ";
 

@@ -62,7 +62,8 @@ pub use controller::{Controller, Event, Resume, TaskKind, TaskSpec};
 pub use debug::{DataValue, Variable};
 pub use machine::{Machine, Outcome, StackFrame, Status, Stop};
 pub use program::{
-    LoadError, Location, Program, RoutineSummary, SYSTEM_ERRNO_BASE, SignalKind, load_errors,
+    LoadCheck, LoadError, Location, Program, RoutineSummary, SYSTEM_ERRNO_BASE, SignalKind,
+    TakenSignal, load_check, load_errors,
 };
 
 /// Where a line of output comes from.
@@ -131,6 +132,9 @@ pub struct Config {
     pub sandbox: Option<PathBuf>,
     /// Record every move ([`Controller::moves`]).
     pub trace: bool,
+    /// The operator's scripted answers, one a line
+    /// ([`world::parse_answer`]'s forms), for [`world::World::simulated`].
+    pub answers: Vec<String>,
 }
 
 /// Runs `routine` (a procedure without parameters) of `program` as the

@@ -467,6 +467,35 @@ impl Program {
             .collect()
     }
 
+    /// The instructions and functions of the simulated controller that a
+    /// run would stop at (not supported in the simulation), with where
+    /// each is called, in the order of the routines and their statements
+    /// (every routine is compiled, whether a run reaches it or not).
+    pub fn unsupported(&self) -> Vec<(String, Location)> {
+        let mut out = Vec::new();
+        for id in 0..self.routines.len() as u32 {
+            let Some(code) = self.code(id) else { continue };
+            for (pc, op) in code.ops.iter().enumerate() {
+                let crate::code::Op::Fail(i) = op else {
+                    continue;
+                };
+                let Some(crate::code::Failure::Unsupported(name)) = code.failures.get(*i as usize)
+                else {
+                    continue;
+                };
+                // The innermost statement whose operations hold it.
+                let offset = code
+                    .stmts
+                    .iter()
+                    .filter(|s| (s.start as usize) <= pc && pc < s.end as usize)
+                    .min_by_key(|s| s.end - s.start)
+                    .map_or(code.range.start, |s| s.range.start);
+                out.push((name.clone(), self.location(code.unit, offset)));
+            }
+        }
+        out
+    }
+
     /// The source location of byte `offset` of unit `unit`.
     pub fn location(&self, unit: usize, offset: usize) -> Location {
         match (self.task.units.get(unit), self.lines.get(unit)) {
@@ -644,6 +673,15 @@ impl Program {
             .collect()
     }
 
+    /// The number of the predefined error `name` (`ERR_TP_MAXTIME`), 0
+    /// when the catalogue has no such error.
+    pub(crate) fn errnum(&self, name: &str) -> f32 {
+        self.errnums
+            .get(&name.to_ascii_lowercase())
+            .copied()
+            .unwrap_or(0.0)
+    }
+
     /// The global of predefined data or a signal named `name`.
     pub(crate) fn system_global(&self, name: &str) -> Option<u32> {
         self.system.get(&fold(name)).copied()
@@ -705,26 +743,112 @@ impl std::fmt::Display for LoadError {
     }
 }
 
+/// A signal the task uses that its configuration does not declare (or
+/// that has no `EIO.cfg`), declared by the simulation from its first use.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct TakenSignal {
+    pub name: String,
+    pub kind: SignalKind,
+    /// The use it was taken from.
+    pub at: Location,
+}
+
+impl std::fmt::Display for TakenSignal {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "{}:{}:{}: note: {} is declared by no EIO.cfg here: simulated as a {} from its use",
+            self.at.path,
+            self.at.line,
+            self.at.column,
+            self.name,
+            self.kind.type_name()
+        )
+    }
+}
+
+/// What the controller's loader finds in a task: the errors that keep it
+/// from loading, and the signals it uses that no configuration declares.
+#[derive(Clone, Debug, Default)]
+pub struct LoadCheck {
+    pub errors: Vec<LoadError>,
+    /// One a name, at its first use.
+    pub signals: Vec<TakenSignal>,
+    /// The mechanical units it names that no `MOC.cfg` declares.
+    pub units: Vec<String>,
+}
+
+impl LoadCheck {
+    /// `task` with the mechanical units taken from their use.
+    pub fn with_units(&self, task: Arc<Task>) -> Arc<Task> {
+        if self.units.is_empty() {
+            return task;
+        }
+        let mut t = task.with_signals(&[]);
+        let mut units = (*task.mecunits).clone();
+        units.extend(self.units.iter().map(|u| fold(u)));
+        t.set_controller_names(units, (*task.task_ids).clone());
+        Arc::new(t)
+    }
+
+    /// The signals taken from use, for [`Program::new`].
+    pub fn extra_signals(&self) -> Vec<(String, SignalKind)> {
+        self.signals
+            .iter()
+            .map(|s| (s.name.clone(), s.kind))
+            .collect()
+    }
+}
+
+/// The errors that keep the controller from loading `task` (see
+/// [`load_check`]), the signals the configuration lacks aside.
+pub fn load_errors(task: &Task) -> Vec<LoadError> {
+    load_check(task).errors
+}
+
 /// The errors that keep the controller from loading `task`, in the order
 /// of its files and of their positions: the checker's errors (at their
 /// default severities, which inline suppressions and a project's
-/// configuration do not change: the controller knows neither).
-pub fn load_errors(task: &Task) -> Vec<LoadError> {
-    let mut out = Vec::new();
+/// configuration do not change: the controller knows neither). A signal
+/// that no configuration declares is not an error here: it is taken from
+/// its use (a `signaldo` where `SetDO` takes one), once a name.
+pub fn load_check(task: &Task) -> LoadCheck {
+    let mut out = LoadCheck::default();
     for (_, unit) in task.own_units() {
         let lines = LineIndex::new(&unit.text);
         for d in rapid_analyzer::workspace::diagnostics_of(task, unit) {
+            let (line, column) = lines.human(d.range.start, &unit.text);
+            let at = Location {
+                path: unit.path.clone(),
+                line,
+                column,
+            };
+            if let Some((name, ty)) = rapid_analyzer::rules::unconfigured_signal::taken_signal(&d) {
+                if ty == "mecunit" {
+                    if !out.units.iter().any(|u| u.eq_ignore_ascii_case(name)) {
+                        out.units.push(name.to_owned());
+                    }
+                    continue;
+                }
+                let known = out
+                    .signals
+                    .iter()
+                    .any(|s| s.name.eq_ignore_ascii_case(name));
+                if !known && let Some(kind) = SignalKind::from_type(ty) {
+                    out.signals.push(TakenSignal {
+                        name: name.to_owned(),
+                        kind,
+                        at,
+                    });
+                }
+                continue;
+            }
             let load_time = d.rule.code != "E413";
             if d.severity != rapid_analyzer::diagnostic::Severity::Error || !load_time {
                 continue;
             }
-            let (line, column) = lines.human(d.range.start, &unit.text);
-            out.push(LoadError {
-                at: Location {
-                    path: unit.path.clone(),
-                    line,
-                    column,
-                },
+            out.errors.push(LoadError {
+                at,
                 code: d.rule.code,
                 name: d.rule.name,
                 message: d.message,

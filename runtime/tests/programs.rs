@@ -9,6 +9,8 @@
 //! - `!set NAME=VALUE[@SECONDS]`: a scripted signal change (a signal of
 //!   that name is declared: `di*`/`do*`/`ai*`/`ao*`/`gi*`/`go*` by its
 //!   prefix);
+//! - `!answer VALUE`: the operator's next answer (`@SECONDS VALUE`: after
+//!   a delay; `-`: no answer);
 //! - `!entry NAME`: the routine to run (default `main`);
 //! - `!steps N`: the step budget;
 //! - `!robotware VERSION`: the task's catalogue is that RobotWare version's
@@ -32,6 +34,7 @@ struct Expect {
     entry: String,
     steps: Option<u64>,
     robotware: Option<String>,
+    answers: Vec<String>,
 }
 
 fn parse(text: &str) -> Expect {
@@ -42,6 +45,7 @@ fn parse(text: &str) -> Expect {
         entry: "main".to_owned(),
         steps: None,
         robotware: None,
+        answers: Vec::new(),
     };
     for line in text.lines() {
         let t = line.trim_start();
@@ -54,6 +58,10 @@ fn parse(text: &str) -> Expect {
             e.outcome = Some(rest.trim().to_owned());
         } else if let Some(rest) = t.strip_prefix("!set ") {
             e.signals.push(support::signal_change(rest));
+        } else if let Some(rest) = t.strip_prefix("!answer ") {
+            let answer = rest.trim().to_owned();
+            rapid_runtime::world::parse_answer(&answer).expect("an answer");
+            e.answers.push(answer);
         } else if let Some(rest) = t.strip_prefix("!entry ") {
             e.entry = rest.trim().to_owned();
         } else if let Some(rest) = t.strip_prefix("!steps ") {
@@ -85,12 +93,23 @@ fn run(path: &std::path::Path) -> (Vec<String>, Option<String>, Outcome) {
         .iter()
         .map(|s| (s.name.clone(), SignalKind::guess(&s.name)))
         .collect();
+    // Signals and units no configuration declares are taken from their
+    // use, as `rapid run` takes them.
+    let check = rapid_runtime::load_check(&task);
+    let task = check.with_units(task);
+    let mut signals = signals;
+    for (n, k) in check.extra_signals() {
+        if !signals.iter().any(|(s, _)| s.eq_ignore_ascii_case(&n)) {
+            signals.push((n, k));
+        }
+    }
     let program = Arc::new(Program::new(task, &signals));
     let lines = Arc::new(Mutex::new(Vec::new()));
     let sink = lines.clone();
     let mut config = Config {
         signals: e.signals.clone(),
         trace: true,
+        answers: e.answers.clone(),
         ..Config::default()
     };
     if let Some(n) = e.steps {

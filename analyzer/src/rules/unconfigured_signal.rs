@@ -44,19 +44,82 @@ impl crate::check::Cx<'_> {
         } else {
             (self.task.signals.is_some(), "an I/O signal", "EIO.cfg")
         };
+        let ty = self.types.base(expected).to_string().to_ascii_lowercase();
         if configured {
-            let message = format!(
-                "no {} named `{name}` in the configuration ({file}), and no data of that name",
-                if mecunit { "mechanical unit" } else { "signal" }
-            );
+            let message = if mecunit {
+                format!(
+                    "no mechanical unit named `{name}` in the configuration ({file}), and no data of that name"
+                )
+            } else {
+                format!(
+                    "no signal named `{name}` (`{ty}`) in the configuration ({file}), and no data of that name"
+                )
+            };
             self.report_unresolved(node.byte_range(), message);
         } else {
             // Reported at every use; `check_unit` keeps the first per name.
+            let kind = format!(" (`{ty}`)");
             self.report(
                 &RULE,
                 node.byte_range(),
-                format!("`{name}` is taken to be {what}; without the controller's {file} it cannot be checked"),
+                format!("`{name}` is taken to be {what}{kind}; without the controller's {file} it cannot be checked"),
             );
         }
+    }
+}
+
+/// The signal or mechanical unit a diagnostic of this rule (or an
+/// `unresolved-name` of a signal the configuration lacks) says a name is
+/// taken for: its name and type (`signaldo`, `mecunit`), for a simulation
+/// that declares it from its use.
+pub fn taken_signal(d: &crate::diagnostic::Diagnostic) -> Option<(&str, &str)> {
+    let m = d.message.as_str();
+    let (name, rest) = if d.rule.code == RULE.code {
+        let rest = m.strip_prefix('`')?;
+        let (name, rest) = rest
+            .split_once("` is taken to be an I/O signal (`")
+            .or_else(|| rest.split_once("` is taken to be a mechanical unit (`"))?;
+        (name, rest)
+    } else {
+        let rest = m.strip_prefix("no signal named `")?;
+        rest.split_once("` (`")?
+    };
+    let (ty, _) = rest.split_once("`)")?;
+    (ty.starts_with("signal") || ty == "mecunit").then_some((name, ty))
+}
+
+#[cfg(test)]
+mod tests {
+    use std::sync::Arc;
+
+    use crate::task::{Task, Unit};
+
+    /// The signals the checker takes from their use, as a simulation reads
+    /// them back from its diagnostics.
+    fn taken(text: &str) -> Vec<(String, String)> {
+        let unit = Arc::new(Unit::new("m.mod".into(), text.into(), None));
+        let task = Task::new(String::new(), vec![unit.clone()], None);
+        crate::workspace::diagnostics_of(&task, &unit)
+            .iter()
+            .filter_map(|d| super::taken_signal(d).map(|(n, t)| (n.to_owned(), t.to_owned())))
+            .collect()
+    }
+
+    #[test]
+    fn the_signal_a_name_is_taken_for_is_read_back_with_its_type() {
+        let text = "MODULE m\n  PROC main()\n    SetDO doGrip, 1;\n    WaitDI part, 1;\n    SetAO aoSpeed, 2;\n    IF sensor = 1 Stop;\n    ActUnit STN1;\n  ENDPROC\nENDMODULE\n";
+        let pairs = |v: &[(&str, &str)]| -> Vec<(String, String)> {
+            v.iter().map(|(a, b)| ((*a).into(), (*b).into())).collect()
+        };
+        assert_eq!(
+            taken(text),
+            pairs(&[
+                ("doGrip", "signaldo"),
+                ("part", "signaldi"),
+                ("aoSpeed", "signalao"),
+                ("sensor", "signaldi"),
+                ("STN1", "mecunit"),
+            ])
+        );
     }
 }

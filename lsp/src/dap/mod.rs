@@ -281,7 +281,7 @@ impl Session {
                 json!({"category": "stdout", "output": format!("{line}\n")}),
             );
         };
-        match crate::run::build(&launch.loaded, &launch.options, Box::new(out)) {
+        match crate::run::build(&launch.loaded, &launch.options, Box::new(out)).map(|b| b.0) {
             Ok(mut c) => {
                 if launch.debug {
                     c.debug(launch.stop_on_entry);
@@ -523,6 +523,20 @@ fn prepare(args: &Value) -> Result<Launch, String> {
             },
             sandbox: None,
             trace: plot.is_some(),
+            // The operator's answers (`"answers": ["1", "@2 Yes"]`): a
+            // debuggee has no terminal of its own.
+            operator: crate::run::operator::OperatorOptions {
+                answers: args["answers"]
+                    .as_array()
+                    .map(|a| {
+                        a.iter()
+                            .map(|v| v.as_str().map_or_else(|| v.to_string(), str::to_owned))
+                            .collect()
+                    })
+                    .unwrap_or_default(),
+                terminal: false,
+            },
+            socket_map: Some(Vec::new()),
         },
         stop_on_entry: args["stopOnEntry"].as_bool().unwrap_or(false),
         debug: !args["noDebug"].as_bool().unwrap_or(false),

@@ -130,6 +130,13 @@ pub struct RunParams {
     /// The run's budgets.
     #[serde(default)]
     pub budgets: Budgets,
+    /// The operator's answers to the pendant's questions (`TPReadFK`,
+    /// `UIMessageBox`...), in order: a key's number or label, a number, a
+    /// button or list item, text; `@SECONDS VALUE` answers after a
+    /// simulated delay, `-` never answers. A question without an answer
+    /// stops the run waiting for the operator.
+    #[serde(default)]
+    pub answers: Vec<String>,
 }
 
 /// Where something happened.
@@ -193,7 +200,8 @@ pub struct TraceSummary {
 #[derive(Debug, Serialize, JsonSchema)]
 pub struct RunReport {
     /// `finished`, `exited`, `stopped`, `error`, `unsupported`, `invalid`,
-    /// `budget` (a budget ran out) or `deadlock` (a wait nothing can end).
+    /// `budget` (a budget ran out), `deadlock` (a wait nothing can end) or
+    /// `operator` (a question nobody answered).
     pub status: String,
     /// Whether the run ended normally (its end, `EXIT`, `Stop`).
     pub success: bool,
@@ -217,6 +225,7 @@ fn status_name(s: Status) -> &'static str {
         Status::Budget => "budget",
         Status::Deadlock => "deadlock",
         Status::Halted => "halted",
+        Status::Operator => "operator",
     }
 }
 
@@ -264,6 +273,7 @@ pub fn run(roots: &[PathBuf], params: RunParams) -> Result<Answer<RunReport>, St
             limits,
             sandbox: None,
             trace: true,
+            answers: params.answers,
         },
         sink(&lines),
     )

@@ -121,23 +121,7 @@ pub fn controller(path: &Path, only: Option<&str>, entry: Option<&str>) -> Resul
         .tasks
         .iter()
         .zip(&found.settings)
-        .map(|(t, s)| {
-            let name = match s {
-                Some(s) => s.name.clone(),
-                None if lone && !t.is_backup() => "T_ROB1".to_owned(),
-                None => folder_name(&t.key).to_owned(),
-            };
-            TaskToRun {
-                name,
-                task: t.clone(),
-                kind: s.as_ref().map_or(TaskKind::Normal, |s| s.kind),
-                entry: s
-                    .as_ref()
-                    .and_then(|s| s.entry.clone())
-                    .unwrap_or_else(|| entry.to_owned()),
-                motion: s.as_ref().is_none_or(|s| s.motion),
-            }
-        })
+        .map(|(t, s)| to_run(t, s.as_ref(), lone, entry))
         .collect();
     if let Some(name) = only {
         let Some(i) = out.iter().position(|t| t.name.eq_ignore_ascii_case(name)) else {
@@ -176,6 +160,32 @@ pub fn controller(path: &Path, only: Option<&str>, entry: Option<&str>) -> Resul
                 keys.join(", ")
             ))
         }
+    }
+}
+
+/// A task to run, as `SYS.cfg` says (`settings`): its name (`T_ROB1` for
+/// the lone task outside a backup, else the folder's), kind, entry
+/// routine (`entry` when `SYS.cfg` names none) and whether it moves a
+/// robot.
+pub fn to_run(
+    t: &Arc<Task>,
+    settings: Option<&TaskSettings>,
+    lone: bool,
+    entry: &str,
+) -> TaskToRun {
+    let name = match settings {
+        Some(s) => s.name.clone(),
+        None if lone && !t.is_backup() => "T_ROB1".to_owned(),
+        None => folder_name(&t.key).to_owned(),
+    };
+    TaskToRun {
+        name,
+        task: t.clone(),
+        kind: settings.map_or(TaskKind::Normal, |s| s.kind),
+        entry: settings
+            .and_then(|s| s.entry.clone())
+            .unwrap_or_else(|| entry.to_owned()),
+        motion: settings.is_none_or(|s| s.motion),
     }
 }
 
@@ -290,32 +300,30 @@ pub fn parse_set(text: &str) -> Result<SignalChange, String> {
     })
 }
 
-/// `task` with the signals `--set` names that its configuration does not
-/// declare (their kind guessed from the name's first letters: `di`, `do`,
-/// `ai`, `ao`, `gi`, `go`; a digital input otherwise), configured as
-/// `EIO.cfg` would ([`Task::with_signals`]).
-pub fn with_set_signals(task: Arc<Task>, sets: &[SignalChange]) -> Arc<Task> {
+/// The program of `task`, with the signals and mechanical units taken
+/// from their use (`check`, [`rapid_runtime::load_check`]) and the signals `--set` names
+/// that neither its configuration declares nor its use shows (their kind
+/// guessed from the name's first letters: `di`, `do`, `ai`, `ao`, `gi`,
+/// `go`; a digital input otherwise).
+pub fn program(
+    task: Arc<Task>,
+    sets: &[SignalChange],
+    check: &rapid_runtime::LoadCheck,
+) -> Arc<Program> {
+    let task = check.with_units(task);
+    let taken = check.extra_signals();
     let configured = |n: &str| {
         task.signals
             .as_ref()
             .is_some_and(|s| s.contains_key(&n.to_ascii_lowercase()))
     };
-    let mut extra: Vec<(String, &'static str)> = Vec::new();
+    let mut extra: Vec<(String, SignalKind)> = taken;
     for s in sets {
         if !configured(&s.name) && !extra.iter().any(|(n, _)| n.eq_ignore_ascii_case(&s.name)) {
-            extra.push((s.name.clone(), SignalKind::guess(&s.name).type_name()));
+            extra.push((s.name.clone(), SignalKind::guess(&s.name)));
         }
     }
-    if extra.is_empty() {
-        task
-    } else {
-        Arc::new(task.with_signals(&extra))
-    }
-}
-
-/// The program of `task` with the `--set` signals ([`with_set_signals`]).
-pub fn program(task: Arc<Task>, sets: &[SignalChange]) -> Arc<Program> {
-    Arc::new(Program::new(with_set_signals(task, sets), &[]))
+    Arc::new(Program::new(task, &extra))
 }
 
 #[cfg(test)]

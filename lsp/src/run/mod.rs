@@ -17,7 +17,11 @@
 //! `FnMut(Stream, &str)`), each task's outcome back, or why the program
 //! cannot start ([`NotRun`]).
 
+#[cfg(test)]
+mod corpus;
 pub mod load;
+pub mod operator;
+pub mod sockets;
 pub mod trace;
 
 use std::io::Write;
@@ -43,8 +47,9 @@ pub struct RunArgs {
     #[arg(long, value_name = "NAME")]
     pub task: Option<String>,
     /// Set a signal: NAME=VALUE at the start, NAME=VALUE@SECONDS later
-    /// (repeatable). Signals that EIO.cfg does not declare are declared by
-    /// their name: di*, do*, ai*, ao*, gi*, go* (else a digital input).
+    /// (repeatable). Signals that no EIO.cfg declares are taken from their
+    /// use in the program (with a note), else from their name: di*, do*,
+    /// ai*, ao*, gi*, go* (else a digital input).
     #[arg(long = "set", value_name = "SIG=V[@T]")]
     pub set: Vec<String>,
     /// Write the motion as JSON.
@@ -57,6 +62,25 @@ pub struct RunArgs {
     /// folder, removed after the run).
     #[arg(long, value_name = "DIR")]
     pub sandbox: Option<PathBuf>,
+    /// The operator's answers to the pendant's questions (`TPReadFK`,
+    /// `UIMessageBox`...), one a line, in order: a function key's number
+    /// or label, a number, a button or list item, text; `@SECONDS VALUE`
+    /// answers after that many simulated seconds, `-` never answers; `#`
+    /// starts a comment.
+    #[arg(long, value_name = "FILE")]
+    pub answers: Option<PathBuf>,
+    /// One more answer, after those of --answers (repeatable).
+    #[arg(long = "answer", value_name = "VALUE")]
+    pub answer: Vec<String>,
+    /// Sockets: where the host reaches an address the program names
+    /// (repeatable; the default is the loopback interface, same port).
+    #[arg(long = "socket-map", value_name = "ADDR:PORT=HOST:PORT")]
+    pub socket_map: Vec<String>,
+    /// List the instructions and functions of the tasks that the
+    /// simulation does not support (where a run would stop), without
+    /// running.
+    #[arg(long)]
+    pub list_unsupported: bool,
     #[command(flatten)]
     pub limits: LimitArgs,
 }
@@ -96,6 +120,11 @@ pub struct RunOptions {
     pub sandbox: Option<PathBuf>,
     /// Record the moves.
     pub trace: bool,
+    /// The operator's answers.
+    pub operator: operator::OperatorOptions,
+    /// The host's sockets, reaching the addresses the program names as
+    /// mapped; `None`: the simulated network, where nobody answers.
+    pub socket_map: Option<Vec<sockets::SocketMap>>,
 }
 
 /// How a run ended.
@@ -105,6 +134,8 @@ pub struct RunReport {
     pub tasks: Vec<(String, Outcome)>,
     /// The moves made (with [`RunOptions::trace`]).
     pub moves: Vec<Move>,
+    /// Notes on the run: the signals taken from their use.
+    pub notes: Vec<String>,
 }
 
 impl RunReport {
@@ -166,26 +197,30 @@ pub fn execute(
     options: &RunOptions,
     output: Box<dyn Output>,
 ) -> Result<RunReport, NotRun> {
-    let mut controller = build(loaded, options, output)?;
+    let (mut controller, notes) = build(loaded, options, output)?;
     controller.run();
-    Ok(report_of(&controller))
+    let mut report = report_of(&controller);
+    report.notes = notes;
+    Ok(report)
 }
 
 /// The virtual controller of loaded tasks, ready to run (each task's
 /// entry routine starts with the first statement run): for [`execute`],
-/// and for a debugger that drives it itself.
+/// and for a debugger that drives it itself. With it, the notes of the
+/// signals no configuration declares, which the run takes from their use.
 pub fn build(
     loaded: &load::Loaded,
     options: &RunOptions,
     output: Box<dyn Output>,
-) -> Result<Controller, NotRun> {
+) -> Result<(Controller, Vec<String>), NotRun> {
     let mut errors = Vec::new();
+    let mut notes = Vec::new();
+    let mut checks = Vec::new();
     for t in &loaded.tasks {
-        errors.extend(
-            rapid_runtime::load_errors(&t.task)
-                .iter()
-                .map(ToString::to_string),
-        );
+        let check = rapid_runtime::load_check(&t.task);
+        errors.extend(check.errors.iter().map(ToString::to_string));
+        notes.extend(check.signals.iter().map(ToString::to_string));
+        checks.push(check);
     }
     if !errors.is_empty() {
         return Err(NotRun::LoadErrors(errors));
@@ -195,12 +230,17 @@ pub fn build(
         signals: options.sets.clone(),
         sandbox: options.sandbox.clone(),
         trace: options.trace,
+        ..Config::default()
     };
-    let world = World::simulated(&config, output);
+    let mut world = World::simulated(&config, output);
+    world.pendant = options.operator.pendant().map_err(NotRun::Other)?;
+    if let Some(map) = &options.socket_map {
+        world.sockets = Box::new(sockets::HostSockets::new(map.clone()));
+    }
     let mut controller = Controller::new(config, world);
     let mut started = 0;
-    for t in &loaded.tasks {
-        let program = load::program(t.task.clone(), &options.sets);
+    for (t, check) in loaded.tasks.iter().zip(&checks) {
+        let program = load::program(t.task.clone(), &options.sets, check);
         let entry = program.find_routine(&t.entry);
         if let Some(id) = entry
             && let Some(r) = program.routines().into_iter().find(|r| r.id == id)
@@ -236,7 +276,7 @@ pub fn build(
             entries.join(", ")
         )));
     }
-    Ok(controller)
+    Ok((controller, notes))
 }
 
 /// What a run may use: its budgets, the folder its file instructions work
@@ -246,6 +286,8 @@ pub struct Budget {
     pub limits: Limits,
     pub sandbox: Option<PathBuf>,
     pub trace: bool,
+    /// The operator's answers, one a question ([`operator`]'s forms).
+    pub answers: Vec<String>,
 }
 
 /// A run of one task that ended: how, the moves (when traced), the
@@ -284,8 +326,14 @@ pub fn run_routine(
         limits: budget.limits,
         sandbox: Some(sandbox.path.clone()),
         trace: budget.trace,
+        operator: operator::OperatorOptions {
+            answers: budget.answers,
+            terminal: false,
+        },
+        // The simulated network: a request opens no sockets of the host.
+        socket_map: None,
     };
-    let mut controller = build(&loaded, &options, out).map_err(|e| e.to_string())?;
+    let (mut controller, _) = build(&loaded, &options, out).map_err(|e| e.to_string())?;
     controller.run();
     let mut report = report_of(&controller);
     let (_, outcome) = report
@@ -309,6 +357,7 @@ pub fn report_of(controller: &Controller) -> RunReport {
             .filter_map(|(name, o)| Some((name, o?)))
             .collect(),
         moves: controller.moves().to_vec(),
+        notes: Vec::new(),
     }
 }
 
@@ -333,12 +382,23 @@ fn run_inner(args: RunArgs) -> Result<ExitCode, String> {
         .map(|s| load::parse_set(s))
         .collect::<Result<Vec<_>, _>>()?;
     let loaded = load::controller(&args.path, args.task.as_deref(), args.entry.as_deref())?;
+    if args.list_unsupported {
+        list_unsupported(&loaded, &sets);
+        return Ok(ExitCode::SUCCESS);
+    }
     let sandbox = Sandbox::new(args.sandbox.clone())?;
     let options = RunOptions {
         sets,
         limits: args.limits.limits(),
         sandbox: Some(sandbox.path.clone()),
         trace: args.trace.is_some() || args.plot.is_some(),
+        operator: operator::OperatorOptions::from_args(args.answers.as_deref(), &args.answer)?,
+        socket_map: Some(
+            args.socket_map
+                .iter()
+                .map(|m| sockets::parse_map(m))
+                .collect::<Result<_, _>>()?,
+        ),
     };
     let out = |_: Stream, line: &str| {
         let stdout = std::io::stdout();
@@ -356,7 +416,7 @@ fn run_inner(args: RunArgs) -> Result<ExitCode, String> {
             .map_err(|e| format!("{}: {e}", path.display()))?;
     }
     let mut err = anstream::stderr();
-    for line in report.describe() {
+    for line in report.notes.iter().chain(&report.describe()) {
         let _ = writeln!(err, "{line}");
     }
     Ok(if report.is_success() {
@@ -364,6 +424,34 @@ fn run_inner(args: RunArgs) -> Result<ExitCode, String> {
     } else {
         ExitCode::from(1)
     })
+}
+
+/// `--list-unsupported`: each call the simulation does not support, one
+/// line each (`file:line:column: NAME`, named by its task when several),
+/// then how many.
+fn list_unsupported(loaded: &load::Loaded, sets: &[SignalChange]) {
+    let stdout = std::io::stdout();
+    let mut out = stdout.lock();
+    let several = loaded.tasks.len() > 1;
+    let mut count = 0;
+    for t in &loaded.tasks {
+        let check = rapid_runtime::load_check(&t.task);
+        let program = load::program(t.task.clone(), sets, &check);
+        for (name, at) in program.unsupported() {
+            count += 1;
+            let task = if several {
+                format!(" [{}]", t.name)
+            } else {
+                String::new()
+            };
+            let _ = writeln!(out, "{}:{}:{}: {name}{task}", at.path, at.line, at.column);
+        }
+    }
+    let _ = writeln!(
+        out,
+        "{count} call{} the simulation does not support",
+        if count == 1 { "" } else { "s" }
+    );
 }
 
 /// The lines that say how a run ended: the error and where, then the
@@ -382,6 +470,7 @@ pub fn describe(o: &Outcome) -> Vec<String> {
         Status::Invalid => format!("error: the program cannot run: {}", o.message),
         Status::Budget => format!("error: {}", o.message),
         Status::Deadlock => format!("error: deadlock: {}", o.message),
+        Status::Operator => format!("stopped: {}", o.message),
     };
     lines.push(head);
     if let Some(at) = &o.at {

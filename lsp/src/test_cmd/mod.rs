@@ -182,8 +182,9 @@ pub fn run_tests(
     let mut results = Vec::new();
     for task in tasks {
         let task = load::with_modules(task, &[(ASSERT_PATH, ASSERT_MODULE)]);
-        let errors = rapid_runtime::load_errors(&task);
-        let program = load::program(task, &options.sets);
+        let check = rapid_runtime::load_check(&task);
+        let program = load::program(task, &options.sets, &check);
+        let errors = check.errors;
         let tests = discover(&program, options.filter.as_deref());
         if let Some(first) = errors.first() {
             // The controller would not load the task: none of its tests runs.
@@ -264,6 +265,7 @@ fn run_test(
         signals: options.sets.clone(),
         sandbox: Some(sandbox.path.clone()),
         trace: false,
+        ..Config::default()
     };
     let lines: Arc<Mutex<Vec<(Stream, String)>>> = Arc::default();
     let sink = lines.clone();

@@ -11,8 +11,11 @@ pub(crate) mod files;
 pub(crate) mod io;
 pub(crate) mod motion;
 pub(crate) mod output;
+pub(crate) mod pendant;
+pub(crate) mod rawbytes;
 pub(crate) mod sockets;
 pub(crate) mod tasks;
+pub(crate) mod units;
 
 use rapid_analyzer::catalogue::Routine as CatalogueRoutine;
 use rapid_evaluator::Value;
@@ -47,8 +50,11 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("ErrWrite", output::err_write),
     ("TPErase", output::nothing),
     ("TPShow", output::nothing),
-    ("TPReadFK", output::tp_read_fk),
-    ("TPReadNum", output::tp_read_num),
+    ("TPReadFK", pendant::tp_read_fk),
+    ("TPReadNum", pendant::tp_read_num),
+    ("TPReadDnum", pendant::tp_read_num),
+    ("UIMsgBox", pendant::ui_msg_box),
+    ("UIShow", output::nothing),
     ("Incr", data::incr),
     ("Decr", data::decr),
     ("Add", data::add),
@@ -136,6 +142,16 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("SocketSend", sockets::socket_send),
     ("SocketReceive", sockets::socket_receive),
     ("SocketClose", sockets::socket_close),
+    ("SocketBind", sockets::socket_bind),
+    ("SocketListen", sockets::socket_listen),
+    ("SocketAccept", sockets::socket_accept),
+    ("ActUnit", units::act_unit),
+    ("DeactUnit", units::deact_unit),
+    ("MotionSup", motion::setting),
+    ("ClearRawBytes", rawbytes::clear_raw_bytes),
+    ("CopyRawBytes", rawbytes::copy_raw_bytes),
+    ("PackRawBytes", rawbytes::pack_raw_bytes),
+    ("UnpackRawBytes", rawbytes::unpack_raw_bytes),
     ("WaitSyncTask", tasks::wait_sync_task),
     ("SyncMoveOn", tasks::sync_move_on),
     ("SyncMoveOff", tasks::sync_move_off),
@@ -156,6 +172,17 @@ const FUNCTIONS: &[(&str, FuncFn)] = &[
     ("OpMode", data::op_mode),
     ("RunMode", data::run_mode),
     ("IsStopMoveAct", data::is_stop_move_act),
+    ("UIMessageBox", pendant::ui_message_box),
+    ("UINumEntry", pendant::ui_num_entry),
+    ("UIDnumEntry", pendant::ui_num_entry),
+    ("UINumTune", pendant::ui_num_tune),
+    ("UIDnumTune", pendant::ui_num_tune),
+    ("UIAlphaEntry", pendant::ui_alpha_entry),
+    ("UIListView", pendant::ui_list_view),
+    ("UIClientExist", pendant::ui_client_exist),
+    ("SocketGetStatus", sockets::socket_get_status),
+    ("RawBytesLen", rawbytes::raw_bytes_len),
+    ("IsMechUnitActive", units::is_mech_unit_active),
     ("DInput", io::input),
     ("DOutput", io::input),
     ("AInput", io::input),

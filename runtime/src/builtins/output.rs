@@ -1,13 +1,11 @@
-//! The FlexPendant and the event log: `TPWrite`, `ErrWrite`, and the
-//! questions to the operator (`TPReadFK`, `TPReadNum`), which go to the
-//! world's [`crate::world::Pendant`].
+//! The FlexPendant and the event log: `TPWrite`, `ErrWrite` (the
+//! questions to the operator are [`super::pendant`]'s).
 
 use rapid_evaluator::{Value, format_dnum, format_num};
 
 use super::{Args, Cx, Done};
 use crate::Stream;
-use crate::machine::{FaultKind, R, fault, invalid};
-use crate::world::{Answer, Question};
+use crate::machine::{R, invalid};
 
 /// `TPWrite String [\Num] | [\Bool] | [\Pos] | [\Orient] | [\Dnum]`: the
 /// text, then the value as the pendant writes it (a num with up to six
@@ -73,53 +71,4 @@ pub(crate) fn err_write(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
 /// Instructions that change only what the pendant shows.
 pub(crate) fn nothing(_: &mut Cx<'_>, _: &mut Args) -> R<Done> {
     Ok(Done::Next)
-}
-
-/// `TPReadFK Answer, Text, FK1, FK2, FK3, FK4, FK5 ...`: the operator
-/// presses a function key; its number (1 to 5) goes to `Answer`.
-pub(crate) fn tp_read_fk(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
-    let text = cx.string(a, "TPText")?;
-    let mut keys = Vec::new();
-    for k in ["TPFK1", "TPFK2", "TPFK3", "TPFK4", "TPFK5"] {
-        keys.push(cx.opt_string(a, k)?.unwrap_or_default());
-    }
-    let answer = cx.sh.pendant.ask(
-        &cx.m.name,
-        &Question::FunctionKeys {
-            text: &text,
-            keys: &keys,
-        },
-    );
-    let p = cx.place_arg(a, "TPAnswer")?;
-    match answer {
-        Some(Answer::Key(k)) if k < keys.len() => {
-            cx.store(&p, Value::Num((k + 1) as f32))?;
-            Ok(Done::Next)
-        }
-        _ => no_operator(a),
-    }
-}
-
-/// `TPReadNum Answer, Text`: the operator enters a number.
-pub(crate) fn tp_read_num(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
-    let text = cx.string(a, "TPText")?;
-    let answer = cx
-        .sh
-        .pendant
-        .ask(&cx.m.name, &Question::Number { text: &text });
-    let p = cx.place_arg(a, "TPAnswer")?;
-    match answer {
-        Some(Answer::Number(x)) => {
-            cx.store(&p, Value::Num(x as f32))?;
-            Ok(Done::Next)
-        }
-        _ => no_operator(a),
-    }
-}
-
-fn no_operator<T>(a: &Args) -> R<T> {
-    fault(FaultKind::Unsupported(format!(
-        "{} (no operator answers in the simulation)",
-        a.name
-    )))
 }

@@ -61,6 +61,8 @@ pub(crate) struct Shared {
     pub open: crate::builtins::files::OpenFiles,
     pub pendant: Box<dyn Pendant>,
     pub sockets: Box<dyn Sockets>,
+    /// The mechanical units `DeactUnit` deactivated (folded names).
+    pub inactive_units: Vec<String>,
     output: Box<dyn Output>,
     /// Each task's robot, by task index.
     pub robots: Vec<Option<Box<dyn Robot>>>,
@@ -137,7 +139,7 @@ impl Shared {
     }
 
     /// Moves the clock to `t`, applying the changes due by then.
-    fn advance_to(&mut self, t: f64) {
+    pub(crate) fn advance_to(&mut self, t: f64) {
         for (name, value) in self.io.advance(t) {
             self.events.push((name, value));
         }
@@ -198,6 +200,7 @@ impl Controller {
                 events: Vec::new(),
                 sync: Sync::default(),
                 files: world.files,
+                inactive_units: Vec::new(),
                 open: Default::default(),
                 pendant: world.pendant,
                 sockets: world.sockets,

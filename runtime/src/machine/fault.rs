@@ -41,6 +41,9 @@ pub(crate) enum FaultKind {
     Invalid(String),
     Budget(String),
     Deadlock(String),
+    /// Waiting for the operator, who does not answer (or answers what
+    /// does not fit).
+    Operator(String),
     /// `EXIT` or `Stop`: ends the run without an error.
     Halt(Status),
 }
@@ -68,11 +71,7 @@ pub(crate) fn rapid_error(prog: &Program, code: ErrorCode, message: String) -> F
 
 /// The fault of the predefined error `name` (`ERR_WAIT_MAXTIME`).
 pub(crate) fn named_error(prog: &Program, name: &str, message: String) -> FaultKind {
-    let errno = prog
-        .errnums
-        .get(&name.to_ascii_lowercase())
-        .copied()
-        .unwrap_or(0.0);
+    let errno = prog.errnum(name);
     FaultKind::Rapid {
         errno,
         name: name.to_owned(),
@@ -110,6 +109,7 @@ impl Machine {
             FaultKind::Invalid(m) => (Status::Invalid, m.clone(), None),
             FaultKind::Budget(m) => (Status::Budget, m.clone(), None),
             FaultKind::Deadlock(m) => (Status::Deadlock, m.clone(), None),
+            FaultKind::Operator(m) => (Status::Operator, m.clone(), None),
             FaultKind::Halt(s) => (*s, String::new(), None),
         };
         Outcome {

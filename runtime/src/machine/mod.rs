@@ -23,7 +23,7 @@ use crate::program::{Location, Program};
 
 pub(crate) use data::{Place, Root, describe, is_signal};
 pub(crate) use fault::{Fault, FaultKind, R, fault, invalid, named_error, rapid_error};
-pub(crate) use wait::{SignalTest, Timeout, Wait, WaitKind};
+pub(crate) use wait::{OperatorWait, SignalTest, Timeout, Wait, WaitKind};
 
 /// How a task's run ended.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -48,6 +48,10 @@ pub enum Status {
     Budget,
     /// The task waits for something that can never happen.
     Deadlock,
+    /// The task waits for the operator and nobody answers (no answer
+    /// scripted, no terminal), or the scripted answer does not fit the
+    /// question.
+    Operator,
 }
 
 /// The outcome of a run.
@@ -243,6 +247,9 @@ pub struct Machine {
     /// A builtin read the clock while evaluating a `WaitUntil`
     /// condition.
     pub(crate) read_clock: bool,
+    /// A function of the controller waits (for the operator): the task
+    /// blocks, and the wait's end gives the function's result.
+    pub(crate) function_wait: Option<Box<Wait>>,
 }
 
 impl Machine {
@@ -277,6 +284,7 @@ impl Machine {
             pending: None,
             evaluated: None,
             read_clock: false,
+            function_wait: None,
             name,
             number,
             prog,

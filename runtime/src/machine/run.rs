@@ -407,6 +407,10 @@ impl Machine {
                     match b.f {
                         BuiltinFn::Function(f) => {
                             let v = f(&mut crate::builtins::Cx { m: self, sh }, &mut args)?;
+                            if let Some(w) = self.function_wait.take() {
+                                self.block(*w);
+                                return Ok(Some(Yield::Blocked));
+                            }
                             self.vals.push(v);
                         }
                         BuiltinFn::Instruction(f) => {

@@ -56,6 +56,31 @@ pub(crate) enum WaitKind {
     /// Until the bool at the place is `FALSE`, which is then set
     /// (`WaitTestAndSet`).
     Semaphore(Place),
+    /// Until the deadline, which fails the wait (a socket nobody
+    /// answers).
+    Never,
+    /// Until the operator answers, or a break signal breaks the dialog
+    /// (`TPReadFK`, `UIMessageBox`...).
+    Operator(Box<OperatorWait>),
+}
+
+/// A question to the operator that waits for its answer.
+#[derive(Clone, Debug)]
+pub(crate) struct OperatorWait {
+    /// When the answer comes (`None`: it never does).
+    pub at: Option<f64>,
+    /// The answer's value.
+    pub answer: Value,
+    /// Where the answer goes; `None`: it is the result of the function
+    /// that asked.
+    pub to: Option<Place>,
+    /// `\DIBreak`, `\DOBreak`: the signal, the value that breaks, and
+    /// the error.
+    pub breaks: Vec<(String, SignalTest, &'static str)>,
+    /// `\BreakFlag`: gets the error instead of a raise.
+    pub flag: Option<Place>,
+    /// A function's result after a break or a time-out with a flag.
+    pub fallback: Value,
 }
 
 #[derive(Clone, Copy, Debug)]
@@ -132,6 +157,23 @@ impl Machine {
                     true
                 }
             }
+            WaitKind::Never => false,
+            WaitKind::Operator(o) => {
+                let broken = o
+                    .breaks
+                    .iter()
+                    .find(|(s, test, _)| sh.io.read(s).is_some_and(|v| test.holds(v)));
+                if let Some((signal, _, error)) = broken {
+                    let message = format!("{}: {signal} broke the dialog", w.what);
+                    return self.operator_break(sh, o, error, message);
+                }
+                let timed_out = w.deadline.is_some_and(|d| now >= d);
+                if timed_out && o.at.is_none_or(|a| a > now) {
+                    let message = format!("{}: no answer within \\MaxTime", w.what);
+                    return self.operator_break(sh, o, "ERR_TP_MAXTIME", message);
+                }
+                o.at.is_some_and(|a| now >= a)
+            }
         };
         if done {
             self.end_wait(sh, &w)?;
@@ -182,6 +224,10 @@ impl Machine {
                 }
             }
             WaitKind::Semaphore(p) => self.store(sh, p, Value::Bool(true))?,
+            WaitKind::Operator(o) => match &o.to {
+                Some(p) => self.store(sh, p, o.answer.clone())?,
+                None => self.vals.push(o.answer.clone()),
+            },
             WaitKind::Sync {
                 sync_move: Some(on),
                 ..
@@ -195,6 +241,28 @@ impl Machine {
             _ => {}
         }
         Ok(())
+    }
+
+    /// A dialog ends without an answer (a break signal, `\MaxTime`): the
+    /// error in `\BreakFlag` (a function gives its fallback), else
+    /// raised.
+    fn operator_break(
+        &mut self,
+        sh: &mut Shared,
+        o: &OperatorWait,
+        error: &'static str,
+        message: String,
+    ) -> R<Blocked> {
+        self.clear_wait();
+        let Some(flag) = &o.flag else {
+            return fault(named_error(&self.prog, error, message));
+        };
+        let errno = self.prog.errnum(error);
+        self.store(sh, flag, Value::Num(errno))?;
+        if o.to.is_none() {
+            self.vals.push(o.fallback.clone());
+        }
+        Ok(Blocked::Ready)
     }
 
     /// The innermost frame waits for `w`.
@@ -215,6 +283,7 @@ impl Machine {
                 WaitKind::Poll { clock, steps, .. } => {
                     *clock || w.deadline.is_some() || *steps != sh.steps
                 }
+                WaitKind::Operator(o) => o.at.is_some() || w.deadline.is_some(),
                 _ => w.deadline.is_some(),
             },
             None => false,
@@ -228,6 +297,7 @@ impl Machine {
         let own = match &w.kind {
             WaitKind::Time(t) | WaitKind::InPos { at: t, .. } => Some(*t),
             WaitKind::Poll { next, .. } => Some(*next),
+            WaitKind::Operator(o) => o.at,
             _ => None,
         };
         match (own, w.deadline) {

@@ -7,8 +7,8 @@
 //! | the robot arm of a motion task | [`Robot`] | [`InstantRobot`]: moves arrive at once, no kinematics |
 //! | files (`Open`, `Write`, `ReadStr`...) | [`FileSystem`] | [`SandboxFs`]: a folder, no path leaves it |
 //! | I/O signals | [`Io`] | [`ScriptedIo`]: zero at the start, a script of timed changes |
-//! | the operator at the FlexPendant | [`Pendant`] | [`NoOperator`]: no answers |
-//! | sockets | [`Sockets`] | [`NoSockets`]: not supported |
+//! | the operator at the FlexPendant | [`Pendant`] | [`ScriptedOperator`]: [`crate::Config::answers`] |
+//! | sockets | [`Sockets`] | [`EmptyNetwork`]: nobody answers (`rapid run`: the host's) |
 //! | printed lines (`TPWrite`, `ErrWrite`) | [`crate::Output`] | the caller's sink |
 
 mod files;
@@ -19,12 +19,12 @@ mod sockets;
 
 pub use files::{FileError, FileKind, FileSystem, MemoryFs, SandboxFs};
 pub use io::{Io, ScriptedIo};
-pub use pendant::{Answer, NoOperator, Pendant, Question};
+pub use pendant::{Expect, NoOperator, Pendant, Question, Reply, ScriptedOperator, parse_answer};
 pub use robot::{
     InstantRobot, JointTarget, Motion, MoveKind, MoveRequest, MoveTarget, Pose, RobTarget, Robot,
     RobotError, Speed, Tool, WObj, Zone,
 };
-pub use sockets::{NoSockets, SocketError, Sockets};
+pub use sockets::{EmptyNetwork, NoSockets, SocketError, SocketState, Sockets};
 
 use crate::{Config, Output};
 
@@ -41,13 +41,15 @@ pub struct World {
 impl World {
     /// The simulated controller's world: the signals scripted in `config`,
     /// files in its sandbox folder (none: file instructions are not
-    /// supported), no operator, no sockets, lines to `output`.
+    /// supported), an operator who gives the answers of `config` (lines
+    /// that do not parse are left out: [`ScriptedOperator::new`] says
+    /// why), a network where nobody answers, lines to `output`.
     pub fn simulated(config: &Config, output: Box<dyn Output>) -> World {
         World {
             io: Box::new(ScriptedIo::new(config.signals.clone())),
             files: Box::new(SandboxFs::new(config.sandbox.clone())),
-            pendant: Box::new(NoOperator),
-            sockets: Box::new(NoSockets),
+            pendant: Box::new(ScriptedOperator::new(&config.answers).unwrap_or_default()),
+            sockets: Box::new(EmptyNetwork::default()),
             output,
         }
     }

@@ -1,10 +1,15 @@
-//! Sockets (`SocketCreate`, `SocketConnect`, `SocketSend`,
-//! `SocketReceive`, `SocketClose`), behind [`Sockets`]. [`NoSockets`] (the
-//! default) has none: the instructions are not supported in the
-//! simulation.
+//! Sockets (`SocketCreate`, `SocketConnect`, `SocketBind`,
+//! `SocketListen`, `SocketAccept`, `SocketSend`, `SocketReceive`,
+//! `SocketClose`, `SocketGetStatus`), behind [`Sockets`]. [`NoSockets`]
+//! (the default) has none: the instructions are not supported in the
+//! simulation; `rapid run` gives real sockets of the host.
+//!
+//! Waits (`\Time` of `SocketConnect`, `SocketAccept`, `SocketReceive`) are
+//! real time, bounded by the timeout given; the simulated clock moves by
+//! the time waited.
 
 /// Why a socket operation failed.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum SocketError {
     /// Sockets are not available in this simulation.
     Unsupported,
@@ -13,17 +18,71 @@ pub enum SocketError {
     Closed(String),
     /// Nothing came in time (`ERR_SOCK_TIMEOUT`).
     Timeout(String),
+    /// Nothing will come: the task waits `after` simulated seconds (other
+    /// tasks run meanwhile), then times out (`ERR_SOCK_TIMEOUT`).
+    NeverAnswers { after: f64, message: String },
+    /// Anything else the controller reports as a socket error (an address
+    /// in use, an operation the socket's state does not allow):
+    /// `ERR_SOCK_CLOSED` too, with the host's reason.
+    Failed(String),
+}
+
+/// A socket's state, as `SocketGetStatus` gives it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SocketState {
+    Created,
+    Connected,
+    Bound,
+    Listening,
+    Closed,
+}
+
+impl SocketState {
+    /// The `socketstatus` constant of the state.
+    pub fn constant(self) -> &'static str {
+        match self {
+            SocketState::Created => "SOCKET_CREATED",
+            SocketState::Connected => "SOCKET_CONNECTED",
+            SocketState::Bound => "SOCKET_BOUND",
+            SocketState::Listening => "SOCKET_LISTENING",
+            SocketState::Closed => "SOCKET_CLOSED",
+        }
+    }
 }
 
 /// The controller's sockets; a socket is known by the number `create`
-/// gave it.
+/// (or `accept`) gave it, from 1. Timeouts are in seconds.
 pub trait Sockets: Send {
-    fn create(&mut self) -> Result<u32, SocketError>;
-    fn connect(&mut self, socket: u32, address: &str, port: u32) -> Result<(), SocketError>;
+    fn create(&mut self, udp: bool) -> Result<u32, SocketError>;
+    fn connect(
+        &mut self,
+        socket: u32,
+        address: &str,
+        port: u32,
+        timeout: f64,
+    ) -> Result<(), SocketError>;
+    fn bind(&mut self, socket: u32, address: &str, port: u32) -> Result<(), SocketError>;
+    fn listen(&mut self, socket: u32) -> Result<(), SocketError>;
+    /// A connection that came in: the new socket's number and the other
+    /// side's address.
+    fn accept(&mut self, socket: u32, timeout: f64) -> Result<(u32, String), SocketError>;
     fn send(&mut self, socket: u32, data: &[u8]) -> Result<(), SocketError>;
-    /// What has come in (up to a message).
-    fn receive(&mut self, socket: u32) -> Result<Vec<u8>, SocketError>;
+    /// What has come in: at least one byte and at most `max`, or exactly
+    /// `max` with `exact`.
+    fn receive(
+        &mut self,
+        socket: u32,
+        max: usize,
+        exact: bool,
+        timeout: f64,
+    ) -> Result<Vec<u8>, SocketError>;
     fn close(&mut self, socket: u32) -> Result<(), SocketError>;
+    fn state(&self, socket: u32) -> SocketState;
+    /// The real seconds the sockets waited since this was last asked (the
+    /// simulated clock moves by as much).
+    fn waited(&mut self) -> f64 {
+        0.0
+    }
 }
 
 /// No sockets.
@@ -31,19 +90,124 @@ pub trait Sockets: Send {
 pub struct NoSockets;
 
 impl Sockets for NoSockets {
-    fn create(&mut self) -> Result<u32, SocketError> {
+    fn create(&mut self, _: bool) -> Result<u32, SocketError> {
         Err(SocketError::Unsupported)
     }
-    fn connect(&mut self, _: u32, _: &str, _: u32) -> Result<(), SocketError> {
+    fn connect(&mut self, _: u32, _: &str, _: u32, _: f64) -> Result<(), SocketError> {
+        Err(SocketError::Unsupported)
+    }
+    fn bind(&mut self, _: u32, _: &str, _: u32) -> Result<(), SocketError> {
+        Err(SocketError::Unsupported)
+    }
+    fn listen(&mut self, _: u32) -> Result<(), SocketError> {
+        Err(SocketError::Unsupported)
+    }
+    fn accept(&mut self, _: u32, _: f64) -> Result<(u32, String), SocketError> {
         Err(SocketError::Unsupported)
     }
     fn send(&mut self, _: u32, _: &[u8]) -> Result<(), SocketError> {
         Err(SocketError::Unsupported)
     }
-    fn receive(&mut self, _: u32) -> Result<Vec<u8>, SocketError> {
+    fn receive(&mut self, _: u32, _: usize, _: bool, _: f64) -> Result<Vec<u8>, SocketError> {
         Err(SocketError::Unsupported)
     }
     fn close(&mut self, _: u32) -> Result<(), SocketError> {
         Err(SocketError::Unsupported)
+    }
+    fn state(&self, _: u32) -> SocketState {
+        SocketState::Closed
+    }
+}
+
+/// A controller on a network where nobody answers: sockets are created,
+/// bound and listen, but a connection never comes and a connect gets no
+/// answer, each after its whole `\Time` (simulated); a receive or send on
+/// a socket that is not connected fails as closed. The default of
+/// [`super::World::simulated`]: deterministic, and a program that waits
+/// for its peer waits as it would in a cell with the peer switched off.
+#[derive(Debug, Default)]
+pub struct EmptyNetwork {
+    states: Vec<SocketState>,
+}
+
+impl EmptyNetwork {
+    fn slot(&mut self, socket: u32) -> Result<&mut SocketState, SocketError> {
+        match self.states.get_mut((socket as usize).wrapping_sub(1)) {
+            Some(s) if *s != SocketState::Closed => Ok(s),
+            _ => Err(SocketError::Closed(
+                "the socket is not created, or closed".to_owned(),
+            )),
+        }
+    }
+
+    fn nobody(&mut self, timeout: f64, what: &str) -> SocketError {
+        SocketError::NeverAnswers {
+            after: timeout,
+            message: format!("{what} within {timeout} s (nobody on the network)"),
+        }
+    }
+}
+
+impl Sockets for EmptyNetwork {
+    fn create(&mut self, udp: bool) -> Result<u32, SocketError> {
+        if udp {
+            return Err(SocketError::Unsupported);
+        }
+        self.states.push(SocketState::Created);
+        Ok(self.states.len() as u32)
+    }
+    fn connect(
+        &mut self,
+        socket: u32,
+        address: &str,
+        port: u32,
+        timeout: f64,
+    ) -> Result<(), SocketError> {
+        self.slot(socket)?;
+        Err(self.nobody(timeout, &format!("no connection to {address}:{port}")))
+    }
+    fn bind(&mut self, socket: u32, _: &str, _: u32) -> Result<(), SocketError> {
+        *self.slot(socket)? = SocketState::Bound;
+        Ok(())
+    }
+    fn listen(&mut self, socket: u32) -> Result<(), SocketError> {
+        let s = self.slot(socket)?;
+        if *s != SocketState::Bound {
+            return Err(SocketError::Failed("the socket is not bound".to_owned()));
+        }
+        *s = SocketState::Listening;
+        Ok(())
+    }
+    fn accept(&mut self, socket: u32, timeout: f64) -> Result<(u32, String), SocketError> {
+        if *self.slot(socket)? != SocketState::Listening {
+            return Err(SocketError::Failed(
+                "the socket is not listening".to_owned(),
+            ));
+        }
+        Err(self.nobody(timeout, "no connection came"))
+    }
+    fn send(&mut self, socket: u32, _: &[u8]) -> Result<(), SocketError> {
+        self.slot(socket)?;
+        Err(SocketError::Closed(
+            "the socket is not connected".to_owned(),
+        ))
+    }
+    fn receive(&mut self, socket: u32, _: usize, _: bool, _: f64) -> Result<Vec<u8>, SocketError> {
+        self.slot(socket)?;
+        Err(SocketError::Closed(
+            "the socket is not connected".to_owned(),
+        ))
+    }
+    fn close(&mut self, socket: u32) -> Result<(), SocketError> {
+        if let Ok(s) = self.slot(socket) {
+            *s = SocketState::Closed;
+        }
+        Ok(())
+    }
+    fn state(&self, socket: u32) -> SocketState {
+        self.states
+            .get((socket as usize).wrapping_sub(1))
+            .copied()
+            .unwrap_or(SocketState::Closed)
     }
 }

@@ -1,11 +1,11 @@
 MODULE unsupported
   ! What the simulation does not do stops the run with its name.
-  VAR socketdev sock;
+  VAR egmident egm;
   PROC main()
     TPWrite "before";
-    SocketCreate sock;
+    EGMGetId egm;
     TPWrite "not reached";
   ENDPROC
 ENDMODULE
 !> before
-!! unsupported: SocketCreate at 6
+!! unsupported: EGMGetId at 6

@@ -23,6 +23,7 @@ pub fn brief(o: &Outcome) -> Option<String> {
         Status::Invalid => format!("invalid at {line}"),
         Status::Budget => format!("budget at {line}"),
         Status::Deadlock => format!("deadlock at {line}"),
+        Status::Operator => format!("operator at {line}"),
     })
 }
 

@@ -1,0 +1,287 @@
+//! How `rapid run` fares on the corpus of real programs
+//! (`../shared/corpus`, or `RAPID_CORPUS`): every controller backup runs
+//! with all its tasks together (as `rapid run BACKUP`), every other task
+//! alone from its `main` (as `rapid run FOLDER`), with no operator
+//! answers, the simulated network and the corpus test's budgets; each
+//! task's end is classified. The figures, the classes and the instructions
+//! that stop runs are generated into `docs/corpus-runs.md`, which the test
+//! checks (`RAPID_BLESS=1` rewrites it).
+
+use std::collections::BTreeMap;
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+use rapid_analyzer::layout::controller_of;
+use rapid_runtime::{Limits, Outcome, Status};
+
+use super::load::{self, Loaded};
+use super::{NotRun, RunOptions, execute};
+
+/// How a task's run ended, in the words of the classification.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub enum Class {
+    /// Its end, `EXIT`, `Stop`.
+    Ended,
+    /// Waiting for an input nothing changes, or for the operator.
+    Idle,
+    /// The step or time budget ran out (an endless main loop).
+    Budget,
+    /// An instruction the simulation does not have.
+    Unsupported,
+    /// A RAPID error no handler took.
+    Error,
+    /// The program cannot run as written.
+    Invalid,
+    /// The controller would not load it.
+    Refused,
+    /// No entry routine: nothing to run.
+    NoEntry,
+}
+
+impl Class {
+    fn of(o: &Outcome) -> Class {
+        match o.status {
+            Status::Finished | Status::Exited | Status::Stopped | Status::Halted => Class::Ended,
+            Status::Deadlock | Status::Operator => Class::Idle,
+            Status::Budget => Class::Budget,
+            Status::Unsupported => Class::Unsupported,
+            Status::Error => Class::Error,
+            Status::Invalid => Class::Invalid,
+        }
+    }
+
+    fn describe(self) -> &'static str {
+        match self {
+            Class::Ended => "ended (its end, EXIT, Stop)",
+            Class::Idle => "waits idle (an input nothing changes, the operator)",
+            Class::Budget => "loops until the budget",
+            Class::Unsupported => "stopped on an unsupported instruction",
+            Class::Error => "an unhandled RAPID error",
+            Class::Invalid => "cannot run as written",
+            Class::Refused => "refused to start (load errors)",
+            Class::NoEntry => "no entry routine (not counted)",
+        }
+    }
+
+    fn good(self) -> bool {
+        matches!(self, Class::Ended | Class::Idle | Class::Budget)
+    }
+}
+
+/// One task's run.
+pub struct TaskRun {
+    pub key: String,
+    pub backup: bool,
+    pub class: Class,
+    /// The unsupported instruction, the error, the message.
+    pub detail: String,
+}
+
+fn options() -> RunOptions {
+    RunOptions {
+        sets: Vec::new(),
+        limits: Limits {
+            max_steps: 100_000,
+            max_time: 300.0,
+            max_depth: 200,
+            ..Limits::default()
+        },
+        sandbox: None,
+        trace: false,
+        operator: super::operator::OperatorOptions::default(),
+        socket_map: None,
+    }
+}
+
+/// Runs every task of the corpus at `dir`.
+pub fn sweep(dir: &Path) -> Result<Vec<TaskRun>, String> {
+    let found = load::tasks(&[dir.to_path_buf()])?;
+    let mut groups: BTreeMap<String, Vec<usize>> = BTreeMap::new();
+    for (i, t) in found.tasks.iter().enumerate() {
+        let group = controller_of(&t.key).map_or_else(|| t.key.clone(), |c| c.to_string());
+        groups.entry(group).or_default().push(i);
+    }
+    let sandbox = super::Sandbox::new(None)?;
+    let mut opts = options();
+    opts.sandbox = Some(sandbox.path.clone());
+    let mut out = Vec::new();
+    for members in groups.values() {
+        let lone = members.len() == 1;
+        let tasks: Vec<_> = members
+            .iter()
+            .map(|&i| load::to_run(&found.tasks[i], found.settings[i].as_ref(), lone, "main"))
+            .collect();
+        let names: Vec<(String, String, bool)> = tasks
+            .iter()
+            .map(|t| (t.name.clone(), t.task.key.clone(), t.task.is_backup()))
+            .collect();
+        let loaded = Loaded { tasks };
+        let result = execute(&loaded, &opts, Box::new(|_, _: &str| {}));
+        for (name, key, backup) in names {
+            let (class, detail) = match &result {
+                Err(NotRun::LoadErrors(e)) => {
+                    (Class::Refused, e.first().cloned().unwrap_or_default())
+                }
+                Err(NotRun::Other(m)) => (Class::NoEntry, m.clone()),
+                Ok(report) => match report.tasks.iter().find(|(n, _)| *n == name) {
+                    Some((_, o)) => (Class::of(o), o.message.clone()),
+                    None => (Class::NoEntry, String::new()),
+                },
+            };
+            out.push(TaskRun {
+                key,
+                backup,
+                class,
+                detail,
+            });
+        }
+    }
+    Ok(out)
+}
+
+/// The generated page.
+pub fn page(runs: &[TaskRun]) -> String {
+    let mut s = String::new();
+    let _ = writeln!(s, "# Corpus runs\n");
+    let _ = writeln!(
+        s,
+        "<!-- Generated by `RAPID_BLESS=1 cargo test -p rapid-lsp --bin rapid corpus_runs`. Do not edit. -->\n"
+    );
+    let _ = writeln!(
+        s,
+        "`rapid run` over `../shared/corpus` (real RAPID programs from public repositories, test input only): every controller backup with all its tasks together, every other task (grouped as `rapid check` groups them) alone from its `main`. No operator answers (a question stops the task waiting for the operator), a network where nobody answers, at most 100,000 statements and 300 simulated seconds a run. A task without an entry routine (a library of modules) has nothing to run and is not counted.\n"
+    );
+    // The controller backups' tasks, the other tasks, all.
+    let groups: [fn(&TaskRun) -> bool; 3] = [|r| r.backup, |r| !r.backup, |_| true];
+    let _ = writeln!(
+        s,
+        "| class | controller backups' tasks | other tasks | all tasks |\n| --- | ---: | ---: | ---: |"
+    );
+    let classes = [
+        Class::Ended,
+        Class::Idle,
+        Class::Budget,
+        Class::Unsupported,
+        Class::Error,
+        Class::Invalid,
+        Class::Refused,
+        Class::NoEntry,
+    ];
+    for c in classes {
+        let counts: Vec<String> = groups
+            .iter()
+            .map(|f| {
+                runs.iter()
+                    .filter(|r| f(r) && r.class == c)
+                    .count()
+                    .to_string()
+            })
+            .collect();
+        let _ = writeln!(s, "| {} | {} |", c.describe(), counts.join(" | "));
+    }
+    let shares: Vec<String> = groups
+        .iter()
+        .map(|f| {
+            let counted: Vec<&TaskRun> = runs
+                .iter()
+                .filter(|r| f(r) && r.class != Class::NoEntry)
+                .collect();
+            let good = counted.iter().filter(|r| r.class.good()).count();
+            format!(
+                "{good} of {} ({}%)",
+                counted.len(),
+                percent(good, counted.len())
+            )
+        })
+        .collect();
+    let _ = writeln!(
+        s,
+        "| **ended, idle or budget** | **{}** |\n",
+        shares.join("** | **")
+    );
+    let _ = writeln!(
+        s,
+        "The targets: four in five among the controller backups' tasks, two in three overall.\n"
+    );
+    let mut stops: BTreeMap<String, usize> = BTreeMap::new();
+    for r in runs.iter().filter(|r| r.class == Class::Unsupported) {
+        let name = r
+            .detail
+            .trim_start_matches("not supported in simulation: ")
+            .split([' ', '('])
+            .next()
+            .unwrap_or_default()
+            .to_owned();
+        *stops.entry(name).or_default() += 1;
+    }
+    let mut stops: Vec<_> = stops.into_iter().collect();
+    stops.sort_by(|a, b| b.1.cmp(&a.1).then_with(|| a.0.cmp(&b.0)));
+    let _ = writeln!(
+        s,
+        "## Instructions that stop runs\n\n| instruction or function | tasks |\n| --- | ---: |"
+    );
+    for (name, n) in stops {
+        let _ = writeln!(s, "| `{name}` | {n} |");
+    }
+    let _ = writeln!(s, "\n## Every task\n");
+    let _ = writeln!(s, "| task | class | detail |\n| --- | --- | --- |");
+    for r in runs {
+        let detail = r
+            .detail
+            .lines()
+            .next()
+            .unwrap_or_default()
+            .replace('|', "\\|");
+        let _ = writeln!(s, "| `{}` | {:?} | {} |", r.key, r.class, detail);
+    }
+    s
+}
+
+fn percent(a: usize, b: usize) -> usize {
+    (a * 100).checked_div(b).unwrap_or(0)
+}
+
+/// The corpus folder: `RAPID_CORPUS`, else `../shared/corpus` beside the
+/// repository.
+pub fn corpus_dir() -> Option<PathBuf> {
+    if let Some(dir) = std::env::var_os("RAPID_CORPUS") {
+        let dir = PathBuf::from(dir);
+        return dir.is_dir().then_some(dir);
+    }
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shared/corpus");
+    dir.is_dir().then_some(dir)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn corpus_runs_are_classified_as_docs_corpus_runs_says() {
+        let Some(dir) = corpus_dir() else {
+            return;
+        };
+        let runs = sweep(&dir).expect("the corpus loads");
+        let relative: Vec<TaskRun> = runs
+            .into_iter()
+            .map(|r| TaskRun {
+                key: Path::new(&r.key)
+                    .strip_prefix(&dir)
+                    .map_or(r.key.clone(), |p| p.to_string_lossy().into_owned()),
+                detail: r.detail.replace(&*dir.to_string_lossy(), ""),
+                ..r
+            })
+            .collect();
+        let text = page(&relative);
+        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs/corpus-runs.md");
+        if std::env::var_os("RAPID_BLESS").is_some() {
+            std::fs::write(&path, &text).expect("written");
+            return;
+        }
+        let old = std::fs::read_to_string(&path).unwrap_or_default();
+        assert!(
+            old == text,
+            "docs/corpus-runs.md is stale: RAPID_BLESS=1 cargo test -p rapid-lsp --bin rapid corpus_runs"
+        );
+    }
+}

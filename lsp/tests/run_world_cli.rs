@@ -1,0 +1,245 @@
+//! `rapid run` with the controller's world: the operator's answers
+//! (`--answers`, `--answer`), signals no EIO.cfg declares, sockets on the
+//! host's loopback (`--socket-map`): the built binary, its output and its
+//! exit codes.
+
+mod support;
+
+use support::{rapid, scratch, show, write};
+
+const DIALOG: &str = "MODULE Cell
+  VAR num key;
+  VAR num parts;
+  PROC main()
+    TPReadFK key, \"Start the cell?\", \"Start\", \"Skip\", stEmpty, stEmpty, stEmpty;
+    TPWrite \"key \"\\Num:=key;
+    parts := UINumEntry(\\Header:=\"Batch\" \\Message:=\"Parts\" \\MinValue:=1 \\MaxValue:=50);
+    TPWrite \"parts \"\\Num:=parts;
+  ENDPROC
+ENDMODULE
+";
+
+#[test]
+fn the_operator_answers_from_a_file_then_from_the_options() {
+    let dir = scratch("run-answers");
+    write(
+        &dir,
+        &[("Cell.mod", DIALOG), ("answers.txt", "# the cell\nSkip\n")],
+    );
+    let out = rapid(
+        &dir,
+        &[
+            "run",
+            "Cell.mod",
+            "--answers",
+            "answers.txt",
+            "--answer",
+            "12",
+        ],
+    );
+    assert_eq!(
+        show(&out),
+        "exit 0\n--- stdout\nkey 2\nparts 12\n--- stderr\n"
+    );
+}
+
+#[test]
+fn in_a_pipe_without_answers_the_run_stops_waiting_for_the_operator() {
+    let dir = scratch("run-no-operator");
+    write(&dir, &[("Cell.mod", DIALOG)]);
+    let out = rapid(&dir, &["run", "Cell.mod", "--answer", "1"]);
+    insta::assert_snapshot!(show(&out));
+}
+
+#[test]
+fn an_answer_that_does_not_fit_the_question_is_named() {
+    let dir = scratch("run-bad-answer");
+    write(&dir, &[("Cell.mod", DIALOG)]);
+    let out = rapid(
+        &dir,
+        &["run", "Cell.mod", "--answer", "Go", "--answer", "1"],
+    );
+    insta::assert_snapshot!(show(&out));
+    let out = rapid(&dir, &["run", "Cell.mod", "--answer", "@soon 1"]);
+    assert_eq!(out.status.code(), Some(2), "{}", show(&out));
+    assert!(show(&out).contains("delay in seconds"), "{}", show(&out));
+}
+
+#[test]
+fn signals_no_eio_cfg_declares_are_taken_from_their_use_with_a_note() {
+    let dir = scratch("run-taken-signals");
+    write(
+        &dir,
+        &[(
+            "Gripper.mod",
+            "MODULE Gripper
+  PROC main()
+    WaitDI part_present, 1;
+    SetDO grip_close, 1;
+    TPWrite \"closed \"\\Num:=DOutput(grip_close);
+    IF part_present = 1 SetAO conveyor_speed, 2.5;
+    TPWrite \"speed \"\\Num:=AOutput(conveyor_speed);
+  ENDPROC
+ENDMODULE
+",
+        )],
+    );
+    let out = rapid(&dir, &["run", "Gripper.mod", "--set", "part_present=1@0.5"]);
+    insta::assert_snapshot!(show(&out));
+}
+
+/// A free port of the loopback interface.
+fn free_port() -> u16 {
+    let l = std::net::TcpListener::bind("127.0.0.1:0").expect("a port");
+    l.local_addr().expect("an address").port()
+}
+
+const SERVER: &str = "MODULE Server
+  VAR socketdev server;
+  VAR socketdev client;
+  VAR string request;
+  VAR string address;
+  VAR num n;
+  PROC main()
+    SocketCreate server;
+    SocketBind server, \"192.168.125.1\", 1025;
+    SocketListen server;
+    TPWrite \"listening \"\\Bool:=SocketGetStatus(server) = SOCKET_LISTENING;
+    SocketAccept server, client \\ClientAddress:=address \\Time:=20;
+    TPWrite \"client from \" + address;
+    SocketReceive client \\Str:=request \\NoRecBytes:=n \\Time:=20;
+    TPWrite \"request \" + request + \" (\" + NumToStr(n, 0) + \" bytes)\";
+    SocketSend client \\Str:=\"pose 1 2 3\";
+    SocketReceive client \\Str:=request \\Time:=20;
+  ERROR
+    IF ERRNO = ERR_SOCK_CLOSED THEN
+      TPWrite \"the client left\";
+      SocketClose client;
+      SocketClose server;
+      TPWrite \"closed \"\\Bool:=SocketGetStatus(server) = SOCKET_CLOSED;
+      RETURN;
+    ENDIF
+    RAISE;
+  ENDPROC
+ENDMODULE
+";
+
+#[test]
+fn a_client_in_the_harness_talks_to_a_rapid_server() {
+    use std::io::{Read, Write};
+    let dir = scratch("run-socket-server");
+    write(&dir, &[("Server.mod", SERVER)]);
+    let port = free_port();
+    let map = format!("192.168.125.1:1025=127.0.0.1:{port}");
+    let child = std::process::Command::new(env!("CARGO_BIN_EXE_rapid"))
+        .args(["run", "Server.mod", "--socket-map", &map])
+        .current_dir(&dir)
+        .stdin(std::process::Stdio::null())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("rapid runs");
+    let started = std::time::Instant::now();
+    let mut stream = loop {
+        match std::net::TcpStream::connect(("127.0.0.1", port)) {
+            Ok(s) => break s,
+            Err(e) if started.elapsed().as_secs() < 20 => {
+                let _ = e;
+                std::thread::sleep(std::time::Duration::from_millis(50));
+            }
+            Err(e) => panic!("the RAPID server never listened: {e}"),
+        }
+    };
+    stream.write_all(b"where").expect("sent");
+    let mut reply = [0u8; 10];
+    stream.read_exact(&mut reply).expect("a reply");
+    assert_eq!(&reply, b"pose 1 2 3");
+    drop(stream);
+    let out = child.wait_with_output().expect("rapid ends");
+    assert_eq!(
+        show(&out),
+        "exit 0\n--- stdout\nlistening TRUE\nclient from 127.0.0.1\nrequest where (5 bytes)\nthe client left\nclosed TRUE\n--- stderr\n"
+    );
+}
+
+const CLIENT: &str = "MODULE Client
+  VAR socketdev sock;
+  VAR rawbytes raw;
+  VAR byte data{4};
+  VAR num value;
+  VAR string text;
+  PROC main()
+    SocketCreate sock;
+    SocketConnect sock, \"10.0.0.5\", 3000 \\Time:=20;
+    TPWrite \"connected \"\\Bool:=SocketGetStatus(sock) = SOCKET_CONNECTED;
+    PackRawBytes 258, raw, 1 \\IntX:=UINT;
+    PackRawBytes \"ok\", raw, RawBytesLen(raw) + 1 \\ASCII;
+    SocketSend sock \\RawData:=raw;
+    SocketReceive sock \\Data:=data \\ReadNoOfBytes:=4 \\Time:=20;
+    TPWrite \"bytes \"\\Num:=data{1} + data{2} + data{3} + data{4};
+    SocketReceive sock \\RawData:=raw \\ReadNoOfBytes:=4 \\Time:=20;
+    UnpackRawBytes raw \\Network, 1, value \\IntX:=DINT;
+    TPWrite \"value \"\\Num:=value;
+    SocketReceive sock \\Str:=text \\Time:=1;
+  ERROR
+    TPWrite \"timed out \"\\Bool:=ERRNO = ERR_SOCK_TIMEOUT;
+    SocketClose sock;
+  ENDPROC
+ENDMODULE
+";
+
+#[test]
+fn a_rapid_client_talks_to_a_server_in_the_harness() {
+    use std::io::{Read, Write};
+    let dir = scratch("run-socket-client");
+    write(&dir, &[("Client.mod", CLIENT)]);
+    let listener = std::net::TcpListener::bind("127.0.0.1:0").expect("a port");
+    let port = listener.local_addr().expect("an address").port();
+    let server = std::thread::spawn(move || {
+        let (mut s, _) = listener.accept().expect("the robot connects");
+        let mut got = [0u8; 4];
+        s.read_exact(&mut got).expect("a message");
+        s.write_all(&[1, 2, 3, 4]).expect("sent");
+        s.write_all(&(-7i32).to_be_bytes()).expect("sent");
+        // Keep the connection open past the robot's 1 s receive.
+        std::thread::sleep(std::time::Duration::from_millis(1500));
+        got
+    });
+    let map = format!("10.0.0.5:3000=127.0.0.1:{port}");
+    let out = rapid(&dir, &["run", "Client.mod", "--socket-map", &map]);
+    assert_eq!(server.join().expect("the server"), [2, 1, b'o', b'k']);
+    assert_eq!(
+        show(&out),
+        "exit 0\n--- stdout\nconnected TRUE\nbytes 10\nvalue -7\ntimed out TRUE\n--- stderr\n"
+    );
+}
+
+#[test]
+fn list_unsupported_names_each_call_a_run_would_stop_at() {
+    let dir = scratch("run-list-unsupported");
+    write(
+        &dir,
+        &[(
+            "Cell.mod",
+            "MODULE Cell
+  VAR egmident egm;
+  PROC main()
+    TPWrite \"start\";
+    IF FALSE THEN
+      EGMGetId egm;
+    ENDIF
+    vision;
+  ENDPROC
+  PROC vision()
+    EGMReset egm;
+  ENDPROC
+ENDMODULE
+",
+        )],
+    );
+    let out = rapid(&dir, &["run", "Cell.mod", "--list-unsupported"]);
+    assert_eq!(
+        show(&out),
+        "exit 0\n--- stdout\nCell.mod:6:7: EGMGetId\nCell.mod:11:5: EGMReset\n2 calls the simulation does not support\n--- stderr\n"
+    );
+}

@@ -1,0 +1,467 @@
+//! The questions to the operator: `TPReadFK`, `TPReadNum`, `TPReadDnum`,
+//! `UIMsgBox`, and the functions `UIMessageBox`, `UINumEntry`,
+//! `UIDnumEntry`, `UINumTune`, `UIDnumTune`, `UIAlphaEntry`,
+//! `UIListView`. The world's [`crate::world::Pendant`] answers with text,
+//! read here for the question (a key's number or label, a number, a
+//! button, a list item, text). An answer that comes after a delay keeps
+//! the task waiting that long (simulated); `\MaxTime` ends the dialog with
+//! `ERR_TP_MAXTIME`, a `\DIBreak` or `\DOBreak` signal with
+//! `ERR_TP_DIBREAK` or `ERR_TP_DOBREAK` (set to 1, or to 0 with
+//! `\DIPassive`/`\DOPassive`), and `\BreakFlag` takes the error instead of
+//! a raise. Without an answer and without a way out, the task stops
+//! waiting for the operator ([`crate::Status::Operator`]).
+
+use rapid_evaluator::Value;
+
+use super::{Args, Cx, Done};
+use crate::machine::{FaultKind, OperatorWait, Place, R, SignalTest, Timeout, Wait, WaitKind};
+use crate::machine::{fault, invalid};
+use crate::world::{Expect, Question, Reply};
+
+/// The buttons of each `buttondata` value (`btnNone` is -1, `btnOK` 0
+/// ...), as the `btnres` constants they answer.
+const BUTTONS: &[&[&str]] = &[
+    &["resOK"],
+    &["resAbort", "resRetry", "resIgnore"],
+    &["resOK", "resCancel"],
+    &["resRetry", "resCancel"],
+    &["resYes", "resNo"],
+    &["resYes", "resNo", "resCancel"],
+];
+
+/// How a dialog may end other than by an answer.
+struct Exits {
+    max_time: Option<f64>,
+    breaks: Vec<(String, SignalTest, &'static str)>,
+    flag: Option<Place>,
+}
+
+fn exits(cx: &mut Cx<'_>, a: &Args) -> R<Exits> {
+    let max_time = cx.opt_num(a, "MaxTime")?;
+    let mut breaks = Vec::new();
+    for (param, passive, error) in [
+        ("DIBreak", "DIPassive", "ERR_TP_DIBREAK"),
+        ("DOBreak", "DOPassive", "ERR_TP_DOBREAK"),
+    ] {
+        if let Some(v) = cx.opt(a, param)? {
+            let (name, _) = cx.m.signal_of(cx.sh, &v)?;
+            let value = if a.given(passive) { 0.0 } else { 1.0 };
+            breaks.push((name, SignalTest::Equal(value), error));
+        }
+    }
+    let flag = cx.opt_place(a, "BreakFlag")?;
+    if let Some(p) = &flag {
+        cx.store(p, Value::Num(0.0))?;
+    }
+    Ok(Exits {
+        max_time,
+        breaks,
+        flag,
+    })
+}
+
+/// A question being asked: what the operator sees, and how an answer
+/// becomes a value.
+struct Ask {
+    question: Question,
+    /// An answer's value, from its text.
+    read: fn(&Ask, &str) -> Result<Value, String>,
+    /// The choices' values (for [`Expect::Choice`]), by choice.
+    values: Vec<Value>,
+    /// `\MinValue`, `\MaxValue`, `\AsInteger` of a number.
+    range: (Option<f64>, Option<f64>, bool),
+    /// A `dnum` answer.
+    dnum: bool,
+}
+
+impl Ask {
+    fn new(cx: &Cx<'_>, a: &Args, expect: Expect) -> Ask {
+        let at =
+            cx.m.location()
+                .map_or_else(String::new, |l| format!("{}:{}", l.path, l.line));
+        Ask {
+            question: Question {
+                instruction: a.name,
+                at,
+                header: String::new(),
+                lines: Vec::new(),
+                choices: Vec::new(),
+                expect,
+                initial: None,
+            },
+            read: match expect {
+                Expect::Choice => read_choice,
+                Expect::Number => read_number,
+                Expect::Text => |_, t| Ok(Value::Str(t.to_owned())),
+            },
+            values: Vec::new(),
+            range: (None, None, false),
+            dnum: false,
+        }
+    }
+
+    /// What the operator sees, in one line (for messages).
+    fn summary(&self) -> String {
+        let text = if self.question.header.is_empty() {
+            self.question.lines.join(" ")
+        } else {
+            format!("{} {}", self.question.header, self.question.lines.join(" "))
+        };
+        format!("{} {:?}", self.question.instruction, text.trim())
+    }
+}
+
+fn read_choice(ask: &Ask, text: &str) -> Result<Value, String> {
+    let choices = &ask.question.choices;
+    let t = text.trim();
+    let index = t
+        .parse::<usize>()
+        .ok()
+        .filter(|&n| n >= 1 && choices.get(n - 1).is_some_and(|c| !c.is_empty()))
+        .map(|n| n - 1)
+        .or_else(|| {
+            choices
+                .iter()
+                .position(|c| !c.is_empty() && c.trim().eq_ignore_ascii_case(t))
+        });
+    match index.and_then(|i| ask.values.get(i)) {
+        Some(v) => Ok(v.clone()),
+        None => {
+            let shown: Vec<String> = choices
+                .iter()
+                .enumerate()
+                .filter(|(_, c)| !c.is_empty())
+                .map(|(i, c)| format!("{}) {c}", i + 1))
+                .collect();
+            Err(if shown.is_empty() {
+                "there is nothing to choose".to_owned()
+            } else {
+                format!("expected one of {}", shown.join(", "))
+            })
+        }
+    }
+}
+
+fn read_number(ask: &Ask, text: &str) -> Result<Value, String> {
+    let x: f64 = text
+        .trim()
+        .parse()
+        .ok()
+        .filter(|x: &f64| x.is_finite())
+        .ok_or_else(|| "expected a number".to_owned())?;
+    let (min, max, integer) = ask.range;
+    if integer && x.fract() != 0.0 {
+        return Err("expected an integer".to_owned());
+    }
+    if min.is_some_and(|m| x < m) || max.is_some_and(|m| x > m) {
+        let show = |v: Option<f64>| v.map_or_else(String::new, |v| v.to_string());
+        return Err(format!("expected a number in {}..{}", show(min), show(max)));
+    }
+    Ok(if ask.dnum {
+        Value::Dnum(x)
+    } else {
+        Value::Num(x as f32)
+    })
+}
+
+/// Asks; the answer goes to `to` (an instruction's argument), or is the
+/// result of the function that asked (`to` is `None`; `fallback` is its
+/// result after a break with `\BreakFlag`).
+fn ask(
+    cx: &mut Cx<'_>,
+    a: &Args,
+    ask: Ask,
+    to: Option<Place>,
+    fallback: Value,
+) -> R<Option<Value>> {
+    let ex = exits(cx, a)?;
+    let reply = cx.sh.pendant.ask(&cx.m.name, &ask.question);
+    let answer = match &reply {
+        Some(Reply { text, .. }) => match (ask.read)(&ask, text) {
+            Ok(v) => Some(v),
+            Err(why) => {
+                return fault(FaultKind::Operator(format!(
+                    "the answer {text:?} to {} at {}: {why}",
+                    ask.summary(),
+                    ask.question.at
+                )));
+            }
+        },
+        None => None,
+    };
+    let now = cx.now();
+    let after = reply.as_ref().map(|r| r.after);
+    if answer.is_none() && ex.max_time.is_none() && ex.breaks.is_empty() {
+        return fault(FaultKind::Operator(format!(
+            "waiting for the operator at {}: {}",
+            ask.question.at,
+            ask.summary()
+        )));
+    }
+    let wait = OperatorWait {
+        at: after.map(|d| now + d),
+        answer: answer.clone().unwrap_or(Value::Num(0.0)),
+        to: to.clone(),
+        breaks: ex.breaks,
+        flag: ex.flag,
+        fallback,
+    };
+    let breaks_now = wait
+        .breaks
+        .iter()
+        .any(|(s, test, _)| cx.sh.io.read(s).is_some_and(|v| test.holds(v)));
+    let late = ex.max_time.is_some_and(|m| after.is_none_or(|d| d > m));
+    if let Some(v) = &answer
+        && after == Some(0.0)
+        && !breaks_now
+        && !late
+    {
+        if let Some(p) = &to {
+            cx.store(p, v.clone())?;
+        }
+        return Ok(Some(v.clone()));
+    }
+    let w = Wait {
+        kind: WaitKind::Operator(Box::new(wait)),
+        deadline: ex.max_time.map(|m| now + m.max(0.0)),
+        on_timeout: Timeout::Error("ERR_TP_MAXTIME", String::new()),
+        what: ask.summary(),
+    };
+    cx.m.function_wait = Some(Box::new(w));
+    Ok(None)
+}
+
+/// An instruction's question: it waits when the answer is not there at
+/// once.
+fn ask_instruction(cx: &mut Cx<'_>, a: &Args, q: Ask, to: Option<Place>) -> R<Done> {
+    ask(cx, a, q, to, Value::Num(0.0))?;
+    Ok(match cx.m.function_wait.take() {
+        Some(w) => Done::Wait(w),
+        None => Done::Next,
+    })
+}
+
+/// A function's question: its result, or a placeholder while the task
+/// waits (the machine takes the result from the wait's end).
+fn ask_function(cx: &mut Cx<'_>, a: &Args, q: Ask, fallback: Value) -> R<Value> {
+    Ok(ask(cx, a, q, None, fallback.clone())?.unwrap_or(fallback))
+}
+
+/// The `\Message` line or the `\MsgArray` lines.
+fn message_lines(cx: &mut Cx<'_>, a: &Args) -> R<Vec<String>> {
+    if let Some(m) = cx.opt_string(a, "Message")? {
+        return Ok(vec![m]);
+    }
+    strings(cx, a, "MsgArray")
+}
+
+/// The strings of an array argument.
+fn strings(cx: &mut Cx<'_>, a: &Args, param: &str) -> R<Vec<String>> {
+    match cx.opt(a, param)? {
+        None => Ok(Vec::new()),
+        Some(Value::Array(items)) => Ok(items
+            .into_iter()
+            .map(|v| match v {
+                Value::Str(s) => s,
+                other => other.to_string(),
+            })
+            .collect()),
+        Some(other) => invalid(format!(
+            "{}: {param} must be an array of strings, not {}",
+            a.name,
+            crate::machine::describe(&other)
+        )),
+    }
+}
+
+/// The header and message of a `UI` dialog.
+fn dialog(cx: &mut Cx<'_>, a: &Args, expect: Expect) -> R<Ask> {
+    let mut q = Ask::new(cx, a, expect);
+    q.question.header = cx.opt_string(a, "Header")?.unwrap_or_default();
+    q.question.lines = message_lines(cx, a)?;
+    Ok(q)
+}
+
+/// The buttons of a dialog: `\BtnArray` (answered by their number),
+/// `\Buttons` (answered by `btnres` constants), else `default`.
+fn buttons(cx: &mut Cx<'_>, a: &Args, q: &mut Ask, default: i64) -> R<()> {
+    if a.given("BtnArray") {
+        q.question.choices = strings(cx, a, "BtnArray")?;
+        q.values = (1..=q.question.choices.len())
+            .map(|i| Value::Num(i as f32))
+            .collect();
+        return Ok(());
+    }
+    let set = cx.opt_num(a, "Buttons")?.map_or(default, |b| b as i64);
+    let names: &[&str] = usize::try_from(set)
+        .ok()
+        .and_then(|i| BUTTONS.get(i))
+        .copied()
+        .unwrap_or(&[]);
+    for n in names {
+        q.question
+            .choices
+            .push(n.trim_start_matches("res").to_owned());
+        q.values.push(cx.predefined(n)?);
+    }
+    Ok(())
+}
+
+/// `TPReadFK Answer, Text, FK1, FK2, FK3, FK4, FK5 [\MaxTime] [\DIBreak]
+/// [\DOBreak] [\BreakFlag]`: the operator presses a function key; its
+/// number (1 to 5) goes to `Answer`.
+pub(crate) fn tp_read_fk(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let mut q = Ask::new(cx, a, Expect::Choice);
+    q.question.lines = vec![cx.string(a, "TPText")?];
+    for (i, k) in ["TPFK1", "TPFK2", "TPFK3", "TPFK4", "TPFK5"]
+        .iter()
+        .enumerate()
+    {
+        let label = match cx.opt_string(a, k)? {
+            Some(s) if !a.is_star(k) => s,
+            _ => String::new(),
+        };
+        q.question.choices.push(label);
+        q.values.push(Value::Num((i + 1) as f32));
+    }
+    let to = cx.place_arg(a, "TPAnswer")?;
+    ask_instruction(cx, a, q, Some(to))
+}
+
+/// `TPReadNum Answer, Text ...` and `TPReadDnum`: the operator enters a
+/// number.
+pub(crate) fn tp_read_num(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let mut q = Ask::new(cx, a, Expect::Number);
+    q.question.lines = vec![cx.string(a, "TPText")?];
+    q.dnum = a.name.eq_ignore_ascii_case("TPReadDnum");
+    let to = cx.place_arg(a, "TPAnswer")?;
+    ask_instruction(cx, a, q, Some(to))
+}
+
+/// `UIMsgBox [\Header] MsgLine1 [\MsgLine2] ... [\Buttons] | [\BtnArray]
+/// [\Result] ...`: a message box; the button pressed goes to `\Result`.
+pub(crate) fn ui_msg_box(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let mut q = Ask::new(cx, a, Expect::Choice);
+    q.question.header = cx.opt_string(a, "Header")?.unwrap_or_default();
+    for p in ["MsgLine1", "MsgLine2", "MsgLine3", "MsgLine4", "MsgLine5"] {
+        if let Some(l) = cx.opt_string(a, p)? {
+            q.question.lines.push(l);
+        }
+    }
+    buttons(cx, a, &mut q, 0)?;
+    let to = cx.opt_place(a, "Result")?;
+    ask_instruction(cx, a, q, to)
+}
+
+/// `UIMessageBox(...)`: a message box; the button pressed (a `btnres`
+/// constant, or the number of a `\BtnArray` button).
+pub(crate) fn ui_message_box(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    let mut q = dialog(cx, a, Expect::Choice)?;
+    buttons(cx, a, &mut q, 0)?;
+    let unknown = cx.predefined("resUnkwn")?;
+    ask_function(cx, a, q, unknown)
+}
+
+/// `UINumEntry(...)` and `UIDnumEntry`: a number on a keypad, within
+/// `\MinValue`..`\MaxValue` (an integer with `\AsInteger`).
+pub(crate) fn ui_num_entry(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    let mut q = dialog(cx, a, Expect::Number)?;
+    q.dnum = a.name.to_ascii_lowercase().starts_with("uidnum");
+    q.range = (
+        cx.opt_num(a, "MinValue")?,
+        cx.opt_num(a, "MaxValue")?,
+        a.given("AsInteger"),
+    );
+    let init = cx.opt_num(a, "InitValue")?;
+    q.question.initial = init.map(|x| x.to_string());
+    let fallback = number(q.dnum, init.unwrap_or(0.0));
+    ask_function(cx, a, q, fallback)
+}
+
+/// `UINumTune(...)` and `UIDnumTune`: the operator tunes `InitValue` by
+/// `Increment`; the answer is the tuned value.
+pub(crate) fn ui_num_tune(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    let mut q = dialog(cx, a, Expect::Number)?;
+    q.dnum = a.name.to_ascii_lowercase().starts_with("uidnum");
+    q.range = (
+        cx.opt_num(a, "MinValue")?,
+        cx.opt_num(a, "MaxValue")?,
+        false,
+    );
+    let init = cx.opt_num(a, "InitValue")?.unwrap_or(0.0);
+    let step = cx.opt_num(a, "Increment")?;
+    q.question.initial = Some(match step {
+        Some(s) => format!("{init}, step {s}"),
+        None => init.to_string(),
+    });
+    let fallback = number(q.dnum, init);
+    ask_function(cx, a, q, fallback)
+}
+
+fn number(dnum: bool, x: f64) -> Value {
+    if dnum {
+        Value::Dnum(x)
+    } else {
+        Value::Num(x as f32)
+    }
+}
+
+/// `UIAlphaEntry(...)`: text on a keyboard.
+pub(crate) fn ui_alpha_entry(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    let mut q = dialog(cx, a, Expect::Text)?;
+    let init = cx.opt_string(a, "InitString")?;
+    q.question.initial.clone_from(&init);
+    ask_function(cx, a, q, Value::Str(init.unwrap_or_default()))
+}
+
+/// `UIListView([\Result] [\Header] ListItems ...)`: the operator chooses an
+/// item (its number, 1 for the first, is the result); `\Result` gets the
+/// first button (`resOK` of `\Buttons:=btnOKCancel`, or 1 of a
+/// `\BtnArray`), as when the operator confirms the choice.
+pub(crate) fn ui_list_view(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    let mut q = Ask::new(cx, a, Expect::Choice);
+    q.question.header = cx.opt_string(a, "Header")?.unwrap_or_default();
+    let items = match cx.req(a, "ListItems")? {
+        Value::Array(items) => items,
+        other => vec![other],
+    };
+    for (i, item) in items.iter().enumerate() {
+        let text = match item.field("text") {
+            Some(Value::Str(s)) => s.clone(),
+            _ => item.to_string(),
+        };
+        q.question.choices.push(text);
+        q.values.push(Value::Num((i + 1) as f32));
+    }
+    if let Some(p) = cx.opt_place(a, "Result")? {
+        let mut b = Ask::new(cx, a, Expect::Choice);
+        buttons(cx, a, &mut b, -1)?;
+        if let Some(first) = b.values.first() {
+            cx.store(&p, first.clone())?;
+        }
+    }
+    let default = cx.opt_num(a, "DefaultIndex")?;
+    q.question.initial = default.map(|d| d.to_string());
+    ask_function(cx, a, q, Value::Num(0.0))
+}
+
+/// `UIClientExist()`: the simulated controller has its pendant.
+pub(crate) fn ui_client_exist(_: &mut Cx<'_>, _: &mut Args) -> R<Value> {
+    Ok(Value::Bool(true))
+}
+
+impl Cx<'_> {
+    /// The value of predefined data (`resOK`).
+    pub(crate) fn predefined(&mut self, name: &str) -> R<Value> {
+        let Some(g) = self.m.prog.system_global(name) else {
+            return invalid(format!(
+                "the predefined data {name} is not in the catalogue"
+            ));
+        };
+        let place = Place {
+            root: crate::machine::Root::Global(g),
+            path: Vec::new(),
+        };
+        self.m.load(self.sh, &place)
+    }
+}
