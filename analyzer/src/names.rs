@@ -61,13 +61,7 @@ pub fn is_name_byte_at(b: &[u8], i: usize) -> bool {
     }
 }
 
-/// A character of a name folded: Latin-1 capitals to their lowercase.
-pub fn fold_char(c: char) -> char {
-    match c {
-        'A'..='Z' | 'À'..='Ö' | 'Ø'..='Þ' => char::from_u32(c as u32 + 32).unwrap_or(c),
-        _ => c,
-    }
-}
+pub use rapid_catalogue::names::{fold_char, same};
 
 /// The folded form of a name, used as a key (Latin-1 letters lowercase).
 pub fn fold(name: &str) -> String {
@@ -133,16 +127,6 @@ impl NameHasher {
 /// A map keyed by folded names, hashed with [`NameHasher`].
 pub type NameMap<V> =
     std::collections::HashMap<String, V, std::hash::BuildHasherDefault<NameHasher>>;
-
-/// Do two names denote the same thing (equal once folded)?
-pub fn same(a: &str, b: &str) -> bool {
-    if a.is_ascii() || b.is_ascii() {
-        // A Latin-1 letter never folds to ASCII: an ASCII name equals only
-        // an ASCII name.
-        return a.eq_ignore_ascii_case(b);
-    }
-    a.len() == b.len() && a.chars().map(fold_char).eq(b.chars().map(fold_char))
-}
 
 #[cfg(test)]
 mod tests {

@@ -139,7 +139,7 @@ pub fn bind_args<P: Parameter>(params: &[P], groups: &[AltGroup], args: &[Arg<'_
             },
             Arg::Named(name) => match params
                 .iter()
-                .position(|p| p.name().eq_ignore_ascii_case(name))
+                .position(|p| crate::names::same(p.name(), name))
             {
                 Some(i) => {
                     if let Some(at) = positional.iter().position(|&r| r == i) {

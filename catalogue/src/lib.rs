@@ -20,6 +20,7 @@ use serde::{Deserialize, Serialize};
 
 pub mod binding;
 mod check;
+pub mod names;
 pub mod operators;
 mod raw;
 mod select;

@@ -32,7 +32,7 @@ fn assert_rest_checked(dir: &Path, message: &str, code: i32) -> Output {
     let stderr = text(&out.stderr);
     assert!(!stderr.contains("panicked"), "{}", show(&out));
     assert!(
-        stdout.contains("Good.mod:3:9: warning[W101]"),
+        stdout.contains("Good.mod:3:9: info[W101]"),
         "{}",
         show(&out)
     );
@@ -209,7 +209,7 @@ fn folders_named_in_any_script_are_checked() {
         let out = check(&dir, &["--format", "concise", folder]);
         assert!(!text(&out.stderr).contains("panicked"), "{}", show(&out));
         assert!(
-            text(&out.stdout).contains("Good.mod:3:9: warning[W101]"),
+            text(&out.stdout).contains("Good.mod:3:9: info[W101]"),
             "{}",
             show(&out)
         );

@@ -40,8 +40,8 @@ fn modules_of_a_plain_folder_that_clash_are_versions_checked_apart() {
     assert_eq!(code, Some(0), "{out}");
     assert!(!out.contains("E107"), "{out}");
     // B cannot see A's routine: they are never loaded together.
-    assert_eq!(out.matches("warning[W101]").count(), 1, "{out}");
-    assert!(out.contains("B.mod:5:5: warning[W101]"), "{out}");
+    assert_eq!(out.matches("info[W101]").count(), 1, "{out}");
+    assert!(out.contains("B.mod:5:5: info[W101]"), "{out}");
 }
 
 #[test]
@@ -126,8 +126,9 @@ fn unresolved_names_are_errors_only_in_a_complete_backup() {
         out.contains("B/RAPID/TASK1/PROGMOD/Main.mod:3:11: error[W101]"),
         "{out}"
     );
-    assert!(out.contains("loose/Main.mod:3:11: warning[W101]"), "{out}");
-    // An encrypted module of the task could declare the name: a warning.
+    assert!(out.contains("loose/Main.mod:3:11: info[W101]"), "{out}");
+    // An encrypted module of the task could declare the name: a note, as
+    // outside a backup (no declared name is one edit from it).
     std::fs::write(
         dir.join("B/RAPID/TASK1/SYSMOD/Secret.sys"),
         b"\xFD\x12\x34\x56\x78",
@@ -143,7 +144,7 @@ fn unresolved_names_are_errors_only_in_a_complete_backup() {
     let (code, out) = check(&dir);
     assert_eq!(code, Some(0), "{out}");
     assert!(
-        out.contains("B/RAPID/TASK1/PROGMOD/Main.mod:3:11: warning[W101]"),
+        out.contains("B/RAPID/TASK1/PROGMOD/Main.mod:3:11: info[W101]"),
         "{out}"
     );
 }
@@ -157,8 +158,8 @@ fn a_name_the_task_lacks_is_one_finding_with_every_use_related() {
     let (code, out) = check(&dir);
     assert_eq!(code, Some(0), "{out}");
     insta::assert_snapshot!(out, @r"
-    prog/A.mod:3:5: warning[W101] no routine named `Missing` is declared in this task or built in (unresolved-name)
-    prog/B.mod:4:13: warning[W101] no data named `nLost` is declared in this task or built in (if it is an I/O signal, give the controller's EIO.cfg) (unresolved-name)
+    prog/A.mod:3:5: info[W101] no routine named `Missing` is declared in this task or built in (unresolved-name)
+    prog/B.mod:4:13: info[W101] no data named `nLost` is declared in this task or built in (if it is an I/O signal, give the controller's EIO.cfg) (unresolved-name)
     ");
     // The human report names the other uses, in this file and the other.
     let out = rapid(&dir, &["check", "prog"]);
@@ -182,6 +183,6 @@ fn modules_of_a_controller_home_that_no_task_loads_have_notes_not_warnings() {
     assert_eq!(code, Some(0), "{out}");
     insta::assert_snapshot!(out, @r"
     b/HOME/Spare.mod:3:11: info[W101] no data named `pFromTask` is declared in this task or built in (if it is an I/O signal, give the controller's EIO.cfg) (unresolved-name)
-    home/u/Spare.mod:3:11: warning[W101] no data named `pFromTask` is declared in this task or built in (if it is an I/O signal, give the controller's EIO.cfg) (unresolved-name)
+    home/u/Spare.mod:3:11: info[W101] no data named `pFromTask` is declared in this task or built in (if it is an I/O signal, give the controller's EIO.cfg) (unresolved-name)
     ");
 }
