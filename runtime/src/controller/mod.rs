@@ -69,6 +69,8 @@ pub(crate) struct Shared {
     /// When each task's robot ends its last move.
     pub motion_until: Vec<f64>,
     pub moves: Vec<Move>,
+    /// The routines that returned, with when they ran (when tracing).
+    pub routine_times: Vec<crate::RoutineTime>,
     /// Each task's name, by index.
     pub names: Vec<String>,
     pub debug: Debug,
@@ -208,6 +210,7 @@ impl Controller {
                 robots: Vec::new(),
                 motion_until: Vec::new(),
                 moves: Vec::new(),
+                routine_times: Vec::new(),
                 names: Vec::new(),
                 debug: Debug::default(),
             },
@@ -256,6 +259,12 @@ impl Controller {
         &self.sh.moves
     }
 
+    /// The calls that returned, with the simulated time each took (with
+    /// tracing on).
+    pub fn routine_times(&self) -> &[crate::RoutineTime] {
+        &self.sh.routine_times
+    }
+
     /// Each task's outcome (`None`: not started, or still running).
     pub fn outcomes(&self) -> Vec<(String, Option<Outcome>)> {
         self.tasks
@@ -269,8 +278,15 @@ impl Controller {
     pub fn start_routine(&mut self, task: usize, routine: u32) -> Result<(), String> {
         self.begin();
         self.started = true;
+        let now = self.sh.clock;
         match self.tasks.get_mut(task) {
-            Some(m) => m.start(routine),
+            Some(m) => {
+                m.start(routine)?;
+                if let Some(f) = m.frames.last_mut() {
+                    f.entered = now;
+                }
+                Ok(())
+            }
             None => Err("no such task".to_owned()),
         }
     }
