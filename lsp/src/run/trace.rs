@@ -6,8 +6,9 @@ use serde_json::{Value, json};
 
 /// The moves as JSON: `{"moves": [{"instruction", "target", "file",
 /// "line", "pos", "orient", "via", "joints", "speed", "speed_name",
-/// "zone", "tool", "wobj"}]}`, and `"task"` when several tasks ran
-/// (positions in mm in world coordinates,
+/// "zone", "tool", "wobj", "start", "end"}]}`, and `"task"` when several
+/// tasks ran (positions in mm in world coordinates, joints in degrees at
+/// the move's end, start and end in simulated seconds,
 /// orientations as quaternions `[q1, q2, q3, q4]`; absent fields are null).
 pub fn json(moves: &[Move]) -> Value {
     let moves: Vec<Value> = moves
@@ -27,6 +28,8 @@ pub fn json(moves: &[Move]) -> Value {
                 "zone": m.zone,
                 "tool": m.tool,
                 "wobj": m.wobj,
+                "start": round(m.start),
+                "end": round(m.end),
             });
             if let Some(task) = &m.task {
                 o["task"] = json!(task);
@@ -144,6 +147,8 @@ mod tests {
             joints: None,
             speed: Some(100.0),
             speed_name: Some("v100".to_owned()),
+            start: 0.0,
+            end: 0.0,
             zone: Some("fine".to_owned()),
             tool: Some("tool0".to_owned()),
             wobj: None,
