@@ -39,7 +39,11 @@ fn the_palletizer_example_runs_to_its_end() {
     );
     assert_eq!(
         (code, out.as_str(), err.as_str()),
-        (Some(0), "Pallet complete: 24\n", "")
+        (
+            Some(0),
+            "Pallet complete: 24\n",
+            "rapid: run: note: no robot is named (MOC.cfg, rapid.toml [controller] robot or --robot): moves take no time and reach every target\n"
+        )
     );
 }
 

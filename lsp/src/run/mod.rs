@@ -151,6 +151,8 @@ pub struct RunReport {
     /// The calls that returned, with their times (with
     /// [`RunOptions::trace`]).
     pub routine_times: Vec<rapid_runtime::RoutineTime>,
+    /// The moves the robots made.
+    pub move_count: u64,
     /// The simulated time reached, in seconds.
     pub clock: f64,
 }
@@ -377,6 +379,7 @@ pub fn report_of(controller: &Controller) -> RunReport {
         moves: controller.moves().to_vec(),
         notes: Vec::new(),
         routine_times: controller.routine_times().to_vec(),
+        move_count: controller.move_count(),
         clock: controller.clock(),
     }
 }
@@ -421,9 +424,7 @@ fn run_inner(args: RunArgs) -> Result<ExitCode, String> {
                 .collect::<Result<_, _>>()?,
         ),
     };
-    for note in robot::notes(&loaded.tasks, args.robot.as_deref())? {
-        let _ = writeln!(anstream::stderr(), "rapid: run: {note}");
-    }
+    let notes = robot::notes(&loaded.tasks, args.robot.as_deref())?;
     let out = |_: Stream, line: &str| {
         let stdout = std::io::stdout();
         let mut lock = stdout.lock();
@@ -440,6 +441,11 @@ fn run_inner(args: RunArgs) -> Result<ExitCode, String> {
             .map_err(|e| format!("{}: {e}", path.display()))?;
     }
     let mut err = anstream::stderr();
+    if report.move_count > 0 {
+        for note in notes {
+            let _ = writeln!(err, "rapid: run: {note}");
+        }
+    }
     for line in report.notes.iter().chain(&report.describe()) {
         let _ = writeln!(err, "{line}");
     }

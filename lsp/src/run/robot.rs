@@ -38,8 +38,8 @@ pub fn robot_of(task: &TaskToRun, named: Option<&str>) -> Box<dyn Robot> {
     }
 }
 
-/// The notes of a run's motion tasks without an arm, one line each
-/// (`--robot` naming no model is an error, not a note).
+/// The notes of a run's motion tasks without an arm, one line each, for a
+/// run that moves (`--robot` naming no model is an error, not a note).
 pub fn notes(tasks: &[TaskToRun], named: Option<&str>) -> Result<Vec<String>, String> {
     if let Some(name) = named {
         rapid_robot::find_model(name).map_err(|e| format!("--robot: {e}"))?;

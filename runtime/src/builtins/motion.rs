@@ -338,6 +338,7 @@ fn do_move(cx: &mut Cx<'_>, a: &Args, target_param: &str) -> R<Done> {
         Err(e) => return cx.robot_error(a, e),
     };
     let end = start + motion.duration.max(0.0);
+    cx.sh.move_count += 1;
     if let Some(slot) = cx.sh.motion_until.get_mut(index) {
         *slot = end;
     }

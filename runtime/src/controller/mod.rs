@@ -69,6 +69,8 @@ pub(crate) struct Shared {
     /// When each task's robot ends its last move.
     pub motion_until: Vec<f64>,
     pub moves: Vec<Move>,
+    /// The moves made, traced or not.
+    pub move_count: u64,
     /// The routines that returned, with when they ran (when tracing).
     pub routine_times: Vec<crate::RoutineTime>,
     /// Each task's name, by index.
@@ -210,6 +212,7 @@ impl Controller {
                 robots: Vec::new(),
                 motion_until: Vec::new(),
                 moves: Vec::new(),
+                move_count: 0,
                 routine_times: Vec::new(),
                 names: Vec::new(),
                 debug: Debug::default(),
@@ -257,6 +260,11 @@ impl Controller {
     /// The moves made so far (with [`Config::trace`]).
     pub fn moves(&self) -> &[Move] {
         &self.sh.moves
+    }
+
+    /// How many moves the robots made (traced or not).
+    pub fn move_count(&self) -> u64 {
+        self.sh.move_count
     }
 
     /// The calls that returned, with the simulated time each took (with
