@@ -460,7 +460,11 @@ fn run_inner(args: RunArgs) -> Result<ExitCode, String> {
                     .then(|| robot::arm_of(t, args.robot.as_deref()).ok())
                     .flatten()
                     .map(|r| r.limits.0);
-                (t.name.clone(), limits, t.entry.clone())
+                robot::Reported {
+                    name: t.name.clone(),
+                    limits,
+                    entry: t.entry.clone(),
+                }
             })
             .collect();
         let text = robot::report(&tasks, &report.routine_times, &report.moves, report.clock);

@@ -149,17 +149,26 @@ pub fn routine_shares(times: &[RoutineTime], task: &str) -> Vec<(String, Routine
         .collect()
 }
 
+/// A task `--report` speaks of.
+pub struct Reported {
+    pub name: String,
+    /// Its arm's working ranges (a task with a modelled arm).
+    pub limits: Option<[[f64; 2]; 6]>,
+    /// Its entry routine.
+    pub entry: String,
+}
+
 /// The `--report` text: per task, the cycle time of its entry routine, the
 /// routines it called and the axis closest to its limit.
-pub fn report(
-    tasks: &[(String, Option<[[f64; 2]; 6]>, String)],
-    times: &[RoutineTime],
-    moves: &[Move],
-    clock: f64,
-) -> String {
+pub fn report(tasks: &[Reported], times: &[RoutineTime], moves: &[Move], clock: f64) -> String {
     let mut out = String::new();
     let several = tasks.len() > 1;
-    for (name, limits, entry) in tasks {
+    for Reported {
+        name,
+        limits,
+        entry,
+    } in tasks
+    {
         let shares = routine_shares(times, name);
         let head = if several {
             format!("{name}: ")

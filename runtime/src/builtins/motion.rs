@@ -396,7 +396,7 @@ fn record(
             .and_then(Value::as_f64)
             .map(|z| format!("{z} mm"))
     });
-    let m = Move {
+    Move {
         instruction: a.name.to_owned(),
         target: cx.arg_name(a, target_param),
         at: cx.m.location().unwrap_or_else(|| cx.m.prog.location(0, 0)),
@@ -412,8 +412,7 @@ fn record(
         task: (cx.sh.names.len() > 1).then(|| cx.m.name.clone()),
         start: 0.0,
         end: 0.0,
-    };
-    m
+    }
 }
 
 /// `MoveL`, `MoveJ`, `MoveC` and the `Trigg` moves.
