@@ -42,7 +42,12 @@ fn rapid_toml_names_the_robot_and_the_report_gives_the_cycle() {
             ("rapid.toml", "[controller]\nrobot = \"IRB 120-3/0.58\"\n"),
         ],
     );
-    let (code, out, err) = run(&dir, &["run", "Cell.mod", "--report", "--trace", "t.json"]);
+    let (code, out, err) = run(
+        &dir,
+        &[
+            "run", "Cell.mod", "--report", "--trace", "t.json", "--plot", "p.html",
+        ],
+    );
     assert_eq!((code, err.as_str()), (Some(0), ""), "{out}");
     // MoveJ p10 from zero: axis 5 turns 80.62 degrees at up to 320 deg/s
     // with 0.2 s ramps, (80.62 - 64) / 320 + 0.4 = 0.452 s; four MoveL of
@@ -81,6 +86,28 @@ fn rapid_toml_names_the_robot_and_the_report_gives_the_cycle() {
         (joints[0] - 100f64.atan2(374.0).to_degrees()).abs() < 1e-3,
         "{joints:?}"
     );
+    // The arm's chain for the plot: base, shoulder, elbow, wrist, flange
+    // (tool0, at p20); the IRB 120's shoulder is 290 mm up.
+    let arm = &side["arm"];
+    assert_eq!(arm[0], serde_json::json!([0.0, 0.0, 0.0]));
+    assert!(
+        (arm[1][2].as_f64().expect("z") - 290.0).abs() < 1e-6,
+        "{arm}"
+    );
+    let flange: Vec<f64> = (0..3).map(|k| arm[4][k].as_f64().expect("mm")).collect();
+    assert!(
+        (flange[0] - 374.0).abs() < 1e-3
+            && (flange[1] - 100.0).abs() < 1e-3
+            && (flange[2] - 500.0).abs() < 1e-3,
+        "{flange:?}"
+    );
+    assert_eq!(trace["robot"]["name"], "IRB 120-3/0.58");
+    assert_eq!(
+        trace["robot"]["limits"][4],
+        serde_json::json!([-120.0, 120.0])
+    );
+    let page = std::fs::read_to_string(dir.join("p.html")).expect("a page");
+    assert!(page.contains(r#""robot":{"limits":"#) && page.contains(r#""arm":[[0.0,0.0,0.0]"#));
 }
 
 #[test]

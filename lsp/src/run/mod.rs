@@ -431,13 +431,25 @@ fn run_inner(args: RunArgs) -> Result<ExitCode, String> {
         let _ = writeln!(lock, "{line}");
     };
     let report = execute(&loaded, &options, Box::new(out)).map_err(|e| e.to_string())?;
+    // The arm drawn and listed with the moves: the one motion task's.
+    let arms: Vec<rapid_robot::Robot> = loaded
+        .tasks
+        .iter()
+        .filter(|t| t.motion)
+        .filter_map(|t| robot::arm_of(t, args.robot.as_deref()).ok())
+        .collect();
+    let arm = match arms.as_slice() {
+        [one] => Some(one),
+        _ => None,
+    };
     if let Some(path) = &args.trace {
-        let text = serde_json::to_string_pretty(&trace::json(&report.moves)).unwrap_or_default();
+        let text = serde_json::to_string_pretty(&trace::json_with_arm(&report.moves, arm))
+            .unwrap_or_default();
         std::fs::write(path, text + "\n").map_err(|e| format!("{}: {e}", path.display()))?;
     }
     if let Some(path) = &args.plot {
         let title = args.path.display().to_string();
-        std::fs::write(path, trace::html(&report.moves, &title))
+        std::fs::write(path, trace::html_with_arm(&report.moves, arm, &title))
             .map_err(|e| format!("{}: {e}", path.display()))?;
     }
     let mut err = anstream::stderr();
