@@ -5,16 +5,10 @@ mod support;
 
 use std::path::Path;
 
-use support::{rapid, scratch, text, write};
+use support::{rapid_out as run, scratch, write};
 
 fn repo() -> &'static Path {
     Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
-}
-
-/// (exit code, stdout, stderr) of `rapid ARGS` in `dir`.
-fn run(dir: &Path, args: &[&str]) -> (Option<i32>, String, String) {
-    let out = rapid(dir, args);
-    (out.status.code(), text(&out.stdout), text(&out.stderr))
 }
 
 /// Test timings vary: `(1.2 ms)` becomes `(T ms)`, `"ms":1.2` `"ms":T`.

@@ -4,7 +4,7 @@
 
 mod support;
 
-use support::{rapid, scratch, text, write};
+use support::{rapid_out as run, scratch, write};
 
 /// An IRB 120 program: a joint move home, 100 mm at v100 in a routine
 /// (1.01 s by hand: ramps of 0.5 mm at 10 m/s², 99 mm at 100 mm/s), and a
@@ -26,11 +26,6 @@ const CELL: &str = "MODULE Cell
   ENDPROC
 ENDMODULE
 ";
-
-fn run(dir: &std::path::Path, args: &[&str]) -> (Option<i32>, String, String) {
-    let out = rapid(dir, args);
-    (out.status.code(), text(&out.stdout), text(&out.stderr))
-}
 
 #[test]
 fn rapid_toml_names_the_robot_and_the_report_gives_the_cycle() {
