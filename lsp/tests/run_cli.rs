@@ -5,16 +5,10 @@ mod support;
 
 use std::path::Path;
 
-use support::{rapid, scratch, text, write};
+use support::{rapid_out as run, scratch, write};
 
 fn repo() -> &'static Path {
     Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
-}
-
-/// (exit code, stdout, stderr) of `rapid ARGS` in `dir`.
-fn run(dir: &Path, args: &[&str]) -> (Option<i32>, String, String) {
-    let out = rapid(dir, args);
-    (out.status.code(), text(&out.stdout), text(&out.stderr))
 }
 
 /// Test timings vary: `(1.2 ms)` becomes `(T ms)`, `"ms":1.2` `"ms":T`.
@@ -39,7 +33,11 @@ fn the_palletizer_example_runs_to_its_end() {
     );
     assert_eq!(
         (code, out.as_str(), err.as_str()),
-        (Some(0), "Pallet complete: 24\n", "")
+        (
+            Some(0),
+            "Pallet complete: 24\n",
+            "rapid: run: note: no robot is named (MOC.cfg, rapid.toml [controller] robot or --robot): moves take no time and reach every target\n"
+        )
     );
 }
 

@@ -234,9 +234,40 @@ pub fn cartesian_move(
     speed: &Speed,
     ends: Ends,
 ) -> Result<CartesianMove, ReachError> {
+    let along = Along {
+        path,
+        tcp: Isometry3::identity(),
+    };
+    cartesian_move_tcp(robot, from, to, &along, conf, speed, ends)
+}
+
+/// The path of a linear or circular move, for a TCP on the flange.
+#[derive(Clone, Copy, Debug)]
+pub struct Along {
+    /// A line, or an arc through a point (the TCP's, base frame).
+    pub path: Path,
+    /// The TCP on the flange (tooldata's `tframe`; identity for tool0).
+    pub tcp: Isometry3<f64>,
+}
+
+/// As [`cartesian_move`], for the TCP `along.tcp`: the TCP follows the
+/// line or arc (as the controller moves it) and `to` is the TCP's pose in
+/// the base frame; each sample's flange pose is solved.
+pub fn cartesian_move_tcp(
+    robot: &Robot,
+    from: &Joints,
+    to: &Isometry3<f64>,
+    along: &Along,
+    conf: Option<&Conf>,
+    speed: &Speed,
+    ends: Ends,
+) -> Result<CartesianMove, ReachError> {
+    let path = along.path;
+    let flange_of = along.tcp.inverse();
     let start = robot
         .forward(from)
-        .ok_or(ReachError::OutOfReach { by: 0.0 })?;
+        .ok_or(ReachError::OutOfReach { by: 0.0 })?
+        * along.tcp;
     let (p0, p1) = (start.translation.vector, to.translation.vector);
     let (q0, q1) = (start.rotation, to.rotation);
     let rotation = q0.angle_to(&q1).to_degrees();
@@ -256,7 +287,7 @@ pub fn cartesian_move(
         let rot = q0.slerp(&q1, s);
         let pose = Isometry3::from_parts(position(s).into(), UnitQuaternion::from(rot));
         let want = if k == n { conf } else { None };
-        let sol = robot.reach_near(&pose, want, &previous)?;
+        let sol = robot.reach_near(&(pose * flange_of), want, &previous)?;
         for (t, (a, b)) in travel.iter_mut().zip(previous.iter().zip(&sol.joints)) {
             *t += (b - a).abs();
         }

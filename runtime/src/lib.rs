@@ -58,6 +58,16 @@ use std::path::PathBuf;
 use std::sync::Arc;
 
 pub use builtins::motion::Move;
+
+/// A routine call that returned: its task, its name and when it ran
+/// (simulated seconds), for a report of where a cycle's time goes.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RoutineTime {
+    pub task: String,
+    pub routine: String,
+    pub start: f64,
+    pub end: f64,
+}
 pub use controller::{Controller, Event, Resume, TaskKind, TaskSpec};
 pub use debug::{DataValue, Variable};
 pub use machine::{Machine, Outcome, StackFrame, Status, Stop};

@@ -843,7 +843,10 @@ pub fn load_check(task: &Task) -> LoadCheck {
                 }
                 continue;
             }
-            let load_time = d.rule.code != "E413";
+            // Errors the controller meets only when the statement runs: a
+            // constant's evaluation, and a move to a target out of reach or
+            // beyond a working range (the robot stops there).
+            let load_time = !matches!(d.rule.code, "E413" | "E601" | "E602");
             if d.severity != rapid_analyzer::diagnostic::Severity::Error || !load_time {
                 continue;
             }

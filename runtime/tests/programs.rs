@@ -14,7 +14,10 @@
 //! - `!entry NAME`: the routine to run (default `main`);
 //! - `!steps N`: the step budget;
 //! - `!robotware VERSION`: the task's catalogue is that RobotWare version's
-//!   view (its signatures and record layouts).
+//!   view (its signatures and record layouts);
+//! - `!robot MODEL`: the task moves that modelled arm
+//!   ([`rapid_runtime::world::ArmRobot`]), not one whose moves arrive at
+//!   once.
 //!
 //! `UPDATE_EXPECT=1` rewrites the `!>` and `!!` lines with what the runs
 //! give (review the diff).
@@ -35,6 +38,7 @@ struct Expect {
     steps: Option<u64>,
     robotware: Option<String>,
     answers: Vec<String>,
+    robot: Option<String>,
 }
 
 fn parse(text: &str) -> Expect {
@@ -46,6 +50,7 @@ fn parse(text: &str) -> Expect {
         steps: None,
         robotware: None,
         answers: Vec::new(),
+        robot: None,
     };
     for line in text.lines() {
         let t = line.trim_start();
@@ -68,6 +73,8 @@ fn parse(text: &str) -> Expect {
             e.steps = Some(rest.trim().parse().expect("a number"));
         } else if let Some(rest) = t.strip_prefix("!robotware ") {
             e.robotware = Some(rest.trim().to_owned());
+        } else if let Some(rest) = t.strip_prefix("!robot ") {
+            e.robot = Some(rest.trim().to_owned());
         }
     }
     e
@@ -127,7 +134,27 @@ fn run(path: &std::path::Path) -> (Vec<String>, Option<String>, Outcome) {
         sink.lock().expect("the output").push(line.to_owned())
     };
     let id = program.find_routine(&e.entry).expect("the entry routine");
-    let (outcome, _) = rapid_runtime::run_routine(program, id, config, Box::new(out));
+    let outcome = match &e.robot {
+        None => rapid_runtime::run_routine(program, id, config, Box::new(out)).0,
+        Some(name) => {
+            let model = rapid_robot::find_model(name).expect("a modelled robot");
+            let robot = rapid_runtime::world::ArmRobot::new(rapid_robot::Robot::new(model));
+            let world = rapid_runtime::world::World::simulated(&config, Box::new(out));
+            let mut c = rapid_runtime::Controller::new(config, world);
+            c.add_task(rapid_runtime::TaskSpec {
+                name: "T_ROB1".to_owned(),
+                program,
+                entry: Some(id),
+                kind: rapid_runtime::TaskKind::Normal,
+                robot: Some(Box::new(robot)),
+            });
+            c.run();
+            c.tasks()
+                .first()
+                .and_then(|t| t.outcome().cloned())
+                .expect("the task ended")
+        }
+    };
     let _ = std::fs::remove_dir_all(&sandbox);
     let lines = lines.lock().expect("the output").clone();
     (lines, support::brief(&outcome), outcome)

@@ -537,6 +537,7 @@ fn prepare(args: &Value) -> Result<Launch, String> {
                 terminal: false,
             },
             socket_map: Some(Vec::new()),
+            robot: args["robot"].as_str().map(str::to_owned),
         },
         stop_on_entry: args["stopOnEntry"].as_bool().unwrap_or(false),
         debug: !args["noDebug"].as_bool().unwrap_or(false),

@@ -291,7 +291,29 @@ pub fn load_around(
         found: Some(&found),
         ..Sources::default()
     };
-    let loaded = load(env, &sources, &ControllerOverride::default());
+    // The controller `rapid check` would take: rapid.toml's `[controller]`
+    // (RobotWare, options, robot), found from the first path.
+    let controller = match paths.first() {
+        Some(first) => {
+            let (config, file) = crate::config::resolve_in(env, None, first).map_err(|e| {
+                (
+                    first.clone(),
+                    std::io::Error::new(std::io::ErrorKind::InvalidData, e.to_string()),
+                )
+            })?;
+            config.controller.resolve().map_err(|(key, why)| {
+                (
+                    file.unwrap_or_else(|| first.clone()),
+                    std::io::Error::new(
+                        std::io::ErrorKind::InvalidData,
+                        format!("[controller] {key}: {why}"),
+                    ),
+                )
+            })?
+        }
+        None => ControllerOverride::default(),
+    };
+    let loaded = load(env, &sources, &controller);
     Ok(Around {
         loaded,
         named,

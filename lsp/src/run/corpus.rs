@@ -90,6 +90,7 @@ fn options() -> RunOptions {
         trace: false,
         operator: super::operator::OperatorOptions::default(),
         socket_map: None,
+        robot: None,
     }
 }
 

@@ -22,13 +22,14 @@ mod corpus;
 pub mod load;
 pub mod operator;
 pub mod sockets;
+pub mod robot;
 pub mod trace;
 
 use std::io::Write;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use rapid_runtime::world::{InstantRobot, World};
+use rapid_runtime::world::World;
 use rapid_runtime::{
     Config, Controller, Limits, Move, Outcome, Output, SignalChange, Status, Stream, TaskSpec,
 };
@@ -58,6 +59,14 @@ pub struct RunArgs {
     /// Draw the motion in 3D in a self-contained HTML page.
     #[arg(long, value_name = "FILE.html")]
     pub plot: Option<PathBuf>,
+    /// The robot model that moves (`IRB 120-3/0.58`, or a MOC.cfg robot
+    /// type), instead of the one MOC.cfg or rapid.toml names.
+    #[arg(long, value_name = "NAME")]
+    pub robot: Option<String>,
+    /// After the run, print the cycle time of the entry routine and of
+    /// each routine it called, and the axis closest to its limit.
+    #[arg(long)]
+    pub report: bool,
     /// The folder file instructions work in (default: a fresh temporary
     /// folder, removed after the run).
     #[arg(long, value_name = "DIR")]
@@ -118,13 +127,16 @@ pub struct RunOptions {
     pub limits: Limits,
     /// The folder file instructions work in.
     pub sandbox: Option<PathBuf>,
-    /// Record the moves.
+    /// Record the moves (and the routines' times).
     pub trace: bool,
     /// The operator's answers.
     pub operator: operator::OperatorOptions,
     /// The host's sockets, reaching the addresses the program names as
     /// mapped; `None`: the simulated network, where nobody answers.
     pub socket_map: Option<Vec<sockets::SocketMap>>,
+    /// The robot model of every motion task (`--robot`), instead of the
+    /// task's own (MOC.cfg, rapid.toml).
+    pub robot: Option<String>,
 }
 
 /// How a run ended.
@@ -136,6 +148,13 @@ pub struct RunReport {
     pub moves: Vec<Move>,
     /// Notes on the run: the signals taken from their use.
     pub notes: Vec<String>,
+    /// The calls that returned, with their times (with
+    /// [`RunOptions::trace`]).
+    pub routine_times: Vec<rapid_runtime::RoutineTime>,
+    /// The moves the robots made.
+    pub move_count: u64,
+    /// The simulated time reached, in seconds.
+    pub clock: f64,
 }
 
 impl RunReport {
@@ -266,7 +285,7 @@ pub fn build(
             kind: t.kind,
             robot: t
                 .motion
-                .then(|| Box::new(InstantRobot::new()) as Box<dyn rapid_runtime::world::Robot>),
+                .then(|| robot::robot_of(t, options.robot.as_deref())),
         });
     }
     if started == 0 {
@@ -332,6 +351,7 @@ pub fn run_routine(
         },
         // The simulated network: a request opens no sockets of the host.
         socket_map: None,
+        robot: None,
     };
     let (mut controller, _) = build(&loaded, &options, out).map_err(|e| e.to_string())?;
     controller.run();
@@ -358,6 +378,9 @@ pub fn report_of(controller: &Controller) -> RunReport {
             .collect(),
         moves: controller.moves().to_vec(),
         notes: Vec::new(),
+        routine_times: controller.routine_times().to_vec(),
+        move_count: controller.move_count(),
+        clock: controller.clock(),
     }
 }
 
@@ -391,7 +414,8 @@ fn run_inner(args: RunArgs) -> Result<ExitCode, String> {
         sets,
         limits: args.limits.limits(),
         sandbox: Some(sandbox.path.clone()),
-        trace: args.trace.is_some() || args.plot.is_some(),
+        trace: args.trace.is_some() || args.plot.is_some() || args.report,
+        robot: args.robot.clone(),
         operator: operator::OperatorOptions::from_args(args.answers.as_deref(), &args.answer)?,
         socket_map: Some(
             args.socket_map
@@ -400,24 +424,63 @@ fn run_inner(args: RunArgs) -> Result<ExitCode, String> {
                 .collect::<Result<_, _>>()?,
         ),
     };
+    let notes = robot::notes(&loaded.tasks, args.robot.as_deref())?;
     let out = |_: Stream, line: &str| {
         let stdout = std::io::stdout();
         let mut lock = stdout.lock();
         let _ = writeln!(lock, "{line}");
     };
     let report = execute(&loaded, &options, Box::new(out)).map_err(|e| e.to_string())?;
+    // The arm drawn and listed with the moves: the one motion task's.
+    let arms: Vec<rapid_robot::Robot> = loaded
+        .tasks
+        .iter()
+        .filter(|t| t.motion)
+        .filter_map(|t| robot::arm_of(t, args.robot.as_deref()).ok())
+        .collect();
+    let arm = match arms.as_slice() {
+        [one] => Some(one),
+        _ => None,
+    };
     if let Some(path) = &args.trace {
-        let text = serde_json::to_string_pretty(&trace::json(&report.moves)).unwrap_or_default();
+        let text = serde_json::to_string_pretty(&trace::json_with_arm(&report.moves, arm))
+            .unwrap_or_default();
         std::fs::write(path, text + "\n").map_err(|e| format!("{}: {e}", path.display()))?;
     }
     if let Some(path) = &args.plot {
         let title = args.path.display().to_string();
-        std::fs::write(path, trace::html(&report.moves, &title))
+        std::fs::write(path, trace::html_with_arm(&report.moves, arm, &title))
             .map_err(|e| format!("{}: {e}", path.display()))?;
     }
     let mut err = anstream::stderr();
+    if report.move_count > 0 {
+        for note in notes {
+            let _ = writeln!(err, "rapid: run: {note}");
+        }
+    }
     for line in report.notes.iter().chain(&report.describe()) {
         let _ = writeln!(err, "{line}");
+    }
+    if args.report {
+        let tasks: Vec<_> = loaded
+            .tasks
+            .iter()
+            .filter(|t| report.tasks.iter().any(|(n, _)| *n == t.name))
+            .map(|t| {
+                let limits = t
+                    .motion
+                    .then(|| robot::arm_of(t, args.robot.as_deref()).ok())
+                    .flatten()
+                    .map(|r| r.limits.0);
+                robot::Reported {
+                    name: t.name.clone(),
+                    limits,
+                    entry: t.entry.clone(),
+                }
+            })
+            .collect();
+        let text = robot::report(&tasks, &report.routine_times, &report.moves, report.clock);
+        let _ = write!(std::io::stdout().lock(), "{text}");
     }
     Ok(if report.is_success() {
         ExitCode::SUCCESS

@@ -49,3 +49,9 @@ pub fn rapid(dir: &Path, args: &[&str]) -> Output {
         .output()
         .expect("the rapid binary runs")
 }
+
+/// (exit code, stdout, stderr) of `rapid ARGS` in `dir`.
+pub fn rapid_out(dir: &Path, args: &[&str]) -> (Option<i32>, String, String) {
+    let out = rapid(dir, args);
+    (out.status.code(), text(&out.stdout), text(&out.stderr))
+}

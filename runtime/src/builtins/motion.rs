@@ -29,8 +29,12 @@ pub struct Move {
     pub orient: Option<[f64; 4]>,
     /// The circle point of `MoveC`, in world coordinates.
     pub via: Option<[f64; 3]>,
-    /// The robot axes of `MoveAbsJ`, in degrees.
+    /// The robot axes at the move's end, in degrees: the robot's solution
+    /// (a robot with a kinematic model), else `MoveAbsJ`'s target.
     pub joints: Option<Vec<f64>>,
+    /// When the move starts and ends, simulated seconds.
+    pub start: f64,
+    pub end: f64,
     /// The TCP speed (`v_tcp`, mm/s) and its data's name.
     pub speed: Option<f64>,
     pub speed_name: Option<String>,
@@ -155,11 +159,12 @@ impl Cx<'_> {
                 "ERR_OUTSIDE_REACH",
                 format!("{}: {m}", a.name),
             )),
-            RobotError::JointLimit { axis, message } => fault(named_error(
+            RobotError::JointLimit { message, .. } => fault(named_error(
                 &self.m.prog,
                 "ERR_ROBLIMIT",
-                format!("{}: axis {axis}: {message}", a.name),
+                format!("{}: {message}", a.name),
             )),
+            e @ RobotError::Stop { .. } => fault(FaultKind::Motion(e.to_string())),
             RobotError::Other(m) => invalid(format!("{}: {m}", a.name)),
         }
     }
@@ -333,11 +338,12 @@ fn do_move(cx: &mut Cx<'_>, a: &Args, target_param: &str) -> R<Done> {
         Err(e) => return cx.robot_error(a, e),
     };
     let end = start + motion.duration.max(0.0);
+    cx.sh.move_count += 1;
     if let Some(slot) = cx.sh.motion_until.get_mut(index) {
         *slot = end;
     }
     if cx.sh.trace {
-        record(
+        let mut m = record(
             cx,
             a,
             target_param,
@@ -345,6 +351,12 @@ fn do_move(cx: &mut Cx<'_>, a: &Args, target_param: &str) -> R<Done> {
             speed_value.as_ref(),
             zone_value.as_ref(),
         );
+        if let Some(j) = motion.joints {
+            m.joints = Some(j.robax.to_vec());
+        }
+        m.start = start;
+        m.end = end;
+        cx.sh.moves.push(m);
     }
     if end > cx.now() && !conc {
         return Ok(Done::Wait(Box::new(Wait {
@@ -357,7 +369,8 @@ fn do_move(cx: &mut Cx<'_>, a: &Args, target_param: &str) -> R<Done> {
     Ok(Done::Next)
 }
 
-/// Records a move for the trace, in world coordinates.
+/// A move as the trace records it, in world coordinates (its times are
+/// the caller's).
 fn record(
     cx: &mut Cx<'_>,
     a: &Args,
@@ -365,7 +378,7 @@ fn record(
     request: &MoveRequest<'_>,
     speed: Option<&Value>,
     zone: Option<&Value>,
-) {
+) -> Move {
     let frame = request.wobj.frame();
     let (pos, orient, joints) = match &request.to {
         MoveTarget::Cartesian(t) => {
@@ -383,7 +396,7 @@ fn record(
             .and_then(Value::as_f64)
             .map(|z| format!("{z} mm"))
     });
-    let m = Move {
+    Move {
         instruction: a.name.to_owned(),
         target: cx.arg_name(a, target_param),
         at: cx.m.location().unwrap_or_else(|| cx.m.prog.location(0, 0)),
@@ -397,8 +410,9 @@ fn record(
         tool: cx.arg_name(a, "Tool"),
         wobj: cx.arg_name(a, "WObj"),
         task: (cx.sh.names.len() > 1).then(|| cx.m.name.clone()),
-    };
-    cx.sh.moves.push(m);
+        start: 0.0,
+        end: 0.0,
+    }
 }
 
 /// `MoveL`, `MoveJ`, `MoveC` and the `Trigg` moves.
@@ -457,6 +471,18 @@ pub(crate) fn wait_rob(cx: &mut Cx<'_>, _: &mut Args) -> R<Done> {
 
 /// Motion settings that do not change where the robot goes.
 pub(crate) fn setting(_: &mut Cx<'_>, _: &mut Args) -> R<Done> {
+    Ok(Done::Next)
+}
+
+/// `ConfL` and `ConfJ` `\On` | `\Off`: the robot keeps the targets'
+/// confdata or not.
+pub(crate) fn conf(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let linear = a.name.eq_ignore_ascii_case("ConfL");
+    let on = !a.given("Off");
+    let index = cx.m.number.saturating_sub(1);
+    if let Some(Some(robot)) = cx.sh.robots.get_mut(index) {
+        robot.set_conf(linear, on);
+    }
     Ok(Done::Next)
 }
 

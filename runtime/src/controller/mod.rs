@@ -69,6 +69,10 @@ pub(crate) struct Shared {
     /// When each task's robot ends its last move.
     pub motion_until: Vec<f64>,
     pub moves: Vec<Move>,
+    /// The moves made, traced or not.
+    pub move_count: u64,
+    /// The routines that returned, with when they ran (when tracing).
+    pub routine_times: Vec<crate::RoutineTime>,
     /// Each task's name, by index.
     pub names: Vec<String>,
     pub debug: Debug,
@@ -208,6 +212,8 @@ impl Controller {
                 robots: Vec::new(),
                 motion_until: Vec::new(),
                 moves: Vec::new(),
+                move_count: 0,
+                routine_times: Vec::new(),
                 names: Vec::new(),
                 debug: Debug::default(),
             },
@@ -256,6 +262,17 @@ impl Controller {
         &self.sh.moves
     }
 
+    /// How many moves the robots made (traced or not).
+    pub fn move_count(&self) -> u64 {
+        self.sh.move_count
+    }
+
+    /// The calls that returned, with the simulated time each took (with
+    /// tracing on).
+    pub fn routine_times(&self) -> &[crate::RoutineTime] {
+        &self.sh.routine_times
+    }
+
     /// Each task's outcome (`None`: not started, or still running).
     pub fn outcomes(&self) -> Vec<(String, Option<Outcome>)> {
         self.tasks
@@ -269,8 +286,15 @@ impl Controller {
     pub fn start_routine(&mut self, task: usize, routine: u32) -> Result<(), String> {
         self.begin();
         self.started = true;
+        let now = self.sh.clock;
         match self.tasks.get_mut(task) {
-            Some(m) => m.start(routine),
+            Some(m) => {
+                m.start(routine)?;
+                if let Some(f) = m.frames.last_mut() {
+                    f.entered = now;
+                }
+                Ok(())
+            }
             None => Err("no such task".to_owned()),
         }
     }

@@ -42,6 +42,7 @@ impl Machine {
             retries: 0,
             undoing: None,
             wait: None,
+            entered: 0.0,
         });
     }
 
@@ -103,6 +104,9 @@ impl Machine {
             }
         }
         self.push_frame_at(code, FrameKind::Call, base);
+        if let Some(f) = self.frames.last_mut() {
+            f.entered = sh.clock;
+        }
         Ok(())
     }
 
@@ -185,6 +189,14 @@ impl Machine {
         let Some(f) = self.pop_frame() else {
             return Ok(Some(Yield::Done));
         };
+        if sh.trace && matches!(f.kind, FrameKind::Call | FrameKind::Entry) {
+            sh.routine_times.push(crate::RoutineTime {
+                task: self.name.clone(),
+                routine: f.code.name.clone(),
+                start: f.entered,
+                end: sh.clock,
+            });
+        }
         match f.kind {
             FrameKind::Call => {
                 if f.code.kind == CodeKind::Routine(RoutineKind::Func) {

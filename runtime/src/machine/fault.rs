@@ -44,6 +44,9 @@ pub(crate) enum FaultKind {
     /// Waiting for the operator, who does not answer (or answers what
     /// does not fit).
     Operator(String),
+    /// The controller stopped the program with a motion event (no handler
+    /// takes it).
+    Motion(String),
     /// `EXIT` or `Stop`: ends the run without an error.
     Halt(Status),
 }
@@ -110,6 +113,7 @@ impl Machine {
             FaultKind::Budget(m) => (Status::Budget, m.clone(), None),
             FaultKind::Deadlock(m) => (Status::Deadlock, m.clone(), None),
             FaultKind::Operator(m) => (Status::Operator, m.clone(), None),
+            FaultKind::Motion(m) => (Status::Error, m.clone(), None),
             FaultKind::Halt(s) => (*s, String::new(), None),
         };
         Outcome {

@@ -176,6 +176,8 @@ pub(crate) struct Frame {
     pub undoing: Option<Box<Fault>>,
     /// The frame waits for something ([`Wait`]).
     pub wait: Option<Box<Wait>>,
+    /// The simulated time its routine was entered (calls and entries).
+    pub entered: f64,
 }
 
 /// Where a task is.

@@ -4,19 +4,21 @@
 //!
 //! | part | trait | default |
 //! |---|---|---|
-//! | the robot arm of a motion task | [`Robot`] | [`InstantRobot`]: moves arrive at once, no kinematics |
+//! | the robot arm of a motion task | [`Robot`] | [`InstantRobot`]: moves arrive at once, no kinematics; [`ArmRobot`]: a modelled arm (kinematics, limits, move times) |
 //! | files (`Open`, `Write`, `ReadStr`...) | [`FileSystem`] | [`SandboxFs`]: a folder, no path leaves it |
 //! | I/O signals | [`Io`] | [`ScriptedIo`]: zero at the start, a script of timed changes |
 //! | the operator at the FlexPendant | [`Pendant`] | [`ScriptedOperator`]: [`crate::Config::answers`] |
 //! | sockets | [`Sockets`] | [`EmptyNetwork`]: nobody answers (`rapid run`: the host's) |
 //! | printed lines (`TPWrite`, `ErrWrite`) | [`crate::Output`] | the caller's sink |
 
+mod arm;
 mod files;
 mod io;
 mod pendant;
 mod robot;
 mod sockets;
 
+pub use arm::ArmRobot;
 pub use files::{FileError, FileKind, FileSystem, MemoryFs, SandboxFs};
 pub use io::{Io, ScriptedIo};
 pub use pendant::{Expect, NoOperator, Pendant, Question, Reply, ScriptedOperator, parse_answer};

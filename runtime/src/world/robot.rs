@@ -222,6 +222,16 @@ pub enum RobotError {
     OutOfReach(String),
     /// A joint would pass its limit (axis 1 to 6).
     JointLimit { axis: usize, message: String },
+    /// The controller stops the program with a motion event (a move to a
+    /// target out of reach, beyond a working range, or in another
+    /// configuration): no `ERROR` handler takes it.
+    Stop {
+        /// The event log's number and title (`50050`, "Position outside
+        /// reach").
+        event: u32,
+        title: String,
+        message: String,
+    },
     /// Anything else the controller reports.
     Other(String),
 }
@@ -233,6 +243,11 @@ impl std::fmt::Display for RobotError {
                 f.write_str(m)
             }
             RobotError::JointLimit { axis, message } => write!(f, "axis {axis}: {message}"),
+            RobotError::Stop {
+                event,
+                title,
+                message,
+            } => write!(f, "{event} {title}: {message}"),
         }
     }
 }
@@ -273,6 +288,12 @@ pub trait Robot: Send {
         Err(RobotError::Unsupported(
             "CalcRobT (the simulated robot has no kinematic model)".to_owned(),
         ))
+    }
+
+    /// `ConfL` (`linear`) or `ConfJ` `\On` or `\Off`: whether moves keep
+    /// the target's confdata.
+    fn set_conf(&mut self, linear: bool, on: bool) {
+        let _ = (linear, on);
     }
 }
 

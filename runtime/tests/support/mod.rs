@@ -11,9 +11,14 @@ pub fn brief(o: &Outcome) -> Option<String> {
         Status::Exited => "exited".to_owned(),
         Status::Stopped => format!("stopped at {line}"),
         Status::Halted => format!("halted at {line}"),
+        // An error without a RAPID name (the controller's motion event):
+        // its event number and title.
         Status::Error => format!(
             "{} at {line}",
-            o.errno.as_ref().map_or("?", |(_, n)| n.as_str())
+            o.errno
+                .as_ref()
+                .map_or(o.message.split(':').next().unwrap_or("?"), |(_, n)| n
+                    .as_str())
         ),
         Status::Unsupported => format!(
             "{} at {line}",

@@ -1,0 +1,156 @@
+//! `rapid run` with a modelled robot end to end: the robot rapid.toml,
+//! MOC.cfg or `--robot` names, move times in the trace, `--report`, a
+//! move out of reach, and the note when no robot is known.
+
+mod support;
+
+use support::{rapid_out as run, scratch, write};
+
+/// An IRB 120 program: a joint move home, 100 mm at v100 in a routine
+/// (1.01 s by hand: ramps of 0.5 mm at 10 m/s², 99 mm at 100 mm/s), and a
+/// wait.
+const CELL: &str = "MODULE Cell
+  CONST jointtarget zero := [[0,0,0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+  CONST robtarget p10 := [[374,0,500],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+  CONST robtarget p20 := [[374,100,500],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+  PROC main()
+    MoveAbsJ zero, v1000, fine, tool0;
+    MoveJ p10, v1000, fine, tool0;
+    Side;
+    Side;
+    WaitTime 0.5;
+  ENDPROC
+  PROC Side()
+    MoveL p20, v100, fine, tool0;
+    MoveL p10, v100, fine, tool0;
+  ENDPROC
+ENDMODULE
+";
+
+#[test]
+fn rapid_toml_names_the_robot_and_the_report_gives_the_cycle() {
+    let dir = scratch("run-robot-report");
+    write(
+        &dir,
+        &[
+            ("Cell.mod", CELL),
+            ("rapid.toml", "[controller]\nrobot = \"IRB 120-3/0.58\"\n"),
+        ],
+    );
+    let (code, out, err) = run(
+        &dir,
+        &[
+            "run", "Cell.mod", "--report", "--trace", "t.json", "--plot", "p.html",
+        ],
+    );
+    assert_eq!((code, err.as_str()), (Some(0), ""), "{out}");
+    // MoveJ p10 from zero: axis 5 turns 80.62 degrees at up to 320 deg/s
+    // with 0.2 s ramps, (80.62 - 64) / 320 + 0.4 = 0.452 s; four MoveL of
+    // 1.01 s and the wait: 0.452 + 4.04 + 0.5.
+    let lines: Vec<&str> = out.lines().collect();
+    assert_eq!(lines[0], "cycle time of main: 4.992 s", "{out}");
+    assert_eq!(
+        lines[1].split_whitespace().collect::<Vec<_>>(),
+        ["routine", "calls", "seconds"]
+    );
+    assert_eq!(
+        lines[2].split_whitespace().collect::<Vec<_>>(),
+        ["Side", "2", "4.040"]
+    );
+    assert!(lines[3].starts_with("closest to a limit: axis 5 at 81.30 degrees, 38.70 from its limit 120.00 (MoveL p20, Cell.mod:13)"), "{out}");
+    let trace: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("t.json")).expect("a trace"))
+            .expect("JSON");
+    let moves = trace["moves"].as_array().expect("moves");
+    assert_eq!(moves.len(), 6);
+    let side = &moves[2];
+    assert_eq!(side["instruction"], "MoveL");
+    let (start, end) = (
+        side["start"].as_f64().expect("start"),
+        side["end"].as_f64().expect("end"),
+    );
+    assert!((end - start - 1.01).abs() < 1e-6, "{side}");
+    let joints: Vec<f64> = side["joints"]
+        .as_array()
+        .expect("joints")
+        .iter()
+        .filter_map(serde_json::Value::as_f64)
+        .collect();
+    // p20 is 100 mm to the left of p10: axis 1 turns atan(100 / 374).
+    assert!(
+        (joints[0] - 100f64.atan2(374.0).to_degrees()).abs() < 1e-3,
+        "{joints:?}"
+    );
+    // The arm's chain for the plot: base, shoulder, elbow, wrist, flange
+    // (tool0, at p20); the IRB 120's shoulder is 290 mm up.
+    let arm = &side["arm"];
+    assert_eq!(arm[0], serde_json::json!([0.0, 0.0, 0.0]));
+    assert!(
+        (arm[1][2].as_f64().expect("z") - 290.0).abs() < 1e-6,
+        "{arm}"
+    );
+    let flange: Vec<f64> = (0..3).map(|k| arm[4][k].as_f64().expect("mm")).collect();
+    assert!(
+        (flange[0] - 374.0).abs() < 1e-3
+            && (flange[1] - 100.0).abs() < 1e-3
+            && (flange[2] - 500.0).abs() < 1e-3,
+        "{flange:?}"
+    );
+    assert_eq!(trace["robot"]["name"], "IRB 120-3/0.58");
+    assert_eq!(
+        trace["robot"]["limits"][4],
+        serde_json::json!([-120.0, 120.0])
+    );
+    let page = std::fs::read_to_string(dir.join("p.html")).expect("a page");
+    assert!(page.contains(r#""robot":{"limits":"#) && page.contains(r#""arm":[[0.0,0.0,0.0]"#));
+}
+
+#[test]
+fn a_move_out_of_reach_stops_at_its_line_with_the_event() {
+    let dir = scratch("run-robot-reach");
+    write(
+        &dir,
+        &[(
+            "Far.mod",
+            "MODULE Far\n  CONST robtarget far := [[1374,0,500],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];\n  PROC main()\n    TPWrite \"go\";\n    MoveJ far, v1000, fine, tool0;\n    TPWrite \"there\";\n  ENDPROC\nENDMODULE\n",
+        )],
+    );
+    let (code, out, err) = run(&dir, &["run", "Far.mod", "--robot", "IRB 120-3/0.58"]);
+    assert_eq!((code, out.as_str()), (Some(1), "go\n"));
+    assert!(
+        err.starts_with("error: 50050 Position outside reach: MoveJ: the position is "),
+        "{err}"
+    );
+    assert!(err.contains("  --> Far.mod:5:5\n"), "{err}");
+    // Without a robot the move arrives at once, and a note says so.
+    let (code, out, err) = run(&dir, &["run", "Far.mod"]);
+    assert_eq!((code, out.as_str()), (Some(0), "go\nthere\n"));
+    assert_eq!(
+        err,
+        "rapid: run: note: no robot is named (MOC.cfg, rapid.toml [controller] robot or --robot): moves take no time and reach every target\n"
+    );
+    let (code, _, err) = run(&dir, &["run", "Far.mod", "--robot", "IRB 99"]);
+    assert_eq!(code, Some(2));
+    assert!(
+        err.contains("--robot: `IRB 99` is not a modelled robot"),
+        "{err}"
+    );
+}
+
+#[test]
+fn a_moc_cfg_beside_the_modules_names_the_robot() {
+    let dir = scratch("run-robot-moc");
+    write(
+        &dir,
+        &[
+            ("Cell.mod", CELL),
+            (
+                "MOC.cfg",
+                "MOC:CFG_1.0:6:0::\n#\nROBOT:\n\n      -name \"ROB_1\" -use_robot_type \"ROB1_120_0.58_3\"\n",
+            ),
+        ],
+    );
+    let (code, out, err) = run(&dir, &["run", ".", "--report"]);
+    assert_eq!((code, err.as_str()), (Some(0), ""), "{out}");
+    assert!(out.starts_with("cycle time of main: 4.992 s\n"), "{out}");
+}
