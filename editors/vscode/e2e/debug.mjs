@@ -155,7 +155,7 @@ export async function debugSteps(ctx) {
     // the page the debug session wrote (titled with the entry), not a new run
     const title = await view.locator("header b").innerText();
     assert(title.endsWith("motion.mod (main)"), `page title ${JSON.stringify(title)}`);
-    const drawn = await view.locator("canvas").evaluate((c) => c.width > 0 && c.height > 0);
+    const drawn = await view.locator("canvas#c").evaluate((c) => c.width > 0 && c.height > 0);
     assert(drawn, "the canvas has no size");
     await page.screenshot({ path: path.join(out, "vscode-show-path.png") });
   });
