@@ -21,8 +21,8 @@
 mod corpus;
 pub mod load;
 pub mod operator;
-pub mod sockets;
 pub mod robot;
+pub mod sockets;
 pub mod trace;
 
 use std::io::Write;
