@@ -424,22 +424,24 @@ impl Machine {
 
     /// Pushes the frame that computes a data object's starting value.
     pub(crate) fn begin_init(&mut self, sh: &mut Shared, code: Arc<Code>, target: Target) {
-        match target {
-            Target::Global(g) => {
-                if let Some(i) = self.init.get_mut(g as usize) {
-                    *i = Init::Busy;
-                }
-            }
-            Target::Pers(k) => {
-                if let Some(&i) = self.pers_map.get(k as usize)
-                    && let Some(s) = sh.pers_init.get_mut(i as usize)
-                {
-                    *s = Init::Busy;
-                }
-            }
-            Target::Slot => {}
-        }
+        self.set_init(sh, target, Init::Busy);
         self.push_frame(code, FrameKind::Init, Vec::new());
+    }
+
+    /// Sets the initialisation state of a global or persistent (a slot of a
+    /// routine has none).
+    fn set_init(&mut self, sh: &mut Shared, target: Target, state: Init) {
+        let place = match target {
+            Target::Global(g) => self.init.get_mut(g as usize),
+            Target::Pers(k) => match self.pers_map.get(k as usize) {
+                Some(&i) => sh.pers_init.get_mut(i as usize),
+                None => None,
+            },
+            Target::Slot => None,
+        };
+        if let Some(place) = place {
+            *place = state;
+        }
     }
 
     /// The data object the innermost (initialisation) frame computes cannot
@@ -454,21 +456,7 @@ impl Machine {
         };
         let at = self.prog.location(code.unit, code.range.start);
         let why = format!("{at}: the data {} cannot be initialised: {why}", code.name);
-        match decl.target {
-            Target::Global(g) => {
-                if let Some(i) = self.init.get_mut(g as usize) {
-                    *i = Init::Failed(why);
-                }
-            }
-            Target::Pers(k) => {
-                if let Some(&i) = self.pers_map.get(k as usize)
-                    && let Some(s) = sh.pers_init.get_mut(i as usize)
-                {
-                    *s = Init::Failed(why);
-                }
-            }
-            Target::Slot => {}
-        }
+        self.set_init(sh, decl.target, Init::Failed(why));
     }
 
     /// The starting value of a data declaration: array sizes and the
