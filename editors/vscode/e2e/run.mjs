@@ -176,8 +176,8 @@ server.stderr.pipe(serverLog);
 let passed = 0;
 let failed = 0;
 const failures = [];
-// RAPID_E2E_ONLY=debug (or diff) runs the debugger's (or Compare with
-// backup's) checks alone (while working on them)
+// RAPID_E2E_ONLY=debug (or diff, or lone) runs the debugger's (or Compare
+// with backup's, or the lone file's) checks alone (while working on them)
 const onlyDebug = process.env.RAPID_E2E_ONLY !== undefined;
 async function step(name, fn, always = false) {
   if (onlyDebug && !always) return;
@@ -530,7 +530,8 @@ try {
     assert(tabs === 0, `${tabs} editors are open`);
   });
 
-  await step("one file opened without its folder gets its task from its place (a backup's SYSMOD and SYSPAR)", async () => {
+  const loneStep = (name, fn) => step(name, fn, only === "lone");
+  await loneStep("one file opened without its folder gets its task from its place (a backup's SYSMOD and SYSPAR)", async () => {
     const backup = path.join(tmp, "lone", "BACKUP");
     const write = (rel, text) => {
       fs.mkdirSync(path.dirname(path.join(backup, rel)), { recursive: true });
@@ -548,29 +549,22 @@ try {
       spawnSync(rapid, ["check", lone, "--format", "json"], { encoding: "utf8" }).stdout,
     ).map((d) => `${d.code}@${d.line}`);
     assert(want.join(" ") === "W201@3", `rapid check says ${want.join(" ")}`);
-    // an empty window (no folder), then File: Open File... with the path
-    await page.goto(`http://127.0.0.1:${port}/?ew=true`);
+    // An empty window (no folder) that opens the file, as VS Code's own
+    // "open in a new window" does: the workbench's `openFile` payload. (The
+    // simple File: Open File... dialog checks a typed path asynchronously and
+    // lost the Enter on a busy CI machine.)
+    const payload = JSON.stringify([["openFile", `vscode-remote://127.0.0.1:${port}${lone}`]]);
+    await page.goto(`http://127.0.0.1:${port}/?ew=true&payload=${encodeURIComponent(payload)}`);
     await page.waitForSelector(".monaco-workbench");
-    await page.waitForTimeout(1500);
-    // The simple file dialog checks the typed path asynchronously: on a busy
-    // machine an Enter pressed too early is lost, so the dialog is tried
-    // again until the file's tab shows.
     const tab = page.locator(".tabs-container .tab", { hasText: "Lone.mod" }).first();
-    for (let attempt = 1; ; attempt++) {
-      await runCommand("File: Open File...");
-      const input = page.locator(".quick-input-widget input");
-      await input.waitFor({ state: "visible" });
-      await input.fill(lone);
-      await page.waitForTimeout(1500 * attempt);
-      await page.keyboard.press("Enter");
-      try {
-        await tab.waitFor({ state: "visible", timeout: 20000 });
-        break;
-      } catch (e) {
-        if (attempt >= 3) throw e;
-        await page.keyboard.press("Escape");
-      }
-    }
+    await tab.waitFor({ state: "visible", timeout: TIMEOUT });
+    // the editor shows the file, and the workbench has settled (focus moves to
+    // the editor as it opens, closing a palette opened before)
+    await page.locator(".monaco-editor .view-lines", { hasText: "MODULE Lone" }).first().waitFor({ state: "visible", timeout: TIMEOUT });
+    await page.waitForTimeout(2000);
+    // the title names the file and no folder (a folder's name would follow it)
+    const title = await page.title();
+    assert(!/BACKUP|TASK1|PROGMOD/.test(title), `the window has a folder open: ${title}`);
     await runCommand("View: Focus Problems");
     const row = page.locator(".markers-panel .monaco-list-row", { hasText: "W201" });
     await row.first().waitFor({ state: "visible", timeout: TIMEOUT });
@@ -582,7 +576,7 @@ try {
   });
 
   // the debugger and the path view, in a workspace of their own
-  const debugStep = (name, fn) => step(name, fn, only !== "diff");
+  const debugStep = (name, fn) => step(name, fn, only === "debug");
   await debugSteps({ page, port, tmp, out, rapid, repo, step: debugStep, assert, runCommand, goTo, TIMEOUT });
 
   await step("a missing server binary gives a message with a link to the install instructions", async () => {
