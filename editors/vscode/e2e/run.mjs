@@ -176,8 +176,8 @@ server.stderr.pipe(serverLog);
 let passed = 0;
 let failed = 0;
 const failures = [];
-// RAPID_E2E_ONLY=debug (or diff, or lone) runs the debugger's (or Compare
-// with backup's, or the lone file's) checks alone (while working on them)
+// RAPID_E2E_ONLY=debug (or diff, or backup) runs the debugger's (or Compare
+// with backup's, or the backups') checks alone (while working on them)
 const onlyDebug = process.env.RAPID_E2E_ONLY !== undefined;
 async function step(name, fn, always = false) {
   if (onlyDebug && !always) return;
@@ -505,14 +505,22 @@ try {
   const only = process.env.RAPID_E2E_ONLY;
   await diffSteps({ page, ws, tmp, out, rapid, assert, runCommand, TIMEOUT, step: (n, f) => step(n, f, only === "diff") });
 
-  await step("a controller backup opened as the workspace shows its Problems before any file is opened", async () => {
-    const backup = path.join(tmp, "backup", "CELL_BACKUP");
+  /// A controller backup at `backup` (BACKINFO, and an EIO.cfg with the
+  /// input diGo): returns a function that writes a file into it.
+  const backupWriter = (backup) => {
     const write = (rel, text) => {
       fs.mkdirSync(path.dirname(path.join(backup, rel)), { recursive: true });
       fs.writeFileSync(path.join(backup, rel), text);
     };
     write("BACKINFO/backinfo.txt", "backup\n");
     write("SYSPAR/EIO.cfg", 'EIO:CFG_1.0:6:1::\n#\nEIO_SIGNAL:\n\n      -Name "diGo" -SignalType "DI" -Device "d652"\n');
+    return write;
+  };
+
+  const backupStep = (name, fn) => step(name, fn, only === "backup");
+  await backupStep("a controller backup opened as the workspace shows its Problems before any file is opened", async () => {
+    const backup = path.join(tmp, "backup", "CELL_BACKUP");
+    const write = backupWriter(backup);
     write(
       "RAPID/TASK1/PROGMOD/Cell.mod",
       "MODULE Cell\n    PROC main()\n        VAR num nSpare;\n        WaitDI diGo, 1;\n    ENDPROC\nENDMODULE\n",
@@ -530,15 +538,9 @@ try {
     assert(tabs === 0, `${tabs} editors are open`);
   });
 
-  const loneStep = (name, fn) => step(name, fn, only === "lone");
-  await loneStep("one file opened without its folder gets its task from its place (a backup's SYSMOD and SYSPAR)", async () => {
+  await backupStep("one file opened without its folder gets its task from its place (a backup's SYSMOD and SYSPAR)", async () => {
     const backup = path.join(tmp, "lone", "BACKUP");
-    const write = (rel, text) => {
-      fs.mkdirSync(path.dirname(path.join(backup, rel)), { recursive: true });
-      fs.writeFileSync(path.join(backup, rel), text);
-    };
-    write("BACKINFO/backinfo.txt", "backup\n");
-    write("SYSPAR/EIO.cfg", 'EIO:CFG_1.0:6:1::\n#\nEIO_SIGNAL:\n\n      -Name "diGo" -SignalType "DI" -Device "d652"\n');
+    const write = backupWriter(backup);
     write(
       "RAPID/TASK1/PROGMOD/Lone.mod",
       "MODULE Lone\n    PROC main()\n        VAR num nUnused;\n        LibHelper;\n        WaitDI diGo, 1;\n    ENDPROC\nENDMODULE\n",
