@@ -11,8 +11,8 @@ use rapid_evaluator::geometry::{iso_of, orient_value, pos_value};
 use super::{Args, Cx, Done};
 use crate::machine::{FaultKind, R, Timeout, Wait, WaitKind, fault, invalid, named_error};
 use crate::world::{
-    JointTarget, MoveKind, MoveRequest, MoveTarget, Pose, RobTarget, RobotError, Speed, Tool, WObj,
-    Zone,
+    JointTarget, MoveKind, MoveRequest, MoveTarget, Pose, RobTarget, Robot, RobotError, Speed,
+    Tool, WObj, Zone,
 };
 
 /// A move as a trace records it.
@@ -149,6 +149,21 @@ impl Cx<'_> {
                 self.sh.names.get(index).map_or("", String::as_str)
             )),
         }
+    }
+
+    /// Asks the robot `index` (from [`Self::robot_index`]) `ask`: a robot's
+    /// error is raised as the controller raises it.
+    fn ask_robot<T>(
+        &self,
+        a: &Args,
+        index: usize,
+        ask: impl FnOnce(&dyn Robot) -> Result<T, RobotError>,
+    ) -> R<T> {
+        let r = match self.sh.robots.get(index).and_then(Option::as_ref) {
+            Some(robot) => ask(robot.as_ref()),
+            None => return invalid("the task moves no robot"),
+        };
+        r.or_else(|e| self.robot_error(a, e))
     }
 
     fn robot_error<T>(&self, a: &Args, e: RobotError) -> R<T> {
@@ -491,14 +506,8 @@ pub(crate) fn c_rob_t(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
     let index = cx.robot_index(a)?;
     let tool = cx.tool(a, "Tool")?;
     let wobj = cx.wobj(a)?;
-    let r = match cx.sh.robots.get(index).and_then(Option::as_ref) {
-        Some(robot) => robot.robtarget(&tool, &wobj),
-        None => return invalid("the task moves no robot"),
-    };
-    match r {
-        Ok(t) => robtarget_value(&t),
-        Err(e) => cx.robot_error(a, e),
-    }
+    let t = cx.ask_robot(a, index, |robot| robot.robtarget(&tool, &wobj))?;
+    robtarget_value(&t)
 }
 
 /// `CPos([\Tool] [\WObj])`.
@@ -512,14 +521,8 @@ pub(crate) fn c_pos(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
 /// `CJointT([\TaskRef] | [\TaskName])`.
 pub(crate) fn c_joint_t(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
     let index = cx.robot_index(a)?;
-    let r = match cx.sh.robots.get(index).and_then(Option::as_ref) {
-        Some(robot) => robot.joints(),
-        None => return invalid("the task moves no robot"),
-    };
-    match r {
-        Ok(j) => Ok(jointtarget_value(&j)),
-        Err(e) => cx.robot_error(a, e),
-    }
+    let j = cx.ask_robot(a, index, |robot| robot.joints())?;
+    Ok(jointtarget_value(&j))
 }
 
 /// `CalcJointT(Rob_target, Tool [\WObj])`.
@@ -529,14 +532,8 @@ pub(crate) fn calc_joint_t(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
     let target = cx.robtarget(&target)?;
     let tool = cx.tool(a, "Tool")?;
     let wobj = cx.wobj(a)?;
-    let r = match cx.sh.robots.get(index).and_then(Option::as_ref) {
-        Some(robot) => robot.calc_joints(&target, &tool, &wobj),
-        None => return invalid("the task moves no robot"),
-    };
-    match r {
-        Ok(j) => Ok(jointtarget_value(&j)),
-        Err(e) => cx.robot_error(a, e),
-    }
+    let j = cx.ask_robot(a, index, |robot| robot.calc_joints(&target, &tool, &wobj))?;
+    Ok(jointtarget_value(&j))
 }
 
 /// `CalcRobT(Joint_target, Tool [\WObj])`.
@@ -546,12 +543,8 @@ pub(crate) fn calc_rob_t(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
     let joints = jointtarget(&joints)?;
     let tool = cx.tool(a, "Tool")?;
     let wobj = cx.wobj(a)?;
-    let r = match cx.sh.robots.get(index).and_then(Option::as_ref) {
-        Some(robot) => robot.calc_robtarget(&joints, &tool, &wobj),
-        None => return invalid("the task moves no robot"),
-    };
-    match r {
-        Ok(t) => robtarget_value(&t),
-        Err(e) => cx.robot_error(a, e),
-    }
+    let t = cx.ask_robot(a, index, |robot| {
+        robot.calc_robtarget(&joints, &tool, &wobj)
+    })?;
+    robtarget_value(&t)
 }
