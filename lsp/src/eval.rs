@@ -79,6 +79,21 @@ pub enum Failure {
     Eval(EvalError),
 }
 
+impl std::fmt::Display for Failure {
+    /// The failure in one line: `does not parse at column 4: ...`,
+    /// `ERR_DIVZERO: ...`.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Failure::Syntax(e) => match e.column {
+                Some(column) => write!(f, "does not parse at column {column}: {}", e.message),
+                None => f.write_str(&e.message),
+            },
+            Failure::Usage(m) => f.write_str(m),
+            Failure::Eval(e) => write!(f, "{}: {}", e.code.name(), e.message),
+        }
+    }
+}
+
 /// The value of `expr_text` as the controller computes it, alone or (with
 /// `file`, a module or a folder read through `env`) with a program's data;
 /// `initial`: VAR and PERS data at their initial values.

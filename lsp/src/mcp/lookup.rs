@@ -216,7 +216,6 @@ pub fn evaluate(
     roots: &[PathBuf],
     params: EvaluateParams,
 ) -> Result<Answer<EvaluateReport>, String> {
-    use crate::eval::Failure;
     let env = Confined::new(roots.to_vec());
     let path = params
         .path
@@ -224,17 +223,7 @@ pub fn evaluate(
         .map(|p| resolve(roots, p))
         .transpose()?;
     let value = crate::eval::evaluate(&env, &params.expression, path.as_deref(), params.initial)
-        .map_err(|f| match f {
-            Failure::Syntax(e) => match e.column {
-                Some(column) => format!(
-                    "the expression does not parse at column {column}: {}",
-                    e.message
-                ),
-                None => e.message,
-            },
-            Failure::Usage(m) => m,
-            Failure::Eval(e) => format!("{}: {}", e.code.name(), e.message),
-        })?;
+        .map_err(|f| f.to_string())?;
     let report = EvaluateReport {
         ty: rapid_analyzer::consteval::value_type(&value.value).to_string(),
         value: value.value.to_string(),

@@ -291,14 +291,7 @@ fn robot_of(task: &Task, asked: Option<&str>) -> Result<(Robot, RobotInfo), Stri
 
 /// Why an argument has no value, for the answer.
 fn failure(what: &str, f: Failure) -> String {
-    match f {
-        Failure::Syntax(e) => match e.column {
-            Some(column) => format!("{what}: does not parse at column {column}: {}", e.message),
-            None => format!("{what}: {}", e.message),
-        },
-        Failure::Usage(m) => format!("{what}: {m}"),
-        Failure::Eval(e) => format!("{what}: {}: {}", e.code.name(), e.message),
-    }
+    format!("{what}: {f}")
 }
 
 /// The place of `s` in `list`, added when the solver's list lacks it (a
