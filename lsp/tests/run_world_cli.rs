@@ -44,6 +44,28 @@ fn the_operator_answers_from_a_file_then_from_the_options() {
 }
 
 #[test]
+fn what_the_pendant_shows_is_traced_on_stderr_apart_from_the_lines() {
+    let dir = scratch("run-pendant-trace");
+    let module = "MODULE Cell
+  PROC main()
+    TPErase;
+    TPWrite \"ready\";
+    TPShow TP_LATEST;
+    UIMsgWrite \"Cell\", \"Loading\";
+  ENDPROC
+ENDMODULE
+";
+    write(&dir, &[("Cell.mod", module)]);
+    let out = rapid(&dir, &["run", "Cell.mod"]);
+    assert_eq!(
+        show(&out),
+        "exit 0\n--- stdout\nready\nCell: Loading\n--- stderr\n\
+         [TPErase at Cell.mod:3] the operator window is cleared\n\
+         [TPShow at Cell.mod:5] the pendant shows the window shown before\n"
+    );
+}
+
+#[test]
 fn in_a_pipe_without_answers_the_run_stops_waiting_for_the_operator() {
     let dir = scratch("run-no-operator");
     write(&dir, &[("Cell.mod", DIALOG)]);

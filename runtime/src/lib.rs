@@ -83,6 +83,10 @@ pub enum Stream {
     Pendant,
     /// The event log (`ErrWrite`).
     EventLog,
+    /// What the pendant shows changes without a line of text (`TPErase`,
+    /// `TPShow`, `UIShow`, `UIMsgWriteAbort`): a trace for the person who
+    /// reads the run, not a line the program writes.
+    Trace,
 }
 
 /// Where a run's output goes: one call per line (named by its task,

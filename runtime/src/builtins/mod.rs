@@ -48,13 +48,15 @@ pub(crate) type FuncFn = fn(&mut Cx<'_>, &mut Args) -> R<Value>;
 const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("TPWrite", output::tp_write),
     ("ErrWrite", output::err_write),
-    ("TPErase", output::nothing),
-    ("TPShow", output::nothing),
+    ("TPErase", output::tp_erase),
+    ("TPShow", output::tp_show),
+    ("UIMsgWrite", output::ui_msg_write),
+    ("UIMsgWriteAbort", output::ui_msg_write_abort),
     ("TPReadFK", pendant::tp_read_fk),
     ("TPReadNum", pendant::tp_read_num),
     ("TPReadDnum", pendant::tp_read_num),
     ("UIMsgBox", pendant::ui_msg_box),
-    ("UIShow", output::nothing),
+    ("UIShow", output::ui_show),
     ("Incr", data::incr),
     ("Decr", data::decr),
     ("Add", data::add),
@@ -396,6 +398,18 @@ impl Cx<'_> {
     /// A line on the pendant or in the event log.
     pub(crate) fn print(&mut self, stream: crate::Stream, text: &str) {
         self.sh.print(&self.m.name, stream, text);
+    }
+
+    /// A trace of what the pendant shows, with where the program asked
+    /// (`[TPErase at m.mod:4] ...`).
+    pub(crate) fn trace(&mut self, text: &str) {
+        let at = self
+            .m
+            .location()
+            .map_or_else(String::new, |l| format!(" at {}:{}", l.path, l.line));
+        let (what, rest) = text.split_once(": ").unwrap_or((text, ""));
+        let line = format!("[{what}{at}] {rest}");
+        self.sh.print(&self.m.name, crate::Stream::Trace, &line);
     }
 }
 

@@ -63,6 +63,8 @@ pub(crate) struct Shared {
     pub sockets: Box<dyn Sockets>,
     /// The mechanical units `DeactUnit` deactivated (folded names).
     pub inactive_units: Vec<String>,
+    /// FlexPendant applications `UIShow` opened.
+    pub ui_instances: u32,
     output: Box<dyn Output>,
     /// Each task's robot, by task index.
     pub robots: Vec<Option<Box<dyn Robot>>>,
@@ -205,6 +207,7 @@ impl Controller {
                 sync: Sync::default(),
                 files: world.files,
                 inactive_units: Vec::new(),
+                ui_instances: 0,
                 open: Default::default(),
                 pendant: world.pendant,
                 sockets: world.sockets,

@@ -49,6 +49,7 @@ MODULE pendant_dialogs
     TPWrite "client "\Bool:=UIClientExist();
   ENDPROC
 ENDMODULE
+!> [TPErase at pendant_dialogs.mod:25] the operator window is cleared
 !> key 2
 !> key 1
 !> n 42.5
