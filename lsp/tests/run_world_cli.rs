@@ -265,3 +265,51 @@ ENDMODULE
         "exit 0\n--- stdout\nCell.mod:6:7: EGMGetId\nCell.mod:11:5: EGMReset\n2 calls the simulation does not support\n--- stderr\n"
     );
 }
+
+#[test]
+fn a_backup_s_configuration_and_backinfo_answer_read_cfg_data_and_get_sys_info() {
+    let dir = scratch("run-cfg-data");
+    let module = "MODULE Calib
+  VAR num x;
+  PROC main()
+    ReadCfgData \"/MOC/SINGLE/TRACK\", \"base_frame_pos_x\", x;
+    TPWrite \"x \"\\Num:=x;
+    WriteCfgData \"/MOC/SINGLE/TRACK\", \"base_frame_pos_x\", 2.5;
+    ReadCfgData \"/MOC/SINGLE/TRACK\", \"base_frame_pos_x\", x;
+    TPWrite \"x \"\\Num:=x;
+    TPWrite GetSysInfo(\\SystemName) + \" \" + GetSysInfo(\\SWVersion) + \" \" + GetSysInfo(\\SerialNo) + \" \" + GetSysInfo(\\LanIp);
+    ReadCfgData \"/MOC/SINGLE/BELT\", \"base_frame_pos_x\", x;
+  ENDPROC
+ENDMODULE
+";
+    write(
+        &dir,
+        &[
+            ("Cell/RAPID/TASK1/PROGMOD/Calib.mod", module),
+            (
+                "Cell/BACKINFO/backinfo.txt",
+                ">>SYSTEM_ID:\nCell_7\n\n>>PRODUCTS_ID:\nRobotWare Version: 6.13.02.00\n",
+            ),
+            (
+                "Cell/SYSPAR/MOC.cfg",
+                "MOC:CFG_1.0:6:0::\n#\nSINGLE:\n\n      -name \"TRACK\" -base_frame_pos_x 1.25\n#\nROBOT_SERIAL_NUMBER:\n\n      -name \"rob1\" -robot_serial_number_high_part \"120\" -robot_serial_number_low_part 501234\n",
+            ),
+            (
+                "Cell/SYSPAR/SYS.cfg",
+                "SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n\n      -Name \"T_ROB1\" -Type \"NORMAL\" -MotionTask\n",
+            ),
+        ],
+    );
+    let out = rapid(&dir, &["run", "Cell"]);
+    let shown = show(&out);
+    assert!(
+        shown.starts_with(
+            "exit 1\n--- stdout\nx 1.25\nx 2.5\nCell_7 6.13.02.00 120-501234 VC\n--- stderr\n"
+        ),
+        "{shown}"
+    );
+    assert!(shown.contains("ERR_CFG_NOTFND"), "{shown}");
+    // Only the run's memory changed.
+    let moc = std::fs::read_to_string(dir.join("Cell/SYSPAR/MOC.cfg")).expect("MOC.cfg");
+    assert!(moc.contains("-base_frame_pos_x 1.25"));
+}

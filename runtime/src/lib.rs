@@ -149,6 +149,9 @@ pub struct Config {
     /// The operator's scripted answers, one a line
     /// ([`world::parse_answer`]'s forms), for [`world::World::simulated`].
     pub answers: Vec<String>,
+    /// The controller's configuration (`SYSPAR`) and what it says of
+    /// itself (`BACKINFO`): `ReadCfgData`, `WriteCfgData`, `GetSysInfo`.
+    pub system: world::System,
 }
 
 /// Runs `routine` (a procedure without parameters) of `program` as the

@@ -116,7 +116,8 @@ pub fn sweep(dir: &Path) -> Result<Vec<TaskRun>, String> {
             .iter()
             .map(|t| (t.name.clone(), t.task.key.clone(), t.task.is_backup()))
             .collect();
-        let loaded = Loaded { tasks };
+        let system = found.systems[members[0]].clone();
+        let loaded = Loaded { tasks, system };
         let result = execute(&loaded, &opts, Box::new(|_, _: &str| {}));
         for (name, key, backup) in names {
             let (class, detail) = match &result {

@@ -251,6 +251,7 @@ pub fn build(
         signals: options.sets.clone(),
         sandbox: options.sandbox.clone(),
         trace: options.trace,
+        system: loaded.system.clone(),
         ..Config::default()
     };
     let mut world = World::simulated(&config, output);
@@ -340,6 +341,7 @@ pub fn run_routine(
             entry: entry.to_owned(),
             motion: true,
         }],
+        ..load::Loaded::default()
     };
     let sandbox = Sandbox::new(budget.sandbox)?;
     let options = RunOptions {

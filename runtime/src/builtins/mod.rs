@@ -6,6 +6,7 @@
 //! Anything the catalogue knows and this module does not implement stops
 //! a run with "not supported in simulation: NAME".
 
+pub(crate) mod config;
 pub(crate) mod data;
 pub(crate) mod files;
 pub(crate) mod io;
@@ -147,6 +148,8 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("SocketBind", sockets::socket_bind),
     ("SocketListen", sockets::socket_listen),
     ("SocketAccept", sockets::socket_accept),
+    ("ReadCfgData", config::read_cfg_data),
+    ("WriteCfgData", config::write_cfg_data),
     ("ActUnit", units::act_unit),
     ("DeactUnit", units::deact_unit),
     ("MotionSup", motion::setting),
@@ -185,6 +188,7 @@ const FUNCTIONS: &[(&str, FuncFn)] = &[
     ("SocketGetStatus", sockets::socket_get_status),
     ("RawBytesLen", rawbytes::raw_bytes_len),
     ("IsMechUnitActive", units::is_mech_unit_active),
+    ("GetSysInfo", config::get_sys_info),
     ("DInput", io::input),
     ("DOutput", io::input),
     ("AInput", io::input),

@@ -63,6 +63,8 @@ pub(crate) struct Shared {
     pub sockets: Box<dyn Sockets>,
     /// The mechanical units `DeactUnit` deactivated (folded names).
     pub inactive_units: Vec<String>,
+    /// The configuration (`WriteCfgData` changes it) and identity.
+    pub system: crate::world::System,
     /// FlexPendant applications `UIShow` opened.
     pub ui_instances: u32,
     output: Box<dyn Output>,
@@ -208,6 +210,7 @@ impl Controller {
                 files: world.files,
                 inactive_units: Vec::new(),
                 ui_instances: 0,
+                system: config.system.clone(),
                 open: Default::default(),
                 pendant: world.pendant,
                 sockets: world.sockets,
