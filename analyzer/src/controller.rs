@@ -241,6 +241,7 @@ mod tests {
         let info = ControllerInfo {
             robotware: Some(Version::new(6, 8)),
             options: vec!["arc".into()],
+            ..ControllerInfo::default()
         };
         let sel = info.selection(&ControllerOverride {
             robotware: Some(Version::new(7, 1)),
