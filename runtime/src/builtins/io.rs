@@ -145,6 +145,41 @@ pub(crate) fn alias_io(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     Ok(Done::Next)
 }
 
+/// `GetSignalOrigin(Signal, SignalName)`: `SIGORIG_CFG` for a signal of
+/// the I/O configuration (or one the run takes from its use),
+/// `SIGORIG_ALIAS` for a signal variable `AliasIO` connected, `SIGORIG_NONE`
+/// for one connected to nothing; `SignalName` gets the configured signal's
+/// name (empty for none).
+pub(crate) fn get_signal_origin(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    let v = cx.req(a, "Signal")?;
+    if !crate::machine::is_signal(&v) {
+        return invalid(format!(
+            "GetSignalOrigin: Signal must be a signal, not {}",
+            crate::machine::describe(&v)
+        ));
+    }
+    let name = match v.field("name") {
+        Some(Value::Str(s)) => s.clone(),
+        _ => String::new(),
+    };
+    let configured = matches!(
+        a.place_of("Signal"),
+        Some(crate::machine::Place { root: crate::machine::Root::Global(g), path })
+            if path.is_empty()
+                && cx.m.prog.globals.get(*g as usize).is_some_and(|g| matches!(g.origin, crate::program::Origin::Signal))
+    );
+    let origin = if name.is_empty() {
+        "SIGORIG_NONE"
+    } else if configured {
+        "SIGORIG_CFG"
+    } else {
+        "SIGORIG_ALIAS"
+    };
+    let to = cx.place_arg(a, "SignalName")?;
+    cx.store(&to, Value::Str(name))?;
+    cx.predefined(origin)
+}
+
 /// `AliasIOReset Signal`: the signal variable stands for no signal again.
 pub(crate) fn alias_io_reset(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     let p = cx.place_arg(a, "Signal")?;

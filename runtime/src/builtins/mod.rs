@@ -196,6 +196,7 @@ const FUNCTIONS: &[(&str, FuncFn)] = &[
     ("GInput", io::input),
     ("GOutput", io::input),
     ("TestDI", io::test_di),
+    ("GetSignalOrigin", io::get_signal_origin),
     ("CRobT", motion::c_rob_t),
     ("CPos", motion::c_pos),
     ("CJointT", motion::c_joint_t),
