@@ -313,3 +313,67 @@ ENDMODULE
     let moc = std::fs::read_to_string(dir.join("Cell/SYSPAR/MOC.cfg")).expect("MOC.cfg");
     assert!(moc.contains("-base_frame_pos_x 1.25"));
 }
+
+const UDP_SERVER: &str = "MODULE Udp
+  VAR socketdev udp;
+  VAR string msg;
+  VAR string peer;
+  VAR num peer_port;
+  VAR num n;
+  PROC main()
+    SocketCreate udp \\UDP;
+    SocketBind udp, \"192.168.125.1\", 6510;
+    TPWrite \"bound \"\\Bool:=SocketGetStatus(udp) = SOCKET_BOUND;
+    SocketReceiveFrom udp \\Str:=msg \\NoRecBytes:=n, peer, peer_port \\Time:=20;
+    TPWrite \"got \" + msg + \" (\" + NumToStr(n, 0) + \" bytes) from \" + peer;
+    SocketSendTo udp, peer, peer_port \\Str:=\"ack \" + msg;
+    SocketReceiveFrom udp \\Str:=msg, peer, peer_port \\Time:=1;
+  ERROR
+    TPWrite \"timed out \"\\Bool:=ERRNO = ERR_SOCK_TIMEOUT;
+    SocketClose udp;
+  ENDPROC
+ENDMODULE
+";
+
+#[test]
+fn a_client_in_the_harness_exchanges_datagrams_with_a_rapid_udp_socket() {
+    let dir = scratch("run-socket-udp");
+    write(&dir, &[("Udp.mod", UDP_SERVER)]);
+    let port = {
+        let s = std::net::UdpSocket::bind("127.0.0.1:0").expect("a port");
+        s.local_addr().expect("an address").port()
+    };
+    let map = format!("192.168.125.1:6510=127.0.0.1:{port}");
+    let child = std::process::Command::new(env!("CARGO_BIN_EXE_rapid"))
+        .args(["run", "Udp.mod", "--socket-map", &map])
+        .current_dir(&dir)
+        .stdin(std::process::Stdio::null())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("rapid runs");
+    let client = std::net::UdpSocket::bind("127.0.0.1:0").expect("a client socket");
+    client
+        .set_read_timeout(Some(std::time::Duration::from_millis(200)))
+        .expect("a timeout");
+    let started = std::time::Instant::now();
+    let mut reply = [0u8; 64];
+    // Datagrams sent before the RAPID socket is bound are lost: send until
+    // the answer comes.
+    let n = loop {
+        client.send_to(b"hello", ("127.0.0.1", port)).expect("sent");
+        match client.recv_from(&mut reply) {
+            Ok((n, _)) => break n,
+            Err(e) if started.elapsed().as_secs() < 20 => {
+                let _ = e;
+            }
+            Err(e) => panic!("no answer from the RAPID socket: {e}"),
+        }
+    };
+    assert_eq!(&reply[..n], b"ack hello");
+    let out = child.wait_with_output().expect("rapid ends");
+    assert_eq!(
+        show(&out),
+        "exit 0\n--- stdout\nbound TRUE\ngot hello (5 bytes) from 127.0.0.1\ntimed out TRUE\n--- stderr\n"
+    );
+}

@@ -144,6 +144,8 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("SocketConnect", sockets::socket_connect),
     ("SocketSend", sockets::socket_send),
     ("SocketReceive", sockets::socket_receive),
+    ("SocketSendTo", sockets::socket_send_to),
+    ("SocketReceiveFrom", sockets::socket_receive_from),
     ("SocketClose", sockets::socket_close),
     ("SocketBind", sockets::socket_bind),
     ("SocketListen", sockets::socket_listen),
