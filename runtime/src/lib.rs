@@ -72,8 +72,8 @@ pub use controller::{Controller, Event, Resume, TaskKind, TaskSpec};
 pub use debug::{DataValue, Variable};
 pub use machine::{Machine, Outcome, StackFrame, Status, Stop};
 pub use program::{
-    LoadCheck, LoadError, Location, Program, RoutineSummary, SYSTEM_ERRNO_BASE, SignalKind,
-    TakenSignal, load_check, load_errors,
+    DECLARED_NOWHERE, LoadCheck, LoadError, Location, Program, RoutineSummary, SYSTEM_ERRNO_BASE,
+    SignalKind, TakenSignal, load_check, load_errors,
 };
 
 /// Where a line of output comes from.

@@ -644,9 +644,7 @@ impl Machine {
                 }
                 Op::Fail(i) => {
                     return match code.failures.get(*i as usize) {
-                        Some(Failure::Unknown(name)) => invalid(format!(
-                            "`{name}` is not declared in the task (nor a built-in the catalogue knows)"
-                        )),
+                        Some(Failure::Unknown(name)) => invalid(self.prog.undeclared(name)),
                         Some(Failure::Unsupported(name)) => {
                             fault(FaultKind::Unsupported(name.clone()))
                         }
