@@ -74,6 +74,9 @@ pub enum CfgValue {
     Flag(bool),
 }
 
+/// Where an instance is kept: the file, the type in it, the instance.
+type At = (usize, usize, usize);
+
 /// An instance path taken apart.
 struct Path<'a> {
     domain: &'a str,
@@ -122,7 +125,7 @@ impl System {
 
     /// The instances `path` selects, in order, each with the file and
     /// index it is kept at.
-    fn select(&self, path: &str) -> Result<Vec<(usize, usize, usize)>, CfgError> {
+    fn select(&self, path: &str) -> Result<Vec<At>, CfgError> {
         let p = parse_path(path)?;
         let mut found = Vec::new();
         let mut domain_seen = false;
@@ -166,7 +169,7 @@ impl System {
         Ok(found)
     }
 
-    fn instance(&self, at: (usize, usize, usize)) -> Option<&Instance> {
+    fn instance(&self, at: At) -> Option<&Instance> {
         self.domains
             .get(at.0)?
             .1
@@ -308,7 +311,7 @@ fn matches_value(inst: &Instance, attr: &str, value: &str) -> bool {
 
 /// Is `attribute` a flag in some instance of the type at `at` (so that an
 /// instance without it has it off)?
-fn is_flag_of_type(s: &System, at: (usize, usize, usize), attribute: &str) -> bool {
+fn is_flag_of_type(s: &System, at: At, attribute: &str) -> bool {
     s.domains
         .get(at.0)
         .and_then(|d| d.1.types.get(at.1))
@@ -320,11 +323,7 @@ fn is_flag_of_type(s: &System, at: (usize, usize, usize), attribute: &str) -> bo
 }
 
 /// The instance `list_no` picks of `found`, and the next `\ListNo`.
-fn pick(
-    found: &[(usize, usize, usize)],
-    path: &str,
-    list_no: Option<i64>,
-) -> Result<((usize, usize, usize), Option<i64>), CfgError> {
+fn pick(found: &[At], path: &str, list_no: Option<i64>) -> Result<(At, Option<i64>), CfgError> {
     let n = list_no.unwrap_or(0);
     if n < 0 || (list_no.is_some() && n as usize >= found.len() && !found.is_empty()) {
         return Err(CfgError {
