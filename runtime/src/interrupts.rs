@@ -1,6 +1,7 @@
 //! A task's interrupts: interrupt numbers connected to trap routines
-//! (`CONNECT`), timers (`ITimer`), signal watches (`ISignalDI`...), and
-//! the interrupts that occurred and wait for their trap routine.
+//! (`CONNECT`), timers (`ITimer`), signal watches (`ISignalDI`...),
+//! persistent watches (`IPers`), and the interrupts that occurred and wait
+//! for their trap routine.
 
 use std::collections::{HashMap, HashSet, VecDeque};
 
@@ -15,6 +16,15 @@ pub(crate) struct Interrupts {
     pending: VecDeque<i32>,
     pub disabled: bool,
     sleeping: HashSet<i32>,
+    /// `IPers`: the persistent watched and its value when last seen.
+    pub pers: Vec<PersWatch>,
+}
+
+pub(crate) struct PersWatch {
+    pub id: i32,
+    pub place: crate::machine::Place,
+    pub last: rapid_evaluator::Value,
+    pub single: bool,
 }
 
 struct Timer {
@@ -70,6 +80,7 @@ impl Interrupts {
         self.traps.remove(&id);
         self.timers.retain(|t| t.id != id);
         self.watches.retain(|w| w.id != id);
+        self.pers.retain(|w| w.id != id);
         self.pending.retain(|p| *p != id);
     }
 
@@ -78,6 +89,42 @@ impl Interrupts {
             self.sleeping.insert(id);
         } else {
             self.sleeping.remove(&id);
+        }
+    }
+
+    /// `IPers`: an interrupt each time the persistent at `place` changes
+    /// from `now` (its value as the watch starts).
+    pub(crate) fn add_pers(
+        &mut self,
+        id: i32,
+        place: crate::machine::Place,
+        now: rapid_evaluator::Value,
+        single: bool,
+    ) {
+        self.pers.retain(|w| w.id != id);
+        self.pers.push(PersWatch {
+            id,
+            place,
+            last: now,
+            single,
+        });
+    }
+
+    /// The persistents watched changed: each changed value (`changed`, by
+    /// watch) raises its interrupt.
+    pub(crate) fn pers_changed(&mut self, changed: &[(usize, rapid_evaluator::Value)]) {
+        let mut done = Vec::new();
+        for (i, v) in changed {
+            if let Some(w) = self.pers.get_mut(*i) {
+                w.last = v.clone();
+                done.push((w.id, w.single));
+            }
+        }
+        for (id, single) in done {
+            self.raise(id);
+            if single {
+                self.pers.retain(|w| w.id != id);
+            }
         }
     }
 

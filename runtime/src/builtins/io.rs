@@ -297,6 +297,18 @@ pub(crate) fn i_signal_any(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     Ok(Done::Next)
 }
 
+/// `IPers [\Single] | [\SingleSafe] Name, Interrupt`: an interrupt each
+/// time the persistent `Name` changes value (any task's write, as the
+/// tasks share it), seen between statements.
+pub(crate) fn i_pers(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let place = cx.place_arg(a, "Name")?;
+    let now = cx.m.load(cx.sh, &place)?;
+    let id = interrupt_number(cx, a)?;
+    let single = a.given("Single") || a.given("SingleSafe");
+    cx.m.interrupts.add_pers(id, place, now, single);
+    Ok(Done::Next)
+}
+
 /// `ITimer [\Single] Time, Interrupt`.
 pub(crate) fn i_timer(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     let t = cx.num(a, "Time")?;

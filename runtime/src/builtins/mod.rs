@@ -93,6 +93,7 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("ISignalGI", io::i_signal_any),
     ("ISignalGO", io::i_signal_any),
     ("ITimer", io::i_timer),
+    ("IPers", io::i_pers),
     ("IDelete", io::i_delete),
     ("IDisable", io::i_disable),
     ("IEnable", io::i_enable),

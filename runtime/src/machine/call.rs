@@ -278,6 +278,19 @@ impl Machine {
                 self.interrupts.signal_changed(&name, value);
             }
         }
+        if !self.interrupts.pers.is_empty() {
+            let changed: Vec<(usize, Value)> = self
+                .interrupts
+                .pers
+                .iter()
+                .enumerate()
+                .filter_map(|(i, w)| {
+                    let now = self.get(sh, &w.place)?;
+                    (*now != w.last).then(|| (i, now.clone()))
+                })
+                .collect();
+            self.interrupts.pers_changed(&changed);
+        }
         self.interrupts.has_pending() && !self.interrupts.disabled && !self.in_trap()
     }
 

@@ -118,8 +118,9 @@ impl Machine {
                                     sh.limits.max_steps
                                 )));
                             }
-                            let may_interrupt =
-                                self.events_seen < sh.events.len() || self.interrupts.has_pending();
+                            let may_interrupt = self.events_seen < sh.events.len()
+                                || self.interrupts.has_pending()
+                                || !self.interrupts.pers.is_empty();
                             if may_interrupt && self.interrupt_due(sh) {
                                 pc -= 1;
                                 save!();
