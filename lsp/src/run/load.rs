@@ -74,7 +74,8 @@ pub fn tasks_in(env: &dyn Environment, paths: &[PathBuf]) -> Result<Found, Strin
 /// The controller of the task `key` for `ReadCfgData` and `GetSysInfo`:
 /// the configuration files that apply to it (a backup's `SYSPAR`), read by
 /// the analyzer's one reader, and what `BACKINFO` says (the system's name,
-/// the RobotWare version).
+/// the RobotWare version as written there, else the version `rapid.toml`
+/// sets).
 pub fn system_of(workspace: &rapid_analyzer::workspace::Workspace, key: &str) -> System {
     let domains = workspace
         .config_files_of_task(key)
@@ -82,14 +83,15 @@ pub fn system_of(workspace: &rapid_analyzer::workspace::Workspace, key: &str) ->
         .map(|(path, file)| (System::domain_of(&path, &file), (*file).clone()))
         .collect();
     let info = workspace.controller_of_task(key);
+    let version = info
+        .robotware_text
+        .clone()
+        .or_else(|| info.robotware.map(|v| v.to_string()));
     System {
         domains,
         info: SysInfo {
-            sw_version_name: info
-                .robotware_text
-                .as_ref()
-                .map(|v| format!("RobotWare {v}")),
-            sw_version: info.robotware_text,
+            sw_version_name: version.as_ref().map(|v| format!("RobotWare {v}")),
+            sw_version: version,
             system_name: info.system_name,
             ..SysInfo::default()
         },
