@@ -110,6 +110,18 @@ ENDMODULE
     insta::assert_snapshot!(show(&out));
 }
 
+/// `rapid ARGS` in `dir`, running while the test talks to it.
+fn run_in_background(dir: &std::path::Path, args: &[&str]) -> std::process::Child {
+    std::process::Command::new(env!("CARGO_BIN_EXE_rapid"))
+        .args(args)
+        .current_dir(dir)
+        .stdin(std::process::Stdio::null())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("rapid runs")
+}
+
 /// A free port of the loopback interface.
 fn free_port() -> u16 {
     let l = std::net::TcpListener::bind("127.0.0.1:0").expect("a port");
@@ -153,14 +165,7 @@ fn a_client_in_the_harness_talks_to_a_rapid_server() {
     write(&dir, &[("Server.mod", SERVER)]);
     let port = free_port();
     let map = format!("192.168.125.1:1025=127.0.0.1:{port}");
-    let child = std::process::Command::new(env!("CARGO_BIN_EXE_rapid"))
-        .args(["run", "Server.mod", "--socket-map", &map])
-        .current_dir(&dir)
-        .stdin(std::process::Stdio::null())
-        .stdout(std::process::Stdio::piped())
-        .stderr(std::process::Stdio::piped())
-        .spawn()
-        .expect("rapid runs");
+    let child = run_in_background(&dir, &["run", "Server.mod", "--socket-map", &map]);
     let started = std::time::Instant::now();
     let mut stream = loop {
         match std::net::TcpStream::connect(("127.0.0.1", port)) {
@@ -344,14 +349,7 @@ fn a_client_in_the_harness_exchanges_datagrams_with_a_rapid_udp_socket() {
         s.local_addr().expect("an address").port()
     };
     let map = format!("192.168.125.1:6510=127.0.0.1:{port}");
-    let child = std::process::Command::new(env!("CARGO_BIN_EXE_rapid"))
-        .args(["run", "Udp.mod", "--socket-map", &map])
-        .current_dir(&dir)
-        .stdin(std::process::Stdio::null())
-        .stdout(std::process::Stdio::piped())
-        .stderr(std::process::Stdio::piped())
-        .spawn()
-        .expect("rapid runs");
+    let child = run_in_background(&dir, &["run", "Udp.mod", "--socket-map", &map]);
     let client = std::net::UdpSocket::bind("127.0.0.1:0").expect("a client socket");
     client
         .set_read_timeout(Some(std::time::Duration::from_millis(200)))
