@@ -309,6 +309,74 @@ pub(crate) fn i_pers(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     Ok(Done::Next)
 }
 
+/// `IError ErrorDomain [\ErrorId] ErrorType, Interrupt`: an interrupt at
+/// each entry of the controller's event log of that domain (`COMMON_ERR`:
+/// any), number and type (`TYPE_ALL`: any). The simulated event log holds
+/// what `ErrWrite` writes.
+pub(crate) fn i_error(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let domain = cx.num(a, "ErrorDomain")?.max(0.0) as u32;
+    let number = cx.opt_num(a, "ErrorId")?.map(|n| n.max(0.0) as u32);
+    let kind = cx.num(a, "ErrorType")?.max(0.0) as u32;
+    let id = interrupt_number(cx, a)?;
+    cx.m.interrupts.add_error_watch(id, domain, number, kind);
+    Ok(Done::Next)
+}
+
+/// `GetTrapData TrapEvent`: in the trap routine of an `IError`
+/// interrupt, the event log entry it was raised for.
+pub(crate) fn get_trap_data(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let id =
+        cx.m.prog
+            .intno
+            .and_then(|g| cx.m.globals.get(g as usize))
+            .and_then(Value::as_f64)
+            .unwrap_or(0.0) as i32;
+    let Some(entry) = cx.m.interrupts.error_entry(id).filter(|_| cx.m.in_trap()) else {
+        return invalid("GetTrapData: not in the trap routine of an IError interrupt");
+    };
+    let p = cx.place_arg(a, "TrapEvent")?;
+    cx.store(
+        &p,
+        Value::Record {
+            ty: "trapdata".to_owned(),
+            fields: vec![("entry".to_owned(), Value::Num(entry as f32))],
+        },
+    )?;
+    Ok(Done::Next)
+}
+
+/// `ReadErrData TrapEvent, ErrorDomain, ErrorId, ErrorType [\Title]
+/// [\Str1] ... [\Str5]`: the event log entry `GetTrapData` got.
+pub(crate) fn read_err_data(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let v = cx.req(a, "TrapEvent")?;
+    let entry = v
+        .field("entry")
+        .and_then(Value::as_f64)
+        .and_then(|i| cx.sh.event_log.get(i as usize))
+        .cloned();
+    let Some(e) = entry else {
+        return invalid("ReadErrData: the trapdata holds no error (GetTrapData first)");
+    };
+    for (param, value) in [
+        ("ErrorDomain", e.domain),
+        ("ErrorId", e.number),
+        ("ErrorType", e.kind),
+    ] {
+        let p = cx.place_arg(a, param)?;
+        cx.store(&p, Value::Num(value as f32))?;
+    }
+    if let Some(p) = cx.opt_place(a, "Title")? {
+        cx.store(&p, Value::Str(e.title.clone()))?;
+    }
+    for (i, param) in ["Str1", "Str2", "Str3", "Str4", "Str5"].iter().enumerate() {
+        if let Some(p) = cx.opt_place(a, param)? {
+            let s = e.lines.get(i).cloned().unwrap_or_default();
+            cx.store(&p, Value::Str(s))?;
+        }
+    }
+    Ok(Done::Next)
+}
+
 /// `ITimer [\Single] Time, Interrupt`.
 pub(crate) fn i_timer(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     let t = cx.num(a, "Time")?;

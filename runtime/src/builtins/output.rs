@@ -57,14 +57,27 @@ pub(crate) fn err_write(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
         80001
     };
     let header = cx.string(a, "Header")?;
-    let mut line = format!("{number} {header}: {}", cx.string(a, "Reason")?);
+    let reason = cx.string(a, "Reason")?;
+    let mut line = format!("{number} {header}: {reason}");
+    let mut lines = vec![reason];
     for p in ["RL2", "RL3", "RL4"] {
         if let Some(s) = cx.opt_string(a, p)? {
             line.push(' ');
             line.push_str(&s);
+            lines.push(s);
         }
     }
     cx.print(Stream::EventLog, &line);
+    // Event numbers are the domain, then four digits: 80001 is entry 1 of
+    // USER_DEF_ERR (8); an error is TYPE_ERR (3), a warning TYPE_WARN (2),
+    // information TYPE_STATE (1).
+    cx.sh.event_log.push(crate::interrupts::LogEntry {
+        domain: number / 10_000,
+        number: number % 10_000,
+        kind: 4 - number % 10_000,
+        title: header,
+        lines,
+    });
     Ok(Done::Next)
 }
 

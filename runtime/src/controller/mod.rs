@@ -65,6 +65,8 @@ pub(crate) struct Shared {
     pub inactive_units: Vec<String>,
     /// The configuration (`WriteCfgData` changes it) and identity.
     pub system: crate::world::System,
+    /// The controller's event log (`ErrWrite`), for `IError`.
+    pub event_log: Vec<crate::interrupts::LogEntry>,
     /// FlexPendant applications `UIShow` opened.
     pub ui_instances: u32,
     output: Box<dyn Output>,
@@ -210,6 +212,7 @@ impl Controller {
                 files: world.files,
                 inactive_units: Vec::new(),
                 ui_instances: 0,
+                event_log: Vec::new(),
                 system: config.system.clone(),
                 open: Default::default(),
                 pendant: world.pendant,

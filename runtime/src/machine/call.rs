@@ -278,6 +278,12 @@ impl Machine {
                 self.interrupts.signal_changed(&name, value);
             }
         }
+        while self.log_seen < sh.event_log.len() {
+            if let Some(e) = sh.event_log.get(self.log_seen) {
+                self.interrupts.logged(self.log_seen, e);
+            }
+            self.log_seen += 1;
+        }
         if !self.interrupts.pers.is_empty() {
             let changed: Vec<(usize, Value)> = self
                 .interrupts

@@ -119,6 +119,7 @@ impl Machine {
                                 )));
                             }
                             let may_interrupt = self.events_seen < sh.events.len()
+                                || self.log_seen < sh.event_log.len()
                                 || self.interrupts.has_pending()
                                 || !self.interrupts.pers.is_empty();
                             if may_interrupt && self.interrupt_due(sh) {
