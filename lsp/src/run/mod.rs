@@ -75,7 +75,8 @@ pub struct RunArgs {
     pub sandbox: Option<PathBuf>,
     /// The operator's answers to the pendant's questions (`TPReadFK`,
     /// `UIMessageBox`...), one a line, in order: a function key's number
-    /// or label, a number, a button or list item, text; `@SECONDS VALUE`
+    /// or label, a number, a button or list item (`UIListView` with
+    /// `\Result` and buttons: the item, then the button), text; `@SECONDS VALUE`
     /// answers after that many simulated seconds, `-` never answers; `#`
     /// starts a comment.
     #[arg(long, value_name = "FILE")]
