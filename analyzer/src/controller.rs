@@ -1,5 +1,6 @@
 //! What a controller backup says about its controller: the RobotWare
-//! version and the installed options, from `BACKINFO/backinfo.txt` and
+//! version, the installed options and the system's name, from
+//! `BACKINFO/backinfo.txt` (`>>SYSTEM_ID:` names the system) and
 //! `BACKINFO/system.xml`, and the catalogue view that follows.
 //!
 //! `backinfo.txt` is sections of lines, each headed `>>NAME:`; the line after
@@ -19,6 +20,10 @@ pub struct ControllerInfo {
     /// Package ids ([`crate::catalogue::Package::id`]) of the installed
     /// options the catalogue knows.
     pub options: Vec<String>,
+    /// The system's name (`backinfo.txt`'s `>>SYSTEM_ID:`).
+    pub system_name: Option<String>,
+    /// The RobotWare version as the backup writes it (`6.08.01.00`).
+    pub robotware_text: Option<String>,
 }
 
 impl ControllerInfo {
@@ -26,6 +31,12 @@ impl ControllerInfo {
     pub fn merge(&mut self, other: &ControllerInfo) {
         if self.robotware.is_none() {
             self.robotware = other.robotware;
+        }
+        if self.system_name.is_none() {
+            self.system_name.clone_from(&other.system_name);
+        }
+        if self.robotware_text.is_none() {
+            self.robotware_text.clone_from(&other.robotware_text);
         }
         for o in &other.options {
             if !self.options.contains(o) {
@@ -91,8 +102,14 @@ pub fn parse_backinfo(text: &str, cat: &Catalogue) -> ControllerInfo {
             continue;
         }
         let products = section.contains("PRODUCT") || section.contains("OPTION");
+        if section == "SYSTEM_ID" && info.system_name.is_none() {
+            info.system_name = Some(line.to_owned());
+        }
         if info.robotware.is_none() {
             info.robotware = robotware_in(line);
+            if info.robotware.is_some() {
+                info.robotware_text = robotware_token(line);
+            }
         }
         // System names, ids and task lists can hold any word: only the
         // product and option sections name options.
@@ -135,6 +152,11 @@ fn add_options(info: &mut ControllerInfo, text: &str, cat: &Catalogue) {
 /// The first RobotWare version in a line: `RobotWare Version: 6.08.01.00`,
 /// `RobotWare_6.13.0135`, `RW 7.10`.
 fn robotware_in(line: &str) -> Option<Version> {
+    Version::parse(&robotware_token(line)?).ok()
+}
+
+/// The version of [`robotware_in`] as written (`6.08.01.00`).
+fn robotware_token(line: &str) -> Option<String> {
     let lower = line.to_ascii_lowercase();
     let start = match lower.find("robotware") {
         Some(i) => i + "robotware".len(),
@@ -147,7 +169,7 @@ fn robotware_in(line: &str) -> Option<Version> {
         .chars()
         .take_while(|c| c.is_ascii_digit() || *c == '.')
         .collect();
-    Version::parse(&token).ok()
+    Some(token.trim_end_matches('.').to_owned())
 }
 
 /// Attribute values and element texts of an XML document, without a parser
@@ -184,9 +206,17 @@ mod tests {
         let text = ">>SYSTEM_ID:\n6700-123456\n\n>>PRODUCTS_ID:\nRobotWare Version: 6.08.01.00\nArc 6.08.0000\n\n>>OPTIONS:\n689-1 Externally Guided Motion (EGM)\n608-1 World Zones\n\n>>TASK1: (T_ROB1,,)\nSYSMOD/user.sys\n";
         let info = parse_backinfo(text, crate::catalogue::base());
         assert_eq!(info.robotware, Some(Version::new(6, 8)));
+        assert_eq!(info.robotware_text.as_deref(), Some("6.08.01.00"));
+        assert_eq!(info.system_name.as_deref(), Some("6700-123456"));
         assert_eq!(info.options, vec!["arc", "egm", "worldzones"]);
         let none = parse_backinfo(">>SYSTEM_ID:\nArc cell 7\n", crate::catalogue::base());
-        assert_eq!(none, ControllerInfo::default());
+        assert_eq!(
+            none,
+            ControllerInfo {
+                system_name: Some("Arc cell 7".to_owned()),
+                ..ControllerInfo::default()
+            }
+        );
         // RobotWare 6's PC Interface brings Socket Messaging.
         let pc = parse_backinfo(">>OPTIONS:\n616-1 PC Interface\n", crate::catalogue::base());
         assert_eq!(pc.options, vec!["pcinterface", "socket"]);
@@ -211,6 +241,7 @@ mod tests {
         let info = ControllerInfo {
             robotware: Some(Version::new(6, 8)),
             options: vec!["arc".into()],
+            ..ControllerInfo::default()
         };
         let sel = info.selection(&ControllerOverride {
             robotware: Some(Version::new(7, 1)),

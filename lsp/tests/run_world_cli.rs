@@ -44,6 +44,28 @@ fn the_operator_answers_from_a_file_then_from_the_options() {
 }
 
 #[test]
+fn what_the_pendant_shows_is_traced_on_stderr_apart_from_the_lines() {
+    let dir = scratch("run-pendant-trace");
+    let module = "MODULE Cell
+  PROC main()
+    TPErase;
+    TPWrite \"ready\";
+    TPShow TP_LATEST;
+    UIMsgWrite \"Cell\", \"Loading\";
+  ENDPROC
+ENDMODULE
+";
+    write(&dir, &[("Cell.mod", module)]);
+    let out = rapid(&dir, &["run", "Cell.mod"]);
+    assert_eq!(
+        show(&out),
+        "exit 0\n--- stdout\nready\nCell: Loading\n--- stderr\n\
+         [TPErase at Cell.mod:3] the operator window is cleared\n\
+         [TPShow at Cell.mod:5] the pendant shows the window shown before\n"
+    );
+}
+
+#[test]
 fn in_a_pipe_without_answers_the_run_stops_waiting_for_the_operator() {
     let dir = scratch("run-no-operator");
     write(&dir, &[("Cell.mod", DIALOG)]);
@@ -86,6 +108,18 @@ ENDMODULE
     );
     let out = rapid(&dir, &["run", "Gripper.mod", "--set", "part_present=1@0.5"]);
     insta::assert_snapshot!(show(&out));
+}
+
+/// `rapid ARGS` in `dir`, running while the test talks to it.
+fn run_in_background(dir: &std::path::Path, args: &[&str]) -> std::process::Child {
+    std::process::Command::new(env!("CARGO_BIN_EXE_rapid"))
+        .args(args)
+        .current_dir(dir)
+        .stdin(std::process::Stdio::null())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("rapid runs")
 }
 
 /// A free port of the loopback interface.
@@ -131,14 +165,7 @@ fn a_client_in_the_harness_talks_to_a_rapid_server() {
     write(&dir, &[("Server.mod", SERVER)]);
     let port = free_port();
     let map = format!("192.168.125.1:1025=127.0.0.1:{port}");
-    let child = std::process::Command::new(env!("CARGO_BIN_EXE_rapid"))
-        .args(["run", "Server.mod", "--socket-map", &map])
-        .current_dir(&dir)
-        .stdin(std::process::Stdio::null())
-        .stdout(std::process::Stdio::piped())
-        .stderr(std::process::Stdio::piped())
-        .spawn()
-        .expect("rapid runs");
+    let child = run_in_background(&dir, &["run", "Server.mod", "--socket-map", &map]);
     let started = std::time::Instant::now();
     let mut stream = loop {
         match std::net::TcpStream::connect(("127.0.0.1", port)) {
@@ -241,5 +268,110 @@ ENDMODULE
     assert_eq!(
         show(&out),
         "exit 0\n--- stdout\nCell.mod:6:7: EGMGetId\nCell.mod:11:5: EGMReset\n2 calls the simulation does not support\n--- stderr\n"
+    );
+}
+
+#[test]
+fn a_backup_s_configuration_and_backinfo_answer_read_cfg_data_and_get_sys_info() {
+    let dir = scratch("run-cfg-data");
+    let module = "MODULE Calib
+  VAR num x;
+  PROC main()
+    ReadCfgData \"/MOC/SINGLE/TRACK\", \"base_frame_pos_x\", x;
+    TPWrite \"x \"\\Num:=x;
+    WriteCfgData \"/MOC/SINGLE/TRACK\", \"base_frame_pos_x\", 2.5;
+    ReadCfgData \"/MOC/SINGLE/TRACK\", \"base_frame_pos_x\", x;
+    TPWrite \"x \"\\Num:=x;
+    TPWrite GetSysInfo(\\SystemName) + \" \" + GetSysInfo(\\SWVersion) + \" \" + GetSysInfo(\\SerialNo) + \" \" + GetSysInfo(\\LanIp);
+    ReadCfgData \"/MOC/SINGLE/BELT\", \"base_frame_pos_x\", x;
+  ENDPROC
+ENDMODULE
+";
+    write(
+        &dir,
+        &[
+            ("Cell/RAPID/TASK1/PROGMOD/Calib.mod", module),
+            (
+                "Cell/BACKINFO/backinfo.txt",
+                ">>SYSTEM_ID:\nCell_7\n\n>>PRODUCTS_ID:\nRobotWare Version: 6.13.02.00\n",
+            ),
+            (
+                "Cell/SYSPAR/MOC.cfg",
+                "MOC:CFG_1.0:6:0::\n#\nSINGLE:\n\n      -name \"TRACK\" -base_frame_pos_x 1.25\n#\nROBOT_SERIAL_NUMBER:\n\n      -name \"rob1\" -robot_serial_number_high_part \"120\" -robot_serial_number_low_part 501234\n",
+            ),
+            (
+                "Cell/SYSPAR/SYS.cfg",
+                "SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n\n      -Name \"T_ROB1\" -Type \"NORMAL\" -MotionTask\n",
+            ),
+        ],
+    );
+    let out = rapid(&dir, &["run", "Cell"]);
+    let shown = show(&out);
+    assert!(
+        shown.starts_with(
+            "exit 1\n--- stdout\nx 1.25\nx 2.5\nCell_7 6.13.02.00 120-501234 VC\n--- stderr\n"
+        ),
+        "{shown}"
+    );
+    assert!(shown.contains("ERR_CFG_NOTFND"), "{shown}");
+    // Only the run's memory changed.
+    let moc = std::fs::read_to_string(dir.join("Cell/SYSPAR/MOC.cfg")).expect("MOC.cfg");
+    assert!(moc.contains("-base_frame_pos_x 1.25"));
+}
+
+const UDP_SERVER: &str = "MODULE Udp
+  VAR socketdev udp;
+  VAR string msg;
+  VAR string peer;
+  VAR num peer_port;
+  VAR num n;
+  PROC main()
+    SocketCreate udp \\UDP;
+    SocketBind udp, \"192.168.125.1\", 6510;
+    TPWrite \"bound \"\\Bool:=SocketGetStatus(udp) = SOCKET_BOUND;
+    SocketReceiveFrom udp \\Str:=msg \\NoRecBytes:=n, peer, peer_port \\Time:=20;
+    TPWrite \"got \" + msg + \" (\" + NumToStr(n, 0) + \" bytes) from \" + peer;
+    SocketSendTo udp, peer, peer_port \\Str:=\"ack \" + msg;
+    SocketReceiveFrom udp \\Str:=msg, peer, peer_port \\Time:=1;
+  ERROR
+    TPWrite \"timed out \"\\Bool:=ERRNO = ERR_SOCK_TIMEOUT;
+    SocketClose udp;
+  ENDPROC
+ENDMODULE
+";
+
+#[test]
+fn a_client_in_the_harness_exchanges_datagrams_with_a_rapid_udp_socket() {
+    let dir = scratch("run-socket-udp");
+    write(&dir, &[("Udp.mod", UDP_SERVER)]);
+    let port = {
+        let s = std::net::UdpSocket::bind("127.0.0.1:0").expect("a port");
+        s.local_addr().expect("an address").port()
+    };
+    let map = format!("192.168.125.1:6510=127.0.0.1:{port}");
+    let child = run_in_background(&dir, &["run", "Udp.mod", "--socket-map", &map]);
+    let client = std::net::UdpSocket::bind("127.0.0.1:0").expect("a client socket");
+    client
+        .set_read_timeout(Some(std::time::Duration::from_millis(200)))
+        .expect("a timeout");
+    let started = std::time::Instant::now();
+    let mut reply = [0u8; 64];
+    // Datagrams sent before the RAPID socket is bound are lost: send until
+    // the answer comes.
+    let n = loop {
+        client.send_to(b"hello", ("127.0.0.1", port)).expect("sent");
+        match client.recv_from(&mut reply) {
+            Ok((n, _)) => break n,
+            Err(e) if started.elapsed().as_secs() < 20 => {
+                let _ = e;
+            }
+            Err(e) => panic!("no answer from the RAPID socket: {e}"),
+        }
+    };
+    assert_eq!(&reply[..n], b"ack hello");
+    let out = child.wait_with_output().expect("rapid ends");
+    assert_eq!(
+        show(&out),
+        "exit 0\n--- stdout\nbound TRUE\ngot hello (5 bytes) from 127.0.0.1\ntimed out TRUE\n--- stderr\n"
     );
 }

@@ -1,6 +1,8 @@
 //! A task's interrupts: interrupt numbers connected to trap routines
-//! (`CONNECT`), timers (`ITimer`), signal watches (`ISignalDI`...), and
-//! the interrupts that occurred and wait for their trap routine.
+//! (`CONNECT`), timers (`ITimer`), signal watches (`ISignalDI`...),
+//! persistent watches (`IPers`), error watches (`IError`, on the entries
+//! of the controller's event log), and the interrupts that occurred and
+//! wait for their trap routine.
 
 use std::collections::{HashMap, HashSet, VecDeque};
 
@@ -15,6 +17,40 @@ pub(crate) struct Interrupts {
     pending: VecDeque<i32>,
     pub disabled: bool,
     sleeping: HashSet<i32>,
+    /// `IPers`: the persistent watched and its value when last seen.
+    pub pers: Vec<PersWatch>,
+    errors: Vec<ErrorWatch>,
+    /// The event log entry each `IError` interrupt was raised for (its
+    /// index in [`crate::controller::Shared::event_log`]).
+    error_entries: HashMap<i32, usize>,
+}
+
+/// An entry of the controller's event log: its domain (`USER_DEF_ERR`,
+/// 8, for `ErrWrite`), number within the domain, type (`TYPE_ERR` 3,
+/// `TYPE_WARN` 2, `TYPE_STATE` 1), title and text lines.
+#[derive(Clone, Debug)]
+pub(crate) struct LogEntry {
+    pub domain: u32,
+    pub number: u32,
+    pub kind: u32,
+    pub title: String,
+    pub lines: Vec<String>,
+}
+
+/// `IError ErrorDomain [\ErrorId] ErrorType`: `COMMON_ERR` (0) is every
+/// domain, `TYPE_ALL` (0) every type.
+struct ErrorWatch {
+    id: i32,
+    domain: u32,
+    number: Option<u32>,
+    kind: u32,
+}
+
+pub(crate) struct PersWatch {
+    pub id: i32,
+    pub place: crate::machine::Place,
+    pub last: rapid_evaluator::Value,
+    pub single: bool,
 }
 
 struct Timer {
@@ -70,7 +106,44 @@ impl Interrupts {
         self.traps.remove(&id);
         self.timers.retain(|t| t.id != id);
         self.watches.retain(|w| w.id != id);
+        self.pers.retain(|w| w.id != id);
+        self.errors.retain(|w| w.id != id);
         self.pending.retain(|p| *p != id);
+    }
+
+    /// `IError`: an interrupt at each event log entry of `domain` (0: any),
+    /// `number` (if given) and `kind` (0: any).
+    pub(crate) fn add_error_watch(&mut self, id: i32, domain: u32, number: Option<u32>, kind: u32) {
+        self.errors.retain(|w| w.id != id);
+        self.errors.push(ErrorWatch {
+            id,
+            domain,
+            number,
+            kind,
+        });
+    }
+
+    /// The event log got entry `index`: the error watches it triggers.
+    pub(crate) fn logged(&mut self, index: usize, e: &LogEntry) {
+        let fired: Vec<i32> = self
+            .errors
+            .iter()
+            .filter(|w| {
+                (w.domain == 0 || w.domain == e.domain)
+                    && (w.kind == 0 || w.kind == e.kind)
+                    && w.number.is_none_or(|n| n == e.number)
+            })
+            .map(|w| w.id)
+            .collect();
+        for id in fired {
+            self.error_entries.insert(id, index);
+            self.raise(id);
+        }
+    }
+
+    /// The event log entry the `IError` interrupt `id` was last raised for.
+    pub(crate) fn error_entry(&self, id: i32) -> Option<usize> {
+        self.error_entries.get(&id).copied()
     }
 
     pub(crate) fn sleep(&mut self, id: i32, on: bool) {
@@ -78,6 +151,42 @@ impl Interrupts {
             self.sleeping.insert(id);
         } else {
             self.sleeping.remove(&id);
+        }
+    }
+
+    /// `IPers`: an interrupt each time the persistent at `place` changes
+    /// from `now` (its value as the watch starts).
+    pub(crate) fn add_pers(
+        &mut self,
+        id: i32,
+        place: crate::machine::Place,
+        now: rapid_evaluator::Value,
+        single: bool,
+    ) {
+        self.pers.retain(|w| w.id != id);
+        self.pers.push(PersWatch {
+            id,
+            place,
+            last: now,
+            single,
+        });
+    }
+
+    /// The persistents watched changed: each changed value (`changed`, by
+    /// watch) raises its interrupt.
+    pub(crate) fn pers_changed(&mut self, changed: &[(usize, rapid_evaluator::Value)]) {
+        let mut done = Vec::new();
+        for (i, v) in changed {
+            if let Some(w) = self.pers.get_mut(*i) {
+                w.last = v.clone();
+                done.push((w.id, w.single));
+            }
+        }
+        for (id, single) in done {
+            self.raise(id);
+            if single {
+                self.pers.retain(|w| w.id != id);
+            }
         }
     }
 

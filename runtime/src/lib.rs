@@ -72,8 +72,8 @@ pub use controller::{Controller, Event, Resume, TaskKind, TaskSpec};
 pub use debug::{DataValue, Variable};
 pub use machine::{Machine, Outcome, StackFrame, Status, Stop};
 pub use program::{
-    LoadCheck, LoadError, Location, Program, RoutineSummary, SYSTEM_ERRNO_BASE, SignalKind,
-    TakenSignal, load_check, load_errors,
+    DECLARED_NOWHERE, LoadCheck, LoadError, Location, Program, RoutineSummary, SYSTEM_ERRNO_BASE,
+    SignalKind, TakenSignal, load_check, load_errors,
 };
 
 /// Where a line of output comes from.
@@ -83,6 +83,10 @@ pub enum Stream {
     Pendant,
     /// The event log (`ErrWrite`).
     EventLog,
+    /// What the pendant shows changes without a line of text (`TPErase`,
+    /// `TPShow`, `UIShow`, `UIMsgWriteAbort`): a trace for the person who
+    /// reads the run, not a line the program writes.
+    Trace,
 }
 
 /// Where a run's output goes: one call per line (named by its task,
@@ -145,6 +149,9 @@ pub struct Config {
     /// The operator's scripted answers, one a line
     /// ([`world::parse_answer`]'s forms), for [`world::World::simulated`].
     pub answers: Vec<String>,
+    /// The controller's configuration (`SYSPAR`) and what it says of
+    /// itself (`BACKINFO`): `ReadCfgData`, `WriteCfgData`, `GetSysInfo`.
+    pub system: world::System,
 }
 
 /// Runs `routine` (a procedure without parameters) of `program` as the

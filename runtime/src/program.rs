@@ -686,7 +686,34 @@ impl Program {
     pub(crate) fn system_global(&self, name: &str) -> Option<u32> {
         self.system.get(&fold(name)).copied()
     }
+
+    /// Why the name `name`, which nothing of the task declares, cannot run
+    /// (the controller would not have linked the program): a persistent
+    /// of another task of the controller that this task does not declare,
+    /// else a name declared nowhere the run can see (the module that
+    /// declares it is not in the repository).
+    pub(crate) fn undeclared(&self, name: &str) -> String {
+        let other = self
+            .task
+            .shared
+            .get(&fold(name))
+            .and_then(|p| p.iter().find(|p| p.task != self.task.key));
+        match other {
+            Some(p) => format!(
+                "`{name}` {DECLARED_NOWHERE} in this task: it is a persistent of {} ({}), and a task that uses a persistent declares it too",
+                p.task.rsplit(['/', '\\']).next().unwrap_or(&p.task),
+                p.path
+            ),
+            None => format!(
+                "`{name}` {DECLARED_NOWHERE} (in no module of the task, nor a built-in the catalogue knows): the module that declares it is missing"
+            ),
+        }
+    }
 }
+
+/// What the message of a run stopped by a name nothing declares says
+/// ([`Program::undeclared`]): `` `NAME` is declared nowhere ``.
+pub const DECLARED_NOWHERE: &str = "is declared nowhere";
 
 /// The largest array the interpreter makes (elements in all).
 pub(crate) const MAX_ELEMENTS: usize = 1 << 20;
@@ -811,12 +838,25 @@ pub fn load_errors(task: &Task) -> Vec<LoadError> {
 /// default severities, which inline suppressions and a project's
 /// configuration do not change: the controller knows neither). A signal
 /// that no configuration declares is not an error here: it is taken from
-/// its use (a `signaldo` where `SetDO` takes one), once a name.
+/// its use (a `signaldo` where `SetDO` takes one), once a name. A module
+/// that clashes with another of the group (two versions of one module) is
+/// checked in its own view ([`Task::view`]), as `rapid check` checks it:
+/// the signals and units it uses are taken from there too.
 pub fn load_check(task: &Task) -> LoadCheck {
     let mut out = LoadCheck::default();
-    for (_, unit) in task.own_units() {
+    for (i, unit) in task.units.iter().enumerate() {
+        let owned = task.owns(i);
+        let view;
+        let seen_in = if owned {
+            task
+        } else if task.owner.is_none() {
+            view = task.view(i);
+            &view
+        } else {
+            continue;
+        };
         let lines = LineIndex::new(&unit.text);
-        for d in rapid_analyzer::workspace::diagnostics_of(task, unit) {
+        for d in rapid_analyzer::workspace::diagnostics_of(seen_in, unit) {
             let (line, column) = lines.human(d.range.start, &unit.text);
             let at = Location {
                 path: unit.path.clone(),
@@ -845,9 +885,11 @@ pub fn load_check(task: &Task) -> LoadCheck {
             }
             // Errors the controller meets only when the statement runs: a
             // constant's evaluation, and a move to a target out of reach or
-            // beyond a working range (the robot stops there).
+            // beyond a working range (the robot stops there). A version of a
+            // module checked in its own view keeps its errors to `rapid
+            // check`: which version the controller loads is not known.
             let load_time = !matches!(d.rule.code, "E413" | "E601" | "E602");
-            if d.severity != rapid_analyzer::diagnostic::Severity::Error || !load_time {
+            if !owned || d.severity != rapid_analyzer::diagnostic::Severity::Error || !load_time {
                 continue;
             }
             out.errors.push(LoadError {

@@ -15,6 +15,9 @@
 //! - `!steps N`: the step budget;
 //! - `!robotware VERSION`: the task's catalogue is that RobotWare version's
 //!   view (its signatures and record layouts);
+//! - `!cfg LINE`: a line of the controller's configuration (`SYSPAR`): a
+//!   header line (`MOC:CFG_1.0:6:0::`) starts a file of that domain;
+//!   `ReadCfgData` reads them, `GetSysInfo` answers from them;
 //! - `!robot MODEL`: the task moves that modelled arm
 //!   ([`rapid_runtime::world::ArmRobot`]), not one whose moves arrive at
 //!   once.
@@ -39,6 +42,8 @@ struct Expect {
     robotware: Option<String>,
     answers: Vec<String>,
     robot: Option<String>,
+    /// The configuration files' lines, one text a file.
+    cfg: Vec<String>,
 }
 
 fn parse(text: &str) -> Expect {
@@ -51,6 +56,7 @@ fn parse(text: &str) -> Expect {
         robotware: None,
         answers: Vec::new(),
         robot: None,
+        cfg: Vec::new(),
     };
     for line in text.lines() {
         let t = line.trim_start();
@@ -73,6 +79,14 @@ fn parse(text: &str) -> Expect {
             e.steps = Some(rest.trim().parse().expect("a number"));
         } else if let Some(rest) = t.strip_prefix("!robotware ") {
             e.robotware = Some(rest.trim().to_owned());
+        } else if let Some(rest) = t.strip_prefix("!cfg ") {
+            if rest.contains("CFG_") || e.cfg.is_empty() {
+                e.cfg.push(String::new());
+            }
+            if let Some(file) = e.cfg.last_mut() {
+                file.push_str(rest);
+                file.push('\n');
+            }
         } else if let Some(rest) = t.strip_prefix("!robot ") {
             e.robot = Some(rest.trim().to_owned());
         }
@@ -119,6 +133,11 @@ fn run(path: &std::path::Path) -> (Vec<String>, Option<String>, Outcome) {
         answers: e.answers.clone(),
         ..Config::default()
     };
+    for text in &e.cfg {
+        let file = rapid_analyzer::cfg::parse(text);
+        let domain = rapid_runtime::world::System::domain_of("", &file);
+        config.system.domains.push((domain, file));
+    }
     if let Some(n) = e.steps {
         config.limits.max_steps = n;
     }

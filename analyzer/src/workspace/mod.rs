@@ -33,6 +33,9 @@ pub struct Workspace {
     units: BTreeMap<String, Arc<Unit>>,
     /// What each configuration file declares, by the file's path.
     configs: BTreeMap<String, Config>,
+    /// Each configuration file as read, by its path (for a run's
+    /// `ReadCfgData`).
+    cfg_files: BTreeMap<String, Arc<crate::cfg::CfgFile>>,
     tasks: HashMap<String, Arc<Task>>,
     /// Views of a task for its units that clash with others, by the task's
     /// key and the unit's path (see [`alternatives`]).
@@ -296,7 +299,10 @@ impl Workspace {
             let info = parse_controller_info(path, text, crate::catalogue::base());
             self.systems.insert(path.to_owned(), info);
         } else {
-            self.configs.insert(path.to_owned(), parse_config(text));
+            let file = crate::cfg::parse(text);
+            self.configs
+                .insert(path.to_owned(), crate::task::config_of(&file));
+            self.cfg_files.insert(path.to_owned(), Arc::new(file));
         }
         self.forget_all_tasks();
         self.mark_backup(path);
@@ -325,6 +331,10 @@ impl Workspace {
         ControllerInfo {
             robotware: sel.robotware,
             options: sel.options().to_vec(),
+            system_name: info.system_name,
+            robotware_text: info
+                .robotware_text
+                .filter(|_| self.controller.robotware.is_none()),
         }
     }
 
@@ -332,6 +342,7 @@ impl Workspace {
         if self.systems.remove(path).is_some() {
             self.forget_all_tasks();
         }
+        self.cfg_files.remove(path);
         if self.configs.remove(path).is_some() {
             self.forget_all_tasks();
             self.mark_backup(path);
@@ -555,6 +566,17 @@ impl Workspace {
                     self.build_task(key, units)
                 }
             })
+            .collect()
+    }
+
+    /// The configuration files that apply to the task `key` (its backup's
+    /// `SYSPAR/*.cfg`, or those above it), each with its path, in path
+    /// order.
+    pub fn config_files_of_task(&self, key: &str) -> Vec<(String, Arc<crate::cfg::CfgFile>)> {
+        self.cfg_files
+            .iter()
+            .filter(|(p, _)| config_applies(p, key))
+            .map(|(p, f)| (p.clone(), f.clone()))
             .collect()
     }
 

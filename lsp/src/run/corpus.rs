@@ -32,7 +32,9 @@ pub enum Class {
     Error,
     /// The program cannot run as written.
     Invalid,
-    /// The controller would not load it.
+    /// The controller would not load it (its errors), or would not link
+    /// it: it uses a name declared nowhere (a module missing from the
+    /// repository).
     Refused,
     /// No entry routine: nothing to run.
     NoEntry,
@@ -46,6 +48,9 @@ impl Class {
             Status::Budget => Class::Budget,
             Status::Unsupported => Class::Unsupported,
             Status::Error => Class::Error,
+            Status::Invalid if o.message.contains(rapid_runtime::DECLARED_NOWHERE) => {
+                Class::Refused
+            }
             Status::Invalid => Class::Invalid,
         }
     }
@@ -58,7 +63,7 @@ impl Class {
             Class::Unsupported => "stopped on an unsupported instruction",
             Class::Error => "an unhandled RAPID error",
             Class::Invalid => "cannot run as written",
-            Class::Refused => "refused to start (load errors)",
+            Class::Refused => "refused: load errors, or a name declared nowhere",
             Class::NoEntry => "no entry routine (not counted)",
         }
     }
@@ -116,7 +121,8 @@ pub fn sweep(dir: &Path) -> Result<Vec<TaskRun>, String> {
             .iter()
             .map(|t| (t.name.clone(), t.task.key.clone(), t.task.is_backup()))
             .collect();
-        let loaded = Loaded { tasks };
+        let system = found.systems[members[0]].clone();
+        let loaded = Loaded { tasks, system };
         let result = execute(&loaded, &opts, Box::new(|_, _: &str| {}));
         for (name, key, backup) in names {
             let (class, detail) = match &result {

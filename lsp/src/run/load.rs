@@ -9,6 +9,7 @@ use std::sync::Arc;
 
 use rapid_analyzer::layout::controller_of;
 use rapid_analyzer::task::{Task, TaskKind, TaskSettings, Unit};
+use rapid_runtime::world::{SysInfo, System};
 use rapid_runtime::{Program, SignalChange, SignalKind};
 
 use crate::project::Environment;
@@ -21,6 +22,8 @@ pub struct Found {
     pub tasks: Vec<Arc<Task>>,
     /// By task: its `SYS.cfg` entry, when its controller has one.
     pub settings: Vec<Option<TaskSettings>>,
+    /// By task: its controller's configuration and identity.
+    pub systems: Vec<System>,
     pub skipped: Vec<(PathBuf, String)>,
 }
 
@@ -56,11 +59,43 @@ pub fn tasks_in(env: &dyn Environment, paths: &[PathBuf]) -> Result<Found, Strin
         .iter()
         .map(|t| settings_of(&t.key, &workspace.controller_tasks(&t.key)))
         .collect();
+    let systems = tasks
+        .iter()
+        .map(|t| system_of(&workspace, &t.key))
+        .collect();
     Ok(Found {
         tasks,
         settings,
+        systems,
         skipped,
     })
+}
+
+/// The controller of the task `key` for `ReadCfgData` and `GetSysInfo`:
+/// the configuration files that apply to it (a backup's `SYSPAR`), read by
+/// the analyzer's one reader, and what `BACKINFO` says (the system's name,
+/// the RobotWare version as written there, else the version `rapid.toml`
+/// sets).
+pub fn system_of(workspace: &rapid_analyzer::workspace::Workspace, key: &str) -> System {
+    let domains = workspace
+        .config_files_of_task(key)
+        .into_iter()
+        .map(|(path, file)| (System::domain_of(&path, &file), (*file).clone()))
+        .collect();
+    let info = workspace.controller_of_task(key);
+    let version = info
+        .robotware_text
+        .clone()
+        .or_else(|| info.robotware.map(|v| v.to_string()));
+    System {
+        domains,
+        info: SysInfo {
+            sw_version_name: version.as_ref().map(|v| format!("RobotWare {v}")),
+            sw_version: version,
+            system_name: info.system_name,
+            ..SysInfo::default()
+        },
+    }
 }
 
 /// The `SYS.cfg` entry of the task kept in folder `key`: task *n* for
@@ -96,9 +131,12 @@ pub struct TaskToRun {
     pub motion: bool,
 }
 
-/// The controller a path holds: its tasks.
+/// The controller a path holds: its tasks, its configuration and
+/// identity.
+#[derive(Default)]
 pub struct Loaded {
     pub tasks: Vec<TaskToRun>,
+    pub system: System,
 }
 
 /// The controller `path` holds, to run: every task of a backup (or of a
@@ -117,6 +155,7 @@ pub fn controller(path: &Path, only: Option<&str>, entry: Option<&str>) -> Resul
     let together =
         found.tasks.len() > 1 && (one_backup(&found.tasks) || folder_of_tasks(path, &found.tasks));
     let lone = found.tasks.len() == 1;
+    let system = found.systems.first().cloned().unwrap_or_default();
     let mut out: Vec<TaskToRun> = found
         .tasks
         .iter()
@@ -137,10 +176,13 @@ pub fn controller(path: &Path, only: Option<&str>, entry: Option<&str>) -> Resul
             e.clone_into(&mut t.entry);
         }
         t.motion = true;
-        return Ok(Loaded { tasks: vec![t] });
+        return Ok(Loaded {
+            tasks: vec![t],
+            system,
+        });
     }
     if lone || together {
-        return Ok(Loaded { tasks: out });
+        return Ok(Loaded { tasks: out, system });
     }
     let with_entry: Vec<usize> = (0..out.len())
         .filter(|&i| declares(&out[i].task, entry))
@@ -149,7 +191,10 @@ pub fn controller(path: &Path, only: Option<&str>, entry: Option<&str>) -> Resul
         [i] => {
             let mut t = out.swap_remove(*i);
             t.name = "T_ROB1".to_owned();
-            Ok(Loaded { tasks: vec![t] })
+            Ok(Loaded {
+                tasks: vec![t],
+                system,
+            })
         }
         _ => {
             let keys: Vec<&str> = out.iter().map(|t| t.task.key.as_str()).take(5).collect();

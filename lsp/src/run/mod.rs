@@ -3,8 +3,10 @@
 //! static and semistatic ones first, else the one task of a module or a
 //! folder.
 //!
-//! The program's output (`TPWrite`, `ErrWrite`) goes to stdout, one line
-//! each (named by its task, `[T_ROB2] ...`, when several run); how the run
+//! The program's output (`TPWrite`, `ErrWrite`, `UIMsgWrite`) goes to
+//! stdout, one line each (named by its task, `[T_ROB2] ...`, when several
+//! run); what the pendant shows without a line (`TPErase`, `TPShow`,
+//! `UIShow`) is traced to stderr (`[TPErase at m.mod:4] ...`); how the run
 //! ended goes to stderr when it did not end normally, with the error's
 //! name, message, line and the active routines. A program the controller
 //! would not load (a syntax error, what the checker finds it would refuse)
@@ -73,7 +75,8 @@ pub struct RunArgs {
     pub sandbox: Option<PathBuf>,
     /// The operator's answers to the pendant's questions (`TPReadFK`,
     /// `UIMessageBox`...), one a line, in order: a function key's number
-    /// or label, a number, a button or list item, text; `@SECONDS VALUE`
+    /// or label, a number, a button or list item (`UIListView` with
+    /// `\Result` and buttons: the item, then the button), text; `@SECONDS VALUE`
     /// answers after that many simulated seconds, `-` never answers; `#`
     /// starts a comment.
     #[arg(long, value_name = "FILE")]
@@ -249,6 +252,7 @@ pub fn build(
         signals: options.sets.clone(),
         sandbox: options.sandbox.clone(),
         trace: options.trace,
+        system: loaded.system.clone(),
         ..Config::default()
     };
     let mut world = World::simulated(&config, output);
@@ -338,6 +342,7 @@ pub fn run_routine(
             entry: entry.to_owned(),
             motion: true,
         }],
+        ..load::Loaded::default()
     };
     let sandbox = Sandbox::new(budget.sandbox)?;
     let options = RunOptions {
@@ -425,10 +430,14 @@ fn run_inner(args: RunArgs) -> Result<ExitCode, String> {
         ),
     };
     let notes = robot::notes(&loaded.tasks, args.robot.as_deref())?;
-    let out = |_: Stream, line: &str| {
-        let stdout = std::io::stdout();
-        let mut lock = stdout.lock();
-        let _ = writeln!(lock, "{line}");
+    // The program's lines to stdout; the trace of what the pendant shows
+    // (TPErase, TPShow, UIShow) to stderr, apart from them.
+    let out = |stream: Stream, line: &str| {
+        if stream == Stream::Trace {
+            let _ = writeln!(std::io::stderr().lock(), "{line}");
+        } else {
+            let _ = writeln!(std::io::stdout().lock(), "{line}");
+        }
     };
     let report = execute(&loaded, &options, Box::new(out)).map_err(|e| e.to_string())?;
     // The arm drawn and listed with the moves: the one motion task's.

@@ -1,4 +1,4 @@
-//! The sockets of `rapid run`: real TCP sockets of the host. An address
+//! The sockets of `rapid run`: real TCP and UDP sockets of the host. An address
 //! the program names (`SocketConnect sock, "192.168.125.1", 1025`,
 //! `SocketBind`) goes to the loopback interface with the same port,
 //! unless `--socket-map ADDR:PORT=HOST:PORT` sends it elsewhere. So the
@@ -7,7 +7,7 @@
 
 use std::collections::HashMap;
 use std::io::{ErrorKind, Read, Write};
-use std::net::{SocketAddr, TcpListener, TcpStream, ToSocketAddrs};
+use std::net::{SocketAddr, TcpListener, TcpStream, ToSocketAddrs, UdpSocket};
 use std::time::{Duration, Instant};
 
 use rapid_runtime::world::{SocketError, SocketState, Sockets};
@@ -45,6 +45,10 @@ pub fn parse_map(text: &str) -> Result<SocketMap, String> {
 
 enum Sock {
     Created,
+    /// A UDP socket not bound yet (`SocketCreate \UDP`).
+    CreatedUdp,
+    /// A bound UDP socket.
+    Udp(UdpSocket),
     Listener {
         listener: TcpListener,
         listening: bool,
@@ -113,10 +117,68 @@ fn closed(e: &std::io::Error) -> SocketError {
 
 impl Sockets for HostSockets {
     fn create(&mut self, udp: bool) -> Result<u32, SocketError> {
-        if udp {
-            return Err(SocketError::Unsupported);
+        Ok(self.add(if udp { Sock::CreatedUdp } else { Sock::Created }))
+    }
+
+    fn send_to(
+        &mut self,
+        socket: u32,
+        address: &str,
+        port: u32,
+        data: &[u8],
+    ) -> Result<(), SocketError> {
+        let target = self.target(address, port)?;
+        if matches!(self.sock(socket)?, Sock::CreatedUdp) {
+            let any = UdpSocket::bind(SocketAddr::from(([127, 0, 0, 1], 0)))
+                .map_err(|e| SocketError::Failed(format!("cannot bind a UDP socket: {e}")))?;
+            self.socks.insert(socket, Sock::Udp(any));
         }
-        Ok(self.add(Sock::Created))
+        let Sock::Udp(s) = self.sock(socket)? else {
+            return Err(SocketError::Failed(
+                "the socket is not a UDP socket".to_owned(),
+            ));
+        };
+        s.send_to(data, target)
+            .map(|_| ())
+            .map_err(|e| SocketError::Failed(format!("{address}:{port} ({target}): {e}")))
+    }
+
+    fn receive_from(
+        &mut self,
+        socket: u32,
+        max: usize,
+        timeout: f64,
+    ) -> Result<(Vec<u8>, String, u32), SocketError> {
+        let Sock::Udp(s) = self.sock(socket)? else {
+            return Err(SocketError::Failed(
+                "the socket is not a bound UDP socket".to_owned(),
+            ));
+        };
+        let start = Instant::now();
+        let limit = Duration::from_secs_f64(timeout.max(0.001));
+        // A datagram longer than `max` is cut: read it whole, keep `max`.
+        let mut buf = vec![0u8; 65_536];
+        let result = loop {
+            let left = limit.saturating_sub(start.elapsed());
+            if left.is_zero() {
+                break Err(SocketError::Timeout(format!(
+                    "no datagram came within {timeout} s"
+                )));
+            }
+            if let Err(e) = s.set_read_timeout(Some(left)) {
+                break Err(SocketError::Failed(e.to_string()));
+            }
+            match s.recv_from(&mut buf) {
+                Ok((n, peer)) => break Ok((n, peer)),
+                Err(e) if matches!(e.kind(), ErrorKind::WouldBlock | ErrorKind::TimedOut) => {}
+                Err(e) if e.kind() == ErrorKind::Interrupted => {}
+                Err(e) => break Err(SocketError::Failed(e.to_string())),
+            }
+        };
+        self.waited += start.elapsed();
+        let (n, peer) = result?;
+        buf.truncate(n.min(max));
+        Ok((buf, peer.ip().to_string(), u32::from(peer.port())))
     }
 
     fn connect(
@@ -156,12 +218,23 @@ impl Sockets for HostSockets {
     }
 
     fn bind(&mut self, socket: u32, address: &str, port: u32) -> Result<(), SocketError> {
-        if !matches!(self.sock(socket)?, Sock::Created) {
-            return Err(SocketError::Failed(
-                "the socket is connected or bound already".to_owned(),
-            ));
-        }
+        let udp = match self.sock(socket)? {
+            Sock::Created => false,
+            Sock::CreatedUdp => true,
+            _ => {
+                return Err(SocketError::Failed(
+                    "the socket is connected or bound already".to_owned(),
+                ));
+            }
+        };
         let target = self.target(address, port)?;
+        if udp {
+            let s = UdpSocket::bind(target).map_err(|e| {
+                SocketError::Failed(format!("cannot bind {address}:{port} ({target}): {e}"))
+            })?;
+            self.socks.insert(socket, Sock::Udp(s));
+            return Ok(());
+        }
         let listener = TcpListener::bind(target).map_err(|e| {
             SocketError::Failed(format!("cannot bind {address}:{port} ({target}): {e}"))
         })?;
@@ -285,7 +358,8 @@ impl Sockets for HostSockets {
     fn state(&self, socket: u32) -> SocketState {
         match self.socks.get(&socket) {
             None => SocketState::Closed,
-            Some(Sock::Created) => SocketState::Created,
+            Some(Sock::Created | Sock::CreatedUdp) => SocketState::Created,
+            Some(Sock::Udp(_)) => SocketState::Bound,
             Some(Sock::Listener {
                 listening: false, ..
             }) => SocketState::Bound,

@@ -145,6 +145,41 @@ pub(crate) fn alias_io(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     Ok(Done::Next)
 }
 
+/// `GetSignalOrigin(Signal, SignalName)`: `SIGORIG_CFG` for a signal of
+/// the I/O configuration (or one the run takes from its use),
+/// `SIGORIG_ALIAS` for a signal variable `AliasIO` connected, `SIGORIG_NONE`
+/// for one connected to nothing; `SignalName` gets the configured signal's
+/// name (empty for none).
+pub(crate) fn get_signal_origin(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    let v = cx.req(a, "Signal")?;
+    if !crate::machine::is_signal(&v) {
+        return invalid(format!(
+            "GetSignalOrigin: Signal must be a signal, not {}",
+            crate::machine::describe(&v)
+        ));
+    }
+    let name = match v.field("name") {
+        Some(Value::Str(s)) => s.clone(),
+        _ => String::new(),
+    };
+    let configured = matches!(
+        a.place_of("Signal"),
+        Some(crate::machine::Place { root: crate::machine::Root::Global(g), path })
+            if path.is_empty()
+                && cx.m.prog.globals.get(*g as usize).is_some_and(|g| matches!(g.origin, crate::program::Origin::Signal))
+    );
+    let origin = if name.is_empty() {
+        "SIGORIG_NONE"
+    } else if configured {
+        "SIGORIG_CFG"
+    } else {
+        "SIGORIG_ALIAS"
+    };
+    let to = cx.place_arg(a, "SignalName")?;
+    cx.store(&to, Value::Str(name))?;
+    cx.predefined(origin)
+}
+
 /// `AliasIOReset Signal`: the signal variable stands for no signal again.
 pub(crate) fn alias_io_reset(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     let p = cx.place_arg(a, "Signal")?;
@@ -259,6 +294,86 @@ pub(crate) fn i_signal_any(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     let id = interrupt_number(cx, a)?;
     let single = a.given("Single") || a.given("SingleSafe");
     cx.m.interrupts.add_watch(id, &name, None, single);
+    Ok(Done::Next)
+}
+
+/// `IPers [\Single] | [\SingleSafe] Name, Interrupt`: an interrupt each
+/// time the persistent `Name` changes value (any task's write, as the
+/// tasks share it), seen between statements.
+pub(crate) fn i_pers(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let place = cx.place_arg(a, "Name")?;
+    let now = cx.m.load(cx.sh, &place)?;
+    let id = interrupt_number(cx, a)?;
+    let single = a.given("Single") || a.given("SingleSafe");
+    cx.m.interrupts.add_pers(id, place, now, single);
+    Ok(Done::Next)
+}
+
+/// `IError ErrorDomain [\ErrorId] ErrorType, Interrupt`: an interrupt at
+/// each entry of the controller's event log of that domain (`COMMON_ERR`:
+/// any), number and type (`TYPE_ALL`: any). The simulated event log holds
+/// what `ErrWrite` writes.
+pub(crate) fn i_error(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let domain = cx.num(a, "ErrorDomain")?.max(0.0) as u32;
+    let number = cx.opt_num(a, "ErrorId")?.map(|n| n.max(0.0) as u32);
+    let kind = cx.num(a, "ErrorType")?.max(0.0) as u32;
+    let id = interrupt_number(cx, a)?;
+    cx.m.interrupts.add_error_watch(id, domain, number, kind);
+    Ok(Done::Next)
+}
+
+/// `GetTrapData TrapEvent`: in the trap routine of an `IError`
+/// interrupt, the event log entry it was raised for.
+pub(crate) fn get_trap_data(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let id =
+        cx.m.prog
+            .intno
+            .and_then(|g| cx.m.globals.get(g as usize))
+            .and_then(Value::as_f64)
+            .unwrap_or(0.0) as i32;
+    let Some(entry) = cx.m.interrupts.error_entry(id).filter(|_| cx.m.in_trap()) else {
+        return invalid("GetTrapData: not in the trap routine of an IError interrupt");
+    };
+    let p = cx.place_arg(a, "TrapEvent")?;
+    cx.store(
+        &p,
+        Value::Record {
+            ty: "trapdata".to_owned(),
+            fields: vec![("entry".to_owned(), Value::Num(entry as f32))],
+        },
+    )?;
+    Ok(Done::Next)
+}
+
+/// `ReadErrData TrapEvent, ErrorDomain, ErrorId, ErrorType [\Title]
+/// [\Str1] ... [\Str5]`: the event log entry `GetTrapData` got.
+pub(crate) fn read_err_data(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let v = cx.req(a, "TrapEvent")?;
+    let entry = v
+        .field("entry")
+        .and_then(Value::as_f64)
+        .and_then(|i| cx.sh.event_log.get(i as usize))
+        .cloned();
+    let Some(e) = entry else {
+        return invalid("ReadErrData: the trapdata holds no error (GetTrapData first)");
+    };
+    for (param, value) in [
+        ("ErrorDomain", e.domain),
+        ("ErrorId", e.number),
+        ("ErrorType", e.kind),
+    ] {
+        let p = cx.place_arg(a, param)?;
+        cx.store(&p, Value::Num(value as f32))?;
+    }
+    if let Some(p) = cx.opt_place(a, "Title")? {
+        cx.store(&p, Value::Str(e.title.clone()))?;
+    }
+    for (i, param) in ["Str1", "Str2", "Str3", "Str4", "Str5"].iter().enumerate() {
+        if let Some(p) = cx.opt_place(a, param)? {
+            let s = e.lines.get(i).cloned().unwrap_or_default();
+            cx.store(&p, Value::Str(s))?;
+        }
+    }
     Ok(Done::Next)
 }
 

@@ -6,6 +6,7 @@
 //! Anything the catalogue knows and this module does not implement stops
 //! a run with "not supported in simulation: NAME".
 
+pub(crate) mod config;
 pub(crate) mod data;
 pub(crate) mod files;
 pub(crate) mod io;
@@ -48,13 +49,15 @@ pub(crate) type FuncFn = fn(&mut Cx<'_>, &mut Args) -> R<Value>;
 const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("TPWrite", output::tp_write),
     ("ErrWrite", output::err_write),
-    ("TPErase", output::nothing),
-    ("TPShow", output::nothing),
+    ("TPErase", output::tp_erase),
+    ("TPShow", output::tp_show),
+    ("UIMsgWrite", output::ui_msg_write),
+    ("UIMsgWriteAbort", output::ui_msg_write_abort),
     ("TPReadFK", pendant::tp_read_fk),
     ("TPReadNum", pendant::tp_read_num),
     ("TPReadDnum", pendant::tp_read_num),
     ("UIMsgBox", pendant::ui_msg_box),
-    ("UIShow", output::nothing),
+    ("UIShow", output::ui_show),
     ("Incr", data::incr),
     ("Decr", data::decr),
     ("Add", data::add),
@@ -90,6 +93,10 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("ISignalGI", io::i_signal_any),
     ("ISignalGO", io::i_signal_any),
     ("ITimer", io::i_timer),
+    ("IPers", io::i_pers),
+    ("IError", io::i_error),
+    ("GetTrapData", io::get_trap_data),
+    ("ReadErrData", io::read_err_data),
     ("IDelete", io::i_delete),
     ("IDisable", io::i_disable),
     ("IEnable", io::i_enable),
@@ -141,10 +148,14 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("SocketConnect", sockets::socket_connect),
     ("SocketSend", sockets::socket_send),
     ("SocketReceive", sockets::socket_receive),
+    ("SocketSendTo", sockets::socket_send_to),
+    ("SocketReceiveFrom", sockets::socket_receive_from),
     ("SocketClose", sockets::socket_close),
     ("SocketBind", sockets::socket_bind),
     ("SocketListen", sockets::socket_listen),
     ("SocketAccept", sockets::socket_accept),
+    ("ReadCfgData", config::read_cfg_data),
+    ("WriteCfgData", config::write_cfg_data),
     ("ActUnit", units::act_unit),
     ("DeactUnit", units::deact_unit),
     ("MotionSup", motion::setting),
@@ -183,6 +194,7 @@ const FUNCTIONS: &[(&str, FuncFn)] = &[
     ("SocketGetStatus", sockets::socket_get_status),
     ("RawBytesLen", rawbytes::raw_bytes_len),
     ("IsMechUnitActive", units::is_mech_unit_active),
+    ("GetSysInfo", config::get_sys_info),
     ("DInput", io::input),
     ("DOutput", io::input),
     ("AInput", io::input),
@@ -190,6 +202,7 @@ const FUNCTIONS: &[(&str, FuncFn)] = &[
     ("GInput", io::input),
     ("GOutput", io::input),
     ("TestDI", io::test_di),
+    ("GetSignalOrigin", io::get_signal_origin),
     ("CRobT", motion::c_rob_t),
     ("CPos", motion::c_pos),
     ("CJointT", motion::c_joint_t),
@@ -396,6 +409,18 @@ impl Cx<'_> {
     /// A line on the pendant or in the event log.
     pub(crate) fn print(&mut self, stream: crate::Stream, text: &str) {
         self.sh.print(&self.m.name, stream, text);
+    }
+
+    /// A trace of what the pendant shows, with where the program asked
+    /// (`[TPErase at m.mod:4] ...`).
+    pub(crate) fn trace(&mut self, text: &str) {
+        let at = self
+            .m
+            .location()
+            .map_or_else(String::new, |l| format!(" at {}:{}", l.path, l.line));
+        let (what, rest) = text.split_once(": ").unwrap_or((text, ""));
+        let line = format!("[{what}{at}] {rest}");
+        self.sh.print(&self.m.name, crate::Stream::Trace, &line);
     }
 }
 

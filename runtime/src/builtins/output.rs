@@ -57,18 +57,85 @@ pub(crate) fn err_write(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
         80001
     };
     let header = cx.string(a, "Header")?;
-    let mut line = format!("{number} {header}: {}", cx.string(a, "Reason")?);
+    let reason = cx.string(a, "Reason")?;
+    let mut line = format!("{number} {header}: {reason}");
+    let mut lines = vec![reason];
     for p in ["RL2", "RL3", "RL4"] {
         if let Some(s) = cx.opt_string(a, p)? {
             line.push(' ');
             line.push_str(&s);
+            lines.push(s);
         }
     }
     cx.print(Stream::EventLog, &line);
+    // Event numbers are the domain, then four digits: 80001 is entry 1 of
+    // USER_DEF_ERR (8); an error is TYPE_ERR (3), a warning TYPE_WARN (2),
+    // information TYPE_STATE (1).
+    cx.sh.event_log.push(crate::interrupts::LogEntry {
+        domain: number / 10_000,
+        number: number % 10_000,
+        kind: 4 - number % 10_000,
+        title: header,
+        lines,
+    });
     Ok(Done::Next)
 }
 
-/// Instructions that change only what the pendant shows.
-pub(crate) fn nothing(_: &mut Cx<'_>, _: &mut Args) -> R<Done> {
+/// `TPErase`: the operator window is cleared (traced).
+pub(crate) fn tp_erase(cx: &mut Cx<'_>, _: &mut Args) -> R<Done> {
+    cx.trace("TPErase: the operator window is cleared");
+    Ok(Done::Next)
+}
+
+/// `TPShow Window`: the pendant brings a window to the front (traced):
+/// `TP_PROGRAM` (1) the Production window, `TP_LATEST` (2) the window
+/// shown before, `TP_SCREENVIEWER` (3) the ScreenViewer.
+pub(crate) fn tp_show(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let window = cx.num(a, "Window")?;
+    let shown = match window as i64 {
+        1 => "the Production window",
+        2 => "the window shown before",
+        3 => "the ScreenViewer",
+        _ => return invalid(format!("TPShow: {window} is not a tpnum window (1 to 3)")),
+    };
+    cx.trace(&format!("TPShow: the pendant shows {shown}"));
+    Ok(Done::Next)
+}
+
+/// `UIShow AssemblyName, TypeName [\InitCmd] [\InstanceID] [\Status]
+/// [\NoCloseBtn]`: a FlexPendant application opens (traced); `\Status`
+/// gets 0 (it opened), `\InstanceID` the number of the opened instance.
+pub(crate) fn ui_show(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let assembly = cx.string(a, "AssemblyName")?;
+    let ty = cx.string(a, "TypeName")?;
+    let mut line = format!("UIShow: the pendant opens {ty} of {assembly}");
+    if let Some(cmd) = cx.opt_string(a, "InitCmd")? {
+        line.push_str(&format!(" ({cmd})"));
+    }
+    cx.trace(&line);
+    cx.sh.ui_instances += 1;
+    let instance = cx.sh.ui_instances;
+    if let Some(p) = cx.opt_place(a, "InstanceID")? {
+        cx.store(&p, Value::Num(instance as f32))?;
+    }
+    if let Some(p) = cx.opt_place(a, "Status")? {
+        cx.store(&p, Value::Num(0.0))?;
+    }
+    Ok(Done::Next)
+}
+
+/// `UIMsgWrite Header, Message`: a message in the operator window, shown
+/// without waiting for the operator (a later one replaces it); the run
+/// writes it as a line, the header first.
+pub(crate) fn ui_msg_write(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let header = cx.string(a, "Header")?;
+    let message = cx.string(a, "Message")?;
+    cx.print(Stream::Pendant, &format!("{header}: {message}"));
+    Ok(Done::Next)
+}
+
+/// `UIMsgWriteAbort`: the message of `UIMsgWrite` is removed (traced).
+pub(crate) fn ui_msg_write_abort(cx: &mut Cx<'_>, _: &mut Args) -> R<Done> {
+    cx.trace("UIMsgWriteAbort: the message of UIMsgWrite is removed");
     Ok(Done::Next)
 }

@@ -174,34 +174,66 @@ fn ask(
     to: Option<Place>,
     fallback: Value,
 ) -> R<Option<Value>> {
-    let ex = exits(cx, a)?;
-    let reply = cx.sh.pendant.ask(&cx.m.name, &ask.question);
-    let answer = match &reply {
-        Some(Reply { text, .. }) => match (ask.read)(&ask, text) {
-            Ok(v) => Some(v),
-            Err(why) => {
-                return fault(FaultKind::Operator(format!(
-                    "the answer {text:?} to {} at {}: {why}",
-                    ask.summary(),
-                    ask.question.at
-                )));
-            }
-        },
-        None => None,
+    ask_then(cx, a, ask, None, to, fallback)
+}
+
+/// The operator's answer to `ask`, read for the question: its value and
+/// when it comes; `None`: nobody answers.
+fn answer_of(cx: &mut Cx<'_>, ask: &Ask) -> R<Option<(Value, f64)>> {
+    let Some(Reply { text, after }) = cx.sh.pendant.ask(&cx.m.name, &ask.question) else {
+        return Ok(None);
     };
+    match (ask.read)(ask, &text) {
+        Ok(v) => Ok(Some((v, after))),
+        Err(why) => fault(FaultKind::Operator(format!(
+            "the answer {text:?} to {} at {}: {why}",
+            ask.summary(),
+            ask.question.at
+        ))),
+    }
+}
+
+/// [`ask`], then (once answered) the question `then`, whose answer goes
+/// to its place when the first answer's does: the dialog ends when both
+/// are answered.
+fn ask_then(
+    cx: &mut Cx<'_>,
+    a: &Args,
+    ask: Ask,
+    then: Option<(Ask, Place)>,
+    to: Option<Place>,
+    fallback: Value,
+) -> R<Option<Value>> {
+    let ex = exits(cx, a)?;
+    let mut reply = answer_of(cx, &ask)?;
+    let mut also = None;
+    let mut waiting_for = ask.summary();
+    if let (Some((first, after)), Some((second, place))) = (reply.clone(), then) {
+        reply = match answer_of(cx, &second)? {
+            Some((v, more)) => {
+                also = Some((place, v));
+                Some((first, after + more))
+            }
+            None => {
+                waiting_for = second.summary();
+                None
+            }
+        };
+    }
+    let answer = reply.as_ref().map(|(v, _)| v.clone());
     let now = cx.now();
-    let after = reply.as_ref().map(|r| r.after);
+    let after = reply.as_ref().map(|(_, d)| *d);
     if answer.is_none() && ex.max_time.is_none() && ex.breaks.is_empty() {
         return fault(FaultKind::Operator(format!(
-            "waiting for the operator at {}: {}",
+            "waiting for the operator at {}: {waiting_for}",
             ask.question.at,
-            ask.summary()
         )));
     }
     let wait = OperatorWait {
         at: after.map(|d| now + d),
         answer: answer.clone().unwrap_or(Value::Num(0.0)),
         to: to.clone(),
+        also: also.clone(),
         breaks: ex.breaks,
         flag: ex.flag,
         fallback,
@@ -216,6 +248,9 @@ fn ask(
         && !breaks_now
         && !late
     {
+        if let Some((p, v)) = &also {
+            cx.store(p, v.clone())?;
+        }
         if let Some(p) = &to {
             cx.store(p, v.clone())?;
         }
@@ -415,9 +450,11 @@ pub(crate) fn ui_alpha_entry(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
 }
 
 /// `UIListView([\Result] [\Header] ListItems ...)`: the operator chooses an
-/// item (its number, 1 for the first, is the result); `\Result` gets the
-/// first button (`resOK` of `\Buttons:=btnOKCancel`, or 1 of a
-/// `\BtnArray`), as when the operator confirms the choice.
+/// item (its number, 1 for the first, is the result), then, when the
+/// dialog has buttons and `\Result` asks which, presses one: the next
+/// answer, a `btnres` button of `\Buttons` (`OK`, `Cancel`...) or a
+/// `\BtnArray` button (its number or label). Without buttons, choosing
+/// the item ends the dialog.
 pub(crate) fn ui_list_view(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
     let mut q = Ask::new(cx, a, Expect::Choice);
     q.question.header = cx.opt_string(a, "Header")?.unwrap_or_default();
@@ -433,16 +470,20 @@ pub(crate) fn ui_list_view(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
         q.question.choices.push(text);
         q.values.push(Value::Num((i + 1) as f32));
     }
+    let mut then = None;
     if let Some(p) = cx.opt_place(a, "Result")? {
         let mut b = Ask::new(cx, a, Expect::Choice);
+        b.question.header.clone_from(&q.question.header);
+        b.question.lines = vec!["(the button that confirms the choice)".to_owned()];
         buttons(cx, a, &mut b, -1)?;
-        if let Some(first) = b.values.first() {
-            cx.store(&p, first.clone())?;
+        // Without buttons the choice itself ends the dialog.
+        if !b.values.is_empty() {
+            then = Some((b, p));
         }
     }
     let default = cx.opt_num(a, "DefaultIndex")?;
     q.question.initial = default.map(|d| d.to_string());
-    ask_function(cx, a, q, Value::Num(0.0))
+    Ok(ask_then(cx, a, q, then, None, Value::Num(0.0))?.unwrap_or(Value::Num(0.0)))
 }
 
 /// `UIClientExist()`: the simulated controller has its pendant.

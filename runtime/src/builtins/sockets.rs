@@ -165,13 +165,12 @@ pub(crate) fn socket_accept(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     Ok(Done::Next)
 }
 
-/// `SocketSend Socket, \Str | \RawData | \Data [\NoOfBytes]`.
-pub(crate) fn socket_send(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
-    let s = socket(cx, a, "Socket")?;
+/// The bytes of `\Str`, `\RawData` or `\Data`, cut to `\NoOfBytes`.
+fn bytes_to_send(cx: &mut Cx<'_>, a: &Args) -> R<Vec<u8>> {
     let bytes: Vec<u8> = if let Some(v) = cx.opt(a, "Str")? {
         match v {
             Value::Str(text) => text.chars().map(|c| u32::from(c).min(255) as u8).collect(),
-            other => return invalid(format!("SocketSend: \\Str is {other}")),
+            other => return invalid(format!("{}: \\Str is {other}", a.name)),
         }
     } else if let Some(v) = cx.opt(a, "RawData")? {
         super::rawbytes::bytes(&v)
@@ -184,25 +183,43 @@ pub(crate) fn socket_send(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
             other => vec![other.as_f64().unwrap_or(0.0).clamp(0.0, 255.0) as u8],
         }
     } else {
-        return invalid("SocketSend: \\Str, \\RawData or \\Data is needed");
+        return invalid(format!("{}: \\Str, \\RawData or \\Data is needed", a.name));
     };
     let n = cx
         .opt_num(a, "NoOfBytes")?
         .map_or(bytes.len(), |n| n.max(0.0) as usize);
-    let r = cx.sh.sockets.send(s, &bytes[..n.min(bytes.len())]);
+    Ok(bytes[..n.min(bytes.len())].to_vec())
+}
+
+/// `SocketSend Socket, \Str | \RawData | \Data [\NoOfBytes]`.
+pub(crate) fn socket_send(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let s = socket(cx, a, "Socket")?;
+    let bytes = bytes_to_send(cx, a)?;
+    let r = cx.sh.sockets.send(s, &bytes);
     if done(cx, a, r)?.is_none() {
         return waiting(cx);
     }
     Ok(Done::Next)
 }
 
-/// `SocketReceive Socket, \Str | \RawData | \Data [\ReadNoOfBytes]
-/// [\NoRecBytes] [\Time]`: what has come in (at most what the data
-/// holds: 80 characters, 1024 raw bytes, the array's length), or exactly
-/// `\ReadNoOfBytes` bytes.
-pub(crate) fn socket_receive(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+/// `SocketSendTo Socket, RemoteAddress, RemotePort, \Str | \RawData |
+/// \Data [\NoOfBytes]`: one UDP datagram.
+pub(crate) fn socket_send_to(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     let s = socket(cx, a, "Socket")?;
-    let (target, room) = if let Some(p) = cx.opt_place(a, "Str")? {
+    let address = cx.string(a, "RemoteAddress")?;
+    let port = cx.num(a, "RemotePort")?.max(0.0) as u32;
+    let bytes = bytes_to_send(cx, a)?;
+    let r = cx.sh.sockets.send_to(s, &address, port, &bytes);
+    if done(cx, a, r)?.is_none() {
+        return waiting(cx);
+    }
+    Ok(Done::Next)
+}
+
+/// Where received bytes go (`\Str`, `\RawData`, `\Data`) and how many
+/// it holds (80 characters, 1024 raw bytes, the array's length).
+fn receive_target(cx: &mut Cx<'_>, a: &Args) -> R<(Target, usize)> {
+    Ok(if let Some(p) = cx.opt_place(a, "Str")? {
         (Target::Str(p), MAX_STRING)
     } else if let Some(p) = cx.opt_place(a, "RawData")? {
         (Target::Raw(p), super::rawbytes::MAX_BYTES)
@@ -213,8 +230,42 @@ pub(crate) fn socket_receive(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
         };
         (Target::Data(p), len)
     } else {
-        return invalid("SocketReceive: \\Str, \\RawData or \\Data is needed");
-    };
+        return invalid(format!("{}: \\Str, \\RawData or \\Data is needed", a.name));
+    })
+}
+
+/// Stores received bytes, and their count in `\NoRecBytes`.
+fn store_received(cx: &mut Cx<'_>, a: &Args, target: Target, bytes: &[u8]) -> R<()> {
+    match target {
+        Target::Str(p) => {
+            let text: String = bytes.iter().map(|b| char::from(*b)).collect();
+            cx.store(&p, Value::Str(text))?;
+        }
+        Target::Raw(p) => cx.store(&p, super::rawbytes::value(bytes))?,
+        Target::Data(p) => {
+            let mut items = match cx.m.load(cx.sh, &p)? {
+                Value::Array(items) => items,
+                _ => Vec::new(),
+            };
+            for (slot, b) in items.iter_mut().zip(bytes) {
+                *slot = Value::Num(f32::from(*b));
+            }
+            cx.store(&p, Value::Array(items))?;
+        }
+    }
+    if let Some(p) = cx.opt_place(a, "NoRecBytes")? {
+        cx.store(&p, Value::Num(bytes.len() as f32))?;
+    }
+    Ok(())
+}
+
+/// `SocketReceive Socket, \Str | \RawData | \Data [\ReadNoOfBytes]
+/// [\NoRecBytes] [\Time]`: what has come in (at most what the data
+/// holds: 80 characters, 1024 raw bytes, the array's length), or exactly
+/// `\ReadNoOfBytes` bytes.
+pub(crate) fn socket_receive(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let s = socket(cx, a, "Socket")?;
+    let (target, room) = receive_target(cx, a)?;
     let exact = cx.opt_num(a, "ReadNoOfBytes")?.map(|n| n.max(0.0) as usize);
     if exact.is_some_and(|n| n > room) {
         return fault(named_error(
@@ -231,26 +282,26 @@ pub(crate) fn socket_receive(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     let Some(bytes) = done(cx, a, r)? else {
         return waiting(cx);
     };
-    match target {
-        Target::Str(p) => {
-            let text: String = bytes.iter().map(|b| char::from(*b)).collect();
-            cx.store(&p, Value::Str(text))?;
-        }
-        Target::Raw(p) => cx.store(&p, super::rawbytes::value(&bytes))?,
-        Target::Data(p) => {
-            let mut items = match cx.m.load(cx.sh, &p)? {
-                Value::Array(items) => items,
-                _ => Vec::new(),
-            };
-            for (slot, b) in items.iter_mut().zip(&bytes) {
-                *slot = Value::Num(f32::from(*b));
-            }
-            cx.store(&p, Value::Array(items))?;
-        }
-    }
-    if let Some(p) = cx.opt_place(a, "NoRecBytes")? {
-        cx.store(&p, Value::Num(bytes.len() as f32))?;
-    }
+    store_received(cx, a, target, &bytes)?;
+    Ok(Done::Next)
+}
+
+/// `SocketReceiveFrom Socket, \Str | \RawData | \Data [\NoRecBytes],
+/// RemoteAddress, RemotePort [\Time]`: the next UDP datagram (what the
+/// data holds of it) and who sent it.
+pub(crate) fn socket_receive_from(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let s = socket(cx, a, "Socket")?;
+    let (target, room) = receive_target(cx, a)?;
+    let t = time(cx, a)?;
+    let r = cx.sh.sockets.receive_from(s, room, t);
+    let Some((bytes, address, port)) = done(cx, a, r)? else {
+        return waiting(cx);
+    };
+    store_received(cx, a, target, &bytes)?;
+    let p = cx.place_arg(a, "RemoteAddress")?;
+    cx.store(&p, Value::Str(address))?;
+    let p = cx.place_arg(a, "RemotePort")?;
+    cx.store(&p, Value::Num(port as f32))?;
     Ok(Done::Next)
 }
 

@@ -63,6 +63,12 @@ pub(crate) struct Shared {
     pub sockets: Box<dyn Sockets>,
     /// The mechanical units `DeactUnit` deactivated (folded names).
     pub inactive_units: Vec<String>,
+    /// The configuration (`WriteCfgData` changes it) and identity.
+    pub system: crate::world::System,
+    /// The controller's event log (`ErrWrite`), for `IError`.
+    pub event_log: Vec<crate::interrupts::LogEntry>,
+    /// FlexPendant applications `UIShow` opened.
+    pub ui_instances: u32,
     output: Box<dyn Output>,
     /// Each task's robot, by task index.
     pub robots: Vec<Option<Box<dyn Robot>>>,
@@ -205,6 +211,9 @@ impl Controller {
                 sync: Sync::default(),
                 files: world.files,
                 inactive_units: Vec::new(),
+                ui_instances: 0,
+                event_log: Vec::new(),
+                system: config.system.clone(),
                 open: Default::default(),
                 pendant: world.pendant,
                 sockets: world.sockets,

@@ -278,6 +278,25 @@ impl Machine {
                 self.interrupts.signal_changed(&name, value);
             }
         }
+        while self.log_seen < sh.event_log.len() {
+            if let Some(e) = sh.event_log.get(self.log_seen) {
+                self.interrupts.logged(self.log_seen, e);
+            }
+            self.log_seen += 1;
+        }
+        if !self.interrupts.pers.is_empty() {
+            let changed: Vec<(usize, Value)> = self
+                .interrupts
+                .pers
+                .iter()
+                .enumerate()
+                .filter_map(|(i, w)| {
+                    let now = self.get(sh, &w.place)?;
+                    (*now != w.last).then(|| (i, now.clone()))
+                })
+                .collect();
+            self.interrupts.pers_changed(&changed);
+        }
         self.interrupts.has_pending() && !self.interrupts.disabled && !self.in_trap()
     }
 

@@ -240,6 +240,8 @@ pub struct Machine {
     pub(crate) state: TaskState,
     /// The signal events seen so far ([`Shared::events`]).
     pub(crate) events_seen: usize,
+    /// The event log entries this task's interrupts have seen.
+    pub(crate) log_seen: usize,
     /// In synchronized movement (`SyncMoveOn`).
     pub(crate) sync_move: Option<Vec<String>>,
     /// A fault a debugger was shown before it ends the task.
@@ -282,6 +284,7 @@ impl Machine {
             booked: Vec::new(),
             state: TaskState::Idle,
             events_seen: shared.events.len(),
+            log_seen: shared.event_log.len(),
             sync_move: None,
             pending: None,
             evaluated: None,

@@ -118,8 +118,10 @@ impl Machine {
                                     sh.limits.max_steps
                                 )));
                             }
-                            let may_interrupt =
-                                self.events_seen < sh.events.len() || self.interrupts.has_pending();
+                            let may_interrupt = self.events_seen < sh.events.len()
+                                || self.log_seen < sh.event_log.len()
+                                || self.interrupts.has_pending()
+                                || !self.interrupts.pers.is_empty();
                             if may_interrupt && self.interrupt_due(sh) {
                                 pc -= 1;
                                 save!();
@@ -644,9 +646,7 @@ impl Machine {
                 }
                 Op::Fail(i) => {
                     return match code.failures.get(*i as usize) {
-                        Some(Failure::Unknown(name)) => invalid(format!(
-                            "`{name}` is not declared in the task (nor a built-in the catalogue knows)"
-                        )),
+                        Some(Failure::Unknown(name)) => invalid(self.prog.undeclared(name)),
                         Some(Failure::Unsupported(name)) => {
                             fault(FaultKind::Unsupported(name.clone()))
                         }

@@ -74,6 +74,9 @@ pub(crate) struct OperatorWait {
     /// Where the answer goes; `None`: it is the result of the function
     /// that asked.
     pub to: Option<Place>,
+    /// A second answer stored with the first (`UIListView`'s `\Result`:
+    /// the button pressed after choosing an item).
+    pub also: Option<(Place, Value)>,
     /// `\DIBreak`, `\DOBreak`: the signal, the value that breaks, and
     /// the error.
     pub breaks: Vec<(String, SignalTest, &'static str)>,
@@ -224,10 +227,15 @@ impl Machine {
                 }
             }
             WaitKind::Semaphore(p) => self.store(sh, p, Value::Bool(true))?,
-            WaitKind::Operator(o) => match &o.to {
-                Some(p) => self.store(sh, p, o.answer.clone())?,
-                None => self.vals.push(o.answer.clone()),
-            },
+            WaitKind::Operator(o) => {
+                if let Some((p, v)) = &o.also {
+                    self.store(sh, p, v.clone())?;
+                }
+                match &o.to {
+                    Some(p) => self.store(sh, p, o.answer.clone())?,
+                    None => self.vals.push(o.answer.clone()),
+                }
+            }
             WaitKind::Sync {
                 sync_move: Some(on),
                 ..

@@ -10,6 +10,7 @@
 //! | the operator at the FlexPendant | [`Pendant`] | [`ScriptedOperator`]: [`crate::Config::answers`] |
 //! | sockets | [`Sockets`] | [`EmptyNetwork`]: nobody answers (`rapid run`: the host's) |
 //! | printed lines (`TPWrite`, `ErrWrite`) | [`crate::Output`] | the caller's sink |
+//! | the configuration and identity (`ReadCfgData`, `GetSysInfo`) | [`System`] | [`crate::Config::system`]: the backup's `SYSPAR` files and `BACKINFO` |
 
 mod arm;
 mod files;
@@ -17,6 +18,7 @@ mod io;
 mod pendant;
 mod robot;
 mod sockets;
+mod system;
 
 pub use arm::ArmRobot;
 pub use files::{FileError, FileKind, FileSystem, MemoryFs, SandboxFs};
@@ -27,6 +29,7 @@ pub use robot::{
     RobotError, Speed, Tool, WObj, Zone,
 };
 pub use sockets::{EmptyNetwork, NoSockets, SocketError, SocketState, Sockets};
+pub use system::{CfgError, CfgValue, SYS_INFO_DEFAULTS, SysInfo, System};
 
 use crate::{Config, Output};
 

@@ -1,6 +1,7 @@
 //! Sockets (`SocketCreate`, `SocketConnect`, `SocketBind`,
 //! `SocketListen`, `SocketAccept`, `SocketSend`, `SocketReceive`,
-//! `SocketClose`, `SocketGetStatus`), behind [`Sockets`]. [`NoSockets`]
+//! `SocketClose`, `SocketGetStatus`; UDP: `SocketCreate \UDP`,
+//! `SocketSendTo`, `SocketReceiveFrom`), behind [`Sockets`]. [`NoSockets`]
 //! (the default) has none: the instructions are not supported in the
 //! simulation; `rapid run` gives real sockets of the host.
 //!
@@ -78,6 +79,27 @@ pub trait Sockets: Send {
     ) -> Result<Vec<u8>, SocketError>;
     fn close(&mut self, socket: u32) -> Result<(), SocketError>;
     fn state(&self, socket: u32) -> SocketState;
+    /// A UDP datagram to `address:port` (a socket not bound yet is bound
+    /// to any free port first).
+    fn send_to(
+        &mut self,
+        _socket: u32,
+        _address: &str,
+        _port: u32,
+        _data: &[u8],
+    ) -> Result<(), SocketError> {
+        Err(SocketError::Unsupported)
+    }
+    /// The next UDP datagram (at most `max` bytes of it; the rest is
+    /// lost, as on the controller) and its sender's address and port.
+    fn receive_from(
+        &mut self,
+        _socket: u32,
+        _max: usize,
+        _timeout: f64,
+    ) -> Result<(Vec<u8>, String, u32), SocketError> {
+        Err(SocketError::Unsupported)
+    }
     /// The real seconds the sockets waited since this was last asked (the
     /// simulated clock moves by as much).
     fn waited(&mut self) -> f64 {
@@ -122,12 +144,15 @@ impl Sockets for NoSockets {
 /// A controller on a network where nobody answers: sockets are created,
 /// bound and listen, but a connection never comes and a connect gets no
 /// answer, each after its whole `\Time` (simulated); a receive or send on
-/// a socket that is not connected fails as closed. The default of
+/// a socket that is not connected fails as closed. A UDP datagram is sent
+/// (nobody hears it) and none comes. The default of
 /// [`super::World::simulated`]: deterministic, and a program that waits
 /// for its peer waits as it would in a cell with the peer switched off.
 #[derive(Debug, Default)]
 pub struct EmptyNetwork {
     states: Vec<SocketState>,
+    /// The UDP sockets' numbers.
+    udp: Vec<u32>,
 }
 
 impl EmptyNetwork {
@@ -150,11 +175,12 @@ impl EmptyNetwork {
 
 impl Sockets for EmptyNetwork {
     fn create(&mut self, udp: bool) -> Result<u32, SocketError> {
-        if udp {
-            return Err(SocketError::Unsupported);
-        }
         self.states.push(SocketState::Created);
-        Ok(self.states.len() as u32)
+        let id = self.states.len() as u32;
+        if udp {
+            self.udp.push(id);
+        }
+        Ok(id)
     }
     fn connect(
         &mut self,
@@ -164,13 +190,45 @@ impl Sockets for EmptyNetwork {
         timeout: f64,
     ) -> Result<(), SocketError> {
         self.slot(socket)?;
+        if self.udp.contains(&socket) {
+            return Err(SocketError::Failed(
+                "a UDP socket does not connect".to_owned(),
+            ));
+        }
         Err(self.nobody(timeout, &format!("no connection to {address}:{port}")))
+    }
+    fn send_to(&mut self, socket: u32, _: &str, _: u32, _: &[u8]) -> Result<(), SocketError> {
+        self.slot(socket)?;
+        if !self.udp.contains(&socket) {
+            return Err(SocketError::Failed(
+                "the socket is not a UDP socket".to_owned(),
+            ));
+        }
+        Ok(())
+    }
+    fn receive_from(
+        &mut self,
+        socket: u32,
+        _: usize,
+        timeout: f64,
+    ) -> Result<(Vec<u8>, String, u32), SocketError> {
+        if *self.slot(socket)? != SocketState::Bound || !self.udp.contains(&socket) {
+            return Err(SocketError::Failed(
+                "the socket is not a bound UDP socket".to_owned(),
+            ));
+        }
+        Err(self.nobody(timeout, "no datagram came"))
     }
     fn bind(&mut self, socket: u32, _: &str, _: u32) -> Result<(), SocketError> {
         *self.slot(socket)? = SocketState::Bound;
         Ok(())
     }
     fn listen(&mut self, socket: u32) -> Result<(), SocketError> {
+        if self.udp.contains(&socket) {
+            return Err(SocketError::Failed(
+                "a UDP socket does not listen".to_owned(),
+            ));
+        }
         let s = self.slot(socket)?;
         if *s != SocketState::Bound {
             return Err(SocketError::Failed("the socket is not bound".to_owned()));
