@@ -217,11 +217,12 @@ export async function debugSteps(ctx) {
     await open("Square.mod");
     await goTo(squareBreak, 5);
     await runCommand("Debug: Toggle Breakpoint");
-    await runCommand("Debug: Select and Start Debugging");
+    // the quick access of launch configurations ("debug " in the palette)
+    await page.keyboard.press("F1");
     const input = page.locator(".quick-input-widget input");
     await input.waitFor({ state: "visible" });
-    await input.fill("Run square");
-    await page.waitForTimeout(300);
+    await input.fill("debug Run square");
+    await page.locator(".quick-input-widget .monaco-list-row", { hasText: "Run square" }).first().waitFor({ state: "visible" });
     await page.keyboard.press("Enter");
     await page.locator(".debug-toolbar").waitFor({ state: "visible" });
     await waitFor("the call stack", async () => {
