@@ -352,6 +352,130 @@ fn a_launch_with_plot_writes_the_path_page_when_the_program_ends() {
     );
 }
 
+const SQUARE: &str = "MODULE Square
+  CONST robtarget pCorner := [[500, 0, 400], [0, 0, 1, 0], [0, 0, 0, 0], [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]];
+  PROC main()
+    MoveL pCorner, v200, fine, tool0;
+    MoveL Offs(pCorner, 100, 0, 0), v200, fine, tool0;
+    MoveL Offs(pCorner, 100, 100, 0), v200, fine, tool0;
+    TPWrite \"done\";
+  ENDPROC
+ENDMODULE
+";
+
+/// `robot` names the arm (as `rapid run --robot`): the moves take time and
+/// the path page follows the debugger: at each stop the page, its script
+/// and a `rapidPath` event give the moves so far with the arm, the time,
+/// the line and the move that brought the robot there.
+#[test]
+fn the_path_page_follows_the_debugger_with_the_robot_the_launch_names() {
+    let dir = scratch("dap-follow");
+    write(&dir, &[("Square.mod", SQUARE)]);
+    let path = std::fs::canonicalize(dir.join("Square.mod")).expect("the module");
+    let path = path.to_string_lossy().into_owned();
+    let page = dir.join("square.html");
+    let mut c = Client::start();
+    c.ok("initialize", json!({"adapterID": "rapid"}));
+    c.event("initialized");
+    c.ok(
+        "launch",
+        json!({"program": path, "plot": page.to_string_lossy(), "robot": "IRB 1200-7/0.7"}),
+    );
+    c.ok(
+        "setBreakpoints",
+        json!({"source": {"path": path}, "breakpoints": [{"line": 6}]}),
+    );
+    c.ok("configurationDone", json!({}));
+    assert_eq!(c.event("stopped")["reason"], "breakpoint");
+    let first = c.event("rapidPath");
+    assert_eq!(first["page"], page.to_string_lossy().as_ref());
+    let state = &first["state"];
+    assert_eq!(state["at"], json!({"file": path, "line": 6}));
+    // Two moves made: the robot is at the end of the second (line 5).
+    assert_eq!(state["moves"].as_array().map(Vec::len), Some(2));
+    assert_eq!(state["current"], 1);
+    assert_eq!(state["moves"][1]["line"], 5);
+    let now = state["now"].as_f64().expect("the time");
+    assert_eq!(now, state["moves"][1]["end"].as_f64().expect("its end"));
+    // 100 mm at 200 mm/s take more than half a second.
+    assert!(now > 0.5, "{now}");
+    assert_eq!(state["robot"]["name"], "IRB 1200-7/0.7");
+    assert!(state["moves"][1]["arm"].is_array(), "{state}");
+    assert_eq!(state["ended"], false);
+    let html = std::fs::read_to_string(&page).expect("the page at the stop");
+    assert!(html.contains(r#"const live = "square.live.js";"#));
+    assert!(html.contains(r#""current":1"#), "the page holds the stop");
+    let live = std::fs::read_to_string(dir.join("square.live.js")).expect("the script");
+    assert!(
+        live.starts_with("rapidFollow({") && live.contains(r#""line":6"#),
+        "{live}"
+    );
+
+    // A step: the next state, one move on.
+    c.ok("next", json!({"threadId": 1}));
+    c.event("stopped");
+    let next = c.event("rapidPath");
+    let state = &next["state"];
+    assert_eq!(
+        state["seq"].as_u64(),
+        first["state"]["seq"].as_u64().map(|n| n + 1)
+    );
+    assert_eq!(state["at"]["line"], 7);
+    assert_eq!(
+        (state["current"].clone(), state["moves"][2]["line"].clone()),
+        (json!(2), json!(6))
+    );
+    assert!(state["now"].as_f64() > Some(now));
+
+    // The end: the last state, and the page the program leaves.
+    c.ok("continue", json!({"threadId": 1}));
+    assert_eq!(c.event("exited")["exitCode"], 0);
+    let last = c.event("rapidPath");
+    assert_eq!(
+        (last["state"]["ended"].clone(), last["state"]["at"].clone()),
+        (json!(true), Value::Null)
+    );
+    c.event("terminated");
+    c.ok("disconnect", json!({}));
+    let html = std::fs::read_to_string(&page).expect("the page");
+    assert!(html.contains(r#""ended":true"#) && html.contains(r#""arm":[[0.0,0.0,0.0]"#));
+}
+
+/// A `robot` no model has fails the launch; without one, a note says the
+/// moves take no time.
+#[test]
+fn a_launch_names_a_robot_that_is_modelled_or_gets_a_note() {
+    let dir = scratch("dap-robot");
+    write(&dir, &[("Square.mod", SQUARE)]);
+    let path = dir.join("Square.mod").to_string_lossy().into_owned();
+    let mut c = Client::start();
+    c.ok("initialize", json!({"adapterID": "rapid"}));
+    let bad = c.request("launch", json!({"program": path, "robot": "IRB 99"}));
+    assert_eq!(bad["success"], false);
+    let message = bad["message"].as_str().unwrap_or_default();
+    assert!(
+        message.starts_with("launch: robot: `IRB 99` is not a modelled robot"),
+        "{message}"
+    );
+    c.ok("launch", json!({"program": path}));
+    c.ok("configurationDone", json!({}));
+    assert_eq!(c.event("exited")["exitCode"], 0);
+    let said: Vec<&str> = c
+        .events
+        .iter()
+        .filter(|e| e["event"] == "output")
+        .filter_map(|e| e["body"]["output"].as_str())
+        .collect();
+    assert_eq!(
+        said,
+        [
+            "done\n",
+            "rapid: dap: note: no robot is named (MOC.cfg, rapid.toml [controller] robot or --robot): moves take no time and reach every target\n"
+        ]
+    );
+    c.ok("disconnect", json!({}));
+}
+
 const CELL_SYS: &str = "SYS:CFG_1.0:6:0::
 #
 CAB_TASKS:

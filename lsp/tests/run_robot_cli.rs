@@ -154,3 +154,65 @@ fn a_moc_cfg_beside_the_modules_names_the_robot() {
     assert_eq!((code, err.as_str()), (Some(0), ""), "{out}");
     assert!(out.starts_with("cycle time of main: 4.992 s\n"), "{out}");
 }
+
+/// The controller's configuration beside the modules (`MOC.cfg` and
+/// `EIO.cfg` in their folder, or in a `SYSPAR/` folder there) counts
+/// however the module is named: `Cell.mod`, `./Cell.mod`, its absolute
+/// path or the folder, for `rapid run` and `rapid check` alike.
+#[test]
+fn configuration_beside_the_modules_counts_however_the_module_is_named() {
+    const MODULE: &str = "MODULE Cell
+  CONST robtarget p10 := [[374,0,500],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+  CONST robtarget far := [[1374,0,500],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+  PROC main()
+    MoveJ p10, v1000, fine, tool0;
+    SetDO do1, 1;
+  ENDPROC
+  PROC away()
+    MoveJ far, v1000, fine, tool0;
+  ENDPROC
+ENDMODULE
+";
+    const MOC: &str = "MOC:CFG_1.0:6:0::\n#\nROBOT:\n\n      -name \"ROB_1\" -use_robot_type \"ROB1_120_0.58_3\"\n";
+    const EIO: &str =
+        "EIO:CFG_1.0:6:1::\n#\nEIO_SIGNAL:\n\n      -Name \"do1\" -SignalType \"DO\"\n";
+    for folder in ["", "SYSPAR/"] {
+        let dir = scratch(&format!("run-robot-named-{}", folder.len()));
+        let (moc, eio) = (format!("{folder}MOC.cfg"), format!("{folder}EIO.cfg"));
+        write(
+            &dir,
+            &[
+                ("Cell.mod", MODULE),
+                (moc.as_str(), MOC),
+                (eio.as_str(), EIO),
+            ],
+        );
+        let absolute = dir.join("Cell.mod").display().to_string();
+        for named in ["Cell.mod", "./Cell.mod", absolute.as_str(), "."] {
+            let shown = if named == absolute { named } else { "Cell.mod" };
+            // MOC.cfg names the robot: the move takes its time; EIO.cfg
+            // declares do1: no note that it is taken from its use.
+            let (code, out, err) = run(&dir, &["run", named, "--report"]);
+            assert_eq!(
+                (code, err.as_str()),
+                (Some(0), ""),
+                "{folder}{named}: {out}"
+            );
+            assert!(
+                out.starts_with("cycle time of main: 0.452 s\n"),
+                "{folder}{named}: {out}"
+            );
+            assert!(out.contains(&format!("(MoveJ p10, {shown}:5)")), "{out}");
+            // `rapid check` knows the robot (`far` is out of its reach)
+            // and the signal (no I103).
+            let (code, out, err) = run(&dir, &["check", "--format", "concise", named]);
+            assert_eq!(code, Some(1), "{folder}{named}: {out}{err}");
+            let codes: Vec<&str> = out
+                .lines()
+                .filter_map(|l| l.split_once(": ")?.1.split_once('[')?.1.split_once(']'))
+                .map(|(c, _)| c)
+                .collect();
+            assert_eq!(codes, ["E601"], "{folder}{named}: {out}");
+        }
+    }
+}

@@ -11,8 +11,9 @@ crate::declare_rule! {
     /// no such configuration file was found for the task, an unknown name passed
     /// where a signal (or a `mecunit`) is expected is reported once, at this low
     /// severity, instead of as an unknown name. Give the configuration (put
-    /// `EIO.cfg` / `MOC.cfg` next to the modules, or name its folder in
-    /// `rapid.toml`) to have these names checked; with it, an unknown name is
+    /// `EIO.cfg` / `MOC.cfg` next to the modules or in a `SYSPAR` folder
+    /// beside them, or name its folder in `rapid.toml`) to have these names
+    /// checked; with it, an unknown name is
     /// reported as `unresolved-name`.
     ///
     /// ### Why

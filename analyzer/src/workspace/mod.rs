@@ -758,11 +758,16 @@ pub fn program_modules(path: &str, xml: &str) -> Vec<String> {
 /// to its own tasks (the `HOME/` modules' too), never to another backup's,
 /// not even one kept inside it; a configuration elsewhere applies to the
 /// tasks below its folder, but not to a backup below it, which a controller
-/// configured with its own.
+/// configured with its own. A `SYSPAR/` (or `BACKINFO/`) folder beside
+/// modules outside a backup is their controller's: it applies to the
+/// modules of its folder.
 pub fn config_applies(path: &str, key: &str) -> bool {
     let backup = crate::layout::backup_root(key);
     if let Some(root) = home::syspar_root(path).or_else(|| home::backinfo_root(path)) {
-        return backup == Some(root);
+        return match backup {
+            Some(b) => b == root,
+            None => crate::layout::is_within(key, root) && crate::layout::is_within(root, key),
+        };
     }
     let root = config_root(path);
     crate::layout::is_within(key, root)

@@ -4,6 +4,18 @@ use super::*;
 fn configuration_applies_below_its_root() {
     assert_eq!(config_root("b/SYSPAR/EIO.cfg"), "b");
     assert_eq!(config_root("proj/EIO.cfg"), "proj");
+    assert!(config_applies("b/SYSPAR/EIO.cfg", "b/RAPID/TASK1"));
+    assert!(!config_applies(
+        "b/SYSPAR/EIO.cfg",
+        "b/RAPID/TASK1/x/RAPID/TASK1"
+    ));
+    // Beside modules outside a backup: their folder's, not a subfolder's.
+    assert!(config_applies("cell/SYSPAR/EIO.cfg", "cell"));
+    assert!(config_applies("SYSPAR/MOC.cfg", ""));
+    assert!(!config_applies("cell/SYSPAR/EIO.cfg", "cell/old"));
+    assert!(!config_applies("cell/SYSPAR/EIO.cfg", "cell2"));
+    assert!(config_applies("MOC.cfg", ""));
+    assert!(config_applies("cell/EIO.cfg", "cell/sub"));
 }
 
 #[test]

@@ -40,3 +40,7 @@ end, {
   complete = 'file',
   desc = 'Show what changed between a backup and the project (or two backups, or git revisions): rapid diff',
 })
+
+vim.api.nvim_create_user_command('RapidShowPath', function()
+  require('rapid.dap').show()
+end, { desc = "Open the robot's path of the current (or last) RAPID debug session in the browser" })

@@ -740,4 +740,11 @@ dofile(vim.fs.dirname(debug.getinfo(1, 'S').source:sub(2)) .. '/diff.lua')({
   rapid_bin = rapid_bin,
 })
 
+-- The robot's path following the debugger (nvim-dap), in a file of its own
+dofile(vim.fs.dirname(debug.getinfo(1, 'S').source:sub(2)) .. '/dap.lua')({
+  check = check,
+  expect = expect,
+  timeout = TIMEOUT,
+})
+
 finish()

@@ -4,8 +4,11 @@
 // starts, stops there, shows the routine's data in the Variables view, steps,
 // continues and ends, with the program's output in the Debug Console. Then
 // "Show path" opens the path of that last run in a webview, and of a routine
-// that has not run yet (run then). Expectations come from the fixture's own
-// `!>` output lines and from `rapid run --trace`.
+// that has not run yet (run then). Last, a session with a robot (`robot` in
+// its launch configuration) stops at a breakpoint: the path opens beside the
+// editor with the arm at that moment and the move that brought it there,
+// and follows a step. Expectations come from the fixture's own `!>` output
+// lines and from `rapid run --trace`.
 import { spawnSync } from "node:child_process";
 import * as fs from "node:fs";
 import * as path from "node:path";
@@ -20,6 +23,9 @@ const SQUARE = `MODULE Square
   ENDPROC
 ENDMODULE
 `;
+
+/** The robot of the session that follows the path (it reaches the square). */
+const ROBOT = "IRB 1200-7/0.7";
 
 /** Runs the debugger's and the path view's checks; `ctx` holds run.mjs's helpers. */
 export async function debugSteps(ctx) {
@@ -47,6 +53,14 @@ export async function debugSteps(ctx) {
       version: "0.2.0",
       configurations: [
         { type: "rapid", request: "launch", name: "Run motion", program: "${workspaceFolder}/motion.mod", entry: "main" },
+        {
+          type: "rapid",
+          request: "launch",
+          name: "Run square",
+          program: "${workspaceFolder}/Square.mod",
+          entry: "square",
+          robot: ROBOT,
+        },
       ],
     }),
   );
@@ -63,6 +77,15 @@ export async function debugSteps(ctx) {
     return JSON.parse(fs.readFileSync(trace, "utf8")).moves.length;
   };
   const motionMoves = movesOf(path.join(ws, "motion.mod"), "main");
+  // the square's moves with the robot: when each ends
+  const squareTrace = path.join(tmp, "square-robot.json");
+  const ran = spawnSync(
+    rapid,
+    ["run", path.join(ws, "Square.mod"), "--entry", "square", "--robot", ROBOT, "--trace", squareTrace],
+    { encoding: "utf8" },
+  );
+  if (ran.status !== 0) throw new Error(`rapid run Square.mod --robot: ${ran.stderr}`);
+  const squareEnds = JSON.parse(fs.readFileSync(squareTrace, "utf8")).moves.map((m) => m.end);
   const squareMoves = movesOf(path.join(ws, "Square.mod"), "square");
 
   await page.goto(`http://127.0.0.1:${port}/?folder=${encodeURIComponent(ws)}`);
@@ -171,5 +194,54 @@ export async function debugSteps(ctx) {
       return count === `${squareMoves} moves` || `it says ${JSON.stringify(count)}`;
     });
     await page.screenshot({ path: path.join(out, "vscode-show-path-square.png") });
+  });
+
+  const squareLines = SQUARE.split("\n");
+  const squareBreak = squareLines.findIndex((l) => l.includes("Offs(pCorner, 100, 100, 0)")) + 1;
+  const squareTop = () => page.locator(".debug-call-stack .monaco-list-row", { hasText: "square" }).first();
+  const followed = async (what, line, end) => {
+    const view = pathView();
+    await waitFor(what, async () => {
+      const here = await view.locator("#current").innerText({ timeout: 1000 }).catch(() => "");
+      const now = await view.locator("#now").innerText({ timeout: 1000 }).catch(() => "");
+      return (
+        (here.includes(`Square.mod:${line} at ${end.toFixed(3)} s`) &&
+          here.includes(`the last move: MoveL`) &&
+          here.includes(`Square.mod:${line - 1})`) &&
+          now.startsWith(`${end.toFixed(3)} s of ${end.toFixed(3)} s: MoveL`)) ||
+        `the page says ${JSON.stringify(here)} / ${JSON.stringify(now)}`
+      );
+    });
+  };
+  await step(`the path follows the debugger: the arm at the breakpoint (Square.mod:${squareBreak}, ${squareEnds[1].toFixed(3)} s), then after a step`, async () => {
+    await open("Square.mod");
+    await goTo(squareBreak, 5);
+    await runCommand("Debug: Toggle Breakpoint");
+    // the quick access of launch configurations ("debug " in the palette)
+    await page.keyboard.press("F1");
+    const input = page.locator(".quick-input-widget input");
+    await input.waitFor({ state: "visible" });
+    await input.fill("debug Run square");
+    await page.locator(".quick-input-widget .monaco-list-row", { hasText: "Run square" }).first().waitFor({ state: "visible" });
+    await page.keyboard.press("Enter");
+    await page.locator(".debug-toolbar").waitFor({ state: "visible" });
+    await waitFor("the call stack", async () => {
+      const text = (await squareTop().innerText().catch(() => "")).replace(/\s+/g, " ");
+      return new RegExp(`Square\\.mod\\s*${squareBreak}:`).test(text) || `top frame: ${text}`;
+    });
+    // beside the editor, the robot at the breakpoint: two moves made
+    await page.locator(".tabs-container .tab", { hasText: "Path: square" }).first().waitFor({ state: "visible" });
+    await followed("the path at the breakpoint", squareBreak, squareEnds[1]);
+    const view = pathView();
+    assert(await view.locator("#timebar").isVisible(), "no time bar: the arm is not drawn");
+    assert((await view.locator("#count").innerText()) === "2 moves", "not the two moves made so far");
+    await page.screenshot({ path: path.join(out, "vscode-debug-path-breakpoint.png") });
+    // a step: the page follows, one move on
+    await page.locator(".monaco-editor textarea").first().focus();
+    await page.keyboard.press("F10");
+    await followed("the path after the step", squareBreak + 1, squareEnds[2]);
+    await page.screenshot({ path: path.join(out, "vscode-debug-path-step.png") });
+    await page.keyboard.press("F5");
+    await page.locator(".debug-toolbar").waitFor({ state: "hidden" });
   });
 }

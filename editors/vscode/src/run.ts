@@ -1,6 +1,9 @@
 // Running RAPID on the simulated controller: the `rapid` debugger (`rapid
 // dap`) and "RAPID: Show path", which draws the motion of a routine's last
-// run (the page `rapid run --plot` writes) in a webview.
+// run (the page `rapid run --plot` writes) in a webview. While a debug
+// session runs, the webview follows it: at each stop the adapter sends the
+// page's state (`rapidPath`: the moves so far, the arm at that time, the
+// move that brought the robot there), which the page redraws.
 import { execFile } from "node:child_process";
 import * as crypto from "node:crypto";
 import * as fs from "node:fs";
@@ -17,6 +20,8 @@ interface LastRun {
 
 const RUNS_KEY = "rapid.lastRuns";
 let panel: vscode.WebviewPanel | undefined;
+/// The debug session the panel follows, if any.
+let panelSession: string | undefined;
 let runLog: vscode.OutputChannel | undefined;
 
 /// Registers the debugger and "Show path"; `rapid` names the binary.
@@ -52,6 +57,11 @@ export function registerRun(context: vscode.ExtensionContext, rapid: () => strin
         return config;
       },
     }),
+    vscode.debug.onDidReceiveDebugSessionCustomEvent((e) => {
+      if (e.session.type === "rapid" && e.event === "rapidPath") {
+        followPath(e.session, e.body as PathEvent);
+      }
+    }),
     vscode.debug.onDidTerminateDebugSession((session) => {
       const c = session.configuration;
       if (session.type === "rapid" && typeof c.plot === "string" && fs.existsSync(c.plot)) {
@@ -60,6 +70,31 @@ export function registerRun(context: vscode.ExtensionContext, rapid: () => strin
     }),
     vscode.commands.registerCommand("rapid.showPath", () => showPath(context, pages, rapid)),
   );
+}
+
+/// What the adapter sends at each stop: the page it rewrote and its state.
+interface PathEvent {
+  page: string;
+  state: { moves: unknown[] };
+}
+
+/// Keeps the panel at the debugger's stop: the state goes to the page the
+/// panel shows for this session, or the session's page opens beside the
+/// editor (the first stop after the robot moved, unless
+/// `rapid.debug.showPath` is off; a panel open for another run follows too).
+function followPath(session: vscode.DebugSession, event: PathEvent): void {
+  if (panel && panelSession === session.id) {
+    void panel.webview.postMessage(event.state);
+    return;
+  }
+  const open = vscode.workspace.getConfiguration("rapid").get<boolean>("debug.showPath", true);
+  if (!panel && !(open && event.state.moves.length > 0)) {
+    return;
+  }
+  if (!fs.existsSync(event.page)) {
+    return;
+  }
+  show(event.page, `Path: ${session.configuration.entry ?? "main"}`, session.id);
 }
 
 /// The page of a program's routine: one file per program and routine.
@@ -109,6 +144,20 @@ async function showPath(context: vscode.ExtensionContext, pages: string, rapid: 
   }
   const entry = routine?.name ?? "main";
   const file = doc.uri.fsPath;
+  // A debug session of this routine: its page, kept at its stops.
+  const session = vscode.debug.activeDebugSession;
+  const c = session?.configuration;
+  if (
+    session?.type === "rapid" &&
+    typeof c?.plot === "string" &&
+    typeof c.program === "string" &&
+    (c.entry ?? "main").toLowerCase() === entry.toLowerCase() &&
+    contains(c.program, file) &&
+    fs.existsSync(c.plot)
+  ) {
+    show(c.plot, `Path: ${entry}`, session.id);
+    return;
+  }
   const last = context.workspaceState
     .get<LastRun[]>(RUNS_KEY, [])
     .filter((r) => r.entry.toLowerCase() === entry.toLowerCase() && contains(r.program, file))
@@ -147,7 +196,9 @@ function contains(program: string, file: string): boolean {
   return rel === "" || (!rel.startsWith("..") && !path.isAbsolute(rel));
 }
 
-function show(page: string, title: string): void {
+/// Shows `page` in the panel (beside the editor), following the debug
+/// session `session` when given.
+function show(page: string, title: string, session?: string): void {
   if (!panel) {
     panel = vscode.window.createWebviewPanel(
       "rapid.path",
@@ -157,9 +208,11 @@ function show(page: string, title: string): void {
     );
     panel.onDidDispose(() => {
       panel = undefined;
+      panelSession = undefined;
     });
   }
   panel.title = title;
+  panelSession = session;
   // the page is self-contained: its data and script are inline
   panel.webview.html = fs.readFileSync(page, "utf8");
   panel.reveal(undefined, true);

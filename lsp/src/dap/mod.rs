@@ -6,9 +6,12 @@
 //! by default; a test routine too), `task` (run only that task), `test`
 //! (load the assertion module as `rapid test` does), `stopOnEntry`,
 //! `signals` (`["di1=1@2.5"]`, as `rapid run --set`), `maxSteps` and
-//! `maxTime` (the budgets, as `rapid run`'s), `noDebug`, `plot` (a file:
-//! when the program ends, the page that `rapid run --plot` writes, drawing
-//! the run's motion; the VS Code extension's "Show path" opens it).
+//! `maxTime` (the budgets, as `rapid run`'s), `answers` (the operator's, as
+//! `rapid run --answers`), `robot` (the robot model every motion task moves,
+//! as `rapid run --robot`; an unknown one fails the launch), `noDebug`,
+//! `plot` (a file: the page that `rapid run --plot` writes, drawing the
+//! run's motion with the arm, kept at each stop: [`path`]; the editors'
+//! "Show path" opens it and follows the `rapidPath` events).
 //!
 //! The adapter drives the controller itself, in slices, between messages
 //! (a thread only reads the input): it runs until the next event (a
@@ -20,6 +23,7 @@
 //! `ErrWrite` lines are output events.
 
 mod debugger;
+mod path;
 mod wire;
 
 use std::collections::HashMap;
@@ -45,8 +49,10 @@ struct Launch {
     options: RunOptions,
     stop_on_entry: bool,
     debug: bool,
-    /// Where to write the path page at the end, and its title.
-    plot: Option<(std::path::PathBuf, String)>,
+    /// The path page to keep at each stop and at the end.
+    plot: Option<path::PathPage>,
+    /// Said once the program runs (a motion task without a robot).
+    notes: Vec<String>,
 }
 
 struct Session {
@@ -65,7 +71,9 @@ struct Session {
     units: HashMap<String, Vec<String>>,
     inspector: Inspector,
     sandbox: Option<Sandbox>,
-    plot: Option<(std::path::PathBuf, String)>,
+    plot: Option<path::PathPage>,
+    /// Said at the end of a program that moved (as `rapid run` says them).
+    notes: Vec<String>,
 }
 
 pub fn run(_args: DapArgs) -> ExitCode {
@@ -100,6 +108,7 @@ pub fn run(_args: DapArgs) -> ExitCode {
         inspector: Inspector::default(),
         sandbox: None,
         plot: None,
+        notes: Vec::new(),
     };
     session.serve(&rx);
     session.end();
@@ -296,6 +305,7 @@ impl Session {
                 }
                 self.controller = Some(c);
                 self.plot = launch.plot;
+                self.notes = launch.notes;
                 let paths: Vec<String> = self.breakpoints.keys().cloned().collect();
                 for p in paths {
                     self.apply_breakpoints(&p);
@@ -367,6 +377,9 @@ impl Session {
                 let mut body = body;
                 body["threadId"] = json!(thread);
                 body["allThreadsStopped"] = json!(true);
+                if let Some(c) = &self.controller {
+                    show_path(&self.writer, &mut self.plot, c, Some(task));
+                }
                 self.writer.event("stopped", body);
             }
             Event::Ended => self.finish_program(false),
@@ -428,12 +441,12 @@ impl Session {
         }
         self.running = false;
         let report = crate::run::report_of(&c);
-        if let Some((file, title)) = &self.plot {
-            let page = crate::run::trace::html(&report.moves, title);
-            if let Err(e) = std::fs::write(file, page) {
+        show_path(&self.writer, &mut self.plot, &c, None);
+        if report.move_count > 0 {
+            for note in &self.notes {
                 self.writer.event(
                     "output",
-                    json!({"category": "stderr", "output": format!("{}: {e}\n", file.display())}),
+                    json!({"category": "console", "output": format!("rapid: dap: {note}\n")}),
                 );
             }
         }
@@ -456,6 +469,26 @@ impl Session {
         }
         self.running = false;
         self.sandbox = None;
+    }
+}
+
+/// Keeps the path page at the stop of task `task` (`None`: the end) and
+/// tells the client (`rapidPath`), when the launch asked for a page.
+fn show_path(
+    writer: &Writer,
+    plot: &mut Option<path::PathPage>,
+    c: &Controller,
+    task: Option<usize>,
+) {
+    let Some(page) = plot else {
+        return;
+    };
+    match page.write(c, task) {
+        Ok(body) => writer.event("rapidPath", body),
+        Err(e) => writer.event(
+            "output",
+            json!({"category": "stderr", "output": format!("{e}\n")}),
+        ),
     }
 }
 
@@ -506,10 +539,14 @@ fn prepare(args: &Value) -> Result<Launch, String> {
         ));
     }
     let defaults = rapid_runtime::Limits::default();
+    let robot = args["robot"].as_str().filter(|r| !r.trim().is_empty());
+    let notes = crate::run::robot::notes(&loaded.tasks, robot)
+        .map_err(|e| format!("launch: {}", e.trim_start_matches("--")))?;
     let plot = args["plot"].as_str().filter(|p| !p.is_empty()).map(|p| {
-        (
+        path::PathPage::new(
             std::path::PathBuf::from(p),
             format!("{} ({entry})", path.display()),
+            crate::run::robot::drawn_arm(&loaded.tasks, robot),
         )
     });
     Ok(Launch {
@@ -537,10 +574,11 @@ fn prepare(args: &Value) -> Result<Launch, String> {
                 terminal: false,
             },
             socket_map: Some(Vec::new()),
-            robot: args["robot"].as_str().map(str::to_owned),
+            robot: robot.map(str::to_owned),
         },
         stop_on_entry: args["stopOnEntry"].as_bool().unwrap_or(false),
         debug: !args["noDebug"].as_bool().unwrap_or(false),
         plot,
+        notes,
     })
 }

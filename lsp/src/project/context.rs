@@ -21,7 +21,7 @@ use rapid_analyzer::task::task_key;
 use rapid_analyzer::workspace::program_modules;
 
 use super::discover::{Discovery, Excluder, discover_in};
-use super::{Disk, Environment, Kind};
+use super::{Disk, Environment, Kind, Walked};
 
 /// The folders that hold the task of a file (named by `path`, as the
 /// analyzer names it).
@@ -129,7 +129,8 @@ pub fn task_context(
 }
 
 /// The files of the `deep` folders and their subfolders, and of the
-/// `shallow` folders themselves, on the disk.
+/// `shallow` folders themselves (with the configuration of their
+/// `SYSPAR/` or `BACKINFO/` folder, which is theirs), on the disk.
 pub fn discover_folders(deep: &[PathBuf], shallow: &[PathBuf], excluded: Excluder) -> Discovery {
     discover_folders_in(&Disk, deep, shallow, excluded)
 }
@@ -142,7 +143,23 @@ pub fn discover_folders_in(
     excluded: Excluder,
 ) -> Discovery {
     let mut out = discover_in(env, deep, excluded.clone(), None);
-    out.extend(discover_in(env, shallow, excluded, Some(1)));
+    out.extend(discover_in(env, shallow, excluded.clone(), Some(1)));
+    let config_folders: Vec<PathBuf> = shallow
+        .iter()
+        .flat_map(|dir| env.walk(dir, Some(1), &excluded))
+        .filter_map(|walked| match walked {
+            Walked::Entry(path, Kind::Folder) => Some(path),
+            _ => None,
+        })
+        .filter(|path| {
+            let name = path.file_name().unwrap_or_default().to_string_lossy();
+            name.eq_ignore_ascii_case("syspar") || name.eq_ignore_ascii_case("backinfo")
+        })
+        .collect();
+    let mut configs = discover_in(env, &config_folders, excluded, Some(1));
+    configs.files.clear();
+    configs.programs.clear();
+    out.extend(configs);
     out
 }
 

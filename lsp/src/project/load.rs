@@ -282,8 +282,12 @@ pub fn load_around(
     roots.retain(|r| seen.insert(r.clone()));
     let mut found = super::discover_in(env, &roots, Arc::new(|_, _| false), None);
     let listed = super::context::program_members(env, found.programs.iter());
+    // A file named is found again walking its folder, perhaps spelt
+    // otherwise (`Cell.mod` is `./Cell.mod` walking `.`): one file.
+    let mut have: std::collections::HashSet<String> =
+        found.files.iter().map(|f| env.name(f)).collect();
     for n in named.iter().chain(&listed) {
-        if !found.files.contains(n) {
+        if have.insert(env.name(n)) {
             found.files.push(n.clone());
         }
     }

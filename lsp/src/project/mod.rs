@@ -162,7 +162,8 @@ pub fn size_of(env: &dyn Environment, path: &Path) -> u64 {
 
 /// The disk, with files named as the paths given name them rather than
 /// by their real place: for `rapid run`, `rapid test` and `rapid dap`,
-/// whose reports show the paths the user typed.
+/// whose reports show the paths the user typed, without their `.`
+/// components ([`plain`]).
 pub struct DiskAsNamed;
 
 impl Environment for DiskAsNamed {
@@ -183,6 +184,22 @@ impl Environment for DiskAsNamed {
     }
 
     fn name(&self, path: &Path) -> String {
-        path.to_string_lossy().into_owned()
+        plain(path).to_string_lossy().into_owned()
+    }
+}
+
+/// `path` without its `.` components: `./Cell.mod`, `Cell.mod` and the
+/// `./Cell.mod` that walking `.` finds are one file, and `./MOC.cfg` is
+/// beside it (in the folder `""`, the task of `Cell.mod`). `..` stays: it
+/// cannot be resolved without the file system. `.` when nothing is left.
+pub fn plain(path: &Path) -> PathBuf {
+    let out: PathBuf = path
+        .components()
+        .filter(|c| *c != std::path::Component::CurDir)
+        .collect();
+    if out.as_os_str().is_empty() {
+        PathBuf::from(".")
+    } else {
+        out
     }
 }

@@ -305,3 +305,13 @@ fn a_latin1_file_name_and_text_are_read() {
     assert_eq!(key, "/p/Gr\u{fffd}n.mod");
     assert!(codes(&mut loaded, &key).is_empty());
 }
+
+#[test]
+fn paths_named_with_dots_are_one_file() {
+    let name = |p: &str| DiskAsNamed.name(Path::new(p));
+    assert_eq!(name("./Cell.mod"), "Cell.mod");
+    assert_eq!(name("Cell.mod"), "Cell.mod");
+    assert_eq!(name("./a/./b/MOC.cfg"), name("a/b/MOC.cfg"));
+    assert_eq!(name("../cell/Cell.mod"), "../cell/Cell.mod");
+    assert_eq!(super::plain(Path::new("./")), Path::new("."));
+}

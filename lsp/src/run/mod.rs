@@ -440,17 +440,8 @@ fn run_inner(args: RunArgs) -> Result<ExitCode, String> {
         }
     };
     let report = execute(&loaded, &options, Box::new(out)).map_err(|e| e.to_string())?;
-    // The arm drawn and listed with the moves: the one motion task's.
-    let arms: Vec<rapid_robot::Robot> = loaded
-        .tasks
-        .iter()
-        .filter(|t| t.motion)
-        .filter_map(|t| robot::arm_of(t, args.robot.as_deref()).ok())
-        .collect();
-    let arm = match arms.as_slice() {
-        [one] => Some(one),
-        _ => None,
-    };
+    let arm = robot::drawn_arm(&loaded.tasks, args.robot.as_deref());
+    let arm = arm.as_ref();
     if let Some(path) = &args.trace {
         let text = serde_json::to_string_pretty(&trace::json_with_arm(&report.moves, arm))
             .unwrap_or_default();

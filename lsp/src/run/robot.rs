@@ -38,6 +38,17 @@ pub fn robot_of(task: &TaskToRun, named: Option<&str>) -> Box<dyn Robot> {
     }
 }
 
+/// The arm drawn and listed with the moves (`--plot`, `--trace`, the
+/// debugger's path): the one motion task's (none with several).
+pub fn drawn_arm(tasks: &[TaskToRun], named: Option<&str>) -> Option<rapid_robot::Robot> {
+    let mut arms = tasks
+        .iter()
+        .filter(|t| t.motion)
+        .filter_map(|t| arm_of(t, named).ok());
+    let one = arms.next()?;
+    arms.next().is_none().then_some(one)
+}
+
 /// The notes of a run's motion tasks without an arm, one line each, for a
 /// run that moves (`--robot` naming no model is an error, not a note).
 pub fn notes(tasks: &[TaskToRun], named: Option<&str>) -> Result<Vec<String>, String> {

@@ -87,171 +87,100 @@ pub fn json_with_arm(moves: &[Move], arm: Option<&rapid_robot::Robot>) -> Value 
 /// A page that draws the path: targets as points, the path between them
 /// coloured by move type (drag to turn, wheel to zoom, hover a point for
 /// its target's name and line). With the arm: the arm as a kinematic chain
-/// at any moment (a time slider and a play button; between two moves'
-/// ends the drawing interpolates the chain), each axis's angle over time
-/// with its limits, and the moves that end within 5 degrees of a limit or
-/// with axis 5 within 5 degrees of zero (a wrist singularity) marked on the
-/// path and listed with their lines.
-pub fn html(moves: &[Move], title: &str) -> String {
-    html_with_arm(moves, None, title)
+/// at any moment (a time slider and a play button; between two moves' ends
+/// the drawing interpolates the chain), each axis's angle over time with
+/// its limits, and the moves that end within 5 degrees of a limit or with
+/// axis 5 within 5 degrees of zero (a wrist singularity) marked on the path
+/// and listed with their lines. The arm is the one that made the moves.
+pub fn html_with_arm(moves: &[Move], arm: Option<&rapid_robot::Robot>, title: &str) -> String {
+    page(&json_with_arm(moves, arm), title, None)
 }
 
-/// [`html`] with the arm that made the moves.
-pub fn html_with_arm(moves: &[Move], arm: Option<&rapid_robot::Robot>, title: &str) -> String {
-    let data = json_with_arm(moves, arm).to_string().replace("</", "<\\/");
+/// Where a debugger stopped a run, for the page to follow it: the
+/// simulated time, the line, and the task whose moves count.
+pub struct Stopped<'a> {
+    pub now: f64,
+    /// The file and line the program stopped at (`None` at the end).
+    pub at: Option<(&'a str, usize)>,
+    /// The stopped task's name (its last move is the current one), when
+    /// several tasks run.
+    pub task: Option<&'a str>,
+    /// Counts the states, for the page to see a new one.
+    pub seq: u64,
+    pub ended: bool,
+}
+
+/// The trace with the arm ([`json_with_arm`]) at a debugger's stop: also
+/// `"now"`, `"current"` (the index of the stopped task's last move: the
+/// one that brought the robot where it is), `"at"` (`{"file", "line"}`),
+/// `"seq"` and `"ended"`. The page draws the arm at `now` and highlights
+/// the current move.
+pub fn followed(moves: &[Move], arm: Option<&rapid_robot::Robot>, stop: &Stopped<'_>) -> Value {
+    let mut v = json_with_arm(moves, arm);
+    let current = moves
+        .iter()
+        .rposition(|m| stop.task.is_none() || m.task.is_none() || m.task.as_deref() == stop.task);
+    v["now"] = json!(round(stop.now));
+    v["current"] = json!(current);
+    v["at"] = match stop.at {
+        Some((file, line)) => json!({ "file": file, "line": line }),
+        None => Value::Null,
+    };
+    v["seq"] = json!(stop.seq);
+    v["ended"] = json!(stop.ended);
+    v
+}
+
+/// The page of `data` (a trace, [`json_with_arm`] or [`followed`]); with
+/// `live`, the name of a script beside it ([`live_script`]) that the page,
+/// opened as a file, reads again and again to follow a debugger.
+pub fn page(data: &Value, title: &str, live: Option<&str>) -> String {
+    let data = script_safe(&data.to_string());
+    let live = script_safe(&json!(live).to_string());
     let title = title
         .replace('&', "&amp;")
         .replace('<', "&lt;")
         .replace('>', "&gt;");
-    PAGE.replace("{{TITLE}}", &title).replace("{{DATA}}", &data)
+    // One pass: what is put in is not searched again.
+    let mut out = String::with_capacity(PAGE.len() + data.len());
+    let mut rest = PAGE;
+    while let Some(i) = rest.find("{{") {
+        out.push_str(&rest[..i]);
+        rest = &rest[i..];
+        let slot = [
+            ("{{TITLE}}", &title),
+            ("{{LIVE}}", &live),
+            ("{{DATA}}", &data),
+        ]
+        .into_iter()
+        .find(|(name, _)| rest.starts_with(name));
+        match slot {
+            Some((name, value)) => {
+                out.push_str(value);
+                rest = &rest[name.len()..];
+            }
+            None => {
+                out.push_str("{{");
+                rest = &rest[2..];
+            }
+        }
+    }
+    out.push_str(rest);
+    out
 }
 
-const PAGE: &str = r#"<!DOCTYPE html>
-<html lang="en"><head><meta charset="utf-8"><title>{{TITLE}}: robot path</title>
-<style>
-body{margin:0;font:13px system-ui,sans-serif;background:#fafafa;color:#222}
-header{padding:6px 12px;border-bottom:1px solid #ddd;display:flex;gap:16px;align-items:center}
-canvas{display:block;width:100vw;height:calc(100vh - 34px);cursor:grab}
-#tip{position:fixed;pointer-events:none;background:#fff;border:1px solid #aaa;padding:4px 6px;display:none;white-space:pre}
-.key span{display:inline-block;width:18px;height:3px;margin:0 4px 3px 10px;vertical-align:middle}
-</style></head><body>
-<header><b>{{TITLE}}</b><span id="count"></span><span class="key">
-<span style="background:#1f77b4"></span>MoveL<span style="background:#ff7f0e"></span>MoveJ
-<span style="background:#2ca02c"></span>MoveC<span style="background:#9467bd"></span>Search/other</span>
-<span>drag: turn, wheel: zoom</span></header>
-<div id="timebar" style="display:none;padding:4px 12px;border-bottom:1px solid #ddd">
-<button id="play">play</button> <input id="t" type="range" min="0" max="1000" value="1000" style="width:50%;vertical-align:middle"> <span id="now"></span></div>
-<canvas id="c"></canvas><canvas id="j" style="display:none;height:240px"></canvas>
-<div id="problems" style="padding:4px 12px"></div><div id="tip"></div>
-<script>
-const data = {{DATA}};
-const moves = data.moves.filter(m => m.pos);
-document.getElementById('count').textContent = data.moves.length + ' moves';
-const colour = i => i.startsWith('MoveL') || i.startsWith('TriggL') ? '#1f77b4'
-  : i.startsWith('MoveJ') || i.startsWith('TriggJ') ? '#ff7f0e'
-  : i.startsWith('MoveC') || i.startsWith('TriggC') ? '#2ca02c' : '#9467bd';
-const c = document.getElementById('c'), g = c.getContext('2d'), tip = document.getElementById('tip');
-let yaw = -0.6, pitch = 0.5, zoom = 1, drag = null, shown = [];
-const pts = moves.map(m => m.pos).concat(moves.filter(m => m.via).map(m => m.via));
-const lo = [0,1,2].map(k => Math.min(...pts.map(p => p[k]), 0));
-const hi = [0,1,2].map(k => Math.max(...pts.map(p => p[k]), 0));
-const mid = [0,1,2].map(k => (lo[k] + hi[k]) / 2);
-const size = Math.max(...[0,1,2].map(k => hi[k] - lo[k]), 1);
-function project(p) {
-  const x = p[0] - mid[0], y = p[1] - mid[1], z = p[2] - mid[2];
-  const x1 = x * Math.cos(yaw) - y * Math.sin(yaw), y1 = x * Math.sin(yaw) + y * Math.cos(yaw);
-  const y2 = y1 * Math.sin(pitch) + z * Math.cos(pitch);
-  const s = Math.min(c.width, c.height) * 0.8 * zoom / size;
-  return [c.width / 2 + x1 * s, c.height / 2 - y2 * s];
+/// The script a followed page reads: it hands the page the state `data`.
+pub fn live_script(data: &Value) -> String {
+    format!("rapidFollow({});\n", script_safe(&data.to_string()))
 }
-function line(a, b, col, w) { g.strokeStyle = col; g.lineWidth = w; g.beginPath(); g.moveTo(...a); g.lineTo(...b); g.stroke(); }
-function draw() {
-  c.width = c.clientWidth * devicePixelRatio; c.height = c.clientHeight * devicePixelRatio;
-  g.clearRect(0, 0, c.width, c.height);
-  const o = project(mid.map(() => 0)), L = size / 4;
-  line(o, project([L,0,0]), '#d62728', 1); line(o, project([0,L,0]), '#2ca02c', 1); line(o, project([0,0,L]), '#1f77b4', 1);
-  shown = [];
-  let prev = null;
-  for (const m of moves) {
-    const p = project(m.pos);
-    if (prev) {
-      if (m.via) { const v = project(m.via); line(prev, v, colour(m.instruction), 2); line(v, p, colour(m.instruction), 2); }
-      else line(prev, p, colour(m.instruction), 2);
-    }
-    g.fillStyle = colour(m.instruction); g.beginPath(); g.arc(p[0], p[1], 4 * devicePixelRatio, 0, 7); g.fill();
-    shown.push([p, m]); prev = p;
-  }
+
+/// JSON that cannot end the `<script>` element it is written into.
+fn script_safe(json: &str) -> String {
+    json.replace("</", "<\\/")
 }
-c.onmousedown = e => { drag = [e.clientX, e.clientY]; };
-window.onmouseup = () => { drag = null; };
-c.onmousemove = e => {
-  if (drag) { yaw += (e.clientX - drag[0]) / 200; pitch += (e.clientY - drag[1]) / 200; drag = [e.clientX, e.clientY]; draw(); return; }
-  const x = e.offsetX * devicePixelRatio, y = e.offsetY * devicePixelRatio;
-  const hit = shown.find(([p]) => Math.hypot(p[0] - x, p[1] - y) < 8 * devicePixelRatio);
-  if (!hit) { tip.style.display = 'none'; return; }
-  const m = hit[1], f = v => v.toFixed(1);
-  tip.textContent = (m.target || '(expression)') + '  ' + m.instruction + '\n' + m.file + ':' + m.line
-    + '\n[' + m.pos.map(f).join(', ') + ']' + (m.speed_name ? '  ' + m.speed_name : '') + (m.zone ? '  ' + m.zone : '');
-  tip.style.left = (e.clientX + 12) + 'px'; tip.style.top = (e.clientY + 12) + 'px'; tip.style.display = 'block';
-};
-c.onwheel = e => { e.preventDefault(); zoom *= e.deltaY < 0 ? 1.1 : 0.9; draw(); };
-// The arm: a chain drawn at the slider's time, the axes over time.
-const robot = data.robot, armed = data.moves.filter(m => m.arm);
-const end = armed.length ? Math.max(...armed.map(m => m.end)) : 0;
-const problem = m => {
-  if (!m.joints || !robot) return null;
-  const out = [];
-  m.joints.forEach((a, i) => { const [lo, hi] = robot.limits[i], d = Math.min(a - lo, hi - a);
-    if (d < 5) out.push('axis ' + (i + 1) + ' ' + d.toFixed(1) + ' deg from its limit'); });
-  if (Math.abs(m.joints[4]) < 5) out.push('axis 5 at ' + m.joints[4].toFixed(1) + ' deg: near a wrist singularity');
-  return out.length ? out.join(', ') : null;
-};
-let t = end;
-function armAt(t) {
-  let prev = armed[0];
-  for (const m of armed) {
-    if (t <= m.end) {
-      const f = m.end > m.start ? Math.min(Math.max((t - m.start) / (m.end - m.start), 0), 1) : 1;
-      const a = prev === m ? m.arm : prev.arm;
-      return [m.arm.map((p, k) => p.map((x, i) => a[k][i] + (x - a[k][i]) * f)), m];
-    }
-    prev = m;
-  }
-  return [prev.arm, prev];
-}
-function drawArm() {
-  if (!armed.length) return;
-  const [chain, m] = armAt(t);
-  const pts = chain.map(project);
-  for (let k = 1; k < pts.length; k++) line(pts[k - 1], pts[k], '#444', 5 * devicePixelRatio);
-  g.fillStyle = '#444';
-  for (const p of pts) { g.beginPath(); g.arc(p[0], p[1], 5 * devicePixelRatio, 0, 7); g.fill(); }
-  document.getElementById('now').textContent = t.toFixed(3) + ' s of ' + end.toFixed(3) + ' s: '
-    + m.instruction + ' ' + (m.target || '') + ' (' + m.file + ':' + m.line + ')  axes ['
-    + m.joints.map(a => a.toFixed(1)).join(', ') + ']';
-}
-function drawJoints() {
-  const k = document.getElementById('j'), h = k.getContext('2d');
-  k.width = k.clientWidth * devicePixelRatio; k.height = k.clientHeight * devicePixelRatio;
-  const rowH = k.height / 6, x = s => 40 * devicePixelRatio + (k.width - 50 * devicePixelRatio) * (end ? s / end : 0);
-  h.font = (10 * devicePixelRatio) + 'px sans-serif';
-  for (let i = 0; i < 6; i++) {
-    const [lo, hi] = robot.limits[i], y = a => (i + 1) * rowH - 3 - (a - lo) / (hi - lo) * (rowH - 6);
-    h.strokeStyle = '#d62728'; h.setLineDash([4, 3]); h.lineWidth = 1;
-    for (const b of [lo, hi]) { h.beginPath(); h.moveTo(x(0), y(b)); h.lineTo(x(end), y(b)); h.stroke(); }
-    h.setLineDash([]); h.strokeStyle = '#1f77b4'; h.lineWidth = 1.5 * devicePixelRatio; h.beginPath();
-    armed.forEach((m, n) => { if (n === 0) h.moveTo(x(m.start), y(m.joints[i])); h.lineTo(x(m.end), y(m.joints[i])); });
-    h.stroke(); h.fillStyle = '#222'; h.fillText('axis ' + (i + 1), 2, i * rowH + rowH / 2);
-  }
-  h.strokeStyle = '#000'; h.beginPath(); h.moveTo(x(t), 0); h.lineTo(x(t), k.height); h.stroke();
-}
-if (robot && armed.length) {
-  const found = data.moves.map(m => [m, problem(m)]).filter(([, p]) => p);
-  document.getElementById('timebar').style.display = 'block';
-  const jc = document.getElementById('j'); jc.style.display = 'block'; jc.style.width = '100vw';
-  c.style.height = 'calc(100vh - 340px)';
-  const slider = document.getElementById('t');
-  const plain = draw;
-  draw = () => { plain(); for (const [m] of found) if (m.pos) { const p = project(m.pos);
-    g.strokeStyle = '#d62728'; g.lineWidth = 2 * devicePixelRatio; g.beginPath(); g.arc(p[0], p[1], 9 * devicePixelRatio, 0, 7); g.stroke(); }
-    drawArm(); drawJoints(); };
-  const redraw = () => draw();
-  slider.oninput = () => { t = end * slider.value / 1000; redraw(); };
-  let timer = null;
-  document.getElementById('play').onclick = () => {
-    if (timer) { clearInterval(timer); timer = null; return; }
-    if (t >= end) t = 0;
-    timer = setInterval(() => { t = Math.min(end, t + 0.04); slider.value = end ? 1000 * t / end : 0; redraw();
-      if (t >= end) { clearInterval(timer); timer = null; } }, 40);
-  };
-  const list = document.getElementById('problems');
-  list.textContent = found.length ? 'Problems:' : 'No move ends near a limit or a wrist singularity.';
-  for (const [m, p] of found) { const d = document.createElement('div');
-    d.textContent = m.file + ':' + m.line + '  ' + m.instruction + ' ' + (m.target || '') + ': ' + p; list.appendChild(d); }
-  window.onresize = redraw; redraw();
-}
-</script></body></html>
-"#;
+
+/// The page (`plot.html`): its script draws `{{DATA}}` and follows `{{LIVE}}`.
+const PAGE: &str = include_str!("plot.html");
 
 #[cfg(test)]
 mod tests {
@@ -295,9 +224,40 @@ mod tests {
     fn the_page_holds_its_data_and_cannot_be_broken_out_of() {
         let mut m = mv("MoveJ", [0.0; 3]);
         m.target = Some("</script><b>".to_owned());
-        let page = html(&[m], "a<b");
+        let page = html_with_arm(&[m], None, "a<b");
         assert!(page.contains("a&lt;b: robot path"));
         assert!(page.contains(r#"<\/script><b>"#));
         assert!(!page.contains("{{DATA}}"));
+    }
+
+    #[test]
+    fn a_followed_state_names_the_stop_and_the_last_move_of_the_stopped_task() {
+        let mut a = mv("MoveJ", [0.0; 3]);
+        a.task = Some("T_ROB1".to_owned());
+        let mut b = mv("MoveL", [1.0; 3]);
+        b.task = Some("T_ROB2".to_owned());
+        let stop = Stopped {
+            now: 1.234_567_89,
+            at: Some(("m.mod", 7)),
+            task: Some("T_ROB1"),
+            seq: 3,
+            ended: false,
+        };
+        let v = followed(&[a, b], None, &stop);
+        assert_eq!(v["current"], 0);
+        assert_eq!(v["now"], 1.234_568);
+        assert_eq!(v["at"], json!({"file": "m.mod", "line": 7}));
+        assert_eq!(
+            (v["seq"].clone(), v["ended"].clone()),
+            (json!(3), json!(false))
+        );
+        let none = followed(&[], None, &stop);
+        assert_eq!(none["current"], Value::Null);
+        // The page reads the state script beside it; what is put in the
+        // page is not read as a slot again.
+        let page = page(&v, "{{DATA}} x", Some("p.live.js"));
+        assert!(page.contains(r#"const live = "p.live.js";"#));
+        assert!(page.contains("<title>{{DATA}} x: robot path</title>"));
+        assert!(live_script(&v).starts_with("rapidFollow({"));
     }
 }

@@ -127,6 +127,7 @@ impl Settings {
                 // The VS Code extension's own settings, sent with the rest.
                 obj.remove("server");
                 obj.remove("trace");
+                obj.remove("debug");
                 if let Some(v) = obj.remove("extraPaths") {
                     obj.insert("extra-paths".to_owned(), v);
                 }
@@ -309,7 +310,8 @@ mod tests {
                 "inlayHints": {"parameterNames": "all"},
                 "docsBaseUrl": "https://docs.example.com/rules.html",
                 "server": {"path": "/opt/rapid", "extraArgs": []},
-                "trace": {"server": "off"}
+                "trace": {"server": "off"},
+                "debug": {"showPath": false}
             }}),
             None,
             Path::new("/w"),
