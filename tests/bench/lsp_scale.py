@@ -1,0 +1,91 @@
+#!/usr/bin/env python3
+"""`rapid lsp` on a large workspace while it indexes (issue 27).
+
+    python3 tests/bench/layouts.py /tmp/ws corpus 12     # ~10,000 modules
+    python3 tests/bench/lsp_scale.py target/release/rapid /tmp/ws
+
+Starts the server on the folder (the client declares work-done progress),
+opens a module at once (the largest of the first corpus copy) and, until
+the server logs "indexed", sends a hover on an identifier of that module
+every 20 ms. Prints the time to the open module's first diagnostics and to
+the end of indexing (from `initialized`), the `$/progress` notifications
+seen, the hover latencies during indexing (median, p99, max), and the
+server's peak resident memory.
+"""
+
+import random
+import statistics
+import sys
+import time
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from lsp_bench import Server, identifier_positions, pct  # noqa: E402
+
+RAPID_EXT = {".mod", ".modx", ".sys", ".sysx", ".prg"}
+
+
+class Watching(Server):
+    """A server whose messages are also counted by method."""
+
+    def __init__(self, *args, **kwargs):
+        self.seen = []
+        super().__init__(*args, **kwargs)
+
+    def _message(self, deadline):
+        t, m = super()._message(deadline)
+        if "method" in m:
+            self.seen.append((t, m))
+        return t, m
+
+
+def main():
+    binary, root = sys.argv[1], Path(sys.argv[2]).resolve()
+    files = sorted(p for p in root.rglob("*") if p.is_file() and p.suffix.lower() in RAPID_EXT)
+    first = [p for p in files if p.relative_to(root).parts[0] == files[0].relative_to(root).parts[0]]
+    path = max(first, key=lambda p: p.stat().st_size)
+    raw = path.read_bytes()
+    try:
+        text = raw.decode("utf-8")
+    except UnicodeDecodeError:
+        text = raw.decode("latin-1")
+    s = Watching(binary, root, {}, caps={"window": {"workDoneProgress": True}})
+    t0 = s.t_initialized
+    uri = path.as_uri()
+    s.notify("textDocument/didOpen", {"textDocument": {
+        "uri": uri, "languageId": "rapid", "version": 1, "text": text}})
+    positions = identifier_positions(text, random.Random(1), 10_000) or [(0, 0)]
+    hovers = []
+    first_diag = indexed = None
+    i = 0
+    while indexed is None:
+        ln, ch = positions[i % len(positions)]
+        i += 1
+        ms, _ = s.request("textDocument/hover", {
+            "textDocument": {"uri": uri}, "position": {"line": ln, "character": ch}})
+        hovers.append(ms)
+        for t, m in s.seen:
+            if first_diag is None and m["method"] == "textDocument/publishDiagnostics" \
+                    and m["params"]["uri"] == uri:
+                first_diag = t - t0
+            if m["method"] == "window/logMessage" and m["params"]["message"].startswith("indexed "):
+                indexed = t - t0
+        time.sleep(0.02)
+    if first_diag is None:
+        t, _ = s.wait(lambda m: m.get("method") == "textDocument/publishDiagnostics"
+                      and m["params"]["uri"] == uri, timeout=600)
+        first_diag = t - t0
+    progress = sum(1 for _, m in s.seen if m["method"] == "$/progress")
+    _, hwm = s.rss_mb()
+    s.stop()
+    size = sum(p.stat().st_size for p in files)
+    print(f"workspace: {len(files)} modules, {size / 1e6:.1f} MB; open: {path.relative_to(root)}")
+    print(f"first diagnostics of the open module: {first_diag * 1000:.0f} ms after initialized")
+    print(f"indexed: {indexed:.2f} s after initialized; $/progress notifications: {progress}")
+    print(f"hover during indexing: {len(hovers)} requests, median {statistics.median(hovers):.2f} ms, "
+          f"p99 {pct(hovers, 99):.2f} ms, max {max(hovers):.2f} ms")
+    print(f"peak resident memory: {hwm:.0f} MB ({hwm * 1e6 / size:.1f}x the modules)")
+
+
+if __name__ == "__main__":
+    main()
