@@ -6,11 +6,12 @@
 
 Starts the server on the folder (the client declares work-done progress),
 opens a module at once (the largest of the first corpus copy) and, until
-the server logs "indexed", sends a hover on an identifier of that module
-every 20 ms. Prints the time to the open module's first diagnostics and to
-the end of indexing (from `initialized`), the `$/progress` notifications
-seen, the hover latencies during indexing (median, p99, max), and the
-server's peak resident memory.
+the server logs "indexed", sends every 20 ms a hover on an identifier of
+that module and a completion at a statement start, in turn. Prints the
+time to the open module's first diagnostics and to the end of indexing
+(from `initialized`), the `$/progress` notifications seen, the hover and
+completion latencies during indexing (median, p99, max), and the server's
+peak resident memory.
 """
 
 import random
@@ -20,7 +21,7 @@ import time
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from lsp_bench import Server, identifier_positions, pct  # noqa: E402
+from lsp_bench import Server, body_line, identifier_positions, pct  # noqa: E402
 
 RAPID_EXT = {".mod", ".modx", ".sys", ".sysx", ".prg"}
 
@@ -55,15 +56,22 @@ def main():
     s.notify("textDocument/didOpen", {"textDocument": {
         "uri": uri, "languageId": "rapid", "version": 1, "text": text}})
     positions = identifier_positions(text, random.Random(1), 10_000) or [(0, 0)]
-    hovers = []
+    line = body_line(text)
+    indent = len(text.splitlines()[line]) - len(text.splitlines()[line].lstrip())
+    hovers, completions = [], []
     first_diag = indexed = None
     i = 0
     while indexed is None:
-        ln, ch = positions[i % len(positions)]
+        if i % 2 == 0:
+            ln, ch = positions[(i // 2) % len(positions)]
+            ms, _ = s.request("textDocument/hover", {
+                "textDocument": {"uri": uri}, "position": {"line": ln, "character": ch}})
+            hovers.append(ms)
+        else:
+            ms, _ = s.request("textDocument/completion", {
+                "textDocument": {"uri": uri}, "position": {"line": line, "character": indent}})
+            completions.append(ms)
         i += 1
-        ms, _ = s.request("textDocument/hover", {
-            "textDocument": {"uri": uri}, "position": {"line": ln, "character": ch}})
-        hovers.append(ms)
         for t, m in s.seen:
             if first_diag is None and m["method"] == "textDocument/publishDiagnostics" \
                     and m["params"]["uri"] == uri:
@@ -82,8 +90,11 @@ def main():
     print(f"workspace: {len(files)} modules, {size / 1e6:.1f} MB; open: {path.relative_to(root)}")
     print(f"first diagnostics of the open module: {first_diag * 1000:.0f} ms after initialized")
     print(f"indexed: {indexed:.2f} s after initialized; $/progress notifications: {progress}")
-    print(f"hover during indexing: {len(hovers)} requests, median {statistics.median(hovers):.2f} ms, "
-          f"p99 {pct(hovers, 99):.2f} ms, max {max(hovers):.2f} ms")
+    for name, times in (("hover", hovers), ("completion", completions)):
+        if times:
+            print(f"{name} during indexing: {len(times)} requests, median "
+                  f"{statistics.median(times):.2f} ms, p99 {pct(times, 99):.2f} ms, "
+                  f"max {max(times):.2f} ms")
     print(f"peak resident memory: {hwm:.0f} MB ({hwm * 1e6 / size:.1f}x the modules)")
 
 
