@@ -96,8 +96,11 @@ impl ControllerConfig {
             ),
             None => None,
         };
-        let cat = rapid_analyzer::catalogue::base();
+        // The catalogue only when there are options to look up: loading it
+        // takes tens of milliseconds, which `rapid check` spends on a
+        // thread that parsing leaves idle.
         if let Some(options) = &self.options {
+            let cat = rapid_analyzer::catalogue::base();
             for o in options {
                 if cat.package(o).is_none() {
                     let ids: Vec<&str> = cat.packages.iter().map(|p| p.id.as_str()).collect();

@@ -29,7 +29,7 @@ RAPID_EXT = {".mod", ".modx", ".sys", ".sysx", ".prg"}
 
 
 class Server:
-    def __init__(self, binary, root, options):
+    def __init__(self, binary, root, options, caps=None):
         self.proc = subprocess.Popen(
             [binary, "lsp"], stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL
         )
@@ -47,6 +47,7 @@ class Server:
                 "general": {"positionEncodings": ["utf-16"]},
                 "textDocument": {"completion": {"completionItem": {
                     "resolveSupport": {"properties": ["documentation", "detail", "additionalTextEdits"]}}}},
+                **(caps or {}),
             },
             "initializationOptions": options,
         })

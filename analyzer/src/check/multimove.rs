@@ -12,7 +12,7 @@ use crate::body::{Call, Callee};
 use crate::items::RoutineDecl;
 use crate::names::{fold, same};
 use crate::rules;
-use crate::sema::sync::{CallKinds, callee_name};
+use crate::sema::sync::{CallKinds, callee_name, mentions_sync};
 use crate::task::{Item, Task};
 
 pub(super) fn check(cx: &mut Cx<'_>, decl: &RoutineDecl) {
@@ -31,17 +31,6 @@ pub(super) fn check(cx: &mut Cx<'_>, decl: &RoutineDecl) {
     rules::sync_without_stop_point::check(cx, &body, &kinds);
     rules::sync_task_mismatch::check(cx, decl.range.clone());
     rules::sync_move_count::check(cx, decl.range.clone());
-}
-
-/// Does the text name a MultiMove or synchronisation instruction (in any
-/// letter case)?
-fn mentions_sync(text: &str) -> bool {
-    let bytes = text.as_bytes();
-    ["syncmove", "waitsynctask"].iter().any(|w| {
-        bytes
-            .windows(w.len())
-            .any(|x| x.eq_ignore_ascii_case(w.as_bytes()))
-    })
 }
 
 /// The calls of a routine as its task sees them.

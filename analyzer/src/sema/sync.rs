@@ -358,6 +358,17 @@ impl ControllerSyncs {
     }
 }
 
+/// Does the text name a MultiMove or synchronisation instruction (in any
+/// letter case)? Only the routines that do are lowered to look for them.
+pub(crate) fn mentions_sync(text: &str) -> bool {
+    let bytes = text.as_bytes();
+    ["syncmove", "waitsynctask"].iter().any(|w| {
+        bytes
+            .windows(w.len())
+            .any(|x| x.eq_ignore_ascii_case(w.as_bytes()))
+    })
+}
+
 /// The synchronisation of the modules `units` of one task, read by name
 /// (`SyncMoveOn`, `SyncMoveOff`, `WaitSyncTask`) from the routines that
 /// mention them.
@@ -391,7 +402,7 @@ pub(crate) fn task_syncs<'u>(
             }
             for r in &m.routines {
                 let text = unit.text.get(r.range.clone()).unwrap_or_default();
-                if !text.to_ascii_lowercase().contains("sync") {
+                if !mentions_sync(text) {
                     continue;
                 }
                 let Some(body) = crate::body::lower_routine(unit, r) else {

@@ -20,6 +20,10 @@ use crate::config::Config;
 use crate::project::{Discovery, Disk, Environment, context, discover_in};
 
 pub fn run(args: CheckArgs) -> ExitCode {
+    // 4 KiB pages: the parts of a project are released and their memory
+    // reused (`crate::alloc::no_huge_pages`). Huge pages stay on where the
+    // kernel refuses; the check is the same.
+    let _ = crate::alloc::no_huge_pages();
     let mut stderr = anstream::stderr();
     match run_inner(args, &mut stderr) {
         Ok(code) => code,

@@ -56,7 +56,7 @@ pub struct LspArgs {
 pub fn run(_args: LspArgs) -> ExitCode {
     // A long-lived process answering keystrokes: steady latency matters
     // more than the last percent of throughput (see `no_huge_pages`).
-    if !no_huge_pages() && cfg!(target_os = "linux") {
+    if !crate::alloc::no_huge_pages() && cfg!(target_os = "linux") {
         eprintln!("rapid lsp: transparent huge pages stay on (prctl refused)");
     }
     let runtime = match tokio::runtime::Builder::new_multi_thread()
@@ -78,32 +78,6 @@ pub fn run(_args: LspArgs) -> ExitCode {
     } else {
         ExitCode::FAILURE
     }
-}
-
-/// Turns transparent huge pages off for this process, for steady latency.
-///
-/// mimalloc advises the kernel to back its regions with 2 MiB pages. The
-/// first touch of such a page then zeroes all of it, and memory mimalloc
-/// gave back to the kernel is faulted in again that way when a later
-/// request reuses it. In the server that showed as completion requests of
-/// 10 to 20 ms (all of it zeroing pages in the kernel) among requests of
-/// 0.5 ms. With 4 KiB pages the same requests stay under 5 ms. `rapid
-/// check` keeps huge pages: its runs are short, and about 10% faster with
-/// them. Returns whether the kernel took the setting (Linux only).
-#[cfg(target_os = "linux")]
-#[allow(unsafe_code)]
-fn no_huge_pages() -> bool {
-    let off: libc::c_ulong = 1;
-    let unused: libc::c_ulong = 0;
-    // SAFETY: PR_SET_THP_DISABLE takes one integer argument (the flag) and
-    // the rest zero; it changes only how the kernel backs this process's
-    // memory from now on, never the contents of memory already in use.
-    unsafe { libc::prctl(libc::PR_SET_THP_DISABLE, off, unused, unused, unused) == 0 }
-}
-
-#[cfg(not(target_os = "linux"))]
-fn no_huge_pages() -> bool {
-    false
 }
 
 /// How often the server looks whether the process that started it is
