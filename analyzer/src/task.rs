@@ -7,7 +7,7 @@
 
 use std::collections::{HashMap, HashSet};
 use std::ops::Range;
-use std::sync::Arc;
+use std::sync::{Arc, OnceLock};
 
 use tree_sitter::Tree;
 
@@ -49,6 +49,9 @@ pub struct Unit {
     /// The parts of the text nested too deep to analyse: the tree is that
     /// of a copy of the text with these replaced ([`crate::nesting`]).
     cuts: Vec<crate::nesting::Cut>,
+    /// The lowered bodies of the routines that mention synchronisation
+    /// ([`Unit::sync_bodies`]), lowered on first use.
+    sync_bodies: OnceLock<Arc<[crate::body::Body]>>,
 }
 
 impl Unit {
@@ -93,6 +96,7 @@ impl Unit {
             syntax,
             loads,
             cuts,
+            sync_bodies: OnceLock::new(),
         }
     }
 
@@ -147,7 +151,33 @@ impl Unit {
             syntax: self.syntax.clone(),
             cuts: self.cuts.clone(),
             loads: self.loads.clone(),
+            sync_bodies: self.sync_bodies.clone(),
         })
+    }
+
+    /// The lowered bodies of the unit's routines whose text names a
+    /// synchronisation instruction ([`crate::sema::sync::mentions_sync`]),
+    /// in source order: lowered once for both readers, the controller's
+    /// synchronisation index and the MultiMove checks of the routine.
+    pub(crate) fn sync_bodies(&self) -> &[crate::body::Body] {
+        self.sync_bodies.get_or_init(|| {
+            self.items
+                .modules
+                .iter()
+                .flat_map(|m| &m.routines)
+                .filter(|r| {
+                    let text = self.text.get(r.range.clone()).unwrap_or_default();
+                    crate::sema::sync::mentions_sync(text)
+                })
+                .filter_map(|r| crate::body::lower_routine(self, r))
+                .collect()
+        })
+    }
+
+    /// The lowered body of `routine` if it names a synchronisation
+    /// instruction ([`Unit::sync_bodies`]).
+    pub(crate) fn sync_body(&self, routine: &RoutineDecl) -> Option<&crate::body::Body> {
+        self.sync_bodies().iter().find(|b| b.range == routine.range)
     }
 
     pub(crate) fn parse_again(&self) -> Tree {
@@ -210,6 +240,7 @@ impl Unit {
                 syntax: Vec::new(),
                 loads: Default::default(),
                 cuts: Vec::new(),
+                sync_bodies: OnceLock::new(),
             },
             // No tree even for empty text means the grammar could not be
             // loaded at all, which the grammar's own tests rule out.

@@ -5,7 +5,7 @@
 //! synchronised runs against the other tasks' of the controller
 //! (`sync-task-mismatch`, `sync-move-count`, from [`crate::task::Task`]'s
 //! synchronisation index). Only routines that name `SyncMove...` or
-//! `WaitSyncTask` are lowered.
+//! `WaitSyncTask` are lowered, once ([`crate::task::Unit::sync_bodies`]).
 
 use super::Cx;
 use crate::body::{Call, Callee};
@@ -16,19 +16,16 @@ use crate::sema::sync::{CallKinds, callee_name, mentions_sync};
 use crate::task::{Item, Task};
 
 pub(super) fn check(cx: &mut Cx<'_>, decl: &RoutineDecl) {
-    let text = cx.text.get(decl.range.clone()).unwrap_or_default();
-    if !mentions_sync(text) {
-        return;
-    }
-    let Some(body) = crate::body::lower_routine(cx.unit, decl) else {
+    let unit = cx.unit;
+    let Some(body) = unit.sync_body(decl) else {
         return;
     };
     let kinds = TaskCalls { task: cx.task };
-    if let Some(flow) = crate::sema::sync::flow(&body, &kinds) {
+    if let Some(flow) = crate::sema::sync::flow(body, &kinds) {
         rules::unpaired_sync_move::check(cx, &flow);
         rules::missing_sync_id::check(cx, &flow);
     }
-    rules::sync_without_stop_point::check(cx, &body, &kinds);
+    rules::sync_without_stop_point::check(cx, body, &kinds);
     rules::sync_task_mismatch::check(cx, decl.range.clone());
     rules::sync_move_count::check(cx, decl.range.clone());
 }

@@ -400,67 +400,60 @@ pub(crate) fn task_syncs<'u>(
                     out.lists.push((fold(&d.name), names));
                 }
             }
-            for r in &m.routines {
-                let text = unit.text.get(r.range.clone()).unwrap_or_default();
-                if !mentions_sync(text) {
-                    continue;
-                }
-                let Some(body) = crate::body::lower_routine(unit, r) else {
-                    continue;
-                };
-                let is_user = |c: &Call| user_routines.contains(&fold(callee_name(c)));
-                let builtin = |c: &Call, name: &str| same(callee_name(c), name) && !is_user(c);
-                let mut lists: Vec<&[Stmt]> = Vec::new();
-                all_lists(&body.stmts, &mut lists);
-                for list in lists {
-                    for (i, s) in list.iter().enumerate() {
-                        let StmtKind::Call(call) = &s.kind else {
-                            continue;
-                        };
-                        let kind = ["SyncMoveOn", "WaitSyncTask"]
-                            .into_iter()
-                            .find(|k| builtin(call, k));
-                        let Some(kind) = kind else { continue };
-                        let names = positional_names(call);
-                        let (Some(ident), Some(list_name)) = (names.first(), names.get(1)) else {
-                            continue;
-                        };
-                        out.points.push(SyncPoint {
-                            kind,
-                            ident: fold(ident),
-                            list: fold(list_name),
-                            path: unit.path.clone(),
-                            range: call.callee_range.clone(),
-                        });
-                        if kind != "SyncMoveOn" {
-                            continue;
-                        }
-                        // The straight run to SyncMoveOff.
-                        let mut moves = 0;
-                        for next in &list[i + 1..] {
-                            let StmtKind::Call(c) = &next.kind else {
-                                if matches!(next.kind, StmtKind::Assign { .. }) {
-                                    continue;
-                                }
-                                break;
-                            };
-                            if builtin(c, "SyncMoveOff") {
-                                if let Some(off) = positional_names(c).first() {
-                                    out.sections.push(Section {
-                                        on: fold(ident),
-                                        off: fold(off),
-                                        moves,
-                                        path: unit.path.clone(),
-                                        range: call.callee_range.clone(),
-                                    });
-                                }
-                                break;
+        }
+        for body in unit.sync_bodies() {
+            let is_user = |c: &Call| user_routines.contains(&fold(callee_name(c)));
+            let builtin = |c: &Call, name: &str| same(callee_name(c), name) && !is_user(c);
+            let mut lists: Vec<&[Stmt]> = Vec::new();
+            all_lists(&body.stmts, &mut lists);
+            for list in lists {
+                for (i, s) in list.iter().enumerate() {
+                    let StmtKind::Call(call) = &s.kind else {
+                        continue;
+                    };
+                    let kind = ["SyncMoveOn", "WaitSyncTask"]
+                        .into_iter()
+                        .find(|k| builtin(call, k));
+                    let Some(kind) = kind else { continue };
+                    let names = positional_names(call);
+                    let (Some(ident), Some(list_name)) = (names.first(), names.get(1)) else {
+                        continue;
+                    };
+                    out.points.push(SyncPoint {
+                        kind,
+                        ident: fold(ident),
+                        list: fold(list_name),
+                        path: unit.path.clone(),
+                        range: call.callee_range.clone(),
+                    });
+                    if kind != "SyncMoveOn" {
+                        continue;
+                    }
+                    // The straight run to SyncMoveOff.
+                    let mut moves = 0;
+                    for next in &list[i + 1..] {
+                        let StmtKind::Call(c) = &next.kind else {
+                            if matches!(next.kind, StmtKind::Assign { .. }) {
+                                continue;
                             }
-                            if is_user(c) || cat.instruction(callee_name(c)).is_none() {
-                                break;
+                            break;
+                        };
+                        if builtin(c, "SyncMoveOff") {
+                            if let Some(off) = positional_names(c).first() {
+                                out.sections.push(Section {
+                                    on: fold(ident),
+                                    off: fold(off),
+                                    moves,
+                                    path: unit.path.clone(),
+                                    range: call.callee_range.clone(),
+                                });
                             }
-                            moves += usize::from(has_arg(c, "ID"));
+                            break;
                         }
+                        if is_user(c) || cat.instruction(callee_name(c)).is_none() {
+                            break;
+                        }
+                        moves += usize::from(has_arg(c, "ID"));
                     }
                 }
             }
