@@ -361,11 +361,17 @@ impl ControllerSyncs {
 /// Does the text name a MultiMove or synchronisation instruction (in any
 /// letter case)? Only the routines that do are lowered to look for them.
 pub(crate) fn mentions_sync(text: &str) -> bool {
+    // Both words hold a `y`, rare in RAPID text: look only around each `y`
+    // (this runs on the text of every routine).
     let bytes = text.as_bytes();
-    ["syncmove", "waitsynctask"].iter().any(|w| {
+    let at = |start: usize, word: &str| {
         bytes
-            .windows(w.len())
-            .any(|x| x.eq_ignore_ascii_case(w.as_bytes()))
+            .get(start..start + word.len())
+            .is_some_and(|x| x.eq_ignore_ascii_case(word.as_bytes()))
+    };
+    bytes.iter().enumerate().any(|(i, c)| {
+        (*c | 0x20) == b'y'
+            && ((i >= 1 && at(i - 1, "syncmove")) || (i >= 5 && at(i - 5, "waitsynctask")))
     })
 }
 
@@ -577,5 +583,21 @@ mod tests {
         // the start is unknown: no finding
         let f = flow_of("    SyncMoveOff s1;\n    MoveL p, v, fine, t;");
         assert!(f.off_again.is_empty() && f.moves.is_empty());
+    }
+
+    #[test]
+    fn mentions_sync_in_any_case_anywhere() {
+        for text in [
+            "SyncMoveOn s1, all;",
+            "syncmoveoff s2;",
+            "  WAITSYNCTASK s3, all;",
+            "x := 1; WaitSyncTask",
+            "PROC p()\n  SYNCMOVEUNDO;\nENDPROC",
+        ] {
+            assert!(mentions_sync(text), "{text}");
+        }
+        for text in ["", "y", "yyyy", "Sync", "MoveSync", "WaitSync", "synctask", "WaitTime 1;"] {
+            assert!(!mentions_sync(text), "{text}");
+        }
     }
 }
