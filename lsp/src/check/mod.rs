@@ -420,8 +420,8 @@ fn check_loaded(
 }
 
 /// `files` without those that are the same file as an earlier one.
-fn distinct_files(files: Vec<PathBuf>) -> Vec<PathBuf> {
-    let names: Vec<String> = files.par_iter().map(|p| unit_path(p)).collect();
+fn distinct_files(env: &dyn Environment, files: Vec<PathBuf>) -> Vec<PathBuf> {
+    let names: Vec<String> = files.par_iter().map(|p| env.name(p)).collect();
     let mut seen = HashSet::with_capacity(files.len());
     files
         .into_iter()

@@ -17,7 +17,7 @@ use super::{
     baseline, check_files, lap, normalize, output, progress_bar,
 };
 use crate::config::Config;
-use crate::project::{Discovery, Disk, Environment, context, discover_in};
+use crate::project::{Discovery, Disk, Environment, NamedOnce, context, discover_in};
 
 pub fn run(args: CheckArgs) -> ExitCode {
     // 4 KiB pages: the parts of a project are released and their memory
@@ -43,10 +43,12 @@ fn run_inner(args: CheckArgs, stderr: &mut impl Write) -> Result<ExitCode, Strin
     }
     let mut clock = std::time::Instant::now();
     let started = clock;
-    let setup = settings_of(&Disk, &args)?;
-    let project = discover_project(&Disk, &args, &setup, stderr);
+    // Each file's real path is resolved once for the whole run.
+    let env = NamedOnce::new(&Disk);
+    let setup = settings_of(&env, &args)?;
+    let project = discover_project(&env, &args, &setup, stderr);
     lap("configuration and discovery", &mut clock);
-    let (outcomes, fixed, fix_failed) = check_and_fix(&Disk, &args, &setup, &project, stderr);
+    let (outcomes, fixed, fix_failed) = check_and_fix(&env, &args, &setup, &project, stderr);
     clock = std::time::Instant::now();
     let (mut report, read_failed) = report_of(outcomes, fixed, &setup.settings, stderr);
     if let Some(path) = &args.baseline {
@@ -180,7 +182,7 @@ fn discover_project(
         None,
     );
     // A file named twice (`rapid check . PROGMOD`, a link) is checked once.
-    found.files = super::distinct_files(std::mem::take(&mut found.files));
+    found.files = super::distinct_files(env, std::mem::take(&mut found.files));
     let mut failed = false;
     for (path, why) in &found.errors {
         let _ = writeln!(stderr, "rapid: {}: {why}", output::display_path(path));

@@ -100,6 +100,56 @@ impl Environment for Disk {
     }
 }
 
+/// An environment that asks `inner` for each path's analyzer name once: a
+/// name resolves links on disk ([`source::analyzer_path`]), and the loader
+/// asks for the name of each file several times (discovery, parts, parse,
+/// tasks). For one run (`rapid check`): a long-lived server must see a
+/// link that changes.
+pub struct NamedOnce<'e> {
+    inner: &'e dyn Environment,
+    names: std::sync::Mutex<std::collections::HashMap<PathBuf, String>>,
+}
+
+impl<'e> NamedOnce<'e> {
+    pub fn new(inner: &'e dyn Environment) -> NamedOnce<'e> {
+        NamedOnce {
+            inner,
+            names: Default::default(),
+        }
+    }
+}
+
+impl Environment for NamedOnce<'_> {
+    fn kind(&self, path: &Path) -> std::io::Result<Kind> {
+        self.inner.kind(path)
+    }
+
+    fn read(&self, path: &Path) -> std::io::Result<Vec<u8>> {
+        self.inner.read(path)
+    }
+
+    fn read_head(&self, path: &Path, buf: &mut [u8]) -> std::io::Result<usize> {
+        self.inner.read_head(path, buf)
+    }
+
+    fn walk(&self, root: &Path, max_depth: Option<usize>, excluded: &Excluder) -> Vec<Walked> {
+        self.inner.walk(root, max_depth, excluded)
+    }
+
+    fn name(&self, path: &Path) -> String {
+        let known = |names: &std::collections::HashMap<PathBuf, String>| names.get(path).cloned();
+        if let Some(name) = self.names.lock().ok().and_then(|n| known(&n)) {
+            return name;
+        }
+        // Resolved outside the lock: another thread may resolve it too.
+        let name = self.inner.name(path);
+        if let Ok(mut names) = self.names.lock() {
+            names.insert(path.to_owned(), name.clone());
+        }
+        name
+    }
+}
+
 /// Why a file was not loaded.
 #[derive(Debug)]
 pub enum Skip {
