@@ -596,7 +596,16 @@ mod tests {
         ] {
             assert!(mentions_sync(text), "{text}");
         }
-        for text in ["", "y", "yyyy", "Sync", "MoveSync", "WaitSync", "synctask", "WaitTime 1;"] {
+        for text in [
+            "",
+            "y",
+            "yyyy",
+            "Sync",
+            "MoveSync",
+            "WaitSync",
+            "synctask",
+            "WaitTime 1;",
+        ] {
             assert!(!mentions_sync(text), "{text}");
         }
     }
