@@ -315,3 +315,29 @@ fn paths_named_with_dots_are_one_file() {
     assert_eq!(name("../cell/Cell.mod"), "../cell/Cell.mod");
     assert_eq!(super::plain(Path::new("./")), Path::new("."));
 }
+
+/// The cache of names answers what the disk answers, for a file, a link
+/// to it, a relative path and a path that does not exist, asked twice.
+#[test]
+fn named_once_names_as_the_disk_does() {
+    let dir = std::env::temp_dir().join(format!("rapid-named-once-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("a temporary folder");
+    let file = dir.join("Cell.mod");
+    std::fs::write(&file, "MODULE Cell\nENDMODULE\n").expect("write");
+    let link = dir.join("Link.mod");
+    #[cfg(unix)]
+    std::os::unix::fs::symlink(&file, &link).expect("symlink");
+    let paths = [
+        file.clone(),
+        link,
+        dir.join("Missing.mod"),
+        PathBuf::from("Cell.mod"),
+    ];
+    let once = NamedOnce::new(&Disk);
+    for _ in 0..2 {
+        for p in &paths {
+            assert_eq!(once.name(p), Disk.name(p), "{}", p.display());
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
