@@ -9,6 +9,7 @@
 pub(crate) mod config;
 pub(crate) mod data;
 pub(crate) mod files;
+pub(crate) mod gripper;
 pub(crate) mod io;
 pub(crate) mod motion;
 pub(crate) mod output;
@@ -58,6 +59,23 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("TPReadDnum", pendant::tp_read_num),
     ("UIMsgBox", pendant::ui_msg_box),
     ("UIShow", output::ui_show),
+    ("ExecEngine", pendant::exec_engine),
+    ("g_Init", gripper::g_init),
+    ("g_Calibrate", gripper::g_calibrate),
+    ("g_GripIn", gripper::g_grip_in),
+    ("g_JogIn", gripper::g_grip_in),
+    ("g_GripOut", gripper::g_grip_out),
+    ("g_JogOut", gripper::g_grip_out),
+    ("g_MoveTo", gripper::g_move_to),
+    ("g_Stop", gripper::g_accept),
+    ("g_BlowOn1", gripper::g_accept),
+    ("g_BlowOff1", gripper::g_accept),
+    ("g_BlowOn2", gripper::g_accept),
+    ("g_BlowOff2", gripper::g_accept),
+    ("g_VacuumOn1", gripper::g_accept),
+    ("g_VacuumOff1", gripper::g_accept),
+    ("g_VacuumOn2", gripper::g_accept),
+    ("g_VacuumOff2", gripper::g_accept),
     ("Incr", data::incr),
     ("Decr", data::decr),
     ("Add", data::add),
@@ -194,6 +212,9 @@ const FUNCTIONS: &[(&str, FuncFn)] = &[
     ("SocketGetStatus", sockets::socket_get_status),
     ("RawBytesLen", rawbytes::raw_bytes_len),
     ("IsMechUnitActive", units::is_mech_unit_active),
+    ("GetMotorTorque", units::get_motor_torque),
+    ("g_GetPos", gripper::g_get_pos),
+    ("g_IsCalibrated", gripper::g_is_calibrated),
     ("GetSysInfo", config::get_sys_info),
     ("DInput", io::input),
     ("DOutput", io::input),

@@ -486,6 +486,64 @@ pub(crate) fn ui_list_view(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
     Ok(ask_then(cx, a, q, then, None, Value::Num(0.0))?.unwrap_or(Value::Num(0.0)))
 }
 
+/// `ExecEngine` (Production Manager): the execution engine shows the
+/// operator its menu of parts, runs the part chosen, and shows the menu
+/// again, for ever. The operator answers with the part's procedure (the
+/// routine a `partdata` names, a procedure without parameters). An answer
+/// after a delay keeps the task waiting that long; without an answer the
+/// task waits for the operator. The engine's events (`ee_event` routines)
+/// and its station handling are not simulated.
+pub(crate) fn exec_engine(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    // The engine's loop: after the part (or the delay), ask again.
+    cx.m.again();
+    if let Some(part) = cx.m.engine_part.take() {
+        return run_part(cx, &part);
+    }
+    let mut q = Ask::new(cx, a, Expect::Text);
+    q.question.header = "Production Manager".to_owned();
+    q.question.lines = vec!["the part to run (its procedure's name)".to_owned()];
+    let Some((answer, after)) = answer_of(cx, &q)? else {
+        return fault(FaultKind::Operator(format!(
+            "waiting for the operator at {}: {}",
+            q.question.at,
+            q.summary()
+        )));
+    };
+    let part = match answer {
+        Value::Str(s) => s.trim().to_owned(),
+        other => other.to_string(),
+    };
+    if after > 0.0 {
+        cx.m.engine_part = Some(part);
+        let until = cx.now() + after;
+        return Ok(Done::Wait(Box::new(Wait {
+            kind: WaitKind::Time(until),
+            deadline: None,
+            on_timeout: Timeout::Error("ERR_WAIT_MAXTIME", String::new()),
+            what: q.summary(),
+        })));
+    }
+    run_part(cx, &part)
+}
+
+/// The part `name` the operator chose: its procedure, called.
+fn run_part(cx: &mut Cx<'_>, name: &str) -> R<Done> {
+    let module = cx.m.frames.last().map_or(usize::MAX, |f| f.code.module);
+    let routine = cx.m.prog.routine_named(module, name);
+    let decl = routine.and_then(|id| cx.m.prog.routines.get(id as usize).map(|r| &r.decl));
+    match (routine, decl) {
+        (Some(id), Some(d))
+            if d.kind == rapid_analyzer::items::RoutineKind::Proc
+                && d.params.iter().all(|p| p.optional) =>
+        {
+            Ok(Done::Call(id))
+        }
+        _ => fault(FaultKind::Operator(format!(
+            "the answer {name:?} to ExecEngine: expected the name of a procedure without parameters, the part to run"
+        ))),
+    }
+}
+
 /// `UIClientExist()`: the simulated controller has its pendant.
 pub(crate) fn ui_client_exist(_: &mut Cx<'_>, _: &mut Args) -> R<Value> {
     Ok(Value::Bool(true))

@@ -1,6 +1,6 @@
 //! Mechanical units (`mecunit` data, the units of the controller's
 //! `MOC.cfg`, which the checker holds the program's names to): `ActUnit`,
-//! `DeactUnit`, `IsMechUnitActive`. Every unit is active
+//! `DeactUnit`, `IsMechUnitActive`, `GetMotorTorque`. Every unit is active
 //! when the run starts (the simulation does not read `MOC.cfg`'s
 //! activation at start-up); the state is the controller's, shared by its
 //! tasks.
@@ -8,7 +8,7 @@
 use rapid_evaluator::Value;
 
 use super::{Args, Cx, Done};
-use crate::machine::{R, invalid};
+use crate::machine::{R, fault, invalid, named_error};
 
 /// The unit a `mecunit` argument names (folded).
 fn unit(cx: &mut Cx<'_>, a: &Args) -> R<String> {
@@ -38,4 +38,26 @@ pub(crate) fn deact_unit(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
 pub(crate) fn is_mech_unit_active(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
     let u = unit(cx, a)?;
     Ok(Value::Bool(!cx.sh.inactive_units.contains(&u)))
+}
+
+/// `GetMotorTorque([\MecUnit,] AxisNo)`: the torque of an axis's motor.
+/// The simulation has no dynamics model (no masses, no loads, no
+/// friction), so every motor reads 0 Nm, as a robot at rest with its
+/// weight balanced would; the axis number is checked (1 to 6).
+pub(crate) fn get_motor_torque(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    if a.given("MecUnit") {
+        match cx.req(a, "MecUnit")?.field("name") {
+            Some(Value::Str(n)) if !n.is_empty() => {}
+            _ => return invalid("GetMotorTorque: MecUnit names no mechanical unit"),
+        }
+    }
+    let axis = cx.num(a, "AxisNo")?;
+    if axis.fract() != 0.0 || !(1.0..=6.0).contains(&axis) {
+        return fault(named_error(
+            &cx.m.prog,
+            "ERR_AXIS_PAR",
+            format!("GetMotorTorque: there is no axis {axis}"),
+        ));
+    }
+    Ok(Value::Num(0.0))
 }

@@ -267,12 +267,19 @@ impl Compiler<'_> {
         given: &[Given<'_>],
         f: BuiltinFn,
     ) {
-        let Some(b) = self.binding(callee, &r.name, given) else {
-            return;
-        };
-        let params = catalogue_params(r);
-        let Some(bound) = self.args(given, &b, &params, true, &r.name) else {
-            return;
+        let bound = if !r.signature_known && given.is_empty() {
+            // No source documents its parameters, and the call gives no
+            // argument: there is nothing to bind.
+            Vec::new()
+        } else {
+            let Some(b) = self.binding(callee, &r.name, given) else {
+                return;
+            };
+            let params = catalogue_params(r);
+            let Some(bound) = self.args(given, &b, &params, true, &r.name) else {
+                return;
+            };
+            bound
         };
         let names = given
             .iter()

@@ -254,9 +254,28 @@ pub struct Machine {
     /// A function of the controller waits (for the operator): the task
     /// blocks, and the wait's end gives the function's result.
     pub(crate) function_wait: Option<Box<Wait>>,
+    /// The part the operator chose for `ExecEngine`, run when its answer's
+    /// delay is over.
+    pub(crate) engine_part: Option<String>,
+    /// The task's YuMi SmartGripper.
+    pub(crate) gripper: crate::builtins::gripper::Gripper,
 }
 
 impl Machine {
+    /// After the instruction running now (its call, its wait), its
+    /// statement runs again: the frame goes back to the statement's start.
+    pub(crate) fn again(&mut self) {
+        if let Some(top) = self.frames.last_mut() {
+            let ran = top.code.ops.get(..top.pc as usize).unwrap_or_default();
+            if let Some(start) = ran
+                .iter()
+                .rposition(|op| matches!(op, crate::code::Op::Stmt(_)))
+            {
+                top.pc = start as Pc;
+            }
+        }
+    }
+
     /// A task of `prog`, its data as the controller sets them when it
     /// loads the program; shared persistents live in `shared`.
     pub(crate) fn new(
@@ -290,6 +309,8 @@ impl Machine {
             evaluated: None,
             read_clock: false,
             function_wait: None,
+            engine_part: None,
+            gripper: Default::default(),
             name,
             number,
             prog,

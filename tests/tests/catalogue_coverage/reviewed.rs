@@ -680,13 +680,6 @@ pub const REVIEWED: &[Reviewed] = &[
     },
     Reviewed {
         repo: "taeyangshim-stack__s25016",
-        why: Why::ControllerConfig,
-        note: "mechanical units of the controller's MOC configuration (`\\MecUnit:=`)",
-        data: &["ELM_X", "GantryRob", "GantryRob_7"],
-        types: &[],
-    },
-    Reviewed {
-        repo: "taeyangshim-stack__s25016",
         why: Why::Unverified,
         note: "names of the Discrete Application Platform's process hooks (DAOK, DA_*, TmEvt3), of PickMaster's calibration program (itmsrc, CnvName...) and of the Lincoln power-source data module; declared by those products' installed modules, which no public source at hand documents",
         data: &[
