@@ -231,7 +231,10 @@ pub fn page(runs: &[TaskRun]) -> String {
         let _ = writeln!(s, "| `{name}` | {n} |");
     }
     let _ = writeln!(s, "\n## Every task\n");
-    let _ = writeln!(s, "| task | class | detail |\n| --- | --- | --- |");
+    let _ = writeln!(
+        s,
+        "| task | backup | class | detail |\n| --- | --- | --- | --- |"
+    );
     for r in runs {
         let detail = r
             .detail
@@ -239,7 +242,8 @@ pub fn page(runs: &[TaskRun]) -> String {
             .next()
             .unwrap_or_default()
             .replace('|', "\\|");
-        let _ = writeln!(s, "| `{}` | {:?} | {} |", r.key, r.class, detail);
+        let backup = if r.backup { "yes" } else { "" };
+        let _ = writeln!(s, "| `{}` | {backup} | {:?} | {detail} |", r.key, r.class);
     }
     s
 }
