@@ -18,8 +18,8 @@ mod config;
 mod unit;
 mod view;
 pub use config::{
-    Config, Signals, TaskKind, TaskModule, TaskSettings, config_of, is_signal_type, parse_config,
-    parse_eio_signals,
+    Config, SignalKind, Signals, TaskKind, TaskModule, TaskSettings, config_of, is_signal_type,
+    parse_config, parse_eio_signals,
 };
 pub use unit::Unit;
 use view::View;

@@ -161,15 +161,82 @@ fn signals_of(file: &crate::cfg::CfgFile) -> Signals {
         let Some(name) = e.get("Name") else {
             continue;
         };
-        let ty = match e.get("SignalType").map(str::to_ascii_uppercase).as_deref() {
-            Some("DO") => "signaldo",
-            Some("AI") => "signalai",
-            Some("AO") => "signalao",
-            Some("GI") => "signalgi",
-            Some("GO") => "signalgo",
-            _ => "signaldi",
-        };
-        out.insert(fold(name), ty);
+        let kind = SignalKind::from_cfg(e.get("SignalType").unwrap_or_default());
+        out.insert(fold(name), kind.type_name());
     }
     out
+}
+
+/// The kind of an I/O signal.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SignalKind {
+    DigitalIn,
+    DigitalOut,
+    AnalogIn,
+    AnalogOut,
+    GroupIn,
+    GroupOut,
+}
+
+impl SignalKind {
+    /// The RAPID type of the signal (`signaldi` ...).
+    pub fn type_name(self) -> &'static str {
+        match self {
+            SignalKind::DigitalIn => "signaldi",
+            SignalKind::DigitalOut => "signaldo",
+            SignalKind::AnalogIn => "signalai",
+            SignalKind::AnalogOut => "signalao",
+            SignalKind::GroupIn => "signalgi",
+            SignalKind::GroupOut => "signalgo",
+        }
+    }
+
+    /// The kind a signal's name suggests, for signals no configuration
+    /// declares: `di...`, `do...`, `ai...`, `ao...`, `gi...`, `go...`; a
+    /// digital input otherwise.
+    pub fn guess(name: &str) -> SignalKind {
+        match name.get(..2).map(str::to_ascii_lowercase).as_deref() {
+            Some("do") => SignalKind::DigitalOut,
+            Some("ai") => SignalKind::AnalogIn,
+            Some("ao") => SignalKind::AnalogOut,
+            Some("gi") => SignalKind::GroupIn,
+            Some("go") => SignalKind::GroupOut,
+            _ => SignalKind::DigitalIn,
+        }
+    }
+
+    /// The kind of an `EIO.cfg` `-SignalType` (`DI`, `DO`, `AI`, `AO`,
+    /// `GI`, `GO`); a digital input otherwise.
+    pub fn from_cfg(signal_type: &str) -> SignalKind {
+        match signal_type.to_ascii_uppercase().as_str() {
+            "DO" => SignalKind::DigitalOut,
+            "AI" => SignalKind::AnalogIn,
+            "AO" => SignalKind::AnalogOut,
+            "GI" => SignalKind::GroupIn,
+            "GO" => SignalKind::GroupOut,
+            _ => SignalKind::DigitalIn,
+        }
+    }
+
+    /// The kind of a RAPID signal type name.
+    pub fn from_type(name: &str) -> Option<SignalKind> {
+        [
+            SignalKind::DigitalIn,
+            SignalKind::DigitalOut,
+            SignalKind::AnalogIn,
+            SignalKind::AnalogOut,
+            SignalKind::GroupIn,
+            SignalKind::GroupOut,
+        ]
+        .into_iter()
+        .find(|k| k.type_name().eq_ignore_ascii_case(name))
+    }
+
+    /// Can the program set it?
+    pub fn is_output(self) -> bool {
+        matches!(
+            self,
+            SignalKind::DigitalOut | SignalKind::AnalogOut | SignalKind::GroupOut
+        )
+    }
 }
