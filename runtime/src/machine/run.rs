@@ -97,77 +97,58 @@ impl Machine {
                 Op::Stmt(s) => {
                     let s = *s;
                     let phase = self.frames.last().map_or(Boundary::None, |f| f.boundary);
-                    match phase {
-                        Boundary::None => {
-                            if *budget == 0 {
-                                pc -= 1;
-                                save!();
-                                return Ok(Some(Yield::Slice));
-                            }
-                            *budget -= 1;
-                            if let Some(top) = self.frames.last_mut() {
-                                top.stmt = s;
-                                if top.retries > 0 {
-                                    Machine::statement_reached(top, pc - 1);
-                                }
-                            }
-                            sh.steps += 1;
-                            if sh.steps > sh.limits.max_steps {
-                                return fault(FaultKind::Budget(format!(
-                                    "the step budget ({} statements) ran out",
-                                    sh.limits.max_steps
-                                )));
-                            }
-                            let may_interrupt = self.events_seen < sh.events.len()
-                                || self.log_seen < sh.event_log.len()
-                                || self.interrupts.has_pending()
-                                || !self.interrupts.pers.is_empty();
-                            if may_interrupt && self.interrupt_due(sh) {
-                                pc -= 1;
-                                save!();
-                                if let Some(top) = self.frames.last_mut() {
-                                    top.boundary = Boundary::Counted;
-                                }
-                                if self.start_trap(sh)? {
-                                    reload!();
-                                    continue;
-                                }
-                                pc += 1;
-                            }
-                            if sh.debug.active
-                                && let Some(stop) = sh.debug.stop_at(self, &code, s)
-                            {
-                                pc -= 1;
-                                save!();
-                                if let Some(top) = self.frames.last_mut() {
-                                    top.boundary = Boundary::Stopped;
-                                }
-                                return Ok(Some(Yield::Stopped(stop)));
-                            }
-                            if let Some(top) = self.frames.last_mut() {
-                                top.boundary = Boundary::None;
+                    if matches!(phase, Boundary::None) {
+                        if *budget == 0 {
+                            pc -= 1;
+                            save!();
+                            return Ok(Some(Yield::Slice));
+                        }
+                        *budget -= 1;
+                        if let Some(top) = self.frames.last_mut() {
+                            top.stmt = s;
+                            if top.retries > 0 {
+                                Machine::statement_reached(top, pc - 1);
                             }
                         }
-                        Boundary::Counted => {
-                            if sh.debug.active
-                                && let Some(stop) = sh.debug.stop_at(self, &code, s)
-                            {
-                                pc -= 1;
-                                save!();
-                                if let Some(top) = self.frames.last_mut() {
-                                    top.boundary = Boundary::Stopped;
-                                }
-                                return Ok(Some(Yield::Stopped(stop)));
-                            }
-                            if let Some(top) = self.frames.last_mut() {
-                                top.boundary = Boundary::None;
-                            }
+                        sh.steps += 1;
+                        if sh.steps > sh.limits.max_steps {
+                            return fault(FaultKind::Budget(format!(
+                                "the step budget ({} statements) ran out",
+                                sh.limits.max_steps
+                            )));
                         }
-                        Boundary::Stopped => {
+                        let may_interrupt = self.events_seen < sh.events.len()
+                            || self.log_seen < sh.event_log.len()
+                            || self.interrupts.has_pending()
+                            || !self.interrupts.pers.is_empty();
+                        if may_interrupt && self.interrupt_due(sh) {
+                            pc -= 1;
+                            save!();
                             if let Some(top) = self.frames.last_mut() {
-                                top.boundary = Boundary::None;
+                                top.boundary = Boundary::Counted;
                             }
+                            if self.start_trap(sh)? {
+                                reload!();
+                                continue;
+                            }
+                            pc += 1;
                         }
+                    }
+                    // A statement a debugger stopped at runs on when it
+                    // resumes; any other may stop.
+                    if !matches!(phase, Boundary::Stopped)
+                        && sh.debug.active
+                        && let Some(stop) = sh.debug.stop_at(self, &code, s)
+                    {
+                        pc -= 1;
+                        save!();
+                        if let Some(top) = self.frames.last_mut() {
+                            top.boundary = Boundary::Stopped;
+                        }
+                        return Ok(Some(Yield::Stopped(stop)));
+                    }
+                    if let Some(top) = self.frames.last_mut() {
+                        top.boundary = Boundary::None;
                     }
                 }
                 Op::Mark(s) => {
