@@ -73,6 +73,16 @@ impl Workspace {
         a.primary.get(path).cloned()
     }
 
+    /// The `HOME/` modules checked in the task `key` ([`Workspace::adopted_key`]).
+    pub(super) fn adopted_by(&self, key: &str) -> HashSet<String> {
+        let a = self.adoption();
+        a.primary
+            .iter()
+            .filter(|(_, k)| *k == key)
+            .map(|(p, _)| p.clone())
+            .collect()
+    }
+
     /// [`Workspace::adopted_key`] as last worked out, without working it
     /// out again.
     pub(super) fn adopted_so_far(&mut self, path: &str) -> Option<String> {
@@ -490,7 +500,7 @@ mod tests {
 }
 
 /// Does `path` begin with `prefix`, either slash separating folders?
-fn starts_with_path(path: &str, prefix: &str) -> bool {
+pub(super) fn starts_with_path(path: &str, prefix: &str) -> bool {
     let slash = |b: u8| b == b'/' || b == b'\\';
     path.len() >= prefix.len()
         && path
