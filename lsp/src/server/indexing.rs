@@ -211,8 +211,11 @@ pub(super) fn read_units(
 ) -> Vec<String> {
     use rayon::prelude::*;
     let (tx, rx) = std::sync::mpsc::channel();
+    // One file per job: with rayon's adaptive splitting, one thread kept
+    // the largest quarter of the files (they come first) to itself, and
+    // the other, out of work, slept (measured: 18.7 s of CPU against 3.2).
     let parse = move || {
-        files.par_iter().for_each_with(tx, |tx, p| {
+        files.par_iter().with_max_len(1).for_each_with(tx, |tx, p| {
             let read = crate::project::source::SourceFile::read(p)
                 .map(|f| closed_unit(p.to_string_lossy().into_owned(), f.text));
             // The receiver lives until every file is sent.
