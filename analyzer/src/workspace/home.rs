@@ -474,6 +474,16 @@ fn below_home(path: &str, root: &str) -> String {
         .to_ascii_lowercase()
 }
 
+/// Does `path` begin with `prefix`, either slash separating folders?
+pub(super) fn starts_with_path(path: &str, prefix: &str) -> bool {
+    let slash = |b: u8| b == b'/' || b == b'\\';
+    path.len() >= prefix.len()
+        && path
+            .bytes()
+            .zip(prefix.bytes())
+            .all(|(a, b)| a == b || (slash(a) && slash(b)))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -497,14 +507,4 @@ mod tests {
         assert_eq!(owner_backup("b/HOME/x.mod"), Some("b"));
         assert_eq!(owner_backup("proj/src/x.mod"), None);
     }
-}
-
-/// Does `path` begin with `prefix`, either slash separating folders?
-pub(super) fn starts_with_path(path: &str, prefix: &str) -> bool {
-    let slash = |b: u8| b == b'/' || b == b'\\';
-    path.len() >= prefix.len()
-        && path
-            .bytes()
-            .zip(prefix.bytes())
-            .all(|(a, b)| a == b || (slash(a) && slash(b)))
 }
