@@ -47,8 +47,8 @@ pub(super) struct Adoption {
     /// Per task key, the modules it loads that are checked in another task
     /// (derived from `by_root`).
     borrowed: HashMap<String, Vec<String>>,
-    /// Whether the adoption changed since the tasks were last built.
-    changed: bool,
+    /// The backups whose adoption changed since the tasks were last built.
+    changed: BTreeSet<String>,
 }
 
 impl Workspace {
@@ -71,6 +71,16 @@ impl Workspace {
     pub(super) fn adopted_key(&self, path: &str) -> Option<String> {
         let a = self.adoption();
         a.primary.get(path).cloned()
+    }
+
+    /// The `HOME/` modules checked in the task `key` ([`Workspace::adopted_key`]).
+    pub(super) fn adopted_by(&self, key: &str) -> HashSet<String> {
+        let a = self.adoption();
+        a.primary
+            .iter()
+            .filter(|(_, k)| *k == key)
+            .map(|(p, _)| p.clone())
+            .collect()
     }
 
     /// [`Workspace::adopted_key`] as last worked out, without working it
@@ -98,7 +108,11 @@ impl Workspace {
     }
 
     /// Works out the adoption of the backups that changed and drops the
-    /// cached tasks when it is not what they were built with.
+    /// cached tasks that were built with another adoption: those of the
+    /// backups whose adoption changed (a backup's modules never join
+    /// another's tasks), not every task of the workspace. While a large
+    /// workspace is read, backups change all the time; the task of the
+    /// file being edited is built again only when its own backup changes.
     pub(super) fn settle(&mut self) {
         let mut a = std::mem::take(self.adoption_mut());
         if !a.dirty.is_empty() {
@@ -106,9 +120,28 @@ impl Workspace {
         }
         let changed = std::mem::take(&mut a.changed);
         *self.adoption_mut() = a;
-        if changed {
-            self.forget_all_tasks();
+        if !changed.is_empty() {
+            self.forget_tasks_within(&changed);
         }
+    }
+
+    /// Drops the cached tasks of the backups (folders) `roots`: those whose
+    /// key is within one of them, any other that holds a module of one of
+    /// them, and the programs' (a `.pgf` may list a module of another
+    /// folder, which joins it when no task of its backup loads it).
+    /// Dropping too much is harmless (a task is built again when asked),
+    /// so "within" is a plain prefix of the path.
+    fn forget_tasks_within(&mut self, roots: &BTreeSet<String>) {
+        let within = |path: &str| roots.iter().any(|r| starts_with_path(path, r));
+        let programs = &self.programs;
+        let affected = |key: &str, units: &[Arc<Unit>]| {
+            within(key) || programs.contains_key(key) || units.iter().any(|u| within(&u.path))
+        };
+        self.revision += 1;
+        self.tasks.retain(|k, t| !affected(k, &t.units));
+        self.members.retain(|k, units| !affected(k, units));
+        let tasks = &self.tasks;
+        self.views.retain(|k, _| tasks.contains_key(k));
     }
 
     fn recompute(&self, a: &mut Adoption) {
@@ -117,12 +150,14 @@ impl Workspace {
             let now = self.adopt_in(&root);
             let before = match now.is_empty() {
                 true => a.by_root.remove(&root),
-                false => a.by_root.insert(root, now.clone()),
+                false => a.by_root.insert(root.clone(), now.clone()),
             };
-            changed |= before.unwrap_or_default() != now;
+            if before.unwrap_or_default() != now {
+                changed = true;
+                a.changed.insert(root);
+            }
         }
         if changed {
-            a.changed = true;
             a.primary.clear();
             a.borrowed.clear();
             for (path, keys) in a.by_root.values().flatten() {
@@ -437,6 +472,16 @@ fn below_home(path: &str, root: &str) -> String {
     rest.unwrap_or_default()
         .trim_start_matches('/')
         .to_ascii_lowercase()
+}
+
+/// Does `path` begin with `prefix`, either slash separating folders?
+pub(super) fn starts_with_path(path: &str, prefix: &str) -> bool {
+    let slash = |b: u8| b == b'/' || b == b'\\';
+    path.len() >= prefix.len()
+        && path
+            .bytes()
+            .zip(prefix.bytes())
+            .all(|(a, b)| a == b || (slash(a) && slash(b)))
 }
 
 #[cfg(test)]

@@ -373,3 +373,100 @@ fn a_home_module_joins_its_task_whatever_the_order_of_the_files() {
         assert_eq!(ws.task_key("c/HOME/Tool.sys"), "c/HOME");
     }
 }
+
+/// Oracle for the adoption's invalidation ([`Workspace::settle`] drops
+/// only the tasks of the backups whose adoption changed): a workspace read
+/// file by file in any order, with every file's task and diagnostics asked
+/// for after each file (as requests do while the server indexes), ends
+/// with the tasks and diagnostics of one given every file at once.
+#[test]
+fn a_workspace_read_between_requests_equals_one_read_at_once() {
+    let sys = "SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n  -Name \"T_ROB1\"\n#\nCAB_TASK_MODULES:\n  -File \"HOME:/Tool.sys\" -ModName \"Tool\" -Task \"T_ROB1\"\n";
+    let main = "MODULE M\n  PROC main()\n    ToolOn;\n    Load \"HOME:/Lib.mod\";\n    %\"LibProc\"%;\n    BProc;\n  ENDPROC\nENDMODULE\n";
+    let tool = "MODULE Tool(SYSMODULE)\n  PROC ToolOn()\n    LibProc;\n  ENDPROC\nENDMODULE\n";
+    let lib = "MODULE Lib\n  PROC LibProc()\n    ToolOn;\n  ENDPROC\nENDMODULE\n";
+    let spare = "MODULE Spare\n  PROC Other()\n    ToolOn;\n    main;\n  ENDPROC\nENDMODULE\n";
+    let a = "MODULE A\n  PROC main()\n    BProc;\n    ToolOn;\n  ENDPROC\nENDMODULE\n";
+    let b = "MODULE B\n  PROC BProc()\n  ENDPROC\nENDMODULE\n";
+    // (path, text, is a configuration); `b10` is named like a prefix of
+    // `b1`, and `b1/HOME/old/b2` is a backup kept inside b1's HOME/.
+    let files: Vec<(String, &str, bool)> = [
+        ("b1/SYSPAR/SYS.cfg", sys, true),
+        ("b1/HOME/Tool.sys", tool, false),
+        ("b1/HOME/Lib.mod", lib, false),
+        ("b1/HOME/Spare.mod", spare, false),
+        ("b1/RAPID/TASK1/PROGMOD/M.mod", main, false),
+        ("b1/HOME/old/b2/SYSPAR/SYS.cfg", sys, true),
+        ("b1/HOME/old/b2/HOME/Tool.sys", tool, false),
+        ("b1/HOME/old/b2/RAPID/TASK1/PROGMOD/M.mod", main, false),
+        ("b10/HOME/Tool.sys", tool, false),
+        ("b10/RAPID/TASK1/PROGMOD/M.mod", main, false),
+        ("plain/A.mod", a, false),
+        ("plain/B.mod", b, false),
+    ]
+    .into_iter()
+    .map(|(p, t, c)| (p.to_owned(), t, c))
+    .collect();
+    let modules: Vec<&str> = files
+        .iter()
+        .filter(|f| !f.2)
+        .map(|f| f.0.as_str())
+        .collect();
+    let add = |ws: &mut Workspace, (path, text, config): &(String, &str, bool)| {
+        if *config {
+            ws.set_config(path, text);
+        } else {
+            ws.set_unit(Unit::new(path.clone(), (*text).to_owned(), None));
+        }
+    };
+    // Per module: its task's key and members, and its diagnostics.
+    let seen = |ws: &mut Workspace, path: &str| {
+        let task = ws.task_of(path);
+        let mut members: Vec<String> = task.units.iter().map(|u| u.path.clone()).collect();
+        members.sort();
+        let diagnostics: Vec<(&str, std::ops::Range<usize>, String)> = ws
+            .diagnostics(path)
+            .iter()
+            .map(|d| (d.rule.code, d.range.clone(), d.message.clone()))
+            .collect();
+        (ws.task_key(path), members, diagnostics)
+    };
+    let mut at_once = Workspace::new();
+    for f in files.iter().filter(|f| f.2) {
+        add(&mut at_once, f);
+    }
+    at_once.set_units(
+        files
+            .iter()
+            .filter(|f| !f.2)
+            .map(|(p, t, _)| Unit::new(p.clone(), (*t).to_owned(), None)),
+    );
+    let expected: Vec<_> = modules.iter().map(|p| seen(&mut at_once, p)).collect();
+    // The adoption matters here: M.mod of b1 sees Tool.sys and Lib.mod.
+    assert!(expected[3].1.contains(&"b1/HOME/Lib.mod".to_owned()));
+    let n = files.len();
+    let orders: Vec<Vec<usize>> = vec![
+        (0..n).collect(),
+        (0..n).rev().collect(),
+        (0..n).map(|i| (i * 5) % n).collect(),
+        (0..n).map(|i| (i * 7 + 3) % n).collect(),
+    ];
+    for order in orders {
+        let mut ws = Workspace::new();
+        for (step, &i) in order.iter().enumerate() {
+            add(&mut ws, &files[i]);
+            for &j in &order[..=step] {
+                if !files[j].2 {
+                    seen(&mut ws, &files[j].0);
+                }
+            }
+        }
+        for (path, want) in modules.iter().zip(&expected) {
+            assert_eq!(
+                &seen(&mut ws, path),
+                want,
+                "{path} read in the order {order:?}"
+            );
+        }
+    }
+}
