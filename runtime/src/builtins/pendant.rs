@@ -500,7 +500,7 @@ pub(crate) fn exec_engine(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
         return run_part(cx, &part);
     }
     let mut q = Ask::new(cx, a, Expect::Text);
-    q.question.header = "Production Manager".to_owned();
+    q.question.header = "Production Manager:".to_owned();
     q.question.lines = vec!["the part to run (its procedure's name)".to_owned()];
     let Some((answer, after)) = answer_of(cx, &q)? else {
         return fault(FaultKind::Operator(format!(
@@ -538,9 +538,14 @@ fn run_part(cx: &mut Cx<'_>, name: &str) -> R<Done> {
         {
             Ok(Done::Call(id))
         }
-        _ => fault(FaultKind::Operator(format!(
-            "the answer {name:?} to ExecEngine: expected the name of a procedure without parameters, the part to run"
-        ))),
+        _ => {
+            let at =
+                cx.m.location()
+                    .map_or_else(String::new, |l| format!(" at {}:{}", l.path, l.line));
+            fault(FaultKind::Operator(format!(
+                "the answer {name:?} to ExecEngine{at}: expected the name of a procedure without parameters, the part to run"
+            )))
+        }
     }
 }
 
