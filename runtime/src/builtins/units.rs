@@ -10,12 +10,17 @@ use rapid_evaluator::Value;
 use super::{Args, Cx, Done};
 use crate::machine::{R, fault, invalid, named_error};
 
-/// The unit a `mecunit` argument names (folded).
-fn unit(cx: &mut Cx<'_>, a: &Args) -> R<String> {
-    match cx.req(a, "MechUnit")?.field("name") {
+/// The unit the `mecunit` argument `param` names (folded).
+fn unit_of(cx: &mut Cx<'_>, a: &Args, param: &str) -> R<String> {
+    match cx.req(a, param)?.field("name") {
         Some(Value::Str(n)) if !n.is_empty() => Ok(n.to_ascii_lowercase()),
-        _ => invalid(format!("{}: MechUnit names no mechanical unit", a.name)),
+        _ => invalid(format!("{}: {param} names no mechanical unit", a.name)),
     }
+}
+
+/// The unit of the `MechUnit` argument.
+fn unit(cx: &mut Cx<'_>, a: &Args) -> R<String> {
+    unit_of(cx, a, "MechUnit")
 }
 
 /// `ActUnit MechUnit`.
@@ -46,10 +51,7 @@ pub(crate) fn is_mech_unit_active(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
 /// weight balanced would; the axis number is checked (1 to 6).
 pub(crate) fn get_motor_torque(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
     if a.given("MecUnit") {
-        match cx.req(a, "MecUnit")?.field("name") {
-            Some(Value::Str(n)) if !n.is_empty() => {}
-            _ => return invalid("GetMotorTorque: MecUnit names no mechanical unit"),
-        }
+        unit_of(cx, a, "MecUnit")?;
     }
     let axis = cx.num(a, "AxisNo")?;
     if axis.fract() != 0.0 || !(1.0..=6.0).contains(&axis) {
