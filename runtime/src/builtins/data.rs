@@ -4,9 +4,7 @@
 use rapid_evaluator::{BinOp, Type, Value};
 
 use super::{Args, Cx, Done};
-use crate::machine::{
-    FaultKind, Place, R, Root, Status, Wait, WaitKind, fault, invalid, named_error,
-};
+use crate::machine::{FaultKind, Place, R, Root, Status, Wait, fault, invalid, named_error};
 use crate::program::Home;
 
 fn step(cx: &mut Cx<'_>, a: &Args, op: BinOp, by: Value) -> R<Done> {
@@ -155,12 +153,10 @@ pub(crate) fn wait_time(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     if a.given("InPos") {
         until = until.max(super::motion::motion_end(cx));
     }
-    Ok(Done::Wait(Box::new(Wait {
-        kind: WaitKind::Time(until),
-        deadline: None,
-        on_timeout: crate::machine::Timeout::Error("ERR_WAIT_MAXTIME", String::new()),
-        what: format!("WaitTime {t}"),
-    })))
+    Ok(Done::Wait(Box::new(Wait::until(
+        until,
+        format!("WaitTime {t}"),
+    ))))
 }
 
 fn clock_fields(v: &Value) -> (bool, f64, f64) {

@@ -9,7 +9,7 @@ use rapid_evaluator::Value;
 use rapid_evaluator::geometry::{iso_of, orient_value, pos_value};
 
 use super::{Args, Cx, Done};
-use crate::machine::{FaultKind, R, Timeout, Wait, WaitKind, fault, invalid, named_error};
+use crate::machine::{FaultKind, R, Wait, fault, invalid, named_error};
 use crate::world::{
     JointTarget, MoveKind, MoveRequest, MoveTarget, Pose, RobTarget, Robot, RobotError, Speed,
     Tool, WObj, Zone,
@@ -374,12 +374,10 @@ fn do_move(cx: &mut Cx<'_>, a: &Args, target_param: &str) -> R<Done> {
         cx.sh.moves.push(m);
     }
     if end > cx.now() && !conc {
-        return Ok(Done::Wait(Box::new(Wait {
-            kind: WaitKind::Time(end),
-            deadline: None,
-            on_timeout: Timeout::Error("ERR_WAIT_MAXTIME", String::new()),
-            what: format!("{} (the robot moves)", a.name),
-        })));
+        return Ok(Done::Wait(Box::new(Wait::until(
+            end,
+            format!("{} (the robot moves)", a.name),
+        ))));
     }
     Ok(Done::Next)
 }
@@ -476,12 +474,10 @@ pub(crate) fn wait_rob(cx: &mut Cx<'_>, _: &mut Args) -> R<Done> {
     if end <= cx.now() {
         return Ok(Done::Next);
     }
-    Ok(Done::Wait(Box::new(Wait {
-        kind: WaitKind::Time(end),
-        deadline: None,
-        on_timeout: Timeout::Error("ERR_WAIT_MAXTIME", String::new()),
-        what: "WaitRob (the robot moves)".to_owned(),
-    })))
+    Ok(Done::Wait(Box::new(Wait::until(
+        end,
+        "WaitRob (the robot moves)".to_owned(),
+    ))))
 }
 
 /// Motion settings that do not change where the robot goes.

@@ -516,12 +516,7 @@ pub(crate) fn exec_engine(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     if after > 0.0 {
         cx.m.engine_part = Some(part);
         let until = cx.now() + after;
-        return Ok(Done::Wait(Box::new(Wait {
-            kind: WaitKind::Time(until),
-            deadline: None,
-            on_timeout: Timeout::Error("ERR_WAIT_MAXTIME", String::new()),
-            what: q.summary(),
-        })));
+        return Ok(Done::Wait(Box::new(Wait::until(until, q.summary()))));
     }
     run_part(cx, &part)
 }

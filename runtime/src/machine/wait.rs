@@ -20,6 +20,18 @@ pub(crate) struct Wait {
     pub what: String,
 }
 
+impl Wait {
+    /// Until the clock reaches `until` (no deadline of its own).
+    pub(crate) fn until(until: f64, what: String) -> Wait {
+        Wait {
+            kind: WaitKind::Time(until),
+            deadline: None,
+            on_timeout: Timeout::Error("ERR_WAIT_MAXTIME", String::new()),
+            what,
+        }
+    }
+}
+
 #[derive(Clone, Debug)]
 pub(crate) enum WaitKind {
     /// Until the clock reaches this time (`WaitTime`, a move that takes
