@@ -63,7 +63,7 @@ const FIRST_BOOKED: f32 = 500.0;
 
 /// The data object named by a string at run time, as the running
 /// routine's module sees the name.
-fn data_named(cx: &Cx<'_>, name: &str) -> R<Place> {
+pub(crate) fn data_named(cx: &Cx<'_>, name: &str) -> R<Place> {
     let module = cx.m.frames.last().map_or(usize::MAX, |f| f.code.module);
     let root = match cx.m.prog.data_named(module, name) {
         Some(Home::Global(g)) => Root::Global(g),
@@ -396,4 +396,20 @@ fn system_constant(cx: &mut Cx<'_>, name: &str) -> R<Value> {
             .unwrap_or(Value::Num(0.0))),
         None => invalid(format!("the constant {name} is not in the catalogue")),
     }
+}
+
+/// `RemainingRetries()`: how many more `RETRY`s the error handler running
+/// may make before the error goes to the caller (the controller's limit,
+/// 4 by default, less those made for this error).
+pub(crate) fn remaining_retries(cx: &mut Cx<'_>, _: &mut Args) -> R<Value> {
+    let made = cx
+        .m
+        .frames
+        .iter()
+        .rev()
+        .find(|f| f.in_handler)
+        .or(cx.m.frames.last())
+        .map_or(0, |f| f.retries);
+    let left = cx.sh.limits.max_retries.saturating_sub(made);
+    Ok(Value::Num(left as f32))
 }

@@ -426,3 +426,58 @@ pub(crate) fn i_watch(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     cx.m.interrupts.sleep(id, false);
     Ok(Done::Next)
 }
+
+/// `ValidIO(Signal)`: whether the signal can be used: FALSE for a signal
+/// variable that `AliasIO` has not connected, TRUE for a signal (the
+/// simulation's I/O devices are always running).
+pub(crate) fn valid_io(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    let v = cx.req(a, "Signal")?;
+    if !crate::machine::is_signal(&v) {
+        return invalid(format!(
+            "ValidIO: Signal must be a signal, not {}",
+            crate::machine::describe(&v)
+        ));
+    }
+    Ok(Value::Bool(cx.m.signal_of(cx.sh, &v).is_ok()))
+}
+
+/// `IOUnitState(UnitName [\Phys] | [\Logic])`: an I/O device is running
+/// unless `IODisable` disabled it: `IOUNIT_RUNNING`/`IOUNIT_DISABLE`, with
+/// `\Logic` `IOUNIT_LOG_STATE_ENABLED`/`_DISABLED`, with `\Phys`
+/// `IOUNIT_PHYS_STATE_RUNNING`/`_DEACTIVATED`.
+pub(crate) fn io_unit_state(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    let unit = cx.string(a, "UnitName")?.to_ascii_lowercase();
+    let disabled = cx.sh.disabled_io_units.contains(&unit);
+    let name = match (a.given("Phys"), a.given("Logic"), disabled) {
+        (true, _, false) => "IOUNIT_PHYS_STATE_RUNNING",
+        (true, _, true) => "IOUNIT_PHYS_STATE_DEACTIVATED",
+        (_, true, false) => "IOUNIT_LOG_STATE_ENABLED",
+        (_, true, true) => "IOUNIT_LOG_STATE_DISABLED",
+        (_, _, false) => "IOUNIT_RUNNING",
+        (_, _, true) => "IOUNIT_DISABLE",
+    };
+    match rapid_evaluator::predefined(name) {
+        Some(v) => Ok(v),
+        None => invalid(format!("IOUnitState: the catalogue has no value for {name}")),
+    }
+}
+
+/// `IOEnable UnitName, MaxTime`: the I/O device runs again (at once).
+pub(crate) fn io_enable(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let unit = cx.string(a, "UnitName")?.to_ascii_lowercase();
+    cx.num(a, "MaxTime")?;
+    cx.sh.disabled_io_units.retain(|u| *u != unit);
+    Ok(Done::Next)
+}
+
+/// `IODisable UnitName, MaxTime`: the I/O device stops (at once);
+/// `IOUnitState` reports it disabled until `IOEnable`. Its signals keep
+/// their values.
+pub(crate) fn io_disable(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let unit = cx.string(a, "UnitName")?.to_ascii_lowercase();
+    cx.num(a, "MaxTime")?;
+    if !cx.sh.disabled_io_units.contains(&unit) {
+        cx.sh.disabled_io_units.push(unit);
+    }
+    Ok(Done::Next)
+}

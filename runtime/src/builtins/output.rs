@@ -139,3 +139,75 @@ pub(crate) fn ui_msg_write_abort(cx: &mut Cx<'_>, _: &mut Args) -> R<Done> {
     cx.trace("UIMsgWriteAbort: the message of UIMsgWrite is removed");
     Ok(Done::Next)
 }
+
+/// `SkipWarn`: the warning of the error just handled is not logged. The
+/// simulation logs no warning for a handled error, so there is nothing to
+/// skip; it is traced.
+pub(crate) fn skip_warn(cx: &mut Cx<'_>, _: &mut Args) -> R<Done> {
+    cx.trace("SkipWarn: the handled error's warning is not logged");
+    Ok(Done::Next)
+}
+
+/// `ErrLog ErrorID [\W] | [\I] Argument1 ... Argument5`: a message of the
+/// event log's text tables (whose texts the simulation does not have), as
+/// one line: `ErrLog`, its number, then the arguments that are not empty.
+pub(crate) fn err_log(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let id = cx.num(a, "ErrorID")?;
+    let mut line = format!("ErrLog {}", format_num(id as f32));
+    if a.given("W") {
+        line.push_str(" (warning)");
+    } else if a.given("I") {
+        line.push_str(" (information)");
+    }
+    line.push(':');
+    line.push_str(&log_arguments(cx, a)?);
+    cx.print(Stream::EventLog, &line);
+    Ok(Done::Next)
+}
+
+/// The text arguments of `ErrLog` and `ErrRaise` that are not empty, each
+/// after a space.
+fn log_arguments(cx: &mut Cx<'_>, a: &Args) -> R<String> {
+    let mut text = String::new();
+    for p in ["Argument1", "Argument2", "Argument3", "Argument4", "Argument5"] {
+        if let Some(s) = cx.opt_string(a, p)?
+            && !s.is_empty()
+        {
+            text.push(' ');
+            text.push_str(&s);
+        }
+    }
+    Ok(text)
+}
+
+/// `ErrRaise ErrorName, ErrorId, Argument1 ... Argument5`: the error is
+/// logged (as `ErrLog` logs), then raised in the routine as `RAISE` would:
+/// `ErrorName` names the `errnum` data (booked with `BookErrNo`) or a
+/// system error (`ERR_...`).
+pub(crate) fn err_raise(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let name = cx.string(a, "ErrorName")?;
+    let id = cx.num(a, "ErrorId")?;
+    let text = log_arguments(cx, a)?;
+    let errno = match super::data::data_named(cx, &name) {
+        Ok(place) => match cx.m.load(cx.sh, &place)?.as_f64() {
+            Some(x) => x as f32,
+            None => return invalid(format!("ErrRaise: {name} is not an errnum")),
+        },
+        Err(_) if cx.m.prog.errnum_name(cx.m.prog.errnum(&name)).is_some() => {
+            cx.m.prog.errnum(&name)
+        }
+        Err(e) => return Err(e),
+    };
+    cx.print(
+        Stream::EventLog,
+        &format!("ErrRaise {name} {}:{text}", format_num(id as f32)),
+    );
+    let mut raised = match cx.m.raise(Some(Value::Num(errno))) {
+        Ok(()) => return Ok(Done::Next),
+        Err(f) => f,
+    };
+    if let crate::machine::FaultKind::Rapid { message, .. } = &mut raised.kind {
+        *message = format!("raised by ErrRaise {name}");
+    }
+    Err(raised)
+}

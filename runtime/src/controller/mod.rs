@@ -63,6 +63,8 @@ pub(crate) struct Shared {
     pub sockets: Box<dyn Sockets>,
     /// The mechanical units `DeactUnit` deactivated (folded names).
     pub inactive_units: Vec<String>,
+    /// The I/O devices `IODisable` disabled (folded names).
+    pub disabled_io_units: Vec<String>,
     /// The configuration (`WriteCfgData` changes it) and identity.
     pub system: crate::world::System,
     /// The controller's event log (`ErrWrite`), for `IError`.
@@ -211,6 +213,7 @@ impl Controller {
                 sync: Sync::default(),
                 files: world.files,
                 inactive_units: Vec::new(),
+                disabled_io_units: Vec::new(),
                 ui_instances: 0,
                 event_log: Vec::new(),
                 system: config.system.clone(),
