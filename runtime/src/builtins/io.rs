@@ -198,6 +198,14 @@ pub(crate) fn input(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
     cx.m.signal_value(cx.sh, &v).map(Value::Num)
 }
 
+/// `GInputDnum(Signal)`, `GOutputDnum(Signal)`: a group signal's value
+/// as a dnum (up to 32 bits).
+pub(crate) fn input_dnum(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    let v = cx.req(a, "Signal")?;
+    let (name, _) = cx.m.signal_of(cx.sh, &v)?;
+    Ok(Value::Dnum(cx.sh.io.read(&name).unwrap_or(0.0)))
+}
+
 /// `TestDI(Signal)`: whether a digital input is 1.
 pub(crate) fn test_di(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
     let v = cx.req(a, "Signal")?;

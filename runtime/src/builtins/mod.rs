@@ -227,6 +227,8 @@ const FUNCTIONS: &[(&str, FuncFn)] = &[
     ("AOutput", io::input),
     ("GInput", io::input),
     ("GOutput", io::input),
+    ("GInputDnum", io::input_dnum),
+    ("GOutputDnum", io::input_dnum),
     ("TestDI", io::test_di),
     ("GetSignalOrigin", io::get_signal_origin),
     ("ValidIO", io::valid_io),

@@ -1,5 +1,6 @@
 MODULE io_units_log
-  ! I/O devices (IOUnitState, IODisable, IOEnable, ValidIO), the event
+  ! I/O devices (IOUnitState, IODisable, IOEnable, ValidIO), a group
+  ! output read as a dnum (GOutputDnum), the event
   ! log's text-table messages (ErrLog, ErrRaise, SkipWarn) and
   ! RemainingRetries.
   VAR errnum ERR_GRIPPER := -1;
@@ -20,6 +21,8 @@ MODULE io_units_log
     SetDO do1, 1;
     TPWrite "valid do1 "\Bool:=ValidIO(do1);
     TPWrite "valid alias "\Bool:=ValidIO(do_alias);
+    SetGO go_word, 40000;
+    TPWrite "group as dnum "\Dnum:=GOutputDnum(go_word) * 100000;
     ErrLog 4800, "Gripper", "no part", ERRSTR_UNUSED, ERRSTR_UNUSED, ERRSTR_UNUSED;
     ErrLog 4801 \W, "Cell", "slow", "", "", "";
     retrying;
@@ -55,6 +58,7 @@ ENDMODULE
 !> enabled again TRUE
 !> valid do1 TRUE
 !> valid alias FALSE
+!> group as dnum 4000000000
 !> ErrLog 4800: Gripper no part
 !> ErrLog 4801 (warning): Cell slow
 !> retries left 4
@@ -62,4 +66,4 @@ ENDMODULE
 !> retries left 2
 !> ErrRaise ERR_GRIPPER 4802: Gripper lost
 !> raised TRUE
-!> [SkipWarn at io_units_log.mod:30] the handled error's warning is not logged
+!> [SkipWarn at io_units_log.mod:33] the handled error's warning is not logged
