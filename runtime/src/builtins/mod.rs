@@ -237,6 +237,8 @@ const FUNCTIONS: &[(&str, FuncFn)] = &[
     ("CRobT", motion::c_rob_t),
     ("CPos", motion::c_pos),
     ("CJointT", motion::c_joint_t),
+    ("CTool", motion::c_tool),
+    ("CWObj", motion::c_wobj),
     ("CalcJointT", motion::calc_joint_t),
     ("CalcRobT", motion::calc_rob_t),
     ("ReadStr", files::read_str),

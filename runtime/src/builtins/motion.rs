@@ -354,6 +354,7 @@ fn do_move(cx: &mut Cx<'_>, a: &Args, target_param: &str) -> R<Done> {
     };
     let end = start + motion.duration.max(0.0);
     cx.sh.move_count += 1;
+    cx.m.active = [cx.opt(a, "Tool")?, cx.opt(a, "WObj")?];
     if let Some(slot) = cx.sh.motion_until.get_mut(index) {
         *slot = end;
     }
@@ -512,6 +513,33 @@ pub(crate) fn c_pos(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
     Ok(t.field("trans")
         .cloned()
         .unwrap_or(Value::pos(0.0, 0.0, 0.0)))
+}
+
+/// `CTool()`: the tool of the last move (`tool0` before any).
+pub(crate) fn c_tool(cx: &mut Cx<'_>, _: &mut Args) -> R<Value> {
+    active(cx, 0, "tool0")
+}
+
+/// `CWObj()`: the work object of the last move (`wobj0` before any, or
+/// when the move named none).
+pub(crate) fn c_wobj(cx: &mut Cx<'_>, _: &mut Args) -> R<Value> {
+    active(cx, 1, "wobj0")
+}
+
+fn active(cx: &mut Cx<'_>, which: usize, default: &str) -> R<Value> {
+    if let Some(v) = cx.m.active.get(which).cloned().flatten() {
+        return Ok(v);
+    }
+    match cx.m.prog.system_global(default) {
+        Some(g) => cx.m.load(
+            cx.sh,
+            &crate::machine::Place {
+                root: crate::machine::Root::Global(g),
+                path: Vec::new(),
+            },
+        ),
+        None => invalid(format!("the catalogue has no {default}")),
+    }
 }
 
 /// `CJointT([\TaskRef] | [\TaskName])`.

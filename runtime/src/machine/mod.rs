@@ -259,6 +259,8 @@ pub struct Machine {
     pub(crate) engine_part: Option<String>,
     /// The task's YuMi SmartGripper.
     pub(crate) gripper: crate::builtins::gripper::Gripper,
+    /// The tool and the work object of the last move (`CTool`, `CWObj`).
+    pub(crate) active: [Option<Value>; 2],
 }
 
 impl Machine {
@@ -311,6 +313,7 @@ impl Machine {
             function_wait: None,
             engine_part: None,
             gripper: Default::default(),
+            active: [None, None],
             name,
             number,
             prog,
