@@ -8,6 +8,7 @@
 
 pub(crate) mod config;
 pub(crate) mod data;
+pub(crate) mod displacement;
 pub(crate) mod files;
 pub(crate) mod gripper;
 pub(crate) mod io;
@@ -154,7 +155,9 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("WorldAccLim", motion::setting),
     ("PathAccLim", motion::setting),
     ("GripLoad", motion::setting),
-    ("PDispOff", motion::setting),
+    ("PDispOff", displacement::p_disp_off),
+    ("PDispSet", displacement::p_disp_set),
+    ("PDispOn", displacement::p_disp_on),
     ("EOffsOff", motion::setting),
     ("EOffsSet", motion::setting),
     ("EOffsOn", motion::setting),
@@ -238,6 +241,7 @@ const FUNCTIONS: &[(&str, FuncFn)] = &[
     ("CPos", motion::c_pos),
     ("CJointT", motion::c_joint_t),
     ("CTool", motion::c_tool),
+    ("ORobT", displacement::o_rob_t),
     ("CWObj", motion::c_wobj),
     ("CalcJointT", motion::calc_joint_t),
     ("CalcRobT", motion::calc_rob_t),

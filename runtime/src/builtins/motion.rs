@@ -65,12 +65,12 @@ const EXTAX: [&str; 6] = ["eax_a", "eax_b", "eax_c", "eax_d", "eax_e", "eax_f"];
 impl Cx<'_> {
     /// A pose from a record with `trans` and `rot` (pose, robtarget), its
     /// orientation checked as the controller checks it (`ERR_ILLQUAT`).
-    fn pose(&self, v: &Value) -> R<Pose> {
+    pub(super) fn pose(&self, v: &Value) -> R<Pose> {
         let iso = iso_of(v).or_else(|e| self.m.eval_error(e))?;
         Ok(Pose::from_isometry(&iso))
     }
 
-    fn robtarget(&self, v: &Value) -> R<RobTarget> {
+    pub(super) fn robtarget(&self, v: &Value) -> R<RobTarget> {
         Ok(RobTarget {
             pose: self.pose(v)?,
             robconf: nums(v.field("robconf"), ["cf1", "cf4", "cf6", "cfx"]),
@@ -78,7 +78,7 @@ impl Cx<'_> {
         })
     }
 
-    fn tool(&mut self, a: &Args, param: &str) -> R<Tool> {
+    pub(super) fn tool(&mut self, a: &Args, param: &str) -> R<Tool> {
         let Some(v) = self.opt(a, param)? else {
             return Ok(Tool::default());
         };
@@ -96,7 +96,18 @@ impl Cx<'_> {
         })
     }
 
-    fn wobj(&mut self, a: &Args) -> R<WObj> {
+    /// The work object of `\WObj` (`wobj0` when absent) with the task's
+    /// program displacement: positions are in the displaced frame.
+    pub(super) fn wobj(&mut self, a: &Args) -> R<WObj> {
+        let mut w = self.object_frame(a)?;
+        if let Some(disp) = super::displacement::active(self)? {
+            w.oframe = w.oframe.then(&disp);
+        }
+        Ok(w)
+    }
+
+    /// The work object of `\WObj`, without the program displacement.
+    pub(super) fn object_frame(&mut self, a: &Args) -> R<WObj> {
         let Some(v) = self.opt(a, "WObj")? else {
             return Ok(WObj::default());
         };
@@ -117,7 +128,7 @@ impl Cx<'_> {
     }
 
     /// The robot of the task, or of the one `\TaskRef`/`\TaskName` names.
-    fn robot_index(&mut self, a: &Args) -> R<usize> {
+    pub(super) fn robot_index(&mut self, a: &Args) -> R<usize> {
         let other = match self.opt(a, "TaskName")? {
             Some(Value::Str(n)) => Some(n),
             _ => match self.opt(a, "TaskRef")? {
@@ -153,7 +164,7 @@ impl Cx<'_> {
 
     /// Asks the robot `index` (from [`Self::robot_index`]) `ask`: a robot's
     /// error is raised as the controller raises it.
-    fn ask_robot<T>(
+    pub(super) fn ask_robot<T>(
         &self,
         a: &Args,
         index: usize,
