@@ -402,14 +402,13 @@ fn system_constant(cx: &mut Cx<'_>, name: &str) -> R<Value> {
 /// may make before the error goes to the caller (the controller's limit,
 /// 4 by default, less those made for this error).
 pub(crate) fn remaining_retries(cx: &mut Cx<'_>, _: &mut Args) -> R<Value> {
-    let made = cx
-        .m
-        .frames
-        .iter()
-        .rev()
-        .find(|f| f.in_handler)
-        .or(cx.m.frames.last())
-        .map_or(0, |f| f.retries);
+    let made =
+        cx.m.frames
+            .iter()
+            .rev()
+            .find(|f| f.in_handler)
+            .or(cx.m.frames.last())
+            .map_or(0, |f| f.retries);
     let left = cx.sh.limits.max_retries.saturating_sub(made);
     Ok(Value::Num(left as f32))
 }

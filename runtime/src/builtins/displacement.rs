@@ -51,7 +51,10 @@ fn set(cx: &mut Cx<'_>, iso: &Isometry3<f64>) -> R<()> {
     let pose = pose_value(iso, false).or_else(|e| cx.m.eval_error(e))?;
     let mut v = cx.m.load(cx.sh, &p)?;
     if let Value::Record { fields, .. } = &mut v {
-        match fields.iter_mut().find(|(n, _)| n.eq_ignore_ascii_case("pdisp")) {
+        match fields
+            .iter_mut()
+            .find(|(n, _)| n.eq_ignore_ascii_case("pdisp"))
+        {
             Some((_, slot)) => *slot = pose,
             None => fields.push(("pdisp".to_owned(), pose)),
         }

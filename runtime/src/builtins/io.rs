@@ -466,7 +466,9 @@ pub(crate) fn io_unit_state(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
     };
     match rapid_evaluator::predefined(name) {
         Some(v) => Ok(v),
-        None => invalid(format!("IOUnitState: the catalogue has no value for {name}")),
+        None => invalid(format!(
+            "IOUnitState: the catalogue has no value for {name}"
+        )),
     }
 }
 

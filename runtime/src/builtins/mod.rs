@@ -19,6 +19,7 @@ pub(crate) mod rawbytes;
 pub(crate) mod sockets;
 pub(crate) mod tasks;
 pub(crate) mod units;
+pub(crate) mod zones;
 
 use rapid_analyzer::catalogue::Routine as CatalogueRoutine;
 use rapid_evaluator::Value;
@@ -190,6 +191,16 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("PackRawBytes", rawbytes::pack_raw_bytes),
     ("UnpackRawBytes", rawbytes::unpack_raw_bytes),
     ("WaitSyncTask", tasks::wait_sync_task),
+    ("WZBoxDef", zones::wz_box_def),
+    ("WZCylDef", zones::wz_cyl_def),
+    ("WZSphDef", zones::wz_sph_def),
+    ("WZHomeJointDef", zones::wz_home_joint_def),
+    ("WZLimJointDef", zones::wz_lim_joint_def),
+    ("WZDOSet", zones::wz_do_set),
+    ("WZLimSup", zones::wz_lim_sup),
+    ("WZEnable", zones::wz_enable),
+    ("WZDisable", zones::wz_disable),
+    ("WZFree", zones::wz_free),
     ("SyncMoveOn", tasks::sync_move_on),
     ("SyncMoveOff", tasks::sync_move_off),
     ("SyncMoveUndo", tasks::sync_move_undo),

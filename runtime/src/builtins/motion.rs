@@ -79,9 +79,14 @@ impl Cx<'_> {
     }
 
     pub(super) fn tool(&mut self, a: &Args, param: &str) -> R<Tool> {
-        let Some(v) = self.opt(a, param)? else {
-            return Ok(Tool::default());
-        };
+        match self.opt(a, param)? {
+            Some(v) => self.tool_of(&v),
+            None => Ok(Tool::default()),
+        }
+    }
+
+    /// A `tooldata` value as motion needs it.
+    pub(super) fn tool_of(&self, v: &Value) -> R<Tool> {
         Ok(Tool {
             robhold: !matches!(v.field("robhold"), Some(Value::Bool(false))),
             tframe: match v.field("tframe") {
@@ -335,6 +340,7 @@ fn do_move(cx: &mut Cx<'_>, a: &Args, target_param: &str) -> R<Done> {
         zone_reax: num(zone_value.as_ref(), "zone_reax"),
     };
     let tool = cx.tool(a, "Tool")?;
+    let moved_tool = tool.clone();
     let wobj = cx.wobj(a)?;
     let time = cx.opt_num(a, "T")?;
     let velocity = cx.opt_num(a, "V")?;
@@ -366,6 +372,8 @@ fn do_move(cx: &mut Cx<'_>, a: &Args, target_param: &str) -> R<Done> {
     let end = start + motion.duration.max(0.0);
     cx.sh.move_count += 1;
     cx.m.active = [cx.opt(a, "Tool")?, cx.opt(a, "WObj")?];
+    let delay = end - cx.now();
+    super::zones::supervise(cx, index, &moved_tool, delay, None)?;
     if let Some(slot) = cx.sh.motion_until.get_mut(index) {
         *slot = end;
     }

@@ -169,7 +169,13 @@ pub(crate) fn err_log(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
 /// after a space.
 fn log_arguments(cx: &mut Cx<'_>, a: &Args) -> R<String> {
     let mut text = String::new();
-    for p in ["Argument1", "Argument2", "Argument3", "Argument4", "Argument5"] {
+    for p in [
+        "Argument1",
+        "Argument2",
+        "Argument3",
+        "Argument4",
+        "Argument5",
+    ] {
         if let Some(s) = cx.opt_string(a, p)?
             && !s.is_empty()
         {

@@ -261,6 +261,8 @@ pub struct Machine {
     pub(crate) gripper: crate::builtins::gripper::Gripper,
     /// The tool and the work object of the last move (`CTool`, `CWObj`).
     pub(crate) active: [Option<Value>; 2],
+    /// The task's world zones and their shapes.
+    pub(crate) zones: crate::builtins::zones::Zones,
 }
 
 impl Machine {
@@ -314,6 +316,7 @@ impl Machine {
             engine_part: None,
             gripper: Default::default(),
             active: [None, None],
+            zones: Default::default(),
             name,
             number,
             prog,

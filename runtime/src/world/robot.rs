@@ -295,6 +295,22 @@ pub trait Robot: Send {
     fn set_conf(&mut self, linear: bool, on: bool) {
         let _ = (linear, on);
     }
+
+    /// Whether [`Robot::robtarget`] and [`Robot::joints`] say where the
+    /// arm really is (world zones check only what is known).
+    fn known(&self) -> Known {
+        Known {
+            tcp: true,
+            joints: true,
+        }
+    }
+}
+
+/// What a robot knows of where its arm is ([`Robot::known`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Known {
+    pub tcp: bool,
+    pub joints: bool,
 }
 
 /// The default robot: every move arrives at once at its target (no
@@ -306,6 +322,9 @@ pub struct InstantRobot {
     robconf: [f64; 4],
     extax: [f64; 6],
     joints: JointTarget,
+    /// Which kind of move came last: a Cartesian move leaves the joints
+    /// unknown, `MoveAbsJ` the TCP.
+    known: Known,
 }
 
 impl Default for InstantRobot {
@@ -315,6 +334,10 @@ impl Default for InstantRobot {
             robconf: [0.0; 4],
             extax: [9e9; 6],
             joints: JointTarget::ZERO,
+            known: Known {
+                tcp: false,
+                joints: false,
+            },
         }
     }
 }
@@ -333,10 +356,18 @@ impl Robot for InstantRobot {
                 self.flange = tcp.then(&request.tool.tframe.inverse());
                 self.robconf = t.robconf;
                 self.extax = t.extax;
+                self.known = Known {
+                    tcp: true,
+                    joints: false,
+                };
             }
             MoveTarget::Joints(j) => {
                 self.joints = *j;
                 self.extax = j.extax;
+                self.known = Known {
+                    tcp: false,
+                    joints: true,
+                };
             }
         }
         Ok(Motion {
@@ -356,5 +387,9 @@ impl Robot for InstantRobot {
 
     fn joints(&self) -> Result<JointTarget, RobotError> {
         Ok(self.joints)
+    }
+
+    fn known(&self) -> Known {
+        self.known
     }
 }
