@@ -191,7 +191,9 @@ pub struct Routine {
     pub params: Vec<Param>,
     pub alt_groups: Vec<AltGroup>,
     /// The parameters are documented: calls are checked against them. When
-    /// false only the name and kind are known and `params` is empty.
+    /// false, either only the name and kind are known and `params` is
+    /// empty, or `params` are those loaded code calls it with: the
+    /// simulation binds calls by them, the checker checks none.
     pub signature_known: bool,
     /// The result depends only on the argument values (no state, no side effects).
     pub pure: bool,

@@ -157,6 +157,11 @@ struct RawRoutine {
     /// The parameters are not documented publicly: only the name and kind.
     #[serde(default)]
     params_unknown: bool,
+    /// The parameters are the ones loaded code calls it with, not a
+    /// reference's: the simulation binds calls by them, the checker does
+    /// not check calls against them (a call may use one not listed).
+    #[serde(default)]
+    params_unchecked: bool,
     #[serde(default)]
     params: Vec<RawParam>,
 }
@@ -196,6 +201,11 @@ impl RawRoutine {
         }
         if self.params_unknown && !self.params.is_empty() {
             return Err(at("`params_unknown` with parameters".into()));
+        }
+        if self.params_unchecked && (self.params.is_empty() || self.params_unknown) {
+            return Err(at(
+                "`params_unchecked` needs parameters (and not `params_unknown`)".into(),
+            ));
         }
         let mut alt_groups: Vec<AltGroup> = Vec::new();
         for p in &self.params {
@@ -244,7 +254,7 @@ impl RawRoutine {
             returns: self.returns,
             params,
             alt_groups,
-            signature_known: !self.params_unknown,
+            signature_known: !self.params_unknown && !self.params_unchecked,
             pure: self.pure,
             real_valued: self.real_valued,
             terminates: self.terminates,

@@ -131,6 +131,10 @@ fn resolve_kind(name: &str, env: &dyn Env) -> Kind {
                     name = of.clone();
                     continue;
                 }
+                // A record known by name only (an option's data whose
+                // components no source documents): its values pass
+                // unchecked, aggregates as written.
+                (TypeKind::Record, _) if !t.layout_known => return Kind::Opaque,
                 (TypeKind::Record, _) if !t.components.is_empty() => {
                     let layout = t
                         .components

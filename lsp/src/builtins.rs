@@ -157,8 +157,10 @@ pub fn describe(cat: &Catalogue, name: &str) -> Result<String, String> {
                     .collect();
                 facts.push(format!("one of {} is required", members.join(", ")));
             }
-            if !r.signature_known {
+            if !r.signature_known && r.params.is_empty() {
                 facts.push("arguments not documented publicly, not checked".into());
+            } else if !r.signature_known {
+                facts.push("parameters as loaded code calls it, calls not checked".into());
             }
             push_facts(cat, &mut out, &facts, &r.origin);
         }

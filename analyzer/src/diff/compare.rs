@@ -261,9 +261,12 @@ fn data_diffs(
         (Some(a), Some(b)) => a != b,
         _ => !same_init,
     };
-    // An array whose declaration is unchanged: its elements one by one.
+    // An array whose declaration is unchanged: its elements one by one (a
+    // record of a type whose components no source documents is an
+    // aggregate too, but one value).
     if changed.is_empty()
         && value_changed
+        && !n.dims.is_empty()
         && let (Some(Value::Array(a)), Some(Value::Array(b))) = (&o.value, &n.value)
         && a.len() == b.len()
     {
@@ -328,7 +331,9 @@ fn elements(
         }
         index.push(i + 1);
         match (x, y) {
-            (Value::Array(xs), Value::Array(ys)) if xs.len() == ys.len() => {
+            (Value::Array(xs), Value::Array(ys))
+                if xs.len() == ys.len() && index.len() < n.dims.len() =>
+            {
                 elements(o, n, index, xs, ys, init_changed, options, ignored, out);
             }
             _ => {

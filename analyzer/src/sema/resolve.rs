@@ -160,15 +160,17 @@ impl<'t> Resolver<'t> {
     }
 
     /// The arguments of a call of `callee` bound to its parameters, as the
-    /// checker binds them; `None` for a built-in whose signature is not
-    /// documented (its calls are not checked either).
+    /// checker binds them; `None` for a built-in whose parameters are not
+    /// known at all (its calls are not checked either). A built-in whose
+    /// parameters come from loaded code binds by them, though the checker
+    /// does not check its calls.
     pub fn bind(&self, callee: &Callee, args: &[Arg<'_>]) -> Option<Binding> {
         let def = match callee {
             Callee::Routine(r) => Def::Item(*r),
             Callee::Builtin(r) => Def::BuiltinRoutine(r),
         };
         let sig = Signature::of(&def, self.scope.task)?;
-        sig.known.then(|| bind_args(&sig, args))
+        (sig.known || !sig.params.is_empty()).then(|| bind_args(&sig, args))
     }
 
     /// The task's types, as the checker knows them.

@@ -6,6 +6,8 @@
 //! Anything the catalogue knows and this module does not implement stops
 //! a run with "not supported in simulation: NAME".
 
+pub(crate) mod arc;
+pub(crate) mod calibration;
 pub(crate) mod config;
 pub(crate) mod data;
 pub(crate) mod displacement;
@@ -141,6 +143,14 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("TriggJ", motion::move_to_point),
     ("TriggC", motion::move_to_point),
     ("WaitRob", motion::wait_rob),
+    ("SetSysData", motion::set_sys_data),
+    ("MToolTCPCalib", calibration::m_tool_tcp_calib),
+    ("ArcLStart", arc::arc_move),
+    ("ArcL", arc::arc_move),
+    ("ArcLEnd", arc::arc_move),
+    ("ArcCStart", arc::arc_move),
+    ("ArcC", arc::arc_move),
+    ("ArcCEnd", arc::arc_move),
     ("ConfL", motion::conf),
     ("ConfJ", motion::conf),
     ("SingArea", motion::setting),

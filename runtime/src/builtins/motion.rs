@@ -257,7 +257,7 @@ fn jointtarget_value(j: &JointTarget) -> Value {
     }
 }
 
-fn jointtarget(v: &Value) -> R<JointTarget> {
+pub(crate) fn jointtarget(v: &Value) -> R<JointTarget> {
     if v.field("robax").is_none() {
         return invalid("not a jointtarget");
     }
@@ -274,7 +274,9 @@ fn kind_of(instruction: &str) -> MoveKind {
     let lower = instruction.to_ascii_lowercase();
     if lower.ends_with("absj") {
         MoveKind::AbsoluteJoint
-    } else if lower.contains('c') && (lower.ends_with('c') || lower.ends_with("cdo")) {
+    } else if lower.starts_with("arcc")
+        || lower.contains('c') && (lower.ends_with('c') || lower.ends_with("cdo"))
+    {
         MoveKind::Circular
     } else if lower.ends_with('j') || lower.ends_with("jdo") {
         MoveKind::Joint
@@ -295,6 +297,17 @@ pub(crate) fn motion_end(cx: &Cx<'_>) -> f64 {
 /// Makes a move: the robot is asked, the move recorded, and the task waits
 /// for a move that takes time (unless `\Conc`).
 fn do_move(cx: &mut Cx<'_>, a: &Args, target_param: &str) -> R<Done> {
+    do_move_at(cx, a, target_param, None)
+}
+
+/// A move, its TCP speed `v_tcp` (mm/s) instead of its speeddata's when
+/// given (a weld's speed).
+pub(crate) fn do_move_at(
+    cx: &mut Cx<'_>,
+    a: &Args,
+    target_param: &str,
+    v_tcp: Option<f64>,
+) -> R<Done> {
     if a.is_star(target_param) {
         return fault(FaultKind::Unsupported(format!(
             "{} * (a target stored in the instruction, not in the program)",
@@ -323,7 +336,7 @@ fn do_move(cx: &mut Cx<'_>, a: &Args, target_param: &str) -> R<Done> {
     let speed_value = cx.opt(a, "Speed")?;
     let zone_value = cx.opt(a, "Zone")?;
     let speed = Speed {
-        v_tcp: num(speed_value.as_ref(), "v_tcp"),
+        v_tcp: v_tcp.unwrap_or_else(|| num(speed_value.as_ref(), "v_tcp")),
         v_ori: num(speed_value.as_ref(), "v_ori"),
         v_leax: num(speed_value.as_ref(), "v_leax"),
         v_reax: num(speed_value.as_ref(), "v_reax"),
@@ -559,6 +572,34 @@ fn active(cx: &mut Cx<'_>, which: usize, default: &str) -> R<Value> {
         ),
         None => invalid(format!("the catalogue has no {default}")),
     }
+}
+
+/// `SetSysData SourceObject [\ObjectName]`: the tool or work object
+/// becomes the active one (`CTool`, `CWObj`, an output zone's TCP), as if
+/// a move had used it; `\ObjectName` names the data object instead (of
+/// `SourceObject`'s type). A payload (`loaddata`) changes nothing the
+/// simulation models.
+pub(crate) fn set_sys_data(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let source = cx.req(a, "SourceObject")?;
+    let value = match cx.opt_string(a, "ObjectName")? {
+        Some(name) => {
+            let place = super::data::data_named(cx, &name)?;
+            cx.m.load(cx.sh, &place)?
+        }
+        None => source.clone(),
+    };
+    match source.type_name().map(str::to_ascii_lowercase).as_deref() {
+        Some("tooldata") => cx.m.active[0] = Some(value),
+        Some("wobjdata") => cx.m.active[1] = Some(value),
+        Some("loaddata") => {}
+        _ => {
+            return invalid(format!(
+                "SetSysData: SourceObject must be a tooldata, wobjdata or loaddata, not {}",
+                crate::machine::describe(&source)
+            ));
+        }
+    }
+    Ok(Done::Next)
 }
 
 /// `CJointT([\TaskRef] | [\TaskName])`.
