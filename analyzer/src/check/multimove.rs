@@ -70,10 +70,13 @@ impl CallKinds for TaskCalls<'_> {
     }
 
     fn is_move(&self, call: &Call) -> bool {
+        // A move whose parameters come from loaded code (the Arc
+        // instructions) is not checked.
         self.builtin(call).is_some_and(|r| {
-            r.params
-                .iter()
-                .any(|p| same(&p.name, "ID") && same(&p.ty, "identno"))
+            r.signature_known
+                && r.params
+                    .iter()
+                    .any(|p| same(&p.name, "ID") && same(&p.ty, "identno"))
         })
     }
 

@@ -95,6 +95,11 @@ fn fly_by_zone(
     call: &Call,
 ) -> Option<(String, std::ops::Range<usize>)> {
     let routine = calls.builtin(call)?;
+    // Only moves whose parameters are documented: one whose parameters
+    // come from loaded code (the Arc instructions) is not checked.
+    if !routine.signature_known {
+        return None;
+    }
     // The Zone argument: by name, or the positional argument at Zone's
     // place among the required parameters.
     let required: Vec<&str> = routine

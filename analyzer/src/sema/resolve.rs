@@ -170,7 +170,7 @@ impl<'t> Resolver<'t> {
             Callee::Builtin(r) => Def::BuiltinRoutine(r),
         };
         let sig = Signature::of(&def, self.scope.task)?;
-        (sig.known || !sig.params.is_empty()).then(|| bind_args(&sig, args))
+        sig.binds().then(|| bind_args(&sig, args))
     }
 
     /// The task's types, as the checker knows them.
@@ -251,7 +251,7 @@ pub fn call_bindings(task: &Task, unit: usize) -> Vec<CallBinding> {
         let Some(sig) = Signature::of(&def, task) else {
             continue;
         };
-        if !sig.known || sig.is_function() != function {
+        if !sig.binds() || sig.is_function() != function {
             continue;
         }
         let mut cursor = call.walk();

@@ -149,6 +149,12 @@ impl Signature {
         self.kind == RoutineKind::Func
     }
 
+    /// Whether calls bind to the parameters: documented ones, or ones
+    /// taken from loaded code (whose calls the checker does not check).
+    pub fn binds(&self) -> bool {
+        self.known || !self.params.is_empty()
+    }
+
     /// The index of the parameter called `name`.
     pub fn param(&self, name: &str) -> Option<usize> {
         self.params.iter().position(|p| same(&p.name, name))
