@@ -57,6 +57,7 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("ErrLog", output::err_log),
     ("ErrRaise", output::err_raise),
     ("SkipWarn", output::skip_warn),
+    ("EventLog", output::event_log),
     ("TPErase", output::tp_erase),
     ("TPShow", output::tp_show),
     ("UIMsgWrite", output::ui_msg_write),
@@ -222,6 +223,7 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
 const FUNCTIONS: &[(&str, FuncFn)] = &[
     ("Dim", data::dim),
     ("StrToVal", data::str_to_val),
+    ("StrFormat", output::str_format),
     ("ClkRead", data::clk_read),
     ("CTime", data::c_time),
     ("CDate", data::c_date),

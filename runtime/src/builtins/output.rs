@@ -5,7 +5,7 @@ use rapid_evaluator::{Value, format_dnum, format_num};
 
 use super::{Args, Cx, Done};
 use crate::Stream;
-use crate::machine::{R, invalid};
+use crate::machine::{R, fault, invalid, rapid_error};
 
 /// `TPWrite String [\Num] | [\Bool] | [\Pos] | [\Orient] | [\Dnum]`: the
 /// text, then the value as the pendant writes it (a num with up to six
@@ -216,4 +216,66 @@ pub(crate) fn err_raise(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
         *message = format!("raised by ErrRaise {name}");
     }
     Err(raised)
+}
+
+/// `EventLog Domain, ErrorId, Type, Argument1 ... Argument5` (the YuMi
+/// SmartGripper driver's): as `ErrLog`, one line with the domain, the
+/// number and the type, then the arguments that are not empty.
+pub(crate) fn event_log(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let domain = cx.num(a, "Domain")?;
+    let id = cx.num(a, "ErrorId")?;
+    let kind = match cx.num(a, "Type")? as i64 {
+        1 => "information",
+        2 => "warning",
+        3 => "error",
+        _ => "event",
+    };
+    let text = log_arguments(cx, a)?;
+    let line = format!(
+        "EventLog {} {} ({kind}):{text}",
+        format_num(domain as f32),
+        format_num(id as f32)
+    );
+    cx.print(Stream::EventLog, &line);
+    Ok(Done::Next)
+}
+
+/// `StrFormat(Format [\Arg1] ... [\Arg10])`: the format with each `{n}`
+/// replaced by `\Argn` (an argument not given leaves the text empty; a
+/// brace that is no placeholder stays as written).
+pub(crate) fn str_format(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    let format = cx.string(a, "Format")?;
+    let mut out = String::new();
+    let mut rest = format.as_str();
+    while let Some(open) = rest.find('{') {
+        out.push_str(&rest[..open]);
+        let after = &rest[open + 1..];
+        let number = after
+            .find('}')
+            .and_then(|close| after[..close].parse::<u8>().ok().map(|n| (n, close)));
+        match number {
+            Some((n, close)) if (1..=10).contains(&n) => {
+                if let Some(s) = cx.opt_string(a, &format!("Arg{n}"))? {
+                    out.push_str(&s);
+                }
+                rest = &after[close + 1..];
+            }
+            _ => {
+                out.push('{');
+                rest = after;
+            }
+        }
+    }
+    out.push_str(rest);
+    if out.chars().count() > 80 {
+        return fault(rapid_error(
+            &cx.m.prog,
+            rapid_evaluator::ErrorCode::StrTooLong,
+            format!(
+                "StrFormat: the result has {} characters (at most 80)",
+                out.chars().count()
+            ),
+        ));
+    }
+    Ok(Value::Str(out))
 }

@@ -195,7 +195,15 @@ impl Compiler<'_> {
             return None;
         };
         if let Some(why) = binding_problem(&b, given, name, |i| self.param_name(callee, i)) {
-            self.fail_call(Failure::Invalid(why), given);
+            // Parameters taken from loaded code may lack one a call uses:
+            // the call is not known to be wrong, only not simulated.
+            let failure = match callee {
+                Callee::Builtin(r) if !r.signature_known => Failure::Unsupported(format!(
+                    "{name} as called here ({why}; its parameters are those loaded code calls it with)"
+                )),
+                _ => Failure::Invalid(why),
+            };
+            self.fail_call(failure, given);
             return None;
         }
         let params = (0..given.len())

@@ -1,7 +1,8 @@
 MODULE io_units_log
   ! I/O devices (IOUnitState, IODisable, IOEnable, ValidIO), a group
   ! output read as a dnum (GOutputDnum), the event
-  ! log's text-table messages (ErrLog, ErrRaise, SkipWarn) and
+  ! log's text-table messages (ErrLog, ErrRaise, SkipWarn, the SmartGripper
+  ! driver's EventLog), StrFormat and
   ! RemainingRetries.
   VAR errnum ERR_GRIPPER := -1;
   VAR num tries := 0;
@@ -25,6 +26,8 @@ MODULE io_units_log
     TPWrite "group as dnum "\Dnum:=GOutputDnum(go_word) * 100000;
     ErrLog 4800, "Gripper", "no part", ERRSTR_UNUSED, ERRSTR_UNUSED, ERRSTR_UNUSED;
     ErrLog 4801 \W, "Cell", "slow", "", "", "";
+    EventLog 90, 7, TYPE_WARN, "Hand", "stalled", ERRSTR_UNUSED, ERRSTR_UNUSED, ERRSTR_UNUSED;
+    TPWrite StrFormat("part {1} of {2}, {x}{3}" \Arg1:="3" \Arg2:="10");
     retrying;
     BookErrNo ERR_GRIPPER;
     raising;
@@ -61,9 +64,11 @@ ENDMODULE
 !> group as dnum 4000000000
 !> ErrLog 4800: Gripper no part
 !> ErrLog 4801 (warning): Cell slow
+!> EventLog 90 7 (warning): Hand stalled
+!> part 3 of 10, {x}
 !> retries left 4
 !> retries left 3
 !> retries left 2
 !> ErrRaise ERR_GRIPPER 4802: Gripper lost
 !> raised TRUE
-!> [SkipWarn at io_units_log.mod:33] the handled error's warning is not logged
+!> [SkipWarn at io_units_log.mod:36] the handled error's warning is not logged
