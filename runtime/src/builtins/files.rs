@@ -312,6 +312,57 @@ pub(crate) fn remove_file(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     fs_op(cx, a, |fs, p| fs.remove_file(p))
 }
 
+/// `RenameFile OldPath, NewPath` (a file or a folder): `ERR_FILEEXIST`
+/// when `NewPath` exists, `ERR_FILNOTFND` when `OldPath` does not.
+pub(crate) fn rename_file(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let (from, to) = two_paths(cx, a)?;
+    match cx.sh.files.rename(&from, &to) {
+        Ok(()) => Ok(Done::Next),
+        Err(FileError::NotFound(m)) => fault(named_error(
+            &cx.m.prog,
+            "ERR_FILNOTFND",
+            format!("{}: {m}", a.name),
+        )),
+        Err(e) => file_error(cx, a.name, "ERR_FILEACC", e),
+    }
+}
+
+/// `CopyFile OldPath, NewPath` (a file): `ERR_FILEEXIST` when `NewPath`
+/// exists, `ERR_FILNOTFND` when `OldPath` does not.
+pub(crate) fn copy_file(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let (from, to) = two_paths(cx, a)?;
+    let data = match cx.sh.files.read(&from) {
+        Ok(d) => d,
+        Err(FileError::NotFound(m)) => {
+            return fault(named_error(
+                &cx.m.prog,
+                "ERR_FILNOTFND",
+                format!("{}: {m}", a.name),
+            ));
+        }
+        Err(e) => return file_error(cx, a.name, "ERR_FILEACC", e),
+    };
+    match cx.sh.files.write(&to, &data, false) {
+        Ok(()) => Ok(Done::Next),
+        Err(e) => file_error(cx, a.name, "ERR_FILEACC", e),
+    }
+}
+
+/// The two paths of `RenameFile` and `CopyFile`; `ERR_FILEEXIST` when the
+/// new one names something already.
+fn two_paths(cx: &mut Cx<'_>, a: &Args) -> R<(String, String)> {
+    let from = cx.string(a, "OldPath")?;
+    let to = cx.string(a, "NewPath")?;
+    if cx.sh.files.kind(&to).is_some() {
+        return fault(named_error(
+            &cx.m.prog,
+            "ERR_FILEEXIST",
+            format!("{}: {to} exists already", a.name),
+        ));
+    }
+    Ok((from, to))
+}
+
 /// `MakeDir Path`.
 pub(crate) fn make_dir(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     fs_op(cx, a, |fs, p| fs.make_dir(p))

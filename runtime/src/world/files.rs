@@ -48,6 +48,8 @@ pub trait FileSystem: Send {
     fn remove_file(&mut self, path: &str) -> Result<(), FileError>;
     fn make_dir(&mut self, path: &str) -> Result<(), FileError>;
     fn remove_dir(&mut self, path: &str) -> Result<(), FileError>;
+    /// Gives a file or folder another path.
+    fn rename(&mut self, from: &str, to: &str) -> Result<(), FileError>;
     /// What the path names, if anything.
     fn kind(&mut self, path: &str) -> Option<FileKind>;
 }
@@ -136,6 +138,10 @@ impl FileSystem for SandboxFs {
         std::fs::create_dir(self.resolve(path)?).map_err(|e| os_error(path, &e))
     }
 
+    fn rename(&mut self, from: &str, to: &str) -> Result<(), FileError> {
+        std::fs::rename(self.resolve(from)?, self.resolve(to)?).map_err(|e| os_error(from, &e))
+    }
+
     fn remove_dir(&mut self, path: &str) -> Result<(), FileError> {
         std::fs::remove_dir(self.resolve(path)?).map_err(|e| os_error(path, &e))
     }
@@ -202,6 +208,19 @@ impl FileSystem for MemoryFs {
             Ok(())
         } else {
             Err(FileError::NotFound(format!("{path}: no such folder")))
+        }
+    }
+
+    fn rename(&mut self, from: &str, to: &str) -> Result<(), FileError> {
+        let (old, new) = (MemoryFs::key(from)?, MemoryFs::key(to)?);
+        if let Some(data) = self.files.remove(&old) {
+            self.files.insert(new, data);
+            Ok(())
+        } else if self.dirs.remove(&old) {
+            self.dirs.insert(new);
+            Ok(())
+        } else {
+            Err(FileError::NotFound(format!("{from}: no such file")))
         }
     }
 

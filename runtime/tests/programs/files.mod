@@ -1,5 +1,6 @@
 MODULE files
-  ! Files in the sandbox folder: write, read back, end of file, errors.
+  ! Files in the sandbox folder: write, read back, end of file, copy,
+  ! rename, errors.
   PROC main()
     VAR iodev f;
     VAR string line;
@@ -23,6 +24,14 @@ MODULE files
     TPWrite "end: " + ReadStr(f);
     Close f;
     TPWrite "exists "\Bool:=IsFile("HOME:/log.txt");
+    CopyFile "HOME:/log.txt", "HOME:/copy.txt";
+    RenameFile "HOME:/log.txt", "HOME:/old.txt";
+    TPWrite "renamed: log "\Bool:=IsFile("HOME:/log.txt");
+    TPWrite "renamed: old "\Bool:=IsFile("HOME:/old.txt");
+    Open "HOME:/copy.txt", f\Read;
+    TPWrite "copy: " + ReadStr(f);
+    Close f;
+    copy_onto_existing;
     Open "HOME:/missing.txt", f\Read;
     TPWrite "not reached";
   ERROR
@@ -31,6 +40,13 @@ MODULE files
       RETURN;
     ENDIF
   ENDPROC
+
+  PROC copy_onto_existing()
+    CopyFile "HOME:/copy.txt", "HOME:/old.txt";
+  ERROR
+    TPWrite "the new path exists "\Bool:=ERRNO = ERR_FILEEXIST;
+    RETURN;
+  ENDPROC
 ENDMODULE
 !> read: first line
 !> read: count 3
@@ -38,4 +54,8 @@ ENDMODULE
 !> read: appended
 !> end: EOF
 !> exists TRUE
+!> renamed: log FALSE
+!> renamed: old TRUE
+!> copy: first line
+!> the new path exists TRUE
 !> cannot open the missing file
