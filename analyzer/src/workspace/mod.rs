@@ -9,6 +9,7 @@
 
 mod alternatives;
 mod checks;
+mod controller;
 mod home;
 #[cfg(test)]
 mod tests;
@@ -16,17 +17,17 @@ mod tests;
 pub use checks::{
     Check, CheckInputs, CheckResult, diagnostics_cached, diagnostics_of, diagnostics_selected,
 };
+pub use controller::{config_applies, config_root};
 
-use std::collections::{BTreeMap, HashMap, HashSet};
+use std::collections::{BTreeMap, HashMap};
 use std::sync::Arc;
 
 use crate::controller::{
     ControllerInfo, ControllerOverride, is_controller_info_name, parse_controller_info,
 };
 use crate::layout::{Grouping, locate};
-use crate::task::{
-    Config, SharedMap, Signals, Task, Unit, controller_of, parse_config, shared_persistents,
-};
+use crate::task::{Config, Task, Unit, controller_of, parse_config};
+use controller::Controller;
 
 #[derive(Default)]
 pub struct Workspace {
@@ -318,26 +319,6 @@ impl Workspace {
         }
     }
 
-    /// What the backups and the project configuration say about the
-    /// controller of the task `key`.
-    pub fn controller_of_task(&self, key: &str) -> ControllerInfo {
-        let mut info = ControllerInfo::default();
-        for (path, system) in &self.systems {
-            if config_applies(path, key) {
-                info.merge(system);
-            }
-        }
-        let sel = info.selection(&self.controller);
-        ControllerInfo {
-            robotware: sel.robotware,
-            options: sel.options().to_vec(),
-            system_name: info.system_name,
-            robotware_text: info
-                .robotware_text
-                .filter(|_| self.controller.robotware.is_none()),
-        }
-    }
-
     pub fn remove_config(&mut self, path: &str) {
         if self.systems.remove(path).is_some() {
             self.forget_all_tasks();
@@ -491,43 +472,6 @@ impl Workspace {
         task
     }
 
-    /// What the tasks of `controller` (a backup's `RAPID/` folder) share:
-    /// their persistents and their synchronisation points. Only this
-    /// controller's tasks: not a backup kept in one of its folders.
-    fn controller_data(&self, controller: &str) -> Controller {
-        let mut by_task: BTreeMap<String, Vec<&Arc<Unit>>> = BTreeMap::new();
-        for u in self.units.values().filter(|u| under(&u.path, controller)) {
-            let key = crate::layout::task_key(&u.path);
-            if controller_of(&key) == Some(controller) {
-                by_task.entry(key).or_default().push(u);
-            }
-        }
-        let (map, shared_hash) =
-            shared_persistents(by_task.values().flatten().copied().chain(&self.extras));
-        let names = crate::layout::backup_root(controller)
-            .map(|root| self.task_names_of(root))
-            .unwrap_or_default();
-        let mut syncs = crate::sema::sync::ControllerSyncs::default();
-        for (key, units) in &by_task {
-            let mut own: Vec<String> = names
-                .iter()
-                .filter(|(_, k)| *k == key)
-                .map(|(n, _)| n.clone())
-                .collect();
-            own.sort();
-            let mut task = crate::sema::sync::task_syncs(units.iter().copied());
-            task.complete = self.is_complete(key);
-            syncs.tasks.push((key.clone(), own, task));
-        }
-        let syncs_hash = crate::items::hash_of(&syncs);
-        Controller {
-            shared: Arc::new(map),
-            shared_hash,
-            syncs: Arc::new(syncs),
-            syncs_hash,
-        }
-    }
-
     /// Every unit of the workspace with the task it is checked in (its
     /// group, or its own view of the group: [`Workspace::task_of`]), in
     /// the order of the groups.
@@ -578,112 +522,6 @@ impl Workspace {
             })
             .collect()
     }
-
-    /// The configuration files that apply to the task `key` (its backup's
-    /// `SYSPAR/*.cfg`, or those above it), each with its path, in path
-    /// order.
-    pub fn config_files_of_task(&self, key: &str) -> Vec<(String, Arc<crate::cfg::CfgFile>)> {
-        self.cfg_files
-            .iter()
-            .filter(|(p, _)| config_applies(p, key))
-            .map(|(p, f)| (p.clone(), f.clone()))
-            .collect()
-    }
-
-    /// How the controller of the backup task `key` runs its tasks: the
-    /// `CAB_TASKS` of the backup's `SYS.cfg`, in order (task *n* is kept
-    /// in `RAPID/TASKn`). Empty outside a backup or without a `SYS.cfg`.
-    pub fn controller_tasks(&self, key: &str) -> Vec<crate::task::TaskSettings> {
-        if crate::layout::controller_of(key).is_none() {
-            return Vec::new();
-        }
-        let Some(root) = crate::layout::backup_root(key) else {
-            return Vec::new();
-        };
-        self.configs
-            .iter()
-            .filter(|(p, _)| home::syspar_root(p) == Some(root))
-            .flat_map(|(_, c)| c.task_settings.iter().cloned())
-            .collect()
-    }
-
-    /// The `taskid` data of the controller a backup task `key` belongs to
-    /// (folded `<task name>id`): its `SYS.cfg` tasks, and its task folders
-    /// named after a task (`T_ROB1`; `TASKn` folders are numbered, not
-    /// named). Empty for a task outside a backup.
-    fn task_ids_for(&self, key: &str) -> HashSet<String> {
-        let mut ids = HashSet::new();
-        if crate::layout::controller_of(key).is_none() {
-            return ids;
-        }
-        let Some(root) = crate::layout::backup_root(key) else {
-            return ids;
-        };
-        let mut names: Vec<String> = self
-            .configs
-            .iter()
-            .filter(|(p, _)| home::syspar_root(p) == Some(root))
-            .flat_map(|(_, c)| c.tasks.iter().cloned())
-            .collect();
-        names.extend(self.backup_task_keys(root).iter().filter_map(|k| {
-            let last = k.rsplit('/').next()?;
-            let numbered = last.len() > 4
-                && last[..4].eq_ignore_ascii_case("task")
-                && last[4..].bytes().all(|b| b.is_ascii_digit());
-            (!numbered).then(|| last.to_owned())
-        }));
-        for name in names {
-            ids.insert(crate::names::fold(&format!("{name}Id")));
-        }
-        ids
-    }
-
-    /// The robot of a task: the `MOC.cfg` robots that apply to it (its
-    /// backup's or the extra paths'), else the project's setting.
-    fn robot_for(&self, key: &str) -> Result<Option<Arc<crate::robot::TaskRobot>>, String> {
-        let by_place = self
-            .configs
-            .iter()
-            .filter(|(path, _)| config_applies(path, key))
-            .map(|(_, config)| config);
-        let mocs: Vec<&crate::robot::MocRobot> = self
-            .extra_configs
-            .iter()
-            .chain(by_place)
-            .flat_map(|c| &c.robots)
-            .collect();
-        crate::robot::resolve(key, &mocs, self.controller.robot.as_ref())
-    }
-
-    /// The configuration that applies to a task: its signals (`None` when
-    /// no configuration declares signals) and its mechanical units.
-    fn config_for(&self, key: &str) -> (Option<Signals>, HashSet<String>) {
-        let mut signals: Option<Signals> = None;
-        let mut mecunits = HashSet::new();
-        let by_place = self
-            .configs
-            .iter()
-            .filter(|(path, _)| config_applies(path, key))
-            .map(|(_, config)| config);
-        for config in self.extra_configs.iter().chain(by_place) {
-            if let Some(s) = &config.signals {
-                signals
-                    .get_or_insert_with(Signals::new)
-                    .extend(s.iter().map(|(k, v)| (k.clone(), *v)));
-            }
-            mecunits.extend(config.mecunits.iter().cloned());
-        }
-        (signals, mecunits)
-    }
-}
-
-/// What the tasks of one controller share ([`Workspace::controller_data`]).
-#[derive(Clone)]
-struct Controller {
-    shared: Arc<SharedMap>,
-    shared_hash: u64,
-    syncs: Arc<crate::sema::sync::ControllerSyncs>,
-    syncs_hash: u64,
 }
 
 /// Do two files hold modules of the same names, in order?
@@ -761,41 +599,4 @@ pub fn program_modules(path: &str, xml: &str) -> Vec<String> {
         at = start + len;
     }
     out
-}
-
-/// Does the configuration file `path` (`SYSPAR/*.cfg`, `BACKINFO/...`, or
-/// one elsewhere) apply to the task `key`? A backup's configuration applies
-/// to its own tasks (the `HOME/` modules' too), never to another backup's,
-/// not even one kept inside it; a configuration elsewhere applies to the
-/// tasks below its folder, but not to a backup below it, which a controller
-/// configured with its own. A `SYSPAR/` (or `BACKINFO/`) folder beside
-/// modules outside a backup is their controller's: it applies to the
-/// modules of its folder.
-pub fn config_applies(path: &str, key: &str) -> bool {
-    let backup = crate::layout::backup_root(key);
-    if let Some(root) = home::syspar_root(path).or_else(|| home::backinfo_root(path)) {
-        return match backup {
-            Some(b) => b == root,
-            None => crate::layout::is_within(key, root) && crate::layout::is_within(root, key),
-        };
-    }
-    let root = config_root(path);
-    crate::layout::is_within(key, root)
-        && backup.is_none_or(|b| !crate::layout::is_within(b, root) || b.len() <= root.len())
-}
-
-/// The folder an I/O configuration applies below: a backup's root for
-/// `.../SYSPAR/EIO.cfg`, else the file's own folder ([`config_applies`]
-/// decides which tasks below it).
-pub fn config_root(path: &str) -> &str {
-    let dir = path.rsplit_once(['/', '\\']).map_or("", |(d, _)| d);
-    match dir.rsplit_once(['/', '\\']) {
-        Some((parent, last))
-            if last.eq_ignore_ascii_case("syspar") || last.eq_ignore_ascii_case("backinfo") =>
-        {
-            parent
-        }
-        None if dir.eq_ignore_ascii_case("syspar") || dir.eq_ignore_ascii_case("backinfo") => "",
-        _ => dir,
-    }
 }
