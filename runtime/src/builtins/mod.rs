@@ -20,6 +20,7 @@ pub(crate) mod pendant;
 pub(crate) mod rawbytes;
 pub(crate) mod sockets;
 pub(crate) mod tasks;
+pub(crate) mod triggs;
 pub(crate) mod units;
 pub(crate) mod zones;
 
@@ -140,9 +141,11 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("SearchL", motion::search),
     ("SearchJ", motion::search),
     ("SearchC", motion::search),
-    ("TriggL", motion::move_to_point),
-    ("TriggJ", motion::move_to_point),
-    ("TriggC", motion::move_to_point),
+    ("TriggL", triggs::trigg_move),
+    ("TriggJ", triggs::trigg_move),
+    ("TriggC", triggs::trigg_move),
+    ("TriggIO", triggs::trigg_io),
+    ("TriggEquip", triggs::trigg_equip),
     ("WaitRob", motion::wait_rob),
     ("SetSysData", motion::set_sys_data),
     ("MToolTCPCalib", calibration::m_tool_tcp_calib),
