@@ -269,7 +269,7 @@ pub(crate) fn wait_ai(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     wait_signal(cx, a, name, test, what)
 }
 
-fn interrupt_number(cx: &mut Cx<'_>, a: &Args) -> R<i32> {
+pub(crate) fn interrupt_number(cx: &mut Cx<'_>, a: &Args) -> R<i32> {
     let v = cx.req(a, "Interrupt")?;
     let id = v.as_f64().unwrap_or(0.0) as i32;
     if !cx.m.interrupts.is_connected(id) {

@@ -146,6 +146,7 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("TriggC", triggs::trigg_move),
     ("TriggIO", triggs::trigg_io),
     ("TriggEquip", triggs::trigg_equip),
+    ("TriggInt", triggs::trigg_int),
     ("WaitRob", motion::wait_rob),
     ("SetSysData", motion::set_sys_data),
     ("MToolTCPCalib", calibration::m_tool_tcp_calib),

@@ -1,6 +1,7 @@
 //! Position events: `TriggIO` and `TriggEquip` set up an output in a
-//! `triggdata`; `TriggL`, `TriggJ` and `TriggC` move and set each of
-//! their events' outputs when the robot passes its point.
+//! `triggdata`, `TriggInt` an interrupt; `TriggL`, `TriggJ` and `TriggC`
+//! move and set each of their events' outputs (or order their interrupts)
+//! when the robot passes its point.
 //!
 //! What is modelled: an event `Distance` mm before the end of the move
 //! (after its start with `\Start`) fires at that fraction of the move's
@@ -8,9 +9,9 @@
 //! line between the move's ends; with `\Time`, `Distance` seconds before
 //! the end. `TriggEquip`'s `EquipLag` fires it that much earlier, and
 //! `\DODelay` later. What is not: the speed's ramps and the zone's
-//! corner path (both shift an event in time, not in order), `\ProcID`,
-//! and `TriggEquip`'s `\Inhib`, which is read (an inhibited event does
-//! not fire).
+//! corner path (both shift an event in time, not in order) and
+//! `\ProcID`. `TriggEquip`'s `\Inhib` is read when the event is set up
+//! (an inhibited event does not fire).
 
 use rapid_evaluator::Value;
 
@@ -18,9 +19,12 @@ use super::{Args, Cx, Done};
 use crate::machine::{R, invalid};
 use crate::world::WObj;
 
-/// A `triggdata`: the output, its value and where it is set.
+/// A `triggdata`: what happens (an output set, or an interrupt), and
+/// where.
 struct Event {
+    /// The output's name, empty for an interrupt.
     signal: String,
+    /// The output's value, or the interrupt's number.
     value: f64,
     distance: f64,
     start: bool,
@@ -97,6 +101,23 @@ pub(crate) fn trigg_equip(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     store(cx, a, event)
 }
 
+/// `TriggInt TriggData, Distance [\Start] | [\Time], Interrupt`: the
+/// interrupt (connected to its trap routine) is ordered when the robot
+/// passes the point.
+pub(crate) fn trigg_int(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let id = super::io::interrupt_number(cx, a)?;
+    let event = Event {
+        signal: String::new(),
+        value: f64::from(id),
+        distance: cx.num(a, "Distance")?,
+        start: a.given("Start"),
+        time: a.given("Time"),
+        shift: 0.0,
+        inhibited: false,
+    };
+    store(cx, a, event)
+}
+
 fn event_of(v: &Value) -> Option<Event> {
     let num = |n| v.field(n).and_then(Value::as_f64);
     let flag = |n| matches!(v.field(n), Some(Value::Bool(true)));
@@ -168,7 +189,12 @@ pub(crate) fn trigg_move(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
             }
         };
         let delay = at + e.shift - cx.now();
-        if delay > 0.0 {
+        if e.signal.is_empty() {
+            // A single timer due then: the trap runs as the robot passes.
+            let now = cx.now();
+            cx.m.interrupts
+                .add_timer(e.value as i32, now, delay.max(0.0), true);
+        } else if delay > 0.0 {
             cx.sh.set_signal_later(&e.signal, e.value, delay);
         } else {
             cx.sh.set_signal(&e.signal, e.value);
