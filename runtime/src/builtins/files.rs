@@ -296,7 +296,14 @@ fn fs_op(
     op: fn(&mut dyn crate::world::FileSystem, &str) -> Result<(), FileError>,
 ) -> R<Done> {
     let name = cx.string(a, "Path")?;
-    match op(cx.sh.files.as_mut(), &name) {
+    let r = op(cx.sh.files.as_mut(), &name);
+    done_or_error(cx, a, r)
+}
+
+/// A file operation's result: the next statement, `ERR_FILNOTFND` for a
+/// path that names nothing, else `ERR_FILEACC`.
+fn done_or_error(cx: &Cx<'_>, a: &Args, r: Result<(), FileError>) -> R<Done> {
+    match r {
         Ok(()) => Ok(Done::Next),
         Err(FileError::NotFound(m)) => fault(named_error(
             &cx.m.prog,
@@ -316,36 +323,20 @@ pub(crate) fn remove_file(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
 /// when `NewPath` exists, `ERR_FILNOTFND` when `OldPath` does not.
 pub(crate) fn rename_file(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     let (from, to) = two_paths(cx, a)?;
-    match cx.sh.files.rename(&from, &to) {
-        Ok(()) => Ok(Done::Next),
-        Err(FileError::NotFound(m)) => fault(named_error(
-            &cx.m.prog,
-            "ERR_FILNOTFND",
-            format!("{}: {m}", a.name),
-        )),
-        Err(e) => file_error(cx, a.name, "ERR_FILEACC", e),
-    }
+    let r = cx.sh.files.rename(&from, &to);
+    done_or_error(cx, a, r)
 }
 
 /// `CopyFile OldPath, NewPath` (a file): `ERR_FILEEXIST` when `NewPath`
 /// exists, `ERR_FILNOTFND` when `OldPath` does not.
 pub(crate) fn copy_file(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     let (from, to) = two_paths(cx, a)?;
-    let data = match cx.sh.files.read(&from) {
-        Ok(d) => d,
-        Err(FileError::NotFound(m)) => {
-            return fault(named_error(
-                &cx.m.prog,
-                "ERR_FILNOTFND",
-                format!("{}: {m}", a.name),
-            ));
-        }
-        Err(e) => return file_error(cx, a.name, "ERR_FILEACC", e),
-    };
-    match cx.sh.files.write(&to, &data, false) {
-        Ok(()) => Ok(Done::Next),
-        Err(e) => file_error(cx, a.name, "ERR_FILEACC", e),
-    }
+    let r = cx
+        .sh
+        .files
+        .read(&from)
+        .and_then(|data| cx.sh.files.write(&to, &data, false));
+    done_or_error(cx, a, r)
 }
 
 /// The two paths of `RenameFile` and `CopyFile`; `ERR_FILEEXIST` when the
