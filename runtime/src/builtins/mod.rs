@@ -11,6 +11,7 @@ pub(crate) mod calibration;
 pub(crate) mod config;
 pub(crate) mod data;
 pub(crate) mod displacement;
+pub(crate) mod dnum;
 pub(crate) mod files;
 pub(crate) mod gripper;
 pub(crate) mod io;
@@ -232,6 +233,21 @@ const FUNCTIONS: &[(&str, FuncFn)] = &[
     ("Dim", data::dim),
     ("StrToVal", data::str_to_val),
     ("StrFormat", output::str_format),
+    ("PowDnum", dnum::pow),
+    ("SinDnum", dnum::trig),
+    ("CosDnum", dnum::trig),
+    ("TanDnum", dnum::trig),
+    ("ASinDnum", dnum::inverse_trig),
+    ("ACosDnum", dnum::inverse_trig),
+    ("ATanDnum", dnum::inverse_trig),
+    ("ATan2Dnum", dnum::atan2),
+    ("BitAndDnum", dnum::two),
+    ("BitOrDnum", dnum::two),
+    ("BitXOrDnum", dnum::two),
+    ("BitNegDnum", dnum::neg),
+    ("BitLShDnum", dnum::shift),
+    ("BitRShDnum", dnum::shift),
+    ("BitCheckDnum", dnum::check),
     ("ClkRead", data::clk_read),
     ("CTime", data::c_time),
     ("CDate", data::c_date),
