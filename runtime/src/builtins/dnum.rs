@@ -1,6 +1,7 @@
 //! The dnum forms of the arithmetic and bit functions (`PowDnum`,
 //! `SinDnum`, `BitAndDnum`, `BitCheckDnum`...): double precision, angles
-//! in degrees, the bit functions on whole numbers from 0 to 4294967295.
+//! in degrees, the bit functions on whole numbers from 0 to 4294967295;
+//! and `Max`/`Min`, on nums or dnums.
 
 use rapid_evaluator::Value;
 
@@ -127,4 +128,21 @@ pub(crate) fn check(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
     let x = bits(cx, a, "Value")?;
     let n = position(cx, a, "BitPos")?;
     Ok(Value::Bool(x >> (n - 1) & 1 == 1))
+}
+
+/// `Max(Value1, Value2)`, `Min(Value1, Value2)`: a num, or a dnum when
+/// either argument is one.
+pub(crate) fn max_min(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    let x = cx.req(a, "Value1")?;
+    let y = cx.req(a, "Value2")?;
+    let wide = matches!(x, Value::Dnum(_)) || matches!(y, Value::Dnum(_));
+    let (Some(p), Some(q)) = (x.as_f64(), y.as_f64()) else {
+        return crate::machine::invalid(format!("{}: the arguments must be numbers", a.name));
+    };
+    let r = if a.name == "Max" { p.max(q) } else { p.min(q) };
+    Ok(if wide {
+        Value::Dnum(r)
+    } else {
+        Value::Num(r as f32)
+    })
 }

@@ -248,6 +248,8 @@ const FUNCTIONS: &[(&str, FuncFn)] = &[
     ("BitLShDnum", dnum::shift),
     ("BitRShDnum", dnum::shift),
     ("BitCheckDnum", dnum::check),
+    ("Max", dnum::max_min),
+    ("Min", dnum::max_min),
     ("ClkRead", data::clk_read),
     ("CTime", data::c_time),
     ("CDate", data::c_date),

@@ -1,6 +1,6 @@
 MODULE dnum_functions
   ! The dnum forms of the arithmetic and bit functions, on values a num
-  ! cannot hold exactly (above 2 to the power 24).
+  ! cannot hold exactly (above 2 to the power 24); Max and Min.
   VAR dnum word;
 
   PROC main()
@@ -17,6 +17,8 @@ MODULE dnum_functions
     TPWrite "sin 30 "\Dnum:=SinDnum(30);
     TPWrite "acos 0.5 "\Dnum:=ACosDnum(0.5);
     TPWrite "atan2 "\Dnum:=ATan2Dnum(1, -1);
+    TPWrite "max "\Num:=Max(3, -4.5);
+    TPWrite "min of a num and a dnum "\Dnum:=Min(3, word);
     TPWrite "bit 33 "\Bool:=BitCheckDnum(word, 33);
   ERROR
     TPWrite "argument error "\Bool:=ERRNO = ERR_ARGVALERR;
@@ -34,4 +36,6 @@ ENDMODULE
 !> sin 30 0.5
 !> acos 0.5 60
 !> atan2 135
+!> max 3
+!> min of a num and a dnum 3
 !> argument error TRUE
