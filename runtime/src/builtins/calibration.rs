@@ -8,7 +8,7 @@ use rapid_evaluator::nalgebra::{DMatrix, DVector, Vector3};
 
 use super::{Args, Cx, Done};
 use crate::machine::{R, invalid};
-use crate::world::{Tool, WObj};
+use crate::world::{RobotError, Tool, WObj};
 
 /// `MToolTCPCalib Pos1, Pos2, Pos3, Pos4, Tool, MaxErr, MeanErr`: the four
 /// joint positions point the tool's tip at one fixed point; the TCP is the
@@ -24,7 +24,14 @@ pub(crate) fn m_tool_tcp_calib(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
         let v = cx.req(a, p)?;
         let joints = super::motion::jointtarget(&v)?;
         let t = cx.ask_robot(a, index, |robot| {
-            robot.calc_robtarget(&joints, &Tool::default(), &WObj::default())
+            robot
+                .calc_robtarget(&joints, &Tool::default(), &WObj::default())
+                .map_err(|e| match e {
+                    RobotError::Unsupported(_) => RobotError::Unsupported(
+                        "MToolTCPCalib (the simulated robot has no kinematic model)".to_owned(),
+                    ),
+                    e => e,
+                })
         })?;
         flanges.push(t.pose.isometry());
     }
@@ -41,7 +48,17 @@ pub(crate) fn m_tool_tcp_calib(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
             b[3 * i + row] = -f.translation.vector[row];
         }
     }
-    let x = match m.svd(true, true).solve(&b, 1e-9) {
+    let svd = m.svd(true, true);
+    let (low, high) = svd
+        .singular_values
+        .iter()
+        .fold((f64::INFINITY, 0.0_f64), |(l, h), &v| (l.min(v), h.max(v)));
+    if high <= 0.0 || low / high < 1e-6 {
+        return invalid(
+            "MToolTCPCalib: the four positions do not determine a TCP (their tool orientations are too alike)",
+        );
+    }
+    let x = match svd.solve(&b, 1e-9) {
         Ok(x) => x,
         Err(e) => return invalid(format!("MToolTCPCalib: {e}")),
     };

@@ -147,7 +147,7 @@ pub(crate) fn trigg_move(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
             Some(e) => events.push(e),
             None => {
                 return invalid(format!(
-                    "{}: {p} is not set up (TriggIO or TriggEquip first)",
+                    "{}: {p} is not set up (TriggIO, TriggEquip or TriggInt first)",
                     a.name
                 ));
             }
