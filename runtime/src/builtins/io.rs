@@ -9,6 +9,12 @@ use crate::machine::{R, SignalTest, Timeout, Wait, WaitKind, fault, invalid, nam
 
 /// The signal a signal argument stands for: its name and kind.
 fn signal(cx: &mut Cx<'_>, a: &Args, param: &str) -> R<(String, SignalKind)> {
+    let v = signal_arg(cx, a, param)?;
+    cx.m.signal_of(cx.sh, &v)
+}
+
+/// A signal argument's value (a signal data object), checked to be one.
+fn signal_arg(cx: &mut Cx<'_>, a: &Args, param: &str) -> R<Value> {
     let v = cx.req(a, param)?;
     if !crate::machine::is_signal(&v) {
         return invalid(format!(
@@ -17,7 +23,7 @@ fn signal(cx: &mut Cx<'_>, a: &Args, param: &str) -> R<(String, SignalKind)> {
             crate::machine::describe(&v)
         ));
     }
-    cx.m.signal_of(cx.sh, &v)
+    Ok(v)
 }
 
 fn digital(cx: &Cx<'_>, a: &Args, value: f64) -> R<f64> {
@@ -151,13 +157,7 @@ pub(crate) fn alias_io(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
 /// for one connected to nothing; `SignalName` gets the configured signal's
 /// name (empty for none).
 pub(crate) fn get_signal_origin(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
-    let v = cx.req(a, "Signal")?;
-    if !crate::machine::is_signal(&v) {
-        return invalid(format!(
-            "GetSignalOrigin: Signal must be a signal, not {}",
-            crate::machine::describe(&v)
-        ));
-    }
+    let v = signal_arg(cx, a, "Signal")?;
     let name = match v.field("name") {
         Some(Value::Str(s)) => s.clone(),
         _ => String::new(),
@@ -201,8 +201,7 @@ pub(crate) fn input(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
 /// `GInputDnum(Signal)`, `GOutputDnum(Signal)`: a group signal's value
 /// as a dnum (up to 32 bits).
 pub(crate) fn input_dnum(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
-    let v = cx.req(a, "Signal")?;
-    let (name, _) = cx.m.signal_of(cx.sh, &v)?;
+    let (name, _) = signal(cx, a, "Signal")?;
     Ok(Value::Dnum(cx.sh.io.read(&name).unwrap_or(0.0)))
 }
 
@@ -439,13 +438,7 @@ pub(crate) fn i_watch(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
 /// variable that `AliasIO` has not connected, TRUE for a signal (the
 /// simulation's I/O devices are always running).
 pub(crate) fn valid_io(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
-    let v = cx.req(a, "Signal")?;
-    if !crate::machine::is_signal(&v) {
-        return invalid(format!(
-            "ValidIO: Signal must be a signal, not {}",
-            crate::machine::describe(&v)
-        ));
-    }
+    let v = signal_arg(cx, a, "Signal")?;
     Ok(Value::Bool(cx.m.signal_of(cx.sh, &v).is_ok()))
 }
 
