@@ -12,24 +12,16 @@ use rapid_evaluator::geometry::{iso_of, pose_value, with_frame};
 use rapid_evaluator::nalgebra::{Isometry3, Translation3, UnitQuaternion};
 
 use super::{Args, Cx, Done};
-use crate::machine::{Place, R, Root, invalid};
+use crate::machine::R;
 use crate::world::Pose;
 
-/// The task's `C_PROGDISP`.
-fn place(cx: &Cx<'_>) -> R<Place> {
-    match cx.m.prog.system_global("C_PROGDISP") {
-        Some(g) => Ok(Place {
-            root: Root::Global(g),
-            path: Vec::new(),
-        }),
-        None => invalid("the catalogue has no C_PROGDISP"),
-    }
-}
+/// Where the task keeps its displacement.
+const PROGDISP: &str = "C_PROGDISP";
 
 /// The active displacement frame, `None` when there is none (the
 /// identity).
 pub(crate) fn active(cx: &mut Cx<'_>) -> R<Option<Pose>> {
-    let p = place(cx)?;
+    let p = cx.system_place(PROGDISP)?;
     let v = cx.m.load(cx.sh, &p)?;
     let Some(disp) = v.field("pdisp") else {
         return Ok(None);
@@ -47,7 +39,7 @@ pub(crate) fn active(cx: &mut Cx<'_>) -> R<Option<Pose>> {
 
 /// Makes `iso` the displacement (`C_PROGDISP.pdisp`).
 fn set(cx: &mut Cx<'_>, iso: &Isometry3<f64>) -> R<()> {
-    let p = place(cx)?;
+    let p = cx.system_place(PROGDISP)?;
     let pose = pose_value(iso, false).or_else(|e| cx.m.eval_error(e))?;
     let mut v = cx.m.load(cx.sh, &p)?;
     if let Value::Record { fields, .. } = &mut v {

@@ -487,6 +487,15 @@ impl Cx<'_> {
         self.m.data_name(p.root)
     }
 
+    /// The place of the catalogue's predefined data `name` (`tool0`,
+    /// `C_PROGDISP`), the task's own, whatever the program declares.
+    pub(crate) fn system_place(&self, name: &str) -> R<Place> {
+        match self.m.prog.system_global(name) {
+            Some(g) => Ok(Place::root(Root::Global(g))),
+            None => invalid(format!("the catalogue has no {name}")),
+        }
+    }
+
     /// The simulated time now.
     pub(crate) fn now(&self) -> f64 {
         self.sh.clock

@@ -562,16 +562,8 @@ fn active(cx: &mut Cx<'_>, which: usize, default: &str) -> R<Value> {
     if let Some(v) = cx.m.active.get(which).cloned().flatten() {
         return Ok(v);
     }
-    match cx.m.prog.system_global(default) {
-        Some(g) => cx.m.load(
-            cx.sh,
-            &crate::machine::Place {
-                root: crate::machine::Root::Global(g),
-                path: Vec::new(),
-            },
-        ),
-        None => invalid(format!("the catalogue has no {default}")),
-    }
+    let place = cx.system_place(default)?;
+    cx.m.load(cx.sh, &place)
 }
 
 /// `SetSysData SourceObject [\ObjectName]`: the tool or work object
