@@ -52,7 +52,7 @@ fn num(v: Option<&Value>, name: &str) -> f64 {
         .unwrap_or(0.0)
 }
 
-fn nums<const N: usize>(v: Option<&Value>, names: [&str; N]) -> [f64; N] {
+pub(crate) fn nums<const N: usize>(v: Option<&Value>, names: [&str; N]) -> [f64; N] {
     let mut out = [0.0; N];
     for (slot, n) in out.iter_mut().zip(names) {
         *slot = num(v, n);

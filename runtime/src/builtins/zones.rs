@@ -85,24 +85,6 @@ pub(crate) struct Zones {
 
 const FREE: f64 = 8.9e9;
 
-fn xyz(v: &Value) -> [f64; 3] {
-    let f = |n| v.field(n).and_then(Value::as_f64).unwrap_or(0.0);
-    [f("x"), f("y"), f("z")]
-}
-
-fn axes(v: &Value) -> [f64; 6] {
-    let mut out = [0.0; 6];
-    if let Some(robax) = v.field("robax") {
-        for (i, slot) in out.iter_mut().enumerate() {
-            *slot = robax
-                .field(&format!("rax_{}", i + 1))
-                .and_then(Value::as_f64)
-                .unwrap_or(0.0);
-        }
-    }
-    out
-}
-
 impl Shape {
     /// Is the point (TCP, mm) or are the axes (degrees) inside? `None`:
     /// the robot's state this shape needs is not known.
@@ -174,7 +156,15 @@ fn define(cx: &mut Cx<'_>, a: &Args, shape: Shape) -> R<Done> {
 }
 
 fn point(cx: &mut Cx<'_>, a: &Args, param: &str) -> R<[f64; 3]> {
-    Ok(xyz(&cx.req(a, param)?))
+    Ok(super::motion::nums(
+        Some(&cx.req(a, param)?),
+        ["x", "y", "z"],
+    ))
+}
+
+/// The robot axes of a jointtarget argument (degrees).
+fn axes(cx: &mut Cx<'_>, a: &Args, param: &str) -> R<[f64; 6]> {
+    Ok(super::motion::jointtarget(&cx.req(a, param)?)?.robax)
 }
 
 /// `WZBoxDef [\Inside] | [\Outside] Shape LowPoint HighPoint`.
@@ -211,8 +201,8 @@ pub(crate) fn wz_sph_def(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
 /// `WZHomeJointDef [\Inside] | [\Outside] Shape MiddleJointVal
 /// DeltaJointVal`: each axis within its delta of the middle value.
 pub(crate) fn wz_home_joint_def(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
-    let middle = axes(&cx.req(a, "MiddleJointVal")?);
-    let delta = axes(&cx.req(a, "DeltaJointVal")?);
+    let middle = axes(cx, a, "MiddleJointVal")?;
+    let delta = axes(cx, a, "DeltaJointVal")?;
     let mut low = [0.0; 6];
     let mut high = [0.0; 6];
     for i in 0..6 {
@@ -227,8 +217,8 @@ pub(crate) fn wz_home_joint_def(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
 
 /// `WZLimJointDef [\Inside] | [\Outside] Shape LowJointVal HighJointVal`.
 pub(crate) fn wz_lim_joint_def(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
-    let low = axes(&cx.req(a, "LowJointVal")?);
-    let high = axes(&cx.req(a, "HighJointVal")?);
+    let low = axes(cx, a, "LowJointVal")?;
+    let high = axes(cx, a, "HighJointVal")?;
     define(cx, a, Shape::Joints { low, high })
 }
 
