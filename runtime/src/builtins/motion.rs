@@ -104,7 +104,14 @@ impl Cx<'_> {
     /// The work object of `\WObj` (`wobj0` when absent) with the task's
     /// program displacement: positions are in the displaced frame.
     pub(super) fn wobj(&mut self, a: &Args) -> R<WObj> {
-        let mut w = self.object_frame(a)?;
+        let v = self.opt(a, "WObj")?;
+        self.displaced(v.as_ref())
+    }
+
+    /// A work object value (`wobj0` for `None`) with the task's program
+    /// displacement.
+    fn displaced(&mut self, v: Option<&Value>) -> R<WObj> {
+        let mut w = self.wobj_of(v)?;
         if let Some(disp) = super::displacement::active(self)? {
             w.oframe = w.oframe.then(&disp);
         }
@@ -113,7 +120,13 @@ impl Cx<'_> {
 
     /// The work object of `\WObj`, without the program displacement.
     pub(super) fn object_frame(&mut self, a: &Args) -> R<WObj> {
-        let Some(v) = self.opt(a, "WObj")? else {
+        let v = self.opt(a, "WObj")?;
+        self.wobj_of(v.as_ref())
+    }
+
+    /// A `wobjdata` value as motion needs it (`wobj0` for `None`).
+    fn wobj_of(&self, v: Option<&Value>) -> R<WObj> {
+        let Some(v) = v else {
             return Ok(WObj::default());
         };
         let frame = |cx: &Self, name: &str| match v.field(name) {
@@ -352,9 +365,14 @@ pub(crate) fn do_move_at(
         zone_leax: num(zone_value.as_ref(), "zone_leax"),
         zone_reax: num(zone_value.as_ref(), "zone_reax"),
     };
-    let tool = cx.tool(a, "Tool")?;
-    let moved_tool = tool.clone();
-    let wobj = cx.wobj(a)?;
+    // Read once: the move's tool and work object become the active ones.
+    let tool_value = cx.opt(a, "Tool")?;
+    let wobj_value = cx.opt(a, "WObj")?;
+    let tool = match &tool_value {
+        Some(v) => cx.tool_of(v)?,
+        None => Tool::default(),
+    };
+    let wobj = cx.displaced(wobj_value.as_ref())?;
     let time = cx.opt_num(a, "T")?;
     let velocity = cx.opt_num(a, "V")?;
     let conc = a.given("Conc");
@@ -384,9 +402,9 @@ pub(crate) fn do_move_at(
     };
     let end = start + motion.duration.max(0.0);
     cx.sh.move_count += 1;
-    cx.m.active = [cx.opt(a, "Tool")?, cx.opt(a, "WObj")?];
+    cx.m.active = [tool_value, wobj_value];
     let delay = end - cx.now();
-    super::zones::supervise(cx, index, &moved_tool, delay, None)?;
+    super::zones::supervise(cx, index, &request.tool, delay, None)?;
     if let Some(slot) = cx.sh.motion_until.get_mut(index) {
         *slot = end;
     }
