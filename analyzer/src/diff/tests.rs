@@ -213,6 +213,18 @@ fn records_are_compared_by_field_and_arrays_by_element() {
 }
 
 #[test]
+fn data_of_a_type_known_by_name_only_are_one_value_and_arrays_stop_at_their_dimensions() {
+    // `welddata` (an option's type whose components no source documents)
+    // evaluates as an aggregate; it is one data object, not an array, and
+    // an array of it goes only as deep as its declared dimension.
+    let old = "  PERS welddata w := [10, 0, [1, 0, 25, 275]];\n  PERS welddata ws{2} := [[10, 0], [12, 0]];\n";
+    let new = "  PERS welddata w := [12, 0, [1, 0, 25, 275]];\n  PERS welddata ws{2} := [[10, 0], [14, 0]];\n";
+    let r = diff(old, new);
+    let names: Vec<&str> = data_of(&r).iter().map(|d| d.name.as_str()).collect();
+    assert_eq!(names, ["w", "ws{2}"]);
+}
+
+#[test]
 fn a_target_computed_from_a_moved_one_moved_too() {
     let old = "  CONST robtarget p0 := [[0,0,0],[1,0,0,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];\n  CONST robtarget p1 := Offs(p0, 0, 0, 100);\n";
     let new = old.replacen("[[0,0,0]", "[[10,0,0]", 1);
