@@ -187,3 +187,45 @@ fn the_example_tests_pass_with_the_shipped_assertion_module() {
         "{out}"
     );
 }
+
+#[test]
+fn a_program_file_names_the_modules_it_lists() {
+    let dir = scratch("run-program-file");
+    write(
+        &dir,
+        &[
+            (
+                "app/App.pgf",
+                "<?xml version=\"1.0\"?>\n<Program>\n  <Module>Main.mod</Module>\n  <Module>Lib.sys</Module>\n</Program>\n",
+            ),
+            (
+                "app/Main.mod",
+                "MODULE Main\n  PROC main()\n    Greet;\n  ENDPROC\nENDMODULE\n",
+            ),
+            (
+                "app/Lib.sys",
+                "MODULE Lib(SYSMODULE)\n  PROC Greet()\n    TPWrite \"hello\";\n  ENDPROC\nENDMODULE\n",
+            ),
+            (
+                "empty/None.pgf",
+                "<?xml version=\"1.0\"?>\n<Program>\n  <Module>Gone.mod</Module>\n</Program>\n",
+            ),
+        ],
+    );
+    let (code, out, err) = run(&dir, &["run", "app/App.pgf"]);
+    assert_eq!((code, out.as_str(), err.as_str()), (Some(0), "hello\n", ""));
+    let (code, out, _) = run(&dir, &["run", "--list-unsupported", "app/App.pgf"]);
+    assert_eq!(
+        (code, out.as_str()),
+        (Some(0), "0 calls the simulation does not support\n")
+    );
+    let (code, out, err) = run(&dir, &["check", "app/App.pgf"]);
+    assert_eq!(code, Some(0), "{out}{err}");
+    assert!(out.contains("Checked 2 files"), "{out}");
+    let (code, _, err) = run(&dir, &["run", "empty/None.pgf"]);
+    assert_eq!(code, Some(2));
+    assert!(
+        err.contains("None.pgf") && err.contains("lists no module that exists"),
+        "{err}"
+    );
+}

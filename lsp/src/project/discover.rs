@@ -79,8 +79,16 @@ pub fn discover_in(
                     let name = root.file_name().unwrap_or_default().to_string_lossy();
                     if is_controller_config_name(&name) {
                         out.configs.push(root.clone());
-                    } else if is_program_file_name(&name) && is_xml(env, root) {
+                    } else if let Some(modules) = named_program(env, root) {
+                        // Naming a program names the modules it lists.
+                        if modules.is_empty() {
+                            out.warnings.push((
+                                root.clone(),
+                                "the program lists no module that exists".into(),
+                            ));
+                        }
                         out.programs.push(root.clone());
+                        out.files.extend(modules);
                     } else {
                         out.files.push(root.clone());
                     }
@@ -194,6 +202,15 @@ pub(super) fn walk_disk(root: &Path, max_depth: Option<usize>, excluded: &Exclud
 /// Why an entry named like a RAPID file is skipped.
 fn not_a_file(what: &str) -> String {
     format!("skipped: {what}, not a file that can be read")
+}
+
+/// The modules that the file `path` lists when it is a program (an XML
+/// `.pgf`), those that exist; `None` for any other file (RAPID text written
+/// into a `.pgf` is a module).
+pub fn named_program(env: &dyn Environment, path: &Path) -> Option<Vec<PathBuf>> {
+    let name = path.file_name().unwrap_or_default().to_string_lossy();
+    (is_program_file_name(&name) && is_xml(env, path))
+        .then(|| super::context::program_members(env, std::iter::once(&path.to_path_buf())))
 }
 
 /// Does the file start like XML (after a byte-order mark and blanks)? A

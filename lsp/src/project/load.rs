@@ -260,7 +260,20 @@ pub fn load_around(
                 } else {
                     PathBuf::from(key)
                 });
-                named.push(p.clone());
+                // A program (`.pgf`) names the modules it lists.
+                match super::named_program(env, p) {
+                    Some(modules) if modules.is_empty() => {
+                        return Err((
+                            p.clone(),
+                            std::io::Error::new(
+                                std::io::ErrorKind::NotFound,
+                                "the program lists no module that exists",
+                            ),
+                        ));
+                    }
+                    Some(modules) => named.extend(modules),
+                    None => named.push(p.clone()),
+                }
             }
             Ok(_) => {
                 // A backup's task folder (or a folder in it) is loaded with

@@ -19,7 +19,7 @@ mod tests;
 
 use std::path::{Path, PathBuf};
 
-pub use discover::{Discovery, Excluder, discover, discover_in, discover_with};
+pub use discover::{Discovery, Excluder, discover, discover_in, discover_with, named_program};
 pub use load::{Loaded, Sources, assemble, load, load_around, read_and_parse_with};
 pub use source::{SourceFile, Unreadable};
 
