@@ -25,10 +25,12 @@ struct OpenFile {
     pos: usize,
 }
 
-/// The files the program has open, by handle.
+/// The files and folders the program has open, by handle.
 #[derive(Default)]
 pub(crate) struct OpenFiles {
     open: HashMap<i32, OpenFile>,
+    /// An open folder (`OpenDir`): its entries and how many were read.
+    dirs: HashMap<i32, (Vec<String>, usize)>,
     next: i32,
 }
 
@@ -42,7 +44,12 @@ fn file_error<T>(cx: &Cx<'_>, what: &str, code: &str, e: FileError) -> R<T> {
 }
 
 fn handle(cx: &mut Cx<'_>, a: &Args) -> R<i32> {
-    let v = cx.req(a, "IODevice")?;
+    handle_of(cx, a, "IODevice")
+}
+
+/// The handle an `iodev` or `dir` argument holds.
+fn handle_of(cx: &mut Cx<'_>, a: &Args, param: &str) -> R<i32> {
+    let v = cx.req(a, param)?;
     Ok(v.field("handle").and_then(Value::as_f64).unwrap_or(0.0) as i32)
 }
 
@@ -362,4 +369,59 @@ pub(crate) fn make_dir(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
 /// `RemoveDir Path`.
 pub(crate) fn remove_dir(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     fs_op(cx, a, |fs, p| fs.remove_dir(p))
+}
+
+/// `OpenDir Dev, Path`: the folder's entries, `.` and `..` first as the
+/// controller lists them (loaded code skips them by name), then the rest
+/// sorted by name; `ERR_FILEACC` for a path that is no folder.
+pub(crate) fn open_dir(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let path = cx.string(a, "Path")?;
+    let names = match cx.sh.files.list(&path) {
+        Ok(names) => names,
+        Err(e) => return file_error(cx, "OpenDir", "ERR_FILEACC", e),
+    };
+    let entries = [".", ".."]
+        .into_iter()
+        .map(str::to_owned)
+        .chain(names)
+        .collect();
+    cx.sh.open.next += 1;
+    let h = cx.sh.open.next;
+    cx.sh.open.dirs.insert(h, (entries, 0));
+    let p = cx.place_arg(a, "Dev")?;
+    cx.store(
+        &p,
+        Value::Record {
+            ty: "dir".to_owned(),
+            fields: vec![("handle".to_owned(), Value::Num(h as f32))],
+        },
+    )?;
+    Ok(Done::Next)
+}
+
+/// `ReadDir(Dev, FileName)`: TRUE with the next entry's name in
+/// `FileName`, FALSE after the last; `ERR_FILEACC` for a folder not open.
+pub(crate) fn read_dir(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    let h = handle_of(cx, a, "Dev")?;
+    let Some((entries, read)) = cx.sh.open.dirs.get_mut(&h) else {
+        return fault(named_error(
+            &cx.m.prog,
+            "ERR_FILEACC",
+            "ReadDir: the folder is not open (OpenDir)".to_owned(),
+        ));
+    };
+    let Some(name) = entries.get(*read).cloned() else {
+        return Ok(Value::Bool(false));
+    };
+    *read += 1;
+    let p = cx.place_arg(a, "FileName")?;
+    cx.store(&p, Value::Str(name))?;
+    Ok(Value::Bool(true))
+}
+
+/// `CloseDir Dev`.
+pub(crate) fn close_dir(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let h = handle_of(cx, a, "Dev")?;
+    cx.sh.open.dirs.remove(&h);
+    Ok(Done::Next)
 }

@@ -52,6 +52,8 @@ pub trait FileSystem: Send {
     fn rename(&mut self, from: &str, to: &str) -> Result<(), FileError>;
     /// What the path names, if anything.
     fn kind(&mut self, path: &str) -> Option<FileKind>;
+    /// The names of the files and folders in the folder `path`, sorted.
+    fn list(&mut self, path: &str) -> Result<Vec<String>, FileError>;
 }
 
 /// The files in a folder: every device (`HOME:`, `TEMP:`...) is that
@@ -154,6 +156,15 @@ impl FileSystem for SandboxFs {
             FileKind::File
         })
     }
+
+    fn list(&mut self, path: &str) -> Result<Vec<String>, FileError> {
+        let entries = std::fs::read_dir(self.resolve(path)?).map_err(|e| os_error(path, &e))?;
+        let mut names: Vec<String> = entries
+            .filter_map(|e| Some(e.ok()?.file_name().to_string_lossy().into_owned()))
+            .collect();
+        names.sort();
+        Ok(names)
+    }
 }
 
 /// Files in memory, by their path below the device (folders are made on
@@ -233,5 +244,49 @@ impl FileSystem for MemoryFs {
         } else {
             None
         }
+    }
+
+    fn list(&mut self, path: &str) -> Result<Vec<String>, FileError> {
+        let key = MemoryFs::key(path)?;
+        if !key.is_empty() && !self.dirs.contains(&key) {
+            return Err(FileError::NotFound(format!("{path}: no such folder")));
+        }
+        let prefix = if key.is_empty() {
+            key
+        } else {
+            format!("{key}/")
+        };
+        let mut names: Vec<String> = self
+            .files
+            .keys()
+            .chain(&self.dirs)
+            .filter_map(|k| k.strip_prefix(&prefix)?.split('/').next())
+            .filter(|n| !n.is_empty())
+            .map(str::to_owned)
+            .collect();
+        names.sort();
+        names.dedup();
+        Ok(names)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn memory_lists_a_folder_s_files_and_folders_once_each() {
+        let mut fs = MemoryFs::new();
+        fs.make_dir("HOME:/parts").unwrap();
+        fs.make_dir("HOME:/parts/old").unwrap();
+        fs.write("HOME:/parts/b.txt", b"x", false).unwrap();
+        fs.write("HOME:/parts/old/c.txt", b"x", false).unwrap();
+        fs.write("HOME:/top.txt", b"x", false).unwrap();
+        assert_eq!(fs.list("HOME:/parts").unwrap(), ["b.txt", "old"]);
+        assert_eq!(fs.list("HOME:").unwrap(), ["parts", "top.txt"]);
+        assert!(matches!(
+            fs.list("HOME:/nowhere"),
+            Err(FileError::NotFound(_))
+        ));
     }
 }
