@@ -275,18 +275,19 @@ mod tests {
     use super::*;
 
     #[test]
-    fn memory_lists_a_folder_s_files_and_folders_once_each() {
+    fn memory_lists_a_folder_s_files_and_folders_once_each() -> Result<(), FileError> {
         let mut fs = MemoryFs::new();
-        fs.make_dir("HOME:/parts").unwrap();
-        fs.make_dir("HOME:/parts/old").unwrap();
-        fs.write("HOME:/parts/b.txt", b"x", false).unwrap();
-        fs.write("HOME:/parts/old/c.txt", b"x", false).unwrap();
-        fs.write("HOME:/top.txt", b"x", false).unwrap();
-        assert_eq!(fs.list("HOME:/parts").unwrap(), ["b.txt", "old"]);
-        assert_eq!(fs.list("HOME:").unwrap(), ["parts", "top.txt"]);
+        fs.make_dir("HOME:/parts")?;
+        fs.make_dir("HOME:/parts/old")?;
+        fs.write("HOME:/parts/b.txt", b"x", false)?;
+        fs.write("HOME:/parts/old/c.txt", b"x", false)?;
+        fs.write("HOME:/top.txt", b"x", false)?;
+        assert_eq!(fs.list("HOME:/parts")?, ["b.txt", "old"]);
+        assert_eq!(fs.list("HOME:")?, ["parts", "top.txt"]);
         assert!(matches!(
             fs.list("HOME:/nowhere"),
             Err(FileError::NotFound(_))
         ));
+        Ok(())
     }
 }
