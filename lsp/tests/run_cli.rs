@@ -229,3 +229,35 @@ fn a_program_file_names_the_modules_it_lists() {
         "{err}"
     );
 }
+
+#[test]
+fn of_alternative_programs_the_named_one_runs_and_a_folder_asks_which() {
+    let dir = scratch("run-alternatives");
+    let version =
+        |v: &str| format!("MODULE Prog\n  PROC main()\n    Greet \"{v}\";\n  ENDPROC\nENDMODULE\n");
+    let (v1, v2) = (version("v1"), version("v2"));
+    write(
+        &dir,
+        &[
+            ("cell/Prog_v1.mod", &v1),
+            ("cell/Prog_v2.mod", &v2),
+            (
+                "cell/Lib.sys",
+                "MODULE Lib(SYSMODULE)\n  PROC Greet(string s)\n    TPWrite s;\n  ENDPROC\nENDMODULE\n",
+            ),
+        ],
+    );
+    for v in ["v1", "v2"] {
+        let (code, out, err) = run(&dir, &["run", &format!("cell/Prog_{v}.mod")]);
+        assert_eq!(
+            (code, out.as_str(), err.as_str()),
+            (Some(0), &*format!("{v}\n"), "")
+        );
+    }
+    let (code, out, err) = run(&dir, &["run", "cell"]);
+    assert_eq!((code, out.as_str()), (Some(2), ""));
+    assert!(
+        err.contains("2 alternative programs") && err.contains("Prog_v1.mod, cell/Prog_v2.mod"),
+        "{err}"
+    );
+}

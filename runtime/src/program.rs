@@ -183,10 +183,11 @@ impl Program {
         p
     }
 
-    /// Module data and routines, in the task's order.
+    /// Module data and routines, in the task's order; a view of a task
+    /// (one of alternative programs) without the units it leaves out.
     fn lay_out_modules(&mut self) {
         let task = self.task.clone();
-        for (u, unit) in task.units.iter().enumerate() {
+        for (u, unit) in task.live_units() {
             for (mi, m) in unit.items.modules.iter().enumerate() {
                 let module = self.modules.len();
                 self.modules.push(Module {

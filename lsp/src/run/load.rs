@@ -181,6 +181,13 @@ pub fn controller(path: &Path, only: Option<&str>, entry: Option<&str>) -> Resul
             system,
         });
     }
+    if let Some(programs) = out
+        .iter()
+        .map(|t| alternatives(&t.task, &t.entry))
+        .find(|p| !p.is_empty())
+    {
+        return Err(name_one_of(path, &programs));
+    }
     if lone || together {
         return Ok(Loaded { tasks: out, system });
     }
@@ -285,13 +292,50 @@ pub fn one_task_in(env: &dyn Environment, path: &Path, entry: &str) -> Result<Ar
 
 /// Does `task` declare a routine named `routine`?
 pub fn declares(task: &Task, routine: &str) -> bool {
-    task.units.iter().any(|u| {
-        u.items.modules.iter().any(|m| {
-            m.routines
-                .iter()
-                .any(|r| r.name.eq_ignore_ascii_case(routine))
-        })
+    task.units.iter().any(|u| unit_declares(u, routine))
+}
+
+fn unit_declares(u: &Unit, routine: &str) -> bool {
+    u.items.modules.iter().any(|m| {
+        m.routines
+            .iter()
+            .any(|r| r.name.eq_ignore_ascii_case(routine))
     })
+}
+
+/// The alternative programs of a folder's task, as `rapid check` tells
+/// them apart: each module that declares `entry` and cannot be loaded with
+/// another of the folder's modules (two versions of one module, or two
+/// programs with a `main`), as the view of the task that leaves out what
+/// it clashes with. Empty when the task is one program (or a view already).
+pub fn alternatives(task: &Arc<Task>, entry: &str) -> Vec<Arc<Task>> {
+    if task.owner.is_some() || task.clashes.is_empty() {
+        return Vec::new();
+    }
+    let programs: Vec<usize> = (0..task.units.len())
+        .filter(|&i| task.clashes.any(i) && task.unit(i).is_some_and(|u| unit_declares(u, entry)))
+        .collect();
+    if programs.len() < 2 {
+        return Vec::new();
+    }
+    programs
+        .into_iter()
+        .map(|i| Arc::new(task.view(i)))
+        .collect()
+}
+
+/// The error for a folder of alternative programs run without naming one.
+fn name_one_of(path: &Path, programs: &[Arc<Task>]) -> String {
+    let paths: Vec<String> = programs
+        .iter()
+        .filter_map(|v| Some(v.unit(v.owner?)?.path.clone()))
+        .collect();
+    format!(
+        "{}: the folder holds {} alternative programs (modules that cannot be loaded together); name the module to run: {}",
+        path.display(),
+        paths.len(),
+        paths.join(", ")
+    )
 }
 
 /// `task` with more modules (given as path and text), unless it declares
