@@ -1,7 +1,8 @@
 //! How `rapid run` fares on the corpus of real programs
 //! (`../shared/corpus`, or `RAPID_CORPUS`): every controller backup runs
 //! with all its tasks together (as `rapid run BACKUP`), every other task
-//! alone from its `main` (as `rapid run FOLDER`), with no operator
+//! alone from its `main` (as `rapid run FOLDER`; each of a folder's
+//! alternative programs alone, as `rapid run MODULE`), with no operator
 //! answers, the simulated network and the corpus test's budgets; each
 //! task's end is classified. The figures, the classes and the instructions
 //! that stop runs are generated into `docs/corpus-runs.md`, which the test
@@ -11,7 +12,10 @@ use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
+use std::sync::Arc;
+
 use rapid_analyzer::layout::controller_of;
+use rapid_analyzer::task::Task;
 use rapid_runtime::{Limits, Outcome, Status};
 
 use super::load::{self, Loaded};
@@ -102,26 +106,45 @@ fn options() -> RunOptions {
 /// Runs every task of the corpus at `dir`.
 pub fn sweep(dir: &Path) -> Result<Vec<TaskRun>, String> {
     let found = load::tasks(&[dir.to_path_buf()])?;
-    let mut groups: BTreeMap<String, Vec<usize>> = BTreeMap::new();
+    // Each run: its tasks (an index into `found`, and the task itself: a
+    // folder of alternative programs runs each program alone).
+    let mut groups: BTreeMap<String, Vec<(usize, Arc<Task>)>> = BTreeMap::new();
     for (i, t) in found.tasks.iter().enumerate() {
-        let group = controller_of(&t.key).map_or_else(|| t.key.clone(), |c| c.to_string());
-        groups.entry(group).or_default().push(i);
+        let programs = load::alternatives(t, "main");
+        if programs.is_empty() {
+            let group = controller_of(&t.key).map_or_else(|| t.key.clone(), |c| c.to_string());
+            groups.entry(group).or_default().push((i, t.clone()));
+        }
+        for view in programs {
+            let key = view
+                .owner
+                .and_then(|o| view.unit(o))
+                .map_or_else(|| t.key.clone(), |u| u.path.clone());
+            groups.entry(key).or_default().push((i, view));
+        }
     }
     let sandbox = super::Sandbox::new(None)?;
     let mut opts = options();
     opts.sandbox = Some(sandbox.path.clone());
     let mut out = Vec::new();
-    for members in groups.values() {
+    for (group, members) in &groups {
         let lone = members.len() == 1;
         let tasks: Vec<_> = members
             .iter()
-            .map(|&i| load::to_run(&found.tasks[i], found.settings[i].as_ref(), lone, "main"))
+            .map(|(i, t)| load::to_run(t, found.settings[*i].as_ref(), lone, "main"))
             .collect();
         let names: Vec<(String, String, bool)> = tasks
             .iter()
-            .map(|t| (t.name.clone(), t.task.key.clone(), t.task.is_backup()))
+            .map(|t| {
+                let key = if t.task.owner.is_some() {
+                    group
+                } else {
+                    &t.task.key
+                };
+                (t.name.clone(), key.clone(), t.task.is_backup())
+            })
             .collect();
-        let system = found.systems[members[0]].clone();
+        let system = found.systems[members[0].0].clone();
         let loaded = Loaded { tasks, system };
         let result = execute(&loaded, &opts, Box::new(|_, _: &str| {}));
         for (name, key, backup) in names {
@@ -156,7 +179,7 @@ pub fn page(runs: &[TaskRun]) -> String {
     );
     let _ = writeln!(
         s,
-        "`rapid run` over `../shared/corpus` (real RAPID programs from public repositories, test input only): every controller backup with all its tasks together, every other task (grouped as `rapid check` groups them) alone from its `main`. No operator answers (a question stops the task waiting for the operator), a network where nobody answers, at most 100,000 statements and 300 simulated seconds a run. A task without an entry routine (a library of modules) has nothing to run and is not counted.\n"
+        "`rapid run` over `../shared/corpus` (real RAPID programs from public repositories, test input only): every controller backup with all its tasks together, every other task (grouped as `rapid check` groups them) alone from its `main`; a folder of alternative programs (modules that cannot be loaded together, each with a `main`) runs each program alone, as `rapid run MODULE` runs it. No operator answers (a question stops the task waiting for the operator), a network where nobody answers, at most 100,000 statements and 300 simulated seconds a run. A task without an entry routine (a library of modules) has nothing to run and is not counted.\n"
     );
     // The controller backups' tasks, the other tasks, all.
     let groups: [fn(&TaskRun) -> bool; 3] = [|r| r.backup, |r| !r.backup, |_| true];
