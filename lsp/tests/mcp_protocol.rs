@@ -345,6 +345,19 @@ fn run_answers_output_errors_with_lines_and_a_trace_summary() {
     assert!(message.contains("not a signal name"), "{message}");
     let message = c.refused("run", json!({"path": "cell", "budgets": {"max_steps": 0}}));
     assert!(message.contains("max_steps"), "{message}");
+    // Two versions of one program: the module named runs, the folder asks.
+    let version = |v: &str| {
+        format!("MODULE Prog\n  PROC main()\n    TPWrite \"{v}\";\n  ENDPROC\nENDMODULE\n")
+    };
+    let (v1, v2) = (version("v1"), version("v2"));
+    write(
+        &dir,
+        &[("versions/Prog_v1.mod", &v1), ("versions/Prog_v2.mod", &v2)],
+    );
+    let ran = c.call("run", json!({"path": "versions/Prog_v2.mod"}));
+    assert_eq!(structured(&ran)["output"], json!(["v2"]));
+    let message = c.refused("run", json!({"path": "versions"}));
+    assert!(message.contains("2 alternative programs"), "{message}");
 }
 
 #[test]

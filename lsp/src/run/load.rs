@@ -265,7 +265,17 @@ fn folder_of_tasks(path: &Path, tasks: &[Arc<Task>]) -> bool {
 /// only task, or the one that declares `entry`), for `rapid mcp`.
 pub fn one_task_in(env: &dyn Environment, path: &Path, entry: &str) -> Result<Arc<Task>, String> {
     let found = tasks_in(env, std::slice::from_ref(&path.to_path_buf()))?;
-    let mut tasks = found.tasks;
+    let task = one_of(path, found.tasks, entry)?;
+    let programs = alternatives(&task, entry);
+    if programs.is_empty() {
+        Ok(task)
+    } else {
+        Err(name_one_of(path, &programs))
+    }
+}
+
+/// The one task of `tasks`, or the one that declares `entry`.
+fn one_of(path: &Path, mut tasks: Vec<Arc<Task>>, entry: &str) -> Result<Arc<Task>, String> {
     match tasks.len() {
         0 => Err(format!("{}: no RAPID modules found", path.display())),
         1 => Ok(tasks.remove(0)),
