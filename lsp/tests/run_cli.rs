@@ -261,3 +261,24 @@ fn of_alternative_programs_the_named_one_runs_and_a_folder_asks_which() {
         "{err}"
     );
 }
+
+#[test]
+fn a_call_that_needs_an_arm_says_how_to_name_one() {
+    let dir = scratch("run-needs-arm");
+    write(
+        &dir,
+        &[(
+            "k.mod",
+            "MODULE k\n  PROC main()\n    VAR jointtarget j;\n    j := CalcJointT([[500,0,500],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]], tool0);\n    TPWrite \"axis 1 \"\\Num:=Round(j.robax.rax_1);\n  ENDPROC\nENDMODULE\n",
+        )],
+    );
+    let (code, _, err) = run(&dir, &["run", "k.mod"]);
+    assert_eq!(code, Some(1));
+    assert!(
+        err.contains("CalcJointT (the simulated robot has no kinematic model)")
+            && err.contains("= help: name a modelled robot with --robot"),
+        "{err}"
+    );
+    let (code, out, err) = run(&dir, &["run", "k.mod", "--robot", "IRB 1600-10/1.45"]);
+    assert_eq!((code, out.as_str()), (Some(0), "axis 1 0\n"), "{err}");
+}

@@ -542,6 +542,11 @@ pub fn describe(o: &Outcome) -> Vec<String> {
     for f in &o.stack {
         lines.push(format!("  in {} ({})", f.routine, f.at));
     }
+    if o.status == Status::Unsupported && o.message.contains(rapid_runtime::world::NO_KINEMATICS) {
+        lines.push(
+            "  = help: name a modelled robot with --robot (e.g. --robot \"IRB 1600-10/1.45\"), `robot` under [controller] in rapid.toml, or a backup's MOC.cfg".to_owned(),
+        );
+    }
     lines
 }
 

@@ -27,9 +27,10 @@ pub(crate) fn m_tool_tcp_calib(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
             robot
                 .calc_robtarget(&joints, &Tool::default(), &WObj::default())
                 .map_err(|e| match e {
-                    RobotError::Unsupported(_) => RobotError::Unsupported(
-                        "MToolTCPCalib (the simulated robot has no kinematic model)".to_owned(),
-                    ),
+                    RobotError::Unsupported(_) => RobotError::Unsupported(format!(
+                        "MToolTCPCalib ({})",
+                        crate::world::NO_KINEMATICS
+                    )),
                     e => e,
                 })
         })?;

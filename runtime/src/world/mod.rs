@@ -25,8 +25,8 @@ pub use files::{FileError, FileKind, FileSystem, MemoryFs, SandboxFs};
 pub use io::{Io, ScriptedIo};
 pub use pendant::{Expect, NoOperator, Pendant, Question, Reply, ScriptedOperator, parse_answer};
 pub use robot::{
-    InstantRobot, JointTarget, Known, Motion, MoveKind, MoveRequest, MoveTarget, Pose, RobTarget,
-    Robot, RobotError, Speed, Tool, WObj, Zone,
+    InstantRobot, JointTarget, Known, Motion, MoveKind, MoveRequest, MoveTarget, NO_KINEMATICS,
+    Pose, RobTarget, Robot, RobotError, Speed, Tool, WObj, Zone,
 };
 pub use sockets::{EmptyNetwork, NoSockets, SocketError, SocketState, Sockets};
 pub use system::{CfgError, CfgValue, SYS_INFO_DEFAULTS, SysInfo, System};

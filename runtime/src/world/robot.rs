@@ -15,6 +15,10 @@
 //! last `MoveAbsJ` (zero before any); `CalcJointT`/`CalcRobT` are not
 //! supported.
 
+/// Why a built-in that needs the arm's geometry stops without a robot
+/// model; front ends tell the user how to name one.
+pub const NO_KINEMATICS: &str = "the simulated robot has no kinematic model";
+
 use rapid_evaluator::geometry::{isometry, isometry_parts};
 use rapid_evaluator::nalgebra::Isometry3;
 
@@ -272,9 +276,9 @@ pub trait Robot: Send {
         wobj: &WObj,
     ) -> Result<JointTarget, RobotError> {
         let _ = (target, tool, wobj);
-        Err(RobotError::Unsupported(
-            "CalcJointT (the simulated robot has no kinematic model)".to_owned(),
-        ))
+        Err(RobotError::Unsupported(format!(
+            "CalcJointT ({NO_KINEMATICS})"
+        )))
     }
 
     /// Where the TCP of `tool` is, in `wobj`, at `joints` (`CalcRobT`).
@@ -285,9 +289,9 @@ pub trait Robot: Send {
         wobj: &WObj,
     ) -> Result<RobTarget, RobotError> {
         let _ = (joints, tool, wobj);
-        Err(RobotError::Unsupported(
-            "CalcRobT (the simulated robot has no kinematic model)".to_owned(),
-        ))
+        Err(RobotError::Unsupported(format!(
+            "CalcRobT ({NO_KINEMATICS})"
+        )))
     }
 
     /// `ConfL` (`linear`) or `ConfJ` `\On` or `\Off`: whether moves keep
