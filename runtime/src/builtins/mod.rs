@@ -136,6 +136,7 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("MoveJ", motion::move_to_point),
     ("MoveC", motion::move_to_point),
     ("MoveAbsJ", motion::move_abs_j),
+    ("MoveExtJ", motion::move_abs_j),
     ("MoveLDO", motion::move_do),
     ("MoveJDO", motion::move_do),
     ("MoveCDO", motion::move_do),

@@ -329,8 +329,10 @@ pub(crate) fn do_move_at(
     }
     let kind = kind_of(a.name);
     let to_value = cx.req(a, target_param)?;
-    let to = if kind == MoveKind::AbsoluteJoint {
+    let external_only = a.name.eq_ignore_ascii_case("MoveExtJ");
+    let to = if kind == MoveKind::AbsoluteJoint || external_only {
         match jointtarget(&to_value) {
+            Ok(j) if external_only => MoveTarget::ExternalAxes(j.extax),
             Ok(j) => MoveTarget::Joints(j),
             Err(_) => {
                 return invalid(format!("{}: {target_param} is not a jointtarget", a.name));
@@ -402,7 +404,9 @@ pub(crate) fn do_move_at(
     };
     let end = start + motion.duration.max(0.0);
     cx.sh.move_count += 1;
-    cx.m.active = [tool_value, wobj_value];
+    if !external_only {
+        cx.m.active = [tool_value, wobj_value];
+    }
     let delay = end - cx.now();
     super::zones::supervise(cx, index, &request.tool, delay, None)?;
     if let Some(slot) = cx.sh.motion_until.get_mut(index) {
@@ -450,6 +454,7 @@ fn record(
             (Some(world.trans), Some(world.rot), None)
         }
         MoveTarget::Joints(j) => (None, None, Some(j.robax.to_vec())),
+        MoveTarget::ExternalAxes(_) => (None, None, None),
     };
     let zone_name = cx.arg_name(a, "Zone").or_else(|| {
         let z = zone?;
@@ -494,7 +499,8 @@ pub(crate) fn move_do(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     Ok(done)
 }
 
-/// `MoveAbsJ ToJointPos, ...`.
+/// `MoveAbsJ ToJointPos, ...`, and `MoveExtJ ToJointPos, ...` (its
+/// external axes only).
 pub(crate) fn move_abs_j(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     do_move(cx, a, "ToJointPos")
 }

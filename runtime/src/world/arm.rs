@@ -135,6 +135,8 @@ impl Robot for ArmRobot {
         let tool = tool_of(&request.tool);
         let wobj = wobj_of(&request.wobj);
         let (joints, seconds, extax) = match (&request.to, request.kind) {
+            // External axes are not modelled: they arrive at once.
+            (MoveTarget::ExternalAxes(e), _) => (self.joints, 0.0, *e),
             (MoveTarget::Joints(j), _) => {
                 let to = j.robax;
                 if let Some((axis, bound, by)) = rapid_robot::violation(&self.robot.limits, &to) {

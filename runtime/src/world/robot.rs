@@ -181,6 +181,8 @@ pub enum MoveKind {
 pub enum MoveTarget {
     Cartesian(RobTarget),
     Joints(JointTarget),
+    /// The external axes only (`MoveExtJ`): the arm stays where it is.
+    ExternalAxes([f64; 6]),
 }
 
 /// A move, as its instruction gives it.
@@ -372,6 +374,10 @@ impl Robot for InstantRobot {
                     tcp: false,
                     joints: true,
                 };
+            }
+            MoveTarget::ExternalAxes(e) => {
+                self.extax = *e;
+                self.joints.extax = *e;
             }
         }
         Ok(Motion {
