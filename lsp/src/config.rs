@@ -81,6 +81,14 @@ pub struct ControllerConfig {
     /// The robot's working range of each axis, degrees (`[[-165, 165],
     /// ...]`, six pairs). Unset: the model's data sheet.
     pub joint_limits: Option<Vec<[f64; 2]>>,
+    /// What `GetSysInfo` answers in `rapid run` (`\SystemName`,
+    /// `\SerialNo`, `\LanIp`, `\CtrlId`, `\CtrlLang`). Unset: the
+    /// backup's `BACKINFO` and `MOC.cfg`, else a virtual controller's.
+    pub system_name: Option<String>,
+    pub serial_number: Option<String>,
+    pub lan_ip: Option<String>,
+    pub controller_id: Option<String>,
+    pub language: Option<String>,
 }
 
 impl ControllerConfig {

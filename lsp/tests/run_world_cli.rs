@@ -319,6 +319,32 @@ ENDMODULE
     assert!(moc.contains("-base_frame_pos_x 1.25"));
 }
 
+#[test]
+fn rapid_toml_names_the_controller_get_sys_info_describes() {
+    let dir = scratch("run-sys-info-toml");
+    let module = "MODULE Who
+  PROC main()
+    TPWrite GetSysInfo(\\SystemName) + \" \" + GetSysInfo(\\SerialNo) + \" \" + GetSysInfo(\\LanIp) + \" \" + GetSysInfo(\\CtrlId) + \" \" + GetSysInfo(\\CtrlLang) + \" \" + GetSysInfo(\\SWVersion);
+  ENDPROC
+ENDMODULE
+";
+    write(&dir, &[("cell/Who.mod", module)]);
+    let out = rapid(&dir, &["run", "cell/Who.mod"]);
+    assert_eq!(show(&out), "exit 0\n--- stdout\n  VC  en \n--- stderr\n");
+    write(
+        &dir,
+        &[(
+            "rapid.toml",
+            "[controller]\nrobotware = \"6.15\"\nsystem-name = \"Cell_7\"\nserial-number = \"1600-505123\"\nlan-ip = \"192.168.125.1\"\ncontroller-id = \"Line 3\"\nlanguage = \"de\"\n",
+        )],
+    );
+    let out = rapid(&dir, &["run", "cell/Who.mod"]);
+    assert_eq!(
+        show(&out),
+        "exit 0\n--- stdout\nCell_7 1600-505123 192.168.125.1 Line 3 de 6.15\n--- stderr\n"
+    );
+}
+
 const UDP_SERVER: &str = "MODULE Udp
   VAR socketdev udp;
   VAR string msg;

@@ -240,6 +240,8 @@ pub struct Around {
     /// Every module file found, named ones included (the order of
     /// `loaded.read`).
     pub files: Vec<PathBuf>,
+    /// `rapid.toml`'s `[controller]`, found from the first path.
+    pub controller: crate::config::ControllerConfig,
 }
 
 /// Loads the tasks of `paths` ([`Around`]). A path that does not exist is
@@ -310,6 +312,7 @@ pub fn load_around(
     };
     // The controller `rapid check` would take: rapid.toml's `[controller]`
     // (RobotWare, options, robot), found from the first path.
+    let mut config_controller = crate::config::ControllerConfig::default();
     let controller = match paths.first() {
         Some(first) => {
             let (config, file) = crate::config::resolve_in(env, None, first).map_err(|e| {
@@ -318,6 +321,7 @@ pub fn load_around(
                     std::io::Error::new(std::io::ErrorKind::InvalidData, e.to_string()),
                 )
             })?;
+            config_controller = config.controller.clone();
             config.controller.resolve().map_err(|(key, why)| {
                 (
                     file.unwrap_or_else(|| first.clone()),
@@ -335,5 +339,6 @@ pub fn load_around(
         loaded,
         named,
         files: found.files,
+        controller: config_controller,
     })
 }

@@ -61,7 +61,7 @@ pub fn tasks_in(env: &dyn Environment, paths: &[PathBuf]) -> Result<Found, Strin
         .collect();
     let systems = tasks
         .iter()
-        .map(|t| system_of(&workspace, &t.key))
+        .map(|t| system_of(&workspace, &t.key, &around.controller))
         .collect();
     Ok(Found {
         tasks,
@@ -75,8 +75,13 @@ pub fn tasks_in(env: &dyn Environment, paths: &[PathBuf]) -> Result<Found, Strin
 /// the configuration files that apply to it (a backup's `SYSPAR`), read by
 /// the analyzer's one reader, and what `BACKINFO` says (the system's name,
 /// the RobotWare version as written there, else the version `rapid.toml`
-/// sets).
-pub fn system_of(workspace: &rapid_analyzer::workspace::Workspace, key: &str) -> System {
+/// sets); `rapid.toml`'s `[controller]` identity keys (`system-name`,
+/// `serial-number`, `lan-ip`, `controller-id`, `language`) win.
+pub fn system_of(
+    workspace: &rapid_analyzer::workspace::Workspace,
+    key: &str,
+    config: &crate::config::ControllerConfig,
+) -> System {
     let domains = workspace
         .config_files_of_task(key)
         .into_iter()
@@ -92,7 +97,11 @@ pub fn system_of(workspace: &rapid_analyzer::workspace::Workspace, key: &str) ->
         info: SysInfo {
             sw_version_name: version.as_ref().map(|v| format!("RobotWare {v}")),
             sw_version: version,
-            system_name: info.system_name,
+            system_name: config.system_name.clone().or(info.system_name),
+            serial_no: config.serial_number.clone(),
+            lan_ip: config.lan_ip.clone(),
+            ctrl_id: config.controller_id.clone(),
+            ctrl_lang: config.language.clone(),
             ..SysInfo::default()
         },
     }
