@@ -11,7 +11,6 @@
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
-
 use std::sync::Arc;
 
 use rapid_analyzer::layout::controller_of;

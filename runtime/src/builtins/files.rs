@@ -107,11 +107,16 @@ pub(crate) fn open(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
             pos: 0,
         },
     );
-    let p = cx.place_arg(a, "IODevice")?;
+    store_handle(cx, a, "IODevice", "iodev", h)
+}
+
+/// Gives the `iodev` or `dir` argument `param` the handle `h`.
+fn store_handle(cx: &mut Cx<'_>, a: &Args, param: &str, ty: &str, h: i32) -> R<Done> {
+    let p = cx.place_arg(a, param)?;
     cx.store(
         &p,
         Value::Record {
-            ty: "iodev".to_owned(),
+            ty: ty.to_owned(),
             fields: vec![("handle".to_owned(), Value::Num(h as f32))],
         },
     )?;
@@ -388,15 +393,7 @@ pub(crate) fn open_dir(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     cx.sh.open.next += 1;
     let h = cx.sh.open.next;
     cx.sh.open.dirs.insert(h, (entries, 0));
-    let p = cx.place_arg(a, "Dev")?;
-    cx.store(
-        &p,
-        Value::Record {
-            ty: "dir".to_owned(),
-            fields: vec![("handle".to_owned(), Value::Num(h as f32))],
-        },
-    )?;
-    Ok(Done::Next)
+    store_handle(cx, a, "Dev", "dir", h)
 }
 
 /// `ReadDir(Dev, FileName)`: TRUE with the next entry's name in
