@@ -272,6 +272,7 @@ const FUNCTIONS: &[(&str, FuncFn)] = &[
     ("SocketGetStatus", sockets::socket_get_status),
     ("RawBytesLen", rawbytes::raw_bytes_len),
     ("IsMechUnitActive", units::is_mech_unit_active),
+    ("GetMecUnitName", units::get_mec_unit_name),
     ("GetMotorTorque", units::get_motor_torque),
     ("g_GetPos", gripper::g_get_pos),
     ("g_IsCalibrated", gripper::g_is_calibrated),

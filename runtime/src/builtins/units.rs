@@ -1,6 +1,6 @@
 //! Mechanical units (`mecunit` data, the units of the controller's
 //! `MOC.cfg`, which the checker holds the program's names to): `ActUnit`,
-//! `DeactUnit`, `IsMechUnitActive`, `GetMotorTorque`. Every unit is active
+//! `DeactUnit`, `IsMechUnitActive`, `GetMecUnitName`, `GetMotorTorque`. Every unit is active
 //! when the run starts (the simulation does not read `MOC.cfg`'s
 //! activation at start-up); the state is the controller's, shared by its
 //! tasks.
@@ -37,6 +37,15 @@ pub(crate) fn deact_unit(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
         cx.sh.inactive_units.push(u);
     }
     Ok(Done::Next)
+}
+
+/// `GetMecUnitName(MechUnit)`: the unit's name, as the program spells it
+/// where it names the unit (the configuration's spelling is not kept).
+pub(crate) fn get_mec_unit_name(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    match cx.req(a, "MechUnit")?.field("name") {
+        Some(Value::Str(n)) if !n.is_empty() => Ok(Value::Str(n.clone())),
+        _ => invalid(format!("{}: MechUnit names no mechanical unit", a.name)),
+    }
 }
 
 /// `IsMechUnitActive(MechUnit)`.

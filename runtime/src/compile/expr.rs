@@ -205,7 +205,12 @@ impl Compiler<'_> {
             },
             DataRef::Builtin(datum) => Data::Global(self.prog.system_global(&datum.name)?),
             DataRef::Signal { name, .. } => Data::Global(self.prog.system_global(name)?),
-            DataRef::MecUnit(n) => Data::Const(named_object("mecunit", n)),
+            // Written as the program spells it (`GetMecUnitName`); the
+            // unit instructions fold it.
+            DataRef::MecUnit(_) => Data::Const(Value::Record {
+                ty: "mecunit".to_owned(),
+                fields: vec![("name".to_owned(), Value::Str(name.to_owned()))],
+            }),
             DataRef::TaskId(n) => Data::Const(named_object("taskid", n)),
         };
         Some((data, d.ty))
