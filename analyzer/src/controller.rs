@@ -24,6 +24,9 @@ pub struct ControllerInfo {
     pub system_name: Option<String>,
     /// The RobotWare version as the backup writes it (`6.08.01.00`).
     pub robotware_text: Option<String>,
+    /// The tasks `backinfo.txt` names (`>>TASK1: (T_ROB1,,)`): each task
+    /// folder's number (`RAPID/TASKn`) and its task's name.
+    pub tasks: Vec<(usize, String)>,
 }
 
 impl ControllerInfo {
@@ -42,6 +45,9 @@ impl ControllerInfo {
             if !self.options.contains(o) {
                 self.options.push(o.clone());
             }
+        }
+        if self.tasks.is_empty() {
+            self.tasks.clone_from(&other.tasks);
         }
     }
 
@@ -96,6 +102,9 @@ pub fn parse_backinfo(text: &str, cat: &Catalogue) -> ControllerInfo {
         let line = line.trim();
         if let Some(head) = line.strip_prefix(">>") {
             section = head.trim_end_matches(':').trim().to_ascii_uppercase();
+            if let Some(task) = task_in(head) {
+                info.tasks.push(task);
+            }
             continue;
         }
         if line.is_empty() {
@@ -118,6 +127,16 @@ pub fn parse_backinfo(text: &str, cat: &Catalogue) -> ControllerInfo {
         }
     }
     info
+}
+
+/// The task a `>>TASKn: (NAME,...)` header names: `n` and `NAME`.
+fn task_in(head: &str) -> Option<(usize, String)> {
+    let (key, rest) = head.split_once(':')?;
+    let key = key.trim().to_ascii_uppercase();
+    let number = key.strip_prefix("TASK")?.parse::<usize>().ok()?;
+    let inner = rest.trim().strip_prefix('(')?;
+    let name = inner.split([',', ')']).next()?.trim();
+    (!name.is_empty() && number > 0).then(|| (number, name.to_owned()))
 }
 
 /// Reads `BACKINFO/system.xml`: every attribute value and text between tags
@@ -209,6 +228,15 @@ mod tests {
         assert_eq!(info.robotware_text.as_deref(), Some("6.08.01.00"));
         assert_eq!(info.system_name.as_deref(), Some("6700-123456"));
         assert_eq!(info.options, vec!["arc", "egm", "worldzones"]);
+        assert_eq!(info.tasks, vec![(1, "T_ROB1".to_owned())]);
+        let two = parse_backinfo(
+            ">>TASK2: (T_ROB2,Main,)\n>>task1: ( T_ROB1 ,,)\n>>TASK: (x)\n",
+            crate::catalogue::base(),
+        );
+        assert_eq!(
+            two.tasks,
+            vec![(2, "T_ROB2".to_owned()), (1, "T_ROB1".to_owned())]
+        );
         let none = parse_backinfo(">>SYSTEM_ID:\nArc cell 7\n", crate::catalogue::base());
         assert_eq!(
             none,

@@ -93,6 +93,30 @@ fn a_backup_runs_every_task_together() {
 }
 
 #[test]
+fn a_backup_without_its_syspar_takes_the_task_names_backinfo_gives() {
+    let dir = scratch("run-tasks-backinfo");
+    write(
+        &dir,
+        &[
+            (
+                "cell/BACKINFO/backinfo.txt",
+                ">>SYSTEM_ID:\nCell\n\n>>TASK1: (T_ROB1,,)\n\n>>TASK2: (T_ROB2,,)\n",
+            ),
+            ("cell/RAPID/TASK1/PROGMOD/Main1.mod", ROB1),
+            ("cell/RAPID/TASK2/PROGMOD/Main2.mod", ROB2),
+        ],
+    );
+    let (code, out, err) = run(&dir, &["run", "cell"]);
+    assert_eq!(code, Some(0), "{err}");
+    assert_eq!(
+        out,
+        "[T_ROB1] ready\n[T_ROB1] T_ROB1 done\n[T_ROB2] done 2\n"
+    );
+    let (code, out, _) = run(&dir, &["check", "cell"]);
+    assert_eq!(code, Some(0), "{out}");
+}
+
+#[test]
 fn one_task_runs_alone_with_task() {
     let dir = backup("run-one-task");
     let (code, out, err) = run(

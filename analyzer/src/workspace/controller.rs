@@ -27,7 +27,38 @@ impl Workspace {
             robotware_text: info
                 .robotware_text
                 .filter(|_| self.controller.robotware.is_none()),
+            tasks: info.tasks,
         }
+    }
+
+    /// The task names of backup `root` by task number (`RAPID/TASKn` is
+    /// the *n*-th): its `SYS.cfg`'s `CAB_TASKS`, else what `BACKINFO`
+    /// names (a backup kept without its `SYSPAR`).
+    pub(super) fn task_list(&self, root: &str) -> Vec<Option<String>> {
+        let configured: Vec<Option<String>> = self
+            .configs
+            .iter()
+            .filter(|(p, _)| home::syspar_root(p) == Some(root))
+            .flat_map(|(_, c)| c.tasks.iter().cloned().map(Some))
+            .collect();
+        if !configured.is_empty() {
+            return configured;
+        }
+        let mut out: Vec<Option<String>> = Vec::new();
+        for (path, system) in &self.systems {
+            if home::backinfo_root(path) != Some(root) {
+                continue;
+            }
+            for (n, name) in &system.tasks {
+                if out.len() < *n {
+                    out.resize(*n, None);
+                }
+                if let Some(slot) = out.get_mut(n - 1) {
+                    slot.get_or_insert_with(|| name.clone());
+                }
+            }
+        }
+        out
     }
 
     /// What the tasks of `controller` (a backup's `RAPID/` folder) share:
@@ -88,10 +119,30 @@ impl Workspace {
         let Some(root) = crate::layout::backup_root(key) else {
             return Vec::new();
         };
-        self.configs
+        let configured: Vec<crate::task::TaskSettings> = self
+            .configs
             .iter()
             .filter(|(p, _)| home::syspar_root(p) == Some(root))
             .flat_map(|(_, c)| c.task_settings.iter().cloned())
+            .collect();
+        if !configured.is_empty() {
+            return configured;
+        }
+        // Named by BACKINFO only: how each task runs is not known (a
+        // NORMAL motion task, as without any configuration).
+        let named = self.task_list(root);
+        if named.iter().all(Option::is_none) {
+            return Vec::new();
+        }
+        named
+            .into_iter()
+            .enumerate()
+            .map(|(i, name)| crate::task::TaskSettings {
+                name: name.unwrap_or_else(|| format!("TASK{}", i + 1)),
+                kind: crate::task::TaskKind::Normal,
+                entry: None,
+                motion: true,
+            })
             .collect()
     }
 
@@ -107,12 +158,7 @@ impl Workspace {
         let Some(root) = crate::layout::backup_root(key) else {
             return ids;
         };
-        let mut names: Vec<String> = self
-            .configs
-            .iter()
-            .filter(|(p, _)| home::syspar_root(p) == Some(root))
-            .flat_map(|(_, c)| c.tasks.iter().cloned())
-            .collect();
+        let mut names: Vec<String> = self.task_list(root).into_iter().flatten().collect();
         names.extend(self.backup_task_keys(root).iter().filter_map(|k| {
             let last = k.rsplit('/').next()?;
             let numbered = last.len() > 4

@@ -220,9 +220,9 @@ impl Workspace {
     }
 
     /// The tasks of backup `root` by their folded names: each task folder
-    /// by its name (`T_ROB1`, `TASK1`), and each task `SYS.cfg` names by
-    /// its name (the *n*-th task is `RAPID/TASKn` when the folder has no
-    /// name of its own).
+    /// by its name (`T_ROB1`, `TASK1`), and each task `SYS.cfg` (else
+    /// `BACKINFO`) names by its name (the *n*-th task is `RAPID/TASKn` when
+    /// the folder has no name of its own).
     fn task_names<'k>(
         &self,
         root: &str,
@@ -232,17 +232,16 @@ impl Workspace {
         let last = |k: &str| fold(k.rsplit(['/', '\\']).next().unwrap_or_default());
         let mut names: HashMap<String, String> =
             keys.iter().map(|k| (last(k), (*k).clone())).collect();
-        for config in self.syspar(root) {
-            for (i, task) in config.tasks.iter().enumerate() {
-                let folder = format!("task{}", i + 1);
-                let by_number = keys.iter().find(|k| last(k) == folder);
-                if let Some(key) = names
-                    .get(&fold(task))
-                    .cloned()
-                    .or(by_number.map(|k| (*k).clone()))
-                {
-                    names.entry(fold(task)).or_insert(key);
-                }
+        for (i, task) in self.task_list(root).iter().enumerate() {
+            let Some(task) = task else { continue };
+            let folder = format!("task{}", i + 1);
+            let by_number = keys.iter().find(|k| last(k) == folder);
+            if let Some(key) = names
+                .get(&fold(task))
+                .cloned()
+                .or(by_number.map(|k| (*k).clone()))
+            {
+                names.entry(fold(task)).or_insert(key);
             }
         }
         names

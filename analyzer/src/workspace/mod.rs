@@ -322,6 +322,7 @@ impl Workspace {
     pub fn remove_config(&mut self, path: &str) {
         if self.systems.remove(path).is_some() {
             self.forget_all_tasks();
+            self.mark_backup(path);
         }
         self.cfg_files.remove(path);
         if self.configs.remove(path).is_some() {
