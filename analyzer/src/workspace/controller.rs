@@ -32,14 +32,15 @@ impl Workspace {
     }
 
     /// The task names of backup `root` by task number (`RAPID/TASKn` is
-    /// the *n*-th): its `SYS.cfg`'s `CAB_TASKS`, else what `BACKINFO`
-    /// names (a backup kept without its `SYSPAR`).
-    pub(super) fn task_list(&self, root: &str) -> Vec<Option<String>> {
-        let configured: Vec<Option<String>> = self
+    /// the *n*-th), one list per file that names them: each `SYS.cfg`'s
+    /// `CAB_TASKS`, else what `BACKINFO` names (a backup kept without its
+    /// `SYSPAR`).
+    pub(super) fn task_lists(&self, root: &str) -> Vec<Vec<Option<String>>> {
+        let configured: Vec<Vec<Option<String>>> = self
             .configs
             .iter()
-            .filter(|(p, _)| home::syspar_root(p) == Some(root))
-            .flat_map(|(_, c)| c.tasks.iter().cloned().map(Some))
+            .filter(|(p, c)| home::syspar_root(p) == Some(root) && !c.tasks.is_empty())
+            .map(|(_, c)| c.tasks.iter().cloned().map(Some).collect())
             .collect();
         if !configured.is_empty() {
             return configured;
@@ -58,7 +59,16 @@ impl Workspace {
                 }
             }
         }
-        out
+        if out.is_empty() {
+            Vec::new()
+        } else {
+            vec![out]
+        }
+    }
+
+    /// [`Workspace::task_lists`] one after the other.
+    pub(super) fn task_list(&self, root: &str) -> Vec<Option<String>> {
+        self.task_lists(root).concat()
     }
 
     /// What the tasks of `controller` (a backup's `RAPID/` folder) share:

@@ -232,16 +232,18 @@ impl Workspace {
         let last = |k: &str| fold(k.rsplit(['/', '\\']).next().unwrap_or_default());
         let mut names: HashMap<String, String> =
             keys.iter().map(|k| (last(k), (*k).clone())).collect();
-        for (i, task) in self.task_list(root).iter().enumerate() {
-            let Some(task) = task else { continue };
-            let folder = format!("task{}", i + 1);
-            let by_number = keys.iter().find(|k| last(k) == folder);
-            if let Some(key) = names
-                .get(&fold(task))
-                .cloned()
-                .or(by_number.map(|k| (*k).clone()))
-            {
-                names.entry(fold(task)).or_insert(key);
+        for list in self.task_lists(root) {
+            for (i, task) in list.iter().enumerate() {
+                let Some(task) = task else { continue };
+                let folder = format!("task{}", i + 1);
+                let by_number = keys.iter().find(|k| last(k) == folder);
+                if let Some(key) = names
+                    .get(&fold(task))
+                    .cloned()
+                    .or(by_number.map(|k| (*k).clone()))
+                {
+                    names.entry(fold(task)).or_insert(key);
+                }
             }
         }
         names

@@ -470,3 +470,43 @@ fn a_workspace_read_between_requests_equals_one_read_at_once() {
         }
     }
 }
+
+#[test]
+fn task_folders_are_named_by_each_sys_cfg_else_by_backinfo() {
+    let mut ws = Workspace::new();
+    ws.set_file(
+        "b/RAPID/TASK1/PROGMOD/A.mod",
+        "MODULE A\nENDMODULE\n".into(),
+    );
+    ws.set_file(
+        "b/RAPID/TASK2/PROGMOD/B.mod",
+        "MODULE B\nENDMODULE\n".into(),
+    );
+    ws.set_config(
+        "b/BACKINFO/backinfo.txt",
+        ">>TASK1: (T_LEFT,,)\n>>TASK2: (T_RIGHT,,)\n",
+    );
+    let names = ws.task_names_of("b");
+    assert_eq!(
+        names.get("t_left").map(String::as_str),
+        Some("b/RAPID/TASK1")
+    );
+    assert_eq!(
+        names.get("t_right").map(String::as_str),
+        Some("b/RAPID/TASK2")
+    );
+    // SYS.cfg wins; each file names TASK1 first.
+    let sys = |name: &str| format!("SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n  -Name \"{name}\"\n");
+    ws.set_config("b/SYSPAR/SYS.cfg", &sys("T_ROB1"));
+    ws.set_config("b/SYSPAR/SYS_old.cfg", &sys("T_OLD"));
+    let names = ws.task_names_of("b");
+    assert_eq!(
+        names.get("t_rob1").map(String::as_str),
+        Some("b/RAPID/TASK1")
+    );
+    assert_eq!(
+        names.get("t_old").map(String::as_str),
+        Some("b/RAPID/TASK1")
+    );
+    assert!(!names.contains_key("t_left"));
+}
