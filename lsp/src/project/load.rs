@@ -312,8 +312,7 @@ pub fn load_around(
     };
     // The controller `rapid check` would take: rapid.toml's `[controller]`
     // (RobotWare, options, robot), found from the first path.
-    let mut config_controller = crate::config::ControllerConfig::default();
-    let controller = match paths.first() {
+    let (controller, config_controller) = match paths.first() {
         Some(first) => {
             let (config, file) = crate::config::resolve_in(env, None, first).map_err(|e| {
                 (
@@ -321,8 +320,7 @@ pub fn load_around(
                     std::io::Error::new(std::io::ErrorKind::InvalidData, e.to_string()),
                 )
             })?;
-            config_controller = config.controller.clone();
-            config.controller.resolve().map_err(|(key, why)| {
+            let resolved = config.controller.resolve().map_err(|(key, why)| {
                 (
                     file.unwrap_or_else(|| first.clone()),
                     std::io::Error::new(
@@ -330,9 +328,10 @@ pub fn load_around(
                         format!("[controller] {key}: {why}"),
                     ),
                 )
-            })?
+            })?;
+            (resolved, config.controller)
         }
-        None => ControllerOverride::default(),
+        None => Default::default(),
     };
     let loaded = load(env, &sources, &controller);
     Ok(Around {
