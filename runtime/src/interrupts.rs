@@ -64,9 +64,64 @@ struct Watch {
     id: i32,
     /// The signal, folded.
     signal: String,
-    /// The value that triggers it; `None`: any change.
-    value: Option<f64>,
+    trigger: Trigger,
     single: bool,
+}
+
+/// What a signal watch waits for.
+enum Trigger {
+    /// `ISignalDI`/`ISignalDO`: a change to the value; `ISignalGI`/`GO`
+    /// (`None`): any change.
+    Digital(Option<f64>),
+    /// `ISignalAI`/`ISignalAO`.
+    Analog(AnalogTrigger),
+}
+
+/// `ISignalAI [\Single] Signal, Condition, HighValue, LowValue, DeltaValue
+/// [\DPos] | [\DNeg], Interrupt`. The reference is the signal's value when
+/// the interrupt is ordered. At each new value that meets the condition and
+/// differs from the reference by more than `delta`, the value becomes the
+/// reference, and an interrupt occurs if the change is in the direction
+/// asked (`\DPos` up, `\DNeg` down, else either).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct AnalogTrigger {
+    /// `aiotrigg`: 1 above high, 2 below high, 3 above low, 4 below low,
+    /// 5 between, 6 outside, 7 always.
+    pub condition: i32,
+    pub high: f64,
+    pub low: f64,
+    pub delta: f64,
+    /// 1: `\DPos`, -1: `\DNeg`, 0: either way.
+    pub direction: i8,
+    pub reference: f64,
+}
+
+impl AnalogTrigger {
+    fn meets(&self, v: f64) -> bool {
+        match self.condition {
+            1 => v > self.high,
+            2 => v < self.high,
+            3 => v > self.low,
+            4 => v < self.low,
+            5 => self.low <= v && v <= self.high,
+            6 => v < self.low || v > self.high,
+            _ => true,
+        }
+    }
+
+    /// A new sample: does it raise the interrupt (and move the reference)?
+    fn sample(&mut self, v: f64) -> bool {
+        let change = v - self.reference;
+        if !self.meets(v) || change.abs() <= self.delta {
+            return false;
+        }
+        self.reference = v;
+        match self.direction {
+            1 => change > 0.0,
+            -1 => change < 0.0,
+            _ => true,
+        }
+    }
 }
 
 impl Interrupts {
@@ -92,11 +147,25 @@ impl Interrupts {
     }
 
     pub(crate) fn add_watch(&mut self, id: i32, signal: &str, value: Option<f64>, single: bool) {
+        self.push_watch(id, signal, Trigger::Digital(value), single);
+    }
+
+    pub(crate) fn add_analog_watch(
+        &mut self,
+        id: i32,
+        signal: &str,
+        trigger: AnalogTrigger,
+        single: bool,
+    ) {
+        self.push_watch(id, signal, Trigger::Analog(trigger), single);
+    }
+
+    fn push_watch(&mut self, id: i32, signal: &str, trigger: Trigger, single: bool) {
         self.watches.retain(|w| w.id != id);
         self.watches.push(Watch {
             id,
             signal: fold(signal),
-            value,
+            trigger,
             single,
         });
     }
@@ -200,8 +269,15 @@ impl Interrupts {
     pub(crate) fn signal_changed(&mut self, name: &str, value: f64) {
         let key = fold(name);
         let mut fired = Vec::new();
-        for w in &self.watches {
-            if w.signal == key && w.value.is_none_or(|v| v == value) {
+        for w in &mut self.watches {
+            if w.signal != key {
+                continue;
+            }
+            let fires = match &mut w.trigger {
+                Trigger::Digital(wanted) => wanted.is_none_or(|v| v == value),
+                Trigger::Analog(t) => t.sample(value),
+            };
+            if fires {
                 fired.push((w.id, w.single));
             }
         }

@@ -304,6 +304,36 @@ pub(crate) fn i_signal_any(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     Ok(Done::Next)
 }
 
+/// `ISignalAI` and `ISignalAO`: an interrupt at the values that meet the
+/// condition and move the signal far enough from the last reference
+/// ([`crate::interrupts::AnalogTrigger`]).
+pub(crate) fn i_signal_analog(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let (name, _) = signal(cx, a, "Signal")?;
+    let condition = cx.num(a, "Condition")? as i32;
+    let high = cx.num(a, "HighValue")?;
+    let low = cx.num(a, "LowValue")?;
+    let delta = cx.num(a, "DeltaValue")?;
+    let direction = if a.given("DPos") {
+        1
+    } else if a.given("DNeg") {
+        -1
+    } else {
+        0
+    };
+    let id = interrupt_number(cx, a)?;
+    let single = a.given("Single") || a.given("SingleSafe");
+    let trigger = crate::interrupts::AnalogTrigger {
+        condition,
+        high,
+        low,
+        delta: delta.max(0.0),
+        direction,
+        reference: cx.sh.io.read(&name).unwrap_or(0.0),
+    };
+    cx.m.interrupts.add_analog_watch(id, &name, trigger, single);
+    Ok(Done::Next)
+}
+
 /// `IPers [\Single] | [\SingleSafe] Name, Interrupt`: an interrupt each
 /// time the persistent `Name` changes value (any task's write, as the
 /// tasks share it), seen between statements.

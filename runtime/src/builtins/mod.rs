@@ -122,6 +122,8 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("ISignalDO", io::i_signal),
     ("ISignalGI", io::i_signal_any),
     ("ISignalGO", io::i_signal_any),
+    ("ISignalAI", io::i_signal_analog),
+    ("ISignalAO", io::i_signal_analog),
     ("ITimer", io::i_timer),
     ("IPers", io::i_pers),
     ("IError", io::i_error),
