@@ -1,5 +1,6 @@
-//! The checks that look at the whole file's text: unfilled placeholders
-//! and strings over the length limit, wherever they are.
+//! The checks that look at the whole file's text: unfilled placeholders,
+//! strings over the length limit and backslashes that start no escape,
+//! wherever they are.
 
 use std::ops::Range;
 
@@ -11,11 +12,11 @@ use crate::rules;
 /// The longest string RAPID holds (the evaluator's limit too).
 use rules::string_too_long::MAX_STRING;
 
-/// Placeholders and string lengths, anywhere in the file.
+/// Placeholders, string lengths and escapes, anywhere in the file.
 pub(super) fn check_file_wide(cx: &mut Cx<'_>) {
     // The walk only enters nodes that overlap a region of the text that may
     // hold a finding, and nodes with syntax errors.
-    let regions = placeholder_or_long_string_regions(cx.text);
+    let regions = file_wide_regions(cx.text);
     if regions.is_empty() {
         return;
     }
@@ -48,6 +49,7 @@ fn check_file_wide_in(cx: &mut Cx<'_>, root: Node<'_>, regions: &[Range<usize>])
             }
             k if k == string && overlaps(node) => {
                 rules::string_too_long::check(cx, node);
+                rules::invalid_escape::check(cx, node);
             }
             _ => {}
         }
@@ -56,12 +58,12 @@ fn check_file_wide_in(cx: &mut Cx<'_>, root: Node<'_>, regions: &[Range<usize>])
 }
 
 /// The regions of the text (sorted, disjoint byte ranges) where a
-/// placeholder or a string longer than the limit may be: the placeholder
-/// token's pattern, `<[A-Z]{2,4}>` (comparisons such as `a<b` do not match),
-/// and the lines with more than the limit between their first and last
-/// quote (a string does not span lines).
-fn placeholder_or_long_string_regions(text: &str) -> Vec<Range<usize>> {
-    // Both need a quote or a `<`: most generated modules have neither, and
+/// placeholder, a string longer than the limit or a bad escape may be: the
+/// placeholder token's pattern, `<[A-Z]{2,4}>` (comparisons such as `a<b`
+/// do not match), and the lines with more than the limit, or a backslash,
+/// between their first and last quote (a string does not span lines).
+fn file_wide_regions(text: &str) -> Vec<Range<usize>> {
+    // All need a quote or a `<`: most generated modules have neither, and
     // two searches of the whole text cost less than a look at every line.
     if !text.contains('"') && !text.contains('<') {
         return Vec::new();
@@ -76,9 +78,8 @@ fn placeholder_or_long_string_regions(text: &str) -> Vec<Range<usize>> {
     for line in text.split_inclusive('\n') {
         let start = line_start;
         line_start += line.len();
-        if line.len() > MAX_STRING
-            && let (Some(a), Some(b)) = (line.find('"'), line.rfind('"'))
-            && b - a > MAX_STRING
+        if let (Some(a), Some(b)) = (line.find('"'), line.rfind('"'))
+            && (b - a > MAX_STRING || line.get(a..b).is_some_and(|s| s.contains('\\')))
         {
             add(start..start + line.len());
             continue;

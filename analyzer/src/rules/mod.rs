@@ -30,6 +30,7 @@ pub mod goto_into_block;
 pub mod handler_only_statement;
 pub mod incomplete_code;
 pub mod index_count;
+pub mod invalid_escape;
 pub mod invalid_operands;
 pub mod joint_out_of_range;
 pub mod label_names_routine;
@@ -110,6 +111,7 @@ pub static RULES: &[&Rule] = &[
     &incomplete_code::RULE,
     &constant_error::RULE,
     &persistent_in_routine::RULE,
+    &invalid_escape::RULE,
     &missing_sync_id::RULE,
     &target_out_of_reach::RULE,
     &joint_out_of_range::RULE,
