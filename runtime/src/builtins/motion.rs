@@ -375,8 +375,18 @@ pub(crate) fn do_move_at(
         None => Tool::default(),
     };
     let wobj = cx.displaced(wobj_value.as_ref())?;
-    let time = cx.opt_num(a, "T")?;
-    let velocity = cx.opt_num(a, "V")?;
+    let settings = cx.m.speed;
+    if settings.halts() {
+        // The robot would stand until another task refreshes the override;
+        // the simulation plans each move when it is asked for.
+        return fault(FaultKind::Unsupported(format!(
+            "{} while the speed override (VelSet, SpeedRefresh) holds the robot at 0",
+            a.name
+        )));
+    }
+    let speed = settings.apply(speed);
+    let time = cx.opt_num(a, "T")?.map(|t| settings.stretch(t));
+    let velocity = cx.opt_num(a, "V")?.map(|v| settings.tcp(v));
     let conc = a.given("Conc");
     let index = cx.robot_index(a)?;
     let start = cx.now().max(motion_end(cx));
@@ -538,6 +548,86 @@ pub(crate) fn wait_rob(cx: &mut Cx<'_>, _: &mut Args) -> R<Done> {
 }
 
 /// Motion settings that do not change where the robot goes.
+/// A task's speed settings, from the program's start at their defaults.
+/// `VelSet Override, Max` scales every programmed speed (the speeddata's,
+/// `\V`, and `\T` by stretching the time) and caps the TCP speed at
+/// `Max` mm/s; `SpeedRefresh Override` scales again, as the program's own
+/// speed override, from the next move on (a move under way keeps its
+/// time: the simulation plans each move when it is asked for).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct SpeedSettings {
+    /// `VelSet`'s Override, percent.
+    pub vel_override: f64,
+    /// `VelSet`'s Max, mm/s (`None`: no cap).
+    pub max_tcp: Option<f64>,
+    /// `SpeedRefresh`'s Override, percent.
+    pub refresh: f64,
+}
+
+impl Default for SpeedSettings {
+    fn default() -> Self {
+        SpeedSettings {
+            vel_override: 100.0,
+            max_tcp: None,
+            refresh: 100.0,
+        }
+    }
+}
+
+impl SpeedSettings {
+    fn factor(&self) -> f64 {
+        self.vel_override / 100.0 * self.refresh / 100.0
+    }
+
+    /// No move can go: an override or the TCP cap is 0.
+    fn halts(&self) -> bool {
+        self.factor() <= 0.0 || self.max_tcp.is_some_and(|m| m <= 0.0)
+    }
+
+    /// A TCP speed (mm/s) as the settings make it.
+    fn tcp(&self, v: f64) -> f64 {
+        let v = v * self.factor();
+        self.max_tcp.map_or(v, |max| v.min(max))
+    }
+
+    fn apply(&self, s: Speed) -> Speed {
+        let k = self.factor();
+        Speed {
+            v_tcp: self.tcp(s.v_tcp),
+            v_ori: s.v_ori * k,
+            v_leax: s.v_leax * k,
+            v_reax: s.v_reax * k,
+        }
+    }
+
+    /// A move's programmed time (`\T`) as the settings stretch it.
+    fn stretch(&self, t: f64) -> f64 {
+        t / self.factor()
+    }
+}
+
+/// `VelSet Override, Max`.
+pub(crate) fn vel_set(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    cx.m.speed.vel_override = cx.num(a, "Override")?.max(0.0);
+    cx.m.speed.max_tcp = Some(cx.num(a, "Max")?.max(0.0));
+    Ok(Done::Next)
+}
+
+/// `SpeedRefresh Override`: 0 to 100 percent, else
+/// `ERR_SPEED_REFRESH_LIM`.
+pub(crate) fn speed_refresh(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let over = cx.num(a, "Override")?;
+    if !(0.0..=100.0).contains(&over) {
+        return fault(named_error(
+            &cx.m.prog,
+            "ERR_SPEED_REFRESH_LIM",
+            format!("SpeedRefresh: the override {over} is outside 0 to 100 percent"),
+        ));
+    }
+    cx.m.speed.refresh = over;
+    Ok(Done::Next)
+}
+
 pub(crate) fn setting(_: &mut Cx<'_>, _: &mut Args) -> R<Done> {
     Ok(Done::Next)
 }

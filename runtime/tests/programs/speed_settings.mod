@@ -1,0 +1,51 @@
+MODULE speed_settings
+  ! VelSet scales every programmed speed and caps the TCP's; SpeedRefresh
+  ! scales again from the next move. 300 mm at 100 mm/s take 3 s and a
+  ! little to speed up and slow down (the IRB 1600's path acceleration).
+  !robot IRB1600-6/1.2
+  CONST robtarget p1 := [[600,0,600],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+  CONST robtarget p2 := [[600,300,600],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+  VAR clock c;
+
+  PROC main()
+    MoveJ p1, v1000, fine, tool0;
+    ClkStart c;
+    MoveL p2, v100, fine, tool0;
+    TPWrite "programmed " \Num:=ClkRead(c);
+    VelSet 50, 5000;
+    timed p1;
+    TPWrite "half " \Num:=ClkRead(c);
+    VelSet 100, 30;
+    timed p2;
+    TPWrite "capped at 30 mm/s " \Num:=ClkRead(c);
+    VelSet 100, 5000;
+    SpeedRefresh 50;
+    timed p1;
+    TPWrite "refreshed to half " \Num:=ClkRead(c);
+    ClkReset c;
+    ClkStart c;
+    MoveL p2, v100 \T:=2, fine, tool0;
+    TPWrite "\\T:=2 at half " \Num:=ClkRead(c);
+    SpeedRefresh 120;
+    TPWrite "not reached";
+  ERROR
+    IF ERRNO = ERR_SPEED_REFRESH_LIM THEN
+      TPWrite "120 percent is refused";
+      SpeedRefresh 0;
+      MoveL p1, v100, fine, tool0;
+    ENDIF
+  ENDPROC
+
+  PROC timed(robtarget target)
+    ClkReset c;
+    ClkStart c;
+    MoveL target, v100, fine, tool0;
+  ENDPROC
+ENDMODULE
+!> programmed 3.01
+!> half 6
+!> capped at 30 mm/s 10
+!> refreshed to half 6
+!> \T:=2 at half 4
+!> 120 percent is refused
+!! unsupported: MoveL while the speed override (VelSet, SpeedRefresh) holds the robot at 0 at 35
