@@ -148,7 +148,7 @@ fn write_bytes(cx: &mut Cx<'_>, a: &Args, bytes: &[u8]) -> R<Done> {
 }
 
 /// Latin-1 bytes of a RAPID string.
-fn latin1(s: &str) -> Vec<u8> {
+pub(super) fn latin1(s: &str) -> Vec<u8> {
     s.chars().map(|c| u32::from(c).min(255) as u8).collect()
 }
 

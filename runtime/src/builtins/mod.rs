@@ -19,6 +19,7 @@ pub(crate) mod motion;
 pub(crate) mod output;
 pub(crate) mod pendant;
 pub(crate) mod rawbytes;
+pub(crate) mod save;
 pub(crate) mod sockets;
 pub(crate) mod tasks;
 pub(crate) mod triggs;
@@ -192,6 +193,7 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("MakeDir", files::make_dir),
     ("RenameFile", files::rename_file),
     ("CopyFile", files::copy_file),
+    ("Save", save::save),
     ("RemoveDir", files::remove_dir),
     ("OpenDir", files::open_dir),
     ("CloseDir", files::close_dir),

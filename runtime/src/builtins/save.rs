@@ -1,0 +1,135 @@
+//! `Save`: a program module written to a file, as the controller writes
+//! it: the module's text with each persistent's value as it is now.
+
+use rapid_analyzer::items::Storage;
+use rapid_analyzer::task::{Item, ItemRef};
+use rapid_evaluator::Value;
+
+use super::{Args, Cx, Done};
+use crate::machine::{FaultKind, R, fault, named_error};
+use crate::program::Home;
+use crate::world::FileError;
+
+/// `Save [\TaskRef] | [\TaskName] ModuleName [\FilePath] [\File]`: the
+/// module of this task named `ModuleName` (`ERR_MODULE` when there is
+/// none) to `FilePath` (a folder when `\File` names the file), persistents
+/// at their current values; a file that cannot be written raises
+/// `ERR_FILEOPEN`. The simulation saves the task's own modules, and only
+/// to a path the program gives (the controller's default is the file a
+/// `Load` read the module from).
+pub(crate) fn save(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let other = match cx.opt(a, "TaskName")? {
+        Some(Value::Str(n)) => Some(n),
+        _ => match cx.opt(a, "TaskRef")? {
+            Some(v) => match v.field("name") {
+                Some(Value::Str(n)) => n.strip_suffix("id").map(str::to_owned),
+                _ => None,
+            },
+            None => None,
+        },
+    };
+    if let Some(task) = other.filter(|t| !t.eq_ignore_ascii_case(&cx.m.name)) {
+        if cx.sh.task_named(&task).is_none() {
+            return fault(named_error(
+                &cx.m.prog,
+                "ERR_TASKNAME",
+                format!("Save: there is no task {task}"),
+            ));
+        }
+        return fault(FaultKind::Unsupported(format!(
+            "Save of a module of another task ({task})"
+        )));
+    }
+    let name = cx.string(a, "ModuleName")?;
+    let Some(path) = cx.opt(a, "FilePath")? else {
+        return fault(FaultKind::Unsupported(
+            "Save without \\FilePath (the file a Load read the module from)".to_owned(),
+        ));
+    };
+    let mut path = path.as_str().unwrap_or_default().to_owned();
+    if let Some(file) = cx.opt(a, "File")? {
+        if !path.ends_with('/') && !path.ends_with(':') {
+            path.push('/');
+        }
+        path.push_str(file.as_str().unwrap_or_default());
+    }
+    let Some(text) = module_text(cx, &name) else {
+        return fault(named_error(
+            &cx.m.prog,
+            "ERR_MODULE",
+            format!("Save: the task has no module {name}"),
+        ));
+    };
+    match cx
+        .sh
+        .files
+        .write(&path, &super::files::latin1(&text), false)
+    {
+        Ok(()) => Ok(Done::Next),
+        Err(FileError::Unsupported(why)) => fault(FaultKind::Unsupported(format!("Save ({why})"))),
+        Err(FileError::Denied(m) | FileError::NotFound(m) | FileError::Other(m)) => fault(
+            named_error(&cx.m.prog, "ERR_FILEOPEN", format!("Save: {m}")),
+        ),
+    }
+}
+
+/// The text of the task's module `name`, its persistents' initial values
+/// replaced by their current values.
+fn module_text(cx: &Cx<'_>, name: &str) -> Option<String> {
+    let prog = cx.m.prog.clone();
+    let module = prog
+        .modules
+        .iter()
+        .find(|m| m.name.eq_ignore_ascii_case(name))?;
+    let unit = prog.task.unit(module.unit)?;
+    let decl = unit.items.modules.get(module.index)?;
+    let text = unit.text.get(decl.range.clone())?;
+    // Edits (range in the unit's text, new text), made from the last.
+    let mut edits: Vec<(std::ops::Range<usize>, String)> = Vec::new();
+    for (i, d) in decl.data.iter().enumerate() {
+        if d.storage != Storage::Pers {
+            continue;
+        }
+        let item = ItemRef {
+            unit: module.unit,
+            module: module.index,
+            item: Item::Data(i),
+        };
+        let value = match prog.items.get(&item) {
+            Some(Home::Pers(k)) => {
+                cx.m.pers_map
+                    .get(*k as usize)
+                    .and_then(|&i| cx.sh.pers.get(i as usize))
+            }
+            Some(Home::Global(g)) => cx.m.globals.get(*g as usize),
+            None => None,
+        };
+        let Some(value) = value else { continue };
+        match &d.init {
+            Some(init) => edits.push((init.clone(), value.to_string())),
+            None => {
+                // `PERS num n;`: the value goes before the `;`.
+                let body = unit.text.get(d.range.clone()).unwrap_or_default();
+                let at = d.range.start + body.trim_end().trim_end_matches(';').len();
+                edits.push((at..at, format!(":={value}")));
+            }
+        }
+    }
+    let mut out = text.to_owned();
+    edits.sort_by_key(|(r, _)| std::cmp::Reverse(r.start));
+    for (range, new) in edits {
+        let (Some(start), Some(end)) = (
+            range.start.checked_sub(decl.range.start),
+            range.end.checked_sub(decl.range.start),
+        ) else {
+            continue;
+        };
+        if end <= out.len() && out.is_char_boundary(start) && out.is_char_boundary(end) {
+            out.replace_range(start..end, &new);
+        }
+    }
+    if !out.ends_with('\n') {
+        out.push('\n');
+    }
+    Some(out)
+}
