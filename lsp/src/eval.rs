@@ -483,12 +483,8 @@ pub fn place(
         None if tasks.len() == 1 => tasks[0].clone(),
         None if tasks.is_empty() => return Err("no RAPID modules found".to_owned()),
         None => {
-            let keys: Vec<&str> = tasks.iter().map(|t| t.key.as_str()).take(5).collect();
-            return Err(format!(
-                "the folder holds {} tasks; give one of them (e.g. {})",
-                tasks.len(),
-                keys.join(", ")
-            ));
+            let keys: Vec<&str> = tasks.iter().map(|t| t.key.as_str()).collect();
+            return Err(crate::run::load::several_tasks(&keys));
         }
     };
     Ok((task, None))

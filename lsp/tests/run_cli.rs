@@ -263,6 +263,26 @@ fn of_alternative_programs_the_named_one_runs_and_a_folder_asks_which() {
 }
 
 #[test]
+fn a_folder_of_several_tasks_names_them_as_paths_to_give() {
+    let dir = scratch("run-several-tasks");
+    let module = |m: &str| {
+        format!("MODULE {m}\n  PROC main()\n    TPWrite \"{m}\";\n  ENDPROC\nENDMODULE\n")
+    };
+    write(
+        &dir,
+        &[("A.mod", &module("A")), ("sub/B.mod", &module("B"))],
+    );
+    let (code, _, err) = run(&dir, &["run", "."]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("the folder holds 2 tasks; name one of them (e.g. ., sub)"),
+        "{err}"
+    );
+    let (code, out, _) = run(&dir, &["run", "sub"]);
+    assert_eq!((code, out.as_str()), (Some(0), "B\n"));
+}
+
+#[test]
 fn a_call_that_needs_an_arm_says_how_to_name_one() {
     let dir = scratch("run-needs-arm");
     write(

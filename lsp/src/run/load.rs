@@ -213,13 +213,8 @@ pub fn controller(path: &Path, only: Option<&str>, entry: Option<&str>) -> Resul
             })
         }
         _ => {
-            let keys: Vec<&str> = out.iter().map(|t| t.task.key.as_str()).take(5).collect();
-            Err(format!(
-                "{}: the folder holds {} tasks; name one of them (e.g. {})",
-                path.display(),
-                out.len(),
-                keys.join(", ")
-            ))
+            let keys: Vec<&str> = out.iter().map(|t| t.task.key.as_str()).collect();
+            Err(format!("{}: {}", path.display(), several_tasks(&keys)))
         }
     }
 }
@@ -288,7 +283,7 @@ fn one_of(path: &Path, mut tasks: Vec<Arc<Task>>, entry: &str) -> Result<Arc<Tas
     match tasks.len() {
         0 => Err(format!("{}: no RAPID modules found", path.display())),
         1 => Ok(tasks.remove(0)),
-        n => {
+        _ => {
             let with_entry: Vec<Arc<Task>> = tasks
                 .iter()
                 .filter(|t| declares(t, entry))
@@ -297,12 +292,8 @@ fn one_of(path: &Path, mut tasks: Vec<Arc<Task>>, entry: &str) -> Result<Arc<Tas
             match with_entry.len() {
                 1 => Ok(with_entry[0].clone()),
                 _ => {
-                    let keys: Vec<&str> = tasks.iter().map(|t| t.key.as_str()).take(5).collect();
-                    Err(format!(
-                        "{}: the folder holds {n} tasks; name one of them (e.g. {})",
-                        path.display(),
-                        keys.join(", ")
-                    ))
+                    let keys: Vec<&str> = tasks.iter().map(|t| t.key.as_str()).collect();
+                    Err(format!("{}: {}", path.display(), several_tasks(&keys)))
                 }
             }
         }
@@ -341,6 +332,22 @@ pub fn alternatives(task: &Arc<Task>, entry: &str) -> Vec<Arc<Task>> {
         .into_iter()
         .map(|i| Arc::new(task.view(i)))
         .collect()
+}
+
+/// "the folder holds N tasks; name one of them (e.g. ...)": the first
+/// tasks' keys, which are the paths to give (the folder or program file as
+/// the command line names it; empty for the current folder, shown `.`).
+pub(crate) fn several_tasks(keys: &[&str]) -> String {
+    let shown: Vec<&str> = keys
+        .iter()
+        .take(5)
+        .map(|k| if k.is_empty() { "." } else { k })
+        .collect();
+    format!(
+        "the folder holds {} tasks; name one of them (e.g. {})",
+        keys.len(),
+        shown.join(", ")
+    )
 }
 
 /// The error for a folder of alternative programs run without naming one.
