@@ -72,6 +72,9 @@ pub struct ControllerOverride {
     pub options: Option<Vec<String>>,
     /// The robot, for tasks whose `MOC.cfg` does not name one.
     pub robot: Option<crate::robot::RobotSetting>,
+    /// The task names by task number (`RAPID/TASKn` is the *n*-th), for
+    /// backups whose `SYS.cfg` and `BACKINFO` are missing.
+    pub tasks: Option<Vec<String>>,
 }
 
 /// Is this a file that describes a controller (`backinfo.txt`, or
@@ -251,7 +254,7 @@ mod tests {
         let sel = pc.selection(&ControllerOverride {
             robotware: None,
             options: Some(vec!["pcinterface".into()]),
-            robot: None,
+            ..ControllerOverride::default()
         });
         assert!(sel.enabled("socket"));
     }
@@ -273,8 +276,7 @@ mod tests {
         };
         let sel = info.selection(&ControllerOverride {
             robotware: Some(Version::new(7, 1)),
-            options: None,
-            robot: None,
+            ..ControllerOverride::default()
         });
         assert_eq!(sel.robotware, Some(Version::new(7, 1)));
         assert!(sel.enabled("arc"));

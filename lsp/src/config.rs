@@ -89,6 +89,10 @@ pub struct ControllerConfig {
     pub lan_ip: Option<String>,
     pub controller_id: Option<String>,
     pub language: Option<String>,
+    /// The task names by task number (`["T_ROB1", "T_ROB2"]` names the
+    /// folders `RAPID/TASK1` and `RAPID/TASK2`), for backups kept without
+    /// `SYSPAR/SYS.cfg` and `BACKINFO`. Unset: the folders' names.
+    pub tasks: Option<Vec<String>>,
 }
 
 impl ControllerConfig {
@@ -147,12 +151,27 @@ impl ControllerConfig {
             }
             None => None,
         };
+        if let Some(bad) = self.tasks.iter().flatten().find(|t| !is_task_name(t)) {
+            return Err((
+                "tasks".into(),
+                format!("`{bad}` is not a task name (a letter, then letters, digits or `_`)"),
+            ));
+        }
         Ok(rapid_analyzer::controller::ControllerOverride {
             robotware,
             options: self.options.clone(),
             robot,
+            tasks: self.tasks.clone(),
         })
     }
+}
+
+/// A controller task's name: a RAPID name (a letter, then letters, digits
+/// and `_`).
+fn is_task_name(name: &str) -> bool {
+    let mut chars = name.chars();
+    chars.next().is_some_and(|c| c.is_ascii_alphabetic())
+        && chars.all(|c| c.is_ascii_alphanumeric() || c == '_')
 }
 
 /// `[lint]`.

@@ -117,6 +117,37 @@ fn a_backup_without_its_syspar_takes_the_task_names_backinfo_gives() {
 }
 
 #[test]
+fn rapid_toml_names_the_tasks_of_a_backup_without_sys_cfg_or_backinfo() {
+    let dir = scratch("run-tasks-toml");
+    write(
+        &dir,
+        &[
+            (
+                "rapid.toml",
+                "[controller]\ntasks = [\"T_ROB1\", \"T_ROB2\"]\n",
+            ),
+            ("cell/RAPID/TASK1/PROGMOD/Main1.mod", ROB1),
+            ("cell/RAPID/TASK2/PROGMOD/Main2.mod", ROB2),
+        ],
+    );
+    let (code, out, err) = run(&dir, &["run", "cell"]);
+    assert_eq!(code, Some(0), "{err}");
+    assert_eq!(
+        out,
+        "[T_ROB1] ready\n[T_ROB1] T_ROB1 done\n[T_ROB2] done 2\n"
+    );
+    let (code, out, _) = run(&dir, &["check", "cell"]);
+    assert_eq!(code, Some(0), "{out}");
+    write(
+        &dir,
+        &[("rapid.toml", "[controller]\ntasks = [\"T ROB1\"]\n")],
+    );
+    let (code, _, err) = run(&dir, &["run", "cell"]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("`T ROB1` is not a task name"), "{err}");
+}
+
+#[test]
 fn one_task_runs_alone_with_task() {
     let dir = backup("run-one-task");
     let (code, out, err) = run(

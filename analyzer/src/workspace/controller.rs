@@ -34,7 +34,7 @@ impl Workspace {
     /// The task names of backup `root` by task number (`RAPID/TASKn` is
     /// the *n*-th), one list per file that names them: each `SYS.cfg`'s
     /// `CAB_TASKS`, else what `BACKINFO` names (a backup kept without its
-    /// `SYSPAR`).
+    /// `SYSPAR`), else the project configuration's `tasks`.
     pub(super) fn task_lists(&self, root: &str) -> Vec<Vec<Option<String>>> {
         let configured: Vec<Vec<Option<String>>> = self
             .configs
@@ -59,10 +59,12 @@ impl Workspace {
                 }
             }
         }
-        if out.is_empty() {
-            Vec::new()
-        } else {
-            vec![out]
+        if !out.is_empty() {
+            return vec![out];
+        }
+        match &self.controller.tasks {
+            Some(names) if !names.is_empty() => vec![names.iter().cloned().map(Some).collect()],
+            _ => Vec::new(),
         }
     }
 
