@@ -20,8 +20,11 @@
 //!   TCP's line or arc; the axes' travel is summed over samples of the path
 //!   (each sample solved near the last), which also finds joint-limit
 //!   crossings and singularities on the way.
+//! - `AccSet`'s `Acc` scales every acceleration ([`Ends::accel`]); its
+//!   `Ramp` (the jerk) is not modelled: the profiles change acceleration
+//!   at once. The caller scales speeds (`VelSet`, speed overrides).
 //! - Not modelled: dynamics and payload (the controller slows heavy or
-//!   far-reaching motion), speed overrides, `AccSet`, `VelSet`, path
+//!   far-reaching motion), path
 //!   smoothing beyond the rule above, external axes' own limits
 //!   (`v_leax`/`v_reax` bound only moves of external axes that are given).
 
@@ -76,13 +79,27 @@ pub fn profile(d: f64, v: f64, a: f64, from_rest: bool, to_rest: bool) -> f64 {
 }
 
 /// How a move starts and ends.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Ends {
     /// The robot is at rest when the move starts (the previous move ended
     /// with `fine`, or this is the first).
     pub from_rest: bool,
     /// The move ends with `fine`.
     pub to_rest: bool,
+    /// The share of the accelerations above that the move may use
+    /// (`AccSet`'s `Acc`: 1 is 100 %).
+    pub accel: f64,
+}
+
+impl Ends {
+    /// A move from rest (or not) to rest (or not) at the full accelerations.
+    pub const fn new(from_rest: bool, to_rest: bool) -> Ends {
+        Ends {
+            from_rest,
+            to_rest,
+            accel: 1.0,
+        }
+    }
 }
 
 /// What limited a move's time.
@@ -127,7 +144,13 @@ fn axis_times<'a>(
     travel.iter().enumerate().map(move |(i, d)| {
         let v = robot.model.speeds[i];
         (
-            profile(*d, v, v / AXIS_ACCEL_TIME, ends.from_rest, ends.to_rest),
+            profile(
+                *d,
+                v,
+                v / AXIS_ACCEL_TIME * ends.accel,
+                ends.from_rest,
+                ends.to_rest,
+            ),
             Limit::Axis(i + 1),
         )
     })
@@ -155,11 +178,23 @@ pub fn joint_move(
     slowest(
         [
             (
-                profile(tcp.0, speed.v_tcp, TCP_ACCEL, ends.from_rest, ends.to_rest),
+                profile(
+                    tcp.0,
+                    speed.v_tcp,
+                    TCP_ACCEL * ends.accel,
+                    ends.from_rest,
+                    ends.to_rest,
+                ),
                 Limit::Tcp,
             ),
             (
-                profile(tcp.1, speed.v_ori, ORI_ACCEL, ends.from_rest, ends.to_rest),
+                profile(
+                    tcp.1,
+                    speed.v_ori,
+                    ORI_ACCEL * ends.accel,
+                    ends.from_rest,
+                    ends.to_rest,
+                ),
                 Limit::Orientation,
             ),
         ]
@@ -297,14 +332,20 @@ pub fn cartesian_move_tcp(
     let time = slowest(
         [
             (
-                profile(length, speed.v_tcp, TCP_ACCEL, ends.from_rest, ends.to_rest),
+                profile(
+                    length,
+                    speed.v_tcp,
+                    TCP_ACCEL * ends.accel,
+                    ends.from_rest,
+                    ends.to_rest,
+                ),
                 Limit::Tcp,
             ),
             (
                 profile(
                     rotation,
                     speed.v_ori,
-                    ORI_ACCEL,
+                    ORI_ACCEL * ends.accel,
                     ends.from_rest,
                     ends.to_rest,
                 ),

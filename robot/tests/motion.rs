@@ -10,10 +10,7 @@ fn irb120() -> Robot {
     Robot::new(model_by_name("IRB 120-3/0.58").expect("a value in a test"))
 }
 
-const FINE: Ends = Ends {
-    from_rest: true,
-    to_rest: true,
-};
+const FINE: Ends = Ends::new(true, true);
 
 fn speed(v_tcp: f64) -> Speed {
     Speed {
@@ -89,10 +86,7 @@ fn linear_move_time_and_path() {
     let end = r.forward(&m.end.joints).expect("a value in a test");
     assert!((end.translation.vector - to.translation.vector).norm() < 1e-6);
     // A zone at the end: no deceleration.
-    let zone = Ends {
-        from_rest: true,
-        to_rest: false,
-    };
+    let zone = Ends::new(true, false);
     let m = cartesian_move(
         &r,
         &start,

@@ -164,7 +164,7 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("ConfL", motion::conf),
     ("ConfJ", motion::conf),
     ("SingArea", motion::setting),
-    ("AccSet", motion::setting),
+    ("AccSet", motion::acc_set),
     ("VelSet", motion::vel_set),
     ("SpeedRefresh", motion::speed_refresh),
     ("StopMove", motion::setting),

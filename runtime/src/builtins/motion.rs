@@ -375,7 +375,7 @@ pub(crate) fn do_move_at(
         None => Tool::default(),
     };
     let wobj = cx.displaced(wobj_value.as_ref())?;
-    let settings = cx.m.speed;
+    let settings = cx.m.settings;
     if settings.halts() {
         // The robot would stand until another task refreshes the override;
         // the simulation plans each move when it is asked for.
@@ -398,6 +398,7 @@ pub(crate) fn do_move_at(
         speed,
         time,
         velocity,
+        accel: settings.acc / 100.0,
         zone,
         tool,
         wobj: wobj.clone(),
@@ -548,33 +549,37 @@ pub(crate) fn wait_rob(cx: &mut Cx<'_>, _: &mut Args) -> R<Done> {
 }
 
 /// Motion settings that do not change where the robot goes.
-/// A task's speed settings, from the program's start at their defaults.
+/// A task's motion settings, from the program's start at their defaults.
 /// `VelSet Override, Max` scales every programmed speed (the speeddata's,
 /// `\V`, and `\T` by stretching the time) and caps the TCP speed at
 /// `Max` mm/s; `SpeedRefresh Override` scales again, as the program's own
 /// speed override, from the next move on (a move under way keeps its
-/// time: the simulation plans each move when it is asked for).
+/// time: the simulation plans each move when it is asked for). `AccSet
+/// Acc, Ramp` scales the accelerations by `Acc` (below 20 %, 20 %).
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct SpeedSettings {
+pub(crate) struct MotionSettings {
     /// `VelSet`'s Override, percent.
     pub vel_override: f64,
     /// `VelSet`'s Max, mm/s (`None`: no cap).
     pub max_tcp: Option<f64>,
     /// `SpeedRefresh`'s Override, percent.
     pub refresh: f64,
+    /// `AccSet`'s Acc, percent.
+    pub acc: f64,
 }
 
-impl Default for SpeedSettings {
+impl Default for MotionSettings {
     fn default() -> Self {
-        SpeedSettings {
+        MotionSettings {
             vel_override: 100.0,
             max_tcp: None,
             refresh: 100.0,
+            acc: 100.0,
         }
     }
 }
 
-impl SpeedSettings {
+impl MotionSettings {
     fn factor(&self) -> f64 {
         self.vel_override / 100.0 * self.refresh / 100.0
     }
@@ -608,8 +613,16 @@ impl SpeedSettings {
 
 /// `VelSet Override, Max`.
 pub(crate) fn vel_set(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
-    cx.m.speed.vel_override = cx.num(a, "Override")?.max(0.0);
-    cx.m.speed.max_tcp = Some(cx.num(a, "Max")?.max(0.0));
+    cx.m.settings.vel_override = cx.num(a, "Override")?.max(0.0);
+    cx.m.settings.max_tcp = Some(cx.num(a, "Max")?.max(0.0));
+    Ok(Done::Next)
+}
+
+/// `AccSet Acc, Ramp [\FinePointRamp]`: `Acc` percent of the normal
+/// accelerations, at least 20 and at most 100; `Ramp` (the jerk) is not
+/// modelled.
+pub(crate) fn acc_set(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    cx.m.settings.acc = cx.num(a, "Acc")?.clamp(20.0, 100.0);
     Ok(Done::Next)
 }
 
@@ -624,7 +637,7 @@ pub(crate) fn speed_refresh(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
             format!("SpeedRefresh: the override {over} is outside 0 to 100 percent"),
         ));
     }
-    cx.m.speed.refresh = over;
+    cx.m.settings.refresh = over;
     Ok(Done::Next)
 }
 

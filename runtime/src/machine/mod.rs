@@ -261,8 +261,8 @@ pub struct Machine {
     pub(crate) gripper: crate::builtins::gripper::Gripper,
     /// The tool and the work object of the last move (`CTool`, `CWObj`).
     pub(crate) active: [Option<Value>; 2],
-    /// The task's speed settings: `VelSet` and `SpeedRefresh`.
-    pub(crate) speed: crate::builtins::motion::SpeedSettings,
+    /// The task's motion settings: `VelSet`, `SpeedRefresh`, `AccSet`.
+    pub(crate) settings: crate::builtins::motion::MotionSettings,
     /// The task's world zones and their shapes.
     pub(crate) zones: crate::builtins::zones::Zones,
 }
@@ -318,7 +318,7 @@ impl Machine {
             engine_part: None,
             gripper: Default::default(),
             active: [None, None],
-            speed: Default::default(),
+            settings: Default::default(),
             zones: Default::default(),
             name,
             number,

@@ -131,6 +131,7 @@ impl Robot for ArmRobot {
         let ends = Ends {
             from_rest: self.at_rest || request.at > self.until + 1e-9,
             to_rest: request.zone.finep,
+            accel: request.accel,
         };
         let tool = tool_of(&request.tool);
         let wobj = wobj_of(&request.wobj);

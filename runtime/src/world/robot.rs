@@ -199,6 +199,8 @@ pub struct MoveRequest<'a> {
     pub time: Option<f64>,
     /// `\V`: the TCP speed in mm/s, instead of the speed's.
     pub velocity: Option<f64>,
+    /// `AccSet`'s `Acc`: the share of the normal accelerations (1: 100 %).
+    pub accel: f64,
     pub zone: Zone,
     pub tool: Tool,
     pub wobj: WObj,

@@ -1,7 +1,8 @@
 MODULE speed_settings
   ! VelSet scales every programmed speed and caps the TCP's; SpeedRefresh
-  ! scales again from the next move. 300 mm at 100 mm/s take 3 s and a
-  ! little to speed up and slow down (the IRB 1600's path acceleration).
+  ! scales again from the next move; AccSet scales the accelerations (20 %
+  ! at least). 300 mm at 100 mm/s from rest to rest take 3 s and v/a more
+  ! (the model's TCP acceleration a is 10 m/s²: 0.01 s).
   !robot IRB1600-6/1.2
   CONST robtarget p1 := [[600,0,600],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
   CONST robtarget p2 := [[600,300,600],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
@@ -26,6 +27,14 @@ MODULE speed_settings
     ClkStart c;
     MoveL p2, v100 \T:=2, fine, tool0;
     TPWrite "\\T:=2 at half " \Num:=ClkRead(c);
+    SpeedRefresh 100;
+    AccSet 50, 100;
+    timed p1;
+    TPWrite "half the acceleration " \Num:=ClkRead(c);
+    AccSet 5, 100;
+    timed p2;
+    TPWrite "a fifth of it " \Num:=ClkRead(c);
+    AccSet 100, 100;
     SpeedRefresh 120;
     TPWrite "not reached";
   ERROR
@@ -47,5 +56,7 @@ ENDMODULE
 !> capped at 30 mm/s 10
 !> refreshed to half 6
 !> \T:=2 at half 4
+!> half the acceleration 3.02
+!> a fifth of it 3.05
 !> 120 percent is refused
-!! unsupported: MoveL while the speed override (VelSet, SpeedRefresh) holds the robot at 0 at 35
+!! unsupported: MoveL while the speed override (VelSet, SpeedRefresh) holds the robot at 0 at 44
