@@ -92,6 +92,17 @@ impl Value {
         }
     }
 
+    /// The component `name` of a record (case-insensitive), to change.
+    pub fn field_mut(&mut self, name: &str) -> Option<&mut Value> {
+        match self {
+            Value::Record { fields, .. } => fields
+                .iter_mut()
+                .find(|(n, _)| n.eq_ignore_ascii_case(name))
+                .map(|(_, v)| v),
+            _ => None,
+        }
+    }
+
     /// The numeric value of a `num` or `dnum`.
     pub fn as_f64(&self) -> Option<f64> {
         match self {

@@ -611,18 +611,42 @@ impl MotionSettings {
     }
 }
 
-/// `VelSet Override, Max`.
+/// `VelSet Override, Max`; `C_MOTSET.vel` reads them back.
 pub(crate) fn vel_set(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
-    cx.m.settings.vel_override = cx.num(a, "Override")?.max(0.0);
-    cx.m.settings.max_tcp = Some(cx.num(a, "Max")?.max(0.0));
+    let (over, max) = (cx.num(a, "Override")?, cx.num(a, "Max")?);
+    cx.m.settings.vel_override = over.max(0.0);
+    cx.m.settings.max_tcp = Some(max.max(0.0));
+    motset(cx, "vel", &[("oride", over), ("max", max)]);
     Ok(Done::Next)
+}
+
+/// Sets components of a component of `C_MOTSET`, the motion settings a
+/// program reads.
+fn motset(cx: &mut Cx<'_>, part: &str, values: &[(&str, f64)]) {
+    let Some(g) = cx.m.prog.system_global("C_MOTSET") else {
+        return;
+    };
+    let Some(part) =
+        cx.m.globals
+            .get_mut(g as usize)
+            .and_then(|v| v.field_mut(part))
+    else {
+        return;
+    };
+    for (name, value) in values {
+        if let Some(slot) = part.field_mut(name) {
+            *slot = Value::Num(*value as f32);
+        }
+    }
 }
 
 /// `AccSet Acc, Ramp [\FinePointRamp]`: `Acc` percent of the normal
 /// accelerations, at least 20 and at most 100; `Ramp` (the jerk) is not
-/// modelled.
+/// modelled; `C_MOTSET.acc` reads them back.
 pub(crate) fn acc_set(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
-    cx.m.settings.acc = cx.num(a, "Acc")?.clamp(20.0, 100.0);
+    let (acc, ramp) = (cx.num(a, "Acc")?, cx.num(a, "Ramp")?);
+    cx.m.settings.acc = acc.clamp(20.0, 100.0);
+    motset(cx, "acc", &[("acc", acc), ("ramp", ramp)]);
     Ok(Done::Next)
 }
 

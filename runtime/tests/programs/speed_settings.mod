@@ -19,6 +19,7 @@ MODULE speed_settings
     VelSet 100, 30;
     timed p2;
     TPWrite "capped at 30 mm/s " \Num:=ClkRead(c);
+    TPWrite "C_MOTSET.vel " + ValToStr(C_MOTSET.vel);
     VelSet 100, 5000;
     SpeedRefresh 50;
     timed p1;
@@ -31,6 +32,7 @@ MODULE speed_settings
     AccSet 50, 100;
     timed p1;
     TPWrite "half the acceleration " \Num:=ClkRead(c);
+    TPWrite "C_MOTSET.acc " + ValToStr(C_MOTSET.acc);
     AccSet 5, 100;
     timed p2;
     TPWrite "a fifth of it " \Num:=ClkRead(c);
@@ -54,9 +56,11 @@ ENDMODULE
 !> programmed 3.01
 !> half 6
 !> capped at 30 mm/s 10
+!> C_MOTSET.vel [100,30]
 !> refreshed to half 6
 !> \T:=2 at half 4
 !> half the acceleration 3.02
+!> C_MOTSET.acc [50,100,100]
 !> a fifth of it 3.05
 !> 120 percent is refused
-!! unsupported: MoveL while the speed override (VelSet, SpeedRefresh) holds the robot at 0 at 44
+!! unsupported: MoveL while the speed override (VelSet, SpeedRefresh) holds the robot at 0 at 46
