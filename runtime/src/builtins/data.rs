@@ -33,6 +33,34 @@ pub(crate) fn add(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     step(cx, a, BinOp::Add, by)
 }
 
+/// `BitSet BitData, BitPos` and `BitClear`: bit `BitPos` (1, the lowest,
+/// to 8) of a byte set to 1 or 0; `ERR_ARGVALERR` for another position or
+/// a value that is not a byte, as `BitCheck` has it.
+pub(crate) fn bit_set(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let p = cx.place_arg(a, "BitData")?;
+    let data = cx.m.get(cx.sh, &p).and_then(Value::as_f64).unwrap_or(0.0);
+    let pos = cx.num(a, "BitPos")?;
+    let bad = |what: String| fault(named_error(&cx.m.prog, "ERR_ARGVALERR", what));
+    if data.fract() != 0.0 || !(0.0..=255.0).contains(&data) {
+        return bad(format!("{}: {data} is not a byte (0 to 255)", a.name));
+    }
+    if pos.fract() != 0.0 || !(1.0..=8.0).contains(&pos) {
+        return bad(format!(
+            "{}: BitPos must be a whole number from 1 to 8",
+            a.name
+        ));
+    }
+    let bit = 1u8 << (pos as u32 - 1);
+    let byte = data as u8;
+    let new = if a.name.eq_ignore_ascii_case("BitSet") {
+        byte | bit
+    } else {
+        byte & !bit
+    };
+    cx.store(&p, Value::Num(f32::from(new)))?;
+    Ok(Done::Next)
+}
+
 /// `Clear Name`.
 pub(crate) fn clear(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     let p = cx.place_arg(a, "Name")?;

@@ -91,6 +91,8 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("Decr", data::decr),
     ("Add", data::add),
     ("Clear", data::clear),
+    ("BitSet", data::bit_set),
+    ("BitClear", data::bit_set),
     ("BookErrNo", data::book_err_no),
     ("GetDataVal", data::get_data_val),
     ("SetDataVal", data::set_data_val),
