@@ -283,6 +283,32 @@ fn a_folder_of_several_tasks_names_them_as_paths_to_give() {
 }
 
 #[test]
+fn a_data_name_declared_nowhere_may_be_a_signal_that_set_declares() {
+    let dir = scratch("run-undeclared-signal");
+    write(
+        &dir,
+        &[(
+            "m.mod",
+            "MODULE m\n  VAR num layers;\n  PROC main()\n    layers := giLayers;\n    TPWrite \"layers \"\\Num:=layers;\n    Missing;\n  ENDPROC\nENDMODULE\n",
+        )],
+    );
+    let (code, _, err) = run(&dir, &["run", "m.mod"]);
+    assert_eq!(code, Some(1), "{err}");
+    assert!(
+        err.contains("`giLayers` is declared nowhere")
+            && err.contains("--set giLayers=VALUE declares it"),
+        "{err}"
+    );
+    let (code, out, err) = run(&dir, &["run", "m.mod", "--set", "giLayers=3"]);
+    assert_eq!((code, out.as_str()), (Some(1), "layers 3\n"), "{err}");
+    // A routine is no signal: no such hint.
+    assert!(
+        err.contains("`Missing` is declared nowhere") && !err.contains("--set Missing"),
+        "{err}"
+    );
+}
+
+#[test]
 fn a_call_that_needs_an_arm_says_how_to_name_one() {
     let dir = scratch("run-needs-arm");
     write(

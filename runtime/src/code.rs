@@ -387,8 +387,10 @@ pub(crate) struct WaitUntil {
 /// Why a statement or an expression cannot run.
 #[derive(Clone, Debug)]
 pub(crate) enum Failure {
-    /// A name that nothing declares.
+    /// A routine name that nothing declares.
     Unknown(String),
+    /// A data name that nothing declares.
+    UnknownData(String),
     /// A built-in the simulation does not implement.
     Unsupported(String),
     /// Anything else, with a message.

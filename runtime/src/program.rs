@@ -636,8 +636,9 @@ impl Program {
     /// (the controller would not have linked the program): a persistent
     /// of another task of the controller that this task does not declare,
     /// else a name declared nowhere the run can see (the module that
-    /// declares it is not in the repository).
-    pub(crate) fn undeclared(&self, name: &str) -> String {
+    /// declares it is not in the repository). A data name may be a signal
+    /// the configuration lacks: `--set` declares one.
+    pub(crate) fn undeclared(&self, name: &str, data: bool) -> String {
         let other = self
             .task
             .shared
@@ -648,6 +649,9 @@ impl Program {
                 "`{name}` {DECLARED_NOWHERE} in this task: it is a persistent of {} ({}), and a task that uses a persistent declares it too",
                 p.task.rsplit(['/', '\\']).next().unwrap_or(&p.task),
                 p.path
+            ),
+            None if data => format!(
+                "`{name}` {DECLARED_NOWHERE} (in no module of the task, nor a built-in the catalogue knows): the module that declares it is missing (if it is an I/O signal the configuration lacks, --set {name}=VALUE declares it)"
             ),
             None => format!(
                 "`{name}` {DECLARED_NOWHERE} (in no module of the task, nor a built-in the catalogue knows): the module that declares it is missing"

@@ -67,7 +67,7 @@ impl Compiler<'_> {
                     self.emit(Op::Pers(k));
                 }
                 Some((Data::Const(v), _)) => self.push_const(v),
-                None => self.fail(Failure::Unknown(n.clone())),
+                None => self.fail(Failure::UnknownData(n.clone())),
             },
             E::Aggregate(items) => self.aggregate(items, expected, d),
             E::Unary(op, x) => match (op, x.as_ref()) {
@@ -300,7 +300,7 @@ impl Compiler<'_> {
                 Some((Data::Pers(k), _)) => {
                     self.emit(Op::PlacePers(k));
                 }
-                _ => self.fail(Failure::Unknown(n.clone())),
+                _ => self.fail(Failure::UnknownData(n.clone())),
             },
             E::Component(b, f) => {
                 self.place_ops(b, depth + 1);

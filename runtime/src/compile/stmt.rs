@@ -273,7 +273,7 @@ impl Compiler<'_> {
         let Some(ty) = self.place_type(target) else {
             let why = self
                 .unknown_in(target)
-                .map(Failure::Unknown)
+                .map(Failure::UnknownData)
                 .unwrap_or_else(|| {
                     Failure::Invalid("the left side of := is not a data reference".to_owned())
                 });

@@ -627,7 +627,10 @@ impl Machine {
                 }
                 Op::Fail(i) => {
                     return match code.failures.get(*i as usize) {
-                        Some(Failure::Unknown(name)) => invalid(self.prog.undeclared(name)),
+                        Some(Failure::Unknown(name)) => invalid(self.prog.undeclared(name, false)),
+                        Some(Failure::UnknownData(name)) => {
+                            invalid(self.prog.undeclared(name, true))
+                        }
                         Some(Failure::Unsupported(name)) => {
                             fault(FaultKind::Unsupported(name.clone()))
                         }
