@@ -309,6 +309,43 @@ fn a_data_name_declared_nowhere_may_be_a_signal_that_set_declares() {
 }
 
 #[test]
+fn the_tests_of_alternative_programs_run_in_each_program() {
+    let dir = scratch("test-alternatives");
+    let version = |v: u32| {
+        format!("MODULE Prog\n  FUNC num version()\n    RETURN {v};\n  ENDFUNC\n  PROC main()\n  ENDPROC\nENDMODULE\n")
+    };
+    let (v1, v2) = (version(1), version(2));
+    write(
+        &dir,
+        &[
+            ("Prog_v1.mod", &v1),
+            ("Prog_v2.mod", &v2),
+            (
+                "Prog_test.mod",
+                "MODULE Prog_test\n  PROC is_two()\n    AssertEqual version(), 2;\n  ENDPROC\nENDMODULE\n",
+            ),
+        ],
+    );
+    let (code, out, err) = run(&dir, &["test", "--format", "json"]);
+    assert_eq!(code, Some(1), "{err}");
+    let doc: serde_json::Value = serde_json::from_str(&out).expect("JSON");
+    let verdicts: Vec<(String, String)> = doc["tests"]
+        .as_array()
+        .expect("tests")
+        .iter()
+        .map(|t| (t["module"].to_string(), t["result"].to_string()))
+        .collect();
+    assert_eq!(
+        verdicts,
+        [
+            (r#""Prog_test [Prog_v1.mod]""#.to_owned(), r#""fail""#.to_owned()),
+            (r#""Prog_test [Prog_v2.mod]""#.to_owned(), r#""pass""#.to_owned()),
+        ],
+        "{out}"
+    );
+}
+
+#[test]
 fn a_call_that_needs_an_arm_says_how_to_name_one() {
     let dir = scratch("run-needs-arm");
     write(

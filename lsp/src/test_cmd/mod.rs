@@ -180,27 +180,65 @@ pub fn run_tests(
     load_error: &mut dyn FnMut(&rapid_runtime::LoadError),
 ) -> Result<Vec<TestResult>, String> {
     let mut results = Vec::new();
-    for task in tasks {
-        let task = load::with_modules(task, &[(ASSERT_PATH, ASSERT_MODULE)]);
-        let check = rapid_runtime::load_check(&task);
-        let program = load::program(task, &options.sets, &check);
-        let errors = check.errors;
-        let tests = discover(&program, options.filter.as_deref());
-        if let Some(first) = errors.first() {
-            // The controller would not load the task: none of its tests runs.
-            for e in &errors {
-                load_error(e);
+    for (task, program) in tasks.iter().flat_map(programs_of) {
+        let first = results.len();
+        run_task_tests(&task, options, load_error, &mut results)?;
+        // A folder of alternative programs: each test says which it ran in.
+        if let Some(program) = program {
+            for r in &mut results[first..] {
+                r.module = format!("{} [{program}]", r.module);
             }
-            for test in &tests {
-                results.push(not_loaded(test, first));
-            }
-            continue;
-        }
-        for test in tests {
-            results.push(run_test(&program, &test, options)?);
         }
     }
     Ok(results)
+}
+
+/// The programs a task holds: itself, or, for a folder of alternative
+/// programs (modules that cannot be loaded together, as `rapid check`
+/// tells them apart), each view with the file name of the module it is
+/// made for. A module the alternatives share runs its tests in each.
+fn programs_of(
+    task: &Arc<rapid_analyzer::task::Task>,
+) -> Vec<(Arc<rapid_analyzer::task::Task>, Option<String>)> {
+    if task.owner.is_some() || task.clashes.is_empty() {
+        return vec![(task.clone(), None)];
+    }
+    (0..task.units.len())
+        .filter(|&i| task.clashes.any(i))
+        .filter_map(|i| {
+            let path = &task.unit(i)?.path;
+            let name = path.rsplit(['/', '\\']).next().unwrap_or(path).to_owned();
+            Some((Arc::new(task.view(i)), Some(name)))
+        })
+        .collect()
+}
+
+/// The tests of one task (or view), added to `results`.
+fn run_task_tests(
+    task: &Arc<rapid_analyzer::task::Task>,
+    options: &TestOptions,
+    load_error: &mut dyn FnMut(&rapid_runtime::LoadError),
+    results: &mut Vec<TestResult>,
+) -> Result<(), String> {
+    let task = load::with_modules(task, &[(ASSERT_PATH, ASSERT_MODULE)]);
+    let check = rapid_runtime::load_check(&task);
+    let program = load::program(task, &options.sets, &check);
+    let errors = check.errors;
+    let tests = discover(&program, options.filter.as_deref());
+    if let Some(first) = errors.first() {
+        // The controller would not load the task: none of its tests runs.
+        for e in &errors {
+            load_error(e);
+        }
+        for test in &tests {
+            results.push(not_loaded(test, first));
+        }
+        return Ok(());
+    }
+    for test in tests {
+        results.push(run_test(&program, &test, options)?);
+    }
+    Ok(())
 }
 
 /// A test routine, with the module's `setup` and `teardown`.
