@@ -312,7 +312,9 @@ fn a_data_name_declared_nowhere_may_be_a_signal_that_set_declares() {
 fn the_tests_of_alternative_programs_run_in_each_program() {
     let dir = scratch("test-alternatives");
     let version = |v: u32| {
-        format!("MODULE Prog\n  FUNC num version()\n    RETURN {v};\n  ENDFUNC\n  PROC main()\n  ENDPROC\nENDMODULE\n")
+        format!(
+            "MODULE Prog\n  FUNC num version()\n    RETURN {v};\n  ENDFUNC\n  PROC main()\n  ENDPROC\nENDMODULE\n"
+        )
     };
     let (v1, v2) = (version(1), version(2));
     write(
@@ -338,8 +340,14 @@ fn the_tests_of_alternative_programs_run_in_each_program() {
     assert_eq!(
         verdicts,
         [
-            (r#""Prog_test [Prog_v1.mod]""#.to_owned(), r#""fail""#.to_owned()),
-            (r#""Prog_test [Prog_v2.mod]""#.to_owned(), r#""pass""#.to_owned()),
+            (
+                r#""Prog_test [Prog_v1.mod]""#.to_owned(),
+                r#""fail""#.to_owned()
+            ),
+            (
+                r#""Prog_test [Prog_v2.mod]""#.to_owned(),
+                r#""pass""#.to_owned()
+            ),
         ],
         "{out}"
     );

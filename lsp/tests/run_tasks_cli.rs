@@ -93,58 +93,44 @@ fn a_backup_runs_every_task_together() {
 }
 
 #[test]
-fn a_backup_without_its_syspar_takes_the_task_names_backinfo_gives() {
-    let dir = scratch("run-tasks-backinfo");
-    write(
-        &dir,
-        &[
-            (
-                "cell/BACKINFO/backinfo.txt",
-                ">>SYSTEM_ID:\nCell\n\n>>TASK1: (T_ROB1,,)\n\n>>TASK2: (T_ROB2,,)\n",
-            ),
-            ("cell/RAPID/TASK1/PROGMOD/Main1.mod", ROB1),
-            ("cell/RAPID/TASK2/PROGMOD/Main2.mod", ROB2),
-        ],
-    );
-    let (code, out, err) = run(&dir, &["run", "cell"]);
-    assert_eq!(code, Some(0), "{err}");
-    assert_eq!(
-        out,
-        "[T_ROB1] ready\n[T_ROB1] T_ROB1 done\n[T_ROB2] done 2\n"
-    );
-    let (code, out, _) = run(&dir, &["check", "cell"]);
-    assert_eq!(code, Some(0), "{out}");
-}
-
-#[test]
-fn rapid_toml_names_the_tasks_of_a_backup_without_sys_cfg_or_backinfo() {
-    let dir = scratch("run-tasks-toml");
-    write(
-        &dir,
-        &[
-            (
-                "rapid.toml",
-                "[controller]\ntasks = [\"T_ROB1\", \"T_ROB2\"]\n",
-            ),
-            ("cell/RAPID/TASK1/PROGMOD/Main1.mod", ROB1),
-            ("cell/RAPID/TASK2/PROGMOD/Main2.mod", ROB2),
-        ],
-    );
-    let (code, out, err) = run(&dir, &["run", "cell"]);
-    assert_eq!(code, Some(0), "{err}");
-    assert_eq!(
-        out,
-        "[T_ROB1] ready\n[T_ROB1] T_ROB1 done\n[T_ROB2] done 2\n"
-    );
-    let (code, out, _) = run(&dir, &["check", "cell"]);
-    assert_eq!(code, Some(0), "{out}");
-    write(
-        &dir,
-        &[("rapid.toml", "[controller]\ntasks = [\"T ROB1\"]\n")],
-    );
-    let (code, _, err) = run(&dir, &["run", "cell"]);
-    assert_eq!(code, Some(2), "{err}");
-    assert!(err.contains("`T ROB1` is not a task name"), "{err}");
+fn a_backup_without_its_syspar_takes_the_task_names_backinfo_then_rapid_toml_give() {
+    let sources = [
+        (
+            "run-tasks-backinfo",
+            "cell/BACKINFO/backinfo.txt",
+            ">>SYSTEM_ID:\nCell\n\n>>TASK1: (T_ROB1,,)\n\n>>TASK2: (T_ROB2,,)\n",
+        ),
+        (
+            "run-tasks-toml",
+            "rapid.toml",
+            "[controller]\ntasks = [\"T_ROB1\", \"T_ROB2\"]\n",
+        ),
+    ];
+    for (name, file, text) in sources {
+        let dir = scratch(name);
+        write(
+            &dir,
+            &[
+                (file, text),
+                ("cell/RAPID/TASK1/PROGMOD/Main1.mod", ROB1),
+                ("cell/RAPID/TASK2/PROGMOD/Main2.mod", ROB2),
+            ],
+        );
+        let (code, out, err) = run(&dir, &["run", "cell"]);
+        assert_eq!(code, Some(0), "{file}: {err}");
+        assert_eq!(
+            out, "[T_ROB1] ready\n[T_ROB1] T_ROB1 done\n[T_ROB2] done 2\n",
+            "{file}"
+        );
+        let (code, out, _) = run(&dir, &["check", "cell"]);
+        assert_eq!(code, Some(0), "{file}: {out}");
+        if file == "rapid.toml" {
+            write(&dir, &[(file, "[controller]\ntasks = [\"T ROB1\"]\n")]);
+            let (code, _, err) = run(&dir, &["run", "cell"]);
+            assert_eq!(code, Some(2), "{err}");
+            assert!(err.contains("`T ROB1` is not a task name"), "{err}");
+        }
+    }
 }
 
 #[test]

@@ -145,8 +145,9 @@ impl Cx<'_> {
         })
     }
 
-    /// The robot of the task, or of the one `\TaskRef`/`\TaskName` names.
-    pub(super) fn robot_index(&mut self, a: &Args) -> R<usize> {
+    /// The index of the task `\TaskRef`/`\TaskName` names (`None` when
+    /// neither is given), `ERR_TASKNAME` when the controller has none.
+    pub(super) fn named_task(&mut self, a: &Args) -> R<Option<usize>> {
         let other = match self.opt(a, "TaskName")? {
             Some(Value::Str(n)) => Some(n),
             _ => match self.opt(a, "TaskRef")? {
@@ -157,17 +158,23 @@ impl Cx<'_> {
                 None => None,
             },
         };
-        let index = match other {
+        match other {
             Some(name) => match self.sh.task_named(&name) {
-                Some(i) => i,
-                None => {
-                    return fault(named_error(
-                        &self.m.prog,
-                        "ERR_TASKNAME",
-                        format!("{}: there is no task {name}", a.name),
-                    ));
-                }
+                Some(i) => Ok(Some(i)),
+                None => fault(named_error(
+                    &self.m.prog,
+                    "ERR_TASKNAME",
+                    format!("{}: there is no task {name}", a.name),
+                )),
             },
+            None => Ok(None),
+        }
+    }
+
+    /// The robot of the task, or of the one `\TaskRef`/`\TaskName` names.
+    pub(super) fn robot_index(&mut self, a: &Args) -> R<usize> {
+        let index = match self.named_task(a)? {
+            Some(i) => i,
             None => self.m.number.saturating_sub(1),
         };
         match self.sh.robots.get(index) {

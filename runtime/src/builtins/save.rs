@@ -3,7 +3,6 @@
 
 use rapid_analyzer::items::Storage;
 use rapid_analyzer::task::{Item, ItemRef};
-use rapid_evaluator::Value;
 
 use super::{Args, Cx, Done};
 use crate::machine::{FaultKind, R, fault, named_error};
@@ -18,26 +17,12 @@ use crate::world::FileError;
 /// to a path the program gives (the controller's default is the file a
 /// `Load` read the module from).
 pub(crate) fn save(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
-    let other = match cx.opt(a, "TaskName")? {
-        Some(Value::Str(n)) => Some(n),
-        _ => match cx.opt(a, "TaskRef")? {
-            Some(v) => match v.field("name") {
-                Some(Value::Str(n)) => n.strip_suffix("id").map(str::to_owned),
-                _ => None,
-            },
-            None => None,
-        },
-    };
-    if let Some(task) = other.filter(|t| !t.eq_ignore_ascii_case(&cx.m.name)) {
-        if cx.sh.task_named(&task).is_none() {
-            return fault(named_error(
-                &cx.m.prog,
-                "ERR_TASKNAME",
-                format!("Save: there is no task {task}"),
-            ));
-        }
+    if let Some(task) = cx.named_task(a)?
+        && task + 1 != cx.m.number
+    {
+        let name = cx.sh.names.get(task).cloned().unwrap_or_default();
         return fault(FaultKind::Unsupported(format!(
-            "Save of a module of another task ({task})"
+            "Save of a module of another task ({name})"
         )));
     }
     let name = cx.string(a, "ModuleName")?;

@@ -25,6 +25,10 @@ MODULE save_module
     Close f;
     save_as "no_such_module", "HOME:/x.mod";
     save_as "save_module", "HOME:/missing/folder/saved.mod";
+    Save \TaskName:="T_NONE", "save_module" \FilePath:="HOME:/y.mod";
+  ERROR
+    IF ERRNO = ERR_TASKNAME TPWrite "no task T_NONE";
+    RETURN;
   ENDPROC
 
   PROC save_as(string name, string path)
@@ -41,3 +45,4 @@ ENDMODULE
 !>   PERS pos place{2} := [[0,0,0],[1,2,30]];
 !> no module no_such_module
 !> cannot write HOME:/missing/folder/saved.mod
+!> no task T_NONE
