@@ -156,6 +156,7 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("TriggInt", triggs::trigg_int),
     ("WaitRob", motion::wait_rob),
     ("SetSysData", motion::set_sys_data),
+    ("GetSysData", motion::get_sys_data),
     ("MToolTCPCalib", calibration::m_tool_tcp_calib),
     ("ArcLStart", arc::arc_move),
     ("ArcL", arc::arc_move),

@@ -423,6 +423,10 @@ pub(crate) fn do_move_at(
     let end = start + motion.duration.max(0.0);
     cx.sh.move_count += 1;
     if !external_only {
+        cx.m.active_names = [
+            tool_value.as_ref().and_then(|_| cx.arg_name(a, "Tool")),
+            wobj_value.as_ref().and_then(|_| cx.arg_name(a, "WObj")),
+        ];
         cx.m.active = [tool_value, wobj_value];
     }
     let delay = end - cx.now();
@@ -731,17 +735,23 @@ fn active(cx: &mut Cx<'_>, which: usize, default: &str) -> R<Value> {
 /// simulation models.
 pub(crate) fn set_sys_data(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     let source = cx.req(a, "SourceObject")?;
-    let value = match cx.opt_string(a, "ObjectName")? {
+    let (value, name) = match cx.opt_string(a, "ObjectName")? {
         Some(name) => {
             let place = super::data::data_named(cx, &name)?;
-            cx.m.load(cx.sh, &place)?
+            (cx.m.load(cx.sh, &place)?, Some(name))
         }
-        None => source.clone(),
+        None => (source.clone(), cx.arg_name(a, "SourceObject")),
     };
     match source.type_name().map(str::to_ascii_lowercase).as_deref() {
-        Some("tooldata") => cx.m.active[0] = Some(value),
-        Some("wobjdata") => cx.m.active[1] = Some(value),
-        Some("loaddata") => {}
+        Some("tooldata") => {
+            cx.m.active[0] = Some(value);
+            cx.m.active_names[0] = name;
+        }
+        Some("wobjdata") => {
+            cx.m.active[1] = Some(value);
+            cx.m.active_names[1] = name;
+        }
+        Some("loaddata") => cx.m.active_load = Some((value, name)),
         _ => {
             return invalid(format!(
                 "SetSysData: SourceObject must be a tooldata, wobjdata or loaddata, not {}",
@@ -750,6 +760,52 @@ pub(crate) fn set_sys_data(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
         }
     }
     Ok(Done::Next)
+}
+
+/// `GetSysData DestObject [\ObjectName]`: the active tool, work object or
+/// payload (by `DestObject`'s type: the last move's, or what `SetSysData`
+/// set; `tool0`, `wobj0`, `load0` before any) into `DestObject`, and its
+/// name into `\ObjectName` (empty when the simulation does not know it).
+pub(crate) fn get_sys_data(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let dest = cx.place_arg(a, "DestObject")?;
+    let current = cx.m.load(cx.sh, &dest)?;
+    let kind = current.type_name().map(str::to_ascii_lowercase);
+    let (value, name) = match kind.as_deref() {
+        Some("tooldata") => (active(cx, 0, "tool0")?, active_name(cx, 0, "tool0")),
+        Some("wobjdata") => (active(cx, 1, "wobj0")?, active_name(cx, 1, "wobj0")),
+        Some("loaddata") => match cx.m.active_load.clone() {
+            Some((v, n)) => (v, n.unwrap_or_default()),
+            None => {
+                let place = cx.system_place("load0")?;
+                (cx.m.load(cx.sh, &place)?, "load0".to_owned())
+            }
+        },
+        _ => {
+            return invalid(format!(
+                "GetSysData: DestObject must be a tooldata, wobjdata or loaddata, not {}",
+                crate::machine::describe(&current)
+            ));
+        }
+    };
+    cx.store(&dest, value)?;
+    if let Some(p) = a.place_of("ObjectName").cloned() {
+        cx.store(&p, Value::Str(name))?;
+    }
+    Ok(Done::Next)
+}
+
+/// The name of the active tool (0) or work object (1).
+fn active_name(cx: &Cx<'_>, which: usize, default: &str) -> String {
+    match cx.m.active.get(which) {
+        Some(Some(_)) => {
+            cx.m.active_names
+                .get(which)
+                .cloned()
+                .flatten()
+                .unwrap_or_default()
+        }
+        _ => default.to_owned(),
+    }
 }
 
 /// `CJointT([\TaskRef] | [\TaskName])`.

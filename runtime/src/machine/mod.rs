@@ -261,6 +261,11 @@ pub struct Machine {
     pub(crate) gripper: crate::builtins::gripper::Gripper,
     /// The tool and the work object of the last move (`CTool`, `CWObj`).
     pub(crate) active: [Option<Value>; 2],
+    /// The names of the data objects `active` holds, when known
+    /// (`GetSysData \ObjectName`).
+    pub(crate) active_names: [Option<String>; 2],
+    /// The payload `SetSysData` made active, and its name.
+    pub(crate) active_load: Option<(Value, Option<String>)>,
     /// The task's motion settings: `VelSet`, `SpeedRefresh`, `AccSet`.
     pub(crate) settings: crate::builtins::motion::MotionSettings,
     /// The task's world zones and their shapes.
@@ -318,6 +323,8 @@ impl Machine {
             engine_part: None,
             gripper: Default::default(),
             active: [None, None],
+            active_names: [None, None],
+            active_load: None,
             settings: Default::default(),
             zones: Default::default(),
             name,
