@@ -325,3 +325,55 @@ impl Interrupts {
         None
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::AnalogTrigger;
+
+    fn trigger(condition: i32, delta: f64, direction: i8) -> AnalogTrigger {
+        AnalogTrigger {
+            condition,
+            high: 6.0,
+            low: 2.0,
+            delta,
+            direction,
+            reference: 4.0,
+        }
+    }
+
+    /// The samples that raise the interrupt.
+    fn raised(mut t: AnalogTrigger, samples: &[f64]) -> Vec<f64> {
+        samples.iter().copied().filter(|&v| t.sample(v)).collect()
+    }
+
+    #[test]
+    fn each_condition_admits_its_values() {
+        let samples = [1.0, 3.0, 5.0, 7.0];
+        let cases = [
+            (1, vec![7.0]),                // above high
+            (2, vec![1.0, 3.0, 5.0]),      // below high
+            (3, vec![3.0, 5.0, 7.0]),      // above low
+            (4, vec![1.0]),                // below low
+            (5, vec![3.0, 5.0]),           // between
+            (6, vec![1.0, 7.0]),           // outside
+            (7, vec![1.0, 3.0, 5.0, 7.0]), // always
+        ];
+        for (condition, want) in cases {
+            assert_eq!(
+                raised(trigger(condition, 0.0, 0), &samples),
+                want,
+                "{condition}"
+            );
+        }
+    }
+
+    #[test]
+    fn the_reference_moves_by_more_than_delta_and_direction_filters() {
+        // From 4: 4.5 is within 1 (no new reference); 2.5 moves down by 1.5
+        // (a new reference, raised only without \DPos); 4 moves up by 1.5.
+        let samples = [4.5, 2.5, 4.0];
+        assert_eq!(raised(trigger(7, 1.0, 0), &samples), vec![2.5, 4.0]);
+        assert_eq!(raised(trigger(7, 1.0, 1), &samples), vec![4.0]);
+        assert_eq!(raised(trigger(7, 1.0, -1), &samples), vec![2.5]);
+    }
+}
