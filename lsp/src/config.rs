@@ -154,7 +154,9 @@ impl ControllerConfig {
         if let Some(bad) = self.tasks.iter().flatten().find(|t| !is_task_name(t)) {
             return Err((
                 "tasks".into(),
-                format!("`{bad}` is not a task name (a letter, then letters, digits or `_`)"),
+                format!(
+                    "`{bad}` is not a task name (a RAPID name: a letter, then letters, digits or `_`)"
+                ),
             ));
         }
         Ok(rapid_analyzer::controller::ControllerOverride {
@@ -166,12 +168,10 @@ impl ControllerConfig {
     }
 }
 
-/// A controller task's name: a RAPID name (a letter, then letters, digits
-/// and `_`).
+/// A controller task's name: a RAPID name (the language's rule, Latin-1
+/// letters included).
 fn is_task_name(name: &str) -> bool {
-    let mut chars = name.chars();
-    chars.next().is_some_and(|c| c.is_ascii_alphabetic())
-        && chars.all(|c| c.is_ascii_alphanumeric() || c == '_')
+    !name.is_empty() && rapid_analyzer::names::name_len(name) == name.len()
 }
 
 /// `[lint]`.
