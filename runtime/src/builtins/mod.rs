@@ -20,6 +20,7 @@ pub(crate) mod output;
 pub(crate) mod pendant;
 pub(crate) mod rawbytes;
 pub(crate) mod save;
+pub(crate) mod settings;
 pub(crate) mod sockets;
 pub(crate) mod tasks;
 pub(crate) mod triggs;
@@ -167,9 +168,9 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("ConfL", motion::conf),
     ("ConfJ", motion::conf),
     ("SingArea", motion::setting),
-    ("AccSet", motion::acc_set),
-    ("VelSet", motion::vel_set),
-    ("SpeedRefresh", motion::speed_refresh),
+    ("AccSet", settings::acc_set),
+    ("VelSet", settings::vel_set),
+    ("SpeedRefresh", settings::speed_refresh),
     ("StopMove", motion::setting),
     ("StartMove", motion::setting),
     ("StorePath", motion::setting),

@@ -267,7 +267,7 @@ pub struct Machine {
     /// The payload `SetSysData` made active, and its name.
     pub(crate) active_load: Option<(Value, Option<String>)>,
     /// The task's motion settings: `VelSet`, `SpeedRefresh`, `AccSet`.
-    pub(crate) settings: crate::builtins::motion::MotionSettings,
+    pub(crate) settings: crate::builtins::settings::MotionSettings,
     /// The task's world zones and their shapes.
     pub(crate) zones: crate::builtins::zones::Zones,
 }
