@@ -319,18 +319,26 @@ fn unit_declares(u: &Unit, routine: &str) -> bool {
 /// programs with a `main`), as the view of the task that leaves out what
 /// it clashes with. Empty when the task is one program (or a view already).
 pub fn alternatives(task: &Arc<Task>, entry: &str) -> Vec<Arc<Task>> {
-    if task.owner.is_some() || task.clashes.is_empty() {
-        return Vec::new();
-    }
-    let programs: Vec<usize> = (0..task.units.len())
-        .filter(|&i| task.clashes.any(i) && task.unit(i).is_some_and(|u| unit_declares(u, entry)))
-        .collect();
+    let programs = views(task, |u| unit_declares(u, entry));
     if programs.len() < 2 {
         return Vec::new();
     }
-    programs
-        .into_iter()
-        .map(|i| Arc::new(task.view(i)))
+    programs.into_iter().map(|(_, v)| v).collect()
+}
+
+/// The views of a folder's task for each of its modules that clash with
+/// another (and that `keep` keeps), with the module's unit: what `rapid
+/// check` checks apart. Empty when the task is one program (or a view).
+pub fn views(task: &Arc<Task>, keep: impl Fn(&Unit) -> bool) -> Vec<(Arc<Unit>, Arc<Task>)> {
+    if task.owner.is_some() || task.clashes.is_empty() {
+        return Vec::new();
+    }
+    (0..task.units.len())
+        .filter(|&i| task.clashes.any(i))
+        .filter_map(|i| {
+            let unit = task.unit(i).filter(|u| keep(u))?.clone();
+            Some((unit, Arc::new(task.view(i))))
+        })
         .collect()
 }
 

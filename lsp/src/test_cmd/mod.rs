@@ -200,15 +200,15 @@ pub fn run_tests(
 fn programs_of(
     task: &Arc<rapid_analyzer::task::Task>,
 ) -> Vec<(Arc<rapid_analyzer::task::Task>, Option<String>)> {
-    if task.owner.is_some() || task.clashes.is_empty() {
+    let views = load::views(task, |_| true);
+    if views.is_empty() {
         return vec![(task.clone(), None)];
     }
-    (0..task.units.len())
-        .filter(|&i| task.clashes.any(i))
-        .filter_map(|i| {
-            let path = &task.unit(i)?.path;
-            let name = path.rsplit(['/', '\\']).next().unwrap_or(path).to_owned();
-            Some((Arc::new(task.view(i)), Some(name)))
+    views
+        .into_iter()
+        .map(|(unit, view)| {
+            let name = unit.path.rsplit(['/', '\\']).next().unwrap_or(&unit.path);
+            (view, Some(name.to_owned()))
         })
         .collect()
 }
