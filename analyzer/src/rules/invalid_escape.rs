@@ -62,3 +62,40 @@ pub(crate) fn check(cx: &mut Cx<'_>, node: Node<'_>) {
         );
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use std::sync::Arc;
+
+    use crate::task::{Task, Unit};
+
+    /// The checker (the grammar's escape tokens) and the evaluator (which
+    /// decodes strings when a program runs) agree on which backslashes
+    /// start no escape: one rule, two readings, compared.
+    #[test]
+    fn the_checker_flags_what_the_evaluator_refuses() {
+        let literals = [
+            r#""a\\b""#,
+            r#""\41""#,
+            r#""\0D\0A""#,
+            r#""\ff""#,
+            r#""\4""#,
+            r#""\G1""#,
+            r#""C:\temp""#,
+            r#""end\""#,
+            r#""\\\""#,
+            r#""a\\\\b""#,
+        ];
+        for lit in literals {
+            let text = format!("MODULE m\n  CONST string s := {lit};\nENDMODULE\n");
+            let unit = Arc::new(Unit::new("m.mod".into(), text, None));
+            let task = Task::new(String::new(), vec![unit.clone()], None);
+            let flagged = crate::workspace::diagnostics_of(&task, &unit)
+                .iter()
+                .any(|d| d.rule.code == super::RULE.code);
+            let refused = rapid_evaluator::parse_string_literal(lit)
+                .is_err_and(|e| e.message.contains("backslash"));
+            assert_eq!(flagged, refused, "{lit}");
+        }
+    }
+}
