@@ -241,6 +241,71 @@ fn a_rapid_client_talks_to_a_server_in_the_harness() {
     );
 }
 
+const POLLING: &str = "MODULE Poller
+  VAR socketdev sock;
+  VAR string text;
+  VAR num polls;
+  PROC main()
+    SocketCreate sock;
+    SocketConnect sock, \"10.0.0.7\", 3001 \\Time:=20;
+    TPWrite \"waiting \"\\Num:=SocketPeek(sock);
+    WHILE SocketPeek(sock) < 5 DO
+      WaitTime 0.1;
+      Incr polls;
+    ENDWHILE
+    TPWrite \"ready \"\\Num:=SocketPeek(sock);
+    TPWrite \"polled \"\\Bool:=polls >= 3;
+    SocketReceive sock \\Str:=text;
+    TPWrite \"got \" + text;
+    TPWrite \"then \"\\Num:=SocketPeek(sock);
+    WHILE TRUE DO
+      WaitTime 0.1;
+      polls := SocketPeek(sock);
+    ENDWHILE
+  ERROR
+    TPWrite \"closed \"\\Bool:=ERRNO = ERR_SOCK_CLOSED;
+  ENDPROC
+ENDMODULE
+";
+
+/// `SocketPeek` counts what waits to be read without reading it; while a
+/// socket is open to a real peer, the simulated clock keeps pace with
+/// real time, so a polling loop of `WaitTime 0.1` waits for the peer (a
+/// second of simulated time would not be enough otherwise).
+#[test]
+fn a_rapid_client_polls_with_socket_peek_in_real_time() {
+    use std::io::Write;
+    let dir = scratch("run-socket-peek");
+    write(&dir, &[("Poller.mod", POLLING)]);
+    let listener = std::net::TcpListener::bind("127.0.0.1:0").expect("a port");
+    let port = listener.local_addr().expect("an address").port();
+    let server = std::thread::spawn(move || {
+        let (mut s, _) = listener.accept().expect("the robot connects");
+        std::thread::sleep(std::time::Duration::from_millis(400));
+        s.write_all(b"hel").expect("sent");
+        std::thread::sleep(std::time::Duration::from_millis(300));
+        s.write_all(b"lo").expect("sent");
+        std::thread::sleep(std::time::Duration::from_millis(250));
+    });
+    let map = format!("10.0.0.7:3001=127.0.0.1:{port}");
+    let out = rapid(
+        &dir,
+        &[
+            "run",
+            "Poller.mod",
+            "--socket-map",
+            &map,
+            "--max-time",
+            "20",
+        ],
+    );
+    server.join().expect("the server");
+    assert_eq!(
+        show(&out),
+        "exit 0\n--- stdout\nwaiting 0\nready 5\npolled TRUE\ngot hello\nthen 0\nclosed TRUE\n--- stderr\n"
+    );
+}
+
 #[test]
 fn list_unsupported_names_each_call_a_run_would_stop_at() {
     let dir = scratch("run-list-unsupported");

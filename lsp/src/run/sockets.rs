@@ -62,6 +62,9 @@ pub struct HostSockets {
     socks: HashMap<u32, Sock>,
     next: u32,
     waited: Duration,
+    /// While a socket is open: a real instant and the simulated time
+    /// then, from which the simulated clock may not run ahead.
+    anchor: Option<(Instant, f64)>,
 }
 
 impl HostSockets {
@@ -71,6 +74,7 @@ impl HostSockets {
             socks: HashMap::new(),
             next: 1,
             waited: Duration::ZERO,
+            anchor: None,
         }
     }
 
@@ -348,6 +352,38 @@ impl Sockets for HostSockets {
         Ok(out)
     }
 
+    fn peek(&mut self, socket: u32) -> Result<usize, SocketError> {
+        let mut buf = vec![0u8; 65_536];
+        match self.sock(socket)? {
+            Sock::Stream(s) => {
+                let _ = s.set_nonblocking(true);
+                let r = match s.peek(&mut buf) {
+                    Ok(0) => Err(SocketError::Closed(
+                        "the other side closed the connection".to_owned(),
+                    )),
+                    Ok(n) => Ok(n),
+                    Err(e) if e.kind() == ErrorKind::WouldBlock => Ok(0),
+                    Err(e) => Err(closed(&e)),
+                };
+                let _ = s.set_nonblocking(false);
+                r
+            }
+            Sock::Udp(s) => {
+                let _ = s.set_nonblocking(true);
+                let r = match s.peek_from(&mut buf) {
+                    Ok((n, _)) => Ok(n),
+                    Err(e) if e.kind() == ErrorKind::WouldBlock => Ok(0),
+                    Err(e) => Err(SocketError::Failed(e.to_string())),
+                };
+                let _ = s.set_nonblocking(false);
+                r
+            }
+            _ => Err(SocketError::Failed(
+                "the socket is not connected".to_owned(),
+            )),
+        }
+    }
+
     fn close(&mut self, socket: u32) -> Result<(), SocketError> {
         if let Some(Sock::Stream(s)) = self.socks.remove(&socket) {
             let _ = s.shutdown(std::net::Shutdown::Both);
@@ -370,6 +406,20 @@ impl Sockets for HostSockets {
 
     fn waited(&mut self) -> f64 {
         std::mem::take(&mut self.waited).as_secs_f64()
+    }
+
+    fn pace(&mut self, from: f64, to: f64) {
+        if self.socks.is_empty() {
+            self.anchor = None;
+            return;
+        }
+        let (real, simulated) = *self.anchor.get_or_insert((Instant::now(), from));
+        let ahead = Duration::try_from_secs_f64(to - simulated).unwrap_or(Duration::ZERO);
+        let due = real + ahead;
+        let now = Instant::now();
+        if due > now {
+            std::thread::sleep(due - now);
+        }
     }
 }
 

@@ -279,6 +279,7 @@ const FUNCTIONS: &[(&str, FuncFn)] = &[
     ("UIListView", pendant::ui_list_view),
     ("UIClientExist", pendant::ui_client_exist),
     ("SocketGetStatus", sockets::socket_get_status),
+    ("SocketPeek", sockets::socket_peek),
     ("RawBytesLen", rawbytes::raw_bytes_len),
     ("IsMechUnitActive", units::is_mech_unit_active),
     ("GetMecUnitName", units::get_mec_unit_name),

@@ -335,3 +335,14 @@ pub(crate) fn socket_get_status(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
     };
     cx.predefined(state.constant())
 }
+
+/// `SocketPeek(Socket)`: how many bytes have come in and wait to be read,
+/// at once (a program polls with it instead of waiting in
+/// `SocketReceive`).
+pub(crate) fn socket_peek(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    let s = socket(cx, a, "Socket")?;
+    match cx.sh.sockets.peek(s) {
+        Ok(n) => Ok(Value::Num(n as f32)),
+        Err(e) => socket_error(cx, a, e),
+    }
+}

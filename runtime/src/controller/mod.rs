@@ -150,8 +150,19 @@ impl Shared {
         }
     }
 
-    /// Moves the clock to `t`, applying the changes due by then.
+    /// Moves the clock to `t`, applying the changes due by then; with
+    /// sockets open to real peers, no sooner than real time allows
+    /// ([`crate::world::Sockets::pace`]).
     pub(crate) fn advance_to(&mut self, t: f64) {
+        if t > self.clock {
+            self.sockets.pace(self.clock, t);
+        }
+        self.jump_to(t);
+    }
+
+    /// [`Self::advance_to`] without keeping pace with real time (the run
+    /// ends there).
+    fn jump_to(&mut self, t: f64) {
         for (name, value) in self.io.advance(t) {
             self.events.push((name, value));
         }
@@ -479,7 +490,7 @@ impl Controller {
         let t = t.max(self.sh.clock);
         let max = self.sh.limits.max_time;
         if t > max {
-            self.sh.advance_to(max);
+            self.sh.jump_to(max);
             for i in waiting {
                 let during = match self.tasks[i].waiting_for() {
                     Some(what) => format!(" ({what} waits)"),

@@ -100,11 +100,22 @@ pub trait Sockets: Send {
     ) -> Result<(Vec<u8>, String, u32), SocketError> {
         Err(SocketError::Unsupported)
     }
+    /// How many bytes have come in and wait to be read (`SocketPeek`),
+    /// without reading them and without waiting: the size of the next
+    /// datagram on a UDP socket.
+    fn peek(&mut self, _socket: u32) -> Result<usize, SocketError> {
+        Err(SocketError::Unsupported)
+    }
     /// The real seconds the sockets waited since this was last asked (the
     /// simulated clock moves by as much).
     fn waited(&mut self) -> f64 {
         0.0
     }
+    /// The simulated clock moves from `from` to `to` seconds. Sockets with
+    /// a real peer keep it from running ahead of real time while a socket
+    /// is open, as the peer sees a controller's timing (a `WaitTime 0.1`
+    /// in a polling loop takes 0.1 s).
+    fn pace(&mut self, _from: f64, _to: f64) {}
 }
 
 /// No sockets.
@@ -252,6 +263,14 @@ impl Sockets for EmptyNetwork {
     }
     fn receive(&mut self, socket: u32, _: usize, _: bool, _: f64) -> Result<Vec<u8>, SocketError> {
         self.slot(socket)?;
+        Err(SocketError::Closed(
+            "the socket is not connected".to_owned(),
+        ))
+    }
+    fn peek(&mut self, socket: u32) -> Result<usize, SocketError> {
+        if *self.slot(socket)? == SocketState::Bound && self.udp.contains(&socket) {
+            return Ok(0);
+        }
         Err(SocketError::Closed(
             "the socket is not connected".to_owned(),
         ))
