@@ -4,9 +4,10 @@
 //! alone from its `main` (as `rapid run FOLDER`; each of a folder's
 //! alternative programs alone, as `rapid run MODULE`), with no operator
 //! answers, the simulated network and the corpus test's budgets; each
-//! task's end is classified. The figures, the classes and the instructions
-//! that stop runs are generated into `docs/corpus-runs.md`, which the test
-//! checks (`RAPID_BLESS=1` rewrites it).
+//! task's end is classified. The figures, the classes, the instructions
+//! that stop runs and every call a run would stop at (reached or not) are
+//! generated into `docs/corpus-runs.md`, which the test checks
+//! (`RAPID_BLESS=1` rewrites it).
 
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
@@ -83,7 +84,15 @@ pub struct TaskRun {
     pub class: Class,
     /// The unsupported instruction, the error, the message.
     pub detail: String,
+    /// The calls of the task the simulation does not support (where a
+    /// run would stop, as `rapid run --list-unsupported` lists them): the
+    /// name and its place (`path:line:column`).
+    pub unsupported: Vec<(String, String)>,
 }
+
+/// A task of a run, before it runs: its name, its key on the page,
+/// whether it is a backup's, and its unsupported calls.
+type Member = (String, String, bool, Vec<(String, String)>);
 
 fn options() -> RunOptions {
     RunOptions {
@@ -132,7 +141,7 @@ pub fn sweep(dir: &Path) -> Result<Vec<TaskRun>, String> {
             .iter()
             .map(|(i, t)| load::to_run(t, found.settings[*i].as_ref(), lone, "main"))
             .collect();
-        let names: Vec<(String, String, bool)> = tasks
+        let names: Vec<Member> = tasks
             .iter()
             .map(|t| {
                 let key = if t.task.owner.is_some() {
@@ -140,13 +149,19 @@ pub fn sweep(dir: &Path) -> Result<Vec<TaskRun>, String> {
                 } else {
                     &t.task.key
                 };
-                (t.name.clone(), key.clone(), t.task.is_backup())
+                let check = rapid_runtime::load_check(&t.task);
+                let calls = load::program(t.task.clone(), &[], &check)
+                    .unsupported()
+                    .into_iter()
+                    .map(|(name, at)| (name, format!("{}:{}:{}", at.path, at.line, at.column)))
+                    .collect();
+                (t.name.clone(), key.clone(), t.task.is_backup(), calls)
             })
             .collect();
         let system = found.systems[members[0].0].clone();
         let loaded = Loaded { tasks, system };
         let result = execute(&loaded, &opts, Box::new(|_, _: &str| {}));
-        for (name, key, backup) in names {
+        for (name, key, backup, unsupported) in names {
             let (class, detail) = match &result {
                 Err(NotRun::LoadErrors(e)) => {
                     (Class::Refused, e.first().cloned().unwrap_or_default())
@@ -162,6 +177,7 @@ pub fn sweep(dir: &Path) -> Result<Vec<TaskRun>, String> {
                 backup,
                 class,
                 detail,
+                unsupported,
             });
         }
     }
@@ -252,6 +268,7 @@ pub fn page(runs: &[TaskRun]) -> String {
     for (name, n) in stops {
         let _ = writeln!(s, "| `{name}` | {n} |");
     }
+    unsupported_calls(&mut s, runs);
     let _ = writeln!(s, "\n## Every task\n");
     let _ = writeln!(
         s,
@@ -268,6 +285,39 @@ pub fn page(runs: &[TaskRun]) -> String {
         let _ = writeln!(s, "| `{}` | {backup} | {:?} | {detail} |", r.key, r.class);
     }
     s
+}
+
+/// Every call the simulation does not support, in any task (reached or
+/// not): by name, its call sites (each counted once, though several
+/// tasks or programs share its module) and the tasks that hold one.
+fn unsupported_calls(s: &mut String, runs: &[TaskRun]) {
+    let mut by_name: BTreeMap<&str, (std::collections::BTreeSet<&str>, usize)> = BTreeMap::new();
+    for r in runs {
+        let mut names: Vec<&str> = Vec::new();
+        for (name, at) in &r.unsupported {
+            by_name.entry(name).or_default().0.insert(at);
+            if !names.contains(&name.as_str()) {
+                names.push(name);
+            }
+        }
+        for name in names {
+            by_name.entry(name).or_default().1 += 1;
+        }
+    }
+    let mut rows: Vec<(&str, usize, usize)> = by_name
+        .into_iter()
+        .map(|(name, (sites, tasks))| (name, sites.len(), tasks))
+        .collect();
+    rows.sort_by(|a, b| b.1.cmp(&a.1).then_with(|| a.0.cmp(b.0)));
+    let sites: usize = rows.iter().map(|r| r.1).sum();
+    let _ = writeln!(
+        s,
+        "\n## Calls the simulation does not support\n\nEvery call a run would stop at, reached or not (`rapid run --list-unsupported`): {sites} call sites of {} instructions and functions.\n\n| instruction or function | call sites | tasks |\n| --- | ---: | ---: |",
+        rows.len()
+    );
+    for (name, n, tasks) in rows {
+        let _ = writeln!(s, "| `{name}` | {n} | {tasks} |");
+    }
 }
 
 fn percent(a: usize, b: usize) -> usize {
@@ -302,6 +352,11 @@ mod tests {
                     .strip_prefix(&dir)
                     .map_or(r.key.clone(), |p| p.to_string_lossy().into_owned()),
                 detail: r.detail.replace(&*dir.to_string_lossy(), ""),
+                unsupported: r
+                    .unsupported
+                    .iter()
+                    .map(|(n, at)| (n.clone(), at.replace(&*dir.to_string_lossy(), "")))
+                    .collect(),
                 ..r
             })
             .collect();
