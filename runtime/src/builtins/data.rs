@@ -258,6 +258,13 @@ pub(crate) fn stop(_: &mut Cx<'_>, _: &mut Args) -> R<Done> {
     fault(FaultKind::Halt(Status::Stopped))
 }
 
+/// `WarmStart`: the controller restarts, and its program stops there (it
+/// does not start again by itself).
+pub(crate) fn warm_start(cx: &mut Cx<'_>, _: &mut Args) -> R<Done> {
+    cx.trace("WarmStart: the controller restarts; the program stops");
+    fault(FaultKind::Halt(Status::Stopped))
+}
+
 /// `ExitCycle`: the cycle ends; a single run ends with it.
 pub(crate) fn exit_cycle(_: &mut Cx<'_>, _: &mut Args) -> R<Done> {
     fault(FaultKind::Halt(Status::Exited))

@@ -123,3 +123,29 @@ pub(crate) fn speed_refresh(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     cx.m.settings.refresh = over;
     Ok(Done::Next)
 }
+
+/// `SpeedLimAxis MechUnit, AxisNo, AxisSpeed` and `SpeedLimCheckPoint
+/// RobSpeed`: the speeds the controller keeps to while it limits speed
+/// (a speed-limiting input or SafeMove). The simulation never limits
+/// speed that way, so the robot keeps its programmed speeds; the setting
+/// is traced.
+pub(crate) fn speed_limit(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let (what, speed) = if a.name.eq_ignore_ascii_case("SpeedLimAxis") {
+        let axis = cx.num(a, "AxisNo")?;
+        (format!("axis {axis}"), cx.num(a, "AxisSpeed")?)
+    } else {
+        ("the check points".to_owned(), cx.num(a, "RobSpeed")?)
+    };
+    if speed < 0.0 {
+        return fault(named_error(
+            &cx.m.prog,
+            "ERR_ARGVALERR",
+            format!("{}: a speed limit of {speed} is negative", a.name),
+        ));
+    }
+    cx.trace(&format!(
+        "{}: {what} at most {speed} while the controller limits speed, which the simulation never does",
+        a.name
+    ));
+    Ok(Done::Next)
+}
