@@ -63,6 +63,22 @@ pub(crate) struct Module {
     pub name: String,
 }
 
+/// A module data object, for a symbol search (`SetDataSearch`).
+#[derive(Clone, Debug)]
+pub(crate) struct Symbol {
+    /// Its module's index in [`Program::modules`].
+    pub module: usize,
+    pub name: String,
+    pub storage: Storage,
+    /// Not `LOCAL`.
+    pub global: bool,
+    /// Its type's name.
+    pub ty: String,
+    /// An array.
+    pub array: bool,
+    pub home: Home,
+}
+
 /// Where a data object of the program is stored.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Home {
@@ -521,6 +537,48 @@ impl Program {
             Callee::Routine(item) => self.routine_ids.get(&item).copied(),
             Callee::Builtin(_) => None,
         }
+    }
+
+    /// The data objects declared in the modules, in module order then
+    /// declaration order (what a symbol search goes through).
+    pub(crate) fn module_symbols(&self) -> Vec<Symbol> {
+        let mut out = Vec::new();
+        for (k, m) in self.modules.iter().enumerate() {
+            let Some(decl) = self
+                .task
+                .units
+                .get(m.unit)
+                .and_then(|u| u.items.modules.get(m.index))
+            else {
+                continue;
+            };
+            for (i, d) in decl.data.iter().enumerate() {
+                let item = ItemRef {
+                    unit: m.unit,
+                    module: m.index,
+                    item: Item::Data(i),
+                };
+                if let Some(&home) = self.items.get(&item) {
+                    out.push(Symbol {
+                        module: k,
+                        name: d.name.clone(),
+                        storage: d.storage,
+                        global: d.scope != Scope::Local,
+                        ty: d.ty.as_ref().map(|t| t.name.clone()).unwrap_or_default(),
+                        array: !d.dims.is_empty(),
+                        home,
+                    });
+                }
+            }
+        }
+        out
+    }
+
+    /// The index of the module named `name`.
+    pub(crate) fn module_named(&self, name: &str) -> Option<usize> {
+        self.modules
+            .iter()
+            .position(|m| m.name.eq_ignore_ascii_case(name))
     }
 
     /// The data object `name` names at run time from module `module`

@@ -93,6 +93,11 @@ const FIRST_BOOKED: f32 = 500.0;
 /// routine's module sees the name.
 pub(crate) fn data_named(cx: &Cx<'_>, name: &str) -> R<Place> {
     let module = cx.m.frames.last().map_or(usize::MAX, |f| f.code.module);
+    data_in(cx, module, name)
+}
+
+/// The data object `name`, as module `module` sees the name.
+fn data_in(cx: &Cx<'_>, module: usize, name: &str) -> R<Place> {
     let root = match cx.m.prog.data_named(module, name) {
         Some(Home::Global(g)) => Root::Global(g),
         Some(Home::Pers(k)) => match cx.m.pers_map.get(k as usize) {
@@ -112,20 +117,34 @@ fn no_symbol<T>(cx: &Cx<'_>, name: &str) -> R<T> {
     ))
 }
 
-/// `GetDataVal Object, Value`: copies the data object named `Object`.
+/// The data object named `name`, as the running routine's module sees
+/// it, or as the module of `\Block` (a `GetNextSym` match) does.
+fn data_in_block(cx: &mut Cx<'_>, a: &Args, name: &str) -> R<Place> {
+    let Some(block) = cx.opt(a, "Block")? else {
+        return data_named(cx, name);
+    };
+    match super::symbols::block_module(&block) {
+        Some(module) => data_in(cx, module, name),
+        None => no_symbol(cx, name),
+    }
+}
+
+/// `GetDataVal Object [\Block], Value`: copies the data object named
+/// `Object`.
 pub(crate) fn get_data_val(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     let name = cx.string(a, "Object")?;
-    let from = data_named(cx, &name)?;
+    let from = data_in_block(cx, a, &name)?;
     let v = cx.m.load(cx.sh, &from)?;
     let p = cx.place_arg(a, "Value")?;
     cx.store(&p, v)?;
     Ok(Done::Next)
 }
 
-/// `SetDataVal Object, Value`: sets the data object named `Object`.
+/// `SetDataVal Object [\Block], Value`: sets the data object named
+/// `Object`.
 pub(crate) fn set_data_val(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     let name = cx.string(a, "Object")?;
-    let to = data_named(cx, &name)?;
+    let to = data_in_block(cx, a, &name)?;
     let v = cx.req(a, "Value")?;
     cx.store(&to, v)?;
     Ok(Done::Next)

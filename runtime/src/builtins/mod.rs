@@ -22,6 +22,7 @@ pub(crate) mod rawbytes;
 pub(crate) mod save;
 pub(crate) mod settings;
 pub(crate) mod sockets;
+pub(crate) mod symbols;
 pub(crate) mod tasks;
 pub(crate) mod triggs;
 pub(crate) mod units;
@@ -97,6 +98,8 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("BookErrNo", data::book_err_no),
     ("GetDataVal", data::get_data_val),
     ("SetDataVal", data::set_data_val),
+    ("SetDataSearch", symbols::set_data_search),
+    ("SetAllDataVal", symbols::set_all_data_val),
     ("CallByVar", data::call_by_var),
     ("WaitTime", data::wait_time),
     ("ClkReset", data::clk_reset),
@@ -283,6 +286,7 @@ const FUNCTIONS: &[(&str, FuncFn)] = &[
     ("UIClientExist", pendant::ui_client_exist),
     ("SocketGetStatus", sockets::socket_get_status),
     ("SocketPeek", sockets::socket_peek),
+    ("GetNextSym", symbols::get_next_sym),
     ("RawBytesLen", rawbytes::raw_bytes_len),
     ("IsMechUnitActive", units::is_mech_unit_active),
     ("GetMecUnitName", units::get_mec_unit_name),

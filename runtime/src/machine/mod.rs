@@ -270,6 +270,8 @@ pub struct Machine {
     pub(crate) settings: crate::builtins::settings::MotionSettings,
     /// The task's world zones and their shapes.
     pub(crate) zones: crate::builtins::zones::Zones,
+    /// The symbol search `SetDataSearch` started.
+    pub(crate) search: crate::builtins::symbols::Search,
 }
 
 impl Machine {
@@ -327,6 +329,7 @@ impl Machine {
             active_load: None,
             settings: Default::default(),
             zones: Default::default(),
+            search: Default::default(),
             name,
             number,
             prog,
