@@ -50,7 +50,10 @@ const CELLS: &[(&str, &[&str])] = &[
 fn corpus() -> PathBuf {
     match std::env::var_os("RAPID_CORPUS") {
         Some(dir) => PathBuf::from(dir),
-        None => Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shared/corpus"),
+        None => {
+            let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shared/corpus");
+            std::fs::canonicalize(&dir).unwrap_or(dir)
+        }
     }
 }
 

@@ -21,11 +21,10 @@ pub mod layout;
 /// The corpus folder, if there is one.
 pub fn corpus_dir() -> Option<PathBuf> {
     if let Some(dir) = std::env::var_os("RAPID_CORPUS") {
-        let dir = PathBuf::from(dir);
-        return dir.is_dir().then_some(dir);
+        return std::fs::canonicalize(dir).ok().filter(|d| d.is_dir());
     }
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shared/corpus");
-    dir.is_dir().then_some(dir)
+    std::fs::canonicalize(dir).ok().filter(|d| d.is_dir())
 }
 
 /// Every file below `dir` (recursively, links followed as the file system
