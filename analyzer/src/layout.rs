@@ -143,7 +143,13 @@ pub fn is_within(path: &str, folder: &str) -> bool {
 /// `HOME`, and `home` is where Unix systems keep their users' folders
 /// (`/home/NAME/...`, where projects and backups are kept).
 fn is_controller_home(parts: &[&str], i: usize) -> bool {
-    parts[i].eq_ignore_ascii_case("home") && parts[i] != "home"
+    is_home_folder(parts[i])
+}
+
+/// Is a folder of this name a controller's `HOME` (any case but all
+/// lower case, which is a Unix system's `/home`)?
+pub fn is_home_folder(name: &str) -> bool {
+    name.eq_ignore_ascii_case("home") && name != "home"
 }
 
 /// The backup folder of a configuration file in its `SYSPAR/` folder.

@@ -384,6 +384,60 @@ ENDMODULE
     assert!(moc.contains("-base_frame_pos_x 1.25"));
 }
 
+/// File instructions see the controller's `HOME:`: a backup's `HOME`
+/// folder, copied into the run's sandbox, so a program reads its
+/// configuration files and writes its logs without changing the backup;
+/// `--sandbox DIR` is used as it is.
+#[test]
+fn a_backup_s_home_files_are_what_home_holds_and_stay_unchanged() {
+    let dir = scratch("run-home");
+    let module = "MODULE Cfg
+  VAR iodev f;
+  VAR string line;
+  PROC main()
+    Open \"HOME:/cell/config.txt\", f \\Read;
+    line := ReadStr(f);
+    Close f;
+    TPWrite \"config \" + line;
+    Open \"HOME:/cell/config.txt\", f \\Append;
+    Write f, \"changed\";
+    Close f;
+    Open \"HOME:/log.txt\", f \\Write;
+    Write f, \"ran\";
+    Close f;
+    TPWrite \"logged\";
+  ENDPROC
+ENDMODULE
+";
+    write(
+        &dir,
+        &[
+            ("Cell/RAPID/TASK1/PROGMOD/Cfg.mod", module),
+            ("Cell/HOME/cell/config.txt", "speed=250\n"),
+        ],
+    );
+    let out = rapid(&dir, &["run", "Cell"]);
+    assert_eq!(
+        show(&out),
+        "exit 0\n--- stdout\nconfig speed=250\nlogged\n--- stderr\n"
+    );
+    let config = std::fs::read_to_string(dir.join("Cell/HOME/cell/config.txt")).expect("kept");
+    assert_eq!(config, "speed=250\n");
+    assert!(!dir.join("Cell/HOME/log.txt").exists());
+    // A sandbox given is the HOME: the file is not there.
+    let empty = dir.join("empty");
+    std::fs::create_dir_all(&empty).expect("a folder");
+    let out = rapid(
+        &dir,
+        &["run", "Cell", "--sandbox", &empty.to_string_lossy()],
+    );
+    assert!(
+        show(&out).contains("HOME:/cell/config.txt"),
+        "{}",
+        show(&out)
+    );
+}
+
 #[test]
 fn rapid_toml_names_the_controller_get_sys_info_describes() {
     let dir = scratch("run-sys-info-toml");

@@ -280,7 +280,7 @@ impl Session {
         let Some(mut launch) = self.launch.take() else {
             return;
         };
-        let sandbox = Sandbox::new(None).ok();
+        let sandbox = Sandbox::seeded(None, launch.loaded.home.as_deref()).ok();
         launch.options.sandbox = sandbox.as_ref().map(|s| s.path.clone());
         self.sandbox = sandbox;
         let writer = self.writer.clone();

@@ -272,6 +272,7 @@ pub fn run(roots: &[PathBuf], params: RunParams) -> Result<Answer<RunReport>, St
         Budget {
             limits,
             sandbox: None,
+            home_roots: Some(roots.to_vec()),
             trace: true,
             answers: params.answers,
         },
@@ -417,6 +418,7 @@ pub fn test(roots: &[PathBuf], params: TestParams) -> Result<Answer<TestReport>,
             sets,
             limits,
             sandbox: None,
+            home_roots: Some(roots.to_vec()),
         },
         &mut |_| {},
     )?;

@@ -131,9 +131,7 @@ pub fn sweep(dir: &Path) -> Result<Vec<TaskRun>, String> {
             groups.entry(key).or_default().push((i, view));
         }
     }
-    let sandbox = super::Sandbox::new(None)?;
     let mut opts = options();
-    opts.sandbox = Some(sandbox.path.clone());
     let mut out = Vec::new();
     for (group, members) in &groups {
         let lone = members.len() == 1;
@@ -159,7 +157,14 @@ pub fn sweep(dir: &Path) -> Result<Vec<TaskRun>, String> {
             })
             .collect();
         let system = found.systems[members[0].0].clone();
-        let loaded = Loaded { tasks, system };
+        let home = load::home_of(&found.tasks[members[0].0].key);
+        let sandbox = super::Sandbox::seeded(None, home.as_deref())?;
+        opts.sandbox = Some(sandbox.path.clone());
+        let loaded = Loaded {
+            tasks,
+            system,
+            home,
+        };
         let result = execute(&loaded, &opts, Box::new(|_, _: &str| {}));
         for (name, key, backup, unsupported) in names {
             let (class, detail) = match &result {
@@ -328,11 +333,12 @@ fn percent(a: usize, b: usize) -> usize {
 /// repository.
 pub fn corpus_dir() -> Option<PathBuf> {
     if let Some(dir) = std::env::var_os("RAPID_CORPUS") {
-        let dir = PathBuf::from(dir);
-        return dir.is_dir().then_some(dir);
+        return std::fs::canonicalize(dir).ok().filter(|d| d.is_dir());
     }
+    // Resolved: the runs' paths are the loader's (no `..`), and the page
+    // shows them relative to this folder.
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shared/corpus");
-    dir.is_dir().then_some(dir)
+    std::fs::canonicalize(dir).ok().filter(|d| d.is_dir())
 }
 
 #[cfg(test)]

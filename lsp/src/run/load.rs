@@ -71,6 +71,47 @@ pub fn tasks_in(env: &dyn Environment, paths: &[PathBuf]) -> Result<Found, Strin
     })
 }
 
+/// The controller's `HOME:` folder for the task `key`: a backup's `HOME`
+/// folder, else the `HOME` folder that holds the task (a project keeps
+/// its controller's HOME so; never a Unix system's `/home`). File
+/// instructions see a copy of it ([`super::Sandbox::seeded`]).
+pub fn home_of(key: &str) -> Option<PathBuf> {
+    let is_home = |p: &Path| {
+        p.file_name()
+            .is_some_and(|n| rapid_analyzer::layout::is_home_folder(&n.to_string_lossy()))
+            && p.is_dir()
+    };
+    if let Some(root) = rapid_analyzer::layout::backup_root(key) {
+        let found = std::fs::read_dir(root)
+            .ok()?
+            .filter_map(Result::ok)
+            .map(|e| e.path())
+            .find(|p| is_home(p));
+        if found.is_some() {
+            return found;
+        }
+    }
+    Path::new(key)
+        .ancestors()
+        .find(|p| is_home(p))
+        .map(Path::to_path_buf)
+}
+
+/// [`home_of`], when it lies inside one of `roots` (`None`: anywhere), as
+/// a server that may read only inside its roots asks.
+pub fn home_within(key: &str, roots: Option<&[PathBuf]>) -> Option<PathBuf> {
+    let home = home_of(key)?;
+    let Some(roots) = roots else {
+        return Some(home);
+    };
+    let real = std::fs::canonicalize(&home).ok()?;
+    roots
+        .iter()
+        .filter_map(|r| std::fs::canonicalize(r).ok())
+        .any(|r| real.starts_with(r))
+        .then_some(home)
+}
+
 /// The controller of the task `key` for `ReadCfgData` and `GetSysInfo`:
 /// the configuration files that apply to it (a backup's `SYSPAR`), read by
 /// the analyzer's one reader, and what `BACKINFO` says (the system's name,
@@ -146,6 +187,8 @@ pub struct TaskToRun {
 pub struct Loaded {
     pub tasks: Vec<TaskToRun>,
     pub system: System,
+    /// The controller's `HOME:` folder ([`home_of`]).
+    pub home: Option<PathBuf>,
 }
 
 /// The controller `path` holds, to run: every task of a backup (or of a
@@ -165,6 +208,7 @@ pub fn controller(path: &Path, only: Option<&str>, entry: Option<&str>) -> Resul
         found.tasks.len() > 1 && (one_backup(&found.tasks) || folder_of_tasks(path, &found.tasks));
     let lone = found.tasks.len() == 1;
     let system = found.systems.first().cloned().unwrap_or_default();
+    let home = found.tasks.first().and_then(|t| home_of(&t.key));
     let mut out: Vec<TaskToRun> = found
         .tasks
         .iter()
@@ -188,6 +232,7 @@ pub fn controller(path: &Path, only: Option<&str>, entry: Option<&str>) -> Resul
         return Ok(Loaded {
             tasks: vec![t],
             system,
+            home,
         });
     }
     if let Some(programs) = out
@@ -198,7 +243,11 @@ pub fn controller(path: &Path, only: Option<&str>, entry: Option<&str>) -> Resul
         return Err(name_one_of(path, &programs));
     }
     if lone || together {
-        return Ok(Loaded { tasks: out, system });
+        return Ok(Loaded {
+            tasks: out,
+            system,
+            home,
+        });
     }
     let with_entry: Vec<usize> = (0..out.len())
         .filter(|&i| declares(&out[i].task, entry))
@@ -210,6 +259,7 @@ pub fn controller(path: &Path, only: Option<&str>, entry: Option<&str>) -> Resul
             Ok(Loaded {
                 tasks: vec![t],
                 system,
+                home,
             })
         }
         _ => {
@@ -452,6 +502,39 @@ pub fn program(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_controller_s_home_is_the_backup_s_or_the_one_around_never_slash_home() {
+        let dir = std::env::temp_dir().join(format!("rapid-home-of-{}", std::process::id()));
+        for d in [
+            "Cell/RAPID/TASK1",
+            "Cell/HOME",
+            "proj/HOME/parts",
+            "home/user/prog",
+        ] {
+            std::fs::create_dir_all(dir.join(d)).expect("a folder");
+        }
+        let key = |p: &str| dir.join(p).to_string_lossy().into_owned();
+        assert_eq!(
+            home_of(&key("Cell/RAPID/TASK1")),
+            Some(dir.join("Cell/HOME"))
+        );
+        assert_eq!(
+            home_of(&key("proj/HOME/parts")),
+            Some(dir.join("proj/HOME"))
+        );
+        // A Unix system's `/home` is no controller's.
+        assert_eq!(home_of(&key("home/user/prog")), None);
+        // A server confined to a folder inside the HOME gets none.
+        let inner = [dir.join("proj/HOME/parts")];
+        assert_eq!(home_within(&key("proj/HOME/parts"), Some(&inner)), None);
+        let outer = [dir.join("proj")];
+        assert_eq!(
+            home_within(&key("proj/HOME/parts"), Some(&outer)),
+            Some(dir.join("proj/HOME"))
+        );
+        let _ = std::fs::remove_dir_all(&dir);
+    }
 
     #[test]
     fn set_options_parse_or_say_what_is_wrong() {

@@ -28,7 +28,7 @@ pub mod sockets;
 pub mod trace;
 
 use std::io::Write;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use rapid_runtime::world::World;
@@ -70,7 +70,8 @@ pub struct RunArgs {
     #[arg(long)]
     pub report: bool,
     /// The folder file instructions work in (default: a fresh temporary
-    /// folder, removed after the run).
+    /// folder holding a copy of the controller's HOME, a backup's
+    /// `HOME` folder, removed after the run).
     #[arg(long, value_name = "DIR")]
     pub sandbox: Option<PathBuf>,
     /// The operator's answers to the pendant's questions (`TPReadFK`,
@@ -303,11 +304,15 @@ pub fn build(
 }
 
 /// What a run may use: its budgets, the folder its file instructions work
-/// in (a fresh temporary one, removed after the run, when `None`), and
+/// in (a fresh temporary one holding a copy of the controller's `HOME`,
+/// removed after the run, when `None`), and
 /// whether its moves are recorded.
 pub struct Budget {
     pub limits: Limits,
     pub sandbox: Option<PathBuf>,
+    /// The folders the controller's `HOME` may be copied from into the
+    /// temporary sandbox (`None`: wherever it is).
+    pub home_roots: Option<Vec<PathBuf>>,
     pub trace: bool,
     /// The operator's answers, one a question ([`operator`]'s forms).
     pub answers: Vec<String>,
@@ -334,6 +339,7 @@ pub fn run_routine(
     budget: Budget,
     out: Box<dyn Output>,
 ) -> Result<Ran, String> {
+    let home = load::home_within(&task.key, budget.home_roots.as_deref());
     let loaded = load::Loaded {
         tasks: vec![load::TaskToRun {
             name: "T_ROB1".to_owned(),
@@ -344,7 +350,7 @@ pub fn run_routine(
         }],
         ..load::Loaded::default()
     };
-    let sandbox = Sandbox::new(budget.sandbox)?;
+    let sandbox = Sandbox::seeded(budget.sandbox, home.as_deref())?;
     let options = RunOptions {
         sets,
         limits: budget.limits,
@@ -414,7 +420,7 @@ fn run_inner(args: RunArgs) -> Result<ExitCode, String> {
         list_unsupported(&loaded, &sets);
         return Ok(ExitCode::SUCCESS);
     }
-    let sandbox = Sandbox::new(args.sandbox.clone())?;
+    let sandbox = Sandbox::seeded(args.sandbox.clone(), loaded.home.as_deref())?;
     let options = RunOptions {
         sets,
         limits: args.limits.limits(),
@@ -558,6 +564,20 @@ pub struct Sandbox {
 }
 
 impl Sandbox {
+    /// [`Sandbox::new`]; a temporary folder starts as a copy of the
+    /// controller's `home` (a backup's `HOME`), so file instructions read
+    /// what the controller's `HOME:` held and never change the backup. A
+    /// folder given is used as it is.
+    pub fn seeded(given: Option<PathBuf>, home: Option<&Path>) -> Result<Sandbox, String> {
+        let given_one = given.is_some();
+        let sandbox = Sandbox::new(given)?;
+        if let Some(home) = home.filter(|_| !given_one) {
+            copy_folder(home, &sandbox.path)
+                .map_err(|e| format!("{}: cannot copy into the sandbox: {e}", home.display()))?;
+        }
+        Ok(sandbox)
+    }
+
     pub fn new(given: Option<PathBuf>) -> Result<Sandbox, String> {
         if let Some(path) = given {
             if !path.is_dir() {
@@ -578,6 +598,22 @@ impl Sandbox {
             temporary: true,
         })
     }
+}
+
+/// Copies the files and folders of `from` into `to` (links are left out).
+fn copy_folder(from: &Path, to: &Path) -> std::io::Result<()> {
+    for entry in std::fs::read_dir(from)? {
+        let entry = entry?;
+        let kind = entry.file_type()?;
+        let target = to.join(entry.file_name());
+        if kind.is_dir() {
+            std::fs::create_dir_all(&target)?;
+            copy_folder(&entry.path(), &target)?;
+        } else if kind.is_file() {
+            std::fs::copy(entry.path(), &target)?;
+        }
+    }
+    Ok(())
 }
 
 impl Drop for Sandbox {

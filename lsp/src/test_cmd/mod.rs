@@ -66,7 +66,7 @@ pub struct TestArgs {
     #[arg(long = "set", value_name = "SIG=V[@T]")]
     pub set: Vec<String>,
     /// The folder file instructions work in (default: a fresh temporary
-    /// folder per test).
+    /// folder per test, holding a copy of the controller's `HOME`).
     #[arg(long, value_name = "DIR")]
     pub sandbox: Option<PathBuf>,
     #[command(flatten)]
@@ -133,6 +133,7 @@ fn run_inner(args: TestArgs) -> Result<ExitCode, String> {
         sets,
         limits: args.limits.limits(),
         sandbox: args.sandbox.clone(),
+        home_roots: None,
     };
     let results = run_tests(&found.tasks, &options, &mut |e| {
         let _ = writeln!(anstream::stderr(), "rapid: test: {e}");
@@ -166,8 +167,11 @@ pub struct TestOptions {
     pub sets: Vec<SignalChange>,
     pub limits: rapid_runtime::Limits,
     /// The folder file instructions work in (default: a fresh temporary
-    /// folder per test).
+    /// folder per test, holding a copy of the controller's `HOME`).
     pub sandbox: Option<PathBuf>,
+    /// The folders the controller's `HOME` may be copied from (`None`:
+    /// wherever it is).
+    pub home_roots: Option<Vec<PathBuf>>,
 }
 
 /// Runs the tests of `tasks` (the library entry point of `rapid test`):
@@ -220,6 +224,7 @@ fn run_task_tests(
     load_error: &mut dyn FnMut(&rapid_runtime::LoadError),
     results: &mut Vec<TestResult>,
 ) -> Result<(), String> {
+    let home = load::home_within(&task.key, options.home_roots.as_deref());
     let task = load::with_modules(task, &[(ASSERT_PATH, ASSERT_MODULE)]);
     let check = rapid_runtime::load_check(&task);
     let program = load::program(task, &options.sets, &check);
@@ -236,7 +241,7 @@ fn run_task_tests(
         return Ok(());
     }
     for test in tests {
-        results.push(run_test(&program, &test, options)?);
+        results.push(run_test(&program, &test, options, home.as_deref())?);
     }
     Ok(())
 }
@@ -296,8 +301,9 @@ fn run_test(
     program: &Arc<Program>,
     test: &Test,
     options: &TestOptions,
+    home: Option<&std::path::Path>,
 ) -> Result<TestResult, String> {
-    let sandbox = Sandbox::new(options.sandbox.clone())?;
+    let sandbox = Sandbox::seeded(options.sandbox.clone(), home)?;
     let config = Config {
         limits: options.limits.clone(),
         signals: options.sets.clone(),
