@@ -94,6 +94,25 @@ fn a_backup_runs_every_task_together() {
 
 #[test]
 fn a_backup_without_its_syspar_takes_the_task_names_backinfo_then_rapid_toml_give() {
+    // Neither: the tasks keep their folders' names, and the run says so.
+    let dir = scratch("run-tasks-unnamed");
+    write(
+        &dir,
+        &[
+            ("cell/RAPID/TASK1/PROGMOD/Main1.mod", ROB1),
+            ("cell/RAPID/TASK2/PROGMOD/Main2.mod", ROB2),
+        ],
+    );
+    let (code, _, err) = run(&dir, &["run", "cell"]);
+    assert_eq!(code, Some(1), "{err}");
+    assert!(
+        err.contains("there is no task T_ROB1 in the controller (its tasks: TASK1, TASK2)"),
+        "{err}"
+    );
+    assert!(
+        err.contains("= help: the tasks have their folders' names"),
+        "{err}"
+    );
     let sources = [
         (
             "run-tasks-backinfo",

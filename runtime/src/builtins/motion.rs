@@ -164,7 +164,7 @@ impl Cx<'_> {
                 None => fault(named_error(
                     &self.m.prog,
                     "ERR_TASKNAME",
-                    format!("{}: there is no task {name}", a.name),
+                    format!("{}: {}", a.name, self.sh.no_such_task(&name)),
                 )),
             },
             None => Ok(None),

@@ -108,7 +108,7 @@ fn task_list(cx: &mut Cx<'_>, a: &Args) -> R<(Vec<String>, Vec<usize>)> {
                 return fault(named_error(
                     &cx.m.prog,
                     "ERR_TASKNAME",
-                    format!("{}: there is no task {name} in the controller", a.name),
+                    format!("{}: {}", a.name, cx.sh.no_such_task(&name)),
                 ));
             }
         }

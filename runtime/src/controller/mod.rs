@@ -174,6 +174,14 @@ impl Shared {
         self.clock = self.clock.max(t);
     }
 
+    /// Why a task name names no task: the controller's tasks.
+    pub(crate) fn no_such_task(&self, name: &str) -> String {
+        format!(
+            "there is no task {name} in the controller (its tasks: {})",
+            self.names.join(", ")
+        )
+    }
+
     /// The index of the task named `name`.
     pub(crate) fn task_named(&self, name: &str) -> Option<usize> {
         self.names.iter().position(|n| n.eq_ignore_ascii_case(name))
