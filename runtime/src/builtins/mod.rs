@@ -15,6 +15,7 @@ pub(crate) mod dnum;
 pub(crate) mod files;
 pub(crate) mod gripper;
 pub(crate) mod io;
+pub(crate) mod modules;
 pub(crate) mod motion;
 pub(crate) mod output;
 pub(crate) mod pendant;
@@ -99,6 +100,12 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("GetDataVal", data::get_data_val),
     ("SetDataVal", data::set_data_val),
     ("SetDataSearch", symbols::set_data_search),
+    ("Load", modules::load_module),
+    ("UnLoad", modules::unload_module),
+    ("StartLoad", modules::start_load),
+    ("WaitLoad", modules::wait_load),
+    ("CancelLoad", modules::cancel_load),
+    ("EraseModule", modules::erase_module),
     ("SetAllDataVal", symbols::set_all_data_val),
     ("CallByVar", data::call_by_var),
     ("WaitTime", data::wait_time),
@@ -287,6 +294,7 @@ const FUNCTIONS: &[(&str, FuncFn)] = &[
     ("SocketGetStatus", sockets::socket_get_status),
     ("SocketPeek", sockets::socket_peek),
     ("GetNextSym", symbols::get_next_sym),
+    ("ModExist", modules::mod_exist),
     ("RawBytesLen", rawbytes::raw_bytes_len),
     ("IsMechUnitActive", units::is_mech_unit_active),
     ("GetMecUnitName", units::get_mec_unit_name),

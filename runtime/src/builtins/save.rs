@@ -13,9 +13,8 @@ use crate::world::FileError;
 /// module of this task named `ModuleName` (`ERR_MODULE` when there is
 /// none) to `FilePath` (a folder when `\File` names the file), persistents
 /// at their current values; a file that cannot be written raises
-/// `ERR_FILEOPEN`. The simulation saves the task's own modules, and only
-/// to a path the program gives (the controller's default is the file a
-/// `Load` read the module from).
+/// `ERR_FILEOPEN`. Without `\FilePath`, a module `Load` loaded goes back
+/// to its file; the simulation saves the task's own modules.
 pub(crate) fn save(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     if let Some(task) = cx.named_task(a)?
         && task + 1 != cx.m.number
@@ -26,40 +25,51 @@ pub(crate) fn save(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
         )));
     }
     let name = cx.string(a, "ModuleName")?;
-    let Some(path) = cx.opt(a, "FilePath")? else {
-        return fault(FaultKind::Unsupported(
-            "Save without \\FilePath (the file a Load read the module from)".to_owned(),
-        ));
-    };
-    let mut path = path.as_str().unwrap_or_default().to_owned();
-    if let Some(file) = cx.opt(a, "File")? {
-        if !path.ends_with('/') && !path.ends_with(':') {
-            path.push('/');
+    let path = match cx.opt(a, "FilePath")? {
+        Some(path) => {
+            let mut path = path.as_str().unwrap_or_default().to_owned();
+            if let Some(file) = cx.opt(a, "File")? {
+                if !path.ends_with('/') && !path.ends_with(':') {
+                    path.push('/');
+                }
+                path.push_str(file.as_str().unwrap_or_default());
+            }
+            path
         }
-        path.push_str(file.as_str().unwrap_or_default());
-    }
-    let Some(text) = module_text(cx, &name) else {
+        None => match super::modules::path_of_module(cx, &name) {
+            Some(path) => path,
+            None => {
+                return fault(FaultKind::Unsupported(
+                    "Save without \\FilePath of a module no Load loaded (the file the controller loaded it from)"
+                        .to_owned(),
+                ));
+            }
+        },
+    };
+    write_module(cx, "Save", &name, &path)?;
+    Ok(Done::Next)
+}
+
+/// Writes the task's module `name` to `path` (for `what`, an instruction).
+pub(crate) fn write_module(cx: &mut Cx<'_>, what: &str, name: &str, path: &str) -> R<()> {
+    let Some(text) = module_text(cx, name) else {
         return fault(named_error(
             &cx.m.prog,
             "ERR_MODULE",
-            format!("Save: the task has no module {name}"),
+            format!("{what}: the task has no module {name}"),
         ));
     };
-    match cx
-        .sh
-        .files
-        .write(&path, &super::files::latin1(&text), false)
-    {
-        Ok(()) => Ok(Done::Next),
-        Err(FileError::Unsupported(why)) => fault(FaultKind::Unsupported(format!("Save ({why})"))),
+    match cx.sh.files.write(path, &super::files::latin1(&text), false) {
+        Ok(()) => Ok(()),
+        Err(FileError::Unsupported(why)) => {
+            fault(FaultKind::Unsupported(format!("{what} ({why})")))
+        }
         Err(FileError::Denied(m) | FileError::NotFound(m) | FileError::Other(m)) => fault(
-            named_error(&cx.m.prog, "ERR_FILEOPEN", format!("Save: {m}")),
+            named_error(&cx.m.prog, "ERR_FILEOPEN", format!("{what}: {m}")),
         ),
     }
 }
 
-/// The text of the task's module `name`, its persistents' initial values
-/// replaced by their current values.
 fn module_text(cx: &Cx<'_>, name: &str) -> Option<String> {
     let prog = cx.m.prog.clone();
     let module = prog

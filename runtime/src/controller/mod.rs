@@ -49,6 +49,8 @@ pub(crate) struct Shared {
     /// The persistents the tasks share (and their state), by index.
     pub pers: Vec<Value>,
     pub pers_init: Vec<Init>,
+    /// How many declarations each persistent has (in every task's program).
+    pers_users: Vec<u32>,
     pers_names: NameMap<u32>,
     pub io: Box<dyn Io>,
     /// Signal changes the controller makes later (pulses, `\SDelay`):
@@ -88,16 +90,36 @@ pub(crate) struct Shared {
 
 impl Shared {
     /// The index of the shared persistent `name` (made on first use).
+    /// Each call is one more declaration of it ([`Self::release_persistent`]).
     pub(crate) fn persistent(&mut self, name: &str) -> u32 {
         let key = fold(name);
         if let Some(&i) = self.pers_names.get(&key) {
+            if let Some(n) = self.pers_users.get_mut(i as usize) {
+                *n += 1;
+            }
             return i;
         }
         let i = self.pers.len() as u32;
         self.pers.push(Value::Num(0.0));
         self.pers_init.push(Init::Pending);
+        self.pers_users.push(1);
         self.pers_names.insert(key, i);
         i
+    }
+
+    /// A declaration of persistent `i` is gone (its module unloaded): with
+    /// none left, the controller forgets the persistent, and the next
+    /// module that declares it starts it at its declared value.
+    pub(crate) fn release_persistent(&mut self, i: u32) {
+        let i = i as usize;
+        if let Some(n) = self.pers_users.get_mut(i) {
+            *n = n.saturating_sub(1);
+            if *n == 0
+                && let Some(s) = self.pers_init.get_mut(i)
+            {
+                *s = Init::Pending;
+            }
+        }
     }
 
     /// A persistent's starting value (the first task that sets it wins).
@@ -225,6 +247,7 @@ impl Controller {
                 steps: 0,
                 pers: Vec::new(),
                 pers_init: Vec::new(),
+                pers_users: Vec::new(),
                 pers_names: NameMap::default(),
                 io: world.io,
                 timed: Vec::new(),

@@ -411,6 +411,31 @@ impl Machine {
         }
     }
 
+    /// The task runs `prog` from now on: a program with modules loaded
+    /// after its own, or the one it had before them (`Load`, `UnLoad`).
+    /// What both lay out is kept; the data of a loaded module start as
+    /// the controller sets them, the persistents it shares too.
+    pub(crate) fn adopt(&mut self, sh: &mut Shared, prog: Arc<crate::program::Program>) {
+        let n = prog.globals.len();
+        self.globals.resize(n, Value::Num(0.0));
+        self.init.resize(n, Init::Pending);
+        for p in prog.pers.iter().skip(self.pers_map.len()) {
+            self.pers_map.push(sh.persistent(&p.name));
+        }
+        for i in self
+            .pers_map
+            .split_off(prog.pers.len().min(self.pers_map.len()))
+        {
+            sh.release_persistent(i);
+        }
+        self.prog = prog;
+        // The starting values are computed on a stack of their own: the
+        // running routines (the one that loads) wait below, untouched.
+        let running = std::mem::take(&mut self.frames);
+        self.initialise(sh);
+        self.frames = running;
+    }
+
     /// Runs an initialisation frame to its end.
     fn run_init(&mut self, sh: &mut Shared, code: Arc<Code>, target: Target) {
         self.begin_init(sh, code, target);

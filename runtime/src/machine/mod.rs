@@ -272,6 +272,10 @@ pub struct Machine {
     pub(crate) zones: crate::builtins::zones::Zones,
     /// The symbol search `SetDataSearch` started.
     pub(crate) search: crate::builtins::symbols::Search,
+    /// The module files `Load` loaded, in order.
+    pub(crate) loaded: Vec<crate::builtins::modules::LoadedModule>,
+    /// The loads `StartLoad` started.
+    pub(crate) load_sessions: crate::builtins::modules::Sessions,
 }
 
 impl Machine {
@@ -330,6 +334,8 @@ impl Machine {
             settings: Default::default(),
             zones: Default::default(),
             search: Default::default(),
+            loaded: Vec::new(),
+            load_sessions: Default::default(),
             name,
             number,
             prog,
