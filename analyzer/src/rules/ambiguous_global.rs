@@ -20,7 +20,11 @@ crate::declare_rule! {
     /// the same globals (copies of one module, such as a left and a right arm's
     /// driver). Other modules of a plain folder that share names get one warning
     /// per pair of modules, in the later one, listing the shared names, each
-    /// with the other module's declaration as a related location.
+    /// with the other module's declaration as a related location. The
+    /// modules of a controller's `HOME` folder that no task loads by a path
+    /// written out are part programs the program loads one at a time
+    /// (`Load`, a file name it computes): they share names by design, and
+    /// are not checked against each other.
     ///
     /// ### Why
     /// The controller refuses to load the second module; which declaration was
@@ -40,6 +44,9 @@ pub(crate) fn check(cx: &mut Cx<'_>, module: &Module) {
     let Some(mi) = cx.module.map(|(i, _)| i) else {
         return;
     };
+    if cx.task.loaded_elsewhere {
+        return;
+    }
     // The first declaration of another module, by folded name: only a
     // persistent needs the whole list (many declarations of one name made
     // this quadratic).
