@@ -322,6 +322,60 @@ impl Task {
         self.rebuilt(units, self.signals.as_deref().cloned())
     }
 
+    /// The units of a controller's `HOME/` that the task's program loads
+    /// while it runs: a `Load` or `StartLoad` of another of its units names
+    /// the file ([`crate::loads`]). The checker checks them with the task
+    /// (their names against its); the controller has them only between
+    /// their `Load` and `UnLoad`, each in its turn.
+    pub fn run_time_loads(&self) -> Vec<usize> {
+        let named: std::collections::HashSet<&str> = self
+            .units
+            .iter()
+            .flat_map(|u| u.loads.files.iter().map(String::as_str))
+            .collect();
+        let consts: std::collections::HashMap<&str, &str> = self
+            .units
+            .iter()
+            .flat_map(|u| u.loads.consts.iter().map(|(n, f)| (n.as_str(), f.as_str())))
+            .collect();
+        let through_consts: std::collections::HashSet<&str> = self
+            .units
+            .iter()
+            .flat_map(|u| u.loads.names.iter())
+            .filter_map(|n| consts.get(n.as_str()).copied())
+            .collect();
+        (0..self.units.len())
+            .filter(|&i| {
+                let Some(u) = self.unit(i) else { return false };
+                if !crate::layout::in_home(&u.path) {
+                    return false;
+                }
+                let file = crate::loads::module_file_name(&u.path).unwrap_or_default();
+                named.contains(file.as_str()) || through_consts.contains(file.as_str())
+            })
+            .collect()
+    }
+
+    /// This task without the units `drop` (indexes), its names indexed
+    /// again and no module set apart as clashing (the clashes were between
+    /// indexes that move); the controller it belongs to stays, as in
+    /// [`Task::with_extra_units`]. A view (of one of alternative programs)
+    /// is kept whole.
+    pub fn without_units(&self, drop: &[usize]) -> Task {
+        if drop.is_empty() || self.owner.is_some() {
+            return self.clone();
+        }
+        let units = (0..self.units.len())
+            .filter(|i| !drop.contains(i))
+            .filter_map(|i| self.unit(i).cloned())
+            .collect();
+        let whole = Task {
+            clashes: Arc::default(),
+            ..self.clone()
+        };
+        whole.rebuilt(units, self.signals.as_deref().cloned())
+    }
+
     /// This task with more configured I/O signals (name and RAPID type,
     /// `signaldi`...), as a configuration file would declare them: a
     /// simulation's scripted signals. Signals it has already keep their

@@ -438,6 +438,55 @@ ENDMODULE
     );
 }
 
+/// A backup's program loads its part programs from `HOME` one at a time
+/// (`Load`, a late-bound call, `UnLoad`): they declare the same names and
+/// are not in the program when it starts, as on the controller.
+#[test]
+fn a_backup_loads_its_part_programs_from_home_one_at_a_time() {
+    let dir = scratch("run-load-parts");
+    let main = "MODULE Main
+  VAR string file;
+  PROC main()
+    Load \\Dynamic, \"HOME:/Parts/Part1.mod\";
+    %\"RunPart\"%;
+    UnLoad \"HOME:/Parts/Part1.mod\";
+    FOR i FROM 2 TO 3 DO
+      file := \"Part\" + NumToStr(i, 0) + \".mod\";
+      Load \\Dynamic, \"HOME:/Parts\" \\File:=file;
+      %\"RunPart\"%;
+      UnLoad \"HOME:/Parts\" \\File:=file;
+    ENDFOR
+    TPWrite \"loaded \"\\Bool:=ModExist(\"Part3\");
+  ENDPROC
+ENDMODULE
+";
+    let part = |n: u32| {
+        format!(
+            "MODULE Part{n}\n  CONST num nHoles := {n};\n  PROC RunPart()\n    TPWrite \"part {n}: \"\\Num:=nHoles;\n  ENDPROC\nENDMODULE\n"
+        )
+    };
+    let (p1, p2, p3) = (part(1), part(2), part(3));
+    write(
+        &dir,
+        &[
+            ("Cell/RAPID/TASK1/PROGMOD/Main.mod", main),
+            ("Cell/HOME/Parts/Part1.mod", &p1),
+            ("Cell/HOME/Parts/Part2.mod", &p2),
+            ("Cell/HOME/Parts/Part3.mod", &p3),
+        ],
+    );
+    let out = rapid(&dir, &["run", "Cell"]);
+    let shown = show(&out);
+    assert!(
+        shown.starts_with(
+            "exit 0\n--- stdout\npart 1: 1\npart 2: 2\npart 3: 3\nloaded FALSE\n--- stderr\n"
+        ),
+        "{shown}"
+    );
+    let out = rapid(&dir, &["check", "Cell"]);
+    assert_eq!(out.status.code(), Some(0), "{}", show(&out));
+}
+
 #[test]
 fn rapid_toml_names_the_controller_get_sys_info_describes() {
     let dir = scratch("run-sys-info-toml");

@@ -21,10 +21,10 @@ crate::declare_rule! {
     /// driver). Other modules of a plain folder that share names get one warning
     /// per pair of modules, in the later one, listing the shared names, each
     /// with the other module's declaration as a related location. The
-    /// modules of a controller's `HOME` folder that no task loads by a path
-    /// written out are part programs the program loads one at a time
-    /// (`Load`, a file name it computes): they share names by design, and
-    /// are not checked against each other.
+    /// modules of a controller's `HOME` folder that a program loads while it
+    /// runs (`Load`, by a file name it writes out or computes) are part
+    /// programs loaded one at a time: they share names by design, and are
+    /// not checked against each other.
     ///
     /// ### Why
     /// The controller refuses to load the second module; which declaration was
@@ -47,6 +47,10 @@ pub(crate) fn check(cx: &mut Cx<'_>, module: &Module) {
     if cx.task.loaded_elsewhere {
         return;
     }
+    // Modules the program loads while it runs are there each in its turn
+    // (loaded, run, unloaded): they may share names with each other.
+    let later = cx.task.run_time_loads();
+    let both_later = |a: usize, b: usize| later.contains(&a) && later.contains(&b);
     // The first declaration of another module, by folded name: only a
     // persistent needs the whole list (many declarations of one name made
     // this quadratic).
@@ -76,7 +80,9 @@ pub(crate) fn check(cx: &mut Cx<'_>, module: &Module) {
                 .entry(key)
                 .or_insert_with(|| all.iter().copied().find(elsewhere))
         };
-        if let Some(other) = other {
+        if let Some(other) = other
+            && !both_later(me.unit, other.unit)
+        {
             clashes.push((me, other));
         }
     }

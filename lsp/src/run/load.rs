@@ -284,15 +284,32 @@ pub fn to_run(
         None if lone && !t.is_backup() => "T_ROB1".to_owned(),
         None => folder_name(&t.key).to_owned(),
     };
+    let entry = settings
+        .and_then(|s| s.entry.clone())
+        .unwrap_or_else(|| entry.to_owned());
     TaskToRun {
         name,
-        task: t.clone(),
+        task: at_start(t, &entry),
         kind: settings.map_or(TaskKind::Normal, |s| s.kind),
-        entry: settings
-            .and_then(|s| s.entry.clone())
-            .unwrap_or_else(|| entry.to_owned()),
+        entry,
         motion: settings.is_none_or(|s| s.motion),
     }
+}
+
+/// The task as the controller has it when the program starts: without the
+/// `HOME` modules its program loads while it runs (`Load`), which the
+/// checker checks with it ([`Task::run_time_loads`]), unless the run
+/// starts in one of them.
+fn at_start(t: &Arc<Task>, entry: &str) -> Arc<Task> {
+    let later: Vec<usize> = t
+        .run_time_loads()
+        .into_iter()
+        .filter(|&i| t.unit(i).is_none_or(|u| !unit_declares(u, entry)))
+        .collect();
+    if later.is_empty() {
+        return t.clone();
+    }
+    Arc::new(t.without_units(&later))
 }
 
 /// Are these the tasks of one controller's backup?
