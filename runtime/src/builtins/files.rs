@@ -70,13 +70,7 @@ fn open_file<'c>(cx: &'c mut Cx<'_>, a: &Args) -> R<&'c mut OpenFile> {
 
 /// `Open Object [\File] IODevice [\Read] | [\Write] | [\Append] [\Bin]`.
 pub(crate) fn open(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
-    let mut name = cx.string(a, "Object")?;
-    if let Some(f) = cx.opt_string(a, "File")? {
-        if !name.ends_with(['/', ':']) {
-            name.push('/');
-        }
-        name.push_str(&f);
-    }
+    let name = super::modules::full_path(cx, a, "Object", "File")?.unwrap_or_default();
     let mode = if a.given("Read") {
         Mode::Read
     } else if a.given("Append") {

@@ -43,13 +43,15 @@ pub(crate) struct Sessions {
     next: u32,
 }
 
-/// `FilePath` with `\File` (or `FileName`) after it.
-fn full_path(cx: &mut Cx<'_>, a: &Args, path: &str, file: &str) -> R<Option<String>> {
+/// The path parameter `path` gives, with the file parameter `file` after
+/// it (`"HOME:"` and `"a.mod"` are `HOME:a.mod`, `"HOME:/parts"` and
+/// `"a.mod"` are `HOME:/parts/a.mod`); `None` without `path`.
+pub(crate) fn full_path(cx: &mut Cx<'_>, a: &Args, path: &str, file: &str) -> R<Option<String>> {
     let Some(mut path) = cx.opt_string(a, path)? else {
         return Ok(None);
     };
     if let Some(f) = cx.opt_string(a, file)? {
-        if !path.ends_with('/') && !path.ends_with(':') {
+        if !path.ends_with(['/', ':']) {
             path.push('/');
         }
         path.push_str(&f);

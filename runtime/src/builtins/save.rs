@@ -25,17 +25,8 @@ pub(crate) fn save(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
         )));
     }
     let name = cx.string(a, "ModuleName")?;
-    let path = match cx.opt(a, "FilePath")? {
-        Some(path) => {
-            let mut path = path.as_str().unwrap_or_default().to_owned();
-            if let Some(file) = cx.opt(a, "File")? {
-                if !path.ends_with('/') && !path.ends_with(':') {
-                    path.push('/');
-                }
-                path.push_str(file.as_str().unwrap_or_default());
-            }
-            path
-        }
+    let path = match super::modules::full_path(cx, a, "FilePath", "File")? {
+        Some(path) => path,
         None => match super::modules::path_of_module(cx, &name) {
             Some(path) => path,
             None => {
