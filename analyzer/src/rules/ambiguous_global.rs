@@ -47,10 +47,7 @@ pub(crate) fn check(cx: &mut Cx<'_>, module: &Module) {
     if cx.task.loaded_elsewhere {
         return;
     }
-    // Modules the program loads while it runs are there each in its turn
-    // (loaded, run, unloaded): they may share names with each other.
-    let later = cx.task.run_time_loads();
-    let both_later = |a: usize, b: usize| later.contains(&a) && later.contains(&b);
+
     // The first declaration of another module, by folded name: only a
     // persistent needs the whole list (many declarations of one name made
     // this quadratic).
@@ -80,11 +77,16 @@ pub(crate) fn check(cx: &mut Cx<'_>, module: &Module) {
                 .entry(key)
                 .or_insert_with(|| all.iter().copied().find(elsewhere))
         };
-        if let Some(other) = other
-            && !both_later(me.unit, other.unit)
-        {
+        if let Some(other) = other {
             clashes.push((me, other));
         }
+    }
+    // Modules the program loads while it runs are there each in its turn
+    // (loaded, run, unloaded): they may share names with each other.
+    // Asked only when there is a clash (it reads every unit's loads).
+    if !clashes.is_empty() && crate::layout::in_home(&cx.unit.path) {
+        let later = cx.task.run_time_loads();
+        clashes.retain(|(me, other)| !(later.contains(&me.unit) && later.contains(&other.unit)));
     }
     if cx.task.is_certain() {
         for (me, other) in clashes {
