@@ -299,7 +299,9 @@ pub fn to_run(
 /// The task as the controller has it when the program starts: without the
 /// `HOME` modules its program loads while it runs (`Load`), which the
 /// checker checks with it ([`Task::run_time_loads`]), unless the run
-/// starts in one of them.
+/// starts in one of them, or the rest of the program names what they
+/// declare (then the controller has them from the start, as `SYS.cfg`
+/// loads modules: the task without them would have more load errors).
 fn at_start(t: &Arc<Task>, entry: &str) -> Arc<Task> {
     let later: Vec<usize> = t
         .run_time_loads()
@@ -309,7 +311,12 @@ fn at_start(t: &Arc<Task>, entry: &str) -> Arc<Task> {
     if later.is_empty() {
         return t.clone();
     }
-    Arc::new(t.without_units(&later))
+    let without = Arc::new(t.without_units(&later));
+    let errors = |t: &Task| rapid_runtime::load_check(t).errors.len();
+    if errors(&without) > errors(t) {
+        return t.clone();
+    }
+    without
 }
 
 /// Are these the tasks of one controller's backup?
