@@ -487,6 +487,36 @@ ENDMODULE
     assert_eq!(out.status.code(), Some(0), "{}", show(&out));
 }
 
+/// A HOME module the program also names directly (a library loaded by
+/// `SYS.cfg`, its `Load` guarded by `ModExist`) is in the program from
+/// the start: without it the program would not load.
+#[test]
+fn a_home_module_the_program_names_directly_is_there_from_the_start() {
+    let dir = scratch("run-load-library");
+    write(
+        &dir,
+        &[
+            (
+                "Cell/RAPID/TASK1/PROGMOD/Main.mod",
+                "MODULE Main\n  PROC main()\n    IF NOT ModExist(\"Lib\") Load \"HOME:/Lib.sys\";\n    LibHello;\n  ENDPROC\nENDMODULE\n",
+            ),
+            (
+                "Cell/HOME/Lib.sys",
+                "MODULE Lib (SYSMODULE)\n  PROC LibHello()\n    TPWrite \"hello from lib\";\n  ENDPROC\nENDMODULE\n",
+            ),
+            (
+                "Cell/SYSPAR/SYS.cfg",
+                "SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n\n      -Name \"T_ROB1\" -Type \"NORMAL\" -MotionTask\n",
+            ),
+        ],
+    );
+    let out = rapid(&dir, &["run", "Cell"]);
+    assert_eq!(
+        show(&out),
+        "exit 0\n--- stdout\nhello from lib\n--- stderr\n"
+    );
+}
+
 #[test]
 fn rapid_toml_names_the_controller_get_sys_info_describes() {
     let dir = scratch("run-sys-info-toml");
