@@ -55,8 +55,13 @@ pub(crate) fn check(cx: &mut Cx<'_>, p: &Param, place: Place, range: Range<usize
             &RULE,
             range,
             format!(
-                "{} is a {} parameter and needs {wanted}, found {}",
+                "{} is {} {} parameter and needs {wanted}, found {}",
                 p.name,
+                if p.mode.keyword().starts_with('I') {
+                    "an"
+                } else {
+                    "a"
+                },
                 p.mode.keyword(),
                 place.describe()
             ),
