@@ -6,11 +6,15 @@
 //! project's modules, a message) loads nothing, and neither does a
 //! variable or a persistent: its value is known only when the program runs.
 
+use std::collections::{HashMap, HashSet};
+use std::sync::Arc;
+
 use tree_sitter::{Node, Tree};
 
 use crate::items::{FileItems, Storage};
 use crate::names::{fold, same};
 use crate::syntax::{field, kind};
+use crate::task::Unit;
 
 /// What a module loads, as far as its own text tells.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
@@ -25,6 +29,27 @@ pub struct Loads {
     /// The module's module-level string constants whose value names a
     /// module file: folded name and file name.
     pub consts: Vec<(String, String)>,
+}
+
+/// The module files some units load, by file name: what their `Load` and
+/// `StartLoad` calls name, their constants' included (a constant of one
+/// unit may name the file another's call loads).
+pub fn loaded_files<'u>(units: impl Iterator<Item = &'u Arc<Unit>> + Clone) -> HashSet<String> {
+    let consts: HashMap<&str, &str> = units
+        .clone()
+        .flat_map(|u| u.loads.consts.iter().map(|(n, f)| (n.as_str(), f.as_str())))
+        .collect();
+    let mut out = HashSet::new();
+    for u in units {
+        out.extend(u.loads.files.iter().cloned());
+        out.extend(
+            u.loads
+                .names
+                .iter()
+                .filter_map(|n| consts.get(n.as_str()).map(|f| (*f).to_owned())),
+        );
+    }
+    out
 }
 
 /// The extensions of module files.

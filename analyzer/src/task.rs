@@ -328,30 +328,14 @@ impl Task {
     /// (their names against its); the controller has them only between
     /// their `Load` and `UnLoad`, each in its turn.
     pub fn run_time_loads(&self) -> Vec<usize> {
-        let named: std::collections::HashSet<&str> = self
-            .units
-            .iter()
-            .flat_map(|u| u.loads.files.iter().map(String::as_str))
-            .collect();
-        let consts: std::collections::HashMap<&str, &str> = self
-            .units
-            .iter()
-            .flat_map(|u| u.loads.consts.iter().map(|(n, f)| (n.as_str(), f.as_str())))
-            .collect();
-        let through_consts: std::collections::HashSet<&str> = self
-            .units
-            .iter()
-            .flat_map(|u| u.loads.names.iter())
-            .filter_map(|n| consts.get(n.as_str()).copied())
-            .collect();
+        let loaded = crate::loads::loaded_files(self.units.iter());
         (0..self.units.len())
             .filter(|&i| {
-                let Some(u) = self.unit(i) else { return false };
-                if !crate::layout::in_home(&u.path) {
-                    return false;
-                }
-                let file = crate::loads::module_file_name(&u.path).unwrap_or_default();
-                named.contains(file.as_str()) || through_consts.contains(file.as_str())
+                self.unit(i).is_some_and(|u| {
+                    crate::layout::in_home(&u.path)
+                        && crate::loads::module_file_name(&u.path)
+                            .is_some_and(|f| loaded.contains(&f))
+                })
             })
             .collect()
     }

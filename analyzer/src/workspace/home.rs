@@ -344,7 +344,7 @@ impl Workspace {
                         .filter(|(_, j)| j.contains(key))
                         .map(|(u, _)| *u),
                 );
-                let loaded = loaded_files(members);
+                let loaded = crate::loads::loaded_files(members);
                 for (i, file) in files.iter().enumerate() {
                     if loaded.contains(file) && joins[i].insert(key.clone()) {
                         more = true;
@@ -428,26 +428,6 @@ impl Workspace {
         self.units_within(root)
             .any(|u| home_root(&u.path) == Some(root) && below_home(&u.path, root) == want)
     }
-}
-
-/// The module files some units load, by file name: what their `Load` and
-/// `StartLoad` calls name, their constants' included.
-fn loaded_files<'u>(units: impl Iterator<Item = &'u Arc<Unit>> + Clone) -> HashSet<String> {
-    let consts: HashMap<&str, &str> = units
-        .clone()
-        .flat_map(|u| u.loads.consts.iter().map(|(n, f)| (n.as_str(), f.as_str())))
-        .collect();
-    let mut out = HashSet::new();
-    for u in units {
-        out.extend(u.loads.files.iter().cloned());
-        out.extend(
-            u.loads
-                .names
-                .iter()
-                .filter_map(|n| consts.get(n.as_str()).map(|f| (*f).to_owned())),
-        );
-    }
-    out
 }
 
 /// The file name of a path, lowercase.
