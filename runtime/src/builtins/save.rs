@@ -63,10 +63,7 @@ pub(crate) fn write_module(cx: &mut Cx<'_>, what: &str, name: &str, path: &str) 
 
 fn module_text(cx: &Cx<'_>, name: &str) -> Option<String> {
     let prog = cx.m.prog.clone();
-    let module = prog
-        .modules
-        .iter()
-        .find(|m| m.name.eq_ignore_ascii_case(name))?;
+    let module = prog.modules.get(prog.module_named(name)?)?;
     let unit = prog.task.unit(module.unit)?;
     let decl = unit.items.modules.get(module.index)?;
     let text = unit.text.get(decl.range.clone())?;
