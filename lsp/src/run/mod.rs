@@ -181,7 +181,29 @@ impl RunReport {
                 });
             }
         }
+        if let Some(help) = self.unnamed_tasks_help() {
+            out.push(help);
+        }
         out
+    }
+
+    /// A task name that names no task, on a controller whose tasks only
+    /// have their folders' names (`TASK1`...: a backup kept without
+    /// `SYS.cfg` and `BACKINFO`): where their names come from.
+    fn unnamed_tasks_help(&self) -> Option<String> {
+        let unknown = self.tasks.iter().any(|(_, o)| {
+            o.errno
+                .as_ref()
+                .is_some_and(|(_, name)| name == "ERR_TASKNAME")
+        });
+        let folders = self.tasks.iter().all(|(t, _)| {
+            t.get(..4).is_some_and(|h| h.eq_ignore_ascii_case("task"))
+                && t.len() > 4
+                && t[4..].bytes().all(|b| b.is_ascii_digit())
+        });
+        (unknown && folders).then(|| {
+            "  = help: the tasks have their folders' names: a backup's SYS.cfg or BACKINFO names them, else rapid.toml does ([controller] tasks = [\"T_ROB1\", ...] names TASK1, TASK2... in turn)".to_owned()
+        })
     }
 }
 
@@ -548,36 +570,12 @@ pub fn describe(o: &Outcome) -> Vec<String> {
     for f in &o.stack {
         lines.push(format!("  in {} ({})", f.routine, f.at));
     }
-    if let Some(help) = unnamed_tasks_help(o) {
-        lines.push(help);
-    }
     if o.status == Status::Unsupported && o.message.contains(rapid_runtime::world::NO_KINEMATICS) {
         lines.push(
             "  = help: name a modelled robot with --robot (e.g. --robot \"IRB 1600-10/1.45\"), `robot` under [controller] in rapid.toml, or a backup's MOC.cfg".to_owned(),
         );
     }
     lines
-}
-
-/// A task name that names no task, on a controller whose tasks only have
-/// their folders' names (`TASK1`...: a backup kept without `SYS.cfg` and
-/// `BACKINFO`): where their names come from.
-fn unnamed_tasks_help(o: &Outcome) -> Option<String> {
-    if o.errno
-        .as_ref()
-        .is_none_or(|(_, name)| name != "ERR_TASKNAME")
-    {
-        return None;
-    }
-    let (_, tasks) = o.message.rsplit_once("(its tasks: ")?;
-    let folders = tasks.trim_end_matches(')').split(", ").all(|t| {
-        t.get(..4).is_some_and(|h| h.eq_ignore_ascii_case("task"))
-            && t.len() > 4
-            && t[4..].bytes().all(|b| b.is_ascii_digit())
-    });
-    folders.then(|| {
-        "  = help: the tasks have their folders' names: a backup's SYS.cfg or BACKINFO names them, else rapid.toml does ([controller] tasks = [\"T_ROB1\", ...] names TASK1, TASK2... in turn)".to_owned()
-    })
 }
 
 /// The folder file instructions work in: the one given, or a temporary
