@@ -357,7 +357,36 @@ fn run_answers_output_errors_with_lines_and_a_trace_summary() {
     let ran = c.call("run", json!({"path": "versions/Prog_v2.mod"}));
     assert_eq!(structured(&ran)["output"], json!(["v2"]));
     let message = c.refused("run", json!({"path": "versions"}));
-    assert!(message.contains("2 alternative programs"), "{message}");
+    assert!(message.contains("2 alternative programs"), "{message}"); // A backup that loads its part programs from its HOME, as `rapid run`
+    // runs it: the parts are not there at the start, and HOME is copied.
+    let part = |n: u32| {
+        format!(
+            "MODULE Part{n}\n  PROC RunPart()\n    TPWrite \"part {n}\";\n  ENDPROC\nENDMODULE\n"
+        )
+    };
+    let (p1, p2) = (part(1), part(2));
+    write(
+        &dir,
+        &[
+            (
+                "backup/RAPID/TASK1/PROGMOD/Main.mod",
+                "MODULE Main\n  PROC main()\n    Load \"HOME:/Part1.mod\";\n    %\"RunPart\"%;\n    UnLoad \"HOME:/Part1.mod\";\n    Load \"HOME:/Part2.mod\";\n    %\"RunPart\"%;\n    UnLoad \"HOME:/Part2.mod\";\n  ENDPROC\nENDMODULE\n",
+            ),
+            ("backup/HOME/Part1.mod", &p1),
+            ("backup/HOME/Part2.mod", &p2),
+        ],
+    );
+    let answer = c.call("run", json!({"path": "backup/RAPID/TASK1"}));
+    let ran = structured(&answer);
+    // The program's lines (the traced loads, `[Load at ...]`, aside).
+    let lines: Vec<&str> = ran["output"]
+        .as_array()
+        .into_iter()
+        .flatten()
+        .filter_map(|l| l.as_str())
+        .filter(|l| !l.starts_with('['))
+        .collect();
+    assert_eq!(lines, ["part 1", "part 2"], "{ran:#}");
 }
 
 #[test]

@@ -302,7 +302,7 @@ pub fn to_run(
 /// starts in one of them, or the rest of the program names what they
 /// declare (then the controller has them from the start, as `SYS.cfg`
 /// loads modules: the task without them would have more load errors).
-fn at_start(t: &Arc<Task>, entry: &str) -> Arc<Task> {
+pub fn at_start(t: &Arc<Task>, entry: &str) -> Arc<Task> {
     let later: Vec<usize> = t
         .run_time_loads()
         .into_iter()

@@ -365,7 +365,7 @@ pub fn run_routine(
     let loaded = load::Loaded {
         tasks: vec![load::TaskToRun {
             name: "T_ROB1".to_owned(),
-            task,
+            task: load::at_start(&task, entry),
             kind: rapid_runtime::TaskKind::Normal,
             entry: entry.to_owned(),
             motion: true,
