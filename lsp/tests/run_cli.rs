@@ -263,6 +263,36 @@ fn of_alternative_programs_the_named_one_runs_and_a_folder_asks_which() {
 }
 
 #[test]
+fn a_folder_of_per_task_programs_runs_each_in_the_task_its_name_gives() {
+    let dir = scratch("run-per-task");
+    let program = |task: &str| {
+        format!(
+            "MODULE Pick_{task}\n  VAR syncident ready;\n  TASK PERS tasks both{{2}} := [[\"T_ROB1\"], [\"T_ROB2\"]];\n  PROC main()\n    WaitSyncTask ready, both;\n    Greet;\n  ENDPROC\nENDMODULE\n"
+        )
+    };
+    write(
+        &dir,
+        &[
+            ("pick/Pick_T_ROB1.mod", &program("T_ROB1")),
+            ("pick/Pick_T_ROB2.mod", &program("T_ROB2")),
+            (
+                "pick/Lib.sys",
+                "MODULE Lib(SYSMODULE)\n  PROC Greet()\n    TPWrite \"in \" + GetTaskName();\n  ENDPROC\nENDMODULE\n",
+            ),
+        ],
+    );
+    let (code, out, err) = run(&dir, &["run", "pick"]);
+    assert_eq!(
+        (code, out.as_str(), err.as_str()),
+        (Some(0), "[T_ROB1] in T_ROB1\n[T_ROB2] in T_ROB2\n", "")
+    );
+    // One task alone waits for the other, which is not there.
+    let (code, _, err) = run(&dir, &["run", "pick", "--task", "T_ROB2"]);
+    assert_eq!(code, Some(1), "{err}");
+    assert!(err.contains("there is no task T_ROB1"), "{err}");
+}
+
+#[test]
 fn a_folder_of_several_tasks_names_them_as_paths_to_give() {
     let dir = scratch("run-several-tasks");
     let module = |m: &str| {

@@ -19,7 +19,7 @@ use rapid_analyzer::task::Task;
 use rapid_runtime::{Limits, Outcome, Status};
 
 use super::load::{self, Loaded};
-use super::{NotRun, RunOptions, execute};
+use super::{NotRun, RunOptions, execute, multimove};
 
 /// How a task's run ended, in the words of the classification.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
@@ -114,38 +114,55 @@ fn options() -> RunOptions {
 /// Runs every task of the corpus at `dir`.
 pub fn sweep(dir: &Path) -> Result<Vec<TaskRun>, String> {
     let found = load::tasks(&[dir.to_path_buf()])?;
-    // Each run: its tasks (an index into `found`, and the task itself: a
-    // folder of alternative programs runs each program alone).
-    let mut groups: BTreeMap<String, Vec<(usize, Arc<Task>)>> = BTreeMap::new();
+    // Each run: its tasks (an index into `found`, the task itself and the
+    // name a folder of per-task programs gives it: a folder of alternative
+    // programs runs each program alone, one of per-task programs runs them
+    // together).
+    type Program = (usize, Arc<Task>, Option<String>);
+    let mut groups: BTreeMap<String, Vec<Program>> = BTreeMap::new();
     for (i, t) in found.tasks.iter().enumerate() {
+        if let Some(programs) = multimove::programs(t, "main") {
+            let group = groups.entry(t.key.clone()).or_default();
+            group.extend(
+                programs
+                    .into_iter()
+                    .map(|(view, name)| (i, view, Some(name))),
+            );
+            continue;
+        }
         let programs = load::alternatives(t, "main");
         if programs.is_empty() {
             let group = controller_of(&t.key).map_or_else(|| t.key.clone(), |c| c.to_string());
-            groups.entry(group).or_default().push((i, t.clone()));
+            groups.entry(group).or_default().push((i, t.clone(), None));
         }
         for view in programs {
             let key = view
                 .owner
                 .and_then(|o| view.unit(o))
                 .map_or_else(|| t.key.clone(), |u| u.path.clone());
-            groups.entry(key).or_default().push((i, view));
+            groups.entry(key).or_default().push((i, view, None));
         }
     }
     let mut opts = options();
     let mut out = Vec::new();
-    for (group, members) in &groups {
+    for members in groups.values() {
         let lone = members.len() == 1;
         let tasks: Vec<_> = members
             .iter()
-            .map(|(i, t)| load::to_run(t, found.settings[*i].as_ref(), lone, "main"))
+            .map(|(i, t, name)| {
+                let mut run = load::to_run(t, found.settings[*i].as_ref(), lone, "main");
+                if let Some(name) = name {
+                    name.clone_into(&mut run.name);
+                }
+                run
+            })
             .collect();
         let names: Vec<Member> = tasks
             .iter()
             .map(|t| {
-                let key = if t.task.owner.is_some() {
-                    group
-                } else {
-                    &t.task.key
+                let key = match t.task.owner.and_then(|o| t.task.unit(o)) {
+                    Some(unit) => &unit.path,
+                    None => &t.task.key,
                 };
                 let check = rapid_runtime::load_check(&t.task);
                 let calls = load::program(t.task.clone(), &[], &check)
@@ -199,7 +216,7 @@ pub fn page(runs: &[TaskRun]) -> String {
     );
     let _ = writeln!(
         s,
-        "`rapid run` over `../shared/corpus` (real RAPID programs from public repositories, test input only): every controller backup with all its tasks together, every other task (grouped as `rapid check` groups them) alone from its `main`; a folder of alternative programs (modules that cannot be loaded together, each with a `main`) runs each program alone, as `rapid run MODULE` runs it. No operator answers (a question stops the task waiting for the operator), a network where nobody answers, at most 100,000 statements and 300 simulated seconds a run. A task without an entry routine (a library of modules) has nothing to run and is not counted.\n"
+        "`rapid run` over `../shared/corpus` (real RAPID programs from public repositories, test input only): every controller backup with all its tasks together, every other task (grouped as `rapid check` groups them) alone from its `main`; a folder of alternative programs (modules that cannot be loaded together, each with a `main`) runs each program alone, as `rapid run MODULE` runs it, and a folder of per-task programs (`Grey_T_ROB1.mod`, `Grey_T_ROB2.mod`, naming each other's tasks) runs them together, as `rapid run FOLDER` does. No operator answers (a question stops the task waiting for the operator), a network where nobody answers, at most 100,000 statements and 300 simulated seconds a run. A task without an entry routine (a library of modules) has nothing to run and is not counted.\n"
     );
     // The controller backups' tasks, the other tasks, all.
     let groups: [fn(&TaskRun) -> bool; 3] = [|r| r.backup, |r| !r.backup, |_| true];

@@ -204,17 +204,27 @@ pub fn controller(path: &Path, only: Option<&str>, entry: Option<&str>) -> Resul
     if found.tasks.is_empty() {
         return Err(format!("{}: no RAPID modules found", path.display()));
     }
-    let together =
+    let mut together =
         found.tasks.len() > 1 && (one_backup(&found.tasks) || folder_of_tasks(path, &found.tasks));
     let lone = found.tasks.len() == 1;
     let system = found.systems.first().cloned().unwrap_or_default();
     let home = found.tasks.first().and_then(|t| home_of(&t.key));
-    let mut out: Vec<TaskToRun> = found
-        .tasks
-        .iter()
-        .zip(&found.settings)
-        .map(|(t, s)| to_run(t, s.as_ref(), lone, entry))
-        .collect();
+    let per_task = match found.tasks.as_slice() {
+        [one] if !one.is_backup() => super::multimove::per_task(one, entry),
+        _ => None,
+    };
+    let mut out: Vec<TaskToRun> = match per_task {
+        Some(tasks) => {
+            together = true;
+            tasks
+        }
+        None => found
+            .tasks
+            .iter()
+            .zip(&found.settings)
+            .map(|(t, s)| to_run(t, s.as_ref(), lone, entry))
+            .collect(),
+    };
     if let Some(name) = only {
         let Some(i) = out.iter().position(|t| t.name.eq_ignore_ascii_case(name)) else {
             let names: Vec<&str> = out.iter().map(|t| t.name.as_str()).collect();

@@ -22,6 +22,7 @@
 #[cfg(test)]
 mod corpus;
 pub mod load;
+mod multimove;
 pub mod operator;
 pub mod robot;
 pub mod sockets;
