@@ -84,7 +84,20 @@ fn an_answer_that_does_not_fit_the_question_is_named() {
     insta::assert_snapshot!(show(&out));
     let out = rapid(&dir, &["run", "Cell.mod", "--answer", "@soon 1"]);
     assert_eq!(out.status.code(), Some(2), "{}", show(&out));
-    assert!(show(&out).contains("delay in seconds"), "{}", show(&out));
+    assert!(
+        show(&out).contains("--answer #1: \"soon\" is not a delay in seconds"),
+        "{}",
+        show(&out)
+    );
+    // An answer of a file is named by its file and line.
+    write(&dir, &[("answers.txt", "# the cell\nStart\n\n99\n")]);
+    let out = rapid(&dir, &["run", "Cell.mod", "--answers", "answers.txt"]);
+    assert_eq!(out.status.code(), Some(1), "{}", show(&out));
+    assert!(
+        show(&out).contains("the answer \"99\" (answers.txt:4) to UINumEntry"),
+        "{}",
+        show(&out)
+    );
 }
 
 #[test]

@@ -562,8 +562,8 @@ fn prepare(args: &Value) -> Result<Launch, String> {
             trace: plot.is_some(),
             // The operator's answers (`"answers": ["1", "@2 Yes"]`): a
             // debuggee has no terminal of its own.
-            operator: crate::run::operator::OperatorOptions {
-                answers: args["answers"]
+            operator: crate::run::operator::OperatorOptions::listed(
+                args["answers"]
                     .as_array()
                     .map(|a| {
                         a.iter()
@@ -571,8 +571,7 @@ fn prepare(args: &Value) -> Result<Launch, String> {
                             .collect()
                     })
                     .unwrap_or_default(),
-                terminal: false,
-            },
+            ),
             socket_map: Some(Vec::new()),
             robot: robot.map(str::to_owned),
         },

@@ -379,10 +379,7 @@ pub fn run_routine(
         limits: budget.limits,
         sandbox: Some(sandbox.path.clone()),
         trace: budget.trace,
-        operator: operator::OperatorOptions {
-            answers: budget.answers,
-            terminal: false,
-        },
+        operator: operator::OperatorOptions::listed(budget.answers),
         // The simulated network: a request opens no sockets of the host.
         socket_map: None,
         robot: None,

@@ -11,8 +11,9 @@ use rapid_runtime::world::{Pendant, Question, Reply, ScriptedOperator, parse_ans
 /// Where the operator's answers come from.
 #[derive(Clone, Debug, Default)]
 pub struct OperatorOptions {
-    /// Scripted answers, one a line ([`parse_answer`]'s forms).
-    pub answers: Vec<String>,
+    /// Scripted answers, one a line ([`parse_answer`]'s forms), each with
+    /// where it was given (`answers.txt:3`), which an error names.
+    pub answers: Vec<(String, String)>,
     /// Ask on the terminal when the script runs out.
     pub terminal: bool,
 }
@@ -25,9 +26,18 @@ impl OperatorOptions {
         if let Some(path) = file {
             let text = std::fs::read_to_string(path)
                 .map_err(|e| format!("--answers {}: {e}", path.display()))?;
-            answers.extend(text.lines().map(str::to_owned));
+            answers.extend(
+                text.lines()
+                    .enumerate()
+                    .map(|(i, l)| (format!("{}:{}", path.display(), i + 1), l.to_owned())),
+            );
         }
-        answers.extend(values.iter().cloned());
+        answers.extend(
+            values
+                .iter()
+                .enumerate()
+                .map(|(i, v)| (format!("--answer #{}", i + 1), v.clone())),
+        );
         let options = OperatorOptions {
             answers,
             terminal: std::io::stdin().is_terminal() && std::io::stderr().is_terminal(),
@@ -35,8 +45,22 @@ impl OperatorOptions {
         options.script().map(|_| options)
     }
 
+    /// Answers given as a list (a request's, a launch's): each from
+    /// `answer N`.
+    pub fn listed(answers: Vec<String>) -> Self {
+        OperatorOptions {
+            answers: answers
+                .into_iter()
+                .enumerate()
+                .map(|(i, a)| (format!("answer {}", i + 1), a))
+                .collect(),
+            terminal: false,
+        }
+    }
+
     fn script(&self) -> Result<ScriptedOperator, String> {
-        ScriptedOperator::new(&self.answers).map_err(|e| format!("the operator's answers: {e}"))
+        ScriptedOperator::labelled(&self.answers)
+            .map_err(|e| format!("the operator's answers: {e}"))
     }
 
     /// The run's operator.
@@ -74,10 +98,14 @@ impl Pendant for Operator {
             // A line as the script's lines read (`-`: no answer), a blank
             // line an empty answer, anything else as typed.
             Ok(_) => match parse_answer(&line) {
-                Ok(Some(answer)) => answer,
+                Ok(Some(answer)) => answer.map(|r| Reply {
+                    from: "the keyboard".to_owned(),
+                    ..r
+                }),
                 Ok(None) | Err(_) => Some(Reply {
                     text: line.trim().to_owned(),
                     after: 0.0,
+                    from: "the keyboard".to_owned(),
                 }),
             },
         }

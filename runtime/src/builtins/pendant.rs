@@ -180,16 +180,23 @@ fn ask(
 /// The operator's answer to `ask`, read for the question: its value and
 /// when it comes; `None`: nobody answers.
 fn answer_of(cx: &mut Cx<'_>, ask: &Ask) -> R<Option<(Value, f64)>> {
-    let Some(Reply { text, after }) = cx.sh.pendant.ask(&cx.m.name, &ask.question) else {
+    let Some(Reply { text, after, from }) = cx.sh.pendant.ask(&cx.m.name, &ask.question) else {
         return Ok(None);
     };
     match (ask.read)(ask, &text) {
         Ok(v) => Ok(Some((v, after))),
-        Err(why) => fault(FaultKind::Operator(format!(
-            "the answer {text:?} to {} at {}: {why}",
-            ask.summary(),
-            ask.question.at
-        ))),
+        Err(why) => {
+            let from = if from.is_empty() {
+                from
+            } else {
+                format!(" ({from})")
+            };
+            fault(FaultKind::Operator(format!(
+                "the answer {text:?}{from} to {} at {}: {why}",
+                ask.summary(),
+                ask.question.at
+            )))
+        }
     }
 }
 

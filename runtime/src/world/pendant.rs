@@ -70,11 +70,13 @@ impl Question {
 }
 
 /// The operator's answer: the text entered (or the key, button or item
-/// chosen, by number or label), `after` simulated seconds.
+/// chosen, by number or label), `after` simulated seconds; `from` says
+/// where it was given (`answers.txt:3`), empty when nothing says.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Reply {
     pub text: String,
     pub after: f64,
+    pub from: String,
 }
 
 /// The operator.
@@ -104,11 +106,27 @@ pub struct ScriptedOperator {
 }
 
 impl ScriptedOperator {
-    /// The script of `lines` (comments and blank lines left out).
+    /// The script of `lines` (comments and blank lines left out), each
+    /// answer from `line N`.
     pub fn new<S: AsRef<str>>(lines: &[S]) -> Result<ScriptedOperator, String> {
+        let labelled: Vec<(String, &str)> = lines
+            .iter()
+            .enumerate()
+            .map(|(i, l)| (format!("line {}", i + 1), l.as_ref()))
+            .collect();
+        Self::labelled(&labelled)
+    }
+
+    /// The script of `lines`, each with where it was given
+    /// (`answers.txt:3`, `--answer #2`), which an error names.
+    pub fn labelled<S: AsRef<str>>(lines: &[(String, S)]) -> Result<ScriptedOperator, String> {
         let mut answers = std::collections::VecDeque::new();
-        for (i, l) in lines.iter().enumerate() {
-            if let Some(a) = parse_answer(l.as_ref()).map_err(|e| format!("line {}: {e}", i + 1))? {
+        for (from, l) in lines {
+            let answer = parse_answer(l.as_ref()).map_err(|e| format!("{from}: {e}"))?;
+            if let Some(mut a) = answer {
+                if let Some(reply) = &mut a {
+                    from.clone_into(&mut reply.from);
+                }
                 answers.push_back(a);
             }
         }
@@ -165,7 +183,11 @@ pub fn parse_answer(line: &str) -> Result<Option<Option<Reply>>, String> {
         Some(inner) => inner.to_owned(),
         None => rest.to_owned(),
     };
-    Ok(Some(Some(Reply { text, after })))
+    Ok(Some(Some(Reply {
+        text,
+        after,
+        from: String::new(),
+    })))
 }
 
 #[cfg(test)]
@@ -178,6 +200,7 @@ mod tests {
             Some(Some(Reply {
                 text: text.into(),
                 after,
+                from: String::new(),
             }))
         };
         assert_eq!(parse_answer("2"), Ok(r("2", 0.0)));
@@ -190,8 +213,10 @@ mod tests {
         assert_eq!(parse_answer("   "), Ok(None));
         assert!(parse_answer("@x 1").expect_err("invalid").contains("delay"));
         assert!(parse_answer("@-1 1").is_err());
-        let s = ScriptedOperator::new(&["1", "", "-", "@1 OK"]).expect("valid");
+        let mut s = ScriptedOperator::new(&["1", "", "-", "@1 OK"]).expect("valid");
         assert_eq!(s.answers.len(), 3);
+        let first = s.next_answer().flatten().expect("an answer");
+        assert_eq!((first.text.as_str(), first.from.as_str()), ("1", "line 1"));
         assert!(
             ScriptedOperator::new(&["1", "@z"])
                 .expect_err("invalid")
