@@ -1,6 +1,7 @@
 //! The controller's configuration and identity: `ReadCfgData`,
 //! `WriteCfgData` (the system parameters of the backup's `SYSPAR` files,
-//! changed in the run's memory only) and `GetSysInfo`, through the
+//! changed in the run's memory only), `GetSysInfo`, `IsSysId` and
+//! `GetModalPayloadMode`, through the
 //! controller's [`crate::world::System`].
 
 use rapid_evaluator::Value;
@@ -148,4 +149,29 @@ pub(crate) fn get_sys_info(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
         return invalid("GetSysInfo: no switch says what to return");
     };
     Ok(Value::Str(cx.sh.system.sys_info(switch)))
+}
+
+/// `IsSysId(SystemId)`: is this controller's system the one with that
+/// serial number (`GetSysInfo(\SerialNo)`)? FALSE when neither the backup
+/// nor `rapid.toml` says the serial number.
+pub(crate) fn is_sys_id(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    let id = cx.string(a, "SystemId")?;
+    let serial = cx.sh.system.sys_info("SerialNo");
+    Ok(Value::Bool(!serial.is_empty() && serial == id))
+}
+
+/// `GetModalPayloadMode()`: `SYS.cfg`'s `ModalPayLoadMode` (`SYS_MISC`),
+/// 1 (payloads set with `GripLoad`) when the backup does not set it, as
+/// the controller's default is.
+pub(crate) fn get_modal_payload_mode(cx: &mut Cx<'_>, _: &mut Args) -> R<Value> {
+    let mode = cx
+        .sh
+        .system
+        .read("SYS/SYS_MISC/ModalPayLoadMode", "Value", None)
+        .ok()
+        .and_then(|(v, _)| match v {
+            CfgValue::Text(t) => t.trim().parse::<f32>().ok(),
+            CfgValue::Flag(_) => None,
+        });
+    Ok(Value::Num(mode.unwrap_or(1.0)))
 }

@@ -124,6 +124,18 @@ pub(crate) fn speed_refresh(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     Ok(Done::Next)
 }
 
+/// `CSpeedOverride([\CTask])`: the speed override in percent. The
+/// operator's (the pendant's, without `\CTask`) is always 100 in the
+/// simulation; the task's (`\CTask`) is what `SpeedRefresh` last set.
+pub(crate) fn c_speed_override(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    let over = if a.given("CTask") {
+        cx.m.settings.refresh
+    } else {
+        100.0
+    };
+    Ok(Value::Num(over as f32))
+}
+
 /// `SpeedLimAxis MechUnit, AxisNo, AxisSpeed` and `SpeedLimCheckPoint
 /// RobSpeed`: the speeds the controller keeps to while it limits speed
 /// (a speed-limiting input or SafeMove). The simulation never limits
