@@ -500,6 +500,37 @@ ENDMODULE
     assert_eq!(out.status.code(), Some(0), "{}", show(&out));
 }
 
+/// A backup runs its tasks together, whatever its `HOME` holds: the
+/// modules there (a service program with a `main` of its own) are files
+/// the program may load, not tasks.
+#[test]
+fn a_backup_runs_its_tasks_whatever_its_home_holds() {
+    let dir = scratch("run-backup-home");
+    let task = |n: u32| {
+        format!("MODULE Main{n}\n  PROC main()\n    TPWrite \"task {n}\";\n  ENDPROC\nENDMODULE\n")
+    };
+    let (t1, t2) = (task(1), task(2));
+    write(
+        &dir,
+        &[
+            ("Cell/RAPID/TASK1/PROGMOD/Main1.mod", &t1),
+            ("Cell/RAPID/TASK2/PROGMOD/Main2.mod", &t2),
+            (
+                "Cell/HOME/Service/Service.mod",
+                "MODULE Service\n  PROC main()\n    TPWrite \"service\";\n  ENDPROC\nENDMODULE\n",
+            ),
+        ],
+    );
+    let out = rapid(&dir, &["run", "Cell"]);
+    assert_eq!(
+        show(&out),
+        "exit 0\n--- stdout\n[TASK1] task 1\n[TASK2] task 2\n--- stderr\n"
+    );
+    // The service program runs when named.
+    let out = rapid(&dir, &["run", "Cell/HOME/Service"]);
+    assert_eq!(show(&out), "exit 0\n--- stdout\nservice\n--- stderr\n");
+}
+
 /// A HOME module the program also names directly (a library loaded by
 /// `SYS.cfg`, its `Load` guarded by `ModExist`) is in the program from
 /// the start: without it the program would not load.

@@ -200,10 +200,11 @@ pub struct Loaded {
 pub fn controller(path: &Path, only: Option<&str>, entry: Option<&str>) -> Result<Loaded, String> {
     let given = entry;
     let entry = entry.unwrap_or("main");
-    let found = tasks(std::slice::from_ref(&path.to_path_buf()))?;
+    let mut found = tasks(std::slice::from_ref(&path.to_path_buf()))?;
     if found.tasks.is_empty() {
         return Err(format!("{}: no RAPID modules found", path.display()));
     }
+    without_home_files(&mut found, path);
     let mut together =
         found.tasks.len() > 1 && (one_backup(&found.tasks) || folder_of_tasks(path, &found.tasks));
     let lone = found.tasks.len() == 1;
@@ -327,6 +328,44 @@ pub fn at_start(t: &Arc<Task>, entry: &str) -> Arc<Task> {
         return t.clone();
     }
     without
+}
+
+/// A backup's tasks without the modules of its `HOME` folder, which are
+/// files on the controller's disk (the run's `HOME:`, from which a
+/// program loads them), not tasks; a path in `HOME` (a program kept
+/// there) keeps only what it holds.
+fn without_home_files(found: &mut Found, path: &Path) {
+    let first = |t: &Task| t.units.first().map(|u| u.path.clone());
+    let in_home = |t: &Task| first(t).is_some_and(|p| rapid_analyzer::layout::in_home(&p));
+    let given = path.join("x.mod");
+    let keep: Vec<bool> = if rapid_analyzer::layout::in_home(&given.to_string_lossy()) {
+        let Ok(root) = std::fs::canonicalize(path) else {
+            return;
+        };
+        let under = |t: &Task| {
+            first(t)
+                .and_then(|p| std::fs::canonicalize(p).ok())
+                .is_some_and(|p| p.starts_with(&root))
+        };
+        found.tasks.iter().map(|t| under(t)).collect()
+    } else if found.tasks.iter().any(|t| t.is_backup()) {
+        found.tasks.iter().map(|t| !in_home(t)).collect()
+    } else {
+        return;
+    };
+    if !keep.contains(&true) {
+        return;
+    }
+    fn kept<T>(v: &mut Vec<T>, keep: &[bool]) {
+        *v = std::mem::take(v)
+            .into_iter()
+            .zip(keep)
+            .filter_map(|(x, k)| k.then_some(x))
+            .collect();
+    }
+    kept(&mut found.tasks, &keep);
+    kept(&mut found.settings, &keep);
+    kept(&mut found.systems, &keep);
 }
 
 /// Are these the tasks of one controller's backup?
