@@ -466,3 +466,28 @@ pub(crate) fn remaining_retries(cx: &mut Cx<'_>, _: &mut Args) -> R<Value> {
     let left = cx.sh.limits.max_retries.saturating_sub(made);
     Ok(Value::Num(left as f32))
 }
+
+/// `ArgName(Parameter [\ErrorNumber])`: the name of the data object the
+/// argument is: a whole object (a component or an element gives its
+/// object's name), followed back through the parameters it was passed
+/// by, value parameters included. A value (an expression, a literal) is
+/// no data object: `ERR_ARGNAME`, or with `\ErrorNumber` that error in the
+/// variable and an empty name.
+pub(crate) fn arg_name(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    let name = a
+        .place_of("Parameter")
+        .and_then(|p| cx.m.origin_name(p.root));
+    if let Some(name) = name {
+        return Ok(Value::Str(name));
+    }
+    if let Some(p) = cx.opt_place(a, "ErrorNumber")? {
+        let errno = cx.m.prog.errnum("ERR_ARGNAME");
+        cx.store(&p, Value::Num(errno))?;
+        return Ok(Value::Str(String::new()));
+    }
+    fault(named_error(
+        &cx.m.prog,
+        "ERR_ARGNAME",
+        "ArgName: the argument is a value, not a data object".to_owned(),
+    ))
+}

@@ -320,6 +320,7 @@ const FUNCTIONS: &[(&str, FuncFn)] = &[
     ("ValidIO", io::valid_io),
     ("IOUnitState", io::io_unit_state),
     ("RemainingRetries", data::remaining_retries),
+    ("ArgName", data::arg_name),
     ("CRobT", motion::c_rob_t),
     ("CPos", motion::c_pos),
     ("CJointT", motion::c_joint_t),

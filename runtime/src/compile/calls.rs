@@ -36,6 +36,10 @@ struct For {
     by_ref: bool,
     switch: bool,
     ty: Option<Ty>,
+    /// A value parameter of the program's routine: a data object given
+    /// for it is passed as its place, loaded when the routine is entered,
+    /// so the routine knows the object's name (`ArgName`).
+    named: bool,
 }
 
 pub(super) fn given_of_call(args: &[CallArg]) -> Vec<Given<'_>> {
@@ -245,6 +249,7 @@ impl Compiler<'_> {
             .iter()
             .map(|p| For {
                 by_ref: by_reference(p.mode),
+                named: !by_reference(p.mode),
                 switch: p.switch,
                 ty: Some(
                     p.ty.as_ref()
@@ -390,7 +395,7 @@ impl Compiler<'_> {
                     rest(self, k);
                     return None;
                 }
-                Value::Expr(e) if p.by_ref && self.is_place(e) => {
+                Value::Expr(e) if (p.by_ref || p.named) && self.is_place(e) => {
                     self.place(e);
                     self.emit(Op::ArgPlace);
                 }
@@ -549,6 +554,7 @@ fn catalogue_params(r: &CatalogueRoutine) -> Vec<For> {
         .iter()
         .map(|p| For {
             by_ref: p.mode.is_some_and(by_reference),
+            named: false,
             switch: p.switch,
             ty: (!p.switch && !p.ty.eq_ignore_ascii_case(ANYTYPE))
                 .then(|| Ty::named(&p.ty).array(p.array)),

@@ -60,6 +60,9 @@ impl Machine {
     pub(crate) fn pop_frame(&mut self) -> Option<Frame> {
         let f = self.frames.pop()?;
         self.slots.truncate(f.top as usize);
+        while self.origins.last().is_some_and(|(s, _)| *s >= f.top) {
+            self.origins.pop();
+        }
         self.vals.truncate(f.vals as usize);
         self.places.truncate(f.places as usize);
         self.args.truncate(f.args as usize);
@@ -79,8 +82,18 @@ impl Machine {
         // Which parameters an argument is given for (a parameter past the
         // 64th counts as given).
         let mut given: u64 = 0;
+        let mut origins = Vec::new();
         for (k, &i) in bound.iter().enumerate() {
             let a = std::mem::replace(&mut self.args[at + k], ArgVal::Absent);
+            if let ArgVal::Place(p) = &a
+                && code
+                    .params
+                    .get(i as usize)
+                    .is_some_and(|p| !p.by_reference())
+                && let Some(name) = self.origin_name(p.root)
+            {
+                origins.push(((base + i as usize) as u32, name));
+            }
             let slot = match self.param_slot(sh, &code, i, a) {
                 Ok(s) => s,
                 Err(f) => {
@@ -107,7 +120,25 @@ impl Machine {
         if let Some(f) = self.frames.last_mut() {
             f.entered = sh.clock;
         }
+        origins.sort_by_key(|(s, _)| *s);
+        self.origins.extend(origins);
         Ok(())
+    }
+
+    /// The name of the data object at a place's root, following value
+    /// parameters back to the data object their argument was (`ArgName`).
+    /// `None` for a value parameter given a value, not a data object.
+    pub(crate) fn origin_name(&self, root: Root) -> Option<String> {
+        if let Root::Stack(s) = root {
+            if let Some((_, name)) = self.origins.iter().rev().find(|(o, _)| *o == s) {
+                return Some(name.clone());
+            }
+            let frame = self.frames.iter().rev().find(|f| f.base <= s)?;
+            if ((s - frame.base) as usize) < frame.code.params.len() {
+                return None;
+            }
+        }
+        self.data_name(root)
     }
 
     /// Pushes a routine's frame within the call-depth budget.

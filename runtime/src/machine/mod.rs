@@ -276,6 +276,9 @@ pub struct Machine {
     pub(crate) loaded: Vec<crate::builtins::modules::LoadedModule>,
     /// The loads `StartLoad` started.
     pub(crate) load_sessions: crate::builtins::modules::Sessions,
+    /// The value parameters given a data object, by slot, with the name
+    /// of the object the argument was (`ArgName`), in slot order.
+    pub(crate) origins: Vec<(u32, String)>,
 }
 
 impl Machine {
@@ -336,6 +339,7 @@ impl Machine {
             search: Default::default(),
             loaded: Vec::new(),
             load_sessions: Default::default(),
+            origins: Vec::new(),
             name,
             number,
             prog,
