@@ -300,6 +300,7 @@ const FUNCTIONS: &[(&str, FuncFn)] = &[
     ("RawBytesLen", rawbytes::raw_bytes_len),
     ("IsMechUnitActive", units::is_mech_unit_active),
     ("GetMecUnitName", units::get_mec_unit_name),
+    ("GetNextMechUnit", units::get_next_mech_unit),
     ("GetMotorTorque", units::get_motor_torque),
     ("g_GetPos", gripper::g_get_pos),
     ("g_IsCalibrated", gripper::g_is_calibrated),

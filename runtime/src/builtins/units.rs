@@ -1,6 +1,7 @@
 //! Mechanical units (`mecunit` data, the units of the controller's
 //! `MOC.cfg`, which the checker holds the program's names to): `ActUnit`,
-//! `DeactUnit`, `IsMechUnitActive`, `GetMecUnitName`, `GetMotorTorque`. Every unit is active
+//! `DeactUnit`, `IsMechUnitActive`, `GetMecUnitName`, `GetNextMechUnit`,
+//! `GetMotorTorque`. Every unit is active
 //! when the run starts (the simulation does not read `MOC.cfg`'s
 //! activation at start-up); the state is the controller's, shared by its
 //! tasks.
@@ -71,4 +72,66 @@ pub(crate) fn get_motor_torque(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
         ));
     }
     Ok(Value::Num(0.0))
+}
+
+/// `GetNextMechUnit(ListNumber, UnitName [\MecRef] [\TCPRob] [\NoOfAxes]
+/// [\MecTaskNo] [\MotPlanNo] [\Active])`: unit number `ListNumber` (from
+/// 0) of the controller's list, `MOC.cfg`'s mechanical units in order
+/// (without one, `ROB_1`... a robot for each motion task), its name and
+/// what the optional arguments ask; `ListNumber` counts on. FALSE, and an
+/// empty name, past the last. Which task and motion planner run a unit
+/// the simulation does not know: `\MecTaskNo` and `\MotPlanNo` stop it.
+pub(crate) fn get_next_mech_unit(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    for unknown in ["MecTaskNo", "MotPlanNo"] {
+        if a.given(unknown) {
+            return fault(crate::machine::FaultKind::Unsupported(format!(
+                "GetNextMechUnit \\{unknown}"
+            )));
+        }
+    }
+    let mut units = cx.sh.system.mechanical_units();
+    if units.is_empty() {
+        units = (1..=cx.sh.robots.iter().filter(|r| r.is_some()).count().max(1))
+            .map(|n| crate::world::MechUnit {
+                name: format!("ROB_{n}"),
+                tcp_robot: true,
+                axes: 6,
+            })
+            .collect();
+    }
+    let list = cx.place_arg(a, "ListNumber")?;
+    let n = cx.num(a, "ListNumber")?;
+    let name = cx.place_arg(a, "UnitName")?;
+    let found = (n >= 0.0 && n.fract() == 0.0)
+        .then(|| units.get(n as usize))
+        .flatten()
+        .cloned();
+    cx.store(&list, Value::Num((n + 1.0) as f32))?;
+    let Some(unit) = found else {
+        cx.store(&name, Value::Str(String::new()))?;
+        return Ok(Value::Bool(false));
+    };
+    cx.store(&name, Value::Str(unit.name.clone()))?;
+    let active = !cx
+        .sh
+        .inactive_units
+        .contains(&unit.name.to_ascii_lowercase());
+    let outputs = [
+        (
+            "MecRef",
+            Value::Record {
+                ty: "mecunit".to_owned(),
+                fields: vec![("name".to_owned(), Value::Str(unit.name.clone()))],
+            },
+        ),
+        ("TCPRob", Value::Bool(unit.tcp_robot)),
+        ("NoOfAxes", Value::Num(unit.axes as f32)),
+        ("Active", Value::Bool(active)),
+    ];
+    for (param, value) in outputs {
+        if let Some(p) = cx.opt_place(a, param)? {
+            cx.store(&p, value)?;
+        }
+    }
+    Ok(Value::Bool(true))
 }

@@ -29,7 +29,7 @@ pub use robot::{
     Pose, RobTarget, Robot, RobotError, Speed, Tool, WObj, Zone,
 };
 pub use sockets::{EmptyNetwork, NoSockets, SocketError, SocketState, Sockets};
-pub use system::{CfgError, CfgValue, SYS_INFO_DEFAULTS, SysInfo, System};
+pub use system::{CfgError, CfgValue, MechUnit, SYS_INFO_DEFAULTS, SysInfo, System};
 
 use crate::{Config, Output};
 

@@ -294,11 +294,59 @@ impl System {
         })
     }
 
+    /// `MOC.cfg`'s mechanical units (`MECHANICAL_UNIT`), in its order:
+    /// each unit's name, whether it is a robot with a TCP (`-use_robot`)
+    /// and its number of axes (the robot's `-use_joint_N`, six when they
+    /// are not written; one for each of its singles).
+    pub fn mechanical_units(&self) -> Vec<MechUnit> {
+        self.moc_instances("MECHANICAL_UNIT")
+            .filter_map(|u| {
+                let name = u.get("name")?.to_owned();
+                let robot = u.get("use_robot").filter(|r| !r.is_empty());
+                let axes = match robot {
+                    Some(r) => self
+                        .moc_instances("ROBOT")
+                        .find(|i| i.get("name").is_some_and(|n| n.eq_ignore_ascii_case(r)))
+                        .map(|i| count_prefixed(i, "use_joint_"))
+                        .filter(|&n| n > 0)
+                        .unwrap_or(6),
+                    None => count_prefixed(u, "use_single_"),
+                };
+                Some(MechUnit {
+                    name,
+                    tcp_robot: robot.is_some(),
+                    axes,
+                })
+            })
+            .collect()
+    }
+
     /// `MOC.cfg`'s first robot's type (`-use_robot_type`).
     fn robot_type(&self) -> Option<String> {
         self.moc_instances("ROBOT")
             .find_map(|r| r.get("use_robot_type").map(str::to_owned))
     }
+}
+
+/// A mechanical unit of the controller (`GetNextMechUnit`).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct MechUnit {
+    pub name: String,
+    /// A robot with a TCP.
+    pub tcp_robot: bool,
+    pub axes: usize,
+}
+
+/// How many of an instance's attributes with a value start with `prefix`.
+fn count_prefixed(inst: &Instance, prefix: &str) -> usize {
+    inst.attrs
+        .iter()
+        .filter(|a| {
+            a.name.len() > prefix.len()
+                && a.name[..prefix.len()].eq_ignore_ascii_case(prefix)
+                && a.value.as_deref().is_some_and(|v| !v.is_empty())
+        })
+        .count()
 }
 
 fn matches_value(inst: &Instance, attr: &str, value: &str) -> bool {
