@@ -177,6 +177,48 @@ pub(crate) fn write_bin(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     write_bytes(cx, a, &bytes)
 }
 
+/// `WriteRawBytes IODevice, RawData [\NoOfBytes]`: the valid bytes of
+/// `RawData` (or its first `NoOfBytes`).
+pub(crate) fn write_raw_bytes(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let data = super::rawbytes::bytes(&cx.req(a, "RawData")?);
+    let n = match cx.opt_num(a, "NoOfBytes")? {
+        Some(n) if n < 0.0 || n.fract() != 0.0 || n as usize > data.len() => {
+            return fault(named_error(
+                &cx.m.prog,
+                "ERR_OUTOFBND",
+                format!(
+                    "WriteRawBytes: NoOfBytes {n} outside 0..{} (the valid bytes)",
+                    data.len()
+                ),
+            ));
+        }
+        Some(n) => n as usize,
+        None => data.len(),
+    };
+    write_bytes(cx, a, &data[..n])
+}
+
+/// `ReadRawBytes IODevice, RawData [\Time]`: the bytes of the file from
+/// where it was read up to, as many as a `rawbytes` holds (1024); at the
+/// end of the file, `ERR_RANYBIN_EOF` (a file has every byte at once:
+/// `\Time` never runs out).
+pub(crate) fn read_raw_bytes(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let place = cx.place_arg(a, "RawData")?;
+    let f = readable(cx, a)?;
+    let end = (f.pos + super::rawbytes::MAX_BYTES).min(f.data.len());
+    let read = f.data.get(f.pos..end).unwrap_or_default().to_vec();
+    f.pos = end.max(f.pos);
+    if read.is_empty() {
+        return fault(named_error(
+            &cx.m.prog,
+            "ERR_RANYBIN_EOF",
+            "ReadRawBytes: the end of the file".to_owned(),
+        ));
+    }
+    cx.store(&place, super::rawbytes::value(&read))?;
+    Ok(Done::Next)
+}
+
 /// `Rewind IODevice`.
 pub(crate) fn rewind(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     let f = open_file(cx, a)?;

@@ -205,6 +205,8 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("Write", files::write),
     ("WriteStrBin", files::write_str_bin),
     ("WriteBin", files::write_bin),
+    ("WriteRawBytes", files::write_raw_bytes),
+    ("ReadRawBytes", files::read_raw_bytes),
     ("Rewind", files::rewind),
     ("RemoveFile", files::remove_file),
     ("MakeDir", files::make_dir),
