@@ -177,9 +177,16 @@ impl EmptyNetwork {
     }
 
     fn nobody(&mut self, timeout: f64, what: &str) -> SocketError {
+        // `WAIT_MAX`, the largest time a wait takes: it waits forever.
+        const WAIT_MAX: f64 = 8_388_608.0;
+        let message = if timeout >= WAIT_MAX {
+            format!("{what}: nobody on the network, and WAIT_MAX waits forever")
+        } else {
+            format!("{what} within {timeout} s (nobody on the network)")
+        };
         SocketError::NeverAnswers {
             after: timeout,
-            message: format!("{what} within {timeout} s (nobody on the network)"),
+            message,
         }
     }
 }
@@ -286,5 +293,36 @@ impl Sockets for EmptyNetwork {
             .get((socket as usize).wrapping_sub(1))
             .copied()
             .unwrap_or(SocketState::Closed)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn never(e: Result<(u32, String), SocketError>) -> (f64, String) {
+        match e {
+            Err(SocketError::NeverAnswers { after, message }) => (after, message),
+            other => panic!("not a wait nobody ends: {other:?}"),
+        }
+    }
+
+    #[test]
+    fn nobody_connects_within_the_time_or_ever() {
+        let mut net = EmptyNetwork::default();
+        let s = net.create(false).expect("created");
+        net.bind(s, "192.168.125.1", 1025).expect("bound");
+        net.listen(s).expect("listening");
+        let (after, message) = never(net.accept(s, 10.0));
+        assert_eq!(after, 10.0);
+        assert!(
+            message.ends_with("within 10 s (nobody on the network)"),
+            "{message}"
+        );
+        let (_, message) = never(net.accept(s, 8_388_608.0));
+        assert!(
+            message.ends_with(": nobody on the network, and WAIT_MAX waits forever"),
+            "{message}"
+        );
     }
 }
