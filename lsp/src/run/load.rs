@@ -337,11 +337,16 @@ pub fn at_start(t: &Arc<Task>, entry: &str) -> Arc<Task> {
 fn without_home_files(found: &mut Found, path: &Path) {
     let first = |t: &Task| t.units.first().map(|u| u.path.clone());
     let in_home = |t: &Task| first(t).is_some_and(|p| rapid_analyzer::layout::in_home(&p));
-    let given = path.join("x.mod");
-    let keep: Vec<bool> = if rapid_analyzer::layout::in_home(&given.to_string_lossy()) {
-        let Ok(root) = std::fs::canonicalize(path) else {
-            return;
-        };
+    // A module given stands for its folder's program.
+    let Ok(given) = std::fs::canonicalize(path) else {
+        return;
+    };
+    let root = match given.parent() {
+        Some(parent) if given.is_file() => parent.to_path_buf(),
+        _ => given,
+    };
+    let keep: Vec<bool> = if rapid_analyzer::layout::in_home(&root.join("x.mod").to_string_lossy())
+    {
         let under = |t: &Task| {
             first(t)
                 .and_then(|p| std::fs::canonicalize(p).ok())
