@@ -526,9 +526,11 @@ fn a_backup_runs_its_tasks_whatever_its_home_holds() {
         show(&out),
         "exit 0\n--- stdout\n[TASK1] task 1\n[TASK2] task 2\n--- stderr\n"
     );
-    // The service program runs when named.
-    let out = rapid(&dir, &["run", "Cell/HOME/Service"]);
-    assert_eq!(show(&out), "exit 0\n--- stdout\nservice\n--- stderr\n");
+    // The service program runs when named, by its folder or its module.
+    for named in ["Cell/HOME/Service", "Cell/HOME/Service/Service.mod"] {
+        let out = rapid(&dir, &["run", named]);
+        assert_eq!(show(&out), "exit 0\n--- stdout\nservice\n--- stderr\n");
+    }
 }
 
 /// A HOME module the program also names directly (a library loaded by
