@@ -82,7 +82,7 @@ impl Machine {
         // Which parameters an argument is given for (a parameter past the
         // 64th counts as given).
         let mut given: u64 = 0;
-        let mut origins = Vec::new();
+        let origins = self.origins.len();
         for (k, &i) in bound.iter().enumerate() {
             let a = std::mem::replace(&mut self.args[at + k], ArgVal::Absent);
             if let ArgVal::Place(p) = &a
@@ -90,15 +90,15 @@ impl Machine {
                     .params
                     .get(i as usize)
                     .is_some_and(|p| !p.by_reference())
-                && let Some(name) = self.origin_name(p.root)
             {
-                origins.push(((base + i as usize) as u32, name));
+                self.origins.push(((base + i as usize) as u32, p.root));
             }
             let slot = match self.param_slot(sh, &code, i, a) {
                 Ok(s) => s,
                 Err(f) => {
                     self.slots.truncate(base);
                     self.args.truncate(at);
+                    self.origins.truncate(origins);
                     return Err(f);
                 }
             };
@@ -110,6 +110,7 @@ impl Machine {
             let bit = 1u64.checked_shl(i as u32).unwrap_or(u64::MAX);
             if !p.optional && given & bit == 0 {
                 self.slots.truncate(base);
+                self.origins.truncate(origins);
                 return invalid(format!(
                     "the argument {} of {} is missing",
                     p.name, code.name
@@ -120,8 +121,8 @@ impl Machine {
         if let Some(f) = self.frames.last_mut() {
             f.entered = sh.clock;
         }
-        origins.sort_by_key(|(s, _)| *s);
-        self.origins.extend(origins);
+        // In slot order (named arguments come in any order).
+        self.origins[origins..].sort_unstable_by_key(|(s, _)| *s);
         Ok(())
     }
 
@@ -130,8 +131,12 @@ impl Machine {
     /// `None` for a value parameter given a value, not a data object.
     pub(crate) fn origin_name(&self, root: Root) -> Option<String> {
         if let Root::Stack(s) = root {
-            if let Some((_, name)) = self.origins.iter().rev().find(|(o, _)| *o == s) {
-                return Some(name.clone());
+            // The argument's place, in a caller's frame: below `s`.
+            if let Some(&(_, from)) = self.origins.iter().rev().find(|(o, _)| *o == s) {
+                return match from {
+                    Root::Stack(f) if f >= s => None,
+                    _ => self.origin_name(from),
+                };
             }
             let frame = self.frames.iter().rev().find(|f| f.base <= s)?;
             if ((s - frame.base) as usize) < frame.code.params.len() {

@@ -276,9 +276,9 @@ pub struct Machine {
     pub(crate) loaded: Vec<crate::builtins::modules::LoadedModule>,
     /// The loads `StartLoad` started.
     pub(crate) load_sessions: crate::builtins::modules::Sessions,
-    /// The value parameters given a data object, by slot, with the name
-    /// of the object the argument was (`ArgName`), in slot order.
-    pub(crate) origins: Vec<(u32, String)>,
+    /// The value parameters given a data object, by slot, with the root
+    /// of the place the argument was (`ArgName`), in slot order.
+    pub(crate) origins: Vec<(u32, Root)>,
 }
 
 impl Machine {
@@ -415,6 +415,7 @@ impl Machine {
             return Err(format!("{} takes parameters", code.name));
         }
         self.slots.clear();
+        self.origins.clear();
         self.vals.clear();
         self.places.clear();
         self.args.clear();
@@ -429,6 +430,7 @@ impl Machine {
     pub(crate) fn finish(&mut self, outcome: Outcome) {
         self.frames.clear();
         self.slots.clear();
+        self.origins.clear();
         self.vals.clear();
         self.places.clear();
         self.args.clear();
