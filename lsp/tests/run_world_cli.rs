@@ -533,6 +533,37 @@ fn a_backup_runs_its_tasks_whatever_its_home_holds() {
     }
 }
 
+/// A procedure the program calls by name, from a module it loads first
+/// (`Load`, no late binding): the controller links the call when the
+/// module comes; a call it still cannot link stops the run at its line.
+#[test]
+fn a_call_by_name_links_to_the_module_a_load_brought() {
+    let dir = scratch("run-load-link");
+    write(
+        &dir,
+        &[
+            (
+                "Cell/RAPID/TASK1/PROGMOD/Main.mod",
+                "MODULE Main\n  PROC main()\n    Load \\Dynamic, \"HOME:/Part.mod\";\n    PartProc 2;\n    UnLoad \"HOME:/Part.mod\";\n    PartProc 3;\n  ENDPROC\nENDMODULE\n",
+            ),
+            (
+                "Cell/HOME/Part.mod",
+                "MODULE Part\n  PROC PartProc(num n)\n    TPWrite \"part \"\\Num:=n;\n  ENDPROC\nENDMODULE\n",
+            ),
+        ],
+    );
+    let out = rapid(&dir, &["run", "Cell"]);
+    let shown = show(&out);
+    assert!(
+        shown.starts_with("exit 1\n--- stdout\npart 2\n--- stderr\n"),
+        "{shown}"
+    );
+    assert!(
+        shown.contains("`PartProc` is declared nowhere") && shown.contains("Main.mod:6:5"),
+        "{shown}"
+    );
+}
+
 /// A HOME module the program also names directly (a library loaded by
 /// `SYS.cfg`, its `Load` guarded by `ModExist`) is in the program from
 /// the start: without it the program would not load.

@@ -372,6 +372,11 @@ pub(crate) struct PureSite {
 #[derive(Clone, Debug)]
 pub(crate) struct LateSite {
     pub args: Vec<Option<Box<str>>>,
+    /// A call written by name whose procedure no module declared when the
+    /// routine was compiled: the controller links it when a `Load` brings
+    /// the procedure, and a call it still cannot link stops the run as a
+    /// name declared nowhere.
+    pub linked: bool,
 }
 
 /// A `WaitUntil`: the hidden slots of its state and whether `\MaxTime`,

@@ -419,7 +419,7 @@ impl Compiler<'_> {
     /// The arguments of a late-bound call (`%name% args;`), whose routine is
     /// known only when it runs: data references as places, the rest as
     /// values.
-    pub(super) fn late_args(&mut self, args: &[CallArg]) {
+    pub(super) fn late_args(&mut self, args: &[CallArg], linked: bool) {
         let given = given_of_call(args);
         for g in &given {
             match &g.value {
@@ -453,6 +453,7 @@ impl Compiler<'_> {
         }
         self.code.lates.push(LateSite {
             args: given.iter().map(|g| g.name.map(Into::into)).collect(),
+            linked,
         });
         let site = self.code.lates.len() as u32 - 1;
         self.emit(Op::Late(site));

@@ -150,7 +150,7 @@ impl Compiler<'_> {
         }
     }
 
-    fn push_const(&mut self, v: Value) {
+    pub(super) fn push_const(&mut self, v: Value) {
         let c = self.constant(v);
         self.emit(Op::Const(c));
     }

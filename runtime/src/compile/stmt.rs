@@ -311,15 +311,17 @@ impl Compiler<'_> {
         let name = match &call.callee {
             IrCallee::Late(e) => {
                 self.expr(e, Some(&Ty::string()));
-                self.late_args(&call.args);
+                self.late_args(&call.args, false);
                 return;
             }
             IrCallee::Name(n) => n,
         };
         match self.names.routine(name, false) {
+            // A procedure no module declares yet: a module the program
+            // loads (`Load`) may bring it before the call is reached.
             None => {
-                let given = super::calls::given_of_call(&call.args);
-                self.fail_call(Failure::Unknown(name.clone()), &given);
+                self.push_const(rapid_evaluator::Value::Str(name.clone()));
+                self.late_args(&call.args, true);
             }
             Some(callee) => self.procedure_call(name, callee, &call.args),
         }

@@ -427,6 +427,9 @@ impl Machine {
                         _ => return invalid("a late-bound call needs a string"),
                     };
                     save!();
+                    if l.linked && self.prog.routine_named(code.module, &name).is_none() {
+                        return invalid(self.prog.undeclared(&name, false));
+                    }
                     self.call_by_name(sh, &name, &l.args)?;
                     reload!();
                 }
