@@ -141,6 +141,10 @@ pub struct Program {
     /// Routines named at run time (late binding, `CallByVar`), by the
     /// calling module and the folded name.
     late: Mutex<HashMap<(usize, String), Option<u32>>>,
+    /// A module calls `ArgName`: a value parameter given a data object is
+    /// passed as its place, so that `ArgName` can name the object (else
+    /// as its value, which is quicker).
+    pub(crate) arg_name: bool,
 }
 
 /// The first number given to the predefined errors (`ERR_*`); the
@@ -176,6 +180,12 @@ impl Program {
             intno: None,
             errnums: NameMap::default(),
             late: Mutex::default(),
+            arg_name: task.live_units().any(|(_, u)| {
+                u.text
+                    .as_bytes()
+                    .windows(7)
+                    .any(|w| w.eq_ignore_ascii_case(b"argname"))
+            }),
             task: task.clone(),
         };
         // The modules' data and routines come last: a module loaded while

@@ -36,9 +36,10 @@ struct For {
     by_ref: bool,
     switch: bool,
     ty: Option<Ty>,
-    /// A value parameter of the program's routine: a data object given
-    /// for it is passed as its place, loaded when the routine is entered,
-    /// so the routine knows the object's name (`ArgName`).
+    /// A value parameter of the program's routine, in a program that
+    /// calls `ArgName`: a data object given for it is passed as its place,
+    /// loaded when the routine is entered, so the routine knows the
+    /// object's name.
     named: bool,
 }
 
@@ -249,7 +250,7 @@ impl Compiler<'_> {
             .iter()
             .map(|p| For {
                 by_ref: by_reference(p.mode),
-                named: !by_reference(p.mode),
+                named: !by_reference(p.mode) && self.prog.arg_name,
                 switch: p.switch,
                 ty: Some(
                     p.ty.as_ref()
