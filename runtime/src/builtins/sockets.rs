@@ -83,10 +83,10 @@ fn done<T>(cx: &mut Cx<'_>, a: &Args, r: Result<T, SocketError>) -> R<Option<T>>
         }
         Err(SocketError::NeverAnswers { after, message }) => {
             // The task waits the whole time (other tasks run), then the
-            // wait times out with the error.
+            // wait times out with the error; a `WAIT_MAX` wait never ends.
             let w = Wait {
                 kind: WaitKind::Never,
-                deadline: Some(cx.now() + after.max(0.0)),
+                deadline: (after < crate::world::WAIT_MAX).then(|| cx.now() + after.max(0.0)),
                 on_timeout: Timeout::Error("ERR_SOCK_TIMEOUT", format!("{}: {message}", a.name)),
                 what: format!("{} ({message})", a.name),
             };

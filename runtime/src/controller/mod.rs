@@ -563,7 +563,12 @@ impl Controller {
             })
             .collect();
         let others = if lone {
-            "nothing the simulation runs can change it (script a signal change with --set NAME=VALUE@SECONDS)".to_owned()
+            let hint = if self.tasks[0].waits_on_signals() {
+                " (script a signal change with --set NAME=VALUE@SECONDS)"
+            } else {
+                ""
+            };
+            format!("nothing the simulation runs can change it{hint}")
         } else {
             format!("every task waits: {}", report.join("; "))
         };

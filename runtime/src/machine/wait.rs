@@ -334,6 +334,15 @@ impl Machine {
             .map(|w| w.what.clone())
     }
 
+    /// Does the task wait for a signal (`WaitDI`...), or for a condition
+    /// (`WaitUntil`), which a scripted signal change may end?
+    pub(crate) fn waits_on_signals(&self) -> bool {
+        self.frames
+            .last()
+            .and_then(|f| f.wait.as_ref())
+            .is_some_and(|w| matches!(w.kind, WaitKind::Signal { .. } | WaitKind::Poll { .. }))
+    }
+
     /// The deadlock of this task: it waits, and nothing can end the wait.
     pub(crate) fn deadlock(&self, others: &str) -> Box<super::Fault> {
         let what = self.waiting_for().unwrap_or_else(|| "the task".to_owned());

@@ -28,7 +28,7 @@ pub use robot::{
     InstantRobot, JointTarget, Known, Motion, MoveKind, MoveRequest, MoveTarget, NO_KINEMATICS,
     Pose, RobTarget, Robot, RobotError, Speed, Tool, WObj, Zone,
 };
-pub use sockets::{EmptyNetwork, NoSockets, SocketError, SocketState, Sockets};
+pub use sockets::{EmptyNetwork, NoSockets, SocketError, SocketState, Sockets, WAIT_MAX};
 pub use system::{CfgError, CfgValue, MechUnit, SYS_INFO_DEFAULTS, SysInfo, System};
 
 use crate::{Config, Output};

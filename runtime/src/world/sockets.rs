@@ -166,6 +166,10 @@ pub struct EmptyNetwork {
     udp: Vec<u32>,
 }
 
+/// `WAIT_MAX`, the largest time a wait takes: a wait that long waits
+/// forever.
+pub const WAIT_MAX: f64 = 8_388_608.0;
+
 impl EmptyNetwork {
     fn slot(&mut self, socket: u32) -> Result<&mut SocketState, SocketError> {
         match self.states.get_mut((socket as usize).wrapping_sub(1)) {
@@ -177,8 +181,6 @@ impl EmptyNetwork {
     }
 
     fn nobody(&mut self, timeout: f64, what: &str) -> SocketError {
-        // `WAIT_MAX`, the largest time a wait takes: it waits forever.
-        const WAIT_MAX: f64 = 8_388_608.0;
         let message = if timeout >= WAIT_MAX {
             format!("{what}: nobody on the network, and WAIT_MAX waits forever")
         } else {
