@@ -390,6 +390,79 @@ fn run_answers_output_errors_with_lines_and_a_trace_summary() {
 }
 
 #[test]
+fn run_takes_a_backup_s_tasks_together_as_rapid_run_does() {
+    let dir = project("run-backup");
+    let mut c = Client::start(&dir, &[], None);
+    let sync = |me: &str, other: &str| {
+        format!(
+            "MODULE {me}Main\n  VAR syncident ready;\n  PERS tasks both{{2}} := [[\"T_ROB1\"],[\"T_PLC\"]];\n  PROC main()\n    TPWrite \"{me} up\";\n    WaitSyncTask ready, both;\n    TPWrite \"{me} past {other}\";\n  ENDPROC\nENDMODULE\n"
+        )
+    };
+    let (rob, plc) = (sync("Rob", "Plc"), sync("Plc", "Rob"));
+    let plc_broken = plc.replace(
+        "WaitSyncTask",
+        "TPWrite \"\" \\Num:=1 / 0;\n    WaitSyncTask",
+    );
+    write(
+        &dir,
+        &[
+            (
+                "bk/SYSPAR/SYS.cfg",
+                "SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n\n      -Name \"T_ROB1\" -Type \"NORMAL\" -MotionTask\n\n      -Name \"T_PLC\" -Type \"NORMAL\"\n",
+            ),
+            ("bk/RAPID/TASK1/PROGMOD/RobMain.mod", &rob),
+            ("bk/RAPID/TASK2/PROGMOD/PlcMain.mod", &plc),
+        ],
+    );
+    let answer = c.call("run", json!({"path": "bk"}));
+    let ran = structured(&answer);
+    assert_eq!(ran["status"], "finished", "{ran:#}");
+    let names: Vec<&str> = ran["tasks"]
+        .as_array()
+        .into_iter()
+        .flatten()
+        .filter_map(|t| t["name"].as_str())
+        .collect();
+    assert_eq!(names, ["T_ROB1", "T_PLC"], "{ran:#}");
+    let mut lines: Vec<&str> = ran["output"]
+        .as_array()
+        .into_iter()
+        .flatten()
+        .filter_map(|l| l.as_str())
+        .collect();
+    // Both tasks pass the meeting point only when both reached it.
+    assert_eq!(lines.len(), 4, "{ran:#}");
+    assert!(lines[..2].iter().all(|l| l.ends_with(" up")), "{ran:#}");
+    lines.sort_unstable();
+    assert_eq!(
+        lines,
+        [
+            "[T_PLC] Plc past Rob",
+            "[T_PLC] Plc up",
+            "[T_ROB1] Rob past Plc",
+            "[T_ROB1] Rob up"
+        ]
+    );
+    // One task alone, as `rapid run --task`.
+    let answer = c.call("run", json!({"path": "bk", "task": "T_ROB1"}));
+    let alone = structured(&answer);
+    assert_eq!(alone["tasks"][0]["name"], "T_ROB1", "{alone:#}");
+    // A task's error is the run's, named by its task; the other waits.
+    write(&dir, &[("bk/RAPID/TASK2/PROGMOD/PlcMain.mod", &plc_broken)]);
+    let failed = c.call("run", json!({"path": "bk"}));
+    let r = structured(&failed);
+    assert_eq!(
+        (r["status"].clone(), r["success"].clone()),
+        (json!("error"), json!(false)),
+        "{r:#}"
+    );
+    assert_eq!(r["tasks"][1]["error"]["errno"], "ERR_DIVZERO", "{r:#}");
+    assert_eq!(r["error"]["errno"], "ERR_DIVZERO", "{r:#}");
+    let shown = summary(&failed);
+    assert!(shown.contains("[T_PLC] error: ERR_DIVZERO"), "{shown}");
+}
+
+#[test]
 fn test_runs_the_tests_of_a_task_with_results() {
     let dir = project("tests");
     let mut c = Client::start(&dir, &[], None);

@@ -1,6 +1,7 @@
 //! The `run` and `test` tools: `rapid run`'s and `rapid test`'s library
-//! entry points ([`crate::run::run_routine`], [`crate::test_cmd::run_tests`])
-//! on tasks the project loader reads from the roots. Every run is bounded
+//! entry points ([`crate::run::run_loaded`], [`crate::test_cmd::run_tests`])
+//! on tasks the project loader reads from the roots, as `rapid run`
+//! loads them ([`load::controller_in`]: a backup's tasks together). Every run is bounded
 //! (statements, simulated time, call depth, with budgets smaller than the
 //! command line's by default and a ceiling on what a request may ask),
 //! its file instructions work in a fresh temporary sandbox folder, and its
@@ -120,10 +121,14 @@ fn sink(lines: &Arc<Mutex<Lines>>) -> Box<dyn rapid_runtime::Output> {
 #[derive(Debug, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct RunParams {
-    /// A module (run with the rest of its task) or a task's folder.
+    /// A module (run with the rest of its task), a task's folder, or a
+    /// controller backup (its tasks run together, as `SYS.cfg` says).
     pub path: String,
-    /// The procedure to run (without parameters; default `main`).
+    /// The procedure to run (without parameters; default `main`, or the
+    /// entry routine `SYS.cfg` gives a backup's task).
     pub entry: Option<String>,
+    /// Only this task of a backup (as `rapid run --task`).
+    pub task: Option<String>,
     /// The signal script: values at the start and later.
     #[serde(default)]
     pub signals: Vec<SignalSet>,
@@ -196,15 +201,37 @@ pub struct TraceSummary {
     pub first_moves: Vec<MoveInfo>,
 }
 
+/// How one task of the run ended.
+#[derive(Debug, Serialize, JsonSchema)]
+pub struct TaskEnd {
+    /// The task's name (`T_ROB1` for a lone program).
+    pub name: String,
+    /// As [`RunReport::status`], for this task.
+    pub status: String,
+    pub success: bool,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub error: Option<RunError>,
+}
+
 /// The answer of `run`.
 #[derive(Debug, Serialize, JsonSchema)]
 pub struct RunReport {
     /// `finished`, `exited`, `stopped`, `error`, `unsupported`, `invalid`,
-    /// `budget` (a budget ran out), `deadlock` (a wait nothing can end) or
-    /// `operator` (a question nobody answered).
+    /// `budget` (a budget ran out), `deadlock` (a wait nothing can end),
+    /// `operator` (a question nobody answered) or `halted` (a background
+    /// task stopped when the others ended): of the first task that did not
+    /// end normally (one waiting for another only when no task stopped
+    /// otherwise), else of the first task.
     pub status: String,
-    /// Whether the run ended normally (its end, `EXIT`, `Stop`).
+    /// Whether every task ended normally (its end, `EXIT`, `Stop`).
     pub success: bool,
+    /// Each task's end, in the controller's order (one for a lone
+    /// program).
+    pub tasks: Vec<TaskEnd>,
+    /// Notes on the run: the signals no configuration declares, taken
+    /// from their use.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub notes: Vec<String>,
     /// The pendant's and the event log's lines, in order.
     pub output: Vec<String>,
     /// Output lines left out past the first 1000.
@@ -261,13 +288,12 @@ pub fn run(roots: &[PathBuf], params: RunParams) -> Result<Answer<RunReport>, St
     let limits = params.budgets.limits()?;
     let sets = script(&params.signals)?;
     let path = resolve(roots, &params.path)?;
-    let entry = params.entry.as_deref().unwrap_or("main");
     let env = Confined::new(roots.to_vec());
-    let task = load::one_task_in(&env, &path, entry)?;
+    let loaded = load::controller_in(&env, &path, params.task.as_deref(), params.entry.as_deref())
+        .map_err(|e| shorten(&e, roots))?;
     let lines: Arc<Mutex<Lines>> = Arc::default();
-    let ran = crate::run::run_routine(
-        task,
-        entry,
+    let ran = crate::run::run_loaded(
+        &loaded,
         sets,
         Budget {
             limits,
@@ -284,22 +310,47 @@ pub fn run(roots: &[PathBuf], params: RunParams) -> Result<Answer<RunReport>, St
         .map(|l| (l.kept.iter().map(|(_, t)| t.clone()).collect(), l.left_out))
         .unwrap_or_default();
     let mut by_instruction = BTreeMap::new();
-    for m in &ran.moves {
+    let moves = &ran.report.moves;
+    for m in moves {
         *by_instruction.entry(m.instruction.clone()).or_insert(0) += 1;
     }
+    let tasks: Vec<TaskEnd> = ran
+        .report
+        .tasks
+        .iter()
+        .map(|(name, o)| TaskEnd {
+            name: name.clone(),
+            status: status_name(o.status).to_owned(),
+            success: o.is_success(),
+            error: run_error(roots, o),
+        })
+        .collect();
+    // The task that stopped the run: one that did not end normally, one
+    // left waiting for it (a deadlock) only when none other.
+    let ended = &ran.report.tasks;
+    let first = ended
+        .iter()
+        .position(|(_, o)| !o.is_success() && o.status != Status::Deadlock)
+        .or_else(|| ended.iter().position(|(_, o)| !o.is_success()))
+        .unwrap_or(0);
+    let (status, error) = match ran.report.tasks.get(first) {
+        Some((_, o)) => (status_name(o.status).to_owned(), run_error(roots, o)),
+        None => ("finished".to_owned(), None),
+    };
     let report = RunReport {
-        status: status_name(ran.outcome.status).to_owned(),
-        success: ran.outcome.is_success(),
+        status,
+        success: ran.report.is_success(),
+        tasks,
+        notes: ran.report.notes.clone(),
         output,
         output_left_out: left_out,
-        error: run_error(roots, &ran.outcome),
+        error,
         trace: TraceSummary {
             steps: ran.steps,
-            simulated_seconds: ran.clock,
-            moves: ran.moves.len(),
+            simulated_seconds: ran.report.clock,
+            moves: moves.len(),
             by_instruction,
-            first_moves: ran
-                .moves
+            first_moves: moves
                 .iter()
                 .take(50)
                 .map(|m| MoveInfo {
@@ -313,12 +364,12 @@ pub fn run(roots: &[PathBuf], params: RunParams) -> Result<Answer<RunReport>, St
         },
     };
     Ok(Answer::new(
-        run_summary(&report, &ran.outcome, roots),
+        run_summary(&report, &ran.report, roots),
         report,
     ))
 }
 
-fn run_summary(r: &RunReport, o: &Outcome, roots: &[PathBuf]) -> String {
+fn run_summary(r: &RunReport, ran: &crate::run::RunReport, roots: &[PathBuf]) -> String {
     let mut out = String::new();
     for l in &r.output {
         out.push_str(l);
@@ -330,8 +381,8 @@ fn run_summary(r: &RunReport, o: &Outcome, roots: &[PathBuf]) -> String {
             r.output_left_out
         ));
     }
-    for line in crate::run::describe(o) {
-        out.push_str(&shorten(&line, roots));
+    for line in ran.notes.iter().chain(&ran.describe()) {
+        out.push_str(&shorten(line, roots));
         out.push('\n');
     }
     out.push_str(&format!(

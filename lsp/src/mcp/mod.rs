@@ -306,7 +306,7 @@ impl RapidMcp {
     }
 
     #[tool(
-        description = "Run a procedure (default main) of a task on a simulated controller, with a script of signal values and budgets (statements, simulated seconds, call depth). Answers the pendant and event-log output, how the run ended (an error with its name, line and active routines), and a summary of the moves. File instructions work in a temporary sandbox folder; moves complete at once.",
+        description = "Run a program on a simulated controller, as `rapid run` does: a module or task folder from its procedure (default main), or a controller backup's tasks together, with a script of signal values, the operator's answers and budgets (statements, simulated seconds, call depth). Answers the pendant and event-log output, how each task ended (an error with its name, line and active routines), and a summary of the moves. File instructions work in a temporary sandbox folder; the network is simulated (nobody answers).",
         annotations(title = "Run RAPID", read_only_hint = true, open_world_hint = false),
         output_schema = schema_for_output::<RunReport>()
     )]

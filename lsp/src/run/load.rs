@@ -198,9 +198,20 @@ pub struct Loaded {
 /// routine, else in `entry` (`main` when `None`); `entry` given wins for
 /// the one task `only` names.
 pub fn controller(path: &Path, only: Option<&str>, entry: Option<&str>) -> Result<Loaded, String> {
+    controller_in(&crate::project::DiskAsNamed, path, only, entry)
+}
+
+/// [`controller`], its files read through `env` (`rapid mcp` reads only
+/// inside its roots).
+pub fn controller_in(
+    env: &dyn Environment,
+    path: &Path,
+    only: Option<&str>,
+    entry: Option<&str>,
+) -> Result<Loaded, String> {
     let given = entry;
     let entry = entry.unwrap_or("main");
-    let mut found = tasks(std::slice::from_ref(&path.to_path_buf()))?;
+    let mut found = tasks_in(env, std::slice::from_ref(&path.to_path_buf()))?;
     if found.tasks.is_empty() {
         return Err(format!("{}: no RAPID modules found", path.display()));
     }
@@ -391,41 +402,6 @@ fn folder_of_tasks(path: &Path, tasks: &[Arc<Task>]) -> bool {
             .and_then(|p| std::fs::canonicalize(p).ok())
             .is_some_and(|p| p == dir)
     })
-}
-
-/// The one task `path` holds in `env` (a module: its task; a folder: its
-/// only task, or the one that declares `entry`), for `rapid mcp`.
-pub fn one_task_in(env: &dyn Environment, path: &Path, entry: &str) -> Result<Arc<Task>, String> {
-    let found = tasks_in(env, std::slice::from_ref(&path.to_path_buf()))?;
-    let task = one_of(path, found.tasks, entry)?;
-    let programs = alternatives(&task, entry);
-    if programs.is_empty() {
-        Ok(task)
-    } else {
-        Err(name_one_of(path, &programs))
-    }
-}
-
-/// The one task of `tasks`, or the one that declares `entry`.
-fn one_of(path: &Path, mut tasks: Vec<Arc<Task>>, entry: &str) -> Result<Arc<Task>, String> {
-    match tasks.len() {
-        0 => Err(format!("{}: no RAPID modules found", path.display())),
-        1 => Ok(tasks.remove(0)),
-        _ => {
-            let with_entry: Vec<Arc<Task>> = tasks
-                .iter()
-                .filter(|t| declares(t, entry))
-                .cloned()
-                .collect();
-            match with_entry.len() {
-                1 => Ok(with_entry[0].clone()),
-                _ => {
-                    let keys: Vec<&str> = tasks.iter().map(|t| t.key.as_str()).collect();
-                    Err(format!("{}: {}", path.display(), several_tasks(&keys)))
-                }
-            }
-        }
-    }
 }
 
 /// Does `task` declare a routine named `routine`?

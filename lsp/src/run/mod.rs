@@ -341,38 +341,28 @@ pub struct Budget {
     pub answers: Vec<String>,
 }
 
-/// A run of one task that ended: how, the moves (when traced), the
+/// A run that ended: each task's outcome and the moves (when traced), the
 /// statements it took and the simulated time it reached.
 pub struct Ran {
-    pub outcome: Outcome,
-    pub moves: Vec<rapid_runtime::Move>,
+    pub report: RunReport,
     pub steps: u64,
-    pub clock: f64,
 }
 
-/// Runs the procedure `entry` of `task` alone on a virtual controller
-/// with the signal script `sets`, each output line going to `out` as it
-/// comes (for `rapid mcp`). An error when the controller would not load
-/// the task, the procedure is missing or takes parameters, or the sandbox
-/// cannot be made.
-pub fn run_routine(
-    task: std::sync::Arc<rapid_analyzer::task::Task>,
-    entry: &str,
+/// Runs `loaded` as [`execute`] does, on the simulated network, with the
+/// signal script `sets` and the operator's `answers` of `budget`, each
+/// output line going to `out` as it comes (for `rapid mcp`). An error
+/// when the controller would not load the program, an entry routine is
+/// missing or takes parameters, or the sandbox cannot be made.
+pub fn run_loaded(
+    loaded: &load::Loaded,
     sets: Vec<SignalChange>,
     budget: Budget,
     out: Box<dyn Output>,
 ) -> Result<Ran, String> {
-    let home = load::home_within(&task.key, budget.home_roots.as_deref());
-    let loaded = load::Loaded {
-        tasks: vec![load::TaskToRun {
-            name: "T_ROB1".to_owned(),
-            task: load::at_start(&task, entry),
-            kind: rapid_runtime::TaskKind::Normal,
-            entry: entry.to_owned(),
-            motion: true,
-        }],
-        ..load::Loaded::default()
-    };
+    let home = loaded
+        .tasks
+        .first()
+        .and_then(|t| load::home_within(&t.task.key, budget.home_roots.as_deref()));
     let sandbox = Sandbox::seeded(budget.sandbox, home.as_deref())?;
     let options = RunOptions {
         sets,
@@ -384,18 +374,13 @@ pub fn run_routine(
         socket_map: None,
         robot: None,
     };
-    let (mut controller, _) = build(&loaded, &options, out).map_err(|e| e.to_string())?;
+    let (mut controller, notes) = build(loaded, &options, out).map_err(|e| e.to_string())?;
     controller.run();
     let mut report = report_of(&controller);
-    let (_, outcome) = report
-        .tasks
-        .pop()
-        .ok_or_else(|| format!("no procedure {entry} in the task"))?;
+    report.notes = notes;
     Ok(Ran {
-        outcome,
-        moves: report.moves,
+        report,
         steps: controller.steps(),
-        clock: controller.clock(),
     })
 }
 
