@@ -1,7 +1,9 @@
 //! The dnum forms of the arithmetic and bit functions (`PowDnum`,
 //! `SinDnum`, `BitAndDnum`, `BitCheckDnum`...): double precision, angles
 //! in degrees, the bit functions on whole numbers from 0 to 4294967295;
-//! and `Max`/`Min`, on nums or dnums.
+//! `Max`/`Min`, on nums or dnums; and `CrossProd`. Their parameters are
+//! those loaded code calls them with (the catalogue's `params_unchecked`),
+//! so the runtime, not the pure evaluator, has them.
 
 use rapid_evaluator::Value;
 
@@ -145,4 +147,16 @@ pub(crate) fn max_min(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
     } else {
         Value::Num(r as f32)
     })
+}
+
+/// `CrossProd(Vector1, Vector2)`: the cross product of two `pos` vectors,
+/// a `pos` perpendicular to both (right-handed: `[1,0,0]` by `[0,1,0]` is
+/// `[0,0,1]`).
+pub(crate) fn cross_prod(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    let mut vector = |param: &str| -> R<_> {
+        let v = cx.req(a, param)?;
+        rapid_evaluator::geometry::vec_of(&v).or_else(|e| cx.m.eval_error(e))
+    };
+    let (u, v) = (vector("Vector1")?, vector("Vector2")?);
+    rapid_evaluator::geometry::pos_value(&u.cross(&v)).or_else(|e| cx.m.eval_error(e))
 }

@@ -263,6 +263,7 @@ const FUNCTIONS: &[(&str, FuncFn)] = &[
     ("StrToVal", data::str_to_val),
     ("StrFormat", output::str_format),
     ("PowDnum", dnum::pow),
+    ("CrossProd", dnum::cross_prod),
     ("SinDnum", dnum::trig),
     ("CosDnum", dnum::trig),
     ("TanDnum", dnum::trig),
