@@ -604,13 +604,21 @@ fn field_of<'t>(node: Node<'t>, name: &str) -> Option<Node<'t>> {
 fn component_types(ty: &Type, env: &dyn Env) -> Option<Vec<Type>> {
     let mut name = ty.name.clone();
     for _ in 0..16 {
-        if let Some(layout) = rapid_evaluator::builtin_record_layout(&name) {
-            return Some(layout.iter().map(|c| Type::named(&c.ty)).collect());
-        }
+        // The task's own types first, as the evaluator resolves them.
         if let Some(layout) = env.record_layout(&name) {
             return Some(layout.into_iter().map(|(_, t)| t).collect());
         }
-        match env.alias_of(&name) {
+        let alias = env.alias_of(&name).or_else(|| {
+            let t = env.catalogue().datatype(&name)?;
+            t.alias_of.as_deref().map(Type::named)
+        });
+        if alias.is_none()
+            && let Some(t) = env.catalogue().datatype(&name)
+            && t.kind == TypeKind::Record
+        {
+            return Some(t.components.iter().map(|c| Type::named(&c.ty)).collect());
+        }
+        match alias {
             Some(t) if t.dims.is_empty() => name = t.name,
             _ => return None,
         }

@@ -125,6 +125,19 @@ fn resolve_kind(name: &str, env: &dyn Env) -> Kind {
         if let Some(k) = primitive_kind(&name) {
             return k;
         }
+        // The task's own types first: a RECORD or ALIAS of a built-in
+        // type's name (an option's `partdata` in a task without the
+        // option) is the task's.
+        if let Some(layout) = env.record_layout(&name) {
+            return Kind::Record(Rc::new((name, layout)));
+        }
+        if let Some(t) = env.alias_of(&name) {
+            if !t.dims.is_empty() {
+                return Kind::Array(t.element());
+            }
+            name = t.name;
+            continue;
+        }
         if let Some(t) = cat.datatype(&name) {
             match (t.kind, &t.alias_of) {
                 (TypeKind::Alias, Some(of)) => {
@@ -146,14 +159,7 @@ fn resolve_kind(name: &str, env: &dyn Env) -> Kind {
                 _ => {}
             }
         }
-        if let Some(layout) = env.record_layout(&name) {
-            return Kind::Record(Rc::new((name, layout)));
-        }
-        match env.alias_of(&name) {
-            Some(t) if !t.dims.is_empty() => return Kind::Array(t.element()),
-            Some(t) => name = t.name,
-            None => return Kind::Opaque,
-        }
+        return Kind::Opaque;
     }
     Kind::Opaque
 }

@@ -60,11 +60,11 @@ impl<'t> Shared<'t> {
     }
 
     fn record_layout(&self, name: &str) -> Option<Vec<(String, Type)>> {
-        record_layout_in(self.types(), self.task.catalogue, name)
+        record_layout_in(self.types(), name)
     }
 
     fn alias_of(&self, name: &str) -> Option<Type> {
-        alias_in(self.types(), self.task.catalogue, name)
+        alias_in(self.types(), name)
     }
 
     /// The initial value to offer for data of this storage.
@@ -77,9 +77,10 @@ impl<'t> Shared<'t> {
     }
 }
 
-/// The components of record type `name`: a user record of `types`, else
-/// a record of the catalogue view `cat`.
-fn record_layout_in(types: &Types<'_>, cat: &Catalogue, name: &str) -> Option<Vec<(String, Type)>> {
+/// The components of the task's own record type `name` (the catalogue's
+/// records are the evaluator's: a task's `RECORD` wins over a built-in
+/// type of its name, as in [`Types::components`]).
+fn record_layout_in(types: &Types<'_>, name: &str) -> Option<Vec<(String, Type)>> {
     match types.user(name) {
         Some(UserType::Record(r)) => Some(
             r.components
@@ -90,23 +91,20 @@ fn record_layout_in(types: &Types<'_>, cat: &Catalogue, name: &str) -> Option<Ve
                 })
                 .collect(),
         ),
-        Some(UserType::Alias(_)) => None,
-        None => catalogue_layout(cat, name),
+        _ => None,
     }
 }
 
-/// The type alias type `name` stands for: a user alias of `types`, else
-/// an alias of the catalogue view `cat`.
-fn alias_in(types: &Types<'_>, cat: &Catalogue, name: &str) -> Option<Type> {
+/// The type the task's own alias type `name` stands for.
+fn alias_in(types: &Types<'_>, name: &str) -> Option<Type> {
     match types.user(name) {
         Some(UserType::Alias(a)) => a.of.as_ref().map(|t| Type::named(&t.name)),
-        Some(UserType::Record(_)) => None,
-        None => catalogue_alias(cat, name),
+        _ => None,
     }
 }
 
-/// The types of a task as the evaluator asks for them (records and
-/// aliases, the task's then its catalogue view's), computed once and
+/// The types of a task as the evaluator asks for them (the task's records
+/// and aliases; the evaluator knows its catalogue view's), computed once and
 /// owned: for a reader that keeps them while it runs the task's code (the
 /// interpreter coerces values and builds aggregates with them). Names
 /// resolve to nothing.
@@ -128,12 +126,12 @@ impl TypeEnv {
                 for r in &m.records {
                     records
                         .entry(fold(&r.name))
-                        .or_insert_with(|| record_layout_in(&types, task.catalogue, &r.name));
+                        .or_insert_with(|| record_layout_in(&types, &r.name));
                 }
                 for a in &m.aliases {
                     aliases
                         .entry(fold(&a.name))
-                        .or_insert_with(|| alias_in(&types, task.catalogue, &a.name));
+                        .or_insert_with(|| alias_in(&types, &a.name));
                 }
             }
         }
@@ -151,40 +149,16 @@ impl Env for TypeEnv {
     }
 
     fn record_layout(&self, type_name: &str) -> Option<Vec<(String, Type)>> {
-        match self.records.get(&fold(type_name)) {
-            Some(layout) => layout.clone(),
-            None if self.aliases.contains_key(&fold(type_name)) => None,
-            None => catalogue_layout(self.catalogue, type_name),
-        }
+        self.records.get(&fold(type_name)).cloned().flatten()
     }
 
     fn alias_of(&self, type_name: &str) -> Option<Type> {
-        match self.aliases.get(&fold(type_name)) {
-            Some(of) => of.clone(),
-            None if self.records.contains_key(&fold(type_name)) => None,
-            None => catalogue_alias(self.catalogue, type_name),
-        }
+        self.aliases.get(&fold(type_name)).cloned().flatten()
     }
 
     fn catalogue(&self) -> &Catalogue {
         self.catalogue
     }
-}
-
-pub(super) fn catalogue_layout(cat: &Catalogue, name: &str) -> Option<Vec<(String, Type)>> {
-    let t = cat.datatype(name)?;
-    (t.kind == TypeKind::Record).then(|| {
-        t.components
-            .iter()
-            .map(|c| (c.name.clone(), Type::named(&c.ty)))
-            .collect()
-    })
-}
-
-pub(super) fn catalogue_alias(cat: &Catalogue, name: &str) -> Option<Type> {
-    cat.datatype(name)
-        .and_then(|t| t.alias_of.as_deref())
-        .map(Type::named)
 }
 
 /// The names of one module (or, with `module` `None`, of the task's
@@ -315,12 +289,6 @@ impl Env for CatalogueEnv {
             Some(d) => catalogue_lookup(d, self.options),
             None => Lookup::Unknown,
         }
-    }
-    fn record_layout(&self, type_name: &str) -> Option<Vec<(String, Type)>> {
-        catalogue_layout(crate::catalogue::base(), type_name)
-    }
-    fn alias_of(&self, type_name: &str) -> Option<Type> {
-        catalogue_alias(crate::catalogue::base(), type_name)
     }
 }
 
