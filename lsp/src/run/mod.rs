@@ -78,9 +78,10 @@ pub struct RunArgs {
     /// The operator's answers to the pendant's questions (`TPReadFK`,
     /// `UIMessageBox`...), one a line, in order: a function key's number
     /// or label, a number, a button or list item (`UIListView` with
-    /// `\Result` and buttons: the item, then the button), text; `@SECONDS VALUE`
-    /// answers after that many simulated seconds, `-` never answers; `#`
-    /// starts a comment.
+    /// `\Result` and buttons: the item, confirmed with the first button;
+    /// a button alone; or `ITEM, BUTTON`), text; `@SECONDS VALUE` answers
+    /// after that many simulated seconds, `-` never answers; `#` starts a
+    /// comment.
     #[arg(long, value_name = "FILE")]
     pub answers: Option<PathBuf>,
     /// One more answer, after those of --answers (repeatable).

@@ -72,6 +72,10 @@ struct Ask {
     range: (Option<f64>, Option<f64>, bool),
     /// A `dnum` answer.
     dnum: bool,
+    /// `UIListView` with buttons: how many of the choices are items (the
+    /// rest are buttons), and the item chosen when a button is answered
+    /// alone ([`read_item_and_button`]).
+    list: Option<(usize, Value)>,
 }
 
 impl Ask {
@@ -97,6 +101,7 @@ impl Ask {
             values: Vec::new(),
             range: (None, None, false),
             dnum: false,
+            list: None,
         }
     }
 
@@ -111,11 +116,41 @@ impl Ask {
     }
 }
 
-fn read_choice(ask: &Ask, text: &str) -> Result<Value, String> {
-    let choices = &ask.question.choices;
+/// A `UIListView` answer with buttons: `[item, button]`. The choices are
+/// the items, then the buttons (numbered on, as the keyboard's question
+/// lists them): an item (its number or text) is confirmed with the first
+/// button (`OK`, `Yes`, the first of `\BtnArray`); a button alone is
+/// pressed with the default item chosen; `ITEM, BUTTON` chooses the item
+/// and presses the button.
+fn read_item_and_button(ask: &Ask, text: &str) -> Result<Value, String> {
+    let Some((items, default)) = &ask.list else {
+        return read_choice(ask, text);
+    };
+    let pair = |item: &Value, button: Option<&Value>| {
+        Value::Array(vec![
+            item.clone(),
+            button.cloned().unwrap_or(Value::Num(0.0)),
+        ])
+    };
+    let first_button = ask.values.get(*items);
+    match choice_index(&ask.question.choices, text) {
+        Some(i) if i < *items => return Ok(pair(&ask.values[i], first_button)),
+        Some(i) => return Ok(pair(default, ask.values.get(i))),
+        None => {}
+    }
+    if let Some((item, button)) = text.rsplit_once(',')
+        && let Some(i) = choice_index(&ask.question.choices[..*items], item)
+        && let Some(b) = choice_index(&ask.question.choices[*items..], button)
+    {
+        return Ok(pair(&ask.values[i], ask.values.get(items + b)));
+    }
+    read_choice(ask, text)
+}
+
+/// The choice `text` names: its number (from 1) or its text.
+fn choice_index(choices: &[String], text: &str) -> Option<usize> {
     let t = text.trim();
-    let index = t
-        .parse::<usize>()
+    t.parse::<usize>()
         .ok()
         .filter(|&n| n >= 1 && choices.get(n - 1).is_some_and(|c| !c.is_empty()))
         .map(|n| n - 1)
@@ -123,8 +158,12 @@ fn read_choice(ask: &Ask, text: &str) -> Result<Value, String> {
             choices
                 .iter()
                 .position(|c| !c.is_empty() && c.trim().eq_ignore_ascii_case(t))
-        });
-    match index.and_then(|i| ask.values.get(i)) {
+        })
+}
+
+fn read_choice(ask: &Ask, text: &str) -> Result<Value, String> {
+    let choices = &ask.question.choices;
+    match choice_index(choices, text).and_then(|i| ask.values.get(i)) {
         Some(v) => Ok(v.clone()),
         None => {
             let shown: Vec<String> = choices
@@ -200,32 +239,26 @@ fn answer_of(cx: &mut Cx<'_>, ask: &Ask) -> R<Option<(Value, f64)>> {
     }
 }
 
-/// [`ask`], then (once answered) the question `then`, whose answer goes
-/// to its place when the first answer's does: the dialog ends when both
-/// are answered.
+/// [`ask`]; with `confirm`, the answer is an item and a button
+/// ([`read_item_and_button`]): the item is the result, the button goes to
+/// `confirm`'s place when the dialog ends.
 fn ask_then(
     cx: &mut Cx<'_>,
     a: &Args,
     ask: Ask,
-    then: Option<(Ask, Place)>,
+    confirm: Option<Place>,
     to: Option<Place>,
     fallback: Value,
 ) -> R<Option<Value>> {
     let ex = exits(cx, a)?;
     let mut reply = answer_of(cx, &ask)?;
     let mut also = None;
-    let mut waiting_for = ask.summary();
-    if let (Some((first, after)), Some((second, place))) = (reply.clone(), then) {
-        reply = match answer_of(cx, &second)? {
-            Some((v, more)) => {
-                also = Some((place, v));
-                Some((first, after + more))
-            }
-            None => {
-                waiting_for = second.summary();
-                None
-            }
-        };
+    let waiting_for = ask.summary();
+    if let (Some((Value::Array(pair), after)), Some(place)) = (&reply, confirm)
+        && let [item, button] = pair.as_slice()
+    {
+        also = Some((place, button.clone()));
+        reply = Some((item.clone(), *after));
     }
     let answer = reply.as_ref().map(|(v, _)| v.clone());
     let now = cx.now();
@@ -324,14 +357,15 @@ fn dialog(cx: &mut Cx<'_>, a: &Args, expect: Expect) -> R<Ask> {
     Ok(q)
 }
 
-/// The buttons of a dialog: `\BtnArray` (answered by their number),
-/// `\Buttons` (answered by `btnres` constants), else `default`.
+/// The buttons of a dialog, after `q`'s choices: `\BtnArray` (answered
+/// by their number), `\Buttons` (answered by `btnres` constants), else
+/// `default`.
 fn buttons(cx: &mut Cx<'_>, a: &Args, q: &mut Ask, default: i64) -> R<()> {
     if a.given("BtnArray") {
-        q.question.choices = strings(cx, a, "BtnArray")?;
-        q.values = (1..=q.question.choices.len())
-            .map(|i| Value::Num(i as f32))
-            .collect();
+        let labels = strings(cx, a, "BtnArray")?;
+        q.values
+            .extend((1..=labels.len()).map(|i| Value::Num(i as f32)));
+        q.question.choices.extend(labels);
         return Ok(());
     }
     let set = cx.opt_num(a, "Buttons")?.map_or(default, |b| b as i64);
@@ -457,11 +491,11 @@ pub(crate) fn ui_alpha_entry(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
 }
 
 /// `UIListView([\Result] [\Header] ListItems ...)`: the operator chooses an
-/// item (its number, 1 for the first, is the result), then, when the
-/// dialog has buttons and `\Result` asks which, presses one: the next
-/// answer, a `btnres` button of `\Buttons` (`OK`, `Cancel`...) or a
-/// `\BtnArray` button (its number or label). Without buttons, choosing
-/// the item ends the dialog.
+/// item (its number, 1 for the first, is the result) and, when the dialog
+/// has buttons and `\Result` asks which, presses one, in one answer
+/// ([`read_item_and_button`]): a `btnres` button of `\Buttons` (`OK`,
+/// `Cancel`...) or a `\BtnArray` button (its number or label). Without
+/// buttons, choosing the item ends the dialog.
 pub(crate) fn ui_list_view(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
     let mut q = Ask::new(cx, a, Expect::Choice);
     q.question.header = cx.opt_string(a, "Header")?.unwrap_or_default();
@@ -477,20 +511,20 @@ pub(crate) fn ui_list_view(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
         q.question.choices.push(text);
         q.values.push(Value::Num((i + 1) as f32));
     }
-    let mut then = None;
-    if let Some(p) = cx.opt_place(a, "Result")? {
-        let mut b = Ask::new(cx, a, Expect::Choice);
-        b.question.header.clone_from(&q.question.header);
-        b.question.lines = vec!["(the button that confirms the choice)".to_owned()];
-        buttons(cx, a, &mut b, -1)?;
-        // Without buttons the choice itself ends the dialog.
-        if !b.values.is_empty() {
-            then = Some((b, p));
-        }
-    }
     let default = cx.opt_num(a, "DefaultIndex")?;
     q.question.initial = default.map(|d| d.to_string());
-    Ok(ask_then(cx, a, q, then, None, Value::Num(0.0))?.unwrap_or(Value::Num(0.0)))
+    let mut confirm = None;
+    if let Some(p) = cx.opt_place(a, "Result")? {
+        let items = q.values.len();
+        buttons(cx, a, &mut q, -1)?;
+        // Without buttons the choice itself ends the dialog.
+        if q.values.len() > items {
+            q.list = Some((items, Value::Num(default.unwrap_or(1.0) as f32)));
+            q.read = read_item_and_button;
+            confirm = Some(p);
+        }
+    }
+    Ok(ask_then(cx, a, q, confirm, None, Value::Num(0.0))?.unwrap_or(Value::Num(0.0)))
 }
 
 /// `ExecEngine` (Production Manager): the execution engine shows the

@@ -1,14 +1,17 @@
 MODULE list_view_result
-  ! UIListView: the operator chooses an item, then presses the button
-  ! \Result asks for (a btnres button of \Buttons, or a \BtnArray button by
-  ! number or label, after a delay); without buttons the choice ends the
-  ! dialog; \MaxTime runs out while the button is not pressed.
-  !answer 2
-  !answer Cancel
-  !answer Green
-  !answer @2 Later
+  ! UIListView: the operator chooses an item and presses the button
+  ! \Result asks for, in one answer: an item alone is confirmed with the
+  ! first button (OK), a button alone is pressed with the default item,
+  ! `ITEM, BUTTON` does both (a btnres button of \Buttons, or a \BtnArray
+  ! button by number or label, after a delay); the buttons are numbered
+  ! after the items; without buttons the choice ends the dialog; \MaxTime
+  ! runs out while nobody answers.
+  !answer 2, Cancel
+  !answer @2 Green, Later
   !answer 1
-  !answer 3
+  !answer Blue
+  !answer Cancel
+  !answer 5
   !answer -
   VAR clock clk;
   VAR btnres res := -7;
@@ -29,6 +32,14 @@ MODULE list_view_result
     n := UIListView(\Result:=res, list);
     TPWrite "item "\Num:=n;
     TPWrite "unchanged "\Bool:=res = -7;
+    n := UIListView(\Result:=res, list \Buttons:=btnOKCancel);
+    TPWrite "item "\Num:=n;
+    TPWrite "ok "\Bool:=res = resOK;
+    n := UIListView(\Result:=res, list \Buttons:=btnOKCancel \DefaultIndex:=2);
+    TPWrite "default item "\Num:=n;
+    TPWrite "cancel "\Bool:=res = resCancel;
+    n := UIListView(\Result:=res, list \Buttons:=btnOKCancel);
+    TPWrite "fifth choice, cancel "\Bool:=res = resCancel;
     n := UIListView(\Result:=res, list \Buttons:=btnOKCancel \MaxTime:=5);
   ERROR
     TPWrite "max time "\Bool:=ERRNO = ERR_TP_MAXTIME;
@@ -41,4 +52,9 @@ ENDMODULE
 !> after 2
 !> item 1
 !> unchanged TRUE
+!> item 3
+!> ok TRUE
+!> default item 2
+!> cancel TRUE
+!> fifth choice, cancel TRUE
 !> max time TRUE

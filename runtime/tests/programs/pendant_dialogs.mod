@@ -12,7 +12,6 @@ MODULE pendant_dialogs
   !answer 12
   !answer robot one
   !answer Blue
-  !answer OK
   !answer 0.75
   VAR clock clk;
   VAR num key;
@@ -50,7 +49,7 @@ MODULE pendant_dialogs
     TPWrite "client "\Bool:=UIClientExist();
   ENDPROC
 ENDMODULE
-!> [TPErase at pendant_dialogs.mod:26] the operator window is cleared
+!> [TPErase at pendant_dialogs.mod:25] the operator window is cleared
 !> key 2
 !> key 1
 !> n 42.5
