@@ -356,6 +356,25 @@ fn operand<'t>(cx: &mut Cx<'t>, node: Node<'t>, other: Node<'t>, comparison: boo
     expr(cx, node, None)
 }
 
+/// The signal a `TEST` of an unknown bare name is taken for, when every
+/// `CASE` value is a number (as a comparison with a number takes it):
+/// a `signaldi` when they are all 0 or 1, else a `signalgi`.
+pub(super) fn tested_signal<'t>(cx: &Cx<'t>, value: Node<'t>, cases: &[Node<'t>]) -> Option<Ty> {
+    let taken = !cases.is_empty()
+        && cases
+            .iter()
+            .all(|c| typing::taken_for_signal(cx, value, *c, true));
+    let bit =
+        |c: &Node<'t>| c.kind() != kind::NUMBER || matches!(cx.node_text(*c).trim(), "0" | "1");
+    taken.then(|| {
+        Ty::named(if cases.iter().all(bit) {
+            "signaldi"
+        } else {
+            "signalgi"
+        })
+    })
+}
+
 /// `a.b`: the component's type.
 fn component<'t>(cx: &mut Cx<'t>, node: Node<'t>) -> (Ty, Place) {
     let (Some(obj), Some(comp)) = (field(node, field::OBJECT), field(node, field::COMPONENT))

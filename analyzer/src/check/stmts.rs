@@ -179,7 +179,21 @@ fn for_statement<'t>(cx: &mut Cx<'t>, s: Node<'t>) {
 }
 
 fn test_statement<'t>(cx: &mut Cx<'t>, s: Node<'t>) {
-    let ty = field(s, field::VALUE).map_or(Ty::Unknown, |v| exprs::expr(cx, v, None));
+    let values: Vec<Node<'t>> = fields(s, field::CASE)
+        .iter()
+        .flat_map(|c| fields(*c, field::VALUE))
+        .collect();
+    let ty = match field(s, field::VALUE) {
+        Some(v) => match exprs::tested_signal(cx, v, &values) {
+            Some(signal) => {
+                let name = cx.node_text(v);
+                cx.unknown_signal(v, name, &signal);
+                signal
+            }
+            None => exprs::expr(cx, v, None),
+        },
+        None => Ty::Unknown,
+    };
     let ty = cx.types.value_type(&ty);
     for case in fields(s, field::CASE) {
         for v in fields(case, field::VALUE) {

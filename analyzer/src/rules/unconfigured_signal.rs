@@ -9,7 +9,9 @@ crate::declare_rule! {
     /// Signals and mechanical units are configured on the controller (`EIO.cfg`
     /// and `MOC.cfg` in a backup's `SYSPAR` folder), not declared in RAPID. When
     /// no such configuration file was found for the task, an unknown name passed
-    /// where a signal (or a `mecunit`) is expected is reported once, at this low
+    /// where a signal (or a `mecunit`) is expected, compared with a number
+    /// (`IF diReady = 1`), or tested with number `CASE` values (`TEST giRecipe`:
+    /// a group input when a value is past 0 and 1) is reported once, at this low
     /// severity, instead of as an unknown name. Give the configuration (put
     /// `EIO.cfg` / `MOC.cfg` next to the modules or in a `SYSPAR` folder
     /// beside them, or name its folder in `rapid.toml`) to have these names
