@@ -53,7 +53,10 @@ pub(crate) fn read_cfg_data(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     };
     let (value, next) = match cx.sh.system.read(&path, &attribute, list_no) {
         Ok(r) => r,
-        Err(e) => return cfg_error(cx, a, e),
+        Err(e) => match arm_bound(cx, &path, &attribute) {
+            Some(bound) => (CfgValue::Text(bound.to_string()), None),
+            None => return cfg_error(cx, a, e),
+        },
     };
     let old = cx.m.load(cx.sh, &to)?;
     let what = format!("{path} {attribute}");
@@ -92,6 +95,37 @@ pub(crate) fn read_cfg_data(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
         cx.store(p, Value::Num(n as f32))?;
     }
     Ok(Done::Next)
+}
+
+/// A modelled arm's working range where the configuration has no `ARM`
+/// instance for it (a program kept without its `MOC.cfg`):
+/// `/MOC/ARM/rob1_3` `upper_joint_bound` (or `lower_joint_bound`) is axis
+/// 3 of the first robot's range, in radians, as `MOC.cfg` gives it.
+fn arm_bound(cx: &Cx<'_>, path: &str, attribute: &str) -> Option<f64> {
+    let parts: Vec<&str> = path.trim_start_matches('/').split('/').collect();
+    let [domain, kind, instance] = parts.as_slice() else {
+        return None;
+    };
+    if !domain.eq_ignore_ascii_case("MOC") || !kind.eq_ignore_ascii_case("ARM") {
+        return None;
+    }
+    let (robot, axis) = instance
+        .get(..3)
+        .filter(|h| h.eq_ignore_ascii_case("rob"))
+        .and(instance.get(3..))?
+        .split_once('_')?;
+    let (robot, axis): (usize, usize) = (robot.parse().ok()?, axis.parse().ok()?);
+    let side = if attribute.eq_ignore_ascii_case("upper_joint_bound") {
+        1
+    } else if attribute.eq_ignore_ascii_case("lower_joint_bound") {
+        0
+    } else {
+        return None;
+    };
+    // ROB_n: the nth task that moves a robot.
+    let arm = cx.sh.robots.iter().flatten().nth(robot.checked_sub(1)?)?;
+    let range = arm.joint_limits()?.get(axis.checked_sub(1)?)?[side];
+    Some(range.to_radians())
 }
 
 /// `WriteCfgData InstancePath, Attribute, CfgData [\ListNo]`: sets the

@@ -110,6 +110,10 @@ fn raised(e: &ReachError) -> RobotError {
 }
 
 impl Robot for ArmRobot {
+    fn joint_limits(&self) -> Option<[[f64; 2]; 6]> {
+        Some(self.robot.limits.0)
+    }
+
     fn move_to(&mut self, request: &MoveRequest<'_>) -> Result<Motion, RobotError> {
         if !request.wobj.ufprog && !request.wobj.ufmec.is_empty() {
             return Err(RobotError::Unsupported(format!(

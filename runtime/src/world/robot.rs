@@ -304,6 +304,12 @@ pub trait Robot: Send {
         let _ = (linear, on);
     }
 
+    /// The working range of each axis, degrees (`[lower, upper]`), when
+    /// the arm is modelled.
+    fn joint_limits(&self) -> Option<[[f64; 2]; 6]> {
+        None
+    }
+
     /// Whether [`Robot::robtarget`] and [`Robot::joints`] say where the
     /// arm really is (world zones check only what is known).
     fn known(&self) -> Known {
