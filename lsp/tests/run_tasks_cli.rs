@@ -153,6 +153,35 @@ fn a_backup_without_its_syspar_takes_the_task_names_backinfo_then_rapid_toml_giv
 }
 
 #[test]
+fn a_folder_of_dated_backups_asks_for_one_and_each_runs() {
+    let dir = backup("run-dated-backups");
+    let main = |day: &str| {
+        format!("MODULE Main\n  PROC main()\n    TPWrite \"{day}\";\n  ENDPROC\nENDMODULE\n")
+    };
+    write(
+        &dir,
+        &[
+            (
+                "repo/2026-01-05/RAPID/TASK1/PROGMOD/Main.mod",
+                &main("monday"),
+            ),
+            (
+                "repo/2026-01-06/RAPID/TASK1/PROGMOD/Main.mod",
+                &main("tuesday"),
+            ),
+        ],
+    );
+    let (code, out, err) = run(&dir, &["run", "repo"]);
+    assert_eq!((code, out.as_str()), (Some(2), ""), "{err}");
+    assert!(
+        err.contains("the folder holds 2 controller backups (2 tasks); name the backup to run (e.g. repo/2026-01-05, repo/2026-01-06)"),
+        "{err}"
+    );
+    let (code, out, err) = run(&dir, &["run", "repo/2026-01-06"]);
+    assert_eq!((code, out.as_str()), (Some(0), "tuesday\n"), "{err}");
+}
+
+#[test]
 fn one_task_runs_alone_with_task() {
     let dir = backup("run-one-task");
     let (code, out, err) = run(

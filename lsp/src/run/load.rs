@@ -286,7 +286,8 @@ pub fn controller_in(
         }
         _ => {
             let keys: Vec<&str> = out.iter().map(|t| t.task.key.as_str()).collect();
-            Err(format!("{}: {}", path.display(), several_tasks(&keys)))
+            let why = several_backups(&keys).unwrap_or_else(|| several_tasks(&keys));
+            Err(format!("{}: {why}", path.display()))
         }
     }
 }
@@ -449,6 +450,28 @@ pub fn views(task: &Arc<Task>, keep: impl Fn(&Unit) -> bool) -> Vec<(Arc<Unit>, 
 /// "the folder holds N tasks; name one of them (e.g. ...)": the first
 /// tasks' keys, which are the paths to give (the folder or program file as
 /// the command line names it; empty for the current folder, shown `.`).
+/// The error for a folder whose tasks belong to several backups (a
+/// repository of dated backups): a backup runs its tasks together, so the
+/// run names one backup. `None` for tasks of one backup or of none.
+fn several_backups(keys: &[&str]) -> Option<String> {
+    let mut backups: Vec<&str> = keys
+        .iter()
+        .filter(|k| rapid_analyzer::layout::controller_of(k).is_some())
+        .filter_map(|k| rapid_analyzer::layout::backup_root(k))
+        .collect();
+    backups.sort_unstable();
+    backups.dedup();
+    (backups.len() > 1).then(|| {
+        let shown: Vec<&str> = backups.iter().take(5).copied().collect();
+        format!(
+            "the folder holds {} controller backups ({} tasks); name the backup to run (e.g. {})",
+            backups.len(),
+            keys.len(),
+            shown.join(", ")
+        )
+    })
+}
+
 pub(crate) fn several_tasks(keys: &[&str]) -> String {
     let shown: Vec<&str> = keys
         .iter()
