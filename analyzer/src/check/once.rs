@@ -47,12 +47,28 @@ fn also_here(file: Option<String>, range: Range<usize>) -> Related {
     }
 }
 
+/// How much a use says of the signal a name is taken for: a comparison
+/// (`IF doLamp = 0`) or a `TEST` takes an input, which an output can be
+/// read as too; a use that sets the signal (`SetDO doLamp, 1`) says it is
+/// an output. The finding of a name keeps the type its strongest use
+/// gives, so that the simulation declares the signal it can set.
+fn signal_rank(d: &Diagnostic) -> u8 {
+    match rules::unconfigured_signal::taken_signal(d).map(|(_, ty)| ty) {
+        Some("signaldi") => 1,
+        Some("signalgi" | "signalai") => 2,
+        Some("signaldo") => 3,
+        Some("signalgo" | "signalao") => 4,
+        _ => 0,
+    }
+}
+
 /// Keeps the first finding of each name in a unit's findings (sorted by
 /// position); the later uses become its related locations.
 pub(crate) fn within_file(diags: &mut Vec<Diagnostic>, text: &str) {
     let mut first: HashMap<(&'static str, String), usize> = HashMap::new();
     let mut keep = vec![true; diags.len()];
     let mut uses: Vec<(usize, Range<usize>)> = Vec::new();
+    let mut stronger: Vec<(usize, usize)> = Vec::new();
     for (i, d) in diags.iter().enumerate() {
         if !is_about_a_name(d) {
             continue;
@@ -62,6 +78,8 @@ pub(crate) fn within_file(diags: &mut Vec<Diagnostic>, text: &str) {
                 keep[i] = false;
                 if is_unresolved(d) {
                     uses.push((*e.get(), d.range.clone()));
+                } else if signal_rank(d) > 0 {
+                    stronger.push((*e.get(), i));
                 }
             }
             std::collections::hash_map::Entry::Vacant(e) => {
@@ -72,6 +90,11 @@ pub(crate) fn within_file(diags: &mut Vec<Diagnostic>, text: &str) {
     for (at, range) in uses {
         if let Some(d) = diags.get_mut(at) {
             d.related.push(also_here(None, range));
+        }
+    }
+    for (at, later) in stronger {
+        if signal_rank(&diags[later]) > signal_rank(&diags[at]) {
+            diags[at].message = diags[later].message.clone();
         }
     }
     let mut keep = keep.into_iter();
@@ -97,6 +120,7 @@ pub fn per_task(files: &mut [FileFindings<'_>]) {
     // (task, rule, name) -> (file index, diagnostic index)
     let mut first: HashMap<(&str, &'static str, String), (usize, usize)> = HashMap::new();
     let mut moved: Vec<((usize, usize), Vec<Related>)> = Vec::new();
+    let mut stronger: Vec<((usize, usize), Diagnostic)> = Vec::new();
     for (f, file) in files.iter_mut().enumerate() {
         let path = file.path;
         let mut i = 0;
@@ -111,6 +135,9 @@ pub fn per_task(files: &mut [FileFindings<'_>]) {
                 std::collections::hash_map::Entry::Occupied(e) => {
                     let d = file.diagnostics.remove(i);
                     if !is_unresolved(&d) {
+                        if signal_rank(&d) > 0 {
+                            stronger.push((*e.get(), d));
+                        }
                         continue;
                     }
                     let mut related = vec![also_here(Some(path.to_owned()), d.range)];
@@ -133,6 +160,15 @@ pub fn per_task(files: &mut [FileFindings<'_>]) {
             .and_then(|file| file.diagnostics.get_mut(i))
         {
             d.related.extend(related);
+        }
+    }
+    for ((f, i), later) in stronger {
+        if let Some(d) = files
+            .get_mut(f)
+            .and_then(|file| file.diagnostics.get_mut(i))
+            && signal_rank(&later) > signal_rank(d)
+        {
+            d.message = later.message;
         }
     }
 }

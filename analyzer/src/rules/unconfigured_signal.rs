@@ -125,4 +125,21 @@ mod tests {
             ])
         );
     }
+
+    /// A comparison or a `TEST` takes an input; a later use that sets the
+    /// name makes it the output, the one finding of the name says so.
+    #[test]
+    fn a_name_read_first_and_set_later_is_taken_for_the_output() {
+        let text = "MODULE m\n  PROC main()\n    IF doLamp = 0 SetDO doLamp, 1;\n    TEST goCode\n    CASE 3:\n      SetGO goCode, 4;\n    ENDTEST\n    IF diPart = 1 Stop;\n    WaitDI diPart, 1;\n  ENDPROC\nENDMODULE\n";
+        let got = taken(text);
+        let want: Vec<(String, String)> = [
+            ("doLamp", "signaldo"),
+            ("goCode", "signalgo"),
+            ("diPart", "signaldi"),
+        ]
+        .iter()
+        .map(|(a, b)| ((*a).into(), (*b).into()))
+        .collect();
+        assert_eq!(got, want);
+    }
 }
