@@ -12,7 +12,8 @@ crate::declare_rule! {
     /// where a signal (or a `mecunit`) is expected, compared with a number
     /// (`IF diReady = 1`), or tested with number `CASE` values (`TEST giRecipe`:
     /// a group input when a value is past 0 and 1) is reported once, at this low
-    /// severity, instead of as an unknown name. Give the configuration (put
+    /// severity, instead of as an unknown name. The finding names the type the
+    /// strongest use gives: a name compared first and set later is an output. Give the configuration (put
     /// `EIO.cfg` / `MOC.cfg` next to the modules or in a `SYSPAR` folder
     /// beside them, or name its folder in `rapid.toml`) to have these names
     /// checked; with it, an unknown name is
