@@ -72,12 +72,24 @@ impl OperatorOptions {
     }
 }
 
+/// Where an answer typed at the terminal comes from.
+const KEYBOARD: &str = "the keyboard";
+
 struct Operator {
     script: ScriptedOperator,
     terminal: bool,
 }
 
 impl Pendant for Operator {
+    /// A key pressed wrong at the keyboard: say why and ask again.
+    fn ask_again(&mut self, reply: &Reply, why: &str) -> bool {
+        if !self.terminal || reply.from != KEYBOARD {
+            return false;
+        }
+        let _ = writeln!(std::io::stderr().lock(), "  {why}; answer again");
+        true
+    }
+
     fn ask(&mut self, task: &str, question: &Question) -> Option<Reply> {
         if let Some(answer) = self.script.next_answer() {
             return answer;
@@ -99,13 +111,13 @@ impl Pendant for Operator {
             // line an empty answer, anything else as typed.
             Ok(_) => match parse_answer(&line) {
                 Ok(Some(answer)) => answer.map(|r| Reply {
-                    from: "the keyboard".to_owned(),
+                    from: KEYBOARD.to_owned(),
                     ..r
                 }),
                 Ok(None) | Err(_) => Some(Reply {
                     text: line.trim().to_owned(),
                     after: 0.0,
-                    from: "the keyboard".to_owned(),
+                    from: KEYBOARD.to_owned(),
                 }),
             },
         }

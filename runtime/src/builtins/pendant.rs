@@ -219,9 +219,19 @@ fn ask(
 /// The operator's answer to `ask`, read for the question: its value and
 /// when it comes; `None`: nobody answers.
 fn answer_of(cx: &mut Cx<'_>, ask: &Ask) -> R<Option<(Value, f64)>> {
-    let Some(Reply { text, after, from }) = cx.sh.pendant.ask(&cx.m.name, &ask.question) else {
+    let Some(mut reply) = cx.sh.pendant.ask(&cx.m.name, &ask.question) else {
         return Ok(None);
     };
+    // A person at the keyboard answers again until the answer fits.
+    while let Err(why) = (ask.read)(ask, &reply.text)
+        && cx.sh.pendant.ask_again(&reply, &why)
+    {
+        match cx.sh.pendant.ask(&cx.m.name, &ask.question) {
+            Some(r) => reply = r,
+            None => return Ok(None),
+        }
+    }
+    let Reply { text, after, from } = reply;
     match (ask.read)(ask, &text) {
         Ok(v) => Ok(Some((v, after))),
         Err(why) => {

@@ -85,6 +85,14 @@ pub trait Pendant: Send {
     /// answers (the question stays open until its `\MaxTime` or break
     /// signal, else the run stops waiting for the operator).
     fn ask(&mut self, task: &str, question: &Question) -> Option<Reply>;
+
+    /// `reply` does not fit its question (`why`): whether the operator is
+    /// asked again (a person at the keyboard, who sees why), rather than
+    /// the run stopping on the answer.
+    fn ask_again(&mut self, reply: &Reply, why: &str) -> bool {
+        let _ = (reply, why);
+        false
+    }
 }
 
 /// Nobody at the pendant.
