@@ -5,7 +5,7 @@
 
 mod support;
 
-use support::{rapid, scratch, show, write};
+use support::{rapid, scratch, show, text, write};
 
 const DIALOG: &str = "MODULE Cell
   VAR num key;
@@ -592,6 +592,34 @@ fn a_home_module_the_program_names_directly_is_there_from_the_start() {
         show(&out),
         "exit 0\n--- stdout\nhello from lib\n--- stderr\n"
     );
+}
+
+#[test]
+fn a_project_folder_keeps_its_controller_s_home_inside() {
+    let dir = scratch("run-project-home");
+    write(
+        &dir,
+        &[
+            (
+                "cell/Main.mod",
+                "MODULE Main\n  PROC main()\n    Load \\Dynamic, \"HOME:/Part.mod\";\n    %\"RunPart\"%;\n    UnLoad \"HOME:/Part.mod\";\n  ENDPROC\nENDMODULE\n",
+            ),
+            (
+                "cell/HOME/Part.mod",
+                "MODULE Part\n  PROC RunPart()\n    TPWrite \"part\";\n  ENDPROC\nENDMODULE\n",
+            ),
+        ],
+    );
+    // The folder, a module of it, and the folder as the current one.
+    for (at, path) in [("", "cell"), ("", "cell/Main.mod"), ("cell", "Main.mod")] {
+        let out = rapid(&dir.join(at), &["run", path]);
+        assert_eq!(
+            (out.status.code(), text(&out.stdout)),
+            (Some(0), "part\n".to_owned()),
+            "{path}: {}",
+            text(&out.stderr)
+        );
+    }
 }
 
 #[test]

@@ -72,29 +72,35 @@ pub fn tasks_in(env: &dyn Environment, paths: &[PathBuf]) -> Result<Found, Strin
 }
 
 /// The controller's `HOME:` folder for the task `key`: a backup's `HOME`
-/// folder, else the `HOME` folder that holds the task (a project keeps
-/// its controller's HOME so; never a Unix system's `/home`). File
-/// instructions see a copy of it ([`super::Sandbox::seeded`]).
+/// folder, else the `HOME` folder that holds the task, else one the task's
+/// folder holds (a project keeps its controller's HOME so; never a Unix
+/// system's `/home`). File instructions see a copy of it
+/// ([`super::Sandbox::seeded`]).
 pub fn home_of(key: &str) -> Option<PathBuf> {
     let is_home = |p: &Path| {
         p.file_name()
             .is_some_and(|n| rapid_analyzer::layout::is_home_folder(&n.to_string_lossy()))
             && p.is_dir()
     };
-    if let Some(root) = rapid_analyzer::layout::backup_root(key) {
-        let found = std::fs::read_dir(root)
+    let home_in = |dir: &Path| {
+        std::fs::read_dir(dir)
             .ok()?
             .filter_map(Result::ok)
             .map(|e| e.path())
-            .find(|p| is_home(p));
-        if found.is_some() {
-            return found;
-        }
+            .find(|p| is_home(p))
+    };
+    if let Some(root) = rapid_analyzer::layout::backup_root(key)
+        && let Some(found) = home_in(Path::new(root))
+    {
+        return Some(found);
     }
-    Path::new(key)
-        .ancestors()
+    // The task's folder (the current one for an empty key).
+    let dir = Path::new(if key.is_empty() { "." } else { key });
+    dir.ancestors()
         .find(|p| is_home(p))
         .map(Path::to_path_buf)
+        // A project's folder that keeps its controller's HOME inside.
+        .or_else(|| home_in(dir))
 }
 
 /// [`home_of`], when it lies inside one of `roots` (`None`: anywhere), as
