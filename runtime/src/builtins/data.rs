@@ -193,7 +193,7 @@ pub(crate) fn wait_time(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
         return fault(named_error(
             &cx.m.prog,
             "ERR_ARGVALERR",
-            format!("WaitTime: {t} is a negative time"),
+            format!("WaitTime: {} is a negative time", crate::world::num_text(t)),
         ));
     }
     let mut until = cx.now() + t;
@@ -202,7 +202,7 @@ pub(crate) fn wait_time(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     }
     Ok(Done::Wait(Box::new(Wait::until(
         until,
-        format!("WaitTime {t}"),
+        format!("WaitTime {}", crate::world::num_text(t)),
     ))))
 }
 

@@ -25,7 +25,10 @@ fn bits(cx: &mut Cx<'_>, a: &Args, param: &str) -> R<u32> {
         return arg_error(
             cx,
             a,
-            format!("{param} {x} is not a whole number from 0 to 4294967295"),
+            format!(
+                "{param} {} is not a whole number from 0 to 4294967295",
+                crate::world::num_text(x)
+            ),
         );
     }
     Ok(x as u32)
@@ -38,7 +41,10 @@ fn position(cx: &mut Cx<'_>, a: &Args, param: &str) -> R<u32> {
         return arg_error(
             cx,
             a,
-            format!("{param} {x} is not a whole number from 1 to 32"),
+            format!(
+                "{param} {} is not a whole number from 1 to 32",
+                crate::world::num_text(x)
+            ),
         );
     }
     Ok(x as u32)
@@ -77,7 +83,11 @@ pub(crate) fn trig(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
 pub(crate) fn inverse_trig(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
     let v = cx.num(a, "Value")?;
     if a.name != "ATanDnum" && !(-1.0..=1.0).contains(&v) {
-        return arg_error(cx, a, format!("{v} is outside -1 to 1"));
+        return arg_error(
+            cx,
+            a,
+            format!("{} is outside -1 to 1", crate::world::num_text(v)),
+        );
     }
     let r = match a.name {
         "ASinDnum" => v.asin(),

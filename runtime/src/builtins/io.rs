@@ -421,7 +421,10 @@ pub(crate) fn i_timer(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
         return fault(named_error(
             &cx.m.prog,
             "ERR_ARGVALERR",
-            format!("ITimer: {t} is not a positive time"),
+            format!(
+                "ITimer: {} is not a positive time",
+                crate::world::num_text(t)
+            ),
         ));
     }
     let id = interrupt_number(cx, a)?;

@@ -59,3 +59,26 @@ impl World {
         }
     }
 }
+
+/// A number an argument gave, in a message: as the controller prints a
+/// `num` (`0.05`, not the `f64` of its `f32`), else as a `dnum`.
+pub(crate) fn num_text(x: f64) -> String {
+    let single = x as f32;
+    if f64::from(single) == x {
+        rapid_evaluator::format_num(single)
+    } else {
+        rapid_evaluator::format_dnum(x)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn a_num_argument_is_shown_as_the_controller_prints_it() {
+        assert_eq!(super::num_text(f64::from(0.05_f32)), "0.05");
+        assert_eq!(super::num_text(f64::from(1.5_f32)), "1.5");
+        // A dnum's value, which no f32 holds.
+        assert_eq!(super::num_text(0.1), "0.1");
+        assert_eq!(super::num_text(4_294_967_295.0), "4294967295");
+    }
+}

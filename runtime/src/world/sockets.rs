@@ -184,7 +184,10 @@ impl EmptyNetwork {
         let message = if timeout >= WAIT_MAX {
             format!("{what}: nobody on the network, and WAIT_MAX waits forever")
         } else {
-            format!("{what} within {timeout} s (nobody on the network)")
+            format!(
+                "{what} within {} s (nobody on the network)",
+                super::num_text(timeout)
+            )
         };
         SocketError::NeverAnswers {
             after: timeout,
