@@ -209,3 +209,9 @@ pub(crate) fn get_modal_payload_mode(cx: &mut Cx<'_>, _: &mut Args) -> R<Value> 
         });
     Ok(Value::Num(mode.unwrap_or(1.0)))
 }
+
+/// `PPMovedInManMode()`: whether the operator moved the program pointer in
+/// manual mode; nobody moves it in a simulated run.
+pub(crate) fn pp_moved_in_man_mode(_: &mut Cx<'_>, _: &mut Args) -> R<Value> {
+    Ok(Value::Bool(false))
+}

@@ -467,6 +467,43 @@ pub(crate) fn remaining_retries(cx: &mut Cx<'_>, _: &mut Args) -> R<Value> {
     Ok(Value::Num(left as f32))
 }
 
+/// `ResetRetryCount`: the `RETRY`s the running handler has made are
+/// forgotten, so `RemainingRetries` counts from the full number again.
+pub(crate) fn reset_retry_count(cx: &mut Cx<'_>, _: &mut Args) -> R<Done> {
+    let at = cx.m.frames.iter().rposition(|f| f.in_handler);
+    if let Some(f) = at
+        .or(cx.m.frames.len().checked_sub(1))
+        .and_then(|i| cx.m.frames.get_mut(i))
+    {
+        f.retries = 0;
+    }
+    Ok(Done::Next)
+}
+
+/// What the data object `DatObj` (an `INOUT` parameter, followed back to
+/// the caller's object) is: a persistent, a variable, or neither.
+fn storage_of(cx: &Cx<'_>, a: &Args) -> Option<rapid_analyzer::items::Storage> {
+    use rapid_analyzer::items::Storage;
+    match a.place_of("DatObj")?.root {
+        Root::Pers(_) => Some(Storage::Pers),
+        Root::Global(g) => cx.m.prog.globals.get(g as usize).map(|g| g.storage),
+        // A routine's own data.
+        Root::Stack(_) => Some(Storage::Var),
+    }
+}
+
+/// `IsPers(DatObj)`: is the actual `INOUT` parameter a persistent?
+pub(crate) fn is_pers(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    let s = storage_of(cx, a);
+    Ok(Value::Bool(s == Some(rapid_analyzer::items::Storage::Pers)))
+}
+
+/// `IsVar(DatObj)`: is the actual `INOUT` parameter a variable?
+pub(crate) fn is_var(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    let s = storage_of(cx, a);
+    Ok(Value::Bool(s == Some(rapid_analyzer::items::Storage::Var)))
+}
+
 /// `ArgName(Parameter [\ErrorNumber])`: the name of the data object the
 /// argument is: a whole object (a component or an element gives its
 /// object's name), followed back through the parameters it was passed

@@ -338,6 +338,26 @@ pub(crate) fn is_file(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
     }))
 }
 
+/// `FileSize(Path)`: the file's size in bytes.
+pub(crate) fn file_size(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    let name = cx.string(a, "Path")?;
+    let r = cx.sh.files.read(&name).map(|bytes| bytes.len());
+    match r {
+        Ok(n) => Ok(Value::Num(n as f32)),
+        Err(e) => {
+            done_or_error(cx, a, Err(e))?;
+            Ok(Value::Num(0.0))
+        }
+    }
+}
+
+/// `ClearIOBuff IODevice`: empties a serial channel's input buffer; a
+/// file has none, so nothing changes.
+pub(crate) fn clear_io_buff(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    cx.req(a, "IODevice")?;
+    Ok(Done::Next)
+}
+
 fn fs_op(
     cx: &mut Cx<'_>,
     a: &Args,

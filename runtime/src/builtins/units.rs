@@ -135,3 +135,25 @@ pub(crate) fn get_next_mech_unit(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
     }
     Ok(Value::Bool(true))
 }
+
+/// `RobName()`: the name of the robot the task moves (`MOC.cfg`'s TCP
+/// robot of its turn among the motion tasks, else `ROB_1`...), an empty
+/// string for a task that moves none.
+pub(crate) fn rob_name(cx: &mut Cx<'_>, _: &mut Args) -> R<Value> {
+    let me = cx.m.number.saturating_sub(1);
+    if !matches!(cx.sh.robots.get(me), Some(Some(_))) {
+        return Ok(Value::Str(String::new()));
+    }
+    let turn = cx.sh.robots[..me].iter().filter(|r| r.is_some()).count();
+    let configured = cx
+        .sh
+        .system
+        .mechanical_units()
+        .into_iter()
+        .filter(|u| u.tcp_robot)
+        .nth(turn)
+        .map(|u| u.name);
+    Ok(Value::Str(
+        configured.unwrap_or_else(|| format!("ROB_{}", turn + 1)),
+    ))
+}
