@@ -6,11 +6,12 @@
 //! ([`crate::program::Program::with_module`]): nothing running moves, and
 //! its routines are reached by late binding (`%"part" + n%`), as on the
 //! controller, whose programs name a loaded module's routines no other
-//! way. Unloading gives the task back the program it had before the load,
-//! so modules unload in the reverse order of their loads (the usual
-//! load, run, unload of a part program); unloading one loaded before
-//! another that is still loaded, or erasing one of the program's own
-//! modules, stops the run as not simulated. `\Dynamic` and `\CheckRef` are
+//! way. Unloading gives the task back the program it had before the load;
+//! the modules loaded after it are laid out again, keeping their data's
+//! values (the usual load, run, unload of a part program unloads the last
+//! one). Unloading a module while a routine of one loaded after it runs,
+//! or erasing one of the program's own modules, stops the run as not
+//! simulated. `\Dynamic` and `\CheckRef` are
 //! taken as the controller takes them: the program is never reset here,
 //! and only with `\CheckRef` does a name declared nowhere fail the load.
 
@@ -33,6 +34,9 @@ pub(crate) struct LoadedModule {
     /// The index of its first module in the program.
     first: usize,
     before: Arc<Program>,
+    /// Its text, to lay it out again when a module loaded before it is
+    /// unloaded.
+    text: Arc<str>,
 }
 
 /// The loads `StartLoad` started and `WaitLoad` has not finished: the
@@ -143,21 +147,26 @@ fn load(cx: &mut Cx<'_>, name: &str, path: &str, check_refs: bool) -> R<()> {
         modules,
         first,
         before,
+        text: text.into(),
     });
     Ok(())
 }
 
-/// Unloads the module loaded from `path` (entry `i` of the loads).
+/// Unloads the module loaded from `path` (entry `i` of the loads): the
+/// task gets back the program it had before that load, then the modules
+/// loaded after it again, their data keeping their values.
 fn unload(cx: &mut Cx<'_>, name: &str, i: usize) -> R<()> {
-    if i + 1 != cx.m.loaded.len() {
-        return fault(FaultKind::Unsupported(format!(
-            "{name} of a module loaded before another that is still loaded"
-        )));
-    }
-    let Some(entry) = cx.m.loaded.last().cloned() else {
+    let Some(entry) = cx.m.loaded.get(i).cloned() else {
         return Ok(());
     };
-    if cx.m.frames.iter().any(|f| f.code.module >= entry.first) {
+    let later: Vec<LoadedModule> = cx.m.loaded[i + 1..].to_vec();
+    let own_end = later.first().map_or(usize::MAX, |l| l.first);
+    let running = |from: usize, to: usize| {
+        cx.m.frames
+            .iter()
+            .any(|f| (from..to).contains(&f.code.module))
+    };
+    if running(entry.first, own_end) {
         return fault(named_error(
             &cx.m.prog,
             "ERR_UNLOAD",
@@ -167,9 +176,85 @@ fn unload(cx: &mut Cx<'_>, name: &str, i: usize) -> R<()> {
             ),
         ));
     }
+    if running(own_end, usize::MAX) {
+        return fault(FaultKind::Unsupported(format!(
+            "{name} of a module loaded before one whose routine is running"
+        )));
+    }
+    let kept = later_data(cx, own_end);
     cx.trace(&format!("{name}: {}", entry.modules.join(", ")));
-    cx.m.loaded.pop();
+    cx.m.loaded.truncate(i);
     cx.m.adopt(cx.sh, entry.before);
+    for l in later {
+        let before = cx.m.prog.clone();
+        let Ok(program) = before.with_module(&l.path, &l.text, false) else {
+            return fault(FaultKind::Unsupported(format!(
+                "{name}: {} could not be laid out again",
+                l.modules.join(", ")
+            )));
+        };
+        let first = before.module_count();
+        cx.m.adopt(cx.sh, Arc::new(program));
+        cx.m.loaded.push(LoadedModule { first, before, ..l });
+    }
+    // The later modules now start where the unloaded one did.
+    restore_data(cx, entry.first, kept)
+}
+
+/// The values of the data the modules from index `from` on declare, by
+/// module and name.
+fn later_data(cx: &mut Cx<'_>, from: usize) -> Vec<((String, String), Value)> {
+    let prog = cx.m.prog.clone();
+    let module = |m: usize| prog.modules.get(m).map(|m| m.name.to_ascii_lowercase());
+    let mut out = Vec::new();
+    for (g, global) in prog.globals.iter().enumerate() {
+        if let crate::program::Origin::Module { module: m, .. } = global.origin
+            && m >= from
+            && let (Some(name), Some(v)) = (module(m), cx.m.globals.get(g))
+        {
+            out.push(((name, global.name.to_ascii_lowercase()), v.clone()));
+        }
+    }
+    for (k, p) in prog.pers.iter().enumerate() {
+        if p.module >= from
+            && let (Some(name), Some(&i)) = (module(p.module), cx.m.pers_map.get(k))
+            && let Ok(v) = cx.m.load(
+                cx.sh,
+                &crate::machine::Place::root(crate::machine::Root::Pers(i)),
+            )
+        {
+            out.push(((name, p.name.to_ascii_lowercase()), v));
+        }
+    }
+    out
+}
+
+/// Gives the data of the modules from index `from` on the values
+/// [`later_data`] kept.
+fn restore_data(cx: &mut Cx<'_>, from: usize, kept: Vec<((String, String), Value)>) -> R<()> {
+    use crate::machine::{Place, Root};
+    let prog = cx.m.prog.clone();
+    let module = |m: usize| prog.modules.get(m).map(|m| m.name.to_ascii_lowercase());
+    let value = |m: usize, name: &str| {
+        let key = (module(m)?, name.to_ascii_lowercase());
+        kept.iter().find(|(k, _)| *k == key).map(|(_, v)| v.clone())
+    };
+    for (g, global) in prog.globals.iter().enumerate() {
+        if let crate::program::Origin::Module { module: m, .. } = global.origin
+            && m >= from
+            && global.storage != rapid_analyzer::items::Storage::Const
+            && let Some(v) = value(m, &global.name)
+        {
+            cx.store(&Place::root(Root::Global(g as u32)), v)?;
+        }
+    }
+    for (k, p) in prog.pers.iter().enumerate() {
+        if p.module >= from
+            && let (Some(v), Some(&i)) = (value(p.module, &p.name), cx.m.pers_map.get(k))
+        {
+            cx.store(&Place::root(Root::Pers(i)), v)?;
+        }
+    }
     Ok(())
 }
 

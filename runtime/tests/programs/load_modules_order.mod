@@ -1,7 +1,7 @@
 MODULE load_modules_order
-  ! Modules unload in the reverse order of their loads (EraseModule names
-  ! a loaded module by its name): unloading one loaded before another
-  ! that is still loaded stops the run as not simulated.
+  ! Modules unload in any order (EraseModule names a loaded module by its
+  ! name): unloading one loaded before another that is still loaded keeps
+  ! the later one.
   VAR iodev f;
 
   PROC main()
@@ -16,6 +16,8 @@ MODULE load_modules_order
     Load "HOME:/a.mod";
     Load "HOME:/b.mod";
     UnLoad "HOME:/a.mod";
+    TPWrite "a "\Bool:=ModExist("PartA");
+    TPWrite "b "\Bool:=ModExist("PartB");
   ENDPROC
 
   PROC write_part(string file, string name)
@@ -33,4 +35,6 @@ ENDMODULE
 !> a FALSE
 !> [Load at load_modules_order.mod:16] PartA from HOME:/a.mod
 !> [Load at load_modules_order.mod:17] PartB from HOME:/b.mod
-!! unsupported: UnLoad of a module loaded before another that is still loaded at 18
+!> [UnLoad at load_modules_order.mod:18] PartA
+!> a FALSE
+!> b TRUE
