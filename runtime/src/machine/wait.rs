@@ -74,6 +74,71 @@ pub(crate) enum WaitKind {
     /// Until the operator answers, or a break signal breaks the dialog
     /// (`TPReadFK`, `UIMessageBox`...).
     Operator(Box<OperatorWait>),
+    /// A search move (`SearchL`...) until its signal does as asked (then
+    /// the hit is stored), or the move's end (the wait's deadline).
+    Search(Box<SearchWait>),
+}
+
+/// A search move under way.
+#[derive(Clone, Debug)]
+pub(crate) struct SearchWait {
+    pub signal: String,
+    pub test: SignalTest,
+    /// When the move starts and ends (simulated seconds).
+    pub start: f64,
+    pub end: f64,
+    /// The TCP where the move starts, and `ToPoint`, in the move's work
+    /// object: the hit lies between them, by the time it comes.
+    pub from: [f64; 3],
+    pub to: Value,
+    /// `SearchPoint`.
+    pub point: Place,
+    /// `\Stop`, `\PStop`, `\SStop`: the move ends at the hit.
+    pub stop: bool,
+    /// The task's robot (its entry in [`Shared::motion_until`]).
+    pub robot: usize,
+    /// `ToPoint`, the tool and the work object, to stop the arm at the hit.
+    pub target: crate::world::RobTarget,
+    pub tool: crate::world::Tool,
+    pub wobj: crate::world::WObj,
+}
+
+impl SearchWait {
+    /// Where the straight path from the start to `ToPoint` is at time `t`.
+    fn hit_trans(&self, t: f64) -> [f64; 3] {
+        let span = self.end - self.start;
+        let f = if span > 0.0 {
+            ((t - self.start) / span).clamp(0.0, 1.0)
+        } else {
+            1.0
+        };
+        let to = self.target.pose.trans;
+        std::array::from_fn(|i| self.from[i] + f * (to[i] - self.from[i]))
+    }
+
+    /// `ToPoint` with the TCP where the straight path from the start is
+    /// at time `t`.
+    fn hit_at(&self, t: f64) -> Value {
+        let at = self.hit_trans(t);
+        let mut v = self.to.clone();
+        if v.field("trans").is_some() {
+            let fields = ["x", "y", "z"]
+                .iter()
+                .zip(at)
+                .map(|(axis, x)| ((*axis).to_owned(), Value::Num(x as f32)))
+                .collect();
+            let pos = Value::Record {
+                ty: "pos".to_owned(),
+                fields,
+            };
+            if let Value::Record { fields, .. } = &mut v
+                && let Some((_, slot)) = fields.iter_mut().find(|(n, _)| n == "trans")
+            {
+                *slot = pos;
+            }
+        }
+        v
+    }
 }
 
 /// A question to the operator that waits for its answer.
@@ -173,6 +238,10 @@ impl Machine {
                 }
             }
             WaitKind::Never => false,
+            WaitKind::Search(search) => sh
+                .io
+                .read(&search.signal)
+                .is_some_and(|v| search.test.holds(v)),
             WaitKind::Operator(o) => {
                 let broken = o
                     .breaks
@@ -192,6 +261,10 @@ impl Machine {
         };
         if done {
             self.end_wait(sh, &w)?;
+            // A flying search that hit waits on for the move's end.
+            if self.frames.last().is_some_and(|f| f.wait.is_some()) {
+                return Ok(Blocked::Waiting);
+            }
             return Ok(Blocked::Ready);
         }
         self.check_timeout(sh)
@@ -239,6 +312,34 @@ impl Machine {
                 }
             }
             WaitKind::Semaphore(p) => self.store(sh, p, Value::Bool(true))?,
+            WaitKind::Search(search) => {
+                let now = sh.clock;
+                self.store(sh, &search.point, search.hit_at(now))?;
+                if search.stop {
+                    // The robot stops at the hit.
+                    if let Some(until) = sh.motion_until.get_mut(search.robot) {
+                        *until = until.min(now);
+                    }
+                    let hit = crate::world::RobTarget {
+                        pose: crate::world::Pose {
+                            trans: search.hit_trans(now),
+                            rot: search.target.pose.rot,
+                        },
+                        ..search.target
+                    };
+                    if let Some(Some(robot)) = sh.robots.get_mut(search.robot)
+                        && let Ok(joints) = robot.calc_joints(&hit, &search.tool, &search.wobj)
+                    {
+                        robot.stop_at(&joints, now);
+                    }
+                } else if search.end > now {
+                    // A flying search: the robot goes on to ToPoint.
+                    self.block(super::Wait::until(
+                        search.end,
+                        "the search move (the robot moves on)".to_owned(),
+                    ));
+                }
+            }
             WaitKind::Operator(o) => {
                 if let Some((p, v)) = &o.also {
                     self.store(sh, p, v.clone())?;

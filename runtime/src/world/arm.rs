@@ -114,6 +114,12 @@ impl Robot for ArmRobot {
         Some(self.robot.limits.0)
     }
 
+    fn stop_at(&mut self, joints: &JointTarget, at: f64) {
+        self.joints = joints.robax;
+        self.at_rest = true;
+        self.until = self.until.min(at);
+    }
+
     fn move_to(&mut self, request: &MoveRequest<'_>) -> Result<Motion, RobotError> {
         if !request.wobj.ufprog && !request.wobj.ufmec.is_empty() {
             return Err(RobotError::Unsupported(format!(

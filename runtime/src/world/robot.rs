@@ -304,6 +304,18 @@ pub trait Robot: Send {
         let _ = (linear, on);
     }
 
+    /// Whether its moves take time (a modelled arm's do; the default
+    /// robot's arrive at once).
+    fn moves_take_time(&self) -> bool {
+        true
+    }
+
+    /// The arm stops at `joints` at time `at`, short of the move under way
+    /// (a search that stops at its hit).
+    fn stop_at(&mut self, joints: &JointTarget, at: f64) {
+        let _ = (joints, at);
+    }
+
     /// The working range of each axis, degrees (`[lower, upper]`), when
     /// the arm is modelled.
     fn joint_limits(&self) -> Option<[[f64; 2]; 6]> {
@@ -363,6 +375,10 @@ impl InstantRobot {
 }
 
 impl Robot for InstantRobot {
+    fn moves_take_time(&self) -> bool {
+        false
+    }
+
     fn move_to(&mut self, request: &MoveRequest<'_>) -> Result<Motion, RobotError> {
         match &request.to {
             MoveTarget::Cartesian(t) => {
