@@ -208,7 +208,7 @@ fn report_argument<'t>(
             rules::switch_argument::given_a_value(cx, p, arg.byte_range());
             exprs::place_or_value(cx, v);
         }
-        Some(v) => check_value(cx, p, v),
+        Some(v) => check_value(cx, p, v, searches_signal(sig, p)),
         None if p.switch => {}
         None if parts.backslash => rules::switch_argument::needs_a_value(cx, p, arg.byte_range()),
         None => {}
@@ -223,7 +223,20 @@ fn report_missing(cx: &mut Cx<'_>, sig: &Signature, binding: &Binding, call: Ran
     }
 }
 
-fn check_value<'t>(cx: &mut Cx<'t>, p: &Param, v: Node<'t>) {
+/// A search's `Signal | PersBool` parameter (`SearchL`...: any type in the
+/// catalogue, either a digital input or a `PERS bool`): a name declared
+/// nowhere there is taken for the digital input, as a signal parameter
+/// takes it.
+fn searches_signal(sig: &Signature, p: &Param) -> bool {
+    matches!(p.ty, Ty::Any)
+        && p.name.eq_ignore_ascii_case("Signal")
+        && sig
+            .params
+            .iter()
+            .any(|q| q.name.eq_ignore_ascii_case("SearchPoint"))
+}
+
+fn check_value<'t>(cx: &mut Cx<'t>, p: &Param, v: Node<'t>, signal: bool) {
     if crate::syntax_util::kind(v) == kind::STAR {
         return;
     }
@@ -235,6 +248,7 @@ fn check_value<'t>(cx: &mut Cx<'t>, p: &Param, v: Node<'t>) {
             }
             (exprs::expr(cx, v, Some(&p.ty)), Place::Value)
         }
+        _ if signal => exprs::reference(cx, v, &Ty::named("signaldi")),
         _ => exprs::reference(cx, v, &p.ty),
     };
     if !rules::argument_mode::check(cx, p, place, v.byte_range()) {
