@@ -21,6 +21,7 @@ pub(crate) mod output;
 pub(crate) mod pendant;
 pub(crate) mod rawbytes;
 pub(crate) mod save;
+pub(crate) mod search;
 pub(crate) mod settings;
 pub(crate) mod sockets;
 pub(crate) mod symbols;
@@ -159,9 +160,9 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("MoveLDO", motion::move_do),
     ("MoveJDO", motion::move_do),
     ("MoveCDO", motion::move_do),
-    ("SearchL", motion::search),
-    ("SearchJ", motion::search),
-    ("SearchC", motion::search),
+    ("SearchL", search::search),
+    ("SearchJ", search::search),
+    ("SearchC", search::search),
     ("TriggL", triggs::trigg_move),
     ("TriggJ", triggs::trigg_move),
     ("TriggC", triggs::trigg_move),
