@@ -128,8 +128,8 @@ pub const REVIEWED: &[Reviewed] = &[
     Reviewed {
         repo: "EdgarIvanMM__PaletizadoCajasConFrascos",
         why: Why::IoSignal,
-        note: "remote signals of the cell (read with GInput, searched with SearchL)",
-        data: &["REM_CARTON", "REM_PALLET", "REM_SENSOR_TOMO_CARTON"],
+        note: "remote signals of the cell (read with GInput)",
+        data: &["REM_CARTON", "REM_PALLET"],
         types: &[],
     },
     Reviewed {
@@ -630,9 +630,6 @@ pub const REVIEWED: &[Reviewed] = &[
         data: &[
             "ai_Sensor1_Q1_in",
             "ai_Sensor2_Q2_in",
-            "di_Sensor1_Q1_In",
-            "di_Sensor2_Q1_In",
-            "di_SpindelSensor",
         ],
         types: &[],
     },
