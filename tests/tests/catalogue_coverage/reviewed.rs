@@ -627,10 +627,7 @@ pub const REVIEWED: &[Reviewed] = &[
         repo: "SDEBEUL__Kraker1",
         why: Why::IoSignal,
         note: "sensor inputs of the cell's I/O configuration",
-        data: &[
-            "ai_Sensor1_Q1_in",
-            "ai_Sensor2_Q2_in",
-        ],
+        data: &["ai_Sensor1_Q1_in", "ai_Sensor2_Q2_in"],
         types: &[],
     },
     Reviewed {
