@@ -148,12 +148,20 @@ impl Env for TypeEnv {
         Lookup::Unknown
     }
 
+    // Asked for every type a value is converted to, built-in ones first
+    // of all: no allocation when the task declares no type of the name.
     fn record_layout(&self, type_name: &str) -> Option<Vec<(String, Type)>> {
-        self.records.get(&fold(type_name)).cloned().flatten()
+        if self.records.is_empty() {
+            return None;
+        }
+        crate::names::with_folded(type_name, |k| self.records.get(k).cloned().flatten())
     }
 
     fn alias_of(&self, type_name: &str) -> Option<Type> {
-        self.aliases.get(&fold(type_name)).cloned().flatten()
+        if self.aliases.is_empty() {
+            return None;
+        }
+        crate::names::with_folded(type_name, |k| self.aliases.get(k).cloned().flatten())
     }
 
     fn catalogue(&self) -> &Catalogue {
