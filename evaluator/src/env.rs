@@ -73,6 +73,14 @@ pub trait Env {
         None
     }
 
+    /// Does the task declare a type of this name (a `RECORD` or an
+    /// `ALIAS`, which wins over a built-in type of the name)? Asked for
+    /// every built-in type a value is converted to: an environment that
+    /// knows its types once may answer faster.
+    fn declares_type(&self, type_name: &str) -> bool {
+        self.record_layout(type_name).is_some() || self.alias_of(type_name).is_some()
+    }
+
     /// The catalogue of built-ins the names resolve against: the signatures
     /// of the pure functions come from it. The whole catalogue
     /// ([`rapid_catalogue::base`]) unless the environment has a task's

@@ -128,17 +128,20 @@ fn resolve_kind(name: &str, env: &dyn Env) -> Kind {
         // The task's own types first: a RECORD or ALIAS of a built-in
         // type's name (an option's `partdata` in a task without the
         // option) is the task's.
-        if let Some(layout) = env.record_layout(&name) {
-            return Kind::Record(Rc::new((name, layout)));
-        }
-        if let Some(t) = env.alias_of(&name) {
-            if !t.dims.is_empty() {
-                return Kind::Array(t.element());
+        let builtin = cat.datatype(&name);
+        if builtin.is_none() || env.declares_type(&name) {
+            if let Some(layout) = env.record_layout(&name) {
+                return Kind::Record(Rc::new((name, layout)));
             }
-            name = t.name;
-            continue;
+            if let Some(t) = env.alias_of(&name) {
+                if !t.dims.is_empty() {
+                    return Kind::Array(t.element());
+                }
+                name = t.name;
+                continue;
+            }
         }
-        if let Some(t) = cat.datatype(&name) {
+        if let Some(t) = builtin {
             match (t.kind, &t.alias_of) {
                 (TypeKind::Alias, Some(of)) => {
                     name = of.clone();

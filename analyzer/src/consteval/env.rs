@@ -111,6 +111,9 @@ fn alias_in(types: &Types<'_>, name: &str) -> Option<Type> {
 pub struct TypeEnv {
     records: crate::names::NameMap<Option<Vec<(String, Type)>>>,
     aliases: crate::names::NameMap<Option<Type>>,
+    /// The task's types that have a built-in type's name (folded): rare,
+    /// so a built-in type is found without a lookup here.
+    shadowing: Vec<String>,
     catalogue: &'static Catalogue,
 }
 
@@ -135,9 +138,16 @@ impl TypeEnv {
                 }
             }
         }
+        let shadowing = records
+            .keys()
+            .chain(aliases.keys())
+            .filter(|n| task.catalogue.datatype(n).is_some())
+            .cloned()
+            .collect();
         TypeEnv {
             records,
             aliases,
+            shadowing,
             catalogue: task.catalogue,
         }
     }
@@ -162,6 +172,11 @@ impl Env for TypeEnv {
             return None;
         }
         crate::names::with_folded(type_name, |k| self.aliases.get(k).cloned().flatten())
+    }
+
+    fn declares_type(&self, type_name: &str) -> bool {
+        !self.shadowing.is_empty()
+            && crate::names::with_folded(type_name, |k| self.shadowing.iter().any(|s| s == k))
     }
 
     fn catalogue(&self) -> &Catalogue {
