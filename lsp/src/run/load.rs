@@ -453,9 +453,6 @@ pub fn views(task: &Arc<Task>, keep: impl Fn(&Unit) -> bool) -> Vec<(Arc<Unit>, 
         .collect()
 }
 
-/// "the folder holds N tasks; name one of them (e.g. ...)": the first
-/// tasks' keys, which are the paths to give (the folder or program file as
-/// the command line names it; empty for the current folder, shown `.`).
 /// The error for a folder whose tasks belong to several backups (a
 /// repository of dated backups): a backup runs its tasks together, so the
 /// run names one backup. `None` for tasks of one backup or of none.
@@ -478,6 +475,9 @@ fn several_backups(keys: &[&str]) -> Option<String> {
     })
 }
 
+/// "the folder holds N tasks; name one of them (e.g. ...)": the first
+/// tasks' keys, which are the paths to give (the folder or program file as
+/// the command line names it; empty for the current folder, shown `.`).
 pub(crate) fn several_tasks(keys: &[&str]) -> String {
     let shown: Vec<&str> = keys
         .iter()
