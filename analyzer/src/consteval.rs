@@ -24,7 +24,7 @@ use rapid_evaluator::{
 };
 use tree_sitter::{Node, Tree, TreeCursor};
 
-use crate::catalogue::{Catalogue, Datum, DatumKind, Mode, TypeKind};
+use crate::catalogue::{Catalogue, Datum, DatumKind, Mode};
 use crate::check::Cx;
 use crate::items::{DataDecl, Storage};
 use crate::lower::{is_expression, lower_with};
@@ -600,30 +600,11 @@ fn field_of<'t>(node: Node<'t>, name: &str) -> Option<Node<'t>> {
     field(node, name)
 }
 
-/// The components of a record type, following aliases.
+/// The components of a record type, following aliases, as the evaluator
+/// resolves them.
 fn component_types(ty: &Type, env: &dyn Env) -> Option<Vec<Type>> {
-    let mut name = ty.name.clone();
-    for _ in 0..16 {
-        // The task's own types first, as the evaluator resolves them.
-        if let Some(layout) = env.record_layout(&name) {
-            return Some(layout.into_iter().map(|(_, t)| t).collect());
-        }
-        let alias = env.alias_of(&name).or_else(|| {
-            let t = env.catalogue().datatype(&name)?;
-            t.alias_of.as_deref().map(Type::named)
-        });
-        if alias.is_none()
-            && let Some(t) = env.catalogue().datatype(&name)
-            && t.kind == TypeKind::Record
-        {
-            return Some(t.components.iter().map(|c| Type::named(&c.ty)).collect());
-        }
-        match alias {
-            Some(t) if t.dims.is_empty() => name = t.name,
-            _ => return None,
-        }
-    }
-    None
+    let layout = rapid_evaluator::record_components(&ty.name, env)?;
+    Some(layout.into_iter().map(|(_, t)| t).collect())
 }
 
 fn type_of(ty: &Ty) -> Option<Type> {

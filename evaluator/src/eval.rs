@@ -118,7 +118,7 @@ fn primitive_kind(name: &str) -> Option<Kind> {
 }
 
 /// Resolves a type name through built-in (catalogue) and user aliases.
-fn resolve_kind(name: &str, env: &dyn Env) -> Kind {
+pub(crate) fn resolve_kind(name: &str, env: &dyn Env) -> Kind {
     let cat = env.catalogue();
     let mut name = name.to_owned();
     for _ in 0..16 {

@@ -187,6 +187,17 @@ pub fn coerce(v: Value, ty: &Type, env: &dyn Env) -> Result<Value, EvalError> {
 /// of those, as the environment's types say; a type the evaluator does not
 /// know (a non-value type such as a signal or a clock, kept by an
 /// interpreter in its own form) is `opaque`'s value for its name.
+/// The components of record type `type_name` (aliases followed), as the
+/// evaluator resolves types: the task's own (`env`) before a built-in type
+/// of the name. `None` for a type that is not a record, or whose layout
+/// no source documents.
+pub fn record_components(type_name: &str, env: &dyn Env) -> Option<Vec<(String, Type)>> {
+    match eval::resolve_kind(type_name, env) {
+        eval::Kind::Record(r) => Some(r.1.clone()),
+        _ => None,
+    }
+}
+
 pub fn zero_value(ty: &Type, env: &dyn Env, opaque: &dyn Fn(&str) -> Value) -> Value {
     eval::Ctx::new(&Options::default()).zero(ty, env, opaque)
 }
