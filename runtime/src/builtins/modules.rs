@@ -20,9 +20,11 @@ use std::sync::Arc;
 use rapid_evaluator::Value;
 
 use super::{Args, Cx, Done};
-use crate::machine::{FaultKind, R, fault, named_error};
+use crate::machine::{FaultKind, Place, R, Root, fault, named_error};
+use crate::program::Origin;
 use crate::program::{LoadFailure, Program};
 use crate::world::FileError;
+use rapid_analyzer::items::Storage;
 
 /// A module file `Load` loaded, and the program the task had before.
 #[derive(Clone)]
@@ -201,58 +203,43 @@ fn unload(cx: &mut Cx<'_>, name: &str, i: usize) -> R<()> {
     restore_data(cx, entry.first, kept)
 }
 
+/// The data the modules from index `from` on declare, constants left
+/// out: each one's module and name (folded), and its place.
+fn data_of_modules(cx: &Cx<'_>, from: usize) -> Vec<((String, String), Place)> {
+    let prog = &cx.m.prog;
+    let key = |m: usize, name: &str| {
+        let module = prog.modules.get(m)?.name.to_ascii_lowercase();
+        Some((module, name.to_ascii_lowercase()))
+    };
+    let globals = prog.globals.iter().enumerate().filter_map(|(g, global)| {
+        let Origin::Module { module: m, .. } = global.origin else {
+            return None;
+        };
+        (m >= from && global.storage != Storage::Const)
+            .then(|| Some((key(m, &global.name)?, Place::root(Root::Global(g as u32)))))?
+    });
+    let pers = prog.pers.iter().enumerate().filter_map(|(k, p)| {
+        let &i = cx.m.pers_map.get(k)?;
+        (p.module >= from).then(|| Some((key(p.module, &p.name)?, Place::root(Root::Pers(i)))))?
+    });
+    globals.chain(pers).collect()
+}
+
 /// The values of the data the modules from index `from` on declare, by
 /// module and name.
 fn later_data(cx: &mut Cx<'_>, from: usize) -> Vec<((String, String), Value)> {
-    let prog = cx.m.prog.clone();
-    let module = |m: usize| prog.modules.get(m).map(|m| m.name.to_ascii_lowercase());
-    let mut out = Vec::new();
-    for (g, global) in prog.globals.iter().enumerate() {
-        if let crate::program::Origin::Module { module: m, .. } = global.origin
-            && m >= from
-            && let (Some(name), Some(v)) = (module(m), cx.m.globals.get(g))
-        {
-            out.push(((name, global.name.to_ascii_lowercase()), v.clone()));
-        }
-    }
-    for (k, p) in prog.pers.iter().enumerate() {
-        if p.module >= from
-            && let (Some(name), Some(&i)) = (module(p.module), cx.m.pers_map.get(k))
-            && let Ok(v) = cx.m.load(
-                cx.sh,
-                &crate::machine::Place::root(crate::machine::Root::Pers(i)),
-            )
-        {
-            out.push(((name, p.name.to_ascii_lowercase()), v));
-        }
-    }
-    out
+    data_of_modules(cx, from)
+        .into_iter()
+        .filter_map(|(key, place)| Some((key, cx.m.load(cx.sh, &place).ok()?)))
+        .collect()
 }
 
 /// Gives the data of the modules from index `from` on the values
 /// [`later_data`] kept.
 fn restore_data(cx: &mut Cx<'_>, from: usize, kept: Vec<((String, String), Value)>) -> R<()> {
-    use crate::machine::{Place, Root};
-    let prog = cx.m.prog.clone();
-    let module = |m: usize| prog.modules.get(m).map(|m| m.name.to_ascii_lowercase());
-    let value = |m: usize, name: &str| {
-        let key = (module(m)?, name.to_ascii_lowercase());
-        kept.iter().find(|(k, _)| *k == key).map(|(_, v)| v.clone())
-    };
-    for (g, global) in prog.globals.iter().enumerate() {
-        if let crate::program::Origin::Module { module: m, .. } = global.origin
-            && m >= from
-            && global.storage != rapid_analyzer::items::Storage::Const
-            && let Some(v) = value(m, &global.name)
-        {
-            cx.store(&Place::root(Root::Global(g as u32)), v)?;
-        }
-    }
-    for (k, p) in prog.pers.iter().enumerate() {
-        if p.module >= from
-            && let (Some(v), Some(&i)) = (value(p.module, &p.name), cx.m.pers_map.get(k))
-        {
-            cx.store(&Place::root(Root::Pers(i)), v)?;
+    for (key, place) in data_of_modules(cx, from) {
+        if let Some((_, v)) = kept.iter().find(|(k, _)| *k == key) {
+            cx.store(&place, v.clone())?;
         }
     }
     Ok(())

@@ -85,17 +85,11 @@ pub(crate) fn search(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     let end = motion_end(cx).max(start);
     let to = cx.req(a, "ToPoint")?;
     let point = cx.place_arg(a, "SearchPoint")?;
-    let none = || {
-        fault(named_error(
-            &cx.m.prog,
-            "ERR_WHLSEARCH",
-            format!("{}: the search signal never did as asked", a.name),
-        ))
-    };
+    let none = format!("{}: the search signal never did as asked", a.name);
     if end <= cx.now() {
         // No time to watch: the signal as the robot arrives.
         if before != wanted {
-            return none();
+            return fault(named_error(&cx.m.prog, "ERR_WHLSEARCH", none));
         }
         cx.store(&point, to)?;
         return Ok(Done::Next);
@@ -118,10 +112,7 @@ pub(crate) fn search(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
             wobj,
         })),
         deadline: Some(end),
-        on_timeout: Timeout::Error(
-            "ERR_WHLSEARCH",
-            format!("{}: the search signal never did as asked", a.name),
-        ),
+        on_timeout: Timeout::Error("ERR_WHLSEARCH", none),
         what: format!("{} (searching)", a.name),
     })))
 }

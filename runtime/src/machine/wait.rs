@@ -119,18 +119,10 @@ impl SearchWait {
     /// `ToPoint` with the TCP where the straight path from the start is
     /// at time `t`.
     fn hit_at(&self, t: f64) -> Value {
-        let at = self.hit_trans(t);
+        let [x, y, z] = self.hit_trans(t);
         let mut v = self.to.clone();
         if v.field("trans").is_some() {
-            let fields = ["x", "y", "z"]
-                .iter()
-                .zip(at)
-                .map(|(axis, x)| ((*axis).to_owned(), Value::Num(x as f32)))
-                .collect();
-            let pos = Value::Record {
-                ty: "pos".to_owned(),
-                fields,
-            };
+            let pos = Value::pos(x as f32, y as f32, z as f32);
             if let Value::Record { fields, .. } = &mut v
                 && let Some((_, slot)) = fields.iter_mut().find(|(n, _)| n == "trans")
             {
