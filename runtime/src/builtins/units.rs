@@ -74,6 +74,22 @@ pub(crate) fn get_motor_torque(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
     Ok(Value::Num(0.0))
 }
 
+/// The controller's mechanical units in order: `MOC.cfg`'s, else `ROB_1`...
+/// a robot for each motion task.
+fn controller_units(cx: &Cx<'_>) -> Vec<crate::world::MechUnit> {
+    let units = cx.sh.system.mechanical_units();
+    if !units.is_empty() {
+        return units;
+    }
+    (1..=cx.sh.robots.iter().filter(|r| r.is_some()).count().max(1))
+        .map(|n| crate::world::MechUnit {
+            name: format!("ROB_{n}"),
+            tcp_robot: true,
+            axes: 6,
+        })
+        .collect()
+}
+
 /// `GetNextMechUnit(ListNumber, UnitName [\MecRef] [\TCPRob] [\NoOfAxes]
 /// [\MecTaskNo] [\MotPlanNo] [\Active])`: unit number `ListNumber` (from
 /// 0) of the controller's list, `MOC.cfg`'s mechanical units in order
@@ -89,16 +105,7 @@ pub(crate) fn get_next_mech_unit(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
             )));
         }
     }
-    let mut units = cx.sh.system.mechanical_units();
-    if units.is_empty() {
-        units = (1..=cx.sh.robots.iter().filter(|r| r.is_some()).count().max(1))
-            .map(|n| crate::world::MechUnit {
-                name: format!("ROB_{n}"),
-                tcp_robot: true,
-                axes: 6,
-            })
-            .collect();
-    }
+    let units = controller_units(cx);
     let list = cx.place_arg(a, "ListNumber")?;
     let n = cx.num(a, "ListNumber")?;
     let name = cx.place_arg(a, "UnitName")?;
@@ -145,15 +152,12 @@ pub(crate) fn rob_name(cx: &mut Cx<'_>, _: &mut Args) -> R<Value> {
         return Ok(Value::Str(String::new()));
     }
     let turn = cx.sh.robots[..me].iter().filter(|r| r.is_some()).count();
-    let configured = cx
-        .sh
-        .system
-        .mechanical_units()
+    let unit = controller_units(cx)
         .into_iter()
         .filter(|u| u.tcp_robot)
-        .nth(turn)
-        .map(|u| u.name);
+        .nth(turn);
+    // A motion task past the configured robots: the default name.
     Ok(Value::Str(
-        configured.unwrap_or_else(|| format!("ROB_{}", turn + 1)),
+        unit.map_or_else(|| format!("ROB_{}", turn + 1), |u| u.name),
     ))
 }
