@@ -13,6 +13,7 @@ MODULE pendant_dialogs
   !answer robot one
   !answer Blue
   !answer 0.75
+  !answer 9000000001
   VAR clock clk;
   VAR num key;
   VAR num n;
@@ -46,10 +47,11 @@ MODULE pendant_dialogs
     TPWrite "item "\Num:=n;
     TPWrite "ok "\Bool:=res = resOK;
     TPWrite "tuned "\Num:=UINumTune(\Message:="Speed", 0.5, 0.25);
+    TPWrite "dtuned "\Dnum:=UIDnumTune(\Message:="Count", 10, 1);
     TPWrite "client "\Bool:=UIClientExist();
   ENDPROC
 ENDMODULE
-!> [TPErase at pendant_dialogs.mod:25] the operator window is cleared
+!> [TPErase at pendant_dialogs.mod:26] the operator window is cleared
 !> key 2
 !> key 1
 !> n 42.5
@@ -63,4 +65,5 @@ ENDMODULE
 !> item 3
 !> ok TRUE
 !> tuned 0.75
+!> dtuned 9000000001
 !> client TRUE
