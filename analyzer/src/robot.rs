@@ -27,6 +27,10 @@ pub struct MocRobot {
     /// `-base_frame_coordinated`: the base moves with another mechanical
     /// unit (a track), which is not modelled.
     pub coordinated: Option<String>,
+    /// The `MECHANICAL_UNIT_GROUP`s whose `-robot` it is, as written: the
+    /// MultiMove tasks that use one of them (`SYS.cfg`'s
+    /// `-UseMechanicalUnitGroup`) move this robot.
+    pub groups: Vec<String>,
 }
 
 fn number(entry: &Instance, attr: &str) -> Option<f64> {
@@ -83,7 +87,19 @@ pub fn moc_robots(file: &CfgFile) -> Vec<MocRobot> {
                 .get("base_frame_coordinated")
                 .filter(|s| !s.is_empty())
                 .map(str::to_owned),
+            groups: Vec::new(),
         });
+    }
+    for e in file.instances("MECHANICAL_UNIT_GROUP") {
+        let (Some(group), Some(robot)) = (e.get("name"), e.get("robot")) else {
+            continue;
+        };
+        if let Some(r) = robots
+            .iter_mut()
+            .find(|r| r.name.eq_ignore_ascii_case(robot))
+        {
+            r.groups.push(group.to_owned());
+        }
     }
     for e in file.instances("ARM") {
         let Some(name) = e.get("name") else {
@@ -164,11 +180,24 @@ impl TaskRobot {
     }
 }
 
-/// The robot of task `key` from the `MOC.cfg` robots that apply to it,
-/// else from the project's setting; `Err` with a note when a robot is
-/// named but not modelled (or moves on a track).
+/// Which task a robot is looked for: the task's folder (`key`), its name
+/// on the controller and its mechanical unit group (`SYS.cfg`).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct RobotOf<'a> {
+    pub key: &'a str,
+    /// `-Name` of its `CAB_TASKS` entry (`T_ROB2` kept in `RAPID/TASK2`).
+    pub name: Option<&'a str>,
+    /// `-UseMechanicalUnitGroup` of its `CAB_TASKS` entry.
+    pub group: Option<&'a str>,
+}
+
+/// The robot of a task from the `MOC.cfg` robots that apply to it, else
+/// from the project's setting; `Err` with a note when a robot is named but
+/// not modelled (or moves on a track). With several robots (MultiMove), a
+/// task moves the robot of its mechanical unit group, else task `T_ROBn`
+/// (its name, else its folder's) moves robot *n*.
 pub fn resolve(
-    key: &str,
+    task: RobotOf<'_>,
     mocs: &[&MocRobot],
     setting: Option<&RobotSetting>,
 ) -> Result<Option<Arc<TaskRobot>>, String> {
@@ -176,15 +205,24 @@ pub fn resolve(
         [] => None,
         [one] => Some(*one),
         several => {
-            // MultiMove: task `T_ROBn` moves robot n.
-            let last = key.rsplit('/').next().unwrap_or(key);
-            let n = last
-                .to_ascii_lowercase()
-                .strip_prefix("t_rob")
-                .and_then(|d| d.parse::<u32>().ok());
-            several
-                .iter()
-                .find(|r| n.is_some() && robot_number(&r.name) == n)
+            let by_group = task.group.and_then(|g| {
+                several
+                    .iter()
+                    .find(|r| r.groups.iter().any(|x| x.eq_ignore_ascii_case(g)))
+            });
+            let number = |name: &str| {
+                name.to_ascii_lowercase()
+                    .strip_prefix("t_rob")
+                    .and_then(|d| d.parse::<u32>().ok())
+            };
+            let folder = task.key.rsplit('/').next().unwrap_or(task.key);
+            let n = task.name.and_then(number).or_else(|| number(folder));
+            by_group
+                .or_else(|| {
+                    several
+                        .iter()
+                        .find(|r| n.is_some() && robot_number(&r.name) == n)
+                })
                 .copied()
         }
     };
@@ -299,6 +337,13 @@ pub fn joints_markdown(robot: &TaskRobot, value: &rapid_evaluator::Value) -> Opt
 mod tests {
     use super::*;
 
+    fn at(key: &str) -> RobotOf<'_> {
+        RobotOf {
+            key,
+            ..RobotOf::default()
+        }
+    }
+
     const MOC: &str = "MOC:CFG_1.0:6:0::\n#\nROBOT:\n\n      -name \"ROB_1\" -use_robot_serv_type \"ROB_1\" -use_joint_0 \"rob1_1\"\\\n      -use_robot_type \"ROB1_120_0.58_3\" -base_frame_pos_x 0.5\\\n      -base_frame_orient_u0 0.707107 -base_frame_orient_u3 0.707107\n#\nARM:\n\n      -name \"rob1_1\" -use_arm_type \"ROB1_1\" -upper_joint_bound 1.5\\\n      -lower_joint_bound -1.5\n\n      -name \"rob1_3\" -use_arm_type \"ROB1_3\" -upper_joint_bound 1\n";
 
     #[test]
@@ -313,7 +358,7 @@ mod tests {
         assert_eq!(r.bounds[0], (Some(-1.5), Some(1.5)));
         assert_eq!(r.bounds[2], (None, Some(1.0)));
         assert!((r.base.translation.vector.x - 500.0).abs() < 1e-9);
-        let t = resolve("b/RAPID/TASK1", &[r], None)
+        let t = resolve(at("b/RAPID/TASK1"), &[r], None)
             .expect("a value in a test")
             .expect("a value in a test");
         assert_eq!(t.robot.model.name, "IRB 120-3/0.58");
@@ -325,16 +370,16 @@ mod tests {
             name: "IRB 2600-12/1.65".into(),
             limits: None,
         };
-        let t = resolve("b/RAPID/TASK1", &[r], Some(&setting))
+        let t = resolve(at("b/RAPID/TASK1"), &[r], Some(&setting))
             .expect("a value in a test")
             .expect("a value in a test");
         assert_eq!(t.robot.model.name, "IRB 120-3/0.58");
-        let t = resolve("prog", &[], Some(&setting))
+        let t = resolve(at("prog"), &[], Some(&setting))
             .expect("a value in a test")
             .expect("a value in a test");
         assert_eq!(t.robot.model.name, "IRB 2600-12/1.65");
         assert!(
-            resolve("prog", &[], None)
+            resolve(at("prog"), &[], None)
                 .expect("a value in a test")
                 .is_none()
         );
@@ -342,7 +387,7 @@ mod tests {
             name: "IRB 14000".into(),
             limits: None,
         };
-        assert!(resolve("prog", &[], Some(&yumi)).is_err());
+        assert!(resolve(at("prog"), &[], Some(&yumi)).is_err());
     }
 
     #[test]

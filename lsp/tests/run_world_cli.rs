@@ -704,3 +704,50 @@ fn a_client_in_the_harness_exchanges_datagrams_with_a_rapid_udp_socket() {
         "exit 0\n--- stdout\nbound TRUE\ngot hello (5 bytes) from 127.0.0.1\ntimed out TRUE\n--- stderr\n"
     );
 }
+
+/// A MultiMove backup keeps its tasks in `RAPID/TASKn`: each moves the
+/// robot of its `SYS.cfg` mechanical unit group (`MOC.cfg`), not a robot
+/// found from the folder's name.
+#[test]
+fn each_multimove_task_moves_the_robot_of_its_unit_group() {
+    let dir = scratch("run-multimove");
+    let module = |name: &str, x: u32| {
+        format!(
+            "MODULE {name}\n  PROC main()\n    MoveJ [[{x},0,500],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]], v1000, fine, tool0;\n  ENDPROC\nENDMODULE\n"
+        )
+    };
+    write(
+        &dir,
+        &[
+            ("Cell/RAPID/TASK1/PROGMOD/A.mod", &module("A", 500)),
+            ("Cell/RAPID/TASK2/PROGMOD/B.mod", &module("B", 1200)),
+            (
+                "Cell/SYSPAR/SYS.cfg",
+                "SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n\n      -Name \"T_ROB1\" -Type \"NORMAL\" -MotionTask -UseMechanicalUnitGroup \"rob1\"\n\n      -Name \"T_ROB2\" -Type \"NORMAL\" -MotionTask -UseMechanicalUnitGroup \"rob2\"\n",
+            ),
+            (
+                "Cell/SYSPAR/MOC.cfg",
+                "MOC:CFG_1.0:6:0::\n#\nMECHANICAL_UNIT_GROUP:\n\n      -name \"rob1\" -robot \"ROB_1\"\n\n      -name \"rob2\" -robot \"ROB_2\"\n#\nROBOT:\n\n      -name \"ROB_1\" -use_robot_type \"ROB1_120_0.58_3\"\n\n      -name \"ROB_2\" -use_robot_type \"ROB2_2600_1.85_12_03\"\n",
+            ),
+        ],
+    );
+    let out = rapid(&dir, &["run", "Cell", "--report"]);
+    let shown = show(&out);
+    assert!(shown.starts_with("exit 0\n"), "{shown}");
+    assert!(!shown.contains("no robot is named"), "{shown}");
+    // x 1200 is out of the IRB 120's reach, not of the IRB 2600's; each
+    // task's closest axis is measured against its own robot's limits (the
+    // IRB 120's axis 5 turns to 120 degrees, the IRB 2600's axis 3 to 75).
+    assert!(
+        shown.contains(
+            "T_ROB1: closest to a limit: axis 5 at 98.70 degrees, 21.30 from its limit 120.00"
+        ),
+        "{shown}"
+    );
+    assert!(
+        shown.contains(
+            "T_ROB2: closest to a limit: axis 3 at 21.55 degrees, 53.45 from its limit 75.00"
+        ),
+        "{shown}"
+    );
+}

@@ -38,6 +38,9 @@ pub struct TaskSettings {
     pub entry: Option<String>,
     /// `-MotionTask`: the task moves a robot.
     pub motion: bool,
+    /// `-UseMechanicalUnitGroup`: the `MOC.cfg` group (and so the robot)
+    /// a MultiMove task moves, as written.
+    pub unit_group: Option<String>,
 }
 
 /// The `-Type` of a task: when the controller starts it.
@@ -108,6 +111,7 @@ pub fn config_of(file: &crate::cfg::CfgFile) -> Config {
                 kind,
                 entry: e.get("Entry").map(str::to_owned),
                 motion: e.has("MotionTask"),
+                unit_group: e.get("UseMechanicalUnitGroup").map(str::to_owned),
             })
         })
         .collect();

@@ -154,6 +154,7 @@ impl Workspace {
                 kind: crate::task::TaskKind::Normal,
                 entry: None,
                 motion: true,
+                unit_group: None,
             })
             .collect()
     }
@@ -201,7 +202,19 @@ impl Workspace {
             .chain(by_place)
             .flat_map(|c| &c.robots)
             .collect();
-        crate::robot::resolve(key, &mocs, self.controller.robot.as_ref())
+        let settings = self.task_settings(key);
+        let task = crate::robot::RobotOf {
+            key,
+            name: settings.as_ref().map(|s| s.name.as_str()),
+            group: settings.as_ref().and_then(|s| s.unit_group.as_deref()),
+        };
+        crate::robot::resolve(task, &mocs, self.controller.robot.as_ref())
+    }
+
+    /// The `SYS.cfg` entry of the backup task kept in folder `key`
+    /// ([`settings_by_folder`] of [`Workspace::controller_tasks`]).
+    pub fn task_settings(&self, key: &str) -> Option<crate::task::TaskSettings> {
+        settings_by_folder(key, &self.controller_tasks(key))
     }
 
     /// The configuration that applies to a task: its signals (`None` when
@@ -223,6 +236,26 @@ impl Workspace {
             mecunits.extend(config.mecunits.iter().cloned());
         }
         (signals, mecunits)
+    }
+}
+
+/// The `SYS.cfg` entry of the task kept in folder `key`: task *n* for
+/// `RAPID/TASKn`, else the entry named as the folder.
+pub fn settings_by_folder(
+    key: &str,
+    all: &[crate::task::TaskSettings],
+) -> Option<crate::task::TaskSettings> {
+    let folder = key.rsplit(['/', '\\']).next().unwrap_or(key);
+    let numbered = folder
+        .get(..4)
+        .filter(|h| h.eq_ignore_ascii_case("task"))
+        .and_then(|_| folder.get(4..)?.parse::<usize>().ok());
+    match numbered {
+        Some(n) => all.get(n.checked_sub(1)?).cloned(),
+        None => all
+            .iter()
+            .find(|t| t.name.eq_ignore_ascii_case(folder))
+            .cloned(),
     }
 }
 

@@ -17,7 +17,7 @@ mod tests;
 pub use checks::{
     Check, CheckInputs, CheckResult, diagnostics_cached, diagnostics_of, diagnostics_selected,
 };
-pub use controller::{config_applies, config_root};
+pub use controller::{config_applies, config_root, settings_by_folder};
 
 use std::collections::{BTreeMap, HashMap};
 use std::sync::Arc;

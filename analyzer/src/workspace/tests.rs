@@ -31,6 +31,51 @@ fn a_backups_robot_is_its_own() {
 }
 
 #[test]
+fn a_multimove_task_moves_the_robot_of_its_unit_group() {
+    let moc = "MOC:CFG_1.0:6:0::\n#\nMECHANICAL_UNIT_GROUP:\n\n      -name \"rob1\" -robot \"ROB_1\"\n\n      -name \"rob2\" -robot \"ROB_2\"\n#\nROBOT:\n\n      -name \"ROB_1\" -use_robot_type \"ROB1_120_0.58_3\"\n\n      -name \"ROB_2\" -use_robot_type \"ROB2_2600_1.85_12_03\"\n";
+    // T_ROB1 in RAPID/TASK1 moves robot 2 and PAINT in RAPID/TASK2 robot 1,
+    // by their groups; T_ROB2 in RAPID/TASK3, without one, by its name.
+    let sys = "SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n\n      -Name \"T_ROB1\" -MotionTask -UseMechanicalUnitGroup \"rob2\"\n\n      -Name \"PAINT\" -MotionTask -UseMechanicalUnitGroup \"ROB1\"\n\n      -Name \"T_ROB2\" -MotionTask\n";
+    let mut ws = Workspace::new();
+    ws.set_config("b/SYSPAR/MOC.cfg", moc);
+    ws.set_config("b/SYSPAR/SYS.cfg", sys);
+    let model = |key: &str| {
+        ws.robot_for(key)
+            .ok()
+            .flatten()
+            .map(|r| r.robot.model.name.clone())
+    };
+    assert_eq!(model("b/RAPID/TASK1").as_deref(), Some("IRB 2600-12/1.85"));
+    assert_eq!(model("b/RAPID/TASK2").as_deref(), Some("IRB 120-3/0.58"));
+    assert_eq!(model("b/RAPID/TASK3").as_deref(), Some("IRB 2600-12/1.85"));
+    // A task folder named as its task, and a task of no robot of the two.
+    assert_eq!(model("b/RAPID/PAINT").as_deref(), Some("IRB 120-3/0.58"));
+    assert_eq!(model("b/RAPID/TASK4"), None);
+}
+
+#[test]
+fn sys_cfg_entries_are_found_by_task_folder() {
+    use crate::task::{TaskKind, TaskSettings};
+    let entry = |name: &str, kind| TaskSettings {
+        name: name.to_owned(),
+        kind,
+        entry: None,
+        motion: false,
+        unit_group: None,
+    };
+    let all = [
+        entry("T_ROB1", TaskKind::Normal),
+        entry("T_BACK", TaskKind::SemiStatic),
+    ];
+    let of = |key: &str| settings_by_folder(key, &all).map(|s| s.name);
+    assert_eq!(of("b/RAPID/TASK2").as_deref(), Some("T_BACK"));
+    assert_eq!(of("b/RAPID/TASK1").as_deref(), Some("T_ROB1"));
+    assert_eq!(of("b/RAPID/t_back").as_deref(), Some("T_BACK"));
+    assert_eq!(of("b/RAPID/TASK3"), None);
+    assert_eq!(of("b/RAPID/TASK0"), None);
+}
+
+#[test]
 fn an_edit_in_one_routine_rechecks_only_its_changed_statements() {
     let mut body = String::new();
     for i in 0..200 {

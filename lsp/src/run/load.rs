@@ -57,7 +57,7 @@ pub fn tasks_in(env: &dyn Environment, paths: &[PathBuf]) -> Result<Found, Strin
     tasks.retain(|t| !t.units.is_empty());
     let settings = tasks
         .iter()
-        .map(|t| settings_of(&t.key, &workspace.controller_tasks(&t.key)))
+        .map(|t| workspace.task_settings(&t.key))
         .collect();
     let systems = tasks
         .iter()
@@ -151,23 +151,6 @@ pub fn system_of(
             ctrl_lang: config.language.clone(),
             ..SysInfo::default()
         },
-    }
-}
-
-/// The `SYS.cfg` entry of the task kept in folder `key`: task *n* for
-/// `RAPID/TASKn`, else the entry named as the folder.
-fn settings_of(key: &str, all: &[TaskSettings]) -> Option<TaskSettings> {
-    let folder = folder_name(key);
-    let numbered = folder
-        .get(..4)
-        .filter(|h| h.eq_ignore_ascii_case("task"))
-        .and_then(|_| folder.get(4..)?.parse::<usize>().ok());
-    match numbered {
-        Some(n) => all.get(n.checked_sub(1)?).cloned(),
-        None => all
-            .iter()
-            .find(|t| t.name.eq_ignore_ascii_case(folder))
-            .cloned(),
     }
 }
 
@@ -644,25 +627,5 @@ mod tests {
                 .expect_err("invalid")
                 .contains("signal name")
         );
-    }
-
-    #[test]
-    fn sys_cfg_entries_are_found_by_task_folder() {
-        let entry = |name: &str, kind| TaskSettings {
-            name: name.to_owned(),
-            kind,
-            entry: None,
-            motion: false,
-        };
-        let all = [
-            entry("T_ROB1", TaskKind::Normal),
-            entry("T_BACK", TaskKind::SemiStatic),
-        ];
-        let of = |key: &str| settings_of(key, &all).map(|s| s.name);
-        assert_eq!(of("b/RAPID/TASK2").as_deref(), Some("T_BACK"));
-        assert_eq!(of("b/RAPID/TASK1").as_deref(), Some("T_ROB1"));
-        assert_eq!(of("b/RAPID/t_back").as_deref(), Some("T_BACK"));
-        assert_eq!(of("b/RAPID/TASK3"), None);
-        assert_eq!(of("b/RAPID/TASK0"), None);
     }
 }
