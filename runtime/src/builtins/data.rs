@@ -434,11 +434,6 @@ pub(crate) fn run_mode(cx: &mut Cx<'_>, _: &mut Args) -> R<Value> {
     system_constant(cx, "RUN_CONT_CYCLE")
 }
 
-/// `IsStopMoveAct()`: `FALSE`: nothing stops the simulated motion.
-pub(crate) fn is_stop_move_act(_: &mut Cx<'_>, _: &mut Args) -> R<Value> {
-    Ok(Value::Bool(false))
-}
-
 /// The value of a predefined constant of the catalogue.
 fn system_constant(cx: &mut Cx<'_>, name: &str) -> R<Value> {
     match cx.m.prog.system_global(name) {

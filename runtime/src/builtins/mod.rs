@@ -18,6 +18,7 @@ pub(crate) mod io;
 pub(crate) mod modules;
 pub(crate) mod motion;
 pub(crate) mod output;
+pub(crate) mod paths;
 pub(crate) mod pendant;
 pub(crate) mod rawbytes;
 pub(crate) mod save;
@@ -187,11 +188,12 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("SpeedLimAxis", settings::speed_limit),
     ("SpeedLimCheckPoint", settings::speed_limit),
     ("SpeedRefresh", settings::speed_refresh),
-    ("StopMove", motion::setting),
-    ("StartMove", motion::setting),
-    ("StorePath", motion::setting),
-    ("RestoPath", motion::setting),
-    ("ClearPath", motion::setting),
+    ("StopMove", paths::stop_move),
+    ("StartMove", paths::start_move),
+    ("StopMoveReset", paths::start_move),
+    ("StorePath", paths::store_path),
+    ("RestoPath", paths::resto_path),
+    ("ClearPath", paths::clear_path),
     ("PathResolution", motion::setting),
     ("CirPathMode", motion::setting),
     ("WorldAccLim", motion::setting),
@@ -290,7 +292,7 @@ const FUNCTIONS: &[(&str, FuncFn)] = &[
     ("RobOS", data::rob_os),
     ("OpMode", data::op_mode),
     ("RunMode", data::run_mode),
-    ("IsStopMoveAct", data::is_stop_move_act),
+    ("IsStopMoveAct", paths::is_stop_move_act),
     ("UIMessageBox", pendant::ui_message_box),
     ("UINumEntry", pendant::ui_num_entry),
     ("UIDnumEntry", pendant::ui_num_entry),

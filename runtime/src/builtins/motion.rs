@@ -451,8 +451,10 @@ pub(crate) fn do_move_at(
         cx.sh.moves.push(m);
     }
     if end > cx.now() && !conc {
-        return Ok(Done::Wait(Box::new(Wait::until(
-            end,
+        let level = cx.sh.paths.get(index).map_or(0, |p| p.level);
+        return Ok(Done::Wait(Box::new(Wait::motion(
+            index,
+            level,
             format!("{} (the robot moves)", a.name),
         ))));
     }
@@ -529,12 +531,14 @@ pub(crate) fn move_abs_j(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
 
 /// `WaitRob [\InPos] | [\ZeroSpeed]`: until the robot stands still.
 pub(crate) fn wait_rob(cx: &mut Cx<'_>, _: &mut Args) -> R<Done> {
-    let end = motion_end(cx);
-    if end <= cx.now() {
+    let index = cx.m.number.saturating_sub(1);
+    let path = cx.sh.paths.get(index).copied().unwrap_or_default();
+    if motion_end(cx) <= cx.now() && !path.holds(path.level) {
         return Ok(Done::Next);
     }
-    Ok(Done::Wait(Box::new(Wait::until(
-        end,
+    Ok(Done::Wait(Box::new(Wait::motion(
+        index,
+        path.level,
         "WaitRob (the robot moves)".to_owned(),
     ))))
 }
@@ -556,12 +560,14 @@ pub(crate) fn conf(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     Ok(Done::Next)
 }
 
-/// `CRobT([\TaskRef] | [\TaskName] [\Tool] [\WObj])`.
+/// `CRobT([\TaskRef] | [\TaskName] [\Tool] [\WObj])`: where the TCP is
+/// now, during a move too.
 pub(crate) fn c_rob_t(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
     let index = cx.robot_index(a)?;
     let tool = cx.tool(a, "Tool")?;
     let wobj = cx.wobj(a)?;
-    let t = cx.ask_robot(a, index, |robot| robot.robtarget(&tool, &wobj))?;
+    let now = cx.now();
+    let t = cx.ask_robot(a, index, |robot| robot.robtarget_at(&tool, &wobj, now))?;
     robtarget_value(&t)
 }
 
@@ -675,7 +681,8 @@ fn active_name(cx: &Cx<'_>, which: usize, default: &str) -> String {
 /// `CJointT([\TaskRef] | [\TaskName])`.
 pub(crate) fn c_joint_t(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
     let index = cx.robot_index(a)?;
-    let j = cx.ask_robot(a, index, |robot| robot.joints())?;
+    let now = cx.now();
+    let j = cx.ask_robot(a, index, |robot| robot.joints_at(now))?;
     Ok(jointtarget_value(&j))
 }
 

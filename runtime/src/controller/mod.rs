@@ -78,6 +78,9 @@ pub(crate) struct Shared {
     pub robots: Vec<Option<Box<dyn Robot>>>,
     /// When each task's robot ends its last move.
     pub motion_until: Vec<f64>,
+    /// Each task's robot's path: its level (`StorePath` raises it) and
+    /// what `StopMove` stopped.
+    pub(crate) paths: Vec<crate::machine::PathState>,
     pub moves: Vec<Move>,
     /// The moves made, traced or not.
     pub move_count: u64,
@@ -265,6 +268,7 @@ impl Controller {
                 output: world.output,
                 robots: Vec::new(),
                 motion_until: Vec::new(),
+                paths: Vec::new(),
                 moves: Vec::new(),
                 move_count: 0,
                 routine_times: Vec::new(),
@@ -287,6 +291,7 @@ impl Controller {
         self.sh.names.push(spec.name.clone());
         self.sh.robots.push(spec.robot);
         self.sh.motion_until.push(0.0);
+        self.sh.paths.push(crate::machine::PathState::default());
         let m = Machine::new(spec.program, spec.name, index + 1, &mut self.sh);
         self.tasks.push(m);
         self.meta.push(Meta {
@@ -509,7 +514,7 @@ impl Controller {
             let timer = t.interrupts.next_due();
             real = earlier(real, timer);
             any = earlier(any, timer);
-            let wake = t.wake_time();
+            let wake = t.wake_time(&self.sh);
             if t.waits_on_time(&self.sh) {
                 real = earlier(real, wake);
             }

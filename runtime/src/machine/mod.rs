@@ -23,7 +23,9 @@ use crate::program::{Location, Program};
 
 pub(crate) use data::{Place, Root, describe, is_signal};
 pub(crate) use fault::{Fault, FaultKind, R, fault, invalid, named_error, rapid_error};
-pub(crate) use wait::{OperatorWait, SearchWait, SignalTest, Timeout, Wait, WaitKind};
+pub(crate) use wait::{
+    OperatorWait, PathState, SearchWait, SignalTest, Stopped, Timeout, Wait, WaitKind,
+};
 
 /// How a task's run ended.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -20,7 +20,43 @@ pub(crate) struct Wait {
     pub what: String,
 }
 
+/// A robot's path: how many `StorePath` deep its moves are made, and the
+/// move `StopMove` stopped.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct PathState {
+    pub level: u32,
+    pub stopped: Option<Stopped>,
+}
+
+/// A move stopped by `StopMove`: the path level it was made on, and the
+/// seconds of it left (0 when none was under way, or after `ClearPath`).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Stopped {
+    pub level: u32,
+    pub left: f64,
+}
+
+impl PathState {
+    /// Do the moves of path level `level` stand (stopped, not started
+    /// again)?
+    pub(crate) fn holds(&self, level: u32) -> bool {
+        self.stopped.is_some_and(|s| s.level == level)
+    }
+}
+
 impl Wait {
+    /// Until the task's robot `robot` ends the moves of path level
+    /// `level` (a move, `WaitRob`): while `StopMove` holds them, the wait
+    /// goes on.
+    pub(crate) fn motion(robot: usize, level: u32, what: String) -> Wait {
+        Wait {
+            kind: WaitKind::Move { robot, level },
+            deadline: None,
+            on_timeout: Timeout::Error("ERR_WAIT_MAXTIME", String::new()),
+            what,
+        }
+    }
+
     /// Until the clock reaches `until` (no deadline of its own).
     pub(crate) fn until(until: f64, what: String) -> Wait {
         Wait {
@@ -37,6 +73,9 @@ pub(crate) enum WaitKind {
     /// Until the clock reaches this time (`WaitTime`, a move that takes
     /// time).
     Time(f64),
+    /// Until the robot (its entry in [`Shared::motion_until`]) ends its
+    /// moves of path level `level`, unless `StopMove` holds them.
+    Move { robot: usize, level: u32 },
     /// Until the signal compares with the value as asked.
     Signal { name: String, test: SignalTest },
     /// A `WaitUntil` condition is checked again at this time (from
@@ -181,6 +220,15 @@ pub(crate) enum Timeout {
     Flag(Place),
 }
 
+/// When the moves of path level `level` of robot `robot` end: never while
+/// `StopMove` holds them.
+fn motion_end(sh: &Shared, robot: usize, level: u32) -> f64 {
+    if sh.paths.get(robot).is_some_and(|p| p.holds(level)) {
+        return f64::INFINITY;
+    }
+    sh.motion_until.get(robot).copied().unwrap_or(0.0)
+}
+
 /// Where a blocked task stands.
 pub(crate) enum Blocked {
     /// It waits.
@@ -199,6 +247,7 @@ impl Machine {
         let now = sh.clock;
         let done = match &w.kind {
             WaitKind::Time(t) => now >= *t,
+            WaitKind::Move { robot, level } => motion_end(sh, *robot, *level) <= now,
             WaitKind::Signal { name, test } => sh.io.read(name).is_some_and(|v| test.holds(v)),
             WaitKind::Poll { next, .. } => now >= *next,
             WaitKind::Sync { key, round, .. } => sh.sync.released(key, *round),
@@ -393,6 +442,9 @@ impl Machine {
         match self.frames.last().and_then(|f| f.wait.as_ref()) {
             Some(w) => match &w.kind {
                 WaitKind::Time(_) | WaitKind::InPos { .. } => true,
+                WaitKind::Move { robot, level } => {
+                    motion_end(sh, *robot, *level).is_finite() || w.deadline.is_some()
+                }
                 WaitKind::Poll { clock, steps, .. } => {
                     *clock || w.deadline.is_some() || *steps != sh.steps
                 }
@@ -405,10 +457,13 @@ impl Machine {
 
     /// When the task's wait should be looked at again: the end of a
     /// `WaitTime` or a move, the next poll, a deadline.
-    pub(crate) fn wake_time(&self) -> Option<f64> {
+    pub(crate) fn wake_time(&self, sh: &Shared) -> Option<f64> {
         let w = self.frames.last()?.wait.as_ref()?;
         let own = match &w.kind {
             WaitKind::Time(t) | WaitKind::InPos { at: t, .. } => Some(*t),
+            WaitKind::Move { robot, level } => {
+                Some(motion_end(sh, *robot, *level)).filter(|t| t.is_finite())
+            }
             WaitKind::Poll { next, .. } => Some(*next),
             WaitKind::Operator(o) => o.at,
             _ => None,

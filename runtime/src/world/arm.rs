@@ -32,6 +32,15 @@ pub struct ArmRobot {
     at_rest: bool,
     /// When the last move ends (simulated seconds).
     until: f64,
+    /// Where and when the last move started: between then and `until`
+    /// the arm is taken to go from `from` to `joints` evenly in time.
+    from: Joints,
+    start: f64,
+    /// The last move's TCP in the flange's frame when it went straight
+    /// (`MoveL`): then the TCP is taken along the line between the ends.
+    straight: Option<Isometry3<f64>>,
+    /// The end of a move `StopMove` interrupted, kept for `StartMove`.
+    paused: Option<(Joints, [f64; 6])>,
     /// `ConfJ\On`, `ConfL\On` (the controller's defaults).
     conf_j: bool,
     conf_l: bool,
@@ -46,9 +55,35 @@ impl ArmRobot {
             extax: [9e9; 6],
             at_rest: true,
             until: 0.0,
+            from: [0.0; 6],
+            start: 0.0,
+            straight: None,
+            paused: None,
             conf_j: true,
             conf_l: true,
         }
+    }
+
+    /// The joints at time `at`: during a move, between where it started
+    /// and where it ends in proportion to the time gone (not along the
+    /// speed profile): a `MoveL`'s TCP on the line between its ends, other
+    /// moves joint by joint.
+    fn joints_then(&self, at: f64) -> Joints {
+        let span = self.until - self.start;
+        if at >= self.until || span <= 0.0 {
+            return self.joints;
+        }
+        let f = ((at - self.start) / span).clamp(0.0, 1.0);
+        let evenly: Joints =
+            std::array::from_fn(|i| self.from[i] + f * (self.joints[i] - self.from[i]));
+        let on_line = self.straight.and_then(|tcp| {
+            let a = self.robot.forward(&self.from)? * tcp;
+            let b = self.robot.forward(&self.joints)? * tcp;
+            let tcp_then = a.lerp_slerp(&b, f);
+            let flange = tcp_then * tcp.inverse();
+            self.robot.reach_near(&flange, None, &evenly).ok()
+        });
+        on_line.map_or(evenly, |s| s.joints)
     }
 
     /// The model, limits and base frame.
@@ -115,6 +150,7 @@ impl Robot for ArmRobot {
     }
 
     fn stop_at(&mut self, joints: &JointTarget, at: f64) {
+        self.from = joints.robax;
         self.joints = joints.robax;
         self.at_rest = true;
         self.until = self.until.min(at);
@@ -232,6 +268,13 @@ impl Robot for ArmRobot {
             }
         };
         let seconds = request.time.unwrap_or(seconds).max(0.0);
+        self.straight = match (&request.to, request.kind) {
+            (MoveTarget::Cartesian(_), MoveKind::Linear) if tool.robhold => Some(tool.tframe),
+            (MoveTarget::Cartesian(_), MoveKind::Linear) => Some(Isometry3::identity()),
+            _ => None,
+        };
+        self.from = self.joints;
+        self.start = request.at;
         self.joints = joints;
         self.extax = extax;
         self.at_rest = request.zone.finep;
@@ -309,6 +352,45 @@ impl Robot for ArmRobot {
             ],
             extax: joints.extax,
         })
+    }
+
+    fn joints_at(&self, at: f64) -> Result<JointTarget, RobotError> {
+        Ok(JointTarget {
+            robax: self.joints_then(at),
+            extax: self.extax,
+        })
+    }
+
+    fn robtarget_at(&self, tool: &Tool, wobj: &WObj, at: f64) -> Result<RobTarget, RobotError> {
+        self.calc_robtarget(&self.joints_at(at)?, tool, wobj)
+    }
+
+    fn pause(&mut self, at: f64) -> Option<f64> {
+        if at >= self.until || self.paused.is_some() {
+            return None;
+        }
+        let left = self.until - at;
+        self.paused = Some((self.joints, self.extax));
+        self.joints = self.joints_then(at);
+        self.from = self.joints;
+        self.start = at;
+        self.until = at;
+        self.at_rest = true;
+        Some(left)
+    }
+
+    fn resume(&mut self, at: f64, seconds: f64, keep: bool) {
+        let Some((joints, extax)) = self.paused.take() else {
+            return;
+        };
+        if !keep {
+            return;
+        }
+        self.from = self.joints;
+        self.start = at;
+        self.joints = joints;
+        self.extax = extax;
+        self.until = at + seconds.max(0.0);
     }
 
     fn set_conf(&mut self, linear: bool, on: bool) {

@@ -316,6 +316,35 @@ pub trait Robot: Send {
         let _ = (joints, at);
     }
 
+    /// The joints at time `at`, during a move too (`CJointT` while the
+    /// robot moves); by default where the last move ends.
+    fn joints_at(&self, at: f64) -> Result<JointTarget, RobotError> {
+        let _ = at;
+        self.joints()
+    }
+
+    /// Where the TCP of `tool` is at time `at`, in `wobj` (`CRobT`, `CPos`
+    /// while the robot moves); by default where the last move ends.
+    fn robtarget_at(&self, tool: &Tool, wobj: &WObj, at: f64) -> Result<RobTarget, RobotError> {
+        let _ = at;
+        self.robtarget(tool, wobj)
+    }
+
+    /// `StopMove` at time `at`: the arm stands where it is then and keeps
+    /// the rest of its move; the seconds of it left (`None`: no move was
+    /// under way, or moves take no time).
+    fn pause(&mut self, at: f64) -> Option<f64> {
+        let _ = at;
+        None
+    }
+
+    /// `StartMove` at time `at`: the kept rest of the move goes on from
+    /// where the arm is, for `seconds`; `ClearPath` (`keep` false) drops
+    /// it, and the arm stays where it stands.
+    fn resume(&mut self, at: f64, seconds: f64, keep: bool) {
+        let _ = (at, seconds, keep);
+    }
+
     /// The working range of each axis, degrees (`[lower, upper]`), when
     /// the arm is modelled.
     fn joint_limits(&self) -> Option<[[f64; 2]; 6]> {
