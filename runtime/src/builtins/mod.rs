@@ -45,6 +45,9 @@ pub(crate) enum Done {
     Wait(Box<Wait>),
     /// Call the procedure of the program without arguments (`CallByVar`).
     Call(u32),
+    /// Run the statement that raised the error again, as `RETRY` does
+    /// (`StartMoveRetry`).
+    Retry,
 }
 
 /// A built-in's view of the machine and the controller.
@@ -191,6 +194,7 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("StopMove", paths::stop_move),
     ("StartMove", paths::start_move),
     ("StopMoveReset", paths::start_move),
+    ("StartMoveRetry", paths::start_move_retry),
     ("StorePath", paths::store_path),
     ("RestoPath", paths::resto_path),
     ("ClearPath", paths::clear_path),

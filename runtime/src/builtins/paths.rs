@@ -3,7 +3,8 @@
 //! lets it go on for the time it had left, `StorePath`/`RestoPath` open
 //! and close a path level on which a trap or an error handler moves the
 //! arm meanwhile, `ClearPath` drops the stopped move (the arm stays where
-//! it stands), `IsStopMoveAct` tells whether a stop holds.
+//! it stands), `StartMoveRetry` starts it and retries the statement that
+//! raised the error, `IsStopMoveAct` tells whether a stop holds.
 //!
 //! Simulated as time: a stop comes at once (no braking distance, `\Quick`
 //! or not), and a resumed move goes from where the arm is to its end in
@@ -74,6 +75,13 @@ pub(crate) fn start_move(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
         }
     }
     Ok(Done::Next)
+}
+
+/// `StartMoveRetry`: `StartMove` and `RETRY` in one (in an error
+/// handler).
+pub(crate) fn start_move_retry(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    start_move(cx, a)?;
+    Ok(Done::Retry)
 }
 
 /// `StorePath [\KeepSync]`: moves are made on a new path level.

@@ -407,6 +407,10 @@ impl Machine {
                                     self.call(sh, routine, &[])?;
                                     reload!();
                                 }
+                                crate::builtins::Done::Retry => {
+                                    self.retry(sh.limits.max_retries)?;
+                                    reload!();
+                                }
                             }
                         }
                     }

@@ -7,12 +7,14 @@ MODULE stop_move_in_a_trap
   ! and StartMove lets the stopped move go on for the 0.76 s it had left:
   ! the move ends after 1.25 + 0.52 + 0.76 = 2.53 s. A second stop is
   ! dropped with ClearPath: the arm stays where it stopped (0.5 s into
-  ! the move back, y 150) and the move ends there.
+  ! the move back, y 150) and the move ends there. An error handler's
+  ! StartMoveRetry retries the statement that raised the error.
   !robot IRB 1600-10/1.45
   CONST robtarget p0 := [[600,0,400],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
   VAR intnum pause;
   VAR clock c;
   VAR bool drop := FALSE;
+  VAR num tries := 0;
 
   PROC main()
     ConfL \Off;
@@ -29,6 +31,14 @@ MODULE stop_move_in_a_trap
     MoveL p0, v100, fine, tool0;
     TPWrite "second move ends after "\Num:=Round(ClkRead(c) \Dec:=2);
     TPWrite "at y "\Num:=Round(CPos().y);
+    WaitDI diGo, 1 \MaxTime:=0.2;
+    TPWrite "retried "\Num:=tries;
+  ERROR
+    IF ERRNO = ERR_WAIT_MAXTIME AND tries < 2 THEN
+      Incr tries;
+      StartMoveRetry;
+    ENDIF
+    TRYNEXT;
   ENDPROC
 
   TRAP tPause
@@ -57,3 +67,4 @@ ENDMODULE
 !> stopped at y 150
 !> second move ends after 0.5
 !> at y 150
+!> retried 2
