@@ -23,6 +23,9 @@ pub(crate) struct Interrupts {
     /// The event log entry each `IError` interrupt was raised for (its
     /// index in [`crate::controller::Shared::event_log`]).
     error_entries: HashMap<i32, usize>,
+    /// `IRMQMessage`: the data type (folded) whose messages raise each
+    /// interrupt.
+    pub rmq: Vec<(String, i32)>,
 }
 
 /// An entry of the controller's event log: its domain (`USER_DEF_ERR`,
@@ -177,6 +180,7 @@ impl Interrupts {
         self.watches.retain(|w| w.id != id);
         self.pers.retain(|w| w.id != id);
         self.errors.retain(|w| w.id != id);
+        self.rmq.retain(|(_, i)| *i != id);
         self.pending.retain(|p| *p != id);
     }
 
@@ -259,7 +263,7 @@ impl Interrupts {
         }
     }
 
-    fn raise(&mut self, id: i32) {
+    pub(crate) fn raise(&mut self, id: i32) {
         if !self.sleeping.contains(&id) && self.traps.contains_key(&id) {
             self.pending.push_back(id);
         }

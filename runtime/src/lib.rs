@@ -52,6 +52,7 @@ mod debug;
 mod interrupts;
 mod machine;
 mod program;
+mod rmq;
 pub mod world;
 
 use std::path::PathBuf;

@@ -21,6 +21,7 @@ pub(crate) mod output;
 pub(crate) mod paths;
 pub(crate) mod pendant;
 pub(crate) mod rawbytes;
+pub(crate) mod rmq;
 pub(crate) mod save;
 pub(crate) mod search;
 pub(crate) mod settings;
@@ -194,6 +195,15 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("StopMove", paths::stop_move),
     ("StartMove", paths::start_move),
     ("StopMoveReset", paths::start_move),
+    ("RMQFindSlot", rmq::find_slot),
+    ("RMQSendMessage", rmq::send_message),
+    ("RMQSendWait", rmq::send_wait),
+    ("RMQReadWait", rmq::read_wait),
+    ("IRMQMessage", rmq::irmq_message),
+    ("RMQGetMessage", rmq::get_message),
+    ("RMQGetMsgHeader", rmq::get_msg_header),
+    ("RMQGetMsgData", rmq::get_msg_data),
+    ("RMQEmptyQueue", rmq::empty_queue),
     ("StartMoveRetry", paths::start_move_retry),
     ("StorePath", paths::store_path),
     ("RestoPath", paths::resto_path),
@@ -306,6 +316,7 @@ const FUNCTIONS: &[(&str, FuncFn)] = &[
     ("UIListView", pendant::ui_list_view),
     ("UIClientExist", pendant::ui_client_exist),
     ("SocketGetStatus", sockets::socket_get_status),
+    ("RMQGetSlotName", rmq::get_slot_name),
     ("SocketPeek", sockets::socket_peek),
     ("GetNextSym", symbols::get_next_sym),
     ("ModExist", modules::mod_exist),

@@ -81,6 +81,8 @@ pub(crate) struct Shared {
     /// Each task's robot's path: its level (`StorePath` raises it) and
     /// what `StopMove` stopped.
     pub(crate) paths: Vec<crate::machine::PathState>,
+    /// The tasks' message queues (RAPID Message Queue).
+    pub(crate) rmq: crate::rmq::Queues,
     pub moves: Vec<Move>,
     /// The moves made, traced or not.
     pub move_count: u64,
@@ -269,6 +271,7 @@ impl Controller {
                 robots: Vec::new(),
                 motion_until: Vec::new(),
                 paths: Vec::new(),
+                rmq: Default::default(),
                 moves: Vec::new(),
                 move_count: 0,
                 routine_times: Vec::new(),
@@ -292,6 +295,7 @@ impl Controller {
         self.sh.robots.push(spec.robot);
         self.sh.motion_until.push(0.0);
         self.sh.paths.push(crate::machine::PathState::default());
+        self.sh.rmq.add_task();
         let m = Machine::new(spec.program, spec.name, index + 1, &mut self.sh);
         self.tasks.push(m);
         self.meta.push(Meta {

@@ -306,7 +306,7 @@ impl Machine {
     }
 
     /// Is an interrupt waiting for its trap routine, and may it run now?
-    pub(crate) fn interrupt_due(&mut self, sh: &Shared) -> bool {
+    pub(crate) fn interrupt_due(&mut self, sh: &mut Shared) -> bool {
         if self.events_seen < sh.events.len() {
             let new: Vec<(String, f64)> = sh.events[self.events_seen..].to_vec();
             self.events_seen = sh.events.len();
@@ -333,7 +333,28 @@ impl Machine {
                 .collect();
             self.interrupts.pers_changed(&changed);
         }
+        if !self.interrupts.rmq.is_empty() {
+            self.receive_messages(sh);
+        }
         self.interrupts.has_pending() && !self.interrupts.disabled && !self.in_trap()
+    }
+
+    /// `IRMQMessage`: each message of a subscribed type leaves the task's
+    /// queue and raises its interrupt (in order), for `RMQGetMessage`.
+    fn receive_messages(&mut self, sh: &mut Shared) {
+        let own = self.number.saturating_sub(1);
+        let subscribed = |m: &crate::rmq::Message, subs: &[(String, i32)]| {
+            let ty = rapid_analyzer::names::fold(&m.datatype);
+            subs.iter().find(|(t, _)| *t == ty).map(|(_, id)| *id)
+        };
+        let subs = self.interrupts.rmq.clone();
+        while let Some(handle) = sh.rmq.take(own, |m| subscribed(m, &subs).is_some()) {
+            let Some(id) = sh.rmq.get(handle).and_then(|m| subscribed(m, &subs)) else {
+                continue;
+            };
+            self.rmq_received.push_back(handle);
+            self.interrupts.raise(id);
+        }
     }
 
     /// `%name% args;` and `CallByVar`: the procedure `name` names, called

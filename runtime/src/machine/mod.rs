@@ -244,6 +244,9 @@ pub struct Machine {
     pub(crate) events_seen: usize,
     /// The event log entries this task's interrupts have seen.
     pub(crate) log_seen: usize,
+    /// Messages of the task's queue an `IRMQMessage` interrupt took, for
+    /// `RMQGetMessage` in its trap routine.
+    pub(crate) rmq_received: std::collections::VecDeque<u32>,
     /// In synchronized movement (`SyncMoveOn`).
     pub(crate) sync_move: Option<Vec<String>>,
     /// A fault a debugger was shown before it ends the task.
@@ -326,6 +329,7 @@ impl Machine {
             state: TaskState::Idle,
             events_seen: shared.events.len(),
             log_seen: shared.event_log.len(),
+            rmq_received: Default::default(),
             sync_move: None,
             pending: None,
             evaluated: None,

@@ -120,7 +120,8 @@ impl Machine {
                         let may_interrupt = self.events_seen < sh.events.len()
                             || self.log_seen < sh.event_log.len()
                             || self.interrupts.has_pending()
-                            || !self.interrupts.pers.is_empty();
+                            || !self.interrupts.pers.is_empty()
+                            || !self.interrupts.rmq.is_empty();
                         if may_interrupt && self.interrupt_due(sh) {
                             pc -= 1;
                             save!();

@@ -116,6 +116,10 @@ pub(crate) enum WaitKind {
     /// A search move (`SearchL`...) until its signal does as asked (then
     /// the hit is stored), or the move's end (the wait's deadline).
     Search(Box<SearchWait>),
+    /// Until the task's message queue holds a message (of the data type
+    /// `wanted`, folded, when given), which is then stored at the place
+    /// (`RMQReadWait`, `RMQSendWait`).
+    Message { to: Place, wanted: Option<String> },
 }
 
 /// A search move under way.
@@ -220,6 +224,11 @@ pub(crate) enum Timeout {
     Flag(Place),
 }
 
+/// Does a message of the type `wanted` (folded; any when `None`) come?
+fn accepts(wanted: Option<&str>, m: &crate::rmq::Message) -> bool {
+    wanted.is_none_or(|w| rapid_analyzer::names::fold(&m.datatype) == w)
+}
+
 /// When the moves of path level `level` of robot `robot` end: never while
 /// `StopMove` holds them.
 fn motion_end(sh: &Shared, robot: usize, level: u32) -> f64 {
@@ -279,6 +288,10 @@ impl Machine {
                 }
             }
             WaitKind::Never => false,
+            WaitKind::Message { wanted, .. } => {
+                let own = self.number.saturating_sub(1);
+                sh.rmq.has(own, |m| accepts(wanted.as_deref(), m))
+            }
             WaitKind::Search(search) => sh
                 .io
                 .read(&search.signal)
@@ -353,6 +366,12 @@ impl Machine {
                 }
             }
             WaitKind::Semaphore(p) => self.store(sh, p, Value::Bool(true))?,
+            WaitKind::Message { to, wanted } => {
+                let own = self.number.saturating_sub(1);
+                if let Some(h) = sh.rmq.take(own, |m| accepts(wanted.as_deref(), m)) {
+                    self.store(sh, to, crate::rmq::message_value(h))?;
+                }
+            }
             WaitKind::Search(search) => {
                 let now = sh.clock;
                 self.store(sh, &search.point, search.hit_at(now))?;
