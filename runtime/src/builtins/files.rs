@@ -326,6 +326,20 @@ pub(crate) fn read_bin(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
     }))
 }
 
+/// `ReadStrBin(IODevice, NoOfChars [\Time])`: the next `NoOfChars`
+/// bytes as text (fewer at the end of the file; `EOF` when none is left).
+pub(crate) fn read_str_bin(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    let n = cx.num(a, "NoOfChars")?.clamp(0.0, 80.0) as usize;
+    let f = readable(cx, a)?;
+    if f.pos >= f.data.len() {
+        return Ok(Value::Str("EOF".to_owned()));
+    }
+    let end = (f.pos + n).min(f.data.len());
+    let text: String = f.data[f.pos..end].iter().map(|&b| char::from(b)).collect();
+    f.pos = end;
+    Ok(Value::Str(text))
+}
+
 /// `IsFile(Path [\Directory] | [\RegFile] ...)`.
 pub(crate) fn is_file(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
     let name = cx.string(a, "Path")?;

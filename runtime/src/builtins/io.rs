@@ -498,7 +498,8 @@ pub(crate) fn io_unit_state(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
     }
 }
 
-/// `IOEnable UnitName, MaxTime`: the I/O device runs again (at once).
+/// `IOEnable UnitName, MaxTime` (`IOActivate`): the I/O device runs again
+/// (at once).
 pub(crate) fn io_enable(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     let unit = cx.string(a, "UnitName")?.to_ascii_lowercase();
     cx.num(a, "MaxTime")?;
@@ -506,7 +507,7 @@ pub(crate) fn io_enable(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     Ok(Done::Next)
 }
 
-/// `IODisable UnitName, MaxTime`: the I/O device stops (at once);
+/// `IODisable UnitName, MaxTime` (`IODeactivate`): the I/O device stops (at once);
 /// `IOUnitState` reports it disabled until `IOEnable`. Its signals keep
 /// their values.
 pub(crate) fn io_disable(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {

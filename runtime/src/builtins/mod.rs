@@ -140,6 +140,8 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("AliasIO", io::alias_io),
     ("IOEnable", io::io_enable),
     ("IODisable", io::io_disable),
+    ("IOActivate", io::io_enable),
+    ("IODeactivate", io::io_disable),
     ("AliasIOReset", io::alias_io_reset),
     ("ISignalDI", io::i_signal),
     ("ISignalDO", io::i_signal),
@@ -165,6 +167,12 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("MoveLDO", motion::move_do),
     ("MoveJDO", motion::move_do),
     ("MoveCDO", motion::move_do),
+    ("MoveLAO", motion::move_do),
+    ("MoveJAO", motion::move_do),
+    ("MoveCAO", motion::move_do),
+    ("MoveLGO", motion::move_do),
+    ("MoveJGO", motion::move_do),
+    ("MoveCGO", motion::move_do),
     ("SearchL", search::search),
     ("SearchJ", search::search),
     ("SearchC", search::search),
@@ -208,7 +216,12 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("StorePath", paths::store_path),
     ("RestoPath", paths::resto_path),
     ("ClearPath", paths::clear_path),
-    ("PathResolution", motion::setting),
+    ("PathResol", motion::setting),
+    ("MechUnitLoad", motion::setting),
+    ("ActEventBuffer", motion::setting),
+    ("DeactEventBuffer", motion::setting),
+    ("SpyStart", motion::setting),
+    ("SpyStop", motion::setting),
     ("CirPathMode", motion::setting),
     ("WorldAccLim", motion::setting),
     ("PathAccLim", motion::setting),
@@ -361,6 +374,7 @@ const FUNCTIONS: &[(&str, FuncFn)] = &[
     ("ReadStr", files::read_str),
     ("ReadNum", files::read_num),
     ("ReadBin", files::read_bin),
+    ("ReadStrBin", files::read_str_bin),
     ("IsFile", files::is_file),
     ("ReadDir", files::read_dir),
     ("GetTaskName", tasks::get_task_name),
@@ -605,5 +619,29 @@ impl Machine {
                     .map(|s| s.name.clone())
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use rapid_analyzer::catalogue::base;
+
+    /// A built-in registered under a name the catalogue does not know is
+    /// never called (a program's call binds to the catalogue's name).
+    #[test]
+    fn every_builtin_is_a_catalogue_routine() {
+        let cat = base();
+        let unknown: Vec<&str> = super::INSTRUCTIONS
+            .iter()
+            .map(|(n, _)| *n)
+            .filter(|n| cat.instruction(n).is_none())
+            .chain(
+                super::FUNCTIONS
+                    .iter()
+                    .map(|(n, _)| *n)
+                    .filter(|n| cat.function(n).is_none()),
+            )
+            .collect();
+        assert!(unknown.is_empty(), "{unknown:?}");
     }
 }

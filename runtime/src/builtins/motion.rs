@@ -513,7 +513,8 @@ pub(crate) fn move_to_point(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     do_move(cx, a, "ToPoint")
 }
 
-/// `MoveLDO`, `MoveJDO`, `MoveCDO`: the move, then the signal set.
+/// `MoveLDO`, `MoveJDO`, `MoveCDO` (and the `AO`, `GO` ones): the move,
+/// then the signal set.
 pub(crate) fn move_do(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     let done = do_move(cx, a, "ToPoint")?;
     let s = cx.req(a, "Signal")?;

@@ -1,6 +1,6 @@
 MODULE files
   ! Files in the sandbox folder: write, read back, end of file, copy,
-  ! rename, errors.
+  ! rename, errors, bytes read as text (ReadStrBin).
   PROC main()
     VAR iodev f;
     VAR string line;
@@ -31,6 +31,9 @@ MODULE files
     Open "HOME:/copy.txt", f\Read;
     TPWrite "copy: " + ReadStr(f);
     Close f;
+    Open "HOME:/copy.txt", f\Read \Bin;
+    TPWrite "bytes: " + ReadStrBin(f, 5) + "|" + ReadStrBin(f, 5);
+    Close f;
     copy_onto_existing;
     Open "HOME:/missing.txt", f\Read;
     TPWrite "not reached";
@@ -57,5 +60,6 @@ ENDMODULE
 !> renamed: log FALSE
 !> renamed: old TRUE
 !> copy: first line
+!> bytes: first| line
 !> the new path exists TRUE
 !> cannot open the missing file

@@ -1,5 +1,6 @@
 MODULE io_units_log
-  ! I/O devices (IOUnitState, IODisable, IOEnable, ValidIO), a group
+  ! I/O devices (IOUnitState, IODisable, IOEnable, IODeactivate,
+  ! IOActivate, ValidIO), a group
   ! output read as a dnum (GOutputDnum), the event
   ! log's text-table messages (ErrLog, ErrRaise, SkipWarn, the SmartGripper
   ! driver's EventLog), StrFormat and
@@ -19,6 +20,10 @@ MODULE io_units_log
     TPWrite "physical "\Num:=IOUnitState("d651" \Phys);
     IOEnable "d651", 5;
     TPWrite "enabled again "\Bool:=IOUnitState("d651") = IOUNIT_RUNNING;
+    IODeactivate "d651", 1;
+    TPWrite "deactivated "\Bool:=IOUnitState("d651") = IOUNIT_DISABLE;
+    IOActivate "d651", 5;
+    TPWrite "activated "\Bool:=IOUnitState("d651") = IOUNIT_RUNNING;
     SetDO do1, 1;
     TPWrite "valid do1 "\Bool:=ValidIO(do1);
     TPWrite "valid alias "\Bool:=ValidIO(do_alias);
@@ -59,6 +64,8 @@ ENDMODULE
 !> logic 10
 !> physical 20
 !> enabled again TRUE
+!> deactivated TRUE
+!> activated TRUE
 !> valid do1 TRUE
 !> valid alias FALSE
 !> group as dnum 4000000000
@@ -71,4 +78,4 @@ ENDMODULE
 !> retries left 2
 !> ErrRaise ERR_GRIPPER 4802: Gripper lost
 !> raised TRUE
-!> [SkipWarn at io_units_log.mod:36] the handled error's warning is not logged
+!> [SkipWarn at io_units_log.mod:41] the handled error's warning is not logged
