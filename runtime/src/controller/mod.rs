@@ -574,6 +574,8 @@ impl Controller {
         let others = if lone {
             let hint = if self.tasks[0].waits_on_signals() {
                 " (script a signal change with --set NAME=VALUE@SECONDS)"
+            } else if self.tasks[0].waits_on_held_move(&self.sh) {
+                " (StopMove holds the robot, and no StartMove comes)"
             } else {
                 ""
             };

@@ -70,8 +70,8 @@ impl Wait {
 
 #[derive(Clone, Debug)]
 pub(crate) enum WaitKind {
-    /// Until the clock reaches this time (`WaitTime`, a move that takes
-    /// time).
+    /// Until the clock reaches this time (`WaitTime`, the rest of a
+    /// flying search's move).
     Time(f64),
     /// Until the robot (its entry in [`Shared::motion_until`]) ends its
     /// moves of path level `level`, unless `StopMove` holds them.
@@ -508,6 +508,19 @@ impl Machine {
             .last()
             .and_then(|f| f.wait.as_ref())
             .is_some_and(|w| matches!(w.kind, WaitKind::Signal { .. } | WaitKind::Poll { .. }))
+    }
+
+    /// Does the task wait for a move `StopMove` holds?
+    pub(crate) fn waits_on_held_move(&self, sh: &Shared) -> bool {
+        self.frames
+            .last()
+            .and_then(|f| f.wait.as_ref())
+            .is_some_and(|w| match w.kind {
+                WaitKind::Move { robot, level } => {
+                    sh.paths.get(robot).is_some_and(|p| p.holds(level))
+                }
+                _ => false,
+            })
     }
 
     /// The deadlock of this task: it waits, and nothing can end the wait.
