@@ -216,3 +216,50 @@ ENDMODULE
         }
     }
 }
+
+/// A move `StopMove` holds is two records in the trace: up to where the
+/// arm stopped (1.25 s into 200 mm at v100 on an IRB 1600, 2.01 s: y
+/// 124.4 by hand), then the rest, after the trap's own moves, to the
+/// target; a move dropped with `ClearPath` ends where it stopped.
+#[test]
+fn a_stopped_move_is_split_in_the_trace() {
+    let dir = scratch("run-robot-stop-move");
+    let program = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../runtime/tests/programs/stop_move_in_a_trap.mod"),
+    )
+    .expect("the fixture");
+    write(&dir, &[("Stop.mod", &program)]);
+    let (code, _, err) = run(
+        &dir,
+        &[
+            "run",
+            "Stop.mod",
+            "--robot",
+            "IRB 1600-10/1.45",
+            "--trace",
+            "t.json",
+        ],
+    );
+    assert_eq!(code, Some(0), "{err}");
+    let trace: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("t.json")).expect("a trace"))
+            .expect("JSON");
+    let moves = trace["moves"].as_array().expect("moves");
+    let rows: Vec<(f64, f64, f64)> = moves
+        .iter()
+        .map(|m| {
+            let t = |k: &str| (m[k].as_f64().expect("seconds") * 1000.0).round() / 1000.0;
+            (t("start"), t("end"), m["pos"][1].as_f64().expect("y"))
+        })
+        .collect();
+    let y: Vec<i64> = rows.iter().map(|r| (r.2 * 10.0).round() as i64).collect();
+    // MoveJ; MoveL stopped at 124.4; 25 mm up and back; the rest to 200;
+    // the move back stopped at 150.2 and dropped.
+    assert_eq!(y, [0, 1244, 1244, 1244, 2000, 1502], "{rows:?}");
+    for pair in rows.windows(2) {
+        assert!(pair[0].1 <= pair[1].0 + 1e-9, "moves overlap: {rows:?}");
+    }
+    assert!((rows[1].1 - rows[1].0 - 1.25).abs() < 1e-3, "{rows:?}");
+    assert!((rows[4].1 - rows[4].0 - 0.76).abs() < 0.01, "{rows:?}");
+}

@@ -36,6 +36,11 @@ pub(crate) fn stop_move(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
             continue;
         }
         let moving = cx.sh.motion_until.get(i).is_some_and(|&t| t > now);
+        let record = if moving {
+            record_under_way(cx, i, now)
+        } else {
+            None
+        };
         let left = if moving {
             cx.sh
                 .robots
@@ -49,10 +54,20 @@ pub(crate) fn stop_move(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
         if moving && let Some(t) = cx.sh.motion_until.get_mut(i) {
             *t = now;
         }
+        let joints = cx
+            .sh
+            .robots
+            .get(i)
+            .and_then(Option::as_ref)
+            .and_then(|r| r.joints_at(now).ok())
+            .map(|j| j.robax);
         if let Some(p) = cx.sh.paths.get_mut(i) {
             p.stopped = Some(Stopped {
                 level: path.level,
                 left,
+                at: now,
+                joints,
+                record,
             });
         }
     }
@@ -73,8 +88,57 @@ pub(crate) fn start_move(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
         if let Some(t) = cx.sh.motion_until.get_mut(i) {
             *t = t.max(now + stopped.left);
         }
+        if let Some(r) = stopped.record {
+            split_record(cx, r, &stopped, now);
+        }
     }
     Ok(Done::Next)
+}
+
+/// The trace's record of the move robot `i` makes at `now`.
+fn record_under_way(cx: &Cx<'_>, i: usize, now: f64) -> Option<usize> {
+    let name = cx.sh.names.get(i)?;
+    cx.sh
+        .moves
+        .iter()
+        .rposition(|m| m.task.as_deref().is_none_or(|t| t == name) && m.start <= now && now < m.end)
+}
+
+/// The trace's record `r` of a stopped move ends where the arm stopped
+/// (its TCP taken on the line from the task's previous position, as the
+/// arm is); the rest of the move, when it goes on, is a record of its own.
+fn split_record(cx: &mut Cx<'_>, r: usize, stopped: &Stopped, now: f64) {
+    let Some(original) = cx.sh.moves.get(r).cloned() else {
+        return;
+    };
+    let before = cx
+        .sh
+        .moves
+        .get(..r)
+        .and_then(|earlier| earlier.iter().rev().find(|m| m.task == original.task))
+        .and_then(|m| m.pos);
+    let span = original.end - original.start;
+    let f = if span > 0.0 {
+        ((stopped.at - original.start) / span).clamp(0.0, 1.0)
+    } else {
+        1.0
+    };
+    if let Some(m) = cx.sh.moves.get_mut(r) {
+        m.end = stopped.at;
+        if let Some(j) = stopped.joints {
+            m.joints = Some(j.to_vec());
+        }
+        m.pos = match (before, original.pos) {
+            (Some(a), Some(b)) => Some(std::array::from_fn(|k| a[k] + f * (b[k] - a[k]))),
+            _ => None,
+        };
+    }
+    if stopped.left > 0.0 {
+        let mut rest = original;
+        rest.start = now;
+        rest.end = now + stopped.left;
+        cx.sh.moves.push(rest);
+    }
 }
 
 /// `StartMoveRetry`: `StartMove` and `RETRY` in one (in an error

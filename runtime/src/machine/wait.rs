@@ -34,6 +34,11 @@ pub(crate) struct PathState {
 pub(crate) struct Stopped {
     pub level: u32,
     pub left: f64,
+    /// When it stopped, the arm's joints then, and the trace's record of
+    /// the move (split in two when it goes on).
+    pub at: f64,
+    pub joints: Option<[f64; 6]>,
+    pub record: Option<usize>,
 }
 
 impl PathState {
