@@ -170,6 +170,30 @@ fn a_name_the_task_lacks_is_one_finding_with_every_use_related() {
     );
 }
 
+/// A name one file takes for a signal (`SetDO doLamp, 1`) is that signal
+/// where another file of the task reads it: its use there is related to
+/// the signal's one finding, not an unresolved name.
+#[test]
+fn a_signal_taken_in_one_file_is_not_unresolved_in_another() {
+    let dir = scratch("signal-per-task");
+    let a = "MODULE A\n  PROC main()\n    SetDO doLamp, 1;\n    show;\n  ENDPROC\nENDMODULE\n";
+    let b = "MODULE B\n  PROC show()\n    TPWrite \"\" \\Num:=doLamp;\n    TPWrite \"\" \\Num:=nLost;\n  ENDPROC\nENDMODULE\n";
+    write(&dir, &[("prog/A.mod", a), ("prog/B.mod", b)]);
+    let (code, out) = check(&dir);
+    assert_eq!(code, Some(0), "{out}");
+    insta::assert_snapshot!(out, @r"
+    prog/A.mod:3:11: info[I103] `doLamp` is taken to be an I/O signal (`signaldo`); without the controller's EIO.cfg it cannot be checked (unconfigured-signal)
+    prog/B.mod:4:22: info[W101] no data named `nLost` is declared in this task or built in (if it is an I/O signal, give the controller's EIO.cfg) (unresolved-name)
+    ");
+    let out = rapid(&dir, &["check", "prog"]);
+    let human = String::from_utf8_lossy(&out.stdout).replace('\\', "/");
+    assert!(
+        human.contains("= note: used here too: prog/B.mod:3:22"),
+        "{human}"
+    );
+    assert!(!human.contains("no data named `doLamp`"), "{human}");
+}
+
 #[test]
 fn modules_of_a_controller_home_that_no_task_loads_have_notes_not_warnings() {
     let dir = scratch("home-notes");

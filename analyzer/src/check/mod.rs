@@ -70,7 +70,8 @@ pub fn check_unit_cached(
     cx.cache.start_check();
     cx.cache_enabled = true;
     cx.check();
-    let diags = finish(task, unit, u, std::mem::take(&mut cx.diags));
+    let mut diags = finish(task, unit, u, std::mem::take(&mut cx.diags));
+    diags.retain(|d| selection.is_on(d.rule));
     let mut cache = std::mem::take(&mut cx.cache);
     cache.drop_stale();
     (diags, cache)
@@ -260,7 +261,12 @@ impl<'t> Cx<'t> {
         range: Range<usize>,
         message: impl Into<String>,
     ) {
-        if self.selection.is_on(rule) {
+        // A name taken for a signal is found whatever the selection: its
+        // other uses are not unresolved names ([`once::within_file`]); the
+        // finding itself is dropped at the end when its rule is off.
+        if self.selection.is_on(rule)
+            || std::ptr::eq(rule, &crate::rules::unconfigured_signal::RULE)
+        {
             self.diags.push(Diagnostic::new(rule, range, message));
         }
     }

@@ -87,8 +87,34 @@ pub(crate) fn within_file(diags: &mut Vec<Diagnostic>, text: &str) {
             }
         }
     }
+    // An unresolved name the file takes for a signal elsewhere (`SetDO
+    // doLamp, 1` and `TPWrite "" \Num:=doLamp`) is that signal's use: a
+    // related location of the signal's finding, not a finding of its own.
+    let signals: HashMap<String, usize> = diags
+        .iter()
+        .enumerate()
+        .filter(|(i, d)| keep[*i] && std::ptr::eq(d.rule, &rules::unconfigured_signal::RULE))
+        .map(|(i, d)| (key(d, text).1, i))
+        .collect();
+    for (i, d) in diags.iter().enumerate() {
+        if !keep[i] || !is_unresolved(d) {
+            continue;
+        }
+        if let Some(&at) = signals.get(&key(d, text).1) {
+            keep[i] = false;
+            uses.push((at, d.range.clone()));
+            let earlier: Vec<(usize, Range<usize>)> = uses
+                .iter()
+                .filter(|(u, _)| *u == i)
+                .map(|(_, r)| (at, r.clone()))
+                .collect();
+            uses.extend(earlier);
+        }
+    }
     for (at, range) in uses {
-        if let Some(d) = diags.get_mut(at) {
+        if keep[at]
+            && let Some(d) = diags.get_mut(at)
+        {
             d.related.push(also_here(None, range));
         }
     }
@@ -170,5 +196,64 @@ pub fn per_task(files: &mut [FileFindings<'_>]) {
         {
             d.message = later.message;
         }
+    }
+    signal_uses_per_task(files);
+}
+
+/// [`within_file`]'s rule for a task's files: an unresolved name that
+/// another file of the task takes for a signal is a use of that signal.
+fn signal_uses_per_task(files: &mut [FileFindings<'_>]) {
+    let mut signals: HashMap<(&str, String), (usize, usize)> = HashMap::new();
+    for (f, file) in files.iter().enumerate() {
+        for (i, d) in file.diagnostics.iter().enumerate() {
+            if std::ptr::eq(d.rule, &rules::unconfigured_signal::RULE) {
+                signals
+                    .entry((file.task, key(d, file.text).1))
+                    .or_insert((f, i));
+            }
+        }
+    }
+    if signals.is_empty() {
+        return;
+    }
+    let mut moved: Vec<((usize, usize), Vec<Related>)> = Vec::new();
+    let mut removed: Vec<Vec<usize>> = vec![Vec::new(); files.len()];
+    for (f, file) in files.iter().enumerate() {
+        for (i, d) in file.diagnostics.iter().enumerate() {
+            if !is_unresolved(d) {
+                continue;
+            }
+            let Some(&at) = signals.get(&(file.task, key(d, file.text).1)) else {
+                continue;
+            };
+            let path = file.path;
+            let mut related = vec![also_here(Some(path.to_owned()), d.range.clone())];
+            related.extend(d.related.iter().cloned().map(|r| Related {
+                file: r.file.or_else(|| Some(path.to_owned())),
+                ..r
+            }));
+            moved.push((at, related));
+            removed[f].push(i);
+        }
+    }
+    for ((f, i), related) in moved {
+        let Some(file) = files.get_mut(f) else {
+            continue;
+        };
+        let path = file.path.to_owned();
+        if let Some(d) = file.diagnostics.get_mut(i) {
+            // Locations in the signal's own file need no file name.
+            d.related.extend(related.into_iter().map(|r| Related {
+                file: r.file.filter(|p| *p != path),
+                ..r
+            }));
+        }
+    }
+    for (file, removed) in files.iter_mut().zip(removed) {
+        let mut at = 0;
+        file.diagnostics.retain(|_| {
+            at += 1;
+            !removed.contains(&(at - 1))
+        });
     }
 }

@@ -13,7 +13,9 @@ crate::declare_rule! {
     /// (`IF diReady = 1`), or tested with number `CASE` values (`TEST giRecipe`:
     /// a group input when a value is past 0 and 1) is reported once, at this low
     /// severity, instead of as an unknown name. The finding names the type the
-    /// strongest use gives: a name compared first and set later is an output. Give the configuration (put
+    /// strongest use gives: a name compared first and set later is an output;
+    /// the name's other uses in the task (a read, `TPWrite "" \Num:=doLamp`)
+    /// are listed with it, not reported as unknown names. Give the configuration (put
     /// `EIO.cfg` / `MOC.cfg` next to the modules or in a `SYSPAR` folder
     /// beside them, or name its folder in `rapid.toml`) to have these names
     /// checked; with it, an unknown name is
