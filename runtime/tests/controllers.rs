@@ -37,14 +37,21 @@ struct TaskText {
 
 /// A robot whose moves take time: `\T` seconds when given, else one
 /// second (where it arrives is [`InstantRobot`]'s). A stand-in for a
-/// robot model, to see `\Conc` and `\InPos` at work.
-struct TimedRobot(InstantRobot);
+/// robot model, to see `\Conc`, `\InPos` and `StopMove` at work.
+struct TimedRobot(InstantRobot, f64);
 
 impl Robot for TimedRobot {
     fn move_to(&mut self, request: &MoveRequest<'_>) -> Result<Motion, RobotError> {
         let mut motion = self.0.move_to(request)?;
         motion.duration = request.time.unwrap_or(1.0);
+        self.1 = request.at + motion.duration;
         Ok(motion)
+    }
+
+    fn pause(&mut self, at: f64) -> Option<f64> {
+        let left = self.1 - at;
+        self.1 = at;
+        (left > 0.0).then_some(left)
     }
 
     fn robtarget(&self, tool: &Tool, wobj: &WObj) -> Result<RobTarget, RobotError> {
@@ -168,7 +175,9 @@ fn run(path: &std::path::Path) -> (Vec<String>, Vec<String>) {
             robot: match (t.motion, t.timed) {
                 (false, _) => None,
                 (true, false) => Some(Box::new(InstantRobot::new()) as Box<dyn Robot>),
-                (true, true) => Some(Box::new(TimedRobot(InstantRobot::new())) as Box<dyn Robot>),
+                (true, true) => {
+                    Some(Box::new(TimedRobot(InstantRobot::new(), 0.0)) as Box<dyn Robot>)
+                }
             },
         });
     }
