@@ -202,7 +202,7 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("SpeedRefresh", settings::speed_refresh),
     ("StopMove", paths::stop_move),
     ("StartMove", paths::start_move),
-    ("StopMoveReset", paths::start_move),
+    ("StopMoveReset", motion::setting),
     ("RMQFindSlot", rmq::find_slot),
     ("RMQSendMessage", rmq::send_message),
     ("RMQSendWait", rmq::send_wait),

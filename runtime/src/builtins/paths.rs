@@ -5,6 +5,9 @@
 //! arm meanwhile, `ClearPath` drops the stopped move (the arm stays where
 //! it stands), `StartMoveRetry` starts it and retries the statement that
 //! raised the error, `IsStopMoveAct` tells whether a stop holds.
+//! `StopMoveReset` resets the stop the system makes at an asynchronous
+//! motion error, which the simulation never raises: it is accepted and
+//! changes nothing.
 //!
 //! Simulated as time: a stop comes at once (no braking distance, `\Quick`
 //! or not), and a resumed move goes from where the arm is to its end in
@@ -74,8 +77,7 @@ pub(crate) fn stop_move(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     Ok(Done::Next)
 }
 
-/// `StartMove [\AllMotionTasks]`, `StopMoveReset [\AllMotionTasks]`: the
-/// stopped move goes on.
+/// `StartMove [\AllMotionTasks]`: the stopped move goes on.
 pub(crate) fn start_move(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     let now = cx.now();
     for i in robots(cx, a) {
