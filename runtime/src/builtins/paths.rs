@@ -12,7 +12,8 @@
 //! Simulated as time: a stop comes at once (no braking distance, `\Quick`
 //! or not), and a resumed move goes from where the arm is to its end in
 //! the seconds it had left. A move ordered on the stopped level (without
-//! `StorePath`) is made at once, not held.
+//! `StorePath`) is timed from when it is ordered, as if the stop did not
+//! hold the arm back; its task waits for `StartMove` all the same.
 
 use super::{Args, Cx, Done};
 use crate::machine::{R, Stopped};
