@@ -103,12 +103,13 @@ pub(crate) fn within_file(diags: &mut Vec<Diagnostic>, text: &str) {
         if let Some(&at) = signals.get(&key(d, text).1) {
             keep[i] = false;
             uses.push((at, d.range.clone()));
-            let earlier: Vec<(usize, Range<usize>)> = uses
+            // The later uses of the dropped finding go with it.
+            let moved: Vec<(usize, Range<usize>)> = uses
                 .iter()
                 .filter(|(u, _)| *u == i)
                 .map(|(_, r)| (at, r.clone()))
                 .collect();
-            uses.extend(earlier);
+            uses.extend(moved);
         }
     }
     for (at, range) in uses {
