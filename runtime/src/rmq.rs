@@ -21,8 +21,10 @@ use rapid_evaluator::Value;
 pub(crate) struct Message {
     /// The sending task's index.
     pub sender: usize,
-    /// The data type's name as the sender declared it (`num`, `robjoint`).
+    /// The data type's name as the sender declared it (`num`, `robjoint`),
+    /// and folded, as a receiver asks for it.
     pub datatype: String,
+    pub key: String,
     /// Each dimension's size (none for a single value).
     pub dims: Vec<usize>,
     pub value: Value,
@@ -110,29 +112,23 @@ pub(crate) fn type_of(v: &Value) -> (String, Vec<usize>) {
 
 /// A slot's value: the task's number (index + 1).
 pub(crate) fn slot_value(task: usize) -> Value {
-    Value::Record {
-        ty: "rmqslot".to_owned(),
-        fields: vec![("handle".to_owned(), Value::Num((task + 1) as f32))],
-    }
+    crate::builtins::handle_value("rmqslot", (task + 1) as f64)
 }
 
 /// The task index of a slot's value (`None`: a slot never found).
 pub(crate) fn slot_task(v: &Value) -> Option<usize> {
-    let n = v.field("handle")?.as_f64()?;
+    let n = crate::builtins::handle_in(v)?;
     (n >= 1.0).then(|| n as usize - 1)
 }
 
 /// A received message's value (its handle).
 pub(crate) fn message_value(handle: u32) -> Value {
-    Value::Record {
-        ty: "rmqmessage".to_owned(),
-        fields: vec![("handle".to_owned(), Value::Num(handle as f32 + 1.0))],
-    }
+    crate::builtins::handle_value("rmqmessage", f64::from(handle) + 1.0)
 }
 
 /// The handle of a received message's value (`None`: none received).
 pub(crate) fn message_handle(v: &Value) -> Option<u32> {
-    let n = v.field("handle")?.as_f64()?;
+    let n = crate::builtins::handle_in(v)?;
     (n >= 1.0).then(|| n as u32 - 1)
 }
 
@@ -156,6 +152,7 @@ mod tests {
             let (datatype, dims) = type_of(&v);
             Message {
                 sender: 0,
+                key: datatype.clone(),
                 datatype,
                 dims,
                 value: v,

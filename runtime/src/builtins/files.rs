@@ -50,7 +50,7 @@ fn handle(cx: &mut Cx<'_>, a: &Args) -> R<i32> {
 /// The handle an `iodev` or `dir` argument holds.
 fn handle_of(cx: &mut Cx<'_>, a: &Args, param: &str) -> R<i32> {
     let v = cx.req(a, param)?;
-    Ok(v.field("handle").and_then(Value::as_f64).unwrap_or(0.0) as i32)
+    Ok(super::handle_in(&v).unwrap_or(0.0) as i32)
 }
 
 fn open_file<'c>(cx: &'c mut Cx<'_>, a: &Args) -> R<&'c mut OpenFile> {
@@ -107,13 +107,7 @@ pub(crate) fn open(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
 /// Gives the `iodev` or `dir` argument `param` the handle `h`.
 fn store_handle(cx: &mut Cx<'_>, a: &Args, param: &str, ty: &str, h: i32) -> R<Done> {
     let p = cx.place_arg(a, param)?;
-    cx.store(
-        &p,
-        Value::Record {
-            ty: ty.to_owned(),
-            fields: vec![("handle".to_owned(), Value::Num(h as f32))],
-        },
-    )?;
+    cx.store(&p, super::handle_value(ty, f64::from(h)))?;
     Ok(Done::Next)
 }
 

@@ -51,6 +51,22 @@ pub(crate) enum Done {
     Retry,
 }
 
+/// A non-value object of the controller (an open file or folder, a
+/// socket, a message queue's slot, a received message): a record of its
+/// type holding the number the controller knows it by.
+pub(crate) fn handle_value(ty: &str, n: f64) -> Value {
+    Value::Record {
+        ty: ty.to_owned(),
+        fields: vec![("handle".to_owned(), Value::Num(n as f32))],
+    }
+}
+
+/// The number a [`handle_value`] holds (`None`: not one, as before the
+/// object is made).
+pub(crate) fn handle_in(v: &Value) -> Option<f64> {
+    v.field("handle").and_then(Value::as_f64)
+}
+
 /// A built-in's view of the machine and the controller.
 pub(crate) struct Cx<'a> {
     pub m: &'a mut Machine,

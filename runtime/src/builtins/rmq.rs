@@ -79,6 +79,7 @@ fn send(cx: &mut Cx<'_>, a: &Args) -> R<()> {
     let (datatype, dims) = rmq::type_of(&value);
     let message = Message {
         sender: own(cx),
+        key: fold(&datatype),
         datatype,
         dims,
         value,

@@ -55,18 +55,12 @@ impl Cx<'_> {
 /// The socket number a `socketdev` argument holds.
 fn socket(cx: &mut Cx<'_>, a: &Args, param: &str) -> R<u32> {
     let v = cx.req(a, param)?;
-    Ok(v.field("handle").and_then(Value::as_f64).unwrap_or(0.0) as u32)
+    Ok(super::handle_in(&v).unwrap_or(0.0) as u32)
 }
 
 fn store_socket(cx: &mut Cx<'_>, a: &Args, param: &str, id: u32) -> R<()> {
     let p = cx.place_arg(a, param)?;
-    cx.store(
-        &p,
-        Value::Record {
-            ty: "socketdev".to_owned(),
-            fields: vec![("handle".to_owned(), Value::Num(id as f32))],
-        },
-    )
+    cx.store(&p, super::handle_value("socketdev", f64::from(id)))
 }
 
 fn time(cx: &mut Cx<'_>, a: &Args) -> R<f64> {

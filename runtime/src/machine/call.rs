@@ -343,17 +343,18 @@ impl Machine {
     /// queue and raises its interrupt (in order), for `RMQGetMessage`.
     fn receive_messages(&mut self, sh: &mut Shared) {
         let own = self.number.saturating_sub(1);
-        let subscribed = |m: &crate::rmq::Message, subs: &[(String, i32)]| {
-            let ty = rapid_analyzer::names::fold(&m.datatype);
-            subs.iter().find(|(t, _)| *t == ty).map(|(_, id)| *id)
-        };
-        let subs = self.interrupts.rmq.clone();
-        while let Some(handle) = sh.rmq.take(own, |m| subscribed(m, &subs).is_some()) {
-            let Some(id) = sh.rmq.get(handle).and_then(|m| subscribed(m, &subs)) else {
-                continue;
+        loop {
+            let subs = &self.interrupts.rmq;
+            let id_of =
+                |m: &crate::rmq::Message| subs.iter().find(|(t, _)| *t == m.key).map(|(_, id)| *id);
+            let Some(handle) = sh.rmq.take(own, |m| id_of(m).is_some()) else {
+                break;
             };
+            let id = sh.rmq.get(handle).and_then(id_of);
             self.rmq_received.push_back(handle);
-            self.interrupts.raise(id);
+            if let Some(id) = id {
+                self.interrupts.raise(id);
+            }
         }
     }
 

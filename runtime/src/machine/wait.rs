@@ -231,7 +231,7 @@ pub(crate) enum Timeout {
 
 /// Does a message of the type `wanted` (folded; any when `None`) come?
 fn accepts(wanted: Option<&str>, m: &crate::rmq::Message) -> bool {
-    wanted.is_none_or(|w| rapid_analyzer::names::fold(&m.datatype) == w)
+    wanted.is_none_or(|w| m.key == w)
 }
 
 /// When the moves of path level `level` of robot `robot` end: never while
