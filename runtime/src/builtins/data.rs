@@ -162,13 +162,19 @@ pub(crate) fn call_by_var(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
             format!("CallByVar: {n} is not a whole number"),
         ));
     }
-    let full = format!("{name}{n}");
+    procedure_named(cx, &format!("{name}{n}")).map(Done::Call)
+}
+
+/// The procedure of the program a name given at run time names, seen from
+/// the running routine's module (`ERR_REFUNKPRC` when there is none,
+/// `ERR_CALLPROC` when it is a function or a trap).
+pub(crate) fn procedure_named(cx: &Cx<'_>, name: &str) -> R<u32> {
     let module = cx.m.frames.last().map_or(usize::MAX, |f| f.code.module);
-    let Some(id) = cx.m.prog.routine_named(module, &full) else {
+    let Some(id) = cx.m.prog.routine_named(module, name) else {
         return fault(named_error(
             &cx.m.prog,
             "ERR_REFUNKPRC",
-            format!("there is no procedure {full}"),
+            format!("there is no procedure {name}"),
         ));
     };
     let is_proc =
@@ -180,10 +186,10 @@ pub(crate) fn call_by_var(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
         return fault(named_error(
             &cx.m.prog,
             "ERR_CALLPROC",
-            format!("{full} is not a procedure"),
+            format!("{name} is not a procedure"),
         ));
     }
-    Ok(Done::Call(id))
+    Ok(id)
 }
 
 /// `WaitTime [\InPos] Time`.
@@ -273,8 +279,25 @@ pub(crate) fn clk_read(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
 }
 
 /// `Stop` and `Break`: the task stops.
-pub(crate) fn stop(_: &mut Cx<'_>, _: &mut Args) -> R<Done> {
+pub(crate) fn stop(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    if a.given("AllMoveTasks") {
+        cx.sh.stop_normal = Some(format!("Stop \\AllMoveTasks in {}", cx.m.name));
+    }
     fault(FaultKind::Halt(Status::Stopped))
+}
+
+/// `SystemStopAction \Stop | \StopBlock | \Halt`: the program stops in
+/// every normal task (with `\Halt` the motors go off: the simulation
+/// stops the same way; with `\StopBlock` the cycle could not be restarted
+/// from there, which a run never does).
+pub(crate) fn system_stop_action(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    let how = ["Stop", "StopBlock", "Halt"]
+        .into_iter()
+        .find(|s| a.given(s))
+        .unwrap_or("Stop");
+    let why = format!("SystemStopAction \\{how} in {}", cx.m.name);
+    cx.sh.stop_normal = Some(why.clone());
+    fault(FaultKind::Stopped(why))
 }
 
 /// `WarmStart`: the controller restarts, and its program stops there (it

@@ -514,14 +514,46 @@ pub(crate) fn move_to_point(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
 }
 
 /// `MoveLDO`, `MoveJDO`, `MoveCDO` (and the `AO`, `GO` ones): the move,
-/// then the signal set.
+/// and the signal set when the robot reaches `ToPoint` (the middle of its
+/// zone, which the simulation takes as the move's end).
 pub(crate) fn move_do(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
-    let done = do_move(cx, a, "ToPoint")?;
     let s = cx.req(a, "Signal")?;
     let (name, _) = cx.m.signal_of(cx.sh, &s)?;
     let v = cx.num(a, "Value")?;
-    cx.sh.set_signal(&name, v);
+    let done = do_move(cx, a, "ToPoint")?;
+    let delay = motion_end(cx) - cx.now();
+    if delay > 0.0 {
+        cx.sh.set_signal_later(&name, v, delay);
+    } else {
+        cx.sh.set_signal(&name, v);
+    }
     Ok(done)
+}
+
+/// `MoveLSync`, `MoveJSync`, `MoveCSync`: the move, and the procedure
+/// `ProcName` names called when the robot reaches `ToPoint` (the middle
+/// of its zone, taken as the move's end): the task waits for the move,
+/// then runs the procedure, then goes on.
+pub(crate) fn move_sync(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
+    // The statement and call depth, so that a call left pending by an
+    // error during the move is not made by another instruction.
+    let here = (cx.m.frames.len(), cx.m.location());
+    if let Some((id, at)) = cx.m.sync_call.take()
+        && at == here
+    {
+        return Ok(Done::Call(id));
+    }
+    let name = cx.string(a, "ProcName")?;
+    let id = super::data::procedure_named(cx, &name)?;
+    match do_move(cx, a, "ToPoint")? {
+        Done::Wait(w) => {
+            // When the move ends the instruction runs again, to call.
+            cx.m.sync_call = Some((id, here));
+            cx.m.again();
+            Ok(Done::Wait(w))
+        }
+        _ => Ok(Done::Call(id)),
+    }
 }
 
 /// `MoveAbsJ ToJointPos, ...`, and `MoveExtJ ToJointPos, ...` (its

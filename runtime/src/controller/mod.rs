@@ -91,6 +91,9 @@ pub(crate) struct Shared {
     /// Each task's name, by index.
     pub names: Vec<String>,
     pub debug: Debug,
+    /// A task stopped the program (`Stop \AllMoveTasks`,
+    /// `SystemStopAction`): why the other normal tasks stop.
+    pub(crate) stop_normal: Option<String>,
 }
 
 impl Shared {
@@ -277,6 +280,7 @@ impl Controller {
                 routine_times: Vec::new(),
                 names: Vec::new(),
                 debug: Debug::default(),
+                stop_normal: None,
             },
             tasks: Vec::new(),
             meta: Vec::new(),
@@ -435,6 +439,9 @@ impl Controller {
                     Yield::Blocked => {}
                     Yield::Stopped(stop) => return Event::Stopped { task: i, stop },
                 }
+                if let Some(why) = self.sh.stop_normal.take() {
+                    self.stop_normal_tasks(&why);
+                }
             }
             if !ran && let Some(e) = self.advance_clock() {
                 return e;
@@ -475,6 +482,22 @@ impl Controller {
             self.tasks.iter().all(Machine::is_done)
         } else {
             normal.iter().all(|t| t.is_done())
+        }
+    }
+
+    /// A task stopped the program: the normal tasks still running stop
+    /// where they are.
+    fn stop_normal_tasks(&mut self, why: &str) {
+        for (t, meta) in self.tasks.iter_mut().zip(&self.meta) {
+            if meta.kind == TaskKind::Normal && t.is_running() {
+                t.finish(Outcome {
+                    status: Status::Stopped,
+                    message: why.to_owned(),
+                    errno: None,
+                    at: t.location(),
+                    stack: t.stack_frames(),
+                });
+            }
         }
     }
 

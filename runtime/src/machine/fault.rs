@@ -49,6 +49,8 @@ pub(crate) enum FaultKind {
     Motion(String),
     /// `EXIT` or `Stop`: ends the run without an error.
     Halt(Status),
+    /// A stop that says why (`SystemStopAction`).
+    Stopped(String),
 }
 
 pub(crate) type R<T> = Result<T, Box<Fault>>;
@@ -115,6 +117,7 @@ impl Machine {
             FaultKind::Operator(m) => (Status::Operator, m.clone(), None),
             FaultKind::Motion(m) => (Status::Error, m.clone(), None),
             FaultKind::Halt(s) => (*s, String::new(), None),
+            FaultKind::Stopped(m) => (Status::Stopped, m.clone(), None),
         };
         Outcome {
             status,
@@ -159,11 +162,8 @@ impl Machine {
                 }
                 _ => {}
             }
-            if let FaultKind::Halt(status) = f.kind {
-                let outcome = Outcome {
-                    status,
-                    ..self.outcome_of(&f)
-                };
+            if matches!(f.kind, FaultKind::Halt(_) | FaultKind::Stopped(_)) {
+                let outcome = self.outcome_of(&f);
                 self.finish(outcome);
                 return Some(Yield::Done);
             }

@@ -262,6 +262,9 @@ pub struct Machine {
     /// The part the operator chose for `ExecEngine`, run when its answer's
     /// delay is over.
     pub(crate) engine_part: Option<String>,
+    /// The procedure a `MoveLSync` calls when its move ends, with the
+    /// call depth and statement of the instruction.
+    pub(crate) sync_call: Option<(u32, (usize, Option<crate::Location>))>,
     /// The task's YuMi SmartGripper.
     pub(crate) gripper: crate::builtins::gripper::Gripper,
     /// The tool and the work object of the last move (`CTool`, `CWObj`).
@@ -336,6 +339,7 @@ impl Machine {
             read_clock: false,
             function_wait: None,
             engine_part: None,
+            sync_call: None,
             gripper: Default::default(),
             active: [None, None],
             active_names: [None, None],
