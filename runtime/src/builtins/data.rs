@@ -384,6 +384,17 @@ pub(crate) fn str_to_val(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
     }
 }
 
+/// The day the simulated clock starts (days since 1970-01-01): Monday
+/// 2024-01-01.
+const START_DAY: u64 = 19_723;
+
+/// The controller's time for simulated second `t`: seconds since
+/// 1970-01-01 00:00:00 GMT (`FileTime`, `ModTime`), as a `num` holds it
+/// (to 128 s at this size, as on the controller).
+pub(crate) fn epoch_value(t: f64) -> Value {
+    Value::Num(((START_DAY * 86_400) as f64 + t.max(0.0)) as f32)
+}
+
 /// Seconds since midnight of the simulated date, and the day.
 fn time_of_day(cx: &mut Cx<'_>) -> (u64, u64) {
     cx.m.read_clock = true;
@@ -407,7 +418,7 @@ pub(crate) fn c_time(cx: &mut Cx<'_>, _: &mut Args) -> R<Value> {
 /// 2024-01-01).
 pub(crate) fn c_date(cx: &mut Cx<'_>, _: &mut Args) -> R<Value> {
     let (_, day) = time_of_day(cx);
-    let (y, mo, d) = civil_from_days(19_723 + day as i64);
+    let (y, mo, d) = civil_from_days((START_DAY + day) as i64);
     Ok(Value::Str(format!("{y:04}-{mo:02}-{d:02}")))
 }
 

@@ -32,6 +32,34 @@ pub(crate) struct OpenFiles {
     /// An open folder (`OpenDir`): its entries and how many were read.
     dirs: HashMap<i32, (Vec<String>, usize)>,
     next: i32,
+    /// When the run last changed, read or renamed each file (simulated
+    /// seconds), by [`stamp_key`]; a file the run has not touched dates
+    /// from its start.
+    stamps: HashMap<String, Stamp>,
+}
+
+/// The times `FileTime` gives of a file the run touched.
+#[derive(Clone, Copy, Default)]
+struct Stamp {
+    modified: f64,
+    accessed: f64,
+    changed: f64,
+}
+
+/// A path as the stamps know it: any case, `HOME:/a` and `HOME:a` alike.
+fn stamp_key(path: &str) -> String {
+    path.to_ascii_lowercase().replacen(":/", ":", 1)
+}
+
+/// Notes that the run wrote the file `path` now (or only read it).
+pub(super) fn touch(cx: &mut Cx<'_>, path: &str, written: bool) {
+    let now = cx.now();
+    let s = cx.sh.open.stamps.entry(stamp_key(path)).or_default();
+    s.accessed = now;
+    if written {
+        s.modified = now;
+        s.changed = now;
+    }
 }
 
 /// The fault of a file operation that failed.
@@ -90,6 +118,7 @@ pub(crate) fn open(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
             Vec::new()
         }
     };
+    touch(cx, &name, mode != Mode::Read);
     cx.sh.open.next += 1;
     let h = cx.sh.open.next;
     cx.sh.open.open.insert(
@@ -132,6 +161,7 @@ fn write_bytes(cx: &mut Cx<'_>, a: &Args, bytes: &[u8]) -> R<Done> {
     if let Err(e) = cx.sh.files.write(&path, bytes, true) {
         return file_error(cx, name, "ERR_FILEACC", e);
     }
+    touch(cx, &path, true);
     Ok(Done::Next)
 }
 
@@ -359,6 +389,37 @@ pub(crate) fn file_size(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
     }
 }
 
+/// `FileTime(Path [\ModifyTime] | [\AccessTime] | [\StatCTime])`: when
+/// the file was last changed (the default), read or written, or had its
+/// status changed, in seconds since 1970 on the simulated clock: a file
+/// the run has not touched dates from the run's start; `ERR_FILEACC` when
+/// it does not exist.
+pub(crate) fn file_time(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    let name = cx.string(a, "Path")?;
+    if cx.sh.files.kind(&name).is_none() {
+        return fault(named_error(
+            &cx.m.prog,
+            "ERR_FILEACC",
+            format!("FileTime: {name} does not exist"),
+        ));
+    }
+    let stamp = cx
+        .sh
+        .open
+        .stamps
+        .get(&stamp_key(&name))
+        .copied()
+        .unwrap_or_default();
+    let t = if a.given("AccessTime") {
+        stamp.accessed
+    } else if a.given("StatCTime") {
+        stamp.changed
+    } else {
+        stamp.modified
+    };
+    Ok(super::data::epoch_value(t))
+}
+
 /// `ClearIOBuff IODevice`: empties a serial channel's input buffer; a
 /// file has none, so nothing changes.
 pub(crate) fn clear_io_buff(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
@@ -400,6 +461,17 @@ pub(crate) fn remove_file(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
 pub(crate) fn rename_file(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     let (from, to) = two_paths(cx, a)?;
     let r = cx.sh.files.rename(&from, &to);
+    if r.is_ok() {
+        // The file keeps its times; renaming changes its status.
+        let mut stamp = cx
+            .sh
+            .open
+            .stamps
+            .remove(&stamp_key(&from))
+            .unwrap_or_default();
+        stamp.changed = cx.now();
+        cx.sh.open.stamps.insert(stamp_key(&to), stamp);
+    }
     done_or_error(cx, a, r)
 }
 
@@ -412,6 +484,10 @@ pub(crate) fn copy_file(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
         .files
         .read(&from)
         .and_then(|data| cx.sh.files.write(&to, &data, false));
+    if r.is_ok() {
+        touch(cx, &from, false);
+        touch(cx, &to, true);
+    }
     done_or_error(cx, a, r)
 }
 

@@ -335,6 +335,8 @@ const FUNCTIONS: &[(&str, FuncFn)] = &[
     ("ClkRead", data::clk_read),
     ("CTime", data::c_time),
     ("CDate", data::c_date),
+    ("FileTime", files::file_time),
+    ("ModTime", modules::mod_time),
     ("GetTime", data::get_time),
     ("RobOS", data::rob_os),
     ("OpMode", data::op_mode),

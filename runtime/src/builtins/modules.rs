@@ -39,6 +39,8 @@ pub(crate) struct LoadedModule {
     /// Its text, to lay it out again when a module loaded before it is
     /// unloaded.
     text: Arc<str>,
+    /// When it was loaded (simulated seconds).
+    at: f64,
 }
 
 /// The loads `StartLoad` started and `WaitLoad` has not finished: the
@@ -150,6 +152,7 @@ fn load(cx: &mut Cx<'_>, name: &str, path: &str, check_refs: bool) -> R<()> {
         first,
         before,
         text: text.into(),
+        at: cx.now(),
     });
     Ok(())
 }
@@ -304,6 +307,27 @@ pub(crate) fn erase_module(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
 pub(crate) fn mod_exist(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
     let name = cx.string(a, "ModuleName")?;
     Ok(Value::Bool(cx.m.prog.module_named(&name).is_some()))
+}
+
+/// `ModTime(Object)`: when the module was loaded, in seconds since 1970
+/// (the program's own modules when the run starts, a module `Load`
+/// loaded then); `ERR_MODULE` for a module not in the task.
+pub(crate) fn mod_time(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
+    let name = cx.string(a, "Object")?;
+    if cx.m.prog.module_named(&name).is_none() {
+        return fault(named_error(
+            &cx.m.prog,
+            "ERR_MODULE",
+            format!("ModTime: there is no module {name} in the task"),
+        ));
+    }
+    let at =
+        cx.m.loaded
+            .iter()
+            .rev()
+            .find(|l| l.modules.iter().any(|m| m.eq_ignore_ascii_case(&name)))
+            .map_or(0.0, |l| l.at);
+    Ok(super::data::epoch_value(at))
 }
 
 fn session_value(id: u32) -> Value {

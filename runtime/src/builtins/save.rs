@@ -51,7 +51,10 @@ pub(crate) fn write_module(cx: &mut Cx<'_>, what: &str, name: &str, path: &str) 
         ));
     };
     match cx.sh.files.write(path, &super::files::latin1(&text), false) {
-        Ok(()) => Ok(()),
+        Ok(()) => {
+            super::files::touch(cx, path, true);
+            Ok(())
+        }
         Err(FileError::Unsupported(why)) => {
             fault(FaultKind::Unsupported(format!("{what} ({why})")))
         }
