@@ -63,7 +63,7 @@ pub(super) fn touch(cx: &mut Cx<'_>, path: &str, written: bool) {
 }
 
 /// The fault of a file operation that failed.
-fn file_error<T>(cx: &Cx<'_>, what: &str, code: &str, e: FileError) -> R<T> {
+pub(super) fn file_error<T>(cx: &Cx<'_>, what: &str, code: &str, e: FileError) -> R<T> {
     match e {
         FileError::Unsupported(why) => fault(FaultKind::Unsupported(format!("{what} ({why})"))),
         FileError::Denied(m) => fault(named_error(&cx.m.prog, "ERR_FILEACC", m)),

@@ -28,6 +28,7 @@ pub(crate) mod settings;
 pub(crate) mod sockets;
 pub(crate) mod symbols;
 pub(crate) mod tasks;
+pub(crate) mod texts;
 pub(crate) mod triggs;
 pub(crate) mod units;
 pub(crate) mod zones;
@@ -136,6 +137,7 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("ClkStop", data::clk_stop),
     ("Stop", data::stop),
     ("SystemStopAction", data::system_stop_action),
+    ("TextTabInstall", texts::text_tab_install),
     ("Break", data::stop),
     ("WarmStart", data::warm_start),
     ("ExitCycle", data::exit_cycle),
@@ -336,6 +338,9 @@ const FUNCTIONS: &[(&str, FuncFn)] = &[
     ("CTime", data::c_time),
     ("CDate", data::c_date),
     ("FileTime", files::file_time),
+    ("TextTabGet", texts::text_tab_get),
+    ("TextGet", texts::text_get),
+    ("TextTabFreeToUse", texts::text_tab_free_to_use),
     ("ModTime", modules::mod_time),
     ("GetTime", data::get_time),
     ("RobOS", data::rob_os),

@@ -94,6 +94,8 @@ pub(crate) struct Shared {
     /// A task stopped the program (`Stop \AllMoveTasks`,
     /// `SystemStopAction`): why the other normal tasks stop.
     pub(crate) stop_normal: Option<String>,
+    /// The user text tables `TextTabInstall` installed.
+    pub(crate) text_tables: Vec<crate::builtins::texts::TextTable>,
 }
 
 impl Shared {
@@ -281,6 +283,7 @@ impl Controller {
                 names: Vec::new(),
                 debug: Debug::default(),
                 stop_normal: None,
+                text_tables: Vec::new(),
             },
             tasks: Vec::new(),
             meta: Vec::new(),
