@@ -300,16 +300,27 @@ fn a_folder_of_several_tasks_names_them_as_paths_to_give() {
     };
     write(
         &dir,
-        &[("A.mod", &module("A")), ("sub/B.mod", &module("B"))],
+        &[
+            ("cell/A.mod", &module("A")),
+            ("cell/sub/B.mod", &module("B")),
+            ("cell/sub2/C.mod", &module("C")),
+        ],
     );
-    let (code, _, err) = run(&dir, &["run", "."]);
+    // The folder's own modules are the task the folder names.
+    let (code, out, err) = run(&dir.join("cell"), &["run", "."]);
+    assert_eq!((code, out.as_str()), (Some(0), "A\n"), "{err}");
+    let (code, out, err) = run(&dir, &["run", "cell/"]);
+    assert_eq!((code, out.as_str()), (Some(0), "A\n"), "{err}");
+    let (code, out, _) = run(&dir, &["run", "cell/sub"]);
+    assert_eq!((code, out.as_str()), (Some(0), "B\n"));
+    // A folder without modules of its own names the tasks it holds.
+    std::fs::remove_file(dir.join("cell/A.mod")).expect("removed");
+    let (code, _, err) = run(&dir.join("cell"), &["run", "."]);
     assert_eq!(code, Some(2), "{err}");
     assert!(
-        err.contains("the folder holds 2 tasks; name one of them (e.g. ., sub)"),
+        err.contains("the folder holds 2 tasks; name one of them (e.g. sub, sub2)"),
         "{err}"
     );
-    let (code, out, _) = run(&dir, &["run", "sub"]);
-    assert_eq!((code, out.as_str()), (Some(0), "B\n"));
 }
 
 #[test]

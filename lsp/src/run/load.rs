@@ -263,9 +263,31 @@ pub fn controller_in(
     let with_entry: Vec<usize> = (0..out.len())
         .filter(|&i| declares(&out[i].task, entry))
         .collect();
-    match with_entry.as_slice() {
-        [i] => {
-            let mut t = out.swap_remove(*i);
+    // Several do: the folder's own modules are the task the folder names
+    // (the others are named by their own folders or program files).
+    let own = || {
+        let given = path.to_string_lossy();
+        let given = match given.trim_end_matches(['/', '\\']) {
+            "." => "",
+            g => g,
+        };
+        let own: Vec<usize> = with_entry
+            .iter()
+            .copied()
+            .filter(|&i| out[i].task.key.trim_end_matches(['/', '\\']) == given)
+            .collect();
+        own
+    };
+    let chosen = match with_entry.as_slice() {
+        [i] => Some(*i),
+        _ => match own().as_slice() {
+            [i] => Some(*i),
+            _ => None,
+        },
+    };
+    match chosen {
+        Some(i) => {
+            let mut t = out.swap_remove(i);
             t.name = "T_ROB1".to_owned();
             Ok(Loaded {
                 tasks: vec![t],
@@ -273,7 +295,7 @@ pub fn controller_in(
                 home,
             })
         }
-        _ => {
+        None => {
             let keys: Vec<&str> = out.iter().map(|t| t.task.key.as_str()).collect();
             let why = several_backups(&keys).unwrap_or_else(|| several_tasks(&keys));
             Err(format!("{}: {why}", path.display()))
