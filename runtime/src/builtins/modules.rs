@@ -78,11 +78,15 @@ pub(crate) fn loaded_from(cx: &Cx<'_>, path: &str) -> Option<usize> {
 /// The path a loaded module was loaded from (for `Save` without
 /// `\FilePath`).
 pub(crate) fn path_of_module(cx: &Cx<'_>, module: &str) -> Option<String> {
+    load_of(cx, module).map(|l| l.path.clone())
+}
+
+/// The last `Load` that loaded the module named `module` (any case).
+fn load_of<'c>(cx: &'c Cx<'_>, module: &str) -> Option<&'c LoadedModule> {
     cx.m.loaded
         .iter()
         .rev()
         .find(|l| l.modules.iter().any(|m| m.eq_ignore_ascii_case(module)))
-        .map(|l| l.path.clone())
 }
 
 /// Loads the module file at `path` into the task.
@@ -321,12 +325,7 @@ pub(crate) fn mod_time(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
             format!("ModTime: there is no module {name} in the task"),
         ));
     }
-    let at =
-        cx.m.loaded
-            .iter()
-            .rev()
-            .find(|l| l.modules.iter().any(|m| m.eq_ignore_ascii_case(&name)))
-            .map_or(0.0, |l| l.at);
+    let at = load_of(cx, &name).map_or(0.0, |l| l.at);
     Ok(super::data::epoch_value(at))
 }
 
