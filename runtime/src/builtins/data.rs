@@ -289,7 +289,8 @@ pub(crate) fn stop(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
 /// `SystemStopAction \Stop | \StopBlock | \Halt`: the program stops in
 /// every normal task (with `\Halt` the motors go off: the simulation
 /// stops the same way; with `\StopBlock` the cycle could not be restarted
-/// from there, which a run never does).
+/// from there, which a run never does). A static or semistatic task (a
+/// supervisor) goes on.
 pub(crate) fn system_stop_action(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     let how = ["Stop", "StopBlock", "Halt"]
         .into_iter()
@@ -297,7 +298,17 @@ pub(crate) fn system_stop_action(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
         .unwrap_or("Stop");
     let why = format!("SystemStopAction \\{how} in {}", cx.m.name);
     cx.sh.stop_normal = Some(why.clone());
-    fault(FaultKind::Stopped(why))
+    let index = cx.m.number.saturating_sub(1);
+    let normal = cx
+        .sh
+        .kinds
+        .get(index)
+        .is_none_or(|k| *k == crate::controller::TaskKind::Normal);
+    if normal {
+        fault(FaultKind::Stopped(why))
+    } else {
+        Ok(Done::Next)
+    }
 }
 
 /// `WarmStart`: the controller restarts, and its program stops there (it

@@ -90,6 +90,8 @@ pub(crate) struct Shared {
     pub routine_times: Vec<crate::RoutineTime>,
     /// Each task's name, by index.
     pub names: Vec<String>,
+    /// Each task's kind, by index.
+    pub(crate) kinds: Vec<TaskKind>,
     pub debug: Debug,
     /// A task stopped the program (`Stop \AllMoveTasks`,
     /// `SystemStopAction`): why the other normal tasks stop.
@@ -281,6 +283,7 @@ impl Controller {
                 move_count: 0,
                 routine_times: Vec::new(),
                 names: Vec::new(),
+                kinds: Vec::new(),
                 debug: Debug::default(),
                 stop_normal: None,
                 text_tables: Vec::new(),
@@ -299,6 +302,7 @@ impl Controller {
         }
         let index = self.tasks.len();
         self.sh.names.push(spec.name.clone());
+        self.sh.kinds.push(spec.kind);
         self.sh.robots.push(spec.robot);
         self.sh.motion_until.push(0.0);
         self.sh.paths.push(crate::machine::PathState::default());
