@@ -147,7 +147,7 @@ pub(crate) fn close(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     Ok(Done::Next)
 }
 
-fn write_bytes(cx: &mut Cx<'_>, a: &Args, bytes: &[u8]) -> R<Done> {
+pub(super) fn write_bytes(cx: &mut Cx<'_>, a: &Args, bytes: &[u8]) -> R<Done> {
     let name = a.name;
     let f = open_file(cx, a)?;
     if f.mode == Mode::Read {
@@ -248,6 +248,13 @@ pub(crate) fn rewind(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     let f = open_file(cx, a)?;
     f.pos = 0;
     Ok(Done::Next)
+}
+
+/// The bytes of the file `IODevice` (open for reading) not read yet, and
+/// where reading is, to move on.
+pub(super) fn unread<'c>(cx: &'c mut Cx<'_>, a: &Args) -> R<(&'c [u8], &'c mut usize)> {
+    let OpenFile { data, pos, .. } = readable(cx, a)?;
+    Ok((data.get(*pos..).unwrap_or_default(), pos))
 }
 
 fn readable<'c>(cx: &'c mut Cx<'_>, a: &Args) -> R<&'c mut OpenFile> {

@@ -6,6 +6,7 @@
 //! Anything the catalogue knows and this module does not implement stops
 //! a run with "not supported in simulation: NAME".
 
+pub(crate) mod anybin;
 pub(crate) mod arc;
 pub(crate) mod calibration;
 pub(crate) mod config;
@@ -138,6 +139,8 @@ const INSTRUCTIONS: &[(&str, InsFn)] = &[
     ("Stop", data::stop),
     ("SystemStopAction", data::system_stop_action),
     ("TextTabInstall", texts::text_tab_install),
+    ("WriteAnyBin", anybin::write_any_bin),
+    ("ReadAnyBin", anybin::read_any_bin),
     ("Break", data::stop),
     ("WarmStart", data::warm_start),
     ("ExitCycle", data::exit_cycle),
