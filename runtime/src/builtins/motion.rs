@@ -522,11 +522,8 @@ pub(crate) fn move_do(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
     let v = cx.num(a, "Value")?;
     let done = do_move(cx, a, "ToPoint")?;
     let delay = motion_end(cx) - cx.now();
-    if delay > 0.0 {
-        cx.sh.set_signal_later(&name, v, delay);
-    } else {
-        cx.sh.set_signal(&name, v);
-    }
+    let robot = cx.m.number.saturating_sub(1);
+    cx.sh.set_signal_on_path(robot, &name, v, delay);
     Ok(done)
 }
 

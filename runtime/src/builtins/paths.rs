@@ -11,7 +11,10 @@
 //!
 //! Simulated as time: a stop comes at once (no braking distance, `\Quick`
 //! or not), and a resumed move goes from where the arm is to its end in
-//! the seconds it had left. A move ordered on the stopped level (without
+//! the seconds it had left. The signals its path still had to set
+//! (`TriggIO`, `MoveLDO`, a world zone's output) wait with it and come as
+//! many seconds after `StartMove` as they were due after the stop;
+//! `ClearPath` drops them (`TriggInt`'s interrupts are not held). A move ordered on the stopped level (without
 //! `StorePath`) is timed from when it is ordered, as if the stop did not
 //! hold the arm back; its task waits for `StartMove` all the same.
 
@@ -55,8 +58,11 @@ pub(crate) fn stop_move(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
         } else {
             0.0
         };
-        if moving && let Some(t) = cx.sh.motion_until.get_mut(i) {
-            *t = now;
+        if moving {
+            if let Some(t) = cx.sh.motion_until.get_mut(i) {
+                *t = now;
+            }
+            cx.sh.hold_path_events(i);
         }
         let joints = cx
             .sh
@@ -94,6 +100,7 @@ pub(crate) fn start_move(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
         if let Some(r) = stopped.record {
             split_record(cx, r, &stopped, now);
         }
+        cx.sh.release_path_events(i, true);
     }
     Ok(Done::Next)
 }
@@ -183,6 +190,7 @@ pub(crate) fn clear_path(cx: &mut Cx<'_>, _: &mut Args) -> R<Done> {
         if let Some(r) = cx.sh.robots.get_mut(own).and_then(Option::as_mut) {
             r.resume(now, 0.0, false);
         }
+        cx.sh.release_path_events(own, false);
     }
     Ok(Done::Next)
 }

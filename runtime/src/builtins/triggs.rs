@@ -194,10 +194,8 @@ pub(crate) fn trigg_move(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
             let now = cx.now();
             cx.m.interrupts
                 .add_timer(e.value as i32, now, delay.max(0.0), true);
-        } else if delay > 0.0 {
-            cx.sh.set_signal_later(&e.signal, e.value, delay);
         } else {
-            cx.sh.set_signal(&e.signal, e.value);
+            cx.sh.set_signal_on_path(index, &e.signal, e.value, delay);
         }
     }
     Ok(done)

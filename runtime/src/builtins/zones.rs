@@ -387,11 +387,7 @@ pub(crate) fn supervise(
         }
     }
     for (signal, v) in changes {
-        if delay > 0.0 {
-            cx.sh.set_signal_later(&signal, v, delay);
-        } else {
-            cx.sh.set_signal(&signal, v);
-        }
+        cx.sh.set_signal_on_path(index, &signal, v, delay);
     }
     Ok(())
 }

@@ -53,9 +53,13 @@ pub(crate) struct Shared {
     pers_users: Vec<u32>,
     pers_names: NameMap<u32>,
     pub io: Box<dyn Io>,
-    /// Signal changes the controller makes later (pulses, `\SDelay`):
-    /// time, signal, value; earliest first.
-    pub timed: Vec<(f64, String, f64)>,
+    /// Signal changes the controller makes later (pulses, `\SDelay`, the
+    /// events of a robot's path): time, signal, value, and the robot
+    /// whose path sets it (a `StopMove` holds its changes); earliest first.
+    pub timed: Vec<(f64, String, f64, Option<usize>)>,
+    /// The changes of a robot's path a `StopMove` holds: the robot, the
+    /// seconds of the move left before each, signal, value.
+    pub(crate) held: Vec<(usize, f64, String, f64)>,
     /// Every signal change so far, for the tasks' interrupts.
     pub events: Vec<(String, f64)>,
     pub sync: Sync,
@@ -159,9 +163,54 @@ impl Shared {
 
     /// Sets a signal `delay` seconds from now.
     pub(crate) fn set_signal_later(&mut self, name: &str, value: f64, delay: f64) {
+        self.set_signal_at(name, value, delay, None);
+    }
+
+    /// Sets a signal `delay` seconds from now as robot `robot` passes a
+    /// point of its path (set now when that is not later): a `StopMove`
+    /// holds it with the move ([`Self::hold_path_events`]).
+    pub(crate) fn set_signal_on_path(&mut self, robot: usize, name: &str, value: f64, delay: f64) {
+        if delay > 0.0 {
+            self.set_signal_at(name, value, delay, Some(robot));
+        } else {
+            self.set_signal(name, value);
+        }
+    }
+
+    fn set_signal_at(&mut self, name: &str, value: f64, delay: f64, robot: Option<usize>) {
         let at = self.clock + delay.max(0.0);
         let pos = self.timed.partition_point(|c| c.0 <= at);
-        self.timed.insert(pos, (at, name.to_owned(), value));
+        self.timed.insert(pos, (at, name.to_owned(), value, robot));
+    }
+
+    /// A `StopMove` holds robot `robot`'s move: its path's signal changes
+    /// still to come wait with it.
+    pub(crate) fn hold_path_events(&mut self, robot: usize) {
+        let now = self.clock;
+        let mut kept = Vec::with_capacity(self.timed.len());
+        for (at, name, value, r) in std::mem::take(&mut self.timed) {
+            if r == Some(robot) {
+                self.held.push((robot, at - now, name, value));
+            } else {
+                kept.push((at, name, value, r));
+            }
+        }
+        self.timed = kept;
+    }
+
+    /// The held move of robot `robot` goes on (`StartMove`: its changes
+    /// come as many seconds from now as they were from the stop) or is
+    /// dropped (`ClearPath`: they never come).
+    pub(crate) fn release_path_events(&mut self, robot: usize, go_on: bool) {
+        let (mine, others): (Vec<_>, Vec<_>) = std::mem::take(&mut self.held)
+            .into_iter()
+            .partition(|h| h.0 == robot);
+        self.held = others;
+        if go_on {
+            for (_, left, name, value) in mine {
+                self.set_signal_at(&name, value, left, Some(robot));
+            }
+        }
     }
 
     /// A line the program prints, from task `task` (named when several
@@ -201,8 +250,8 @@ impl Shared {
             self.events.push((name, value));
         }
         let due = self.timed.partition_point(|c| c.0 <= t);
-        let changes: Vec<(f64, String, f64)> = self.timed.drain(..due).collect();
-        for (_, name, value) in changes {
+        let changes: Vec<_> = self.timed.drain(..due).collect();
+        for (_, name, value, _) in changes {
             self.set_signal(&name, value);
         }
         self.clock = self.clock.max(t);
@@ -263,6 +312,7 @@ impl Controller {
                 pers_names: NameMap::default(),
                 io: world.io,
                 timed: Vec::new(),
+                held: Vec::new(),
                 events: Vec::new(),
                 sync: Sync::default(),
                 files: world.files,
