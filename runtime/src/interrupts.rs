@@ -4,6 +4,7 @@
 //! of the controller's event log), and the interrupts that occurred and
 //! wait for their trap routine.
 
+use crate::machine::PathState;
 use std::collections::{HashMap, HashSet, VecDeque};
 
 use rapid_analyzer::names::fold;
@@ -61,6 +62,35 @@ struct Timer {
     period: f64,
     due: f64,
     single: bool,
+    /// A position event's timer (`TriggInt`): it rides on that robot's
+    /// path.
+    path: Option<PathMark>,
+}
+
+/// Where a position event's timer stands on its robot's path: the robot,
+/// and the path's [`PathState::held_for`] and [`PathState::cleared`] when
+/// it was set. While a `StopMove` holds the path the timer waits, then
+/// it is due as much later as the path stood; a `ClearPath` drops it.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct PathMark {
+    pub robot: usize,
+    pub held_for: f64,
+    pub cleared: u32,
+}
+
+impl Timer {
+    /// When it expires, given the robots' paths: `None` while its path
+    /// stands, or for ever once its move was dropped.
+    fn due(&self, paths: &[PathState]) -> Option<f64> {
+        let Some(mark) = self.path else {
+            return Some(self.due);
+        };
+        let path = paths.get(mark.robot).copied().unwrap_or_default();
+        if path.stopped.is_some() || path.cleared != mark.cleared {
+            return None;
+        }
+        Some(self.due + (path.held_for - mark.held_for))
+    }
 }
 
 struct Watch {
@@ -140,12 +170,23 @@ impl Interrupts {
     }
 
     pub(crate) fn add_timer(&mut self, id: i32, now: f64, period: f64, single: bool) {
+        self.push_timer(id, now, period, single, None);
+    }
+
+    /// A single timer due `delay` seconds from now as a robot passes a
+    /// point of its path ([`PathMark`]).
+    pub(crate) fn add_path_timer(&mut self, id: i32, now: f64, delay: f64, mark: PathMark) {
+        self.push_timer(id, now, delay, true, Some(mark));
+    }
+
+    fn push_timer(&mut self, id: i32, now: f64, period: f64, single: bool, path: Option<PathMark>) {
         self.timers.retain(|t| t.id != id);
         self.timers.push(Timer {
             id,
             period,
             due: now + period,
             single,
+            path,
         });
     }
 
@@ -293,16 +334,26 @@ impl Interrupts {
         }
     }
 
-    /// The time the next timer expires.
-    pub(crate) fn next_due(&self) -> Option<f64> {
-        self.timers.iter().map(|t| t.due).reduce(f64::min)
+    /// The time the next timer expires (the robots' paths hold position
+    /// events).
+    pub(crate) fn next_due(&self, paths: &[PathState]) -> Option<f64> {
+        self.timers
+            .iter()
+            .filter_map(|t| t.due(paths))
+            .reduce(f64::min)
     }
 
-    /// The timers due by `t` expire.
-    pub(crate) fn expire(&mut self, t: f64) {
+    /// The timers due by `t` expire; position events whose move
+    /// `ClearPath` dropped are dropped.
+    pub(crate) fn expire(&mut self, t: f64, paths: &[PathState]) {
+        self.timers.retain(|timer| {
+            timer
+                .path
+                .is_none_or(|m| paths.get(m.robot).is_none_or(|p| p.cleared == m.cleared))
+        });
         let mut due = Vec::new();
         for timer in &mut self.timers {
-            if timer.due <= t {
+            if timer.due(paths).is_some_and(|d| d <= t) {
                 due.push((timer.id, timer.single));
                 timer.due += timer.period.max(0.001);
             }

@@ -13,10 +13,12 @@
 //! or not), and a resumed move goes from where the arm is to its end in
 //! the seconds it had left. The signals its path still had to set
 //! (`TriggIO`, `MoveLDO`, a world zone's output) wait with it and come as
-//! many seconds after `StartMove` as they were due after the stop;
-//! `ClearPath` drops them (`TriggInt`'s interrupts are not held). A move ordered on the stopped level (without
-//! `StorePath`) is timed from when it is ordered, as if the stop did not
-//! hold the arm back; its task waits for `StartMove` all the same.
+//! many seconds after `StartMove` as they were due after the stop, and
+//! so do its `TriggInt` interrupts ([`crate::interrupts::PathMark`]);
+//! `ClearPath` drops them all. A move ordered on the stopped level
+//! (without `StorePath`) is timed from when it is ordered, as if the stop
+//! did not hold the arm back; its task waits for `StartMove` all the
+//! same.
 
 use super::{Args, Cx, Done};
 use crate::machine::{R, Stopped};
@@ -101,6 +103,9 @@ pub(crate) fn start_move(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
             split_record(cx, r, &stopped, now);
         }
         cx.sh.release_path_events(i, true);
+        if let Some(p) = cx.sh.paths.get_mut(i) {
+            p.held_for += now - stopped.at;
+        }
     }
     Ok(Done::Next)
 }
@@ -187,6 +192,7 @@ pub(crate) fn clear_path(cx: &mut Cx<'_>, _: &mut Args) -> R<Done> {
     let level = path.level;
     if let Some(stopped) = path.stopped.as_mut().filter(|s| s.level == level) {
         stopped.left = 0.0;
+        path.cleared += 1;
         if let Some(r) = cx.sh.robots.get_mut(own).and_then(Option::as_mut) {
             r.resume(now, 0.0, false);
         }

@@ -192,8 +192,14 @@ pub(crate) fn trigg_move(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
         if e.signal.is_empty() {
             // A single timer due then: the trap runs as the robot passes.
             let now = cx.now();
+            let path = cx.sh.paths.get(index).copied().unwrap_or_default();
+            let mark = crate::interrupts::PathMark {
+                robot: index,
+                held_for: path.held_for,
+                cleared: path.cleared,
+            };
             cx.m.interrupts
-                .add_timer(e.value as i32, now, delay.max(0.0), true);
+                .add_path_timer(e.value as i32, now, delay.max(0.0), mark);
         } else {
             cx.sh.set_signal_on_path(index, &e.signal, e.value, delay);
         }

@@ -595,7 +595,7 @@ impl Controller {
         let mut any = real;
         for &i in &waiting {
             let t = &self.tasks[i];
-            let timer = t.interrupts.next_due();
+            let timer = t.interrupts.next_due(&self.sh.paths);
             real = earlier(real, timer);
             any = earlier(any, timer);
             let wake = t.wake_time(&self.sh);
@@ -634,7 +634,7 @@ impl Controller {
         }
         self.sh.advance_to(t);
         for task in &mut self.tasks {
-            task.interrupts.expire(t);
+            task.interrupts.expire(t, &self.sh.paths);
         }
         None
     }

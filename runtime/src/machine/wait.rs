@@ -26,6 +26,11 @@ pub(crate) struct Wait {
 pub(crate) struct PathState {
     pub level: u32,
     pub stopped: Option<Stopped>,
+    /// The seconds the path has stood under `StopMove`s that are over,
+    /// and how many stopped moves `ClearPath` dropped: what a position
+    /// event's timer ([`crate::interrupts::PathMark`]) is measured by.
+    pub held_for: f64,
+    pub cleared: u32,
 }
 
 /// A move stopped by `StopMove`: the path level it was made on, and the
