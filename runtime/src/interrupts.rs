@@ -4,7 +4,7 @@
 //! of the controller's event log), and the interrupts that occurred and
 //! wait for their trap routine.
 
-use crate::machine::PathState;
+use crate::machine::{PathState, level_slot};
 use std::collections::{HashMap, HashSet, VecDeque};
 
 use rapid_analyzer::names::fold;
@@ -68,28 +68,41 @@ struct Timer {
 }
 
 /// Where a position event's timer stands on its robot's path: the robot,
-/// and the path's [`PathState::held_for`] and [`PathState::cleared`] when
-/// it was set. While a `StopMove` holds the path the timer waits, then
-/// it is due as much later as the path stood; a `ClearPath` drops it.
+/// the path level its move was made on, and that level's
+/// [`PathState::held_for`] and [`PathState::cleared`] when it was set.
+/// While a `StopMove` holds that level the timer waits, then it is due as
+/// much later as the level stood; a `ClearPath` of it drops the timer.
+/// (A trap's moves on the level `StorePath` opened are not held by the
+/// stop of the level below.)
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct PathMark {
     pub robot: usize,
+    pub level: u32,
     pub held_for: f64,
     pub cleared: u32,
 }
 
+impl PathMark {
+    /// Its move was dropped (`ClearPath`).
+    fn dropped(&self, paths: &[PathState]) -> bool {
+        paths
+            .get(self.robot)
+            .is_some_and(|p| p.cleared[level_slot(self.level)] != self.cleared)
+    }
+}
+
 impl Timer {
     /// When it expires, given the robots' paths: `None` while its path
-    /// stands, or for ever once its move was dropped.
+    /// level stands, or for ever once its move was dropped.
     fn due(&self, paths: &[PathState]) -> Option<f64> {
         let Some(mark) = self.path else {
             return Some(self.due);
         };
         let path = paths.get(mark.robot).copied().unwrap_or_default();
-        if path.stopped.is_some() || path.cleared != mark.cleared {
+        if path.holds(mark.level) || mark.dropped(paths) {
             return None;
         }
-        Some(self.due + (path.held_for - mark.held_for))
+        Some(self.due + (path.held_for[level_slot(mark.level)] - mark.held_for))
     }
 }
 
@@ -346,11 +359,8 @@ impl Interrupts {
     /// The timers due by `t` expire; position events whose move
     /// `ClearPath` dropped are dropped.
     pub(crate) fn expire(&mut self, t: f64, paths: &[PathState]) {
-        self.timers.retain(|timer| {
-            timer
-                .path
-                .is_none_or(|m| paths.get(m.robot).is_none_or(|p| p.cleared == m.cleared))
-        });
+        self.timers
+            .retain(|timer| timer.path.is_none_or(|m| !m.dropped(paths)));
         let mut due = Vec::new();
         for timer in &mut self.timers {
             if timer.due(paths).is_some_and(|d| d <= t) {

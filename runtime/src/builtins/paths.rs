@@ -104,7 +104,7 @@ pub(crate) fn start_move(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
         }
         cx.sh.release_path_events(i, true);
         if let Some(p) = cx.sh.paths.get_mut(i) {
-            p.held_for += now - stopped.at;
+            p.held_for[crate::machine::level_slot(stopped.level)] += now - stopped.at;
         }
     }
     Ok(Done::Next)
@@ -192,7 +192,7 @@ pub(crate) fn clear_path(cx: &mut Cx<'_>, _: &mut Args) -> R<Done> {
     let level = path.level;
     if let Some(stopped) = path.stopped.as_mut().filter(|s| s.level == level) {
         stopped.left = 0.0;
-        path.cleared += 1;
+        path.cleared[crate::machine::level_slot(level)] += 1;
         if let Some(r) = cx.sh.robots.get_mut(own).and_then(Option::as_mut) {
             r.resume(now, 0.0, false);
         }

@@ -26,11 +26,21 @@ pub(crate) struct Wait {
 pub(crate) struct PathState {
     pub level: u32,
     pub stopped: Option<Stopped>,
-    /// The seconds the path has stood under `StopMove`s that are over,
-    /// and how many stopped moves `ClearPath` dropped: what a position
-    /// event's timer ([`crate::interrupts::PathMark`]) is measured by.
-    pub held_for: f64,
-    pub cleared: u32,
+    /// The seconds each path level has stood under `StopMove`s that are
+    /// over, and how many of its stopped moves `ClearPath` dropped: what
+    /// a position event's timer ([`crate::interrupts::PathMark`]) is
+    /// measured by (levels past the last share its entry).
+    pub held_for: [f64; LEVELS],
+    pub cleared: [u32; LEVELS],
+}
+
+/// The path levels [`PathState`] keeps apart (a trap's `StorePath` makes
+/// the second).
+pub(crate) const LEVELS: usize = 4;
+
+/// The entry of path level `level` in [`PathState`]'s per-level arrays.
+pub(crate) fn level_slot(level: u32) -> usize {
+    (level as usize).min(LEVELS - 1)
 }
 
 /// A move stopped by `StopMove`: the path level it was made on, and the
