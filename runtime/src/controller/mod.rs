@@ -282,16 +282,12 @@ pub enum Event {
     Running,
 }
 
-struct Meta {
-    kind: TaskKind,
-    entry: Option<u32>,
-}
-
 /// A controller with its tasks.
 pub struct Controller {
     sh: Shared,
     tasks: Vec<Machine>,
-    meta: Vec<Meta>,
+    /// Each task's entry routine (`None`: loaded, not started), by index.
+    entries: Vec<Option<u32>>,
     started: bool,
 }
 
@@ -339,7 +335,7 @@ impl Controller {
                 text_tables: Vec::new(),
             },
             tasks: Vec::new(),
-            meta: Vec::new(),
+            entries: Vec::new(),
             started: false,
         }
     }
@@ -359,10 +355,7 @@ impl Controller {
         self.sh.rmq.add_task();
         let m = Machine::new(spec.program, spec.name, index + 1, &mut self.sh);
         self.tasks.push(m);
-        self.meta.push(Meta {
-            kind: spec.kind,
-            entry: spec.entry,
-        });
+        self.entries.push(spec.entry);
         index
     }
 
@@ -433,9 +426,9 @@ impl Controller {
         self.begin();
         self.started = true;
         let mut order: Vec<usize> = (0..self.tasks.len()).collect();
-        order.sort_by_key(|&i| self.meta[i].kind == TaskKind::Normal);
+        order.sort_by_key(|&i| self.sh.kinds[i] == TaskKind::Normal);
         for i in order {
-            let Some(entry) = self.meta[i].entry else {
+            let Some(entry) = self.entries[i] else {
                 continue;
             };
             if let Err(why) = self.tasks[i].start(entry) {
@@ -487,7 +480,7 @@ impl Controller {
             let mut running: Vec<usize> = (0..self.tasks.len())
                 .filter(|&i| self.tasks[i].is_running())
                 .collect();
-            running.sort_by_key(|&i| self.meta[i].kind == TaskKind::Normal);
+            running.sort_by_key(|&i| self.sh.kinds[i] == TaskKind::Normal);
             let slice = if running.len() == 1 { LONE_SLICE } else { 1 };
             let mut ran = false;
             for i in running {
@@ -531,8 +524,8 @@ impl Controller {
         let normal: Vec<&Machine> = self
             .tasks
             .iter()
-            .zip(&self.meta)
-            .filter(|(_, m)| m.kind == TaskKind::Normal)
+            .zip(&self.sh.kinds)
+            .filter(|(_, k)| **k == TaskKind::Normal)
             .map(|(t, _)| t)
             .collect();
         if normal.is_empty() {
@@ -545,8 +538,8 @@ impl Controller {
     /// A task stopped the program: the normal tasks still running stop
     /// where they are.
     fn stop_normal_tasks(&mut self, why: &str) {
-        for (t, meta) in self.tasks.iter_mut().zip(&self.meta) {
-            if meta.kind == TaskKind::Normal && t.is_running() {
+        for (t, kind) in self.tasks.iter_mut().zip(&self.sh.kinds) {
+            if *kind == TaskKind::Normal && t.is_running() {
                 t.finish(Outcome {
                     status: Status::Stopped,
                     message: why.to_owned(),
