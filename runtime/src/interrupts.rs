@@ -4,7 +4,7 @@
 //! of the controller's event log), and the interrupts that occurred and
 //! wait for their trap routine.
 
-use crate::machine::{PathState, level_slot};
+use crate::machine::{PathMark, PathState, due_on};
 use std::collections::{HashMap, HashSet, VecDeque};
 
 use rapid_analyzer::names::fold;
@@ -67,42 +67,11 @@ struct Timer {
     path: Option<PathMark>,
 }
 
-/// Where a position event's timer stands on its robot's path: the robot,
-/// the path level its move was made on, and that level's
-/// [`PathState::held_for`] and [`PathState::cleared`] when it was set.
-/// While a `StopMove` holds that level the timer waits, then it is due as
-/// much later as the level stood; a `ClearPath` of it drops the timer.
-/// (A trap's moves on the level `StorePath` opened are not held by the
-/// stop of the level below.)
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct PathMark {
-    pub robot: usize,
-    pub level: u32,
-    pub held_for: f64,
-    pub cleared: u32,
-}
-
-impl PathMark {
-    /// Its move was dropped (`ClearPath`).
-    fn dropped(&self, paths: &[PathState]) -> bool {
-        paths
-            .get(self.robot)
-            .is_some_and(|p| p.cleared[level_slot(self.level)] != self.cleared)
-    }
-}
-
 impl Timer {
-    /// When it expires, given the robots' paths: `None` while its path
-    /// level stands, or for ever once its move was dropped.
+    /// When it expires, given the robots' paths (a position event's
+    /// timer rides on its robot's path).
     fn due(&self, paths: &[PathState]) -> Option<f64> {
-        let Some(mark) = self.path else {
-            return Some(self.due);
-        };
-        let path = paths.get(mark.robot).copied().unwrap_or_default();
-        if path.holds(mark.level) || mark.dropped(paths) {
-            return None;
-        }
-        Some(self.due + (path.held_for[level_slot(mark.level)] - mark.held_for))
+        due_on(self.due, self.path.as_ref(), paths)
     }
 }
 

@@ -11,11 +11,11 @@
 //!
 //! Simulated as time: a stop comes at once (no braking distance, `\Quick`
 //! or not), and a resumed move goes from where the arm is to its end in
-//! the seconds it had left. The signals its path still had to set
-//! (`TriggIO`, `MoveLDO`, a world zone's output) wait with it and come as
-//! many seconds after `StartMove` as they were due after the stop, and
-//! so do its `TriggInt` interrupts ([`crate::interrupts::PathMark`]);
-//! `ClearPath` drops them all. A move ordered on the stopped level
+//! the seconds it had left. The events its path still had to set
+//! (`TriggIO`, `MoveLDO`, a world zone's output, `TriggInt`'s
+//! interrupts) wait with it and come as many seconds after `StartMove` as
+//! they were due after the stop; `ClearPath` drops them
+//! ([`crate::machine::PathMark`]). A move ordered on the stopped level
 //! (without `StorePath`) is timed from when it is ordered, as if the stop
 //! did not hold the arm back; its task waits for `StartMove` all the
 //! same.
@@ -60,11 +60,8 @@ pub(crate) fn stop_move(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
         } else {
             0.0
         };
-        if moving {
-            if let Some(t) = cx.sh.motion_until.get_mut(i) {
-                *t = now;
-            }
-            cx.sh.hold_path_events(i);
+        if moving && let Some(t) = cx.sh.motion_until.get_mut(i) {
+            *t = now;
         }
         let joints = cx
             .sh
@@ -102,9 +99,8 @@ pub(crate) fn start_move(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
         if let Some(r) = stopped.record {
             split_record(cx, r, &stopped, now);
         }
-        cx.sh.release_path_events(i, true);
         if let Some(p) = cx.sh.paths.get_mut(i) {
-            p.held_for[crate::machine::level_slot(stopped.level)] += now - stopped.at;
+            p.held(stopped.level, now - stopped.at);
         }
     }
     Ok(Done::Next)
@@ -192,11 +188,10 @@ pub(crate) fn clear_path(cx: &mut Cx<'_>, _: &mut Args) -> R<Done> {
     let level = path.level;
     if let Some(stopped) = path.stopped.as_mut().filter(|s| s.level == level) {
         stopped.left = 0.0;
-        path.cleared[crate::machine::level_slot(level)] += 1;
+        path.clear(level);
         if let Some(r) = cx.sh.robots.get_mut(own).and_then(Option::as_mut) {
             r.resume(now, 0.0, false);
         }
-        cx.sh.release_path_events(own, false);
     }
     Ok(Done::Next)
 }

@@ -192,14 +192,7 @@ pub(crate) fn trigg_move(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
         if e.signal.is_empty() {
             // A single timer due then: the trap runs as the robot passes.
             let now = cx.now();
-            let path = cx.sh.paths.get(index).copied().unwrap_or_default();
-            let slot = crate::machine::level_slot(path.level);
-            let mark = crate::interrupts::PathMark {
-                robot: index,
-                level: path.level,
-                held_for: path.held_for[slot],
-                cleared: path.cleared[slot],
-            };
+            let mark = crate::machine::PathMark::now(&cx.sh.paths, index);
             cx.m.interrupts
                 .add_path_timer(e.value as i32, now, delay.max(0.0), mark);
         } else {

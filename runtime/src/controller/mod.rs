@@ -56,10 +56,7 @@ pub(crate) struct Shared {
     /// Signal changes the controller makes later (pulses, `\SDelay`, the
     /// events of a robot's path): time, signal, value, and the robot
     /// whose path sets it (a `StopMove` holds its changes); earliest first.
-    pub timed: Vec<(f64, String, f64, Option<usize>)>,
-    /// The changes of a robot's path a `StopMove` holds: the robot, the
-    /// seconds of the move left before each, signal, value.
-    pub(crate) held: Vec<(usize, f64, String, f64)>,
+    pub timed: Vec<(f64, String, f64, Option<crate::machine::PathMark>)>,
     /// Every signal change so far, for the tasks' interrupts.
     pub events: Vec<(String, f64)>,
     pub sync: Sync,
@@ -168,49 +165,26 @@ impl Shared {
 
     /// Sets a signal `delay` seconds from now as robot `robot` passes a
     /// point of its path (set now when that is not later): a `StopMove`
-    /// holds it with the move ([`Self::hold_path_events`]).
+    /// holds it with the move ([`crate::machine::PathMark`]).
     pub(crate) fn set_signal_on_path(&mut self, robot: usize, name: &str, value: f64, delay: f64) {
         if delay > 0.0 {
-            self.set_signal_at(name, value, delay, Some(robot));
+            let mark = crate::machine::PathMark::now(&self.paths, robot);
+            self.set_signal_at(name, value, delay, Some(mark));
         } else {
             self.set_signal(name, value);
         }
     }
 
-    fn set_signal_at(&mut self, name: &str, value: f64, delay: f64, robot: Option<usize>) {
+    fn set_signal_at(
+        &mut self,
+        name: &str,
+        value: f64,
+        delay: f64,
+        mark: Option<crate::machine::PathMark>,
+    ) {
         let at = self.clock + delay.max(0.0);
         let pos = self.timed.partition_point(|c| c.0 <= at);
-        self.timed.insert(pos, (at, name.to_owned(), value, robot));
-    }
-
-    /// A `StopMove` holds robot `robot`'s move: its path's signal changes
-    /// still to come wait with it.
-    pub(crate) fn hold_path_events(&mut self, robot: usize) {
-        let now = self.clock;
-        let mut kept = Vec::with_capacity(self.timed.len());
-        for (at, name, value, r) in std::mem::take(&mut self.timed) {
-            if r == Some(robot) {
-                self.held.push((robot, at - now, name, value));
-            } else {
-                kept.push((at, name, value, r));
-            }
-        }
-        self.timed = kept;
-    }
-
-    /// The held move of robot `robot` goes on (`StartMove`: its changes
-    /// come as many seconds from now as they were from the stop) or is
-    /// dropped (`ClearPath`: they never come).
-    pub(crate) fn release_path_events(&mut self, robot: usize, go_on: bool) {
-        let (mine, others): (Vec<_>, Vec<_>) = std::mem::take(&mut self.held)
-            .into_iter()
-            .partition(|h| h.0 == robot);
-        self.held = others;
-        if go_on {
-            for (_, left, name, value) in mine {
-                self.set_signal_at(&name, value, left, Some(robot));
-            }
-        }
+        self.timed.insert(pos, (at, name.to_owned(), value, mark));
     }
 
     /// A line the program prints, from task `task` (named when several
@@ -226,7 +200,11 @@ impl Shared {
     /// The time of the next change from outside or of the controller's
     /// own.
     fn next_event(&self) -> Option<f64> {
-        let timed = self.timed.first().map(|c| c.0);
+        let timed = self
+            .timed
+            .iter()
+            .filter_map(|c| crate::machine::due_on(c.0, c.3.as_ref(), &self.paths))
+            .reduce(f64::min);
         match (self.io.next_change(), timed) {
             (Some(a), Some(b)) => Some(a.min(b)),
             (a, b) => a.or(b),
@@ -249,9 +227,25 @@ impl Shared {
         for (name, value) in self.io.advance(t) {
             self.events.push((name, value));
         }
-        let due = self.timed.partition_point(|c| c.0 <= t);
-        let changes: Vec<_> = self.timed.drain(..due).collect();
-        for (_, name, value, _) in changes {
+        // The changes due by then, in the order they come (a path's are
+        // later by the time a `StopMove` held it; a dropped move's never
+        // come).
+        let paths = &self.paths;
+        let mut changes = Vec::new();
+        self.timed.retain(|(at, name, value, mark)| {
+            if mark.is_some_and(|m| m.dropped(paths)) {
+                return false;
+            }
+            match crate::machine::due_on(*at, mark.as_ref(), paths) {
+                Some(due) if due <= t => {
+                    changes.push((due, name.clone(), *value));
+                    false
+                }
+                _ => true,
+            }
+        });
+        changes.sort_by(|a, b| a.0.total_cmp(&b.0));
+        for (_, name, value) in changes {
             self.set_signal(&name, value);
         }
         self.clock = self.clock.max(t);
@@ -308,7 +302,6 @@ impl Controller {
                 pers_names: NameMap::default(),
                 io: world.io,
                 timed: Vec::new(),
-                held: Vec::new(),
                 events: Vec::new(),
                 sync: Sync::default(),
                 files: world.files,

@@ -24,7 +24,8 @@ use crate::program::{Location, Program};
 pub(crate) use data::{Place, Root, describe, is_signal};
 pub(crate) use fault::{Fault, FaultKind, R, fault, invalid, named_error, rapid_error};
 pub(crate) use wait::{
-    OperatorWait, PathState, SearchWait, SignalTest, Stopped, Timeout, Wait, WaitKind, level_slot,
+    OperatorWait, PathMark, PathState, SearchWait, SignalTest, Stopped, Timeout, Wait, WaitKind,
+    due_on,
 };
 
 /// How a task's run ended.

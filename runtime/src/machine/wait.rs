@@ -28,19 +28,74 @@ pub(crate) struct PathState {
     pub stopped: Option<Stopped>,
     /// The seconds each path level has stood under `StopMove`s that are
     /// over, and how many of its stopped moves `ClearPath` dropped: what
-    /// a position event's timer ([`crate::interrupts::PathMark`]) is
-    /// measured by (levels past the last share its entry).
-    pub held_for: [f64; LEVELS],
-    pub cleared: [u32; LEVELS],
+    /// the events of a path ([`PathMark`]) are measured by (levels past
+    /// the last share its entry).
+    held_for: [f64; LEVELS],
+    cleared: [u32; LEVELS],
 }
 
 /// The path levels [`PathState`] keeps apart (a trap's `StorePath` makes
 /// the second).
-pub(crate) const LEVELS: usize = 4;
+const LEVELS: usize = 4;
 
 /// The entry of path level `level` in [`PathState`]'s per-level arrays.
-pub(crate) fn level_slot(level: u32) -> usize {
+fn level_slot(level: u32) -> usize {
     (level as usize).min(LEVELS - 1)
+}
+
+/// Where an event of a robot's path (a `TriggIO` output, `MoveLDO`'s
+/// signal, a world zone's output, a `TriggInt` interrupt) stands: the
+/// robot, the path level its move was made on, and that level's
+/// [`PathState::held_for`] and [`PathState::cleared`] when the event was
+/// planned. While a `StopMove` holds that level the event waits, then it
+/// comes as much later as the level stood; a `ClearPath` of the level
+/// drops it. (A trap's moves on the level `StorePath` opened are not held
+/// by the stop of the level below.)
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct PathMark {
+    robot: usize,
+    level: u32,
+    held_for: f64,
+    cleared: u32,
+}
+
+impl PathMark {
+    /// The mark of an event of the move robot `robot` makes now.
+    pub(crate) fn now(paths: &[PathState], robot: usize) -> PathMark {
+        let path = paths.get(robot).copied().unwrap_or_default();
+        let slot = level_slot(path.level);
+        PathMark {
+            robot,
+            level: path.level,
+            held_for: path.held_for[slot],
+            cleared: path.cleared[slot],
+        }
+    }
+
+    /// Its move was dropped (`ClearPath`): the event never comes.
+    pub(crate) fn dropped(&self, paths: &[PathState]) -> bool {
+        paths
+            .get(self.robot)
+            .is_some_and(|p| p.cleared[level_slot(self.level)] != self.cleared)
+    }
+
+    /// When an event planned for `at` comes: `None` while its level
+    /// stands, or for ever once its move was dropped.
+    pub(crate) fn due(&self, at: f64, paths: &[PathState]) -> Option<f64> {
+        let path = paths.get(self.robot).copied().unwrap_or_default();
+        if path.holds(self.level) || self.dropped(paths) {
+            return None;
+        }
+        Some(at + (path.held_for[level_slot(self.level)] - self.held_for))
+    }
+}
+
+/// When an event planned for `at` comes, on a path (`Some` mark) or not.
+pub(crate) fn due_on(at: f64, mark: Option<&PathMark>, paths: &[PathState]) -> Option<f64> {
+    match mark {
+        Some(m) => m.due(at, paths),
+        None => Some(at),
+    }
 }
 
 /// A move stopped by `StopMove`: the path level it was made on, and the
@@ -61,6 +116,18 @@ impl PathState {
     /// again)?
     pub(crate) fn holds(&self, level: u32) -> bool {
         self.stopped.is_some_and(|s| s.level == level)
+    }
+
+    /// A stop of path level `level` is over after `seconds`: its events
+    /// come that much later.
+    pub(crate) fn held(&mut self, level: u32, seconds: f64) {
+        self.held_for[level_slot(level)] += seconds;
+    }
+
+    /// `ClearPath` dropped the stopped move of level `level`, and its
+    /// events.
+    pub(crate) fn clear(&mut self, level: u32) {
+        self.cleared[level_slot(level)] += 1;
     }
 }
 
