@@ -33,8 +33,8 @@ pub(crate) struct OpenFiles {
     dirs: HashMap<i32, (Vec<String>, usize)>,
     next: i32,
     /// When the run last changed, read or renamed each file (simulated
-    /// seconds), by [`stamp_key`]; a file the run has not touched dates
-    /// from its start.
+    /// seconds), by [`crate::world::path_key`]; a file the run has not
+    /// touched dates from its start.
     stamps: HashMap<String, Stamp>,
 }
 
@@ -46,15 +46,15 @@ struct Stamp {
     changed: f64,
 }
 
-/// A path as the stamps know it: any case, `HOME:/a` and `HOME:a` alike.
-fn stamp_key(path: &str) -> String {
-    path.to_ascii_lowercase().replacen(":/", ":", 1)
-}
-
 /// Notes that the run wrote the file `path` now (or only read it).
 pub(super) fn touch(cx: &mut Cx<'_>, path: &str, written: bool) {
     let now = cx.now();
-    let s = cx.sh.open.stamps.entry(stamp_key(path)).or_default();
+    let s = cx
+        .sh
+        .open
+        .stamps
+        .entry(crate::world::path_key(path))
+        .or_default();
     s.accessed = now;
     if written {
         s.modified = now;
@@ -414,7 +414,7 @@ pub(crate) fn file_time(cx: &mut Cx<'_>, a: &mut Args) -> R<Value> {
         .sh
         .open
         .stamps
-        .get(&stamp_key(&name))
+        .get(&crate::world::path_key(&name))
         .copied()
         .unwrap_or_default();
     let t = if a.given("AccessTime") {
@@ -474,10 +474,10 @@ pub(crate) fn rename_file(cx: &mut Cx<'_>, a: &mut Args) -> R<Done> {
             .sh
             .open
             .stamps
-            .remove(&stamp_key(&from))
+            .remove(&crate::world::path_key(&from))
             .unwrap_or_default();
         stamp.changed = cx.now();
-        cx.sh.open.stamps.insert(stamp_key(&to), stamp);
+        cx.sh.open.stamps.insert(crate::world::path_key(&to), stamp);
     }
     done_or_error(cx, a, r)
 }

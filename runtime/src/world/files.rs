@@ -106,6 +106,13 @@ fn controller_path(name: &str) -> Result<Vec<String>, FileError> {
     Ok(parts)
 }
 
+/// The file a controller path names in the sandbox, as one string
+/// (`HOME:/a/b.txt`, `HOME:a/b.txt` and `TEMP:/a/./b.txt` alike): what the
+/// run keeps per file (`FileTime`'s stamps).
+pub(crate) fn path_key(name: &str) -> String {
+    controller_path(name).map_or_else(|_| name.to_owned(), |parts| parts.join("/"))
+}
+
 fn os_error(name: &str, e: &std::io::Error) -> FileError {
     if e.kind() == std::io::ErrorKind::NotFound {
         FileError::NotFound(format!("{name}: {e}"))

@@ -21,6 +21,7 @@ mod sockets;
 mod system;
 
 pub use arm::ArmRobot;
+pub(crate) use files::path_key;
 pub use files::{FileError, FileKind, FileSystem, MemoryFs, SandboxFs};
 pub use io::{Io, ScriptedIo};
 pub use pendant::{Expect, NoOperator, Pendant, Question, Reply, ScriptedOperator, parse_answer};
