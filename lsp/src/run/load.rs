@@ -263,27 +263,21 @@ pub fn controller_in(
     let with_entry: Vec<usize> = (0..out.len())
         .filter(|&i| declares(&out[i].task, entry))
         .collect();
-    // Several do: the folder's own modules are the task the folder names
-    // (the others are named by their own folders or program files).
-    let own = || {
-        let given = path.to_string_lossy();
-        let given = match given.trim_end_matches(['/', '\\']) {
-            "." => "",
-            g => g,
-        };
-        let own: Vec<usize> = with_entry
-            .iter()
-            .copied()
-            .filter(|&i| out[i].task.key.trim_end_matches(['/', '\\']) == given)
-            .collect();
-        own
-    };
     let chosen = match with_entry.as_slice() {
         [i] => Some(*i),
-        _ => match own().as_slice() {
-            [i] => Some(*i),
-            _ => None,
-        },
+        // Several do: the folder's own modules are the task the folder
+        // names (the others are named by their own folders or files).
+        _ => {
+            let given = path.to_string_lossy();
+            let given = match given.trim_end_matches(['/', '\\']) {
+                "." => "",
+                g => g,
+            };
+            with_entry
+                .iter()
+                .copied()
+                .find(|&i| out[i].task.key.trim_end_matches(['/', '\\']) == given)
+        }
     };
     match chosen {
         Some(i) => {
