@@ -108,6 +108,8 @@ pub(crate) struct Pers {
     pub module: usize,
     pub range: Range<usize>,
     pub start: Option<Arc<Code>>,
+    /// The declaration gives a value (`PERS num n := 5;`).
+    pub valued: bool,
 }
 
 pub(crate) struct RoutineInfo {
@@ -228,6 +230,7 @@ impl Program {
                             module,
                             range: d.range.clone(),
                             start: None,
+                            valued: d.init.is_some(),
                         });
                         Home::Pers(self.pers.len() as u32 - 1)
                     } else {

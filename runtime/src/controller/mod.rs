@@ -51,6 +51,10 @@ pub(crate) struct Shared {
     pub pers_init: Vec<Init>,
     /// How many declarations each persistent has (in every task's program).
     pers_users: Vec<u32>,
+    /// Each persistent's value came from a declaration that gives one
+    /// (`PERS num n := 5;`), not from one that gives none (`PERS num n;`,
+    /// which takes the value another task's declaration gives).
+    pers_valued: Vec<bool>,
     pers_names: NameMap<u32>,
     pub io: Box<dyn Io>,
     /// Signal changes the controller makes later (pulses, `\SDelay`, the
@@ -116,6 +120,7 @@ impl Shared {
         self.pers.push(Value::Num(0.0));
         self.pers_init.push(Init::Pending);
         self.pers_users.push(1);
+        self.pers_valued.push(false);
         self.pers_names.insert(key, i);
         i
     }
@@ -131,14 +136,19 @@ impl Shared {
                 && let Some(s) = self.pers_init.get_mut(i)
             {
                 *s = Init::Pending;
+                if let Some(v) = self.pers_valued.get_mut(i) {
+                    *v = false;
+                }
             }
         }
     }
 
-    /// A persistent's starting value (the first task that sets it wins).
-    pub(crate) fn set_persistent(&mut self, i: u32, v: Value) {
+    /// A persistent's starting value: the first task that sets it wins,
+    /// but a declaration that gives a value (`valued`) wins over those
+    /// that give none.
+    pub(crate) fn set_persistent(&mut self, i: u32, v: Value, valued: bool) {
         let i = i as usize;
-        if matches!(self.pers_init.get(i), Some(Init::Ready)) {
+        if matches!(self.pers_init.get(i), Some(Init::Ready)) && !self.takes_value(i, valued) {
             return;
         }
         if let Some(slot) = self.pers.get_mut(i) {
@@ -147,6 +157,15 @@ impl Shared {
         if let Some(s) = self.pers_init.get_mut(i) {
             *s = Init::Ready;
         }
+        if let Some(s) = self.pers_valued.get_mut(i) {
+            *s = valued;
+        }
+    }
+
+    /// Does a declaration of persistent `i` that gives a value (`valued`)
+    /// replace the value it has (from a declaration that gave none)?
+    pub(crate) fn takes_value(&self, i: usize, valued: bool) -> bool {
+        valued && self.pers_valued.get(i) == Some(&false)
     }
 
     /// Sets a signal; a change is an event for the interrupts.
@@ -299,6 +318,7 @@ impl Controller {
                 pers: Vec::new(),
                 pers_init: Vec::new(),
                 pers_users: Vec::new(),
+                pers_valued: Vec::new(),
                 pers_names: NameMap::default(),
                 io: world.io,
                 timed: Vec::new(),

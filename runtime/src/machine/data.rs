@@ -383,8 +383,11 @@ impl Machine {
     }
 
     /// Runs the starting value of every data object of the task (and the
-    /// shared persistents no task has set yet), in the task's order.
-    pub(crate) fn initialise(&mut self, sh: &mut Shared) {
+    /// shared persistents no task has set yet), in the task's order. As
+    /// the program starts (`at_start`), a persistent that an earlier
+    /// task declared without a value takes the value this task's
+    /// declaration gives.
+    pub(crate) fn initialise(&mut self, sh: &mut Shared, at_start: bool) {
         for g in 0..self.prog.globals.len() {
             if !matches!(self.init.get(g), Some(Init::Pending)) {
                 continue;
@@ -402,7 +405,9 @@ impl Machine {
         }
         for k in 0..self.pers_map.len() {
             let i = self.pers_map[k] as usize;
-            if !matches!(sh.pers_init.get(i), Some(Init::Pending)) {
+            let valued = self.prog.pers.get(k).is_some_and(|p| p.valued);
+            let replaces = at_start && sh.takes_value(i, valued);
+            if !matches!(sh.pers_init.get(i), Some(Init::Pending)) && !replaces {
                 continue;
             }
             if let Some(code) = self.prog.pers.get(k).and_then(|p| p.start.clone()) {
@@ -432,7 +437,7 @@ impl Machine {
         // The starting values are computed on a stack of their own: the
         // running routines (the one that loads) wait below, untouched.
         let running = std::mem::take(&mut self.frames);
-        self.initialise(sh);
+        self.initialise(sh, false);
         self.frames = running;
     }
 

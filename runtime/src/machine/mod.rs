@@ -355,7 +355,7 @@ impl Machine {
             number,
             prog,
         };
-        m.initialise(shared);
+        m.initialise(shared, true);
         m
     }
 

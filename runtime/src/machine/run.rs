@@ -627,7 +627,9 @@ impl Machine {
                         }
                         Target::Pers(k) => {
                             if let Some(&i) = self.pers_map.get(k as usize) {
-                                sh.set_persistent(i, v);
+                                let valued =
+                                    self.prog.pers.get(k as usize).is_some_and(|p| p.valued);
+                                sh.set_persistent(i, v, valued);
                             }
                         }
                         Target::Slot => {}
