@@ -94,7 +94,8 @@ fn a_backup_runs_every_task_together() {
 
 #[test]
 fn a_backup_without_its_syspar_takes_the_task_names_backinfo_then_rapid_toml_give() {
-    // Neither: the tasks keep their folders' names, and the run says so.
+    // Neither: the names the program uses are given to the numbered
+    // folders (`T_ROBn` to `TASKn`), and the run says so.
     let dir = scratch("run-tasks-unnamed");
     write(
         &dir,
@@ -103,10 +104,36 @@ fn a_backup_without_its_syspar_takes_the_task_names_backinfo_then_rapid_toml_giv
             ("cell/RAPID/TASK2/PROGMOD/Main2.mod", ROB2),
         ],
     );
+    let (code, out, err) = run(&dir, &["run", "cell"]);
+    assert_eq!(code, Some(0), "{err}");
+    assert_eq!(
+        out,
+        "[T_ROB1] ready\n[T_ROB1] T_ROB1 done\n[T_ROB2] done 2\n"
+    );
+    assert!(
+        err.contains("note: the backup does not say what its tasks are called (no SYS.cfg, no BACKINFO): TASK2 is taken to be T_ROB2, as RobotWare calls the task of robot 2"),
+        "{err}"
+    );
+    // A name no folder can be given stays no task's: the run says where
+    // names come from.
+    let dir = scratch("run-tasks-unnamed-other");
+    write(
+        &dir,
+        &[
+            (
+                "cell/RAPID/TASK1/PROGMOD/Main1.mod",
+                &ROB1.replace("T_ROB2", "T_PAINT"),
+            ),
+            (
+                "cell/RAPID/TASK2/PROGMOD/Main2.mod",
+                &ROB2.replace("T_ROB2", "T_PAINT"),
+            ),
+        ],
+    );
     let (code, _, err) = run(&dir, &["run", "cell"]);
     assert_eq!(code, Some(1), "{err}");
     assert!(
-        err.contains("there is no task T_ROB1 in the controller (its tasks: TASK1, TASK2)"),
+        err.contains("there is no task T_PAINT in the controller (its tasks: T_ROB1, TASK2)"),
         "{err}"
     );
     assert!(

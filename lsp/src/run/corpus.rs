@@ -147,16 +147,30 @@ pub fn sweep(dir: &Path) -> Result<Vec<TaskRun>, String> {
     let mut out = Vec::new();
     for members in groups.values() {
         let lone = members.len() == 1;
-        let tasks: Vec<_> = members
+        let mut notes = Vec::new();
+        let mut tasks: Vec<_> = members
             .iter()
             .map(|(i, t, name)| {
                 let mut run = load::to_run(t, found.settings[*i].as_ref(), lone, "main");
                 if let Some(name) = name {
                     name.clone_into(&mut run.name);
                 }
+                // The modules it lacks, from its repository (the corpus's
+                // top folders).
+                let repository = repository_of(&t.key, dir);
+                let pool: Vec<Arc<Task>> = found
+                    .tasks
+                    .iter()
+                    .filter(|o| repository_of(&o.key, dir) == repository)
+                    .cloned()
+                    .collect();
+                let done = super::missing::complete(&run.task, &pool, &run.entry);
+                run.task = done.task;
+                notes.extend(done.notes);
                 run
             })
             .collect();
+        notes.extend(super::task_names::name_from_use(&mut tasks));
         let names: Vec<Member> = tasks
             .iter()
             .map(|t| {
@@ -181,6 +195,7 @@ pub fn sweep(dir: &Path) -> Result<Vec<TaskRun>, String> {
             tasks,
             system,
             home,
+            notes,
         };
         let result = execute(&loaded, &opts, Box::new(|_, _: &str| {}));
         for (name, key, backup, unsupported) in names {
@@ -204,6 +219,17 @@ pub fn sweep(dir: &Path) -> Result<Vec<TaskRun>, String> {
         }
     }
     Ok(out)
+}
+
+/// The repository of the corpus at `dir` that the task `key` is in: the
+/// corpus's first folder on its path (`owner__repo`).
+fn repository_of<'k>(key: &'k str, dir: &Path) -> &'k str {
+    let dir = dir.to_string_lossy();
+    let rest = key.strip_prefix(dir.as_ref()).unwrap_or(key);
+    rest.trim_start_matches(['/', '\\'])
+        .split(['/', '\\'])
+        .next()
+        .unwrap_or_default()
 }
 
 /// The generated page.

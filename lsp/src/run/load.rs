@@ -178,6 +178,9 @@ pub struct Loaded {
     pub system: System,
     /// The controller's `HOME:` folder ([`home_of`]).
     pub home: Option<PathBuf>,
+    /// What loading says of the tasks: the modules taken from the
+    /// repository around them ([`super::missing`]).
+    pub notes: Vec<String>,
 }
 
 /// The controller `path` holds, to run: every task of a backup (or of a
@@ -198,12 +201,65 @@ pub fn controller_in(
     only: Option<&str>,
     entry: Option<&str>,
 ) -> Result<Loaded, String> {
-    let given = entry;
-    let entry = entry.unwrap_or("main");
-    let mut found = tasks_in(env, std::slice::from_ref(&path.to_path_buf()))?;
+    let found = tasks_in(env, std::slice::from_ref(&path.to_path_buf()))?;
     if found.tasks.is_empty() {
         return Err(format!("{}: no RAPID modules found", path.display()));
     }
+    let near = found.tasks.clone();
+    let mut loaded = chosen(found, path, only, entry)?;
+    // The modules the tasks lack: from what was loaded with them, else
+    // from the whole repository (the folder with `.git` around the path).
+    let mut repository = None;
+    for t in &mut loaded.tasks {
+        let mut done = super::missing::complete(&t.task, &near, &t.entry);
+        if done.lacking {
+            let pool = repository.get_or_insert_with(|| {
+                repository_of(path)
+                    .and_then(|root| tasks_in(env, &[root]).ok())
+                    .map(|f| f.tasks)
+                    .unwrap_or_default()
+            });
+            let more = super::missing::complete(&done.task, pool, &t.entry);
+            done.task = more.task;
+            done.notes.extend(more.notes);
+        }
+        t.task = done.task;
+        loaded.notes.extend(done.notes);
+    }
+    Ok(loaded)
+}
+
+/// The repository `path` is in: the nearest folder around it with a
+/// `.git` (not the home folder), named as `path` is (relative to the
+/// working folder when `path` is relative).
+fn repository_of(path: &Path) -> Option<PathBuf> {
+    let full = std::fs::canonicalize(path).ok()?;
+    let root = full.ancestors().find(|a| a.join(".git").exists())?;
+    // A home folder kept in git is no repository of RAPID programs.
+    let home = std::env::var_os("HOME").and_then(|h| std::fs::canonicalize(h).ok());
+    if home.as_deref() == Some(root) {
+        return None;
+    }
+    if path.is_absolute() {
+        return Some(root.to_path_buf());
+    }
+    let here = std::fs::canonicalize(".").ok()?;
+    match root.strip_prefix(&here) {
+        Ok(rel) if rel.as_os_str().is_empty() => Some(PathBuf::from(".")),
+        Ok(rel) => Some(rel.to_path_buf()),
+        Err(_) => Some(root.to_path_buf()),
+    }
+}
+
+/// The task(s) of `found` to run ([`controller`]).
+fn chosen(
+    mut found: Found,
+    path: &Path,
+    only: Option<&str>,
+    entry: Option<&str>,
+) -> Result<Loaded, String> {
+    let given = entry;
+    let entry = entry.unwrap_or("main");
     without_home_files(&mut found, path);
     let mut together =
         found.tasks.len() > 1 && (one_backup(&found.tasks) || folder_of_tasks(path, &found.tasks));
@@ -226,6 +282,7 @@ pub fn controller_in(
             .map(|(t, s)| to_run(t, s.as_ref(), lone, entry))
             .collect(),
     };
+    let notes = super::task_names::name_from_use(&mut out);
     if let Some(name) = only {
         let Some(i) = out.iter().position(|t| t.name.eq_ignore_ascii_case(name)) else {
             let names: Vec<&str> = out.iter().map(|t| t.name.as_str()).collect();
@@ -244,6 +301,7 @@ pub fn controller_in(
             tasks: vec![t],
             system,
             home,
+            notes,
         });
     }
     if let Some(programs) = out
@@ -258,6 +316,7 @@ pub fn controller_in(
             tasks: out,
             system,
             home,
+            notes,
         });
     }
     let with_entry: Vec<usize> = (0..out.len())
@@ -287,6 +346,7 @@ pub fn controller_in(
                 tasks: vec![t],
                 system,
                 home,
+                notes,
             })
         }
         None => {

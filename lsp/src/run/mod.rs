@@ -22,10 +22,12 @@
 #[cfg(test)]
 mod corpus;
 pub mod load;
+mod missing;
 mod multimove;
 pub mod operator;
 pub mod robot;
 pub mod sockets;
+mod task_names;
 pub mod trace;
 
 use std::io::Write;
@@ -189,22 +191,23 @@ impl RunReport {
         out
     }
 
-    /// A task name that names no task, on a controller whose tasks only
-    /// have their folders' names (`TASK1`...: a backup kept without
-    /// `SYS.cfg` and `BACKINFO`): where their names come from.
+    /// A task name that names no task, on a controller whose tasks have
+    /// their folders' names (`TASK1`...: a backup kept without `SYS.cfg`
+    /// and `BACKINFO`, its program's use naming some or none): where their
+    /// names come from.
     fn unnamed_tasks_help(&self) -> Option<String> {
         let unknown = self.tasks.iter().any(|(_, o)| {
             o.errno
                 .as_ref()
                 .is_some_and(|(_, name)| name == "ERR_TASKNAME")
         });
-        let folders = self.tasks.iter().all(|(t, _)| {
+        let folders = self.tasks.iter().any(|(t, _)| {
             t.get(..4).is_some_and(|h| h.eq_ignore_ascii_case("task"))
                 && t.len() > 4
                 && t[4..].bytes().all(|b| b.is_ascii_digit())
         });
         (unknown && folders).then(|| {
-            "  = help: the tasks have their folders' names: a backup's SYS.cfg or BACKINFO names them, else rapid.toml does ([controller] tasks = [\"T_ROB1\", ...] names TASK1, TASK2... in turn)".to_owned()
+            "  = help: the tasks have their folders' names, but those the program's use names (T_ROBn is TASKn): a backup's SYS.cfg or BACKINFO names them, else rapid.toml does ([controller] tasks = [\"T_ROB1\", ...] names TASK1, TASK2... in turn)".to_owned()
         })
     }
 }
@@ -261,7 +264,7 @@ pub fn build(
     output: Box<dyn Output>,
 ) -> Result<(Controller, Vec<String>), NotRun> {
     let mut errors = Vec::new();
-    let mut notes = Vec::new();
+    let mut notes = loaded.notes.clone();
     let mut checks = Vec::new();
     for t in &loaded.tasks {
         let check = rapid_runtime::load_check(&t.task);

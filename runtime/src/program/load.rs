@@ -67,6 +67,10 @@ pub struct LoadCheck {
     pub signals: Vec<TakenSignal>,
     /// The mechanical units it names that no `MOC.cfg` declares.
     pub units: Vec<String>,
+    /// The names its modules use that none of them declares, where a
+    /// module may be missing (not in a complete backup, where they are
+    /// errors): one a name, as written at its first use.
+    pub missing: Vec<String>,
 }
 
 impl LoadCheck {
@@ -145,6 +149,15 @@ pub fn load_check(task: &Task) -> LoadCheck {
                         at,
                     });
                 }
+                continue;
+            }
+            if owned
+                && d.rule.code == rapid_analyzer::rules::unresolved_name::RULE.code
+                && d.severity != rapid_analyzer::diagnostic::Severity::Error
+                && let Some(name) = unit.text.get(d.range.clone())
+                && !out.missing.iter().any(|m| m.eq_ignore_ascii_case(name))
+            {
+                out.missing.push(name.to_owned());
                 continue;
             }
             // Errors the controller meets only when the statement runs: a

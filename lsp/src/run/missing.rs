@@ -1,0 +1,254 @@
+//! The modules a task lacks, taken from the repository around it.
+//!
+//! A task whose modules use a name that none of them declares does not
+//! link on a controller. Yet a backup's task was loaded by one, and a
+//! program kept in a repository was run by its author: the module that
+//! declares the name existed, and the repository often still holds it
+//! elsewhere (a library module kept once beside several programs, the
+//! copy in another task of the controller, the same task in an earlier
+//! backup; a collection of repositories that keeps each file once keeps
+//! only its first copy). So, before it refuses, `rapid run` takes that
+//! module from the repository: for each name the task lacks, the module
+//! nearest to the task that declares it for the whole task (another task
+//! of the same controller first, then the one whose path shares the most
+//! folders with the task's), unless the task has a module of that name
+//! already (another version of it), the program loads the module's file
+//! itself (`Load`: it comes then), or the module would bring load errors
+//! the task did not have. Each module taken is a note of the run.
+//!
+//! Not in a complete backup, where nothing can be missing: there the
+//! names are load errors (`rapid check` reports them so too).
+
+use std::cmp::Reverse;
+use std::collections::HashSet;
+use std::sync::Arc;
+
+use rapid_analyzer::items::Scope;
+use rapid_analyzer::layout::controller_of;
+use rapid_analyzer::names::fold;
+use rapid_analyzer::task::{Task, Unit};
+
+/// At most this many modules are taken for one task.
+const MAX_TAKEN: usize = 32;
+
+/// At most this many modules are tried for one name (each try checks the
+/// task again).
+const MAX_TRIES: usize = 3;
+
+/// Does `u` declare `name` for the whole task (not `LOCAL`)?
+fn declares(u: &Unit, name: &str) -> bool {
+    let is = |n: &str| n.eq_ignore_ascii_case(name);
+    u.items.modules.iter().any(|m| {
+        m.routines.iter().any(|r| !r.local && is(&r.name))
+            || m.data
+                .iter()
+                .any(|d| d.scope != Scope::Local && is(&d.name))
+            || m.records.iter().any(|r| !r.local && is(&r.name))
+            || m.aliases.iter().any(|a| !a.local && is(&a.name))
+    })
+}
+
+/// The last folder of a task's key (`TASK2`).
+fn folder_name(key: &str) -> &str {
+    let key = key.trim_end_matches(['/', '\\']);
+    key.rsplit(['/', '\\']).next().unwrap_or(key)
+}
+
+/// How many leading folders two paths share.
+fn shared_folders(a: &str, b: &str) -> usize {
+    fn parts(p: &str) -> impl Iterator<Item = &str> {
+        p.split(['/', '\\']).filter(|s| !s.is_empty() && *s != ".")
+    }
+    parts(a).zip(parts(b)).take_while(|(x, y)| x == y).count()
+}
+
+/// A task with the modules it lacks taken ([`complete`]).
+pub struct Completed {
+    pub task: Arc<Task>,
+    /// One a module taken.
+    pub notes: Vec<String>,
+    /// It still uses names no module of it declares.
+    pub lacking: bool,
+}
+
+/// `task` with the modules it lacks taken from `pool` (the tasks of the
+/// repository around it, its own among them or not), and a note for each
+/// module taken. A module that declares `entry` (the routine the task
+/// starts in) is another program's, never taken.
+pub fn complete(task: &Arc<Task>, pool: &[Arc<Task>], entry: &str) -> Completed {
+    let mut task = task.clone();
+    let mut notes = Vec::new();
+    let mut check = rapid_runtime::load_check(&task);
+    let controller = controller_of(&task.key).map(str::to_owned);
+    let mut given_up: HashSet<String> = HashSet::new();
+    while notes.len() < MAX_TAKEN {
+        let Some(name) = check
+            .missing
+            .iter()
+            .find(|n| !given_up.contains(&fold(n)))
+            .cloned()
+        else {
+            break;
+        };
+        given_up.insert(fold(&name));
+        // The files the program loads itself (`Load`) come when it
+        // loads them, not before.
+        let loads = rapid_analyzer::loads::loaded_files(task.units.iter());
+        let modules: HashSet<String> = task
+            .units
+            .iter()
+            .flat_map(|u| u.items.modules.iter().map(|m| fold(&m.name)))
+            .collect();
+        let mut candidates: Vec<(&Arc<Task>, &Arc<Unit>)> = pool
+            .iter()
+            .flat_map(|t| t.units.iter().map(move |u| (t, u)))
+            .filter(|(_, u)| {
+                !u.items.modules.is_empty()
+                    && !u
+                        .items
+                        .modules
+                        .iter()
+                        .any(|m| modules.contains(&fold(&m.name)))
+                    && declares(u, &name)
+                    && !declares(u, entry)
+                    && rapid_analyzer::loads::module_file_name(&u.path)
+                        .is_none_or(|f| !loads.contains(&f))
+            })
+            .collect();
+        candidates.sort_by_cached_key(|(t, u)| {
+            let same = controller.is_some() && controller_of(&t.key) == controller.as_deref();
+            (
+                !same,
+                Reverse(shared_folders(&u.path, &task.key)),
+                u.path.clone(),
+            )
+        });
+        candidates.dedup_by(|a, b| a.1.path == b.1.path);
+        for (_, unit) in candidates.into_iter().take(MAX_TRIES) {
+            let with = Arc::new(task.with_extra_units([unit.clone()]));
+            let after = rapid_runtime::load_check(&with);
+            if after.errors.len() > check.errors.len() {
+                continue;
+            }
+            let module = unit.items.modules.first().map_or("", |m| m.name.as_str());
+            notes.push(format!(
+                "note: task {} lacks a module that declares `{name}`: simulated with module {module} of {}, the repository's nearest that declares it",
+                folder_name(&task.key),
+                unit.path
+            ));
+            task = with;
+            check = after;
+            break;
+        }
+    }
+    Completed {
+        task,
+        notes,
+        lacking: !check.missing.is_empty(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn unit(path: &str, text: &str) -> Arc<Unit> {
+        Arc::new(Unit::new(path.to_owned(), text.to_owned(), None))
+    }
+
+    fn task(key: &str, units: Vec<Arc<Unit>>) -> Arc<Task> {
+        Arc::new(Task::new(key.to_owned(), units, None))
+    }
+
+    #[test]
+    fn a_routine_the_task_lacks_comes_from_the_nearest_module_that_declares_it() {
+        let main = unit(
+            "repo/a/Main.mod",
+            "MODULE Main\n  PROC main()\n    Greet;\n  ENDPROC\nENDMODULE\n",
+        );
+        let near = unit(
+            "repo/b/Lib.sys",
+            "MODULE Lib(SYSMODULE)\n  PROC Greet()\n    TPWrite \"near\";\n  ENDPROC\nENDMODULE\n",
+        );
+        let far = unit(
+            "other/x/y/Lib2.sys",
+            "MODULE Lib2(SYSMODULE)\n  PROC Greet()\n    TPWrite \"far\";\n  ENDPROC\nENDMODULE\n",
+        );
+        let local = unit(
+            "repo/a/c/Hidden.sys",
+            "MODULE Hidden(SYSMODULE)\n  LOCAL PROC Greet()\n  ENDPROC\nENDMODULE\n",
+        );
+        let t = task("repo/a", vec![main]);
+        let pool = vec![
+            task("other/x/y", vec![far]),
+            task("repo/b", vec![near]),
+            task("repo/a/c", vec![local]),
+        ];
+        let Completed {
+            task: done, notes, ..
+        } = complete(&t, &pool, "main");
+        let paths: Vec<&str> = done.units.iter().map(|u| u.path.as_str()).collect();
+        assert_eq!(paths, ["repo/a/Main.mod", "repo/b/Lib.sys"]);
+        assert_eq!(notes.len(), 1);
+        assert!(notes[0].contains("`Greet`"), "{notes:?}");
+        assert!(rapid_runtime::load_check(&done).missing.is_empty());
+    }
+
+    #[test]
+    fn a_module_that_would_bring_errors_repeats_a_module_or_is_a_program_is_not_taken() {
+        let main = unit(
+            "repo/a/Main.mod",
+            "MODULE Main\n  PROC main()\n    Greet 1;\n  ENDPROC\nENDMODULE\n",
+        );
+        // Another version of Main: never taken.
+        let version = unit(
+            "repo/b/Main.mod",
+            "MODULE Main\n  PROC Greet(num n)\n  ENDPROC\nENDMODULE\n",
+        );
+        // Takes no argument: the call would be an error.
+        let wrong = unit(
+            "repo/c/Lib.sys",
+            "MODULE Lib\n  PROC Greet()\n  ENDPROC\nENDMODULE\n",
+        );
+        // Another program (it has a `main`): never taken.
+        let program = unit(
+            "repo/d/Other.mod",
+            "MODULE Other\n  PROC main()\n  ENDPROC\n  PROC Greet(num n)\n  ENDPROC\nENDMODULE\n",
+        );
+        let t = task("repo/a", vec![main]);
+        let pool = vec![
+            task("repo/b", vec![version]),
+            task("repo/c", vec![wrong]),
+            task("repo/d", vec![program]),
+        ];
+        let Completed {
+            task: done, notes, ..
+        } = complete(&t, &pool, "main");
+        assert_eq!(done.units.len(), 1);
+        assert!(notes.is_empty());
+        assert_eq!(rapid_runtime::load_check(&done).missing, ["Greet"]);
+    }
+
+    #[test]
+    fn a_module_taken_brings_what_it_lacks_too() {
+        let main = unit(
+            "repo/a/Main.mod",
+            "MODULE Main\n  PROC main()\n    Outer;\n  ENDPROC\nENDMODULE\n",
+        );
+        let outer = unit(
+            "repo/b/Outer.sys",
+            "MODULE Outer\n  PROC Outer()\n    Inner;\n  ENDPROC\nENDMODULE\n",
+        );
+        let inner = unit(
+            "repo/c/Inner.sys",
+            "MODULE Inner\n  PROC Inner()\n  ENDPROC\nENDMODULE\n",
+        );
+        let t = task("repo/a", vec![main]);
+        let pool = vec![task("repo/b", vec![outer]), task("repo/c", vec![inner])];
+        let Completed {
+            task: done, notes, ..
+        } = complete(&t, &pool, "main");
+        assert_eq!(done.units.len(), 3, "{notes:?}");
+        assert!(rapid_runtime::load_check(&done).missing.is_empty());
+    }
+}

@@ -1,0 +1,97 @@
+//! `rapid run` of programs whose repository keeps a module away from the
+//! task that uses it: the module is taken from another task of the backup
+//! or from the repository around the program (a folder with `.git`),
+//! with a note; without one, the run stops where the name is used.
+
+mod support;
+
+use support::{rapid_out, scratch, write};
+
+const MAIN: &str = "MODULE Main1
+  PROC main()
+    Greet;
+    TPWrite \"done\";
+  ENDPROC
+ENDMODULE
+";
+
+const LIB: &str = "MODULE Lib(SYSMODULE)
+  PROC Greet()
+    TPWrite \"hello from \" + GetTaskName();
+  ENDPROC
+ENDMODULE
+";
+
+#[test]
+fn a_backup_task_takes_the_module_it_lacks_from_another_task() {
+    let dir = scratch("run-incomplete-backup");
+    let gantry = "MODULE Gantry_Main
+  PROC main()
+    TPWrite \"gantry\";
+  ENDPROC
+ENDMODULE
+";
+    let watch = "MODULE Watch
+  PROC main()
+    VAR jointtarget j;
+    WaitTime 1;
+    j := CJointT(\\TaskName:=\"T_Gantry\");
+    TPWrite \"read the gantry\";
+  ENDPROC
+ENDMODULE
+";
+    write(
+        &dir,
+        &[
+            ("cell/RAPID/TASK1/PROGMOD/Main1.mod", MAIN),
+            ("cell/RAPID/TASK2/SYSMOD/Lib.sys", LIB),
+            ("cell/RAPID/TASK2/PROGMOD/Gantry_Main.mod", gantry),
+            ("cell/RAPID/TASK3/PROGMOD/Watch.mod", watch),
+        ],
+    );
+    let (code, out, err) = rapid_out(&dir, &["run", "cell"]);
+    assert_eq!(code, Some(0), "{err}");
+    let mut lines: Vec<&str> = out.lines().collect();
+    lines.sort_unstable();
+    assert_eq!(
+        lines,
+        [
+            "[TASK1] done",
+            "[TASK1] hello from TASK1",
+            "[TASK3] read the gantry",
+            "[T_Gantry] gantry",
+        ]
+    );
+    assert!(
+        err.contains("note: task TASK1 lacks a module that declares `Greet`: simulated with module Lib of cell/RAPID/TASK2/SYSMOD/Lib.sys, the repository's nearest that declares it"),
+        "{err}"
+    );
+    assert!(
+        err.contains("TASK2 is taken to be T_Gantry, its modules are named for it"),
+        "{err}"
+    );
+}
+
+#[test]
+fn a_program_takes_the_module_it_lacks_from_its_repository() {
+    let dir = scratch("run-incomplete-repository");
+    write(
+        &dir,
+        &[
+            ("repo/programs/cell/Main1.mod", MAIN),
+            ("repo/library/Lib.sys", LIB),
+        ],
+    );
+    // Not a repository: the module is nowhere the run looks.
+    let (code, _, err) = rapid_out(&dir, &["run", "repo/programs/cell"]);
+    assert_eq!(code, Some(1), "{err}");
+    assert!(err.contains("`Greet` is declared nowhere"), "{err}");
+    write(&dir, &[("repo/.git/HEAD", "ref: refs/heads/main\n")]);
+    let (code, out, err) = rapid_out(&dir, &["run", "repo/programs/cell"]);
+    assert_eq!(code, Some(0), "{err}");
+    assert_eq!(out, "hello from T_ROB1\ndone\n");
+    assert!(
+        err.contains("simulated with module Lib of repo/library/Lib.sys"),
+        "{err}"
+    );
+}
