@@ -12,9 +12,11 @@
 //! nearest to the task that declares it for the whole task (another task
 //! of the same controller first, then the one whose path shares the most
 //! folders with the task's), unless the task has a module of that name
-//! already (another version of it), the program loads the module's file
-//! itself (`Load`: it comes then), or the module would bring load errors
-//! the task did not have. Each module taken is a note of the run.
+//! already (another version of it) or declares a name the module declares
+//! too, the program loads the module's file itself (`Load`: it comes
+//! then), the module declares the entry routine (another program's), or
+//! it would bring load errors the task did not have. Each module taken is
+//! a note of the run.
 //!
 //! Not in a complete backup, where nothing can be missing: there the
 //! names are load errors (`rapid check` reports them so too).
@@ -52,6 +54,25 @@ fn declares(u: &Unit, name: &str) -> bool {
 fn folder_name(key: &str) -> &str {
     let key = key.trim_end_matches(['/', '\\']);
     key.rsplit(['/', '\\']).next().unwrap_or(key)
+}
+
+/// The names `u` declares for the whole task, folded.
+fn globals(u: &Unit) -> impl Iterator<Item = String> + '_ {
+    u.items.modules.iter().flat_map(|m| {
+        let routines = m.routines.iter().filter(|r| !r.local).map(|r| &r.name);
+        let data = m
+            .data
+            .iter()
+            .filter(|d| d.scope != Scope::Local)
+            .map(|d| &d.name);
+        let records = m.records.iter().filter(|r| !r.local).map(|r| &r.name);
+        let aliases = m.aliases.iter().filter(|a| !a.local).map(|a| &a.name);
+        routines
+            .chain(data)
+            .chain(records)
+            .chain(aliases)
+            .map(|n| fold(n))
+    })
 }
 
 /// How many leading folders two paths share.
@@ -99,6 +120,7 @@ pub fn complete(task: &Arc<Task>, pool: &[Arc<Task>], entry: &str) -> Completed 
             .iter()
             .flat_map(|u| u.items.modules.iter().map(|m| fold(&m.name)))
             .collect();
+        let declared: HashSet<String> = task.units.iter().flat_map(|u| globals(u)).collect();
         let mut candidates: Vec<(&Arc<Task>, &Arc<Unit>)> = pool
             .iter()
             .flat_map(|t| t.units.iter().map(move |u| (t, u)))
@@ -111,6 +133,7 @@ pub fn complete(task: &Arc<Task>, pool: &[Arc<Task>], entry: &str) -> Completed 
                         .any(|m| modules.contains(&fold(&m.name)))
                     && declares(u, &name)
                     && !declares(u, entry)
+                    && !globals(u).any(|g| declared.contains(&g))
                     && rapid_analyzer::loads::module_file_name(&u.path)
                         .is_none_or(|f| !loads.contains(&f))
             })
@@ -215,16 +238,26 @@ mod tests {
             "repo/d/Other.mod",
             "MODULE Other\n  PROC main()\n  ENDPROC\n  PROC Greet(num n)\n  ENDPROC\nENDMODULE\n",
         );
-        let t = task("repo/a", vec![main]);
+        // Declares a name the task has too: not the module it lacks.
+        let overlapping = unit(
+            "repo/e/Both.sys",
+            "MODULE Both\n  VAR num nCount;\n  PROC Greet(num n)\n  ENDPROC\nENDMODULE\n",
+        );
+        let data = unit(
+            "repo/a/Data.mod",
+            "MODULE Data\n  VAR num nCount;\nENDMODULE\n",
+        );
+        let t = task("repo/a", vec![main, data]);
         let pool = vec![
             task("repo/b", vec![version]),
             task("repo/c", vec![wrong]),
             task("repo/d", vec![program]),
+            task("repo/e", vec![overlapping]),
         ];
         let Completed {
             task: done, notes, ..
         } = complete(&t, &pool, "main");
-        assert_eq!(done.units.len(), 1);
+        assert_eq!(done.units.len(), 2);
         assert!(notes.is_empty());
         assert_eq!(rapid_runtime::load_check(&done).missing, ["Greet"]);
     }
