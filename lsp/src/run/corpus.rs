@@ -165,6 +165,7 @@ pub fn sweep(dir: &Path) -> Result<Vec<TaskRun>, String> {
                     .cloned()
                     .collect();
                 let done = super::missing::complete(&run.task, &pool, &run.entry);
+                run.checked = Some((done.task.clone(), done.check));
                 run.task = done.task;
                 notes.extend(done.notes);
                 run
@@ -178,7 +179,7 @@ pub fn sweep(dir: &Path) -> Result<Vec<TaskRun>, String> {
                     Some(unit) => &unit.path,
                     None => &t.task.key,
                 };
-                let check = rapid_runtime::load_check(&t.task);
+                let check = t.load_check();
                 let calls = load::program(t.task.clone(), &[], &check)
                     .unsupported()
                     .into_iter()

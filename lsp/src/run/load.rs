@@ -168,6 +168,19 @@ pub struct TaskToRun {
     pub entry: String,
     /// It moves a robot.
     pub motion: bool,
+    /// What the loader found in `task` (when known: [`TaskToRun::load_check`]).
+    pub checked: Option<(Arc<Task>, rapid_runtime::LoadCheck)>,
+}
+
+impl TaskToRun {
+    /// What the controller's loader finds in the task
+    /// ([`rapid_runtime::load_check`]), found once.
+    pub fn load_check(&self) -> rapid_runtime::LoadCheck {
+        match &self.checked {
+            Some((task, check)) if Arc::ptr_eq(task, &self.task) => check.clone(),
+            _ => rapid_runtime::load_check(&self.task),
+        }
+    }
 }
 
 /// The controller a path holds: its tasks, its configuration and
@@ -221,8 +234,10 @@ pub fn controller_in(
             });
             let more = super::missing::complete(&done.task, pool, &t.entry);
             done.task = more.task;
+            done.check = more.check;
             done.notes.extend(more.notes);
         }
+        t.checked = Some((done.task.clone(), done.check));
         t.task = done.task;
         loaded.notes.extend(done.notes);
     }
@@ -381,6 +396,7 @@ pub fn to_run(
         kind: settings.map_or(TaskKind::Normal, |s| s.kind),
         entry,
         motion: settings.is_none_or(|s| s.motion),
+        checked: None,
     }
 }
 

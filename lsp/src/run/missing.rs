@@ -90,6 +90,8 @@ pub struct Completed {
     pub notes: Vec<String>,
     /// It still uses names no module of it declares.
     pub lacking: bool,
+    /// What the loader finds in `task`.
+    pub check: rapid_runtime::LoadCheck,
 }
 
 /// `task` with the modules it lacks taken from `pool` (the tasks of the
@@ -100,75 +102,130 @@ pub fn complete(task: &Arc<Task>, pool: &[Arc<Task>], entry: &str) -> Completed 
     let mut task = task.clone();
     let mut notes = Vec::new();
     let mut check = rapid_runtime::load_check(&task);
-    let controller = controller_of(&task.key).map(str::to_owned);
     let mut given_up: HashSet<String> = HashSet::new();
     while notes.len() < MAX_TAKEN {
-        let Some(name) = check
+        let names: Vec<String> = check
             .missing
             .iter()
-            .find(|n| !given_up.contains(&fold(n)))
+            .filter(|n| given_up.insert(fold(n)))
             .cloned()
-        else {
-            break;
-        };
-        given_up.insert(fold(&name));
-        // The files the program loads itself (`Load`) come when it
-        // loads them, not before.
-        let loads = rapid_analyzer::loads::loaded_files(task.units.iter());
-        let modules: HashSet<String> = task
-            .units
-            .iter()
-            .flat_map(|u| u.items.modules.iter().map(|m| fold(&m.name)))
             .collect();
-        let declared: HashSet<String> = task.units.iter().flat_map(|u| globals(u)).collect();
-        let mut candidates: Vec<(&Arc<Task>, &Arc<Unit>)> = pool
-            .iter()
-            .flat_map(|t| t.units.iter().map(move |u| (t, u)))
-            .filter(|(_, u)| {
-                !u.items.modules.is_empty()
-                    && !u
-                        .items
-                        .modules
-                        .iter()
-                        .any(|m| modules.contains(&fold(&m.name)))
-                    && declares(u, &name)
-                    && !declares(u, entry)
-                    && !globals(u).any(|g| declared.contains(&g))
-                    && rapid_analyzer::loads::module_file_name(&u.path)
-                        .is_none_or(|f| !loads.contains(&f))
+        if names.is_empty() {
+            break;
+        }
+        let lists: Vec<(String, Vec<Arc<Unit>>)> = names
+            .into_iter()
+            .map(|n| {
+                let found = candidates(&task, pool, &n, entry);
+                (n, found)
             })
             .collect();
-        candidates.sort_by_cached_key(|(t, u)| {
-            let same = controller.is_some() && controller_of(&t.key) == controller.as_deref();
-            (
-                !same,
-                Reverse(shared_folders(&u.path, &task.key)),
-                u.path.clone(),
-            )
-        });
-        candidates.dedup_by(|a, b| a.1.path == b.1.path);
-        for (_, unit) in candidates.into_iter().take(MAX_TRIES) {
-            let with = Arc::new(task.with_extra_units([unit.clone()]));
-            let after = rapid_runtime::load_check(&with);
-            if after.errors.len() > check.errors.len() {
+        // Each name's nearest module, all at once (one check), as long as
+        // they declare nothing twice; else one by one.
+        let mut batch: Vec<(&str, &Arc<Unit>)> = Vec::new();
+        let mut batch_globals: HashSet<String> = HashSet::new();
+        for (name, found) in &lists {
+            let Some(unit) = found.first() else { continue };
+            if batch_globals.contains(&fold(name)) {
                 continue;
             }
-            let module = unit.items.modules.first().map_or("", |m| m.name.as_str());
-            notes.push(format!(
-                "note: task {} lacks a module that declares `{name}`: simulated with module {module} of {}, the repository's nearest that declares it",
-                folder_name(&task.key),
-                unit.path
-            ));
+            if globals(unit).any(|g| batch_globals.contains(&g)) {
+                continue;
+            }
+            batch_globals.extend(globals(unit));
+            batch.push((name, unit));
+        }
+        if batch.is_empty() {
+            continue;
+        }
+        let with = Arc::new(task.with_extra_units(batch.iter().map(|(_, u)| (*u).clone())));
+        let after = rapid_runtime::load_check(&with);
+        if after.errors.len() <= check.errors.len() {
+            for (name, unit) in &batch {
+                notes.push(note(&task, name, unit));
+            }
             task = with;
             check = after;
-            break;
+            continue;
+        }
+        for (name, found) in &lists {
+            if task.units.iter().any(|u| declares(u, name)) {
+                continue;
+            }
+            for unit in found.iter().take(MAX_TRIES) {
+                if globals(unit).any(|g| task.units.iter().any(|u| globals(u).any(|t| t == g))) {
+                    continue;
+                }
+                let with = Arc::new(task.with_extra_units([unit.clone()]));
+                let after = rapid_runtime::load_check(&with);
+                if after.errors.len() > check.errors.len() {
+                    continue;
+                }
+                notes.push(note(&task, name, unit));
+                task = with;
+                check = after;
+                break;
+            }
         }
     }
     Completed {
         task,
         notes,
         lacking: !check.missing.is_empty(),
+        check,
     }
+}
+
+/// The note of a module taken for `name`.
+fn note(task: &Task, name: &str, unit: &Unit) -> String {
+    let module = unit.items.modules.first().map_or("", |m| m.name.as_str());
+    format!(
+        "note: task {} lacks a module that declares `{name}`: simulated with module {module} of {}, the repository's nearest that declares it",
+        folder_name(&task.key),
+        unit.path
+    )
+}
+
+/// The modules of `pool` that could be the one `task` lacks for `name`,
+/// the nearest first ([`complete`]).
+fn candidates(task: &Task, pool: &[Arc<Task>], name: &str, entry: &str) -> Vec<Arc<Unit>> {
+    let controller = controller_of(&task.key);
+    // The files the program loads itself (`Load`) come when it loads
+    // them, not before.
+    let loads = rapid_analyzer::loads::loaded_files(task.units.iter());
+    let modules: HashSet<String> = task
+        .units
+        .iter()
+        .flat_map(|u| u.items.modules.iter().map(|m| fold(&m.name)))
+        .collect();
+    let declared: HashSet<String> = task.units.iter().flat_map(|u| globals(u)).collect();
+    let mut found: Vec<(&Arc<Task>, &Arc<Unit>)> = pool
+        .iter()
+        .flat_map(|t| t.units.iter().map(move |u| (t, u)))
+        .filter(|(_, u)| {
+            !u.items.modules.is_empty()
+                && !u
+                    .items
+                    .modules
+                    .iter()
+                    .any(|m| modules.contains(&fold(&m.name)))
+                && declares(u, name)
+                && !declares(u, entry)
+                && !globals(u).any(|g| declared.contains(&g))
+                && rapid_analyzer::loads::module_file_name(&u.path)
+                    .is_none_or(|f| !loads.contains(&f))
+        })
+        .collect();
+    found.sort_by_cached_key(|(t, u)| {
+        let same = controller.is_some() && controller_of(&t.key) == controller;
+        (
+            !same,
+            Reverse(shared_folders(&u.path, &task.key)),
+            u.path.clone(),
+        )
+    });
+    found.dedup_by(|a, b| a.1.path == b.1.path);
+    found.into_iter().map(|(_, u)| u.clone()).collect()
 }
 
 #[cfg(test)]

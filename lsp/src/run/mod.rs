@@ -267,7 +267,7 @@ pub fn build(
     let mut notes = loaded.notes.clone();
     let mut checks = Vec::new();
     for t in &loaded.tasks {
-        let check = rapid_runtime::load_check(&t.task);
+        let check = t.load_check();
         errors.extend(check.errors.iter().map(ToString::to_string));
         notes.extend(check.signals.iter().map(ToString::to_string));
         checks.push(check);
@@ -513,7 +513,7 @@ fn list_unsupported(loaded: &load::Loaded, sets: &[SignalChange]) {
     let several = loaded.tasks.len() > 1;
     let mut count = 0;
     for t in &loaded.tasks {
-        let check = rapid_runtime::load_check(&t.task);
+        let check = t.load_check();
         let program = load::program(t.task.clone(), sets, &check);
         for (name, at) in program.unsupported() {
             count += 1;

@@ -178,6 +178,7 @@ mod tests {
             kind: TaskKind::Normal,
             entry: "main".to_owned(),
             motion: true,
+            checked: None,
         }
     }
 
