@@ -70,6 +70,14 @@ ENDMODULE
         err.contains("TASK2 is taken to be T_Gantry, its modules are named for it"),
         "{err}"
     );
+    // Listing what a run would stop at says what it takes too.
+    let (code, out, err) = rapid_out(&dir, &["run", "cell", "--list-unsupported"]);
+    assert_eq!(code, Some(0), "{err}");
+    assert_eq!(out, "0 calls the simulation does not support\n");
+    assert!(
+        err.contains("lacks a module that declares `Greet`"),
+        "{err}"
+    );
 }
 
 #[test]

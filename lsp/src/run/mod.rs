@@ -426,6 +426,9 @@ fn run_inner(args: RunArgs) -> Result<ExitCode, String> {
         .collect::<Result<Vec<_>, _>>()?;
     let loaded = load::controller(&args.path, args.task.as_deref(), args.entry.as_deref())?;
     if args.list_unsupported {
+        for note in &loaded.notes {
+            eprintln!("{note}");
+        }
         list_unsupported(&loaded, &sets);
         return Ok(ExitCode::SUCCESS);
     }
