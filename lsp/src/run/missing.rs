@@ -10,8 +10,9 @@
 //! only its first copy). So, before it refuses, `rapid run` takes that
 //! module from the repository: for each name the task lacks, the module
 //! nearest to the task that declares it for the whole task (another task
-//! of the same controller first, then the one whose path shares the most
-//! folders with the task's), unless the task has a module of that name
+//! of the same controller first, then the same task of another backup,
+//! then the one whose path shares the most folders with the task's),
+//! unless the task has a module of that name
 //! already (another version of it) or declares a name the module declares
 //! too, the program loads the module's file itself (`Load`: it comes
 //! then), the module declares the entry routine (another program's), or
@@ -216,10 +217,17 @@ fn candidates(task: &Task, pool: &[Arc<Task>], name: &str, entry: &str) -> Vec<A
                     .is_none_or(|f| !loads.contains(&f))
         })
         .collect();
+    let folder = folder_name(&task.key);
     found.sort_by_cached_key(|(t, u)| {
-        let same = controller.is_some() && controller_of(&t.key) == controller;
+        let other = controller_of(&t.key);
+        let same = controller.is_some() && other == controller;
+        // The same task of another backup (`TASK2` of an earlier one).
+        let same_task = controller.is_some()
+            && other.is_some()
+            && folder_name(&t.key).eq_ignore_ascii_case(folder);
         (
             !same,
+            !same_task,
             Reverse(shared_folders(&u.path, &task.key)),
             u.path.clone(),
         )
@@ -317,6 +325,32 @@ mod tests {
         assert_eq!(done.units.len(), 2);
         assert!(notes.is_empty());
         assert_eq!(rapid_runtime::load_check(&done).missing, ["Greet"]);
+    }
+
+    #[test]
+    fn a_backup_s_task_takes_what_it_lacks_from_the_same_task_of_another_backup() {
+        let main = unit(
+            "repo/B2/RAPID/TASK2/PROGMOD/Main.mod",
+            "MODULE Main\n  PROC main()\n    Greet;\n  ENDPROC\nENDMODULE\n",
+        );
+        let lib = |task: &str, said: &str| {
+            unit(
+                &format!("repo/B1/RAPID/{task}/SYSMOD/Lib.sys"),
+                &format!(
+                    "MODULE Lib\n  PROC Greet()\n    TPWrite \"{said}\";\n  ENDPROC\nENDMODULE\n"
+                ),
+            )
+        };
+        let t = task("repo/B2/RAPID/TASK2", vec![main]);
+        let pool = vec![
+            task("repo/B1/RAPID/TASK1", vec![lib("TASK1", "robot 1")]),
+            task("repo/B1/RAPID/TASK2", vec![lib("TASK2", "robot 2")]),
+        ];
+        let done = complete(&t, &pool, "main");
+        assert_eq!(
+            done.task.units[1].path,
+            "repo/B1/RAPID/TASK2/SYSMOD/Lib.sys"
+        );
     }
 
     #[test]
