@@ -1,7 +1,8 @@
 //! `rapid run` of programs whose repository keeps a module away from the
 //! task that uses it: the module is taken from another task of the backup
 //! or from the repository around the program (a folder with `.git`),
-//! with a note; without one, the run stops where the name is used.
+//! with a note; without one, the run stops where the name is used. A
+//! signal one task takes from its use (no `EIO.cfg`) is every task's.
 
 mod support;
 
@@ -102,4 +103,25 @@ fn a_program_takes_the_module_it_lacks_from_its_repository() {
         err.contains("simulated with module Lib of repo/library/Lib.sys"),
         "{err}"
     );
+}
+
+#[test]
+fn a_signal_one_task_takes_from_its_use_is_every_task_s() {
+    let dir = scratch("run-incomplete-signal");
+    write(
+        &dir,
+        &[
+            (
+                "cell/RAPID/TASK1/PROGMOD/A.mod",
+                "MODULE A\n  PROC main()\n    TPWrite \"a \"\\Num:=GInput(giPart);\n  ENDPROC\nENDMODULE\n",
+            ),
+            (
+                "cell/RAPID/TASK2/PROGMOD/B.mod",
+                "MODULE B\n  PROC main()\n    VAR num n;\n    WaitTime 0.5;\n    n := giPart;\n    TPWrite \"b \"\\Num:=n;\n  ENDPROC\nENDMODULE\n",
+            ),
+        ],
+    );
+    let (code, out, err) = rapid_out(&dir, &["run", "cell", "--set", "giPart=5"]);
+    assert_eq!(code, Some(0), "{err}");
+    assert_eq!(out, "[TASK1] a 5\n[TASK2] b 5\n");
 }
