@@ -4,20 +4,22 @@
 //! a backup keeps each task's modules in a numbered folder (`RAPID/TASK7`)
 //! and says the names in `SYSPAR/SYS.cfg` and `BACKINFO/backinfo.txt`. A
 //! repository that keeps only the modules loses them, and a program that
-//! names another task (`CJointT \TaskName:="T_Gantry"`, the `tasks` list
-//! of a `WaitSyncTask`) would name no task. The program is the evidence
-//! then: each task name it uses that no task has is given to a numbered
-//! folder, `T_ROBn` to `TASKn` (RobotWare calls the n-th robot's task
-//! `T_ROBn`, and a MultiMove system lists its robots' tasks first), any
-//! other name to the one folder whose modules are named for it (`T_Gantry`
-//! to the folder of `Gantry_MainModule.mod`). Each name given is a note.
+//! names a task (`CJointT \TaskName:="T_Gantry"`, the `tasks` list of a
+//! `WaitSyncTask`, `IF GetTaskName() = "T_ROB1"`) would name no task. The
+//! program is the evidence then: each task name it uses that no task has
+//! is given to a numbered folder, `T_ROBn` to `TASKn` (RobotWare calls the
+//! n-th robot's task `T_ROBn`, and a MultiMove system lists its robots'
+//! tasks first), any other name to the one folder whose modules are named
+//! for it (`T_Gantry` to the folder of `Gantry_MainModule.mod`). Each name
+//! given is a note.
 
 use rapid_analyzer::task::Task;
 
 use super::load::TaskToRun;
 
 /// The task names the modules of `task` use in quotes: a `\TaskName`
-/// argument, the items of a `tasks` list.
+/// argument, the items of a `tasks` list, what `GetTaskName()` is
+/// compared with.
 fn used_names(task: &Task) -> Vec<String> {
     let mut out: Vec<String> = Vec::new();
     let mut add = |name: &str| {
@@ -44,6 +46,13 @@ fn used_names(task: &Task) -> Vec<String> {
             if is_list && lower.contains(":=") {
                 code.split('"').skip(1).step_by(2).for_each(&mut add);
                 continue;
+            }
+            // A comparison with the task's own name (`IF GetTaskName() =
+            // "T_ROB1"`).
+            for line in code.lines() {
+                if line.to_ascii_lowercase().contains("gettaskname(") {
+                    line.split('"').skip(1).step_by(2).for_each(&mut add);
+                }
             }
             let mut rest = lower.as_str();
             while let Some(at) = rest.find("taskname") {
@@ -189,6 +198,7 @@ mod tests {
     j := CJointT(\\TaskName:=\"T_Gantry\");
     j := CJointT(\\TaskName := \"T_Painter\");
     TPWrite \"T_NotATask\";
+    IF GetTaskName() = \"T_Weld\" TPWrite GetTaskName() + \" is here\";
   ENDPROC
 ENDMODULE
 ";
@@ -198,7 +208,7 @@ ENDMODULE
         let t = task("TASK9", &[("Watch.mod", STATIC)]);
         assert_eq!(
             used_names(&t.task),
-            ["T_ROB1", "t_rob2", "T_Gantry", "T_Painter"]
+            ["T_ROB1", "t_rob2", "T_Gantry", "T_Painter", "T_Weld"]
         );
     }
 
