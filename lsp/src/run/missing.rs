@@ -23,7 +23,7 @@
 //! names are load errors (`rapid check` reports them so too).
 
 use std::cmp::Reverse;
-use std::collections::HashSet;
+use std::collections::{HashMap, HashSet};
 use std::sync::Arc;
 
 use rapid_analyzer::items::Scope;
@@ -104,6 +104,7 @@ pub fn complete(task: &Arc<Task>, pool: &[Arc<Task>], entry: &str) -> Completed 
     let mut notes = Vec::new();
     let mut check = rapid_runtime::load_check(&task);
     let mut given_up: HashSet<String> = HashSet::new();
+    let mut index = None;
     while notes.len() < MAX_TAKEN {
         let names: Vec<String> = check
             .missing
@@ -114,10 +115,12 @@ pub fn complete(task: &Arc<Task>, pool: &[Arc<Task>], entry: &str) -> Completed 
         if names.is_empty() {
             break;
         }
+        let index = index.get_or_insert_with(|| self::index(pool));
+        let has = Has::of(&task);
         let lists: Vec<(String, Vec<Arc<Unit>>)> = names
             .into_iter()
             .map(|n| {
-                let found = candidates(&task, pool, &n, entry);
+                let found = candidates(&task, &has, index, &n, entry);
                 (n, found)
             })
             .collect();
@@ -187,34 +190,74 @@ fn note(task: &Task, name: &str, unit: &Unit) -> String {
     )
 }
 
-/// The modules of `pool` that could be the one `task` lacks for `name`,
-/// the nearest first ([`complete`]).
-fn candidates(task: &Task, pool: &[Arc<Task>], name: &str, entry: &str) -> Vec<Arc<Unit>> {
+/// The modules of the pool by the names they declare for the whole task.
+type Index<'p> = HashMap<String, Vec<(&'p Arc<Task>, &'p Arc<Unit>)>>;
+
+fn index(pool: &[Arc<Task>]) -> Index<'_> {
+    let mut out: Index<'_> = HashMap::new();
+    for t in pool {
+        for u in t.units.iter() {
+            let mut names: Vec<String> = globals(u).collect();
+            names.sort_unstable();
+            names.dedup();
+            for n in names {
+                out.entry(n).or_default().push((t, u));
+            }
+        }
+    }
+    out
+}
+
+/// What a task has, that a module it takes must not have again.
+struct Has {
+    /// The files its program loads itself (`Load`): they come when it
+    /// loads them, not before.
+    loads: HashSet<String>,
+    /// Its modules' names, folded.
+    modules: HashSet<String>,
+    /// The names it declares for the whole task, folded.
+    declared: HashSet<String>,
+}
+
+impl Has {
+    fn of(task: &Task) -> Has {
+        Has {
+            loads: rapid_analyzer::loads::loaded_files(task.units.iter()),
+            modules: task
+                .units
+                .iter()
+                .flat_map(|u| u.items.modules.iter().map(|m| fold(&m.name)))
+                .collect(),
+            declared: task.units.iter().flat_map(|u| globals(u)).collect(),
+        }
+    }
+}
+
+/// The modules of the pool (`index`) that could be the one `task` lacks
+/// for `name`, the nearest first ([`complete`]).
+fn candidates(
+    task: &Task,
+    has: &Has,
+    index: &Index<'_>,
+    name: &str,
+    entry: &str,
+) -> Vec<Arc<Unit>> {
     let controller = controller_of(&task.key);
-    // The files the program loads itself (`Load`) come when it loads
-    // them, not before.
-    let loads = rapid_analyzer::loads::loaded_files(task.units.iter());
-    let modules: HashSet<String> = task
-        .units
+    let Some(declaring) = index.get(&fold(name)) else {
+        return Vec::new();
+    };
+    let mut found: Vec<(&Arc<Task>, &Arc<Unit>)> = declaring
         .iter()
-        .flat_map(|u| u.items.modules.iter().map(|m| fold(&m.name)))
-        .collect();
-    let declared: HashSet<String> = task.units.iter().flat_map(|u| globals(u)).collect();
-    let mut found: Vec<(&Arc<Task>, &Arc<Unit>)> = pool
-        .iter()
-        .flat_map(|t| t.units.iter().map(move |u| (t, u)))
+        .copied()
         .filter(|(_, u)| {
-            !u.items.modules.is_empty()
-                && !u
-                    .items
-                    .modules
-                    .iter()
-                    .any(|m| modules.contains(&fold(&m.name)))
-                && declares(u, name)
+            !u.items
+                .modules
+                .iter()
+                .any(|m| has.modules.contains(&fold(&m.name)))
                 && !declares(u, entry)
-                && !globals(u).any(|g| declared.contains(&g))
+                && !globals(u).any(|g| has.declared.contains(&g))
                 && rapid_analyzer::loads::module_file_name(&u.path)
-                    .is_none_or(|f| !loads.contains(&f))
+                    .is_none_or(|f| !has.loads.contains(&f))
         })
         .collect();
     let folder = folder_name(&task.key);
