@@ -227,7 +227,7 @@ pub fn controller_in(
         let mut done = super::missing::complete(&t.task, &near, &t.entry);
         if done.lacking {
             let pool = repository.get_or_insert_with(|| {
-                repository_of(path)
+                repository_of(env, path)
                     .and_then(|root| tasks_in(env, &[root]).ok())
                     .map(|f| f.tasks)
                     .unwrap_or_default()
@@ -247,9 +247,10 @@ pub fn controller_in(
 /// The repository `path` is in: the nearest folder around it with a
 /// `.git` (not the home folder), named as `path` is (relative to the
 /// working folder when `path` is relative).
-fn repository_of(path: &Path) -> Option<PathBuf> {
+fn repository_of(env: &dyn Environment, path: &Path) -> Option<PathBuf> {
     let full = std::fs::canonicalize(path).ok()?;
-    let root = full.ancestors().find(|a| a.join(".git").exists())?;
+    // Asked of `env`: `rapid mcp` looks nowhere outside its roots.
+    let root = full.ancestors().find(|a| env.kind(&a.join(".git")).is_ok())?;
     // A home folder kept in git is no repository of RAPID programs.
     let home = std::env::var_os("HOME").and_then(|h| std::fs::canonicalize(h).ok());
     if home.as_deref() == Some(root) {
