@@ -250,7 +250,9 @@ pub fn controller_in(
 fn repository_of(env: &dyn Environment, path: &Path) -> Option<PathBuf> {
     let full = std::fs::canonicalize(path).ok()?;
     // Asked of `env`: `rapid mcp` looks nowhere outside its roots.
-    let root = full.ancestors().find(|a| env.kind(&a.join(".git")).is_ok())?;
+    let root = full
+        .ancestors()
+        .find(|a| env.kind(&a.join(".git")).is_ok())?;
     // A home folder kept in git is no repository of RAPID programs.
     let home = std::env::var_os("HOME").and_then(|h| std::fs::canonicalize(h).ok());
     if home.as_deref() == Some(root) {

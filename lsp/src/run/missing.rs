@@ -12,12 +12,11 @@
 //! nearest to the task that declares it for the whole task (another task
 //! of the same controller first, then the same task of another backup,
 //! then the one whose path shares the most folders with the task's),
-//! unless the task has a module of that name
-//! already (another version of it) or declares a name the module declares
-//! too, the program loads the module's file itself (`Load`: it comes
-//! then), the module declares the entry routine (another program's), or
-//! it would bring load errors the task did not have. Each module taken is
-//! a note of the run.
+//! unless the task has a module of that name already (another version of
+//! it) or declares a name the module declares too, the program loads the
+//! module's file itself (`Load`: it comes then), the module declares the
+//! entry routine (another program's), or it would bring load errors the
+//! task did not have. Each module taken is a note of the run.
 //!
 //! Not in a complete backup, where nothing can be missing: there the
 //! names are load errors (`rapid check` reports them so too).
@@ -40,15 +39,8 @@ const MAX_TRIES: usize = 3;
 
 /// Does `u` declare `name` for the whole task (not `LOCAL`)?
 fn declares(u: &Unit, name: &str) -> bool {
-    let is = |n: &str| n.eq_ignore_ascii_case(name);
-    u.items.modules.iter().any(|m| {
-        m.routines.iter().any(|r| !r.local && is(&r.name))
-            || m.data
-                .iter()
-                .any(|d| d.scope != Scope::Local && is(&d.name))
-            || m.records.iter().any(|r| !r.local && is(&r.name))
-            || m.aliases.iter().any(|a| !a.local && is(&a.name))
-    })
+    let name = fold(name);
+    globals(u).any(|g| g == name)
 }
 
 /// The last folder of a task's key (`TASK2`).
@@ -129,6 +121,9 @@ pub fn complete(task: &Arc<Task>, pool: &[Arc<Task>], entry: &str) -> Completed 
         let mut batch: Vec<(&str, &Arc<Unit>)> = Vec::new();
         let mut batch_globals: HashSet<String> = HashSet::new();
         for (name, found) in &lists {
+            if batch.len() + notes.len() >= MAX_TAKEN {
+                break;
+            }
             let Some(unit) = found.first() else { continue };
             if batch_globals.contains(&fold(name)) {
                 continue;
@@ -156,8 +151,9 @@ pub fn complete(task: &Arc<Task>, pool: &[Arc<Task>], entry: &str) -> Completed 
             if task.units.iter().any(|u| declares(u, name)) {
                 continue;
             }
+            let declared = Has::of(&task).declared;
             for unit in found.iter().take(MAX_TRIES) {
-                if globals(unit).any(|g| task.units.iter().any(|u| globals(u).any(|t| t == g))) {
+                if globals(unit).any(|g| declared.contains(&g)) {
                     continue;
                 }
                 let with = Arc::new(task.with_extra_units([unit.clone()]));
