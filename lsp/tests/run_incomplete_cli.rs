@@ -1,8 +1,9 @@
 //! `rapid run` of programs whose repository keeps a module away from the
 //! task that uses it: the module is taken from another task of the backup
-//! or from the repository around the program (a folder with `.git`),
-//! with a note; without one, the run stops where the name is used. A
-//! signal one task takes from its use (no `EIO.cfg`) is every task's.
+//! or from the repository around the program (a folder with `.git` or
+//! `rapid.toml`), with a note; without one, the run stops where the name
+//! is used. A signal one task takes from its use (no `EIO.cfg`) is every
+//! task's.
 
 mod support;
 
@@ -95,14 +96,25 @@ fn a_program_takes_the_module_it_lacks_from_its_repository() {
     let (code, _, err) = rapid_out(&dir, &["run", "repo/programs/cell"]);
     assert_eq!(code, Some(1), "{err}");
     assert!(err.contains("`Greet` is declared nowhere"), "{err}");
-    write(&dir, &[("repo/.git/HEAD", "ref: refs/heads/main\n")]);
-    let (code, out, err) = rapid_out(&dir, &["run", "repo/programs/cell"]);
-    assert_eq!(code, Some(0), "{err}");
-    assert_eq!(out, "hello from T_ROB1\ndone\n");
-    assert!(
-        err.contains("simulated with module Lib of repo/library/Lib.sys"),
-        "{err}"
-    );
+    // A git repository, or a project with its rapid.toml.
+    for (file, text) in [(".git/HEAD", "ref: refs/heads/main\n"), ("rapid.toml", "")] {
+        let root = scratch("run-incomplete-repository-marked");
+        write(
+            &root,
+            &[
+                ("repo/programs/cell/Main1.mod", MAIN),
+                ("repo/library/Lib.sys", LIB),
+                (&format!("repo/{file}"), text),
+            ],
+        );
+        let (code, out, err) = rapid_out(&root, &["run", "repo/programs/cell"]);
+        assert_eq!(code, Some(0), "{file}: {err}");
+        assert_eq!(out, "hello from T_ROB1\ndone\n");
+        assert!(
+            err.contains("simulated with module Lib of repo/library/Lib.sys"),
+            "{err}"
+        );
+    }
 }
 
 #[test]

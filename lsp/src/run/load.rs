@@ -221,7 +221,8 @@ pub fn controller_in(
     let near = found.tasks.clone();
     let mut loaded = chosen(found, path, only, entry)?;
     // The modules the tasks lack: from what was loaded with them, else
-    // from the whole repository (the folder with `.git` around the path).
+    // from the whole repository (the folder with `.git` or `rapid.toml`
+    // around the path).
     let mut repository = None;
     for t in &mut loaded.tasks {
         let mut done = super::missing::complete(&t.task, &near, &t.entry);
@@ -245,14 +246,17 @@ pub fn controller_in(
 }
 
 /// The repository `path` is in: the nearest folder around it with a
-/// `.git` (not the home folder), named as `path` is (relative to the
-/// working folder when `path` is relative).
+/// `.git` or a `rapid.toml` (not the home folder), named as `path` is
+/// (relative to the working folder when `path` is relative).
 fn repository_of(env: &dyn Environment, path: &Path) -> Option<PathBuf> {
     let full = std::fs::canonicalize(path).ok()?;
     // Asked of `env`: `rapid mcp` looks nowhere outside its roots.
-    let root = full
-        .ancestors()
-        .find(|a| env.kind(&a.join(".git")).is_ok())?;
+    let marks = |a: &Path| {
+        [".git", "rapid.toml"]
+            .iter()
+            .any(|m| env.kind(&a.join(m)).is_ok())
+    };
+    let root = full.ancestors().find(|a| marks(a))?;
     // A home folder kept in git is no repository of RAPID programs.
     let home = std::env::var_os("HOME").and_then(|h| std::fs::canonicalize(h).ok());
     if home.as_deref() == Some(root) {
