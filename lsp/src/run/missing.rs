@@ -16,7 +16,10 @@
 //! it) or declares a name the module declares too, the program loads the
 //! module's file itself (`Load`: it comes then), the module declares the
 //! entry routine (another program's), or it would bring load errors the
-//! task did not have. Each module taken is a note of the run.
+//! task did not have. A name of RobotWare's default `user` module
+//! (`reg1` to `reg5`, `clock1`) that the repository declares nowhere
+//! comes from that module, written out here. Each module taken is a note
+//! of the run.
 //!
 //! Not in a complete backup, where nothing can be missing: there the
 //! names are load errors (`rapid check` reports them so too).
@@ -178,6 +181,12 @@ pub fn complete(task: &Arc<Task>, pool: &[Arc<Task>], entry: &str) -> Completed 
 
 /// The note of a module taken for `name`.
 fn note(task: &Task, name: &str, unit: &Unit) -> String {
+    if unit.path == DEFAULT_USER_PATH {
+        return format!(
+            "note: task {} lacks a module that declares `{name}`: simulated with RobotWare's default user module (reg1 to reg5, clock1), as the repository holds no module that declares it",
+            folder_name(&task.key)
+        );
+    }
     let module = unit.items.modules.first().map_or("", |m| m.name.as_str());
     format!(
         "note: task {} lacks a module that declares `{name}`: simulated with module {module} of {}, the repository's nearest that declares it",
@@ -229,8 +238,28 @@ impl Has {
     }
 }
 
+/// The data RobotWare's own `user` system module declares in every task
+/// of a new system (registers `reg1` to `reg5`, the stopwatch `clock1`),
+/// which programs use without declaring them.
+const DEFAULT_USER_NAMES: [&str; 6] = ["reg1", "reg2", "reg3", "reg4", "reg5", "clock1"];
+
+/// Where the default `user` module is said to come from (its path).
+const DEFAULT_USER_PATH: &str = "RobotWare's default user.sys";
+
+/// RobotWare's default `user` module, written out ([`DEFAULT_USER_NAMES`]).
+fn default_user() -> Arc<Unit> {
+    static UNIT: std::sync::OnceLock<Arc<Unit>> = std::sync::OnceLock::new();
+    UNIT.get_or_init(|| {
+        let text = "MODULE user(SYSMODULE)\n  VAR num reg1 := 0;\n  VAR num reg2 := 0;\n  VAR num reg3 := 0;\n  VAR num reg4 := 0;\n  VAR num reg5 := 0;\n  VAR clock clock1;\nENDMODULE\n";
+        Arc::new(Unit::new(DEFAULT_USER_PATH.to_owned(), text.to_owned(), None))
+    })
+    .clone()
+}
+
 /// The modules of the pool (`index`) that could be the one `task` lacks
-/// for `name`, the nearest first ([`complete`]).
+/// for `name`, the nearest first ([`complete`]); for a name of RobotWare's
+/// default `user` module that the repository declares nowhere, that
+/// module, unless the task has a `user` module of its own.
 fn candidates(
     task: &Task,
     has: &Has,
@@ -239,8 +268,16 @@ fn candidates(
     entry: &str,
 ) -> Vec<Arc<Unit>> {
     let controller = controller_of(&task.key);
+    let default = || {
+        let known = DEFAULT_USER_NAMES.contains(&fold(name).as_str());
+        if known && !has.modules.contains("user") {
+            vec![default_user()]
+        } else {
+            Vec::new()
+        }
+    };
     let Some(declaring) = index.get(&fold(name)) else {
-        return Vec::new();
+        return default();
     };
     let mut found: Vec<(&Arc<Task>, &Arc<Unit>)> = declaring
         .iter()
@@ -272,6 +309,9 @@ fn candidates(
         )
     });
     found.dedup_by(|a, b| a.1.path == b.1.path);
+    if found.is_empty() {
+        return default();
+    }
     found.into_iter().map(|(_, u)| u.clone()).collect()
 }
 
@@ -390,6 +430,24 @@ mod tests {
             done.task.units[1].path,
             "repo/B1/RAPID/TASK2/SYSMOD/Lib.sys"
         );
+    }
+
+    #[test]
+    fn the_registers_and_clock_of_robotware_s_user_module_come_from_it() {
+        let main = unit(
+            "repo/a/Main.mod",
+            "MODULE Main\n  PROC main()\n    ClkStart clock1;\n    reg1 := 2;\n  ENDPROC\nENDMODULE\n",
+        );
+        let t = task("repo/a", vec![main.clone()]);
+        let done = complete(&t, &[], "main");
+        assert_eq!(done.task.units[1].path, DEFAULT_USER_PATH);
+        assert_eq!(done.notes.len(), 1, "{:?}", done.notes);
+        assert!(done.notes[0].contains("RobotWare's default user module"));
+        assert!(!done.lacking);
+        // A task with a user module of its own lacks them for real.
+        let own = unit("repo/a/user.sys", "MODULE user(SYSMODULE)\nENDMODULE\n");
+        let t = task("repo/a", vec![main, own]);
+        assert!(complete(&t, &[], "main").lacking);
     }
 
     #[test]
