@@ -159,6 +159,34 @@ pub struct AliasDecl {
     pub of: Option<TypeRef>,
 }
 
+impl Module {
+    /// The names it declares for the whole task (every declaration but a
+    /// `LOCAL` one): data, routines, records, aliases.
+    pub fn global_names(&self) -> impl Iterator<Item = &str> {
+        let data = self
+            .data
+            .iter()
+            .filter(|d| d.scope != Scope::Local)
+            .map(|d| d.name.as_str());
+        let routines = self
+            .routines
+            .iter()
+            .filter(|r| !r.local)
+            .map(|r| r.name.as_str());
+        let records = self
+            .records
+            .iter()
+            .filter(|r| !r.local)
+            .map(|r| r.name.as_str());
+        let aliases = self
+            .aliases
+            .iter()
+            .filter(|a| !a.local)
+            .map(|a| a.name.as_str());
+        data.chain(routines).chain(records).chain(aliases)
+    }
+}
+
 impl FileItems {
     /// The index of the module whose text holds `offset` (its end included).
     pub fn module_at(&self, offset: usize) -> Option<usize> {

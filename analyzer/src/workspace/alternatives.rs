@@ -32,20 +32,7 @@ const COPY_SHARED: usize = 3;
 
 /// The folded names of a module's global declarations.
 fn globals(module: &crate::items::Module) -> std::collections::HashSet<String> {
-    use crate::items::Scope;
-    let data = module
-        .data
-        .iter()
-        .filter(|d| d.scope != Scope::Local)
-        .map(|d| &d.name);
-    let routines = module.routines.iter().filter(|r| !r.local).map(|r| &r.name);
-    let records = module.records.iter().filter(|r| !r.local).map(|r| &r.name);
-    let aliases = module.aliases.iter().filter(|a| !a.local).map(|a| &a.name);
-    data.chain(routines)
-        .chain(records)
-        .chain(aliases)
-        .map(|n| fold(n))
-        .collect()
+    module.global_names().map(fold).collect()
 }
 
 /// Pairs of units of a plain folder that are copies of one module

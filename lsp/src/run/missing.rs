@@ -28,7 +28,6 @@ use std::cmp::Reverse;
 use std::collections::{HashMap, HashSet};
 use std::sync::Arc;
 
-use rapid_analyzer::items::Scope;
 use rapid_analyzer::layout::controller_of;
 use rapid_analyzer::names::fold;
 use rapid_analyzer::task::{Task, Unit};
@@ -54,21 +53,10 @@ fn folder_name(key: &str) -> &str {
 
 /// The names `u` declares for the whole task, folded.
 fn globals(u: &Unit) -> impl Iterator<Item = String> + '_ {
-    u.items.modules.iter().flat_map(|m| {
-        let routines = m.routines.iter().filter(|r| !r.local).map(|r| &r.name);
-        let data = m
-            .data
-            .iter()
-            .filter(|d| d.scope != Scope::Local)
-            .map(|d| &d.name);
-        let records = m.records.iter().filter(|r| !r.local).map(|r| &r.name);
-        let aliases = m.aliases.iter().filter(|a| !a.local).map(|a| &a.name);
-        routines
-            .chain(data)
-            .chain(records)
-            .chain(aliases)
-            .map(|n| fold(n))
-    })
+    u.items
+        .modules
+        .iter()
+        .flat_map(|m| m.global_names().map(fold))
 }
 
 /// How many leading folders two paths share.
