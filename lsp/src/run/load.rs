@@ -154,7 +154,8 @@ pub fn system_of(
     }
 }
 
-fn folder_name(key: &str) -> &str {
+pub(crate) fn folder_name(key: &str) -> &str {
+    let key = key.trim_end_matches(['/', '\\']);
     key.rsplit(['/', '\\']).next().unwrap_or(key)
 }
 

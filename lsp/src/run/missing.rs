@@ -32,6 +32,8 @@ use rapid_analyzer::layout::controller_of;
 use rapid_analyzer::names::fold;
 use rapid_analyzer::task::{Task, Unit};
 
+use super::load::folder_name;
+
 /// At most this many modules are taken for one task.
 const MAX_TAKEN: usize = 32;
 
@@ -43,12 +45,6 @@ const MAX_TRIES: usize = 3;
 fn declares(u: &Unit, name: &str) -> bool {
     let name = fold(name);
     globals(u).any(|g| g == name)
-}
-
-/// The last folder of a task's key (`TASK2`).
-fn folder_name(key: &str) -> &str {
-    let key = key.trim_end_matches(['/', '\\']);
-    key.rsplit(['/', '\\']).next().unwrap_or(key)
 }
 
 /// The names `u` declares for the whole task, folded.

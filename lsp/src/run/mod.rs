@@ -201,11 +201,10 @@ impl RunReport {
                 .as_ref()
                 .is_some_and(|(_, name)| name == "ERR_TASKNAME")
         });
-        let folders = self.tasks.iter().any(|(t, _)| {
-            t.get(..4).is_some_and(|h| h.eq_ignore_ascii_case("task"))
-                && t.len() > 4
-                && t[4..].bytes().all(|b| b.is_ascii_digit())
-        });
+        let folders = self
+            .tasks
+            .iter()
+            .any(|(t, _)| task_names::folder_number(t).is_some());
         (unknown && folders).then(|| {
             "  = help: the tasks have their folders' names, but those the program's use names (T_ROBn is TASKn): a backup's SYS.cfg or BACKINFO names them, else rapid.toml does ([controller] tasks = [\"T_ROB1\", ...] names TASK1, TASK2... in turn)".to_owned()
         })

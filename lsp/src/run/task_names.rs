@@ -73,11 +73,14 @@ fn used_names(task: &Task) -> Vec<String> {
 }
 
 /// `TASKn`'s number.
-fn folder_number(name: &str) -> Option<u32> {
+pub(crate) fn folder_number(name: &str) -> Option<u32> {
     let digits = name
         .get(..4)?
         .eq_ignore_ascii_case("task")
         .then(|| &name[4..])?;
+    if digits.is_empty() || !digits.bytes().all(|b| b.is_ascii_digit()) {
+        return None;
+    }
     digits.parse().ok()
 }
 
