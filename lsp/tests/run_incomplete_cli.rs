@@ -38,6 +38,7 @@ ENDMODULE
     VAR jointtarget j;
     WaitTime 1;
     j := CJointT(\\TaskName:=\"T_Gantry\");
+    j := CJointT(\\TaskRef:=T_GantryId);
     TPWrite \"read the gantry\";
   ENDPROC
 ENDMODULE

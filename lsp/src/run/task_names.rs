@@ -10,9 +10,13 @@
 //! is given to a numbered folder, `T_ROBn` to `TASKn` (RobotWare calls the
 //! n-th robot's task `T_ROBn`, and a MultiMove system lists its robots'
 //! tasks first), any other name to the one folder whose modules are named
-//! for it (`T_Gantry` to the folder of `Gantry_MainModule.mod`). Each name
-//! given is a note.
+//! for it (`T_Gantry` to the folder of `Gantry_MainModule.mod`), and
+//! every task knows its `taskid` (`T_GantryId`). Each name given is a
+//! note.
 
+use std::sync::Arc;
+
+use rapid_analyzer::names::fold;
 use rapid_analyzer::task::Task;
 
 use super::load::TaskToRun;
@@ -162,7 +166,26 @@ fn give_names(tasks: &mut [TaskToRun]) -> Vec<String> {
             give(tasks, i, name, "its modules are named for it");
         }
     }
+    if !notes.is_empty() {
+        with_task_ids(tasks);
+    }
     notes
+}
+
+/// Every task knows the `taskid` of each task by its name
+/// (`T_GantryId`), as RobotWare declares one for each task.
+fn with_task_ids(tasks: &mut [TaskToRun]) {
+    let ids: Vec<String> = tasks
+        .iter()
+        .map(|t| fold(&format!("{}Id", t.name)))
+        .collect();
+    for t in tasks {
+        let mut task = (*t.task).clone();
+        let mut known = (*task.task_ids).clone();
+        known.extend(ids.iter().cloned());
+        task.set_controller_names((*task.mecunits).clone(), known);
+        t.task = Arc::new(task);
+    }
 }
 
 #[cfg(test)]
