@@ -77,6 +77,19 @@ fn is_task_name(name: &str) -> bool {
     numbered || named
 }
 
+/// The number of a backup's numbered task folder (`TASK7`: 7), which
+/// names no task: `SYS.cfg` says which task it holds.
+pub fn task_folder_number(name: &str) -> Option<u32> {
+    let digits = name
+        .get(..4)?
+        .eq_ignore_ascii_case("task")
+        .then(|| &name[4..])?;
+    if digits.is_empty() || !digits.bytes().all(|b| b.is_ascii_digit()) {
+        return None;
+    }
+    digits.parse().ok()
+}
+
 /// The controller a task of a backup belongs to: for a key that
 /// [`locate`] gives a task folder under `RAPID/`, the key up to and
 /// including `RAPID/`; `None` for any other key.

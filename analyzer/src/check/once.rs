@@ -53,13 +53,9 @@ fn also_here(file: Option<String>, range: Range<usize>) -> Related {
 /// an output. The finding of a name keeps the type its strongest use
 /// gives, so that the simulation declares the signal it can set.
 fn signal_rank(d: &Diagnostic) -> u8 {
-    match rules::unconfigured_signal::taken_signal(d).map(|(_, ty)| ty) {
-        Some("signaldi") => 1,
-        Some("signalgi" | "signalai") => 2,
-        Some("signaldo") => 3,
-        Some("signalgo" | "signalao") => 4,
-        _ => 0,
-    }
+    rules::unconfigured_signal::taken_signal(d)
+        .and_then(|(_, ty)| crate::task::SignalKind::from_type(ty))
+        .map_or(0, crate::task::SignalKind::strength)
 }
 
 /// Keeps the first finding of each name in a unit's findings (sorted by

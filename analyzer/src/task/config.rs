@@ -222,6 +222,19 @@ impl SignalKind {
         }
     }
 
+    /// How much a use that takes a signal of this kind says of it: an
+    /// input can be read, an output set and read, so of two uses of one
+    /// name the stronger's kind is the one the signal can be (a group or
+    /// analog value over a digital one).
+    pub fn strength(self) -> u8 {
+        match self {
+            SignalKind::DigitalIn => 1,
+            SignalKind::AnalogIn | SignalKind::GroupIn => 2,
+            SignalKind::DigitalOut => 3,
+            SignalKind::AnalogOut | SignalKind::GroupOut => 4,
+        }
+    }
+
     /// The kind of a RAPID signal type name.
     pub fn from_type(name: &str) -> Option<SignalKind> {
         [

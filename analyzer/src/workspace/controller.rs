@@ -174,9 +174,7 @@ impl Workspace {
         let mut names: Vec<String> = self.task_list(root).into_iter().flatten().collect();
         names.extend(self.backup_task_keys(root).iter().filter_map(|k| {
             let last = k.rsplit('/').next()?;
-            let numbered = last.len() > 4
-                && last[..4].eq_ignore_ascii_case("task")
-                && last[4..].bytes().all(|b| b.is_ascii_digit());
+            let numbered = crate::layout::task_folder_number(last).is_some();
             (!numbered).then(|| last.to_owned())
         }));
         for name in names {

@@ -511,25 +511,18 @@ fn run_inner(args: RunArgs) -> Result<ExitCode, String> {
 /// controller's I/O configuration is one for all its tasks, so a name one
 /// task uses as a signal (`GInput(giPart)`) is that signal where another
 /// only reads it (`nPart := giPart`). A name taken as two kinds is the
-/// one that can be set (an output, which can be read as an input too).
+/// stronger ([`rapid_runtime::SignalKind::strength`]), as within a task.
 fn share_taken_signals(checks: &mut [rapid_runtime::LoadCheck]) {
-    use rapid_runtime::SignalKind as K;
     if checks.len() < 2 {
         return;
     }
-    let rank = |k: K| match k {
-        K::DigitalIn => 1,
-        K::AnalogIn | K::GroupIn => 2,
-        K::DigitalOut => 3,
-        K::AnalogOut | K::GroupOut => 4,
-    };
     let mut all: Vec<rapid_runtime::TakenSignal> = Vec::new();
     for s in checks.iter().flat_map(|c| &c.signals) {
         match all
             .iter_mut()
             .find(|a| a.name.eq_ignore_ascii_case(&s.name))
         {
-            Some(a) if rank(s.kind) > rank(a.kind) => a.kind = s.kind,
+            Some(a) if s.kind.strength() > a.kind.strength() => a.kind = s.kind,
             Some(_) => {}
             None => all.push(s.clone()),
         }

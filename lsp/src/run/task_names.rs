@@ -76,17 +76,8 @@ fn used_names(task: &Task) -> Vec<String> {
     out
 }
 
-/// `TASKn`'s number.
-pub(crate) fn folder_number(name: &str) -> Option<u32> {
-    let digits = name
-        .get(..4)?
-        .eq_ignore_ascii_case("task")
-        .then(|| &name[4..])?;
-    if digits.is_empty() || !digits.bytes().all(|b| b.is_ascii_digit()) {
-        return None;
-    }
-    digits.parse().ok()
-}
+/// `TASKn`'s number ([`rapid_analyzer::layout::task_folder_number`]).
+pub(crate) use rapid_analyzer::layout::task_folder_number as folder_number;
 
 /// Names the numbered tasks of a backup whose names are not known (each
 /// is called as its folder, `TASKn`) for the task names their program
